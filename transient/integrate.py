@@ -20,6 +20,7 @@ output so long runs need not store anything (``store=False``).
 from __future__ import annotations
 
 import time
+import warnings
 from dataclasses import dataclass, field
 from typing import Callable, Sequence
 
@@ -377,7 +378,9 @@ def _solve_sundials(problem, method, t_eval, out, counter, events, rtol, atol, m
             ev = lambda t, y, g: problem.events(t, y, g)
             ev.direction = list(problem.event_direction)
             opts["eventsfn"], opts["num_events"] = ev, problem.n_events
-        solver = CVODE(lambda t, y, yp: rhs(t, y, yp), method="BDF", **opts)
+        with warnings.catch_warnings():  # sksundae notes that jacfn replaces its FD Jacobian: intended
+            warnings.simplefilter("ignore", UserWarning)
+            solver = CVODE(lambda t, y, yp: rhs(t, y, yp), method="BDF", **opts)
         solver.init_step(t_eval[0], problem.y0)
     else:
         if problem.residual is not None:
@@ -405,7 +408,9 @@ def _solve_sundials(problem, method, t_eval, out, counter, events, rtol, atol, m
             ev = lambda t, y, yp, g: problem.events(t, y, g)
             ev.direction = list(problem.event_direction)
             opts["eventsfn"], opts["num_events"] = ev, problem.n_events
-        solver = IDA(lambda t, y, yp, r: res(t, y, yp, r), **opts)
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", UserWarning)
+            solver = IDA(lambda t, y, yp, r: res(t, y, yp, r), **opts)
         r0 = solver.init_step(t_eval[0], problem.y0, yp0)
         if not r0.success:
             return False, f"IDA initialisation failed: {r0.message}", 0

@@ -1,0 +1,1 @@
+"""Benchmarks behind ``transient bench ...``: each writes a markdown table (and plots) under docs/."""
