@@ -46,6 +46,8 @@ class Problem:
     * ``events(t, y, out)``: event functions; a zero crossing is an event.
     * ``algebraic_solve(t, y) -> y``: for ``rk4`` on a DAE, returns ``y`` with its algebraic part
       solved for the given differential part (the per-stage inner solve).
+    * ``step_begin(t, y)``: for ``rk4``, called at the start of every step (e.g. to store the history
+      a time-discretised inner solve needs).
     """
 
     y0: np.ndarray
@@ -62,6 +64,7 @@ class Problem:
     event_terminal: Sequence[bool] | None = None
     event_direction: Sequence[int] | None = None
     algebraic_solve: Callable | None = None
+    step_begin: Callable | None = None
     name: str = "problem"
 
     def __post_init__(self):
@@ -248,7 +251,7 @@ class _Events:
 def solve(problem: Problem, t_eval, method: str = "cvode", rtol: float = 1e-6, atol=1e-8, *,
           dt: float | None = None, max_step: float = 0.0, first_step: float = 0.0,
           max_steps: int = 1_000_000, linear_solver: str = "auto", store: bool = True,
-          observer: Callable | None = None) -> Result:
+          observer: Callable | None = None, options: dict | None = None) -> Result:
     """Integrate ``problem`` and return the state at the times ``t_eval`` (the first is the start).
 
     Parameters
@@ -262,6 +265,7 @@ def solve(problem: Problem, t_eval, method: str = "cvode", rtol: float = 1e-6, a
         band, dense otherwise), ``"sparse"``, ``"band"`` or ``"dense"`` (SUNDIALS methods).
     store : keep the outputs in ``Result.y`` (False: only pass them to ``observer``).
     observer : ``observer(t, y)`` called at every output time, in order.
+    options : extra keyword options for the SUNDIALS solver (e.g. ``max_nonlin_iters``, ``max_order``).
     """
     if method not in METHODS:
         raise ValueError(f"method must be one of {METHODS}, got {method!r}")
@@ -276,7 +280,7 @@ def solve(problem: Problem, t_eval, method: str = "cvode", rtol: float = 1e-6, a
     wall0 = time.perf_counter()
     if method in ("cvode", "ida"):
         success, message, n_steps = _solve_sundials(problem, method, t_eval, out, counter, events, rtol, atol,
-                                                    max_step, first_step, max_steps, linear_solver)
+                                                    max_step, first_step, max_steps, linear_solver, options or {})
     elif method == "rk4":
         success, message, n_steps = _solve_rk4(problem, t_eval, out, counter, events, dt, max_steps)
     else:
@@ -355,12 +359,12 @@ def _linear_solver_options(problem, pattern, have_jac, linear_solver):
 
 
 def _solve_sundials(problem, method, t_eval, out, counter, events, rtol, atol, max_step, first_step,
-                    max_steps, linear_solver):
+                    max_steps, linear_solver, extra):
     from sksundae.cvode import CVODE
     from sksundae.ida import IDA
 
     opts = {"rtol": rtol, "atol": atol, "max_step": max_step, "first_step": first_step,
-            "max_num_steps": max_steps}
+            "max_num_steps": max_steps, **extra}
     if method == "cvode":
         if problem.rhs is None:
             raise ValueError(f"method 'cvode' needs an ODE right-hand side; problem '{problem.name}' only has "
@@ -547,7 +551,11 @@ def _solve_rk4(problem, t_eval, out, counter, events, dt, max_steps):
             k[alg] = 0.0
         return y
 
+    begin = problem.step_begin
+
     def step(t, y, h):
+        if begin is not None:
+            begin(t, y)
         y = f(t, y, k1)
         f(t + 0.5 * h, y + 0.5 * h * k1, k2)
         f(t + 0.5 * h, y + 0.5 * h * k2, k3)

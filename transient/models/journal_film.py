@@ -1,0 +1,278 @@
+"""The discretised Elrod film of a plain journal bearing coupled to a rigid 2-DOF rotor (seed 003).
+
+Dimensionless groups (``R`` radius, ``C`` radial clearance, ``omega`` shaft speed)::
+
+    H = h / C = 1 + X cos(phi) + Y sin(phi)        (paper eq. 3; X = x / C, Y = y / C)
+    tau = omega t,   zbar = z / R,   p = p_c + p0 P,   p0 = 6 mu omega (R / C)^2
+
+``phi`` is measured from the top of the bearing (the oil groove, opposite the static load) in the
+direction of rotation; the load acts in +x (towards phi = pi). This is the reading of the paper in
+which eq. (3) and the printed signs of eqs. (7)-(10) agree (see docs/journal.md). The Elrod
+conservation law (eq. 1 divided by ``C omega``) in each finite volume::
+
+    A_i d(theta H)_i / dtau + R_i(u) = 0,   R_i = net outflow of  q = theta H / 2 e_phi - H^3 / 2 grad P
+
+with one state ``u`` per cell, ``theta = C(u)``, ``D = dC/du`` (:mod:`transient.film.cavitation`). The rotor
+(paper eqs. 7-10; film force on the journal ``F = +int p (cos phi, sin phi) dA``)::
+
+    X'' = kappa Fbar_x + Wbar + (e / C) cos(tau),   Y'' = kappa Fbar_y + (e / C) sin(tau)
+    Fbar = sym * sum_i P_i (cos phi_i, sin phi_i) A_i,   kappa = p0 R^2 / (m C omega^2),
+    Wbar = W / (m C omega^2),   sym = 2 on a half bearing (axial symmetry plane), else 1.
+
+Two formulations, both with the analytic sparse "arrow" Jacobian (5-point stencil + 4 dense rows and
+columns), filled by the numba kernels below into the CSC pattern of the film operator:
+
+* ODE (CVODE, scipy):  ``u_i' = (-R_i / A_i - theta_i H_i') / (H_i D_i)``, ``H' = X' cos + Y' sin``;
+* DAE residual (IDA):  ``A_i (H_i D_i u_i' + theta_i (X' cos + Y' sin)) + R_i = 0`` etc.
+
+Groove cells are held at the supply pressure (``u' = 0``).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numba import njit
+
+from transient.film.cavitation import elrod_content, softplus_pressure
+from transient.film.reynolds import jacobian_kernel, residual_kernel
+
+N_ROTOR = 4  # X, Y, VX, VY appended after the cells
+
+
+@njit(cache=True)
+def film_fields(u, X, Y, cosp, sinp, beta_bar, width, H, P, dP, C, D, dD, k, c):
+    """Cell fields at state ``u`` and journal position (X, Y): H, P(u), P', theta = C(u), D = C', D',
+    k = H^3/2 (Poiseuille), c = H/2 (Couette)."""
+    softplus_pressure(u, width, P, dP)
+    elrod_content(u, P, dP, width, beta_bar, C, D, dD)
+    for i in range(u.size):
+        h = 1.0 + X * cosp[i] + Y * sinp[i]
+        H[i] = h
+        k[i] = 0.5 * h * h * h
+        c[i] = 0.5 * h
+
+
+@njit(cache=True)
+def position_derivatives(H, cosp, sinp, dk_dq, dc_dq):
+    """d k / d(X, Y) = 1.5 H^2 (cos, sin) and d c / d(X, Y) = (cos, sin) / 2 (rows 0, 1; rows 2, 3 = 0)."""
+    for i in range(H.size):
+        h2 = 1.5 * H[i] * H[i]
+        dk_dq[0, i] = h2 * cosp[i]
+        dk_dq[1, i] = h2 * sinp[i]
+        dc_dq[0, i] = 0.5 * cosp[i]
+        dc_dq[1, i] = 0.5 * sinp[i]
+
+
+@njit(cache=True)
+def film_force(P, cosp, sinp, area, sym):
+    """Dimensionless film force on the journal, ``sym * sum P (cos, sin) A``."""
+    fx = 0.0
+    fy = 0.0
+    for i in range(P.size):
+        fx += P[i] * cosp[i] * area[i]
+        fy += P[i] * sinp[i] * area[i]
+    return sym * fx, sym * fy
+
+
+class FilmWork:
+    """Scratch arrays and constant geometry shared by the kernels of one film (allocated once)."""
+
+    def __init__(self, op, phi, symmetric):
+        n = op.n_cells
+        self.op = op
+        self.n = n
+        self.cosp = np.ascontiguousarray(np.cos(phi))
+        self.sinp = np.ascontiguousarray(np.sin(phi))
+        self.area = np.ascontiguousarray(op.grid.area)
+        self.sym = 2.0 if symmetric else 1.0
+        self.free = op.free
+        self.H, self.P, self.dP, self.C, self.D, self.dD, self.k, self.c, self.R = (np.empty(n) for _ in range(9))
+        self.zero = np.zeros(n)
+        self.scale = np.empty(n)
+        self.dk_dq = np.zeros((N_ROTOR, n))
+        self.dc_dq = np.zeros((N_ROTOR, n))
+        self.no_dq = np.zeros((N_ROTOR, n))
+        self.pos_row = np.ascontiguousarray(op.stencil.pos_row_extra)
+        self.pos_col = np.ascontiguousarray(op.stencil.pos_col_extra)
+        self.indices = op.stencil.indices
+
+    def fields(self):
+        """The scratch field arrays in the order the kernels take them."""
+        return (self.H, self.P, self.dP, self.C, self.D, self.dD, self.k, self.c)
+
+
+@njit(cache=True)
+def _stencil_residual(u, X, Y, beta_bar, width, cosp, sinp, H, P, dP, C, D, dD, k, c, zero, R,
+                      fL, fR, fdir, fd, fs, bcell, bside, bdir, bd, bs, bP, bC, free, u_fixed):
+    film_fields(u, X, Y, cosp, sinp, beta_bar, width, H, P, dP, C, D, dD, k, c)
+    residual_kernel(u, P, C, k, k, c, zero, True, fL, fR, fdir, fd, fs, bcell, bside, bdir, bd, bs, bP, bC,
+                    free, u_fixed, R)
+
+
+@njit(cache=True)
+def _stencil_jacobian(u, X, Y, beta_bar, width, cosp, sinp, H, P, dP, C, D, dD, k, c, zero, dk_dq, dc_dq, no_dq,
+                      pos_col, fL, fR, fdir, fd, fs, fpos, bcell, bside, bdir, bd, bs, bP, bC, bpos, free, pos_c,
+                      data):
+    film_fields(u, X, Y, cosp, sinp, beta_bar, width, H, P, dP, C, D, dD, k, c)
+    if dk_dq.shape[0] > 0:
+        position_derivatives(H, cosp, sinp, dk_dq, dc_dq)
+    jacobian_kernel(P, dP, C, D, k, zero, k, zero, c, zero, dk_dq, dk_dq, dc_dq, no_dq, True,
+                    fL, fR, fdir, fd, fs, fpos, bcell, bside, bdir, bd, bs, bP, bC, bpos, free, pos_c, pos_col, data)
+
+
+@njit(cache=True)
+def ode_rhs(tau, y, out, beta_bar, width, kappa, wbar, ebar, sym, cosp, sinp, area,
+            H, P, dP, C, D, dD, k, c, zero, R,
+            fL, fR, fdir, fd, fs, bcell, bside, bdir, bd, bs, bP, bC, free, u_fixed):
+    """ODE right-hand side ``y' = f(tau, y)`` of the film + rotor (module docstring)."""
+    n = free.size
+    X, Y, VX, VY = y[n], y[n + 1], y[n + 2], y[n + 3]
+    _stencil_residual(y[:n], X, Y, beta_bar, width, cosp, sinp, H, P, dP, C, D, dD, k, c, zero, R,
+                      fL, fR, fdir, fd, fs, bcell, bside, bdir, bd, bs, bP, bC, free, u_fixed)
+    for i in range(n):
+        if free[i]:
+            out[i] = (-R[i] / area[i] - C[i] * (VX * cosp[i] + VY * sinp[i])) / (H[i] * D[i])
+        else:
+            out[i] = 0.0
+    fx, fy = film_force(P, cosp, sinp, area, sym)
+    out[n] = VX
+    out[n + 1] = VY
+    out[n + 2] = kappa * fx + wbar + ebar * np.cos(tau)
+    out[n + 3] = kappa * fy + ebar * np.sin(tau)
+
+
+@njit(cache=True)
+def scale_cell_rows(data, indices, scale, n):
+    """``data[p] *= scale[row]`` for every entry whose row is a cell (row < n)."""
+    for p in range(data.size):
+        r = indices[p]
+        if r < n:
+            data[p] *= scale[r]
+
+
+@njit(cache=True)
+def ode_jacobian(tau, y, data, f, beta_bar, width, kappa, sym, cosp, sinp, area,
+                 H, P, dP, C, D, dD, k, c, zero, dk_dq, dc_dq, no_dq, pos_row, pos_col, indices, scale,
+                 fL, fR, fdir, fd, fs, fpos, bcell, bside, bdir, bd, bs, bP, bC, bpos, free, pos_c):
+    """CSC data of ``df/dy`` for :func:`ode_rhs`; ``f`` must hold ``f(tau, y)`` at the same state::
+
+        df_i/du_j = -dR_i/du_j / (H_i D_i A_i) - delta_ij (H'_i / H_i + f_i D'_i / D_i)
+        df_i/dX   = -dR_i/dX / (H_i D_i A_i) - f_i cos(phi_i) / H_i
+        df_i/dVX  = -theta_i cos(phi_i) / (H_i D_i)                     (likewise Y, VY with sin)
+        df_VX/du_j = kappa sym P'(u_j) cos(phi_j) A_j,  df_X/dVX = 1
+    """
+    n = free.size
+    X, Y, VX, VY = y[n], y[n + 1], y[n + 2], y[n + 3]
+    _stencil_jacobian(y[:n], X, Y, beta_bar, width, cosp, sinp, H, P, dP, C, D, dD, k, c, zero, dk_dq, dc_dq,
+                      no_dq, pos_col, fL, fR, fdir, fd, fs, fpos, bcell, bside, bdir, bd, bs, bP, bC, bpos, free,
+                      pos_c, data)
+    for i in range(n):
+        scale[i] = -1.0 / (H[i] * D[i] * area[i]) if free[i] else 0.0
+    scale_cell_rows(data, indices, scale, n)
+    for i in range(n):
+        if free[i]:
+            hd = VX * cosp[i] + VY * sinp[i]
+            data[pos_c[i]] -= hd / H[i] + f[i] * dD[i] / D[i]
+            data[pos_col[i, 0]] -= f[i] * cosp[i] / H[i]
+            data[pos_col[i, 1]] -= f[i] * sinp[i] / H[i]
+            b = C[i] / (H[i] * D[i])
+            data[pos_col[i, 2]] = -b * cosp[i]
+            data[pos_col[i, 3]] = -b * sinp[i]
+        g = kappa * sym * dP[i] * area[i]
+        data[pos_row[2, i]] = g * cosp[i]
+        data[pos_row[3, i]] = g * sinp[i]
+    data[pos_row[0, n + 2]] = 1.0
+    data[pos_row[1, n + 3]] = 1.0
+
+
+@njit(cache=True)
+def dae_residual(tau, y, yp, out, beta_bar, width, kappa, wbar, ebar, sym, cosp, sinp, area,
+                 H, P, dP, C, D, dD, k, c, zero, R,
+                 fL, fR, fdir, fd, fs, bcell, bside, bdir, bd, bs, bP, bC, free, u_fixed):
+    """IDA residual ``F(tau, y, y')`` of the film + rotor (module docstring); groove cells: ``u' = 0``."""
+    n = free.size
+    X, Y, VX, VY = y[n], y[n + 1], y[n + 2], y[n + 3]
+    Xd, Yd = yp[n], yp[n + 1]
+    _stencil_residual(y[:n], X, Y, beta_bar, width, cosp, sinp, H, P, dP, C, D, dD, k, c, zero, R,
+                      fL, fR, fdir, fd, fs, bcell, bside, bdir, bd, bs, bP, bC, free, u_fixed)
+    for i in range(n):
+        if free[i]:
+            out[i] = area[i] * (H[i] * D[i] * yp[i] + C[i] * (Xd * cosp[i] + Yd * sinp[i])) + R[i]
+        else:
+            out[i] = yp[i]
+    fx, fy = film_force(P, cosp, sinp, area, sym)
+    out[n] = Xd - VX
+    out[n + 1] = Yd - VY
+    out[n + 2] = yp[n + 2] - (kappa * fx + wbar + ebar * np.cos(tau))
+    out[n + 3] = yp[n + 3] - (kappa * fy + ebar * np.sin(tau))
+
+
+@njit(cache=True)
+def dae_jacobian(tau, y, yp, cj, data, beta_bar, width, kappa, sym, cosp, sinp, area,
+                 H, P, dP, C, D, dD, k, c, zero, dk_dq, dc_dq, no_dq, pos_row, pos_col,
+                 fL, fR, fdir, fd, fs, fpos, bcell, bside, bdir, bd, bs, bP, bC, bpos, free, pos_c):
+    """CSC data of ``dF/dy + cj dF/dy'`` for :func:`dae_residual`::
+
+        dF_i/du_i += A_i (H_i D'_i u_i' + D_i H'_i + cj H_i D_i),   dF_i/dX += A_i cos (D_i u_i' + cj theta_i)
+        dF_VX/du_j = -kappa sym P'(u_j) cos(phi_j) A_j,  dF_X/dX = cj,  dF_X/dVX = -1,  dF_VX/dVX = cj
+    """
+    n = free.size
+    X, Y = y[n], y[n + 1]
+    Xd, Yd = yp[n], yp[n + 1]
+    _stencil_jacobian(y[:n], X, Y, beta_bar, width, cosp, sinp, H, P, dP, C, D, dD, k, c, zero, dk_dq, dc_dq,
+                      no_dq, pos_col, fL, fR, fdir, fd, fs, fpos, bcell, bside, bdir, bd, bs, bP, bC, bpos, free,
+                      pos_c, data)
+    for i in range(n):
+        if free[i]:
+            a = area[i]
+            data[pos_c[i]] += a * (H[i] * dD[i] * yp[i] + D[i] * (Xd * cosp[i] + Yd * sinp[i]) + cj * H[i] * D[i])
+            data[pos_col[i, 0]] += a * cosp[i] * (D[i] * yp[i] + cj * C[i])
+            data[pos_col[i, 1]] += a * sinp[i] * (D[i] * yp[i] + cj * C[i])
+        else:
+            data[pos_c[i]] = cj
+        g = -kappa * sym * dP[i] * area[i]
+        data[pos_row[2, i]] = g * cosp[i]
+        data[pos_row[3, i]] = g * sinp[i]
+    data[pos_row[0, n]] = cj
+    data[pos_row[0, n + 2]] = -1.0
+    data[pos_row[1, n + 1]] = cj
+    data[pos_row[1, n + 3]] = -1.0
+    data[pos_row[2, n + 2]] = cj
+    data[pos_row[3, n + 3]] = cj
+
+
+@njit(cache=True)
+def film_residual(u, X, Y, VX, VY, rate, C_ref, out, beta_bar, width, cosp, sinp, area,
+                  H, P, dP, C, D, dD, k, c, zero,
+                  fL, fR, fdir, fd, fs, bcell, bside, bdir, bd, bs, bP, bC, free, u_fixed):
+    """Film equations for a prescribed journal motion (steady solves and the RK4 baseline)::
+
+        G_i = R_i + A_i (theta_i H'_i + rate H_i (theta_i - theta_ref,i)),   H' = VX cos + VY sin
+
+    ``rate = 0``: quasi-steady film (the steady state when VX = VY = 0); ``rate = 1/dtau``: one
+    backward-Euler step of length dtau from the content ``theta_ref`` (Elrod's time discretisation,
+    used per RK4 stage, and the pseudo-time steps of the steady solver).
+    """
+    _stencil_residual(u, X, Y, beta_bar, width, cosp, sinp, H, P, dP, C, D, dD, k, c, zero, out,
+                      fL, fR, fdir, fd, fs, bcell, bside, bdir, bd, bs, bP, bC, free, u_fixed)
+    for i in range(u.size):
+        if free[i]:
+            out[i] += area[i] * (C[i] * (VX * cosp[i] + VY * sinp[i]) + rate * H[i] * (C[i] - C_ref[i]))
+
+
+@njit(cache=True)
+def film_jacobian(u, X, Y, VX, VY, rate, data, beta_bar, width, cosp, sinp, area,
+                  H, P, dP, C, D, dD, k, c, zero, dk_dq, dc_dq, no_dq, pos_col,
+                  fL, fR, fdir, fd, fs, fpos, bcell, bside, bdir, bd, bs, bP, bC, bpos, free, pos_c):
+    """CSC data of ``dG/du`` for :func:`film_residual`, and -- if the operator has 4 extra unknowns --
+    ``dG/dX, dG/dY`` (rate = 0 only) and ``dG/dVX, dG/dVY = A theta (cos, sin)`` in the extra columns."""
+    _stencil_jacobian(u, X, Y, beta_bar, width, cosp, sinp, H, P, dP, C, D, dD, k, c, zero, dk_dq, dc_dq, no_dq,
+                      pos_col, fL, fR, fdir, fd, fs, fpos, bcell, bside, bdir, bd, bs, bP, bC, bpos, free, pos_c,
+                      data)
+    ne = dk_dq.shape[0]
+    for i in range(u.size):
+        if free[i]:
+            data[pos_c[i]] += area[i] * (D[i] * (VX * cosp[i] + VY * sinp[i]) + rate * H[i] * D[i])
+            if ne > 0:
+                data[pos_col[i, 2]] = area[i] * C[i] * cosp[i]
+                data[pos_col[i, 3]] = area[i] * C[i] * sinp[i]
