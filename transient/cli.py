@@ -26,7 +26,19 @@ def _bench_film(out: Path) -> str:
     return text
 
 
-BENCHES = {"film": _bench_film}
+def _bench_ball(out: Path) -> str:
+    from transient.bench import ball
+    res = ball.run(out_dir=str(out))
+    return ("## Thrust ball bearing: 200-ball-pass sequence, work-precision (seed 002)\n"
+            + res["markdown"] + "\n\n![work-precision](bench_ball.png)")
+
+
+def _bench_roughness(out: Path) -> str:
+    from transient.bench import roughness
+    return "## Rough-surface generation (seed 000)\n" + roughness.bench_surface()
+
+
+BENCHES = {"film": _bench_film, "ball": _bench_ball, "roughness": _bench_roughness}
 
 
 def _write_bench(name: str, text: str, out: Path) -> Path:

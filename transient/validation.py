@@ -11,13 +11,13 @@ def check_range(name, value, unit, low=-math.inf, high=math.inf, *, low_open=Fal
     try:
         v = float(value)
     except (TypeError, ValueError):
-        raise ValueError(f"{name} must be a number [{unit}], got {value!r}") from None
+        raise ValueError(f"{name} = {value!r} [{unit}] is not a real number") from None
     ok = math.isfinite(v) or (v == high == math.inf)
     ok = ok and (v > low if low_open else v >= low) and (v < high if high_open else v <= high)
     if not ok:
         lo = f"{'(' if low_open else '['}{low:g}"
         hi = f"{high:g}{')' if high_open else ']'}"
-        raise ValueError(f"{name} = {value!r} {unit} is out of range; allowed: {lo}, {hi} {unit}"
+        raise ValueError(f"{name} = {value!r} [{unit}] is out of range; allowed: {lo}, {hi} {unit}"
                          + (f" {why}" if why else ""))
     return v
 

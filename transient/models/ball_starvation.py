@@ -1,0 +1,341 @@
+"""Thrust ball bearing starvation: the per-ball starvation / replenishment sequence (seed 002).
+
+Jeong, Lee, Yoo & Cho (J. Korean Soc. Tribol. Lubr. Eng. 33(3), 2017) follow the oil film on the
+race of a thrust ball bearing from ball to ball:
+
+1. Ball n meets an inlet film ``h_in^n`` (``h_in^1 = h_inf``, the ambient film). The inlet meniscus
+   sits where the dry gap outside the Hertz ellipse equals it, ``g(m b) = h_in`` (Newton–Raphson,
+   elastic displacement included; :func:`transient.film.hertz.meniscus_position`).
+2. Hamrock–Dowson: fully flooded central film ``H_F``, critical meniscus ``m_c``, starved film
+   ``H_S = H_F ((m-1)/(m_c-1))^0.29`` for ``m < m_c`` (:mod:`transient.film.ehl_formulas`).
+3. Between balls the depleted track levels under surface tension (Chiu 1974); the paper's recursion
+   is ``h_in^n = h_in^{n-1} - Delta zeta``.
+
+Here step 3 is a transient on the oil layer ``h(x, t)`` across the track: each ball pass is an
+event that leaves the race its share ``h_c/2`` of the central film over the depression half width
+``a'`` (the Hertz semi-axis across the track, the paper's ``a_x``) and moves the displaced oil into
+side ridges (fraction ``ridge_fraction``; the rest is carried away by the ball); the nonlinear
+thin-film equation (:mod:`transient.film.thin_film`) is then integrated by the facade (CVODE by
+default) over the time between two balls ``t_b = 4 pi / (Z omega)`` (cage at half the shaft speed,
+90 deg contact angle). The next inlet film is the film on the track centreline just before the next
+ball. ``replenishment="chiu"`` propagates the same events with Chiu's linear Stokes-layer kernel
+(the paper's model, linearised about ``h_inf``) instead.
+
+Regime of a pass (stated criterion): *fully flooded* if ``m >= m_c``; otherwise *starved* if the oil
+regained on the track since the previous pass, ``h_in^n - h_out^{n-1}``, is at least what the
+contact passes, ``h_c^n`` (the paper's criterion after Liu: parched when the replenishment is less
+than the oil flow through the Hertz contact), else *parched*. The sequence reaches a *periodic
+steady state* when ``h_in`` changes by less than ``periodic_tol`` (relative) over 3 consecutive
+passes; a sequence that is still falling after ``n_passes`` with ``m < m_c`` is a *parched decline*.
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from dataclasses import dataclass, field, replace
+
+import numpy as np
+
+from transient.film import ehl_formulas as hd
+from transient.film.hertz import HertzContact, hertz_contact, meniscus_position, reduced_modulus
+from transient.film.thin_film import LevellingGrid, chiu_rate
+from transient.integrate import solve
+from transient.validation import check_range
+
+FLOODED, STARVED, PARCHED = "fully flooded", "starved", "parched"
+REPLENISHMENT = ("thin_film", "chiu", "chiu_thin")
+
+
+
+@dataclass(frozen=True)
+class FloodedFilm:
+    """Fully flooded Hamrock–Dowson film of one contact: groups, films [m], critical menisci."""
+
+    U: float
+    G: float
+    W: float
+    H_c: float
+    H_min: float
+    h_c: float
+    h_min: float
+    m_c: float
+    m_star: float
+    speed: float
+
+
+@dataclass
+class BallSequence:
+    """Ball-after-ball film sequence. Arrays indexed by pass n = 0 .. n_run-1 (films in m).
+
+    ``h_inlet`` inlet film met by the ball, ``h_central``/``h_minimum`` Hamrock–Dowson films,
+    ``m`` meniscus position, ``regime`` per pass, ``h_outlet`` film left on the track. ``m_c`` and
+    ``m_star`` are the critical menisci (same for every pass), ``flooded`` the fully flooded film,
+    ``t_between`` the time between balls [s], ``periodic`` whether a periodic steady state was
+    found (``n_periodic`` the pass where it was detected), ``declining`` a parched decline,
+    ``final_regime`` the regime of the sequence, ``stats`` integrator totals,
+    ``profiles`` the track profiles [m] just before each ball (if recorded), ``x`` their abscissae [m].
+    """
+
+    h_inlet: np.ndarray
+    h_central: np.ndarray
+    h_minimum: np.ndarray
+    h_outlet: np.ndarray
+    m: np.ndarray
+    regime: list
+    m_c: float
+    m_star: float
+    flooded: FloodedFilm
+    contact: HertzContact
+    t_between: float
+    periodic: bool
+    n_periodic: int
+    declining: bool
+    final_regime: str
+    stats: dict = field(default_factory=dict)
+    x: np.ndarray | None = None
+    profiles: np.ndarray | None = None
+    volume: np.ndarray | None = None
+
+    @property
+    def n_run(self) -> int:
+        return self.h_inlet.size
+
+    @property
+    def H_central(self) -> np.ndarray:
+        """Dimensionless central film ``H_c = h_c / r_b`` as plotted by the paper (r_b = ball radius = Rx)."""
+        return self.h_central / self.contact.rx
+
+
+@dataclass(frozen=True)
+class ThrustBallBearing:
+    """Thrust ball bearing (90 deg contact angle), one race rotating at the shaft speed, SI units.
+
+    Defaults: the paper's Table 1 (E = 207 GPa, nu = 0.3, pitch diameter 31 mm, ball 3 mm,
+    surface tension 0.036 N/m, viscosity 0.02 Pa s) and Table 2 (6 balls, conformity 0.52). The
+    pressure–viscosity coefficient is not in the paper: 2.0e-8 1/Pa (a typical mineral oil).
+
+    Geometry: the race is flat along the rolling direction and grooved across it with radius
+    ``f d``, so ``Rx = d/2`` and ``Ry = f d / (2 f - 1)``.
+    """
+
+    pitch_diameter: float = 0.031
+    ball_diameter: float = 0.003
+    n_balls: int = 6
+    conformity: float = 0.52
+    youngs_modulus: float = 207e9
+    poisson_ratio: float = 0.3
+    viscosity: float = 0.02
+    pressure_viscosity: float = 2.0e-8
+    surface_tension: float = 0.036
+
+    def __post_init__(self):
+        check_range("ball_diameter", self.ball_diameter, "m", 0.0, 1.0, low_open=True, high_open=True)
+        check_range("pitch_diameter", self.pitch_diameter, "m", self.ball_diameter, 10.0, low_open=True, high_open=True)
+        if int(self.n_balls) != self.n_balls:
+            raise ValueError(f"n_balls = {self.n_balls!r} [-] must be an integer")
+        z_max = int(math.pi * self.pitch_diameter / self.ball_diameter)
+        check_range("n_balls", self.n_balls, "-", 1, z_max, low_open=False, high_open=False)
+        check_range("conformity", self.conformity, "-", 0.5, 1.0, low_open=True, high_open=False,
+                    why="(conformity = groove radius / ball diameter)")
+        check_range("youngs_modulus", self.youngs_modulus, "Pa", 0.0, 1e13, low_open=True, high_open=True)
+        check_range("poisson_ratio", self.poisson_ratio, "-", 0.0, 0.5, low_open=False, high_open=True)
+        check_range("viscosity", self.viscosity, "Pa s", 0.0, 1e4, low_open=True, high_open=True)
+        check_range("pressure_viscosity", self.pressure_viscosity, "1/Pa", 0.0, 1e-6, low_open=False, high_open=True)
+        check_range("surface_tension", self.surface_tension, "N/m", 0.0, 1.0, low_open=True, high_open=True)
+
+    # geometry -------------------------------------------------------------------------------------
+    @property
+    def rx(self) -> float:
+        """Reduced radius along the rolling direction [m] (ball radius; flat race)."""
+        return 0.5 * self.ball_diameter
+
+    @property
+    def ry(self) -> float:
+        """Reduced radius across the track [m]: ``1/(2/d - 1/(f d)) = f d/(2 f - 1)``."""
+        return self.conformity * self.ball_diameter / (2.0 * self.conformity - 1.0)
+
+    @property
+    def e_prime(self) -> float:
+        return reduced_modulus(self.youngs_modulus, self.poisson_ratio)
+
+    def with_(self, **kw) -> "ThrustBallBearing":
+        return replace(self, **kw)
+
+    # kinematics -----------------------------------------------------------------------------------
+    def entrainment_speed(self, speed_rpm: float) -> float:
+        """Mean rolling speed [m/s] ``u = omega d_e / 4`` (each race moves at ``omega/2`` relative to the cage)."""
+        check_range("speed_rpm", speed_rpm, "rpm", 0.0, 1e6, low_open=True, high_open=True)
+        return speed_rpm * 2.0 * math.pi / 60.0 * self.pitch_diameter / 4.0
+
+    def pass_interval(self, speed_rpm: float) -> float:
+        """Time between two balls over a point of either race [s]: ``4 pi / (Z omega)``."""
+        check_range("speed_rpm", speed_rpm, "rpm", 0.0, 1e6, low_open=True, high_open=True)
+        return 4.0 * math.pi / (self.n_balls * speed_rpm * 2.0 * math.pi / 60.0)
+
+    # contact --------------------------------------------------------------------------------------
+    def contact(self, load: float, exact: bool = True) -> HertzContact:
+        """Per-ball Hertz contact for the bearing's TOTAL axial load [N] (per ball: load / n_balls)."""
+        check_range("load", load, "N", 0.0, 1e7, low_open=True, high_open=True)
+        return hertz_contact(load / self.n_balls, self.rx, self.ry, self.e_prime, exact=exact)
+
+    def flooded_film(self, load: float, speed_rpm: float) -> FloodedFilm:
+        """Hamrock–Dowson fully flooded central/minimum film and critical menisci (per ball)."""
+        c = self.contact(load)
+        u = self.entrainment_speed(speed_rpm)
+        U, G, W = hd.dimensionless_groups(self.viscosity, u, self.pressure_viscosity, c.load_per_ball,
+                                          c.e_prime, c.rx)
+        Hc = hd.central_film_flooded(U, G, W, c.k)
+        Hm = hd.minimum_film_flooded(U, G, W, c.k)
+        return FloodedFilm(U=U, G=G, W=W, H_c=Hc, H_min=Hm, h_c=Hc * c.rx, h_min=Hm * c.rx,
+                           m_c=hd.critical_meniscus_central(Hc, c.rx, c.b),
+                           m_star=hd.critical_meniscus_minimum(Hm, c.rx, c.b), speed=u)
+
+    # the sequence ---------------------------------------------------------------------------------
+    def sequence(self, load: float, speed_rpm: float, ambient_film: float, n_passes: int = 200, *,
+                 replenishment: str = "thin_film", method: str = "cvode", rtol: float = 1e-6,
+                 atol: float = 1e-10, dt: float | None = None, n_cells: int = 200,
+                 reservoir_distance: float | None = None, bc: str = "reservoir",
+                 ridge_fraction: float = 1.0, ridge_width: float | None = None,
+                 precursor_film: float = 1e-9, mobility_film: float | None = None, periodic_tol: float = 1e-4, stop_at_periodic: bool = True,
+                 record_profiles: bool = False, linear_solver: str = "auto") -> BallSequence:
+        """Inlet and central film ball after ball (module docstring).
+
+        Parameters
+        ----------
+        load : TOTAL axial load [N]; speed_rpm : shaft speed [rpm]; ambient_film : ``h_inf`` [m].
+        n_passes : maximum number of ball passes over the same point of the race.
+        replenishment : ``"thin_film"`` (nonlinear levelling, integrated by ``method``), ``"chiu"``
+            (Chiu's linear kernel) or ``"chiu_thin"`` (its thin-film long-wave limit).
+        method, rtol, atol, dt, linear_solver : passed to :func:`transient.integrate.solve`
+            (atol in units of ``h_inf``; dt in units of the levelling time, for ``rk4``).
+        n_cells : cells across the half track ``[0, reservoir_distance]``.
+        reservoir_distance : where the undisturbed ambient film is [m] (default: the ball radius).
+        bc : ``"reservoir"`` (ambient film held there) or ``"closed"`` (no flux: a closed groove).
+        ridge_fraction : share of the oil pushed off the track that stays on the race as side ridges.
+        ridge_width : width of each side ridge [m] (default ``a'``).
+        precursor_film : lower bound of the film the ball leaves on the race [m].
+        mobility_film : ``b`` [m] of the regularised mobility ``h^3 + b^3`` of the levelling
+            (default ``h_inf / 10``; see :class:`transient.film.thin_film.LevellingGrid`).
+        periodic_tol : relative change of ``h_inf`` over 3 passes that counts as periodic.
+        """
+        if replenishment not in REPLENISHMENT:
+            raise ValueError(f"replenishment = {replenishment!r} must be one of {REPLENISHMENT}")
+        check_range("ambient_film", ambient_film, "m", 0.0, 1e-2, low_open=True, high_open=True)
+        if int(n_passes) != n_passes or n_passes < 1:
+            raise ValueError(f"n_passes = {n_passes!r} [-] must be an integer >= 1")
+        check_range("ridge_fraction", ridge_fraction, "-", 0.0, 1.0, low_open=False, high_open=False)
+        check_range("precursor_film", precursor_film, "m", 0.0, ambient_film, low_open=True, high_open=True)
+        c = self.contact(load)
+        ff = self.flooded_film(load, speed_rpm)
+        t_b = self.pass_interval(speed_rpm)
+        a_p = c.a
+        X = 0.5 * self.ball_diameter if reservoir_distance is None else reservoir_distance
+        check_range("reservoir_distance", X, "m", 2.0 * a_p, 1.0, low_open=True, high_open=True)
+        w_r = a_p if ridge_width is None else ridge_width
+        check_range("ridge_width", w_r, "m", 0.0, X - a_p, high_open=False, low_open=True)
+        h_ref = ambient_film
+        b_mob = 0.1 * ambient_film if mobility_film is None else mobility_film
+        check_range("mobility_film", b_mob, "m", 0.0, ambient_film, low_open=False, high_open=True)
+        grid = LevellingGrid(n_cells, X / a_p, bc, h_res=1.0, mobility_film=b_mob / h_ref)
+        T = 3.0 * self.viscosity * a_p ** 4 / (self.surface_tension * h_ref ** 3)  # levelling time [s]
+        tb_hat = t_b / T
+        xs = grid.x
+        # share of each cell inside the depression |x| < a' (exact edge, no O(dx) quantisation)
+        band = np.clip((1.0 - (xs - 0.5 * grid.dx)) / grid.dx, 0.0, 1.0)
+        if not band.any():
+            raise ValueError(f"n_cells = {n_cells} leaves no cell inside the depression half width a' = {a_p:.3e} m")
+        rmask = (xs >= 1.0) & (xs < 1.0 + w_r / a_p)
+        ridge_shape = np.where(rmask, np.sin(np.pi * (xs - 1.0) / (w_r / a_p)), 0.0)
+        if ridge_fraction > 0 and ridge_shape.sum() <= 0:
+            raise ValueError(f"ridge_width = {w_r:.3e} m is narrower than one cell ({grid.dx * a_p:.3e} m)")
+        ridge_shape = ridge_shape / (ridge_shape.sum() * grid.dx) if ridge_shape.sum() > 0 else ridge_shape
+        if replenishment != "thin_film":
+            kap = grid.mode_wavenumbers() / a_p  # SI wavenumbers of the grid's cosine modes
+            decay = np.exp(-chiu_rate(kap, h_ref, self.surface_tension, self.viscosity,
+                                      thin=(replenishment == "chiu_thin")) * t_b)
+
+        h = np.ones(grid.n)
+        n_max = int(n_passes)
+        h_in = np.empty(n_max)
+        h_cen = np.empty(n_max)
+        h_mn = np.empty(n_max)
+        h_outs = np.empty(n_max)
+        ms = np.empty(n_max)
+        vol = np.empty(n_max)
+        regime = []
+        profiles = [] if record_profiles else None
+        st = {"n_steps": 0, "n_rhs": 0, "n_jac": 0, "wall_time": 0.0, "integrate_time": 0.0}
+        wall0 = time.perf_counter()
+        periodic, n_per, calm = False, -1, 0
+        h_out_prev = 0.0
+        n_run = n_max
+        for n in range(n_max):
+            if record_profiles:
+                profiles.append(h * h_ref)
+            vol[n] = grid.volume(h) * h_ref * a_p
+            hin = max(float(h[0]), 0.0) * h_ref
+            m = meniscus_position(c, hin)
+            Hc = hd.starved_central_film(ff.H_c, m, ff.m_c)
+            Hm = hd.starved_minimum_film(ff.H_min, m, ff.m_star)
+            hc = Hc * c.rx
+            h_in[n], h_cen[n], h_mn[n], ms[n] = hin, hc, Hm * c.rx, m
+            if m >= ff.m_c:
+                regime.append(FLOODED)
+            elif (hin - h_out_prev if n > 0 else hin) >= hc:
+                regime.append(STARVED)
+            else:
+                regime.append(PARCHED)
+            # periodic steady state
+            if n > 0 and abs(h_in[n] - h_in[n - 1]) <= periodic_tol * max(h_in[n], 1e-300):
+                calm += 1
+            else:
+                calm = 0
+            if calm >= 3 and not periodic:
+                periodic, n_per = True, n
+                if stop_at_periodic:
+                    n_run = n + 1
+                    break
+            # ball pass: the track keeps h_out, the displaced oil goes into side ridges
+            h_out = max(0.5 * hc, precursor_film)
+            h_outs[n] = h_out
+            h_out_prev = h_out
+            ho = h_out / h_ref
+            excess = band * np.maximum(h - ho, 0.0)
+            h = h - excess
+            if ridge_fraction > 0:
+                h = h + ridge_fraction * excess.sum() * grid.dx * ridge_shape
+            # replenishment until the next ball
+            if n == n_max - 1:
+                break
+            t0 = time.perf_counter()
+            if replenishment == "thin_film":
+                res = solve(grid.problem(h, name="ball_levelling"), np.array([0.0, tb_hat]), method=method,
+                            rtol=rtol, atol=atol, dt=dt, linear_solver=linear_solver)
+                if not res.success:
+                    raise RuntimeError(f"levelling after pass {n} failed ({method}): {res.message}")
+                h = np.array(res.y[-1])
+                st["n_steps"] += res.stats.n_steps
+                st["n_rhs"] += res.stats.n_rhs
+                st["n_jac"] += res.stats.n_jac
+            else:
+                ref = 1.0 if bc == "reservoir" else 0.0
+                h = ref + grid.from_modes(grid.to_modes(h - ref) * decay)
+            st["integrate_time"] += time.perf_counter() - t0
+        st["wall_time"] = time.perf_counter() - wall0
+        sl = slice(0, n_run)
+        h_outs[n_run - 1] = max(0.5 * h_cen[n_run - 1], precursor_film)
+        declining = False
+        if not periodic and n_run >= 6:
+            tail = h_in[n_run - 6:n_run]
+            declining = bool(np.all(np.diff(tail) < 0) and ms[n_run - 1] < ff.m_c)
+        if declining:
+            final = PARCHED
+        else:
+            final = regime[n_run - 1]
+        return BallSequence(h_inlet=h_in[sl].copy(), h_central=h_cen[sl].copy(), h_minimum=h_mn[sl].copy(),
+                            h_outlet=h_outs[sl].copy(), m=ms[sl].copy(), regime=regime[:n_run], m_c=ff.m_c,
+                            m_star=ff.m_star, flooded=ff, contact=c, t_between=t_b, periodic=periodic,
+                            n_periodic=n_per, declining=declining, final_regime=final, stats=st,
+                            x=xs * a_p, profiles=np.array(profiles) if record_profiles else None,
+                            volume=vol[sl].copy())
