@@ -1,7 +1,9 @@
 """The ``transient`` command.
 
     transient run SCENARIO.py [args ...]   run a scenario script (figures and files go where it says)
-    transient bench NAME [--out DIR]       run a benchmark, write its table/plot under DIR (docs/)
+    transient bench NAME [--out DIR] [--quick]
+                                           run a benchmark, write its table/plot under DIR (docs/);
+                                           --quick: a fast smoke version (where the benchmark has one)
     transient --version
 """
 
@@ -15,7 +17,7 @@ from pathlib import Path
 import transient
 
 
-def _bench_film(out: Path) -> str:
+def _bench_film(out: Path, quick: bool = False) -> str:
     from transient.bench import callbacks, film
     rows = film.run()
     text = "## Film operator: residual and Jacobian evaluation time against grid size\n\n" + film.markdown(rows)
@@ -38,7 +40,12 @@ def _bench_roughness(out: Path) -> str:
     return "## Rough-surface generation (seed 000)\n" + roughness.bench_surface()
 
 
-BENCHES = {"film": _bench_film, "ball": _bench_ball, "roughness": _bench_roughness}
+def _bench_pad(out: Path) -> str:
+    from transient.bench import thrust_pad
+    return "## Parallel thrust pad: rough-contact squeeze descent, work-precision (seed 000)\n" + thrust_pad.run()
+
+
+BENCHES = {"film": _bench_film, "ball": _bench_ball, "roughness": _bench_roughness, "pad": _bench_pad}
 
 
 def _write_bench(name: str, text: str, out: Path) -> Path:
@@ -68,6 +75,7 @@ def main(argv: list[str] | None = None) -> int:
     p_bench = sub.add_parser("bench", help="run a benchmark and write its results under docs/")
     p_bench.add_argument("name", choices=sorted(BENCHES))
     p_bench.add_argument("--out", default="docs", help="output folder (default: docs)")
+    p_bench.add_argument("--quick", action="store_true", help="fast smoke version (few settings)")
     a = parser.parse_args(argv)
 
     if a.command == "run":
@@ -78,7 +86,7 @@ def main(argv: list[str] | None = None) -> int:
         runpy.run_path(str(path), run_name="__main__")
         return 0
     out = Path(a.out)
-    text = BENCHES[a.name](out)
+    text = BENCHES[a.name](out, quick=a.quick)
     path = _write_bench(a.name, text, out)
     print(text)
     print(f"\nwritten: {path} and {out / 'benchmarks.md'}")

@@ -1,0 +1,593 @@
+"""Parallel rectangular thrust pad in mixed lubrication: squeeze film + asperity contact (Lee & Rhim,
+seed 000).
+
+A rigid pad ``L x B`` (x along the length L, y along the width B) sits parallel to a counter-face at
+the nominal separation ``h0(t)`` of the mean planes (positive when the gap is open). Parallel surfaces
+generate no wedge pressure (``dh0/dx = 0``), so the film pressure comes from the squeeze term alone.
+Average Reynolds equation with the Wu-Zheng contact factor (Lee & Rhim eq. 10 with ``dh0/dx = 0``; the
+dimensionless form is their eq. 12), ambient pressure (gauge 0) on all four edges (eq. 13)::
+
+    d/dx(phi_x h0^3/(12 mu) dp/dx) + d/dy(phi_y h0^3/(12 mu) dp/dy) = phi_c dh0/dt           (10, 12)
+
+    phi_x, phi_y = Patir-Cheng pressure flow factors at H = h0/sigma, Peklenik number gamma
+    phi_c        = d(h_bar)/d(h0) = P(z < h0)  (Wu-Zheng contact factor, eq. 9)
+
+Force balance on the pad (eq. 14; the paper's F_tot = 0 is the massless limit)::
+
+    M d^2h0/dt^2 = W_hyd + W_asp(h0) - W,     W_hyd = int p dA,
+    W_asp = A (4/3) N E' Rp^(1/2) int_{h0}^inf (z - h0)^(3/2) phi(z) dz                     (15)
+    A_re  = A pi N Rp int_{h0}^inf (z - h0) phi(z) dz                                        (16)
+
+(:mod:`transient.film.asperity`; W [N] the applied load pressing the gap closed.)
+
+Two solution paths, which agree (tests):
+
+* ``"full"`` -- 2-D finite volumes (:class:`~transient.film.reynolds.ReynoldsOperator`, ``nx x ny``
+  cells) with the unknowns ``[p_cells, h0, v]``, ``v = dh0/dt``::
+
+      cells: R_i(p; h0) + A_i phi_c(h0) v = 0          (algebraic, R = net Poiseuille outflow)
+      h0   : h0' - v = 0                               (differential)
+      v    : M v' - (W_hyd + W_asp - W) = 0             (differential if M > 0, algebraic if M = 0)
+
+  With M = 0 the algebraic block ``[[dR/dp, A phi_c], [-A^T, 0]]`` is a non-singular saddle system
+  (its Schur complement is ``-phi_c A^T (dR/dp)^-1 A != 0``), so the DAE has index 1 for IDA. The
+  analytic sparse Jacobian has the arrow pattern of the operator with two dense trailing unknowns.
+  With an ODE method (cvode, bdf, lsoda, rk4) the full path eliminates the pressure instead: every
+  right-hand side solves the 2-D problem for the current h0 (a sparse LU), the paper's inner solve.
+* ``"separable"`` -- the pad is uniform and parallel and the flow factors do not depend on position,
+  so the pressure is ``p = phi_c (dh0/dt) * Pi(x, y; h0)`` with ``Pi`` the solution of one Poisson
+  problem, known in closed form. Stretching y by ``sqrt(phi_x/phi_y)`` turns the anisotropic operator
+  into a Laplacian; the rectangular series (:func:`transient.film.reference.squeeze_rect_load`) gives
+
+      W_hyd = -K(h0) dh0/dt,  K(h0) = mu L^3 B phi_c f(B/L sqrt(phi_x/phi_y)) / (phi_x h0^3),
+      f(r)  = 1 - 192/(pi^5 r) sum_{n odd} tanh(n pi r/2) / n^5,
+
+  and the transient is a scalar ODE (massless: ``dh0/dt = (W_asp(h0) - W) / K(h0)``; with mass the
+  pair ``h0' = v, M v' = -K v + W_asp - W``), integrated by CVODE (or any other method).
+  ``path="auto"`` picks it: in this model the flow factors are always uniform over the pad.
+
+Flow factors below their fitted range (``H < H_min(gamma)``, 0.5 ... 1 in Patir & Cheng's Table 1)
+are **frozen at H_min** (value and zero derivative): the fits are not valid there and the 1 - C e^-rH
+branch would reach zero (an unsolvable Reynolds problem) at H ~ 0.3 ... 0.4. The contact factor and
+the asperity integrals are exact for every h0 (Gaussian or the surface's discrete density).
+``h0 > 0`` is required: ``K(h0) ~ h0^-3`` keeps a lubricated pad from reaching ``h0 = 0`` in finite
+time, so a load above ``W_asp(0+)`` makes the pad creep towards ``h0 = 0`` without equilibrium.
+
+Units: SI at the API (m, Pa, Pa s, N, kg, s). Internally the states are scaled to O(1):
+``p/p_ref`` (``p_ref = W/(L B)``), ``h0/h_ref`` (``h_ref = h0_start``) and ``v/v_ref``.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+import scipy.sparse.linalg as spla
+from scipy import special
+from scipy.optimize import brentq
+
+from transient.film.asperity import AsperityContact, DiscreteDensity, steel_asperity_contact
+from transient.film.flow_factors import PRESSURE_FLOW_TABLE, _gamma_bracket, _key
+from transient.film.grid import Axis, Grid2D
+from transient.film.reynolds import ReynoldsOperator, residual_kernel
+from transient.film.roughness import RoughSurface
+from transient.integrate import Problem, Stats, solve
+from transient.validation import check_positive, check_range
+
+__all__ = ["ThrustPad", "DescentResult", "pressure_flow_clamped", "rect_shape_factor"]
+
+PATHS = ("auto", "full", "separable")
+METHODS = ("ida", "cvode", "bdf", "lsoda", "rk4", "radau")
+_SQRT2PI = math.sqrt(2.0 * math.pi)
+
+
+# --------------------------------------------------------------------------------------------------
+# scalar helpers
+# --------------------------------------------------------------------------------------------------
+
+def rect_shape_factor(r, n_terms: int = 200) -> float:
+    """f(r) = 1 - 192/(pi^5 r) sum_{n odd} tanh(n pi r/2)/n^5 (r = B/L, rectangular squeeze series).
+
+    ``W = mu L^3 B f(B/L) V / h^3`` for smooth plates closing at ``V = -dh/dt``; f -> 1 for r -> inf.
+    Series error after ``n_terms`` odd terms < 192/(pi^5 r) / (4 (2 n_terms)^4).
+    """
+    r = float(r)
+    n = 2.0 * np.arange(int(n_terms)) + 1.0
+    return float(1.0 - 192.0 / (np.pi ** 5 * r) * np.sum(np.tanh(0.5 * n * np.pi * r) / n ** 5))
+
+
+def pressure_flow_clamped(H: float, gamma: float):
+    """Patir-Cheng pressure flow factors with their H-derivatives, frozen below the fit range.
+
+    Returns ``(phi_x, phi_y, dphi_x/dH, dphi_y/dH, H_min)``. Same fits and log-gamma interpolation as
+    :func:`transient.film.flow_factors.pressure_flow_factors` (``phi_x = 1 - C exp(-r H)`` for
+    gamma <= 1, ``1 + C H^-r`` for gamma > 1, ``phi_y(gamma) = phi_x(1/gamma)``), evaluated at
+    ``max(H, H_min)``; ``H_min`` is the largest lower limit of the tabulated fits involved (for phi_x
+    and phi_y), and the derivatives are 0 below it.
+    """
+    bx = _gamma_bracket(gamma)
+    by = _gamma_bracket(1.0 / float(gamma))
+    hmin = max(PRESSURE_FLOW_TABLE[_key(g)][2] for g, _ in bx + by)
+    He = max(float(H), hmin)
+    frozen = float(H) < hmin
+
+    def fit(bracket):
+        val = der = 0.0
+        for g, w in bracket:
+            C, r, _ = PRESSURE_FLOW_TABLE[_key(g)]
+            if g <= 1.0:
+                e = math.exp(-r * He)
+                val += w * (1.0 - C * e)
+                der += w * C * r * e
+            else:
+                val += w * (1.0 + C * He ** (-r))
+                der += w * (-r * C * He ** (-r - 1.0))
+        return val, (0.0 if frozen else der)
+
+    px, dpx = fit(bx)
+    py, dpy = fit(by)
+    return px, py, dpx, dpy, hmin
+
+
+# --------------------------------------------------------------------------------------------------
+# result
+# --------------------------------------------------------------------------------------------------
+
+@dataclass
+class DescentResult:
+    """Squeeze descent of the pad under a constant load.
+
+    ``t`` [s], ``h0`` [m] (mean-plane separation), ``dh0_dt`` [m/s], ``w_hyd`` [N] (film load),
+    ``w_asp`` [N] (asperity load), ``contact_area`` [m^2] (real contact area A_re), ``load`` [N],
+    ``path`` ("full" | "separable"), ``method``, ``stats`` (:class:`transient.integrate.Stats`),
+    ``success``, ``message``; ``pressure`` [Pa] (ny, nx) at the last output (full IDA path only).
+    """
+
+    t: np.ndarray
+    h0: np.ndarray
+    dh0_dt: np.ndarray
+    w_hyd: np.ndarray
+    w_asp: np.ndarray
+    contact_area: np.ndarray
+    load: float
+    mass: float
+    path: str
+    method: str
+    stats: Stats
+    success: bool
+    message: str
+    pressure: np.ndarray | None = field(default=None, repr=False)
+
+    @property
+    def force_residual(self) -> np.ndarray:
+        """``W_hyd + W_asp - W`` [N] at the outputs (= M d^2h0/dt^2; 0 for a massless pad)."""
+        return self.w_hyd + self.w_asp - self.load
+
+
+# --------------------------------------------------------------------------------------------------
+# the pad
+# --------------------------------------------------------------------------------------------------
+
+class ThrustPad:
+    """Parallel rectangular thrust pad, smooth or rough (Lee & Rhim, seed 000). See the module doc.
+
+    Parameters (SI)
+    ----------
+    length L [m] (x), width B [m] (y), viscosity mu [Pa s].
+    surface : None (smooth: phi_x = phi_y = phi_c = 1, no contact), a number (Gaussian heights of RMS
+        sigma [m] of the equivalent surface), or a :class:`~transient.film.roughness.RoughSurface`
+        (its RMS, its measured Peklenik number gamma and its discrete height density, ``bins`` bins).
+    grid : (nx, ny) finite-volume cells of the full path (each 2 ... 2000).
+    contact : ``"auto"`` (default: :func:`~transient.film.asperity.steel_asperity_contact` for a rough
+        surface, with the surface's discrete density; none for a smooth one), an
+        :class:`~transient.film.asperity.AsperityContact`, or None (no asperity load).
+    gamma : Peklenik number for the flow factors, overriding the surface's ([1/9, 9]).
+    """
+
+    def __init__(self, length, width, viscosity, surface=None, grid=(40, 40), contact="auto", gamma=None,
+                 bins: int = 256):
+        self.length = check_positive("length", length, "m")
+        self.width = check_positive("width", width, "m")
+        self.viscosity = check_positive("viscosity", viscosity, "Pa s")
+        try:
+            nx, ny = (v for v in grid)
+        except TypeError:
+            raise ValueError(f"grid must be (nx, ny) cells, got {grid!r}") from None
+        nx = int(check_range("grid[0] (nx)", nx, "cells", 2, 2000))
+        ny = int(check_range("grid[1] (ny)", ny, "cells", 2, 2000))
+        if nx != grid[0] or ny != grid[1]:
+            raise ValueError(f"grid must be two integers (nx, ny) [cells], got {grid!r}")
+        self.grid_shape = (nx, ny)
+        self.area = self.length * self.width
+        self.surface = None
+        self.density: DiscreteDensity | None = None
+        if surface is None:
+            self.sigma = None
+            g = 1.0
+        elif isinstance(surface, RoughSurface):
+            self.surface = surface
+            self.sigma = surface.rq
+            self.density = surface.height_density(bins=bins)
+            g = surface.gamma
+        elif isinstance(surface, (int, float, np.floating, np.integer)) and not isinstance(surface, bool):
+            self.sigma = check_positive("surface (sigma, RMS roughness)", surface, "m")
+            g = 1.0
+        else:
+            raise ValueError(f"surface must be None, an RMS roughness sigma [m] or a RoughSurface, got "
+                             f"{type(surface).__name__}")
+        if gamma is not None:
+            g = gamma
+        self.gamma = check_range("gamma (Peklenik number)", g, "-", 1.0 / 9.0 * (1 - 1e-12), 9.0 * (1 + 1e-12),
+                                 why="(Patir-Cheng flow-factor tables)")
+        if isinstance(contact, str):
+            if contact != "auto":
+                raise ValueError(f"contact must be 'auto', an AsperityContact or None, got {contact!r}")
+            contact = None if self.sigma is None else steel_asperity_contact(self.sigma, density=self.density)
+        elif contact is not None and not isinstance(contact, AsperityContact):
+            raise ValueError(f"contact must be 'auto', an AsperityContact or None, got {type(contact).__name__}")
+        self.contact = contact
+        self._op = None
+        self._lap = None
+
+    # ---------------------------------------------------------------------------------------------
+    @property
+    def rough(self) -> bool:
+        return self.sigma is not None
+
+    def __repr__(self):
+        s = "smooth" if not self.rough else f"sigma={self.sigma:.4g} m, gamma={self.gamma:.3g}"
+        return (f"ThrustPad(L={self.length:g} m, B={self.width:g} m, mu={self.viscosity:g} Pa s, {s}, "
+                f"grid={self.grid_shape}, contact={'yes' if self.contact is not None else 'no'})")
+
+    # ---- film factors and contact as functions of h0 --------------------------------------------
+    def flow_factors(self, h0):
+        """``(phi_x, phi_y, dphi_x/dh0, dphi_y/dh0)`` at h0 [m] (frozen below the fit range; 1 if smooth)."""
+        if not self.rough:
+            return 1.0, 1.0, 0.0, 0.0
+        px, py, dpx, dpy, _ = pressure_flow_clamped(h0 / self.sigma, self.gamma)
+        return px, py, dpx / self.sigma, dpy / self.sigma
+
+    def contact_factor(self, h0):
+        """``(phi_c, dphi_c/dh0)`` at h0 [m]: P(z < h0) and the height density at h0 (1, 0 if smooth)."""
+        if not self.rough:
+            return 1.0, 0.0
+        if self.density is not None:
+            d = self.density
+            k = int(np.searchsorted(d.edges, h0, side="right")) - 1
+            pdf = d.prob[k] / (d.edges[k + 1] - d.edges[k]) if 0 <= k < d.prob.size else 0.0
+            return float(d.contact_factor(h0)), float(pdf)
+        H = h0 / self.sigma
+        return float(special.ndtr(H)), math.exp(-0.5 * H * H) / (_SQRT2PI * self.sigma)
+
+    def asperity_load(self, h0):
+        """W_asp [N] at h0 [m] (eq. 15 times the pad area; 0 without contact). Vectorised."""
+        if self.contact is None:
+            return np.zeros_like(np.asarray(h0, dtype=float)) + 0.0
+        return self.area * self.contact.load(h0)
+
+    def asperity_load_derivative(self, h0):
+        """dW_asp/dh0 [N/m]."""
+        if self.contact is None:
+            return 0.0 * np.asarray(h0, dtype=float)
+        return self.area * self.contact.load_derivative(h0)
+
+    def contact_area(self, h0):
+        """Real contact area A_re [m^2] at h0 [m] (eq. 16 times the pad area)."""
+        if self.contact is None:
+            return 0.0 * np.asarray(h0, dtype=float)
+        return self.area * self.contact.real_area_fraction(h0)
+
+    # ---- squeeze film -------------------------------------------------------------------------
+    def squeeze_coefficient(self, h0, path: str = "separable") -> float:
+        """K(h0) [N s/m] with ``W_hyd = -K dh0/dt``: closed-form series (``"separable"``) or the 2-D
+        finite-volume solve (``"full"``)."""
+        h0 = check_positive("h0", h0, "m")
+        if path == "separable":
+            return self._K_series(h0)
+        if path == "full":
+            return self._K_grid(h0)
+        raise ValueError(f"path must be 'separable' or 'full', got {path!r}")
+
+    def squeeze_load(self, h0, dh0_dt, path: str = "full") -> float:
+        """Film load W_hyd [N] for the pad at h0 [m] moving at dh0_dt [m/s] (> 0 when dh0_dt < 0).
+
+        ``path="full"``: 2-D finite volumes on the pad grid; ``"separable"``: the exact series."""
+        v = check_range("dh0_dt", dh0_dt, "m/s")
+        return -self.squeeze_coefficient(h0, path) * v
+
+    def pressure(self, h0, dh0_dt) -> np.ndarray:
+        """Film pressure [Pa, gauge] on the grid, shape (ny, nx), from the 2-D finite volumes."""
+        h0 = check_positive("h0", h0, "m")
+        v = check_range("dh0_dt", dh0_dt, "m/s")
+        q = self._unit_pressure(h0)
+        return (self.contact_factor(h0)[0] * v * q).reshape(self.grid_shape[1], self.grid_shape[0])
+
+    def _K_series(self, h0):
+        px, py, _, _ = self.flow_factors(h0)
+        pc, _ = self.contact_factor(h0)
+        f = rect_shape_factor(self.width / self.length * math.sqrt(px / py))
+        return self.viscosity * self.length ** 3 * self.width * pc * f / (px * h0 ** 3)
+
+    def _K_grid(self, h0):
+        pc, _ = self.contact_factor(h0)
+        q = self._unit_pressure(h0)
+        return -pc * float(self._cell_area @ q)
+
+    # ---- finite-volume machinery --------------------------------------------------------------
+    def _build_operator(self):
+        if self._op is not None:
+            return
+        nx, ny = self.grid_shape
+        g = Grid2D(Axis.uniform(nx, self.length, name="x"), Axis.uniform(ny, self.width, name="y"))
+        op = ReynoldsOperator(g, n_extra=2, upwind=False, boundary_P=0.0, boundary_C=1.0)
+        n = op.n_cells
+        self._op = op
+        self._cell_area = np.ascontiguousarray(g.area)
+        self._ones = np.ones(n)
+        self._zeros = np.zeros(n)
+        # dR/dp of the x faces and of the y faces for unit conductance (R is linear in p)
+        mats = []
+        for kx, kz in ((1.0, 0.0), (0.0, 1.0)):
+            d = op.jacobian(self._ones, self._ones, self._ones, self._zeros, self._ones * kx, self._zeros,
+                            self._ones * kz, self._zeros, self._zeros, self._zeros)
+            mats.append(op.matrix(d)[:n, :n].tocsc())
+        self._Dx, self._Dy = mats
+        self._lu_cache = {}
+        # CSC row / column of every pattern entry (for the state/residual scaling of the Jacobian)
+        self._row = op.stencil.indices.copy()
+        self._col = np.repeat(np.arange(op.n), np.diff(op.stencil.indptr))
+
+    def _unit_pressure(self, h0):
+        """q [Pa s/m] with p = phi_c (dh0/dt) q: solves (kx Dx + ky Dy) q = -A on the grid."""
+        self._build_operator()
+        px, py, _, _ = self.flow_factors(h0)
+        c = h0 ** 3 / (12.0 * self.viscosity)
+        key = round(py / px, 12)
+        lu = self._lu_cache.get(key)
+        if lu is None:
+            if len(self._lu_cache) > 8:
+                self._lu_cache.clear()
+            lu = spla.splu((self._Dx + key * self._Dy).tocsc())
+            self._lu_cache[key] = lu
+        return lu.solve(-self._cell_area) / (px * c)
+
+    # ---- equilibrium ------------------------------------------------------------------------------
+    def equilibrium(self, load) -> float:
+        """h0 [m] with W_asp(h0) = load: the steady limit of the rough pad (a parallel pad carries no
+        steady film load). Direct root solve (brentq) of the monotone asperity load."""
+        W = check_positive("load", load, "N")
+        if self.contact is None:
+            raise ValueError("equilibrium needs asperity contact: a smooth (or contact=None) parallel pad "
+                             "has no steady state under load (its film only delays the approach)")
+        f = lambda h: float(self.asperity_load(h)) - W  # noqa: E731
+        s = self.sigma
+        if self.density is not None:
+            lo, hi = float(self.density.edges[0]), float(self.density.edges[-1])
+        else:
+            lo, hi = -8.0 * s, 40.0 * s
+        while f(lo) < 0:
+            lo -= 4.0 * s
+            if lo < -1e3 * s:
+                raise ValueError(f"load = {W:g} N is beyond the elastic contact model (W_asp(-1000 sigma) < load)")
+        return float(brentq(f, lo, hi, xtol=1e-15 * s, rtol=1e-13, maxiter=200))
+
+    # ---- transient --------------------------------------------------------------------------------
+    def descent(self, load, h0_start, t_end, mass=0.0, method: str = "cvode", rtol=1e-6, atol=1e-9,
+                path: str = "auto", n_out: int = 201, t_eval=None, dt=None, **solve_options) -> DescentResult:
+        """Squeeze descent under a constant load W = ``load`` [N] from rest at h0 = ``h0_start`` [m].
+
+        ``mass`` [kg] (0: massless force balance, eq. 14 with F_tot = 0); ``method`` one of ida, cvode,
+        bdf, lsoda, radau, rk4 (``dt`` [s] required for rk4); ``path`` "auto" (= separable), "full"
+        (2-D film: a DAE with the analytic sparse Jacobian for ida, the pressure eliminated by a 2-D
+        solve per right-hand side for ODE methods) or "separable" (scalar ODE); outputs at
+        ``t_eval`` [s] or ``n_out`` equally spaced times on [0, t_end]. ``rtol``, ``atol`` apply to the
+        scaled states (h0/h0_start, v/v_ref, p/p_ref; all O(1)).
+        """
+        W = check_positive("load", load, "N")
+        h_s = check_positive("h0_start", h0_start, "m")
+        t_end = check_positive("t_end", t_end, "s")
+        M = check_range("mass", mass, "kg", 0.0, math.inf, high_open=True)
+        if method not in METHODS:
+            raise ValueError(f"method must be one of {METHODS}, got {method!r}")
+        if path not in PATHS:
+            raise ValueError(f"path must be one of {PATHS}, got {path!r}")
+        if t_eval is None:
+            n_out = int(check_range("n_out", n_out, "-", 2, 1e7))
+            t_eval = np.linspace(0.0, t_end, n_out)
+        else:
+            t_eval = np.asarray(t_eval, dtype=float)
+            if t_eval[0] != 0.0 or abs(t_eval[-1] - t_end) > 1e-12 * t_end:
+                raise ValueError("t_eval must run from 0 to t_end [s]")
+        if method == "rk4" and dt is None:
+            raise ValueError("method 'rk4' needs dt [s] (fixed step)")
+        path = "separable" if path == "auto" else path
+        # scales: v_ref = the massless initial rate (or h_s / t_end if the pad starts balanced)
+        v0 = (float(self.asperity_load(h_s)) - W) / self._K_series(h_s)
+        v_ref = max(abs(v0), h_s / t_end)
+        sc = dict(W=W, M=M, h=h_s, v=v_ref, p=W / self.area)
+        if path == "full" and method == "ida":
+            sysm = _FullDAE(self, sc)
+        elif path == "full":
+            sysm = _ReducedODE(self, sc, grid=True)
+        else:
+            sysm = _ReducedODE(self, sc, grid=False)
+        prob = sysm.problem()
+        res = solve(prob, t_eval, method=method, rtol=rtol, atol=atol, dt=dt, **solve_options)
+        out = sysm.outputs(res)
+        pres = out.pop("pressure", None)
+        return DescentResult(t=res.t, load=W, mass=M, path=path, method=method, stats=res.stats,
+                             success=res.success, message=res.message, pressure=pres, **out)
+
+
+# --------------------------------------------------------------------------------------------------
+# the two formulations
+# --------------------------------------------------------------------------------------------------
+
+class _ReducedODE:
+    """ODE in (h0) (massless) or (h0, v) (mass > 0) with W_hyd = -K(h0) v; K from the series
+    (separable path) or from the 2-D grid solve per call (full path with an ODE method)."""
+
+    def __init__(self, pad: ThrustPad, sc, grid: bool):
+        self.pad, self.sc, self.grid = pad, sc, grid
+        self.K = pad._K_grid if grid else pad._K_series
+
+    def rates(self, h):
+        """(K, W_asp) at h."""
+        return self.K(h), float(self.pad.asperity_load(h))
+
+    def problem(self) -> Problem:
+        sc = self.sc
+        hr, vr, W, M = sc["h"], sc["v"], sc["W"], sc["M"]
+        if M == 0.0:
+            def rhs(t, y, out):
+                h = y[0] * hr
+                K, Wa = self.rates(h)
+                out[0] = (Wa - W) / K / hr  # d(h/hr)/dt
+            return Problem(y0=np.array([1.0]), rhs=rhs, name="thrust pad (massless, reduced)")
+
+        def rhs(t, y, out):
+            h, v = y[0] * hr, y[1] * vr
+            K, Wa = self.rates(h)
+            out[0] = v / hr
+            out[1] = (-K * v + Wa - W) / M / vr
+        return Problem(y0=np.array([1.0, 0.0]), rhs=rhs, name="thrust pad (mass, reduced)")
+
+    def outputs(self, res):
+        sc = self.sc
+        h = res.y[:, 0] * sc["h"]
+        pad = self.pad
+        K = np.array([self.K(x) for x in h])
+        wa = np.asarray(pad.asperity_load(h), dtype=float) * np.ones_like(h)
+        if sc["M"] == 0.0:
+            v = (wa - sc["W"]) / K
+        else:
+            v = res.y[:, 1] * sc["v"]
+        return dict(h0=h, dh0_dt=v, w_hyd=-K * v, w_asp=wa,
+                    contact_area=np.asarray(pad.contact_area(h), dtype=float) * np.ones_like(h))
+
+
+class _FullDAE:
+    """The 2-D DAE ``[p_cells, h0, v]`` for IDA, scaled; residual and analytic sparse Jacobian."""
+
+    def __init__(self, pad: ThrustPad, sc):
+        pad._build_operator()
+        self.pad, self.sc = pad, sc
+        op = pad._op
+        self.op = op
+        self.n = n = op.n_cells
+        self.N = N = op.n
+        mu = pad.viscosity
+        self.c3 = 1.0 / (12.0 * mu)
+        # state scales S (y_SI = S * y) and residual row scales Rs (F_scaled = F_SI / Rs)
+        S = np.empty(N)
+        S[:n], S[n], S[n + 1] = sc["p"], sc["h"], sc["v"]
+        Rs = np.empty(N)
+        k_ref = sc["h"] ** 3 * self.c3
+        Rs[:n] = k_ref * sc["p"]
+        Rs[n] = sc["v"]
+        Rs[n + 1] = sc["W"]
+        self.S, self.Rs = S, Rs
+        self.fac = S[pad._col] / Rs[pad._row]
+        self.A = pad._cell_area
+        self.kx = np.empty(n)
+        self.kz = np.empty(n)
+        self.dq = (np.zeros((2, n)), np.zeros((2, n)), np.zeros((2, n)), np.zeros((2, n)))
+        self.res_args = op.residual_args
+        self.st = op.stencil
+        # positions of the dense-row entries
+        self.pos_hh = int(self.st.pos_row_extra[0, n])
+        self.pos_hv = int(self.st.pos_row_extra[0, n + 1])
+        self.pos_vp = np.ascontiguousarray(self.st.pos_row_extra[1, :n])
+        self.pos_vh = int(self.st.pos_row_extra[1, n])
+        self.pos_vv = int(self.st.pos_row_extra[1, n + 1])
+        self.pos_ch = np.ascontiguousarray(self.st.pos_col_extra[:n, 0])
+        self.pos_cv = np.ascontiguousarray(self.st.pos_col_extra[:n, 1])
+
+    def _fields(self, h):
+        pad = self.pad
+        px, py, dpx, dpy = pad.flow_factors(h)
+        pc, dpc = pad.contact_factor(h)
+        Wa = float(pad.asperity_load(h))
+        dWa = float(pad.asperity_load_derivative(h))
+        return px, py, dpx, dpy, pc, dpc, Wa, dWa
+
+    def residual(self, t, y, yp, out):
+        n, S = self.n, self.S
+        p = y[:n] * S[0]
+        h = y[n] * S[n]
+        v = y[n + 1] * S[n + 1]
+        px, py, _, _, pc, _, Wa, _ = self._fields(h)
+        c = h ** 3 * self.c3
+        self.kx.fill(px * c)
+        self.kz.fill(py * c)
+        z = self.pad._zeros
+        residual_kernel(p, p, self.pad._ones, self.kx, self.kz, z, z, False, *self.res_args, out)
+        out[:n] += self.A * (pc * v)
+        out[:n] /= self.Rs[0]
+        out[n] = (yp[n] * S[n] - v) / self.Rs[n]
+        w_hyd = float(self.A @ p)
+        out[n + 1] = (self.sc["M"] * yp[n + 1] * S[n + 1] - (w_hyd + Wa - self.sc["W"])) / self.Rs[n + 1]
+
+    def jacobian(self, t, y, yp, cj, data):
+        n, S = self.n, self.S
+        pad = self.pad
+        p = y[:n] * S[0]
+        h = y[n] * S[n]
+        v = y[n + 1] * S[n + 1]
+        px, py, dpx, dpy, pc, dpc, Wa, dWa = self._fields(h)
+        c = h ** 3 * self.c3
+        dc = 3.0 * h ** 2 * self.c3
+        self.kx.fill(px * c)
+        self.kz.fill(py * c)
+        dkx, dkz = self.dq[0], self.dq[1]
+        dkx[0].fill(dpx * c + px * dc)
+        dkz[0].fill(dpy * c + py * dc)
+        o, z = pad._ones, pad._zeros
+        self.op.jacobian(p, o, o, z, self.kx, z, self.kz, z, z, z, dq=self.dq, data=data)
+        data[self.pos_ch] += self.A * (dpc * v)
+        data[self.pos_cv] += self.A * pc
+        data[self.pos_vp] = -self.A
+        data[self.pos_hh] = cj
+        data[self.pos_hv] = -1.0
+        data[self.pos_vh] = -dWa
+        data[self.pos_vv] = cj * self.sc["M"]
+        data *= self.fac  # d(F/Rs)/d(y/S) with y' scaled alike (cj acts on the scaled y')
+
+    def consistent_start(self):
+        """y0, yp0 at rest (mass) or on the force balance (massless) at h0 = h0_start."""
+        n, S, sc = self.n, self.S, self.sc
+        pad = self.pad
+        h = sc["h"]
+        y0 = np.zeros(self.N)
+        yp0 = np.zeros(self.N)
+        y0[n] = 1.0
+        pc = pad.contact_factor(h)[0]
+        Wa = float(pad.asperity_load(h))
+        if sc["M"] == 0.0:
+            K = pad._K_grid(h)
+            v = (Wa - sc["W"]) / K
+            y0[:n] = pc * v * pad._unit_pressure(h) / S[0]
+            y0[n + 1] = v / S[n + 1]
+            yp0[n] = v / S[n]
+        else:
+            yp0[n + 1] = (Wa - sc["W"]) / sc["M"] / S[n + 1]
+        return y0, yp0
+
+    def problem(self) -> Problem:
+        y0, yp0 = self.consistent_start()
+        n = self.n
+        alg = np.arange(n) if self.sc["M"] > 0 else np.concatenate([np.arange(n), [n + 1]])
+        return Problem(y0=y0, yp0=yp0, residual=self.residual, jac_pattern=self.op.pattern,
+                       jac_residual=self.jacobian, algebraic=alg, name="thrust pad (full 2-D DAE)")
+
+    def outputs(self, res):
+        n, S = self.n, self.S
+        p = res.y[:, :n] * S[0]
+        h = res.y[:, n] * S[n]
+        v = res.y[:, n + 1] * S[n + 1]
+        pad = self.pad
+        one = np.ones_like(h)
+        nx, ny = pad.grid_shape
+        return dict(h0=h, dh0_dt=v, w_hyd=p @ self.A, w_asp=np.asarray(pad.asperity_load(h), float) * one,
+                    contact_area=np.asarray(pad.contact_area(h), float) * one, pressure=p[-1].reshape(ny, nx))
