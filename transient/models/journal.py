@@ -314,6 +314,28 @@ class Film:
         dF = np.vstack([gx @ du, gy @ du])
         return F, dF[:, :2], dF[:, 2:]
 
+    def mass_flows(self, u, X, Y):
+        """Global mass balance terms of the film at state ``u`` (dimensionless, whole bearing)::
+
+            M      = sym * sum_free A_i H_i theta_i          film content (liquid volume / (C R^2))
+            q_ends = net outflow through the bearing ends   (volume rate / (C R^2 omega))
+            q_grv  = net outflow into the groove cells      (negative: the supply)
+
+        The semi-discrete film equations give exactly ``dM/dtau = -(q_ends + q_grv)`` (the squeeze term
+        of the free cells is part of ``dM/dtau``), so a time integrator's drift from this identity
+        measures its own conservation error."""
+        w, op = self.w, self.op
+        R = self.residual(u, X, Y)  # VX = VY = 0: pure net outflow of each cell; fills H, P, theta
+        free = op.free
+        M = w.sym * float(np.sum((w.area * w.H * w.C)[free]))
+        total = w.sym * float(np.sum(R[free]))
+        b = op.bcell
+        ok = free[b]
+        if np.any(op.bdir[ok] != 1):
+            raise NotImplementedError("mass_flows assumes Dirichlet faces only at the bearing ends")
+        ends = w.sym * float(np.sum((-w.k[b] * (op.bP - w.P[b]) / op.bd * op.bs)[ok]))
+        return M, ends, total - ends
+
     def state(self, u, X, Y, iterations=0) -> FilmState:
         b = self.bearing
         F = self.force(u, X, Y)

@@ -34,7 +34,7 @@ from transient.models.journal_film import (N_ROTOR, dae_jacobian, dae_residual, 
 from transient.validation import check_positive, check_range
 
 G = 9.80665
-RECORDABLE = ("force", "pressure", "film_content", "min_film")
+RECORDABLE = ("force", "pressure", "film_content", "min_film", "mass", "outflow")
 
 
 @dataclass
@@ -185,7 +185,9 @@ class JournalOrbit:
         inner_tolerance : ``"rk4"`` only: the per-stage film criterion sum|d theta| / sum theta (paper: 1e-6).
         outputs_per_revolution : output (sampling) rate.
         record : extra series to keep at the outputs: any of ``"force"`` [N], ``"min_film"`` [m],
-            ``"pressure"`` [Pa] and ``"film_content"`` (fields: stored only from
+            ``"mass"`` [m^3] (film content as liquid volume at the cavitation density, whole bearing),
+            ``"outflow"`` [m^3/s] ((n, 2): through the ends, into the groove -- negative: the supply;
+            see :meth:`mass_balance`), ``"pressure"`` [Pa] and ``"film_content"`` (fields: stored only from
             ``record_from_revolution`` on, so a long run keeps only the window it needs).
         chunk_revolutions : integrate in chunks of this many revolutions (progress and checkpoints
             between chunks); default: the whole run in one chunk unless a checkpoint is asked for (10).
@@ -240,6 +242,45 @@ class JournalOrbit:
                       f"{el:7.1f} s elapsed  ({el / max(done, 1e-9):.3f} s/rev)", file=sys.stderr, flush=True)
         stats.wall_time = time.perf_counter() - wall0
         return rec.result(method, stats, touched, message)
+
+    # ---------------------------------------------------------------------------------------------
+    @staticmethod
+    def mass_balance(result: OrbitResult) -> dict:
+        """Global mass balance of a run recorded with ``record=("mass", "outflow")``, per revolution::
+
+            error_k = M(t_k+1) - M(t_k) + int_{t_k}^{t_k+1} (q_ends + q_groove) dt
+
+        (exactly zero for the semi-discrete model, so it measures the time integration), relative to the
+        throughput of that revolution ``int |q_ends| dt`` (the leakage the supply replaces). The
+        integral is taken with the composite Simpson rule on the outputs (use an even number of
+        outputs per revolution; its own error is reported as the difference to the trapezoidal rule).
+
+        Returns ``revolution_end_times`` [s], ``error`` [m^3], ``throughput`` [m^3], ``relative``
+        (error / throughput) and ``quadrature_relative`` (|Simpson - trapezoid| / throughput).
+        """
+        from scipy.integrate import simpson, trapezoid
+
+        if "mass" not in result.fields or "outflow" not in result.fields:
+            raise ValueError('mass_balance needs a run recorded with record=("mass", "outflow")')
+        t, M, q = result.t, result.mass, result.outflow
+        per_rev = 60.0 / result.speed_rpm
+        k_end = int(np.floor((t[-1] - t[0]) / per_rev + 1e-9))
+        out = {"revolution_end_times": [], "error": [], "throughput": [], "relative": [],
+               "quadrature_relative": []}
+        for k in range(k_end):
+            a = int(np.argmin(np.abs(t - (t[0] + k * per_rev))))
+            b = int(np.argmin(np.abs(t - (t[0] + (k + 1) * per_rev))))
+            s = slice(a, b + 1)
+            net = q[s, 0] + q[s, 1]
+            flow = simpson(net, x=t[s])
+            err = M[b] - M[a] + flow
+            thr = simpson(np.abs(q[s, 0]), x=t[s])
+            out["revolution_end_times"].append(t[b])
+            out["error"].append(err)
+            out["throughput"].append(thr)
+            out["relative"].append(abs(err) / thr)
+            out["quadrature_relative"].append(abs(flow - trapezoid(net, x=t[s])) / thr)
+        return {k: np.array(v) for k, v in out.items()}
 
     # ---------------------------------------------------------------------------------------------
     def _run_rk4(self, y0, tau, steps_per_revolution, rec, inner_tolerance):
@@ -392,6 +433,13 @@ class _Recorder:
             self.series["force"].append((F[0] * f.force_scale, F[1] * f.force_scale))
         if "min_film" in self.record:
             self.series["min_film"].append(C * (1.0 - np.hypot(y[n], y[n + 1])))
+        if "mass" in self.record or "outflow" in self.record:
+            M, q_ends, q_groove = f.mass_flows(y[:n], y[n], y[n + 1])
+            vol = C * o.bearing.radius ** 2
+            if "mass" in self.record:
+                self.series["mass"].append(M * vol)
+            if "outflow" in self.record:
+                self.series["outflow"].append((q_ends * vol * f.omega, q_groove * vol * f.omega))
         if tau >= self.tau0_fields - 1e-12:
             grid = o.bearing.grid
             if "pressure" in self.record:
@@ -399,8 +447,8 @@ class _Recorder:
                 self.series["pressure"].append((tau / f.omega, grid.to_2d(o.bearing.cavitation_pressure
                                                                           + f.p0 * f.w.P).astype(np.float32)))
             if "film_content" in self.record:
-                self.series["film_content"].append((tau / f.omega,
-                                                    grid.to_2d(1.0 + y[:n] / f.beta_bar).astype(np.float32)))
+                f.residual(y[:n], y[n], y[n + 1])  # theta = C(u) (u is not theta - 1 in cavitation)
+                self.series["film_content"].append((tau / f.omega, grid.to_2d(f.w.C).astype(np.float32)))
 
     @property
     def last_eps(self):
@@ -434,8 +482,9 @@ class _Recorder:
                              f"run with resume=False")
         self.t, self.x, self.y = list(d["t"]), list(d["x"]), list(d["yy"])
         for k in self.series:
-            if f"series_{k}" in d:
-                self.series[k] = list(d[f"series_{k}"])
+            if f"series_{k}" in d:  # scalar / pair series back as floats (not object arrays)
+                v = d[f"series_{k}"]
+                self.series[k] = list(v) if k in ("pressure", "film_content") else v.tolist()
         self.last_y = np.array(d["y"])
         self.last_tau = float(d["last_tau"])
         return np.array(d["y"]), float(d["done"])
@@ -444,7 +493,8 @@ class _Recorder:
 def _signature(o: JournalOrbit) -> str:
     b = o.bearing
     return repr((b.diameter, b.length, b.clearance, b.viscosity, b.bulk_modulus, b.supply_pressure, b.groove,
-                 b.grid_shape, b.switch_width, b.symmetric, o.rotor_mass, o.unbalance, o.load, o.speed_rpm))
+                 b.grid_shape, b.switch_width, b.symmetric, b.cavitation_pressure, b.ambient_pressure,
+                 o.rotor_mass, o.unbalance, o.load, o.speed_rpm))
 
 
 def _accumulate(total: Stats, part: Stats):
