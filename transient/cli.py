@@ -28,24 +28,32 @@ def _bench_film(out: Path, quick: bool = False) -> str:
     return text
 
 
-def _bench_ball(out: Path) -> str:
+def _bench_journal(out: Path, quick: bool = False) -> str:
+    from transient.bench import journal
+    result = journal.run(quick=quick)
+    journal.write(result, out)
+    return journal.markdown(result) + "\n\n![work-precision](bench_journal.png)"
+
+
+def _bench_ball(out: Path, quick: bool = False) -> str:
     from transient.bench import ball
     res = ball.run(out_dir=str(out))
     return ("## Thrust ball bearing: 200-ball-pass sequence, work-precision (seed 002)\n"
             + res["markdown"] + "\n\n![work-precision](bench_ball.png)")
 
 
-def _bench_roughness(out: Path) -> str:
+def _bench_roughness(out: Path, quick: bool = False) -> str:
     from transient.bench import roughness
     return "## Rough-surface generation (seed 000)\n" + roughness.bench_surface()
 
 
-def _bench_pad(out: Path) -> str:
+def _bench_pad(out: Path, quick: bool = False) -> str:
     from transient.bench import thrust_pad
     return "## Parallel thrust pad: rough-contact squeeze descent, work-precision (seed 000)\n" + thrust_pad.run()
 
 
-BENCHES = {"film": _bench_film, "ball": _bench_ball, "roughness": _bench_roughness, "pad": _bench_pad}
+BENCHES = {"film": _bench_film, "journal": _bench_journal, "ball": _bench_ball, "roughness": _bench_roughness,
+           "pad": _bench_pad}
 
 
 def _write_bench(name: str, text: str, out: Path) -> Path:
