@@ -18,17 +18,11 @@ import pytest
 import scipy.sparse as sp
 
 from transient.film.reference import short_bearing_force
-from transient.models.journal import Groove, JournalBearing, omega
+from transient.models.journal import RHO_KIM_BEARING, RHO_KIM_ROTOR, Groove, JournalBearing, omega
 from transient.models.journal_orbit import JournalOrbit
 
-# Paper, Table 1
-D = 0.08
-L = 0.3 * D
-CL = D / 1000
-MU = 0.029
-W = 981.0
-MASS = 100.0
-RPM = 6000.0
+D, L, CL, MU = (RHO_KIM_BEARING[k] for k in ("diameter", "length", "clearance", "viscosity"))
+W, MASS, RPM = RHO_KIM_ROTOR["load"], RHO_KIM_ROTOR["rotor_mass"], 6000.0
 
 
 def paper_bearing(grid=(48, 8), **kw):

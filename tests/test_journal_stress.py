@@ -7,18 +7,13 @@ import time
 import numpy as np
 import pytest
 
-from transient.models.journal import JournalBearing
+from transient.models.journal import RHO_KIM_BEARING, RHO_KIM_ROTOR, JournalBearing
 from transient.models.journal_orbit import JournalOrbit
 
 pytestmark = pytest.mark.slow
 
-D = 0.08
-L = 0.3 * D
-CL = D / 1000
-MU = 0.029
-W = 981.0
-MASS = 100.0
-RPM = 6000.0
+D, L, CL, MU = (RHO_KIM_BEARING[k] for k in ("diameter", "length", "clearance", "viscosity"))
+W, MASS, RPM = RHO_KIM_ROTOR["load"], RHO_KIM_ROTOR["rotor_mass"], 6000.0
 
 
 def paper_bearing(grid=(151, 21), **kw):

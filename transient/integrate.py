@@ -476,6 +476,20 @@ def _locate(events, fn_y, ta, tb, ga, gb, idx):
     return best_t, best
 
 
+def _step_events(events, state_at, ta, tb, g_prev, y_b, out):
+    """Events over the step (ta, tb]: locate the earliest crossing on the interpolant ``state_at(t)``,
+    emit the outputs before it, record it. Returns (event values at tb, terminal event time or None)."""
+    g_new = events.values(tb, y_b)
+    idx = events.crossed(g_prev, g_new)
+    if idx:
+        te, which = _locate(events, state_at, ta, tb, g_prev, g_new, idx)
+        while out.k < out.t_eval.size and out.pending <= te:
+            out.put(state_at(out.pending))
+        if events.record(te, state_at(te), which):
+            return g_new, te
+    return g_new, None
+
+
 def _solve_scipy(problem, method, t_eval, out, counter, events, rtol, atol, max_step, first_step, max_steps):
     if problem.rhs is None or problem.is_dae:
         raise ValueError(f"method '{method}' integrates ODEs only; problem '{problem.name}' is a DAE "
@@ -508,15 +522,9 @@ def _solve_scipy(problem, method, t_eval, out, counter, events, rtol, atol, max_
         dense = solver.dense_output()
         t_stop = solver.t
         if events is not None:
-            g_new = events.values(solver.t, solver.y)
-            idx = events.crossed(g_prev, g_new)
-            if idx:
-                te, which = _locate(events, dense, t_old, solver.t, g_prev, g_new, idx)
-                while out.k < t_eval.size and out.pending <= te:
-                    out.put(dense(out.pending))
-                if events.record(te, dense(te), which):
-                    return True, f"terminal event at t={te:.9g}", n_steps
-            g_prev = g_new
+            g_prev, te = _step_events(events, dense, t_old, solver.t, g_prev, solver.y, out)
+            if te is not None:
+                return True, f"terminal event at t={te:.9g}", n_steps
         while out.k < t_eval.size and out.pending <= t_stop:
             out.put(solver.y if out.pending == t_stop else dense(out.pending))
         if solver.status == "finished" and out.k < t_eval.size:
@@ -579,17 +587,10 @@ def _solve_rk4(problem, t_eval, out, counter, events, dt, max_steps):
         y_new = step(t, y, h)
         n_steps += 1
         if events is not None:
-            y_chk = consistent(t_new, y_new)
-            g_new = events.values(t_new, y_chk)
-            idx = events.crossed(g_prev, g_new)
-            if idx:
-                partial = lambda s, t=t, y=y: consistent(s, step(t, y, s - t)) if s > t else y
-                te, which = _locate(events, partial, t, t_new, g_prev, g_new, idx)
-                while out.k < t_eval.size and out.pending <= te:
-                    out.put(partial(out.pending))
-                if events.record(te, partial(te), which):
-                    return True, f"terminal event at t={te:.9g}", n_steps
-            g_prev = g_new
+            partial = lambda s, t=t, y=y: consistent(s, step(t, y, s - t)) if s > t else y
+            g_prev, te = _step_events(events, partial, t, t_new, g_prev, consistent(t_new, y_new), out)
+            if te is not None:
+                return True, f"terminal event at t={te:.9g}", n_steps
         while out.k < t_eval.size and out.pending <= t_new:
             # an output inside the step is an RK4 step of the partial length from t
             out.put(consistent(t_new, y_new) if out.pending == t_new

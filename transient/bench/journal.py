@@ -43,13 +43,11 @@ from pathlib import Path
 
 import numpy as np
 
-from transient.models.journal import JournalBearing
+from transient.models.journal import RHO_KIM_BEARING, RHO_KIM_ROTOR, JournalBearing
 from transient.models.journal_orbit import JournalOrbit
 
-CLEARANCE = 80e-6
-BEARING = dict(diameter=0.08, length=0.024, clearance=CLEARANCE, viscosity=0.029, bulk_modulus=1e9,
-               supply_pressure=101325.0)
-ROTOR = dict(rotor_mass=100.0, unbalance=0.01 * CLEARANCE, load=981.0)
+BEARING, ROTOR = RHO_KIM_BEARING, RHO_KIM_ROTOR
+CLEARANCE = BEARING["clearance"]
 REF_RTOL, REF_ATOL = 1e-10, 1e-13
 PAPER_STEPS = 3000
 PAPER_INNER, TIGHT_INNER = 1e-6, 1e-10

@@ -21,6 +21,13 @@ from transient.models.journal_film import N_ROTOR, FilmWork, film_force, film_ja
 from transient.validation import check_positive, check_range
 
 
+#: Rho & Kim (seed 003) Table 1 bearing [SI] (p_s = 1 atm; mu, beta, D, L/D = 0.3, C = D/1000).
+RHO_KIM_BEARING = dict(diameter=0.08, length=0.024, clearance=80e-6, viscosity=0.029, bulk_modulus=1e9,
+                       supply_pressure=101325.0)
+#: Rho & Kim rotor: W = 981 N, e = 0.01 C; the mass is not stated, m = W/g = 100 kg is adopted.
+RHO_KIM_ROTOR = dict(rotor_mass=100.0, unbalance=0.8e-6, load=981.0)
+
+
 @dataclass(frozen=True)
 class Groove:
     """Axial oil-supply groove: centre angle from the top of the bearing (opposite the load) in the
