@@ -57,6 +57,7 @@ class OrbitResult:
     fields: dict = field(default_factory=dict)
     touched_at: float | None = None
     message: str = ""
+    final_state: np.ndarray | None = None  # full state vector (film + rotor) at the end, to continue a run
 
     @property
     def eccentricity_ratio(self) -> np.ndarray:
@@ -212,6 +213,7 @@ class JournalOrbit:
         done = 0.0
         if resume and checkpoint and os.path.exists(checkpoint):
             y, done = rec.load(checkpoint, self, method)
+        done0 = done
         stats = Stats()
         touched, message = None, "reached the final time"
         wall0 = time.perf_counter()
@@ -239,7 +241,7 @@ class JournalOrbit:
             if progress:
                 el = time.perf_counter() - wall0
                 print(f"  [{method}] {done:8.1f}/{revolutions:g} rev  e/C = {rec.last_eps:.4f}  "
-                      f"{el:7.1f} s elapsed  ({el / max(done, 1e-9):.3f} s/rev)", file=sys.stderr, flush=True)
+                      f"{el:7.1f} s elapsed  ({el / max(done - done0, 1e-9):.3f} s/rev)", file=sys.stderr, flush=True)
         stats.wall_time = time.perf_counter() - wall0
         return rec.result(method, stats, touched, message)
 
@@ -465,7 +467,7 @@ class _Recorder:
                 fields[k] = np.array(v)
         return OrbitResult(t=np.array(self.t), x=np.array(self.x), y=np.array(self.y), method=method, stats=stats,
                            speed_rpm=self.o.speed_rpm, clearance=self.o.bearing.clearance, fields=fields,
-                           touched_at=touched, message=message)
+                           touched_at=touched, message=message, final_state=self.last_y)
 
     # checkpoints ---------------------------------------------------------------------------------
     def save(self, path, y, done, method):
