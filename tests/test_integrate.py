@@ -131,6 +131,16 @@ def test_rk4_outputs_between_steps_are_rk4_values():
     np.testing.assert_allclose(r.y[:, 0], np.cos(t), atol=1e-9)
 
 
+def test_rk4_final_output_survives_rounding_of_the_step_count():
+    """2 pi / 3000 * 3000 lands one rounding step below 2 pi: the last output must still be produced,
+    and outputs on step ends must not cost partial steps."""
+    tau = 2 * np.pi * np.linspace(0.0, 1.0, 21)
+    r = solve(oscillator(), tau, method="rk4", dt=2 * np.pi / 3000)
+    assert r.success and r.t.size == tau.size
+    assert r.stats.n_steps == 3000 and r.stats.n_rhs == 4 * 3000
+    np.testing.assert_allclose(r.y[:, 0], np.cos(tau), atol=1e-12)
+
+
 def test_rk4_inner_algebraic_solve_per_stage():
     """Semi-explicit DAE x' = -z, 0 = z - x (so x = e^-t); z comes from the per-stage hook."""
     calls = []

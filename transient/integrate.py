@@ -581,8 +581,9 @@ def _solve_rk4(problem, t_eval, out, counter, events, dt, max_steps):
     n_total = int(np.ceil((t_end - t) / dt * (1 - 1e-12)))
     if n_total > max_steps:
         raise ValueError(f"rk4 with dt={dt} needs {n_total} steps > max_steps={max_steps}")
+    snap = 1e-9 * dt  # an output within rounding of a step end is that step end
     for j in range(1, n_total + 1):
-        t_new = min(t_eval[0] + j * dt, t_end)
+        t_new = t_end if j == n_total else t_eval[0] + j * dt
         h = t_new - t
         y_new = step(t, y, h)
         n_steps += 1
@@ -591,11 +592,13 @@ def _solve_rk4(problem, t_eval, out, counter, events, dt, max_steps):
             g_prev, te = _step_events(events, partial, t, t_new, g_prev, consistent(t_new, y_new), out)
             if te is not None:
                 return True, f"terminal event at t={te:.9g}", n_steps
-        while out.k < t_eval.size and out.pending <= t_new:
+        while out.k < t_eval.size and out.pending <= t_new + snap:
             # an output inside the step is an RK4 step of the partial length from t
-            out.put(consistent(t_new, y_new) if out.pending == t_new
+            out.put(consistent(t_new, y_new) if out.pending >= t_new - snap
                     else consistent(out.pending, step(t, y, out.pending - t)))
         t, y = t_new, y_new
         if not np.all(np.isfinite(y)):
             return False, f"rk4 diverged (non-finite state) at t={t:.6g}; reduce dt", n_steps
+    if out.k < t_eval.size:  # cannot happen unless t_eval and dt disagree beyond rounding
+        return False, f"rk4 stopped at t={t:.9g} before the output time {out.pending:.9g}", n_steps
     return True, "reached the final time", n_steps
