@@ -49,7 +49,7 @@ def _bench_roughness(out: Path, quick: bool = False) -> str:
 
 def _bench_pad(out: Path, quick: bool = False) -> str:
     from transient.bench import thrust_pad
-    return "## Parallel thrust pad: rough-contact squeeze descent, work-precision (seed 000)\n" + thrust_pad.run()
+    return thrust_pad.run()  # has its own section heading
 
 
 BENCHES = {"film": _bench_film, "journal": _bench_journal, "ball": _bench_ball, "roughness": _bench_roughness,
