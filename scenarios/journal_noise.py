@@ -69,9 +69,13 @@ def figures_6000(n, eq, tr, out):
     ang = n.angle_deg
     zz = n.z * 1e3
     fig, ax = plt.subplots(1, 3, figsize=(15, 4))
+    spl = np.asarray(n.oil_spl(), dtype=float)
+    top = np.nanmax(spl[np.isfinite(spl)])
+    spl = np.where(np.isfinite(spl), np.maximum(spl, top - 100.0), top - 100.0)  # cavitated: p_f ~ 0
     for a, data, title, unit in ((ax[0], eq.pressure / 1e6, "(a) equilibrium pressure", "MPa"),
                                  (ax[1], n.p_fluct / 1e3, "(b) pressure fluctuation p_f", "kPa"),
-                                 (ax[2], n.oil_spl(), "Fig. 6: level of p_f in the oil", "dB re 1 uPa")):
+                                 (ax[2], spl, "Fig. 6: level of p_f in the oil (floor: max - 100 dB)",
+                                  "dB re 1 uPa")):
         m = a.pcolormesh(ang, zz, data, shading="nearest")
         fig.colorbar(m, ax=a, label=unit)
         a.set(xlabel="angle [deg]", ylabel="z from mid-plane [mm]", title=title)
