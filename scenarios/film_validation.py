@@ -37,8 +37,8 @@ FULL = dict(sommerfeld_grids=(40, 80, 160, 320), sommerfeld_delta=0.5, profile_n
             short_LD=(0.1, 0.05, 0.025), short_grid=(240, 160),
             squeeze_grids=(16, 32, 64), squeeze_ratios=(1, 2, 4), squeeze_delta=0.5)
 #: coarse settings for a fast smoke run (``--quick``, the test)
-QUICK = dict(sommerfeld_grids=(20, 40, 80), sommerfeld_delta=0.5, profile_n=24,
-             short_LD=(0.1, 0.05, 0.025), short_grid=(60, 40),
+QUICK = dict(sommerfeld_grids=(32, 64, 128), sommerfeld_delta=0.5, profile_n=32,
+             short_LD=(0.1, 0.05, 0.025), short_grid=(120, 80),
              squeeze_grids=(8, 16, 32), squeeze_ratios=(1, 2, 4), squeeze_delta=0.5)
 
 
@@ -142,6 +142,14 @@ def run_validation(out_dir, *, sommerfeld_grids, sommerfeld_delta, profile_n, sh
     return result
 
 
+def _plain_ticks(axis, values):
+    """Major ticks at exactly ``values`` (plain numbers), no minor labels, on a log axis."""
+    from matplotlib.ticker import FixedLocator, NullFormatter
+    axis.set_major_locator(FixedLocator(list(values)))
+    axis.set_major_formatter(lambda v, _: f"{v:g}")
+    axis.set_minor_formatter(NullFormatter())
+
+
 def _plot(path, profile, somm, short, sq):
     import matplotlib
     matplotlib.use("Agg")
@@ -172,6 +180,7 @@ def _plot(path, profile, somm, short, sq):
     a.loglog(n, 1.5 * e0 * (n / n[0]) ** -2, "k--", lw=1, label="slope 2")
     a.set(xlabel=r"cells around the circumference", ylabel="max |p - p_exact| / max |p_exact|",
           title="(b) Sommerfeld grid convergence")
+    _plain_ticks(a.xaxis, somm["uniform"]["n"])
     a.legend(fontsize=8)
     a.grid(alpha=0.3, which="both")
     # (c) short bearing
@@ -180,6 +189,7 @@ def _plot(path, profile, somm, short, sq):
     a.loglog(ld, short["fy_err"], "o-", label=f"finite bearing, {short['grid'][0]} x {short['grid'][1]} cells")
     a.loglog(ld, short["fy_err"][0] * (ld / ld[0]) ** 2, "k--", lw=1, label="slope 2")
     a.set(xlabel="L/D", ylabel="|Fy / Fy_Ocvirk - 1|", title="(c) full-film bearing -> short-bearing limit")
+    _plain_ticks(a.xaxis, ld)
     a.legend(fontsize=8)
     a.grid(alpha=0.3, which="both")
     # (d) squeeze plates
@@ -192,6 +202,7 @@ def _plot(path, profile, somm, short, sq):
     a.loglog(n, 1.5 * max(s["err"][0] for s in sq.values()) * (n / n[0]) ** -2, "k--", lw=1, label="slope 2")
     a.set(xlabel="cells across the short side a", ylabel="|W / W_exact - 1|",
           title="(d) squeeze film between rectangular plates")
+    _plain_ticks(a.xaxis, first["n"])
     a.legend(fontsize=8)
     a.grid(alpha=0.3, which="both")
     fig.suptitle("transient.film: finite-volume Reynolds operator against closed forms")
@@ -223,6 +234,8 @@ def main(argv=None) -> int:
     parser.add_argument("--quick", action="store_true", help="coarse grids (smoke run, a few seconds)")
     parser.add_argument("--no-plot", action="store_true", help="numbers only, no figure")
     a = parser.parse_args(argv)
+    if not a.out.strip():
+        parser.error("--out must be a non-empty directory path")
     out = Path(a.out)
     if out.exists() and not out.is_dir():
         parser.error(f"--out must be a directory, but {out} is a file")
