@@ -13,7 +13,14 @@ Public API (re-exported here):
   :func:`pressure_flow_factors`, :func:`shear_flow_factor`, :func:`contact_factor`, :class:`ThrustPad`
 """
 
-from transient.analysis.acoustics import a_weighting, bearing_noise
+import os as _os
+
+# scikit-sundae's SuperLU_MT runs on an OpenMP runtime whose idle threads spin by default: with the other
+# core busy that made every CVODE/IDA call 1.5x (journal orbit) to 5x (small systems) slower. Passive
+# waiting costs nothing measurable on an idle machine. Set before sksundae loads; a user's value wins.
+_os.environ.setdefault("OMP_WAIT_POLICY", "PASSIVE")
+
+from transient.analysis.acoustics import a_weighting, bearing_noise  # noqa: E402
 from transient.film.asperity import AsperityContact, DiscreteDensity, greenwood_tripp, steel_asperity_contact
 from transient.film.flow_factors import contact_factor, pressure_flow_factors, shear_flow_factor
 from transient.film.roughness import RoughSurface
@@ -24,8 +31,8 @@ from transient.models.journal_orbit import JournalOrbit
 from transient.models.thrust_pad import ThrustPad
 
 __all__ = [
-    "a_weighting", "bearing_noise", "AsperityContact", "DiscreteDensity", "Groove", "JournalBearing", "JournalOrbit", "Problem", "Result",
-    "RoughSurface", "Stats", "ThrustBallBearing", "ThrustPad", "contact_factor", "greenwood_tripp", "pressure_flow_factors",
-    "shear_flow_factor", "solve", "steel_asperity_contact",
+    "AsperityContact", "DiscreteDensity", "Groove", "JournalBearing", "JournalOrbit", "Problem", "Result",
+    "RoughSurface", "Stats", "ThrustBallBearing", "ThrustPad", "a_weighting", "bearing_noise", "contact_factor",
+    "greenwood_tripp", "pressure_flow_factors", "shear_flow_factor", "solve", "steel_asperity_contact",
 ]
 __version__ = "0.1.0"
