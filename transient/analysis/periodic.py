@@ -62,8 +62,9 @@ def not_periodic_message(samples, tol, scale=1.0, what="the response") -> str:
             trend = (" although they are still decaying (slowly settling: allow more settling periods "
                      "or a looser tol)")
     return (f"{what} is not periodic with the forcing period to tol = {tol:g} after {len(samples)} Poincare "
-            f"samples: the last once-per-period steps are {np.array2string(tail, precision=3)} "
-            f"(relative to {scale:g}){trend}")
+            f"samples: the last once-per-period steps are "
+            f"{np.array2string(np.asarray(tail), formatter={'float_kind': lambda v: f'{v:.2e}'})} "
+            f"(in units of {scale:g}){trend}")
 
 
 def require_periodic(samples, tol, scale=1.0, confirm=2, what="the response") -> int:
