@@ -408,10 +408,16 @@ class ReynoldsOperator:
                 self.bs, self.bP, self.bC, self.free, self.u_fixed)
 
     @property
+    def jacobian_face_args(self):
+        """Face and boundary arrays of :func:`jacobian_kernel` (``fL`` ... ``pos_c``), for models whose own
+        kernels take the extra-column positions separately."""
+        return (self.fL, self.fR, self.fdir, self.fd, self.fs, self.fpos, self.bcell, self.bside, self.bdir,
+                self.bd, self.bs, self.bP, self.bC, self.bpos, self.free, self.pos_c)
+
+    @property
     def jacobian_args(self):
         """Arguments of :func:`jacobian_kernel` after ``upwind``."""
-        return (self.fL, self.fR, self.fdir, self.fd, self.fs, self.fpos, self.bcell, self.bside, self.bdir,
-                self.bd, self.bs, self.bP, self.bC, self.bpos, self.free, self.pos_c, self.pos_col_extra)
+        return self.jacobian_face_args + (self.pos_col_extra,)
 
     def residual(self, u, P, C, kx, kz, cx, cz, out=None) -> np.ndarray:
         """``R`` (length ``n_cells``, or written into ``out[:n_cells]``). See the module docstring."""

@@ -262,7 +262,7 @@ class Film:
         data = np.empty(op.nnz) if data is None else data
         ne = op.n_extra
         film_jacobian(u, X, Y, VX, VY, rate, data, self.beta_bar, self.width, w.cosp, w.sinp, w.area,
-                      *w.fields(), w.zero, w.dk_dq[:ne], w.dc_dq[:ne], w.no_dq[:ne], w.pos_col, *_jac_args(op))
+                      *w.fields(), w.zero, w.dk_dq[:ne], w.dc_dq[:ne], w.no_dq[:ne], w.pos_col, *op.jacobian_face_args)
         return data
 
     def solve(self, X, Y, VX=0.0, VY=0.0, u0=None, tol=1e-10, max_iter=400):
@@ -360,9 +360,3 @@ class Film:
             pressure=grid.to_2d(b.cavitation_pressure + self.p0 * P).copy(),
             film_content=grid.to_2d(self.w.C).copy(),
             angle_deg=np.degrees(grid.x.centres), z=grid.z.centres * b.radius, u=u.copy(), newton_iterations=iterations)
-
-
-def _jac_args(op):
-    """Operator arrays in the order the journal Jacobian kernels take them (after pos_col)."""
-    return (op.fL, op.fR, op.fdir, op.fd, op.fs, op.fpos, op.bcell, op.bside, op.bdir, op.bd, op.bs, op.bP,
-            op.bC, op.bpos, op.free, op.pos_c)

@@ -139,8 +139,7 @@ class JournalOrbit:
         n = f.n
         kappa, wbar, ebar, sym = self.kappa, self.wbar, self.ebar, w.sym
         geo = (w.cosp, w.sinp, w.area)
-        jargs = (op.fL, op.fR, op.fdir, op.fd, op.fs, op.fpos, op.bcell, op.bside, op.bdir, op.bd, op.bs, op.bP,
-                 op.bC, op.bpos, op.free, op.pos_c)
+        jargs = op.jacobian_face_args
         fbuf = np.empty(self.n)
 
         def rhs(t, y, out):
