@@ -162,6 +162,20 @@ class JournalBearing:
     def equilibrium(self, load, speed_rpm, tol=1e-10, max_iter=40) -> FilmState:
         """Static equilibrium under ``load`` [N] (in +x): 2-D Newton on the journal position with the
         exact derivative of the discrete film force (implicit differentiation of the film equations)."""
+        f, u, q, it, _ = self._equilibrium(load, speed_rpm, tol, max_iter)
+        return f.state(u, q[0], q[1], it)
+
+    def coefficients(self, load, speed_rpm) -> tuple[np.ndarray, np.ndarray]:
+        """Linearised stiffness K [N/m] and damping C [N s/m] (2x2, x towards the load) at the static
+        equilibrium, from the same discrete film: ``K = -dF/dx``, ``C = -dF/d(dx/dt)``."""
+        f, _, _, _, (dF_dq, dF_dv) = self._equilibrium(load, speed_rpm)
+        K = -dF_dq * f.force_scale / self.clearance
+        Cmat = -dF_dv * f.force_scale / (self.clearance * omega(speed_rpm))
+        return K, Cmat
+
+    def _equilibrium(self, load, speed_rpm, tol=1e-10, max_iter=40):
+        """Newton on the journal position; returns (film, u, (X, Y), iterations, (dF/dq, dF/dv)) with the
+        force sensitivities at the converged state (they are the Newton matrix and the damping)."""
         W = check_positive("load", load, "N")
         check_positive("speed_rpm", speed_rpm, "rpm")
         f = self.film(speed_rpm)
@@ -170,10 +184,10 @@ class JournalBearing:
         u = None
         for it in range(max_iter):
             u, _ = f.solve(q[0], q[1], u0=u)
-            F, dF_dq, _ = f.force_sensitivity(u, q[0], q[1])
+            F, dF_dq, dF_dv = f.force_sensitivity(u, q[0], q[1])
             r = np.array([F[0] + wbar, F[1]])
             if np.max(np.abs(r)) <= tol * max(wbar, 1e-300):
-                return f.state(u, q[0], q[1], it)
+                return f, u, q, it, (dF_dq, dF_dv)
             dq = -np.linalg.solve(dF_dq, r)
             lam = 1.0  # keep the journal inside the clearance
             while np.hypot(*(q + lam * dq)) >= 0.995:
@@ -182,17 +196,6 @@ class JournalBearing:
         raise RuntimeError(f"equilibrium(load={W} N, speed_rpm={speed_rpm}) did not converge in {max_iter} "
                            f"iterations; last eccentricity ratio {np.hypot(*q):.4f}, force residual "
                            f"{np.max(np.abs(r)) * f.force_scale:.3e} N")
-
-    def coefficients(self, load, speed_rpm) -> tuple[np.ndarray, np.ndarray]:
-        """Linearised stiffness K [N/m] and damping C [N s/m] (2x2, x towards the load) at the static
-        equilibrium, from the same discrete film: ``K = -dF/dx``, ``C = -dF/d(dx/dt)``."""
-        e = self.equilibrium(load, speed_rpm)
-        f = self.film(speed_rpm)
-        q = e.position[0] / self.clearance, e.position[1] / self.clearance
-        _, dF_dq, dF_dv = f.force_sensitivity(e.u, *q)
-        K = -dF_dq * f.force_scale / self.clearance
-        Cmat = -dF_dv * f.force_scale / (self.clearance * omega(speed_rpm))
-        return K, Cmat
 
     def growth_rate(self, rotor_mass, load, speed_rpm) -> float:
         """Largest real part [1/s] of the eigenvalues of the linearised rotor (m x'' + C x' + K x = 0)."""
