@@ -67,12 +67,3 @@ def elrod_content(u, P, dP, width, beta_bar, C, D, dD):
         C[i] = 1.0 + P[i] * inv + (u[i] - P[i])
         D[i] = dP[i] * inv + (1.0 - dP[i])
         dD[i] = dP[i] * (1.0 - dP[i]) / width * (inv - 1.0)
-
-
-def content(u, width, beta_bar):
-    """NumPy wrapper of :func:`elrod_content`: returns ``theta(u)``."""
-    P, dP = softplus(u, width)
-    u = np.ascontiguousarray(u, dtype=float).ravel()
-    C, D, dD = (np.empty_like(u) for _ in range(3))
-    elrod_content(u, P.ravel(), dP.ravel(), float(width), float(beta_bar), C, D, dD)
-    return C.reshape(np.shape(P))

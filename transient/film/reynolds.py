@@ -278,14 +278,6 @@ def integrate_gradient(dfield, weight, area, out):
 
 
 @njit(cache=True)
-def scatter(data, pos, values):
-    """``data[pos[i]] = values[i]`` (fill a dense row/column of the arrow); ``pos[i] < 0`` is skipped."""
-    for i in range(values.size):
-        if pos[i] >= 0:
-            data[pos[i]] = values[i]
-
-
-@njit(cache=True)
 def scale_rows(data, indices, scale):
     """``data[p] *= scale[indices[p]]`` -- left-multiply the CSC matrix by ``diag(scale)`` (e.g. turn
     ``dR/du`` into the Jacobian of ``du/dt = -R/(A h)``)."""

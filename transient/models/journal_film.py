@@ -34,7 +34,7 @@ import numpy as np
 from numba import njit
 
 from transient.film.cavitation import elrod_content, softplus_pressure
-from transient.film.reynolds import jacobian_kernel, residual_kernel
+from transient.film.reynolds import jacobian_kernel, residual_kernel, scale_rows
 
 N_ROTOR = 4  # X, Y, VX, VY appended after the cells
 
@@ -79,16 +79,13 @@ class FilmWork:
 
     def __init__(self, op, phi, symmetric):
         n = op.n_cells
-        self.op = op
-        self.n = n
         self.cosp = np.ascontiguousarray(np.cos(phi))
         self.sinp = np.ascontiguousarray(np.sin(phi))
         self.area = np.ascontiguousarray(op.grid.area)
         self.sym = 2.0 if symmetric else 1.0
-        self.free = op.free
         self.H, self.P, self.dP, self.C, self.D, self.dD, self.k, self.c, self.R = (np.empty(n) for _ in range(9))
         self.zero = np.zeros(n)
-        self.scale = np.empty(n)
+        self.scale = np.ones(op.n)  # row scaling of the ODE Jacobian; the rotor rows keep 1
         self.dk_dq = np.zeros((N_ROTOR, n))
         self.dc_dq = np.zeros((N_ROTOR, n))
         self.no_dq = np.zeros((N_ROTOR, n))
@@ -142,15 +139,6 @@ def ode_rhs(tau, y, out, beta_bar, width, kappa, wbar, ebar, sym, cosp, sinp, ar
 
 
 @njit(cache=True)
-def scale_cell_rows(data, indices, scale, n):
-    """``data[p] *= scale[row]`` for every entry whose row is a cell (row < n)."""
-    for p in range(data.size):
-        r = indices[p]
-        if r < n:
-            data[p] *= scale[r]
-
-
-@njit(cache=True)
 def ode_jacobian(tau, y, data, f, beta_bar, width, kappa, sym, cosp, sinp, area,
                  H, P, dP, C, D, dD, k, c, zero, dk_dq, dc_dq, no_dq, pos_row, pos_col, indices, scale,
                  fL, fR, fdir, fd, fs, fpos, bcell, bside, bdir, bd, bs, bP, bC, bpos, free, pos_c):
@@ -168,7 +156,7 @@ def ode_jacobian(tau, y, data, f, beta_bar, width, kappa, sym, cosp, sinp, area,
                       pos_c, data)
     for i in range(n):
         scale[i] = -1.0 / (H[i] * D[i] * area[i]) if free[i] else 0.0
-    scale_cell_rows(data, indices, scale, n)
+    scale_rows(data, indices, scale)  # rotor rows: scale 1 (they are filled below)
     for i in range(n):
         if free[i]:
             hd = VX * cosp[i] + VY * sinp[i]
