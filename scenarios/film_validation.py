@@ -113,7 +113,7 @@ def run_validation(out_dir, *, sommerfeld_grids, sommerfeld_delta, profile_n, sh
     # 3. squeeze plates -----------------------------------------------------------------------------
     _log(f"[3/3] squeeze film between rectangular plates, ratios {tuple(squeeze_ratios)}, grids {squeeze_grids}")
     sq = {}
-    series = [(f"b/a={r}", r, 0.0) for r in squeeze_ratios] + [(f"b/a=2 stretched", 2, squeeze_delta)]
+    series = [(f"b/a={r}", r, 0.0) for r in squeeze_ratios] + [("b/a=2 stretched", 2, squeeze_delta)]
     for label, ratio, delta in series:
         cases = [squeeze_plate_case(ratio, n=n, delta=delta) for n in squeeze_grids]
         orders = observed_orders(squeeze_grids, [c.err for c in cases])

@@ -157,7 +157,6 @@ def fig3_fig4(bearing, cfg, rtol, out, saver):
     xs = X[-nf:].ravel()
     spec = np.abs(np.fft.rfft(xs - xs.mean())) * 2 / xs.size
     order = np.fft.rfftfreq(xs.size, d=1.0 / OPR)  # in multiples of the shaft speed
-    k1 = int(np.argmin(np.abs(order - 1.0)))
     harm = {f"{h}x": float(spec[int(np.argmin(np.abs(order - h)))]) for h in (0.5, 1, 2, 3, 4)}
     peak_order = float(order[1 + int(np.argmax(spec[1:]))])
     rec = dict(speed_rpm=speed, revolutions=cfg["fig3_revs"], wall_s=wall, n_steps=res.stats.n_steps,

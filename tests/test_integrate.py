@@ -227,6 +227,14 @@ def test_dae_rejected_by_ode_methods():
         solve(robertson(True), np.array([0.0, 1.0]), method="bdf")
 
 
+@pytest.mark.parametrize("method", ["cvode", "ida", "bdf"])
+def test_max_steps_reported_not_raised(method):
+    r = solve(van_der_pol(), np.array([0.0, 2000.0]), method=method, max_steps=5)
+    assert not r.success and "max_steps=5" in r.message
+    with pytest.raises(ValueError, match="max_steps must be an integer >= 1"):
+        solve(van_der_pol(), np.array([0.0, 2000.0]), method=method, max_steps=0)
+
+
 def test_t_eval_must_increase():
     with pytest.raises(ValueError, match="strictly increasing"):
         solve(oscillator(), np.array([0.0, 1.0, 0.5]))

@@ -273,6 +273,8 @@ def solve(problem: Problem, t_eval, method: str = "cvode", rtol: float = 1e-6, a
         raise ValueError(f"rtol must be > 0, got {rtol}")
     if np.any(np.asarray(atol) <= 0):
         raise ValueError("atol must be > 0")
+    if isinstance(max_steps, bool) or int(max_steps) != max_steps or max_steps < 1:
+        raise ValueError(f"max_steps must be an integer >= 1, got {max_steps!r}")
     t_eval = _check_t_eval(t_eval)
     out = _Output(t_eval, problem.n, store, observer, with_yp=(method == "ida"))
     counter = _Counter()
@@ -421,9 +423,10 @@ def _solve_sundials(problem, method, t_eval, out, counter, events, rtol, atol, m
     out.put(problem.y0, yp0 if method == "ida" else None)
     t_end = t_eval[-1]
     n_steps = 0
+    t_now = t_eval[0]
     while out.k < t_eval.size:
         if n_steps >= max_steps:
-            return False, f"reached max_steps={max_steps} at t={r.t}", n_steps
+            return False, f"reached max_steps={max_steps} at t={t_now:.9g}", n_steps
         r = solver.step(t_end, method="onestep", tstop=t_end)
         if not r.success:
             return False, f"{method.upper()} failed at t={float(r.t):.6g}: {r.message}", n_steps

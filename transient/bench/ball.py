@@ -64,7 +64,6 @@ def run(out_dir: str = "docs", n_passes: int = 200, n_cells: int = 100, quick: b
     g = LevellingGrid(n_cells, X, "reservoir", mobility_film=0.1)
     T = 3 * brg.viscosity * c.a ** 4 / (brg.surface_tension * CASE["ambient_film"] ** 3)
     tb_hat = brg.pass_interval(CASE["speed_rpm"]) / T
-    h0 = ref.profiles[0] / CASE["ambient_film"] if ref.profiles is not None else np.ones(n_cells)
     h_peak = 2.6  # ridge height after the first pass (scaled), bounds the spectral radius
     lam_max = 16.0 * (h_peak ** 3 + 0.1 ** 3) / g.dx ** 4
     dt = 2.7 / lam_max  # RK4 real-axis stability limit ~2.785

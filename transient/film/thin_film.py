@@ -323,9 +323,9 @@ def chiu_depression(x: float, t: float, F, a_prime: float, h_inf: float, sigma: 
         return F(xi) * math.exp(-expo) * math.cos(xi * x / a_prime)
 
     # the integrand is negligible where the exponent exceeds ~700 or F has decayed; integrate piecewise
-    val, err = 0.0, 0.0
+    val = 0.0
     edges = np.concatenate([[0.0], np.geomspace(1e-3, 1e3, 61)])
     for lo, hi in zip(edges[:-1], edges[1:]):
-        v, e = quad(integrand, lo, hi, epsabs=1e-16, epsrel=1e-11, limit=200)
+        v, _ = quad(integrand, lo, hi, epsabs=1e-16, epsrel=1e-11, limit=200)
         val += v
     return a_prime * val

@@ -28,12 +28,11 @@ import numpy as np
 import scipy.sparse.linalg as spla
 
 from transient.integrate import Problem, Stats, solve
-from transient.models.journal import JournalBearing, omega
+from transient.models.journal import JournalBearing
 from transient.models.journal_film import (N_ROTOR, dae_jacobian, dae_residual, film_force, ode_jacobian,
                                            ode_rhs)
 from transient.validation import check_positive, check_range
 
-G = 9.80665
 RECORDABLE = ("force", "pressure", "film_content", "min_film", "mass", "outflow")
 
 
