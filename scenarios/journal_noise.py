@@ -158,7 +158,7 @@ def main(argv=None):
     path = os.path.join(args.out, "journal_noise.json")
     bearing = JournalBearing(**RHO_KIM_BEARING, grid=grid)
     data = dict(meta=dict(grid=list(grid), speeds=list(speeds), revolutions=args.revolutions, harmonics=args.harmonics,
-                          transmission=args.transmission, rtol=args.rtol, method="cvode", settle_tol_C=1e-4,
+                          transmission=args.transmission, rtol=args.rtol, method="ida", settle_tol_C=1e-4,
                           rotor=RHO_KIM_ROTOR),
                 points=[])
     wall0 = time.perf_counter()

@@ -142,9 +142,9 @@ def fig3_fig4(bearing, cfg, rtol, out, saver):
     o = make_orbit(bearing, speed)
     e = o.equilibrium()
     log(f"[fig 3] {speed} rpm: equilibrium e/C = {e.eccentricity_ratio:.4f}, attitude "
-        f"{e.attitude_angle_deg:.1f} deg; {cfg['fig3_revs']} revolutions from it (CVODE rtol {rtol:g}) ...")
+        f"{e.attitude_angle_deg:.1f} deg; {cfg['fig3_revs']} revolutions from it (IDA rtol {rtol:g}) ...")
     t0 = time.perf_counter()
-    res = o.run(cfg["fig3_revs"], method="cvode", rtol=rtol, atol=1e-9, outputs_per_revolution=OPR,
+    res = o.run(cfg["fig3_revs"], method="ida", rtol=rtol, atol=1e-9, outputs_per_revolution=OPR,
                 chunk_revolutions=5, progress=True)
     wall = time.perf_counter() - t0
     X, Y = per_rev(res)
@@ -220,7 +220,7 @@ def settle_run(o, y0, cfg, rtol, ckpt):
     n = cfg["sweep_min_revs"]
     steps = wall = 0
     while True:
-        res = o.run(n, method="cvode", rtol=rtol, atol=1e-9, outputs_per_revolution=OPR, y0=y0, checkpoint=ckpt,
+        res = o.run(n, method="ida", rtol=rtol, atol=1e-9, outputs_per_revolution=OPR, y0=y0, checkpoint=ckpt,
                     resume=True, chunk_revolutions=n, progress=False)
         steps += res.stats.n_steps
         wall += res.stats.wall_time
@@ -334,7 +334,7 @@ def stability(bearing, cfg, rtol, out, saver):
         y0[:n] = o.film.solve(y0[n], y0[n + 1], u0=e.u)[0]
         log(f"[stability] {s:.0f} rpm ({f:.2f} x threshold): {cfg['stab_revs']} revolutions, balanced rotor, "
             f"perturbed by {PERTURB:g} C ...")
-        res = o.run(cfg["stab_revs"], method="cvode", rtol=rtol, atol=1e-9, outputs_per_revolution=OPR, y0=y0,
+        res = o.run(cfg["stab_revs"], method="ida", rtol=rtol, atol=1e-9, outputs_per_revolution=OPR, y0=y0,
                     chunk_revolutions=5, progress=True)
         r = np.hypot(res.x / C - e.position[0] / C, res.y / C - e.position[1] / C)
         rev = res.revolutions
@@ -402,7 +402,7 @@ def main(argv=None):
     ap.add_argument("--out", default=OUT, help="output folder (default: scenarios/out/journal)")
     ap.add_argument("--grid", nargs=2, type=int, metavar=("NT", "NZ"), help="film grid (default 151 21; quick 41 6)")
     ap.add_argument("--quick", action="store_true", help="coarse, fast version")
-    ap.add_argument("--rtol", type=float, default=1e-5, help="CVODE relative tolerance (default 1e-5)")
+    ap.add_argument("--rtol", type=float, default=1e-5, help="IDA relative tolerance (default 1e-5)")
     ap.add_argument("--resume", action="store_true", help="reuse the sweep points already in the JSON")
     ap.add_argument("--only", choices=("fig3", "fig8", "stability"), nargs="+", help="run only these stages")
     a = ap.parse_args(argv)

@@ -34,7 +34,8 @@ def paper_bearing(grid=(48, 8), **kw):
 # --------------------------------------------------------------------------------------------------
 
 def _fd_columns(f, y, m, h=1e-6):
-    """Central-difference Jacobian (m rows) of f(y) -> array."""
+    """Central-difference Jacobian (m rows) of f(y) -> array; the step ``h max(1, |y_j|)`` must be well
+    below the scale on which f bends (the switch width, in u)."""
     J = np.zeros((m, y.size))
     for j in range(y.size):
         hj = h * max(1.0, abs(y[j]))
@@ -82,7 +83,7 @@ def test_ode_jacobian_matches_finite_differences(switch_width):
         prob.rhs(0.3, v, out)
         return out
 
-    J_fd = _fd_columns(f, y, n)
+    J_fd = _fd_columns(f, y, n, h=5e-4 * o.film.width)
     rel, outside = _compare(J_an, J_fd, pat.toarray() != 0)
     assert rel < 1e-6, rel
     assert outside == 0.0
@@ -114,7 +115,8 @@ def test_dae_jacobian_matches_finite_differences(switch_width):
         prob.residual(0.3, y, v, out)
         return out
 
-    J_fd = _fd_columns(F_y, y, n) + cj * _fd_columns(F_yp, yp, n)
+    h = 5e-4 * o.film.width
+    J_fd = _fd_columns(F_y, y, n, h=h) + cj * _fd_columns(F_yp, yp, n, h=h)
     mask = pat.toarray() != 0
     mask |= np.eye(n, dtype=bool)  # IDA's pattern always includes the diagonal
     rel, outside = _compare(J_an, J_fd, mask)
@@ -139,7 +141,7 @@ def test_film_jacobian_matches_finite_differences(rate):
     def G(v):
         return f.residual(v, X, Y, VX, VY, rate=rate, C_ref=C_ref).copy()
 
-    J_fd = _fd_columns(G, u, n)
+    J_fd = _fd_columns(G, u, n, h=5e-4 * f.width)
     rel, outside = _compare(M[:n, :n], J_fd, pat[:n, :n])
     assert rel < 1e-6, rel
     assert outside == 0.0
@@ -167,8 +169,8 @@ def _short_bearing_error(LD, eps, rpm=RPM):
     comparison would NOT be apt: with p_ambient = p_cav nothing drives oil in through the ends, the
     mass-conserving film starves and carries 50-98 % less than the flooded pi film (measured).
 
-    The switch width is scaled with the mean film pressure (1e-4) so the smoothing is equally small
-    at every L/D. Two circumferential grids (first-order upwind Couette flux: Richardson with p = 1)
+    The switch's pressure width is scaled with the mean film pressure (1e-4) and its content width is
+    1e-4, so the smoothing is equally small at every L/D. Two circumferential grids (first-order upwind Couette flux: Richardson with p = 1)
     and two axial grids (p = 2) remove the discretisation error, which is otherwise ~1-2 % on these
     grids and would hide the model difference at small L/D.
     """
@@ -180,7 +182,7 @@ def _short_bearing_error(LD, eps, rpm=RPM):
     for nt in (240, 480):
         for nz in (6, 12):
             b = JournalBearing(D, Lb, CL, MU, supply_pressure=0.0, groove=Groove(0.0, 0.1), grid=(nt, nz),
-                               switch_width=1e-4 * p_mean)
+                               switch_width=1e-4 * p_mean, switch_content_width=1e-4)
             F[nt, nz] = -np.array(b.steady_state(eps, rpm).force)  # F_model = -F_ref
     ext = {nt: (4 * F[nt, 12] - F[nt, 6]) / 3 for nt in (240, 480)}
     F_ext = 2 * ext[480] - ext[240]
@@ -321,7 +323,7 @@ def reference_orbit():
     b = paper_bearing()
     o = JournalOrbit(b, MASS, 0.01 * CL, W, RPM)
     o.initial_state()
-    ref = o.run(1, rtol=1e-9, atol=1e-12, outputs_per_revolution=20)
+    ref = o.run(1, method="cvode", rtol=1e-10, atol=1e-13, outputs_per_revolution=20)
     amp = np.max(np.hypot(ref.x - ref.x[0], ref.y - ref.y[0]))
     return o, ref, amp
 
@@ -332,33 +334,25 @@ def _orbit_error(r, ref, amp):
 
 def test_cvode_and_ida_agree(reference_orbit):
     """One revolution from equilibrium (paper case, 48x8; orbit excursion 0.018 C). Error relative to
-    the excursion vs CVODE rtol 1e-9: CVODE 1.1e-3 / 2.9e-6 and IDA 1.3e-3 / 8.1e-6 at rtol 1e-4 / 1e-6
-    (atol = rtol / 1000)."""
+    the excursion vs CVODE rtol 1e-10 (IDA at 1e-10 differs by 1.3e-8), atol = rtol / 1000, measured at
+    rtol 1e-4 / 1e-5 / 1e-6 / 1e-7 / 1e-8:
+    CVODE 2.3e-3 / 8.3e-5 / 8.6e-5 / 2.2e-6 / 6.2e-7,  IDA 5.9e-4 / 2.5e-5 / 1.7e-5 / 9.4e-7 / 1.3e-7.
+    The error falls with rtol but not in proportion at every step (rupture / reformation crossings)."""
     o, ref, amp = reference_orbit
     for method in ("cvode", "ida"):
         err = {rt: _orbit_error(o.run(1, method=method, rtol=rt, atol=rt * 1e-3, outputs_per_revolution=20), ref, amp)
-               for rt in (1e-4, 1e-6)}
-        assert err[1e-4] < 5e-3 and err[1e-6] < 5e-5, (method, err)
-        assert err[1e-6] < 0.1 * err[1e-4]
-
-
-def test_rk4_baseline_converges_first_order(reference_orbit):
-    """The paper's scheme (RK4 on the rotor, film by backward Euler per stage, inner tolerance 1e-10)
-    converges to the CVODE orbit at first order in dt (the film's Euler step): error / excursion =
-    3.9e-3, 2.0e-3, 1.0e-3, 5.2e-4, 2.6e-4 at 50 ... 800 steps per revolution (measured)."""
-    o, ref, amp = reference_orbit
-    errs = [_orbit_error(o.run(1, method="rk4", steps_per_revolution=N, inner_tolerance=1e-10,
-                               outputs_per_revolution=20), ref, amp) for N in (50, 100, 200)]
-    orders = np.log2(np.array(errs[:-1]) / np.array(errs[1:]))
-    assert np.all((orders > 0.8) & (orders < 1.3)), (errs, orders)
-    assert errs[-1] < 2e-3
+               for rt in (1e-4, 1e-7)}
+        assert err[1e-4] < 5e-3 and err[1e-7] < 1e-5, (method, err)
+        assert err[1e-7] < 0.01 * err[1e-4], (method, err)
 
 
 def test_mass_conservation_improves_with_rtol():
     """Global balance M(t1) - M(t0) + int (end outflow + groove outflow) dt per revolution, relative to
     the end leakage (the throughput). It is exactly zero for the semi-discrete model, so it measures the
-    integrator. Measured (48x8, paper case, 1600 outputs per revolution, atol = rtol / 100): 6.1e-2,
-    3.8e-4, 2.5e-6, 3.9e-7, 4.3e-8, 7.8e-9 at rtol 1e-3 ... 1e-8 (Simpson quadrature error ~1e-8)."""
+    integrator. Measured (48x8, paper case, 800 outputs per revolution, atol = rtol / 100, rtol 1e-3 ...
+    1e-8): IDA 8.0e-5, 4.2e-6, 2.8e-6, 1.4e-7, 2.2e-9, 8.7e-9; CVODE 5.4e-5, 3.0e-5, 2.0e-6, 5.7e-7,
+    5.7e-8, 1.9e-8 (Simpson quadrature error 5e-8: the last two are not resolved). The single-width
+    switch lost 6.1e-2 of the leakage at rtol 1e-3."""
     b = paper_bearing()
     o = JournalOrbit(b, MASS, 0.01 * CL, W, RPM)
     o.initial_state()
@@ -370,8 +364,9 @@ def test_mass_conservation_improves_with_rtol():
         rel.append(mb["relative"][0])
         # the end leakage is an outflow and the groove supplies it
         assert np.all(r.outflow[:, 0] > 0) and np.all(r.outflow[:, 1] < 0)
-    assert rel[1] < 0.01 * rel[0] and rel[2] < 0.2 * rel[1], rel
-    assert rel[2] < 1e-6, rel
+    assert rel[0] < 1e-3, rel
+    assert rel[1] < 0.1 * rel[0] and rel[2] < 0.1 * rel[1], rel
+    assert rel[2] < 1e-7, rel
 
 
 def test_recorded_film_content_is_theta_in_cavitation():
@@ -398,6 +393,8 @@ def test_recorded_film_content_is_theta_in_cavitation():
     (dict(length=0.0), "length"),
     (dict(bulk_modulus=-1.0), "bulk_modulus"),
     (dict(switch_width=0.0), "switch_width"),
+    (dict(switch_content_width=0.0), "switch_content_width"),
+    (dict(switch_content_width=0.5), "switch_content_width"),
     (dict(supply_pressure=-5.0), "supply_pressure"),
     (dict(ambient_pressure=-5.0), "ambient_pressure"),
     (dict(grid=(4, 4)), "n_theta"),
@@ -409,6 +406,30 @@ def test_bad_bearing_parameters_raise(kwargs, name):
     args.update(kwargs)
     with pytest.raises(ValueError, match=name):
         JournalBearing(**args)
+
+
+def test_default_switch_width_follows_p0_and_tolerances_are_on_theta_and_pressure():
+    """The default pressure width is 1e-4 p0 at every speed; the cells' atol is atol min(1, 1/r) because a
+    cavitated cell's unknown is its content deficit divided by r = w_theta / w (p/p0 in the full film)."""
+    b = paper_bearing()
+    for rpm in (1000.0, 6000.0):
+        f = b.film(rpm)
+        assert f.width == pytest.approx(1e-4)
+        assert f.content_scale == pytest.approx(0.01 / 1e-4)
+    o = JournalOrbit(b, MASS, 0.01 * CL, W, RPM)
+    tol = o.absolute_tolerance(1e-6)
+    nf = o.film.n
+    assert np.allclose(tol[:nf], 1e-6 / 100.0) and np.allclose(tol[nf:], 1e-6)
+    wide = JournalOrbit(paper_bearing(switch_width=1e4, switch_content_width=1e-4), MASS, 0.01 * CL, W, RPM)
+    assert wide.film.content_scale < 1 and np.allclose(wide.absolute_tolerance(1e-6), 1e-6)
+    # the content deficit of a cavitated cell (10 switch widths below 0) is r times its unknown, up to the
+    # softplus tail r w ln(1 + e^-10) = 4.5e-7
+    f = o.film
+    u = np.full(nf, -1e-3)
+    f.residual(u, 0.3, 0.2)
+    np.testing.assert_allclose(f.w.C[f.op.free], 1.0 - f.content_scale * 1e-3, rtol=0.0, atol=1e-6)
+    with pytest.raises(ValueError, match="atol"):
+        o.absolute_tolerance(0.0)
 
 
 def test_bad_groove_and_operating_parameters_raise():

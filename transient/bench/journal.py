@@ -102,7 +102,7 @@ def _log(msg, progress):
         print(msg, file=sys.stderr, flush=True)
 
 
-def _orbit(grid, speed_rpm, switch_width=1e3):
+def _orbit(grid, speed_rpm, switch_width=None):
     b = JournalBearing(**BEARING, grid=tuple(grid), switch_width=switch_width)
     return _TimedOrbit(b, speed_rpm=speed_rpm, **ROTOR)
 

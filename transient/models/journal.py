@@ -28,6 +28,10 @@ RHO_KIM_BEARING = dict(diameter=0.08, length=0.024, clearance=80e-6, viscosity=0
 RHO_KIM_ROTOR = dict(rotor_mass=100.0, unbalance=0.8e-6, load=981.0)
 
 
+#: Default pressure width of the Elrod switch as a fraction of p0 = 6 mu omega (R/C)^2 (docs/journal.md).
+SWITCH_WIDTH_P0 = 1e-4
+
+
 @dataclass(frozen=True)
 class Groove:
     """Axial oil-supply groove: centre angle from the top of the bearing (opposite the load) in the
@@ -84,13 +88,19 @@ class JournalBearing:
     grid : (n_theta, n_axial) cells; n_axial covers the half length when ``symmetric`` (paper 151 x 21).
     cavitation_pressure, ambient_pressure [Pa, absolute] : p_c and the pressure at the bearing ends
         (paper: both 0).
-    switch_width [Pa] : pressure width of the smooth Elrod switch (convergence study in docs/journal.md).
+    switch_width [Pa] : pressure width of the smooth Elrod switch; it biases the load linearly
+        (convergence study in docs/journal.md). Default ``None``: ``SWITCH_WIDTH_P0`` p0 at each speed
+        (p0 = 6 mu omega (R/C)^2; 2.7 kPa for the paper's bearing at 6000 rpm), which keeps the bias
+        the same at every speed (about +0.15 % on the load).
+    switch_content_width [-] : content width of the switch (the film-content deficit over which a cell
+        fills or empties); it hardly biases the film but sets how abruptly a cell turns at rupture and
+        reformation, so a wider one saves the orbit integrator time steps (docs/journal.md, section 3).
     symmetric : model half the length with a symmetry plane at the mid-plane (exact for this model).
     """
 
     def __init__(self, diameter, length, clearance, viscosity, bulk_modulus=1e9, supply_pressure=101325.0,
                  groove: Groove | None = Groove(), grid=(151, 21), cavitation_pressure=0.0, ambient_pressure=0.0,
-                 switch_width=1e3, symmetric=True):
+                 switch_width=None, switch_content_width=1e-2, symmetric=True):
         self.diameter = check_positive("diameter", diameter, "m")
         self.length = check_positive("length", length, "m")
         self.clearance = check_positive("clearance", clearance, "m")
@@ -103,7 +113,10 @@ class JournalBearing:
                                             why="(must be >= cavitation_pressure)")
         self.supply_pressure = check_range("supply_pressure", supply_pressure, "Pa", cavitation_pressure, np.inf,
                                            why="(must be >= cavitation_pressure)")
-        self.switch_width = check_positive("switch_width", switch_width, "Pa")
+        self.switch_width = None if switch_width is None else check_positive("switch_width", switch_width, "Pa")
+        self.switch_content_width = check_range("switch_content_width", switch_content_width, "-", 0.0, 0.1,
+                                                low_open=True, why="(a content deficit; above 0.1 the switch "
+                                                "smears the cavitated zone)")
         if groove is not None and not isinstance(groove, Groove):
             raise TypeError(f"groove must be a Groove or None, got {type(groove).__name__}")
         self.groove = groove
@@ -237,7 +250,8 @@ class Film:
         self.omega = omega(speed_rpm)
         self.p0 = b.pressure_scale(speed_rpm)
         self.beta_bar = b.bulk_modulus / self.p0
-        self.width = b.switch_width / self.p0
+        self.width = SWITCH_WIDTH_P0 if b.switch_width is None else b.switch_width / self.p0
+        self.content_scale = b.switch_content_width / self.width  # r: content width / pressure width
         self.force_scale = self.p0 * b.radius ** 2  # N per unit of Fbar
         u_supply = (b.supply_pressure - b.cavitation_pressure) / self.p0
         u_amb = (b.ambient_pressure - b.cavitation_pressure) / self.p0
@@ -256,7 +270,7 @@ class Film:
         w, op = self.w, self.op
         out = np.empty(self.n) if out is None else out
         film_residual(u, X, Y, VX, VY, rate, w.zero if C_ref is None else C_ref, out, self.beta_bar, self.width,
-                      w.cosp, w.sinp, w.area, *w.fields(), w.zero, *op.residual_args)
+                      self.content_scale, w.cosp, w.sinp, w.area, *w.fields(), w.zero, *op.residual_args)
         return out
 
     def jacobian_data(self, u, X, Y, VX=0.0, VY=0.0, rate=0.0, data=None):
@@ -264,7 +278,8 @@ class Film:
         w, op = self.w, self.op
         data = np.empty(op.nnz) if data is None else data
         ne = op.n_extra
-        film_jacobian(u, X, Y, VX, VY, rate, data, self.beta_bar, self.width, w.cosp, w.sinp, w.area,
+        film_jacobian(u, X, Y, VX, VY, rate, data, self.beta_bar, self.width, self.content_scale,
+                      w.cosp, w.sinp, w.area,
                       *w.fields(), w.zero, w.dk_dq[:ne], w.dc_dq[:ne], w.no_dq[:ne], w.pos_col, *op.jacobian_face_args)
         return data
 

@@ -40,11 +40,11 @@ N_ROTOR = 4  # X, Y, VX, VY appended after the cells
 
 
 @njit(cache=True)
-def film_fields(u, X, Y, cosp, sinp, beta_bar, width, H, P, dP, C, D, dD, k, c):
+def film_fields(u, X, Y, cosp, sinp, beta_bar, width, content_scale, H, P, dP, C, D, dD, k, c):
     """Cell fields at state ``u`` and journal position (X, Y): H, P(u), P', theta = C(u), D = C', D',
     k = H^3/2 (Poiseuille), c = H/2 (Couette)."""
     softplus_pressure(u, width, P, dP)
-    elrod_content(u, P, dP, width, beta_bar, C, D, dD)
+    elrod_content(u, P, dP, width, content_scale, beta_bar, C, D, dD)
     for i in range(u.size):
         h = 1.0 + X * cosp[i] + Y * sinp[i]
         H[i] = h
@@ -99,18 +99,18 @@ class FilmWork:
 
 
 @njit(cache=True)
-def _stencil_residual(u, X, Y, beta_bar, width, cosp, sinp, H, P, dP, C, D, dD, k, c, zero, R,
+def _stencil_residual(u, X, Y, beta_bar, width, content_scale, cosp, sinp, H, P, dP, C, D, dD, k, c, zero, R,
                       fL, fR, fdir, fd, fs, bcell, bside, bdir, bd, bs, bP, bC, free, u_fixed):
-    film_fields(u, X, Y, cosp, sinp, beta_bar, width, H, P, dP, C, D, dD, k, c)
+    film_fields(u, X, Y, cosp, sinp, beta_bar, width, content_scale, H, P, dP, C, D, dD, k, c)
     residual_kernel(u, P, C, k, k, c, zero, True, fL, fR, fdir, fd, fs, bcell, bside, bdir, bd, bs, bP, bC,
                     free, u_fixed, R)
 
 
 @njit(cache=True)
-def _stencil_jacobian(u, X, Y, beta_bar, width, cosp, sinp, H, P, dP, C, D, dD, k, c, zero, dk_dq, dc_dq, no_dq,
+def _stencil_jacobian(u, X, Y, beta_bar, width, content_scale, cosp, sinp, H, P, dP, C, D, dD, k, c, zero, dk_dq, dc_dq, no_dq,
                       pos_col, fL, fR, fdir, fd, fs, fpos, bcell, bside, bdir, bd, bs, bP, bC, bpos, free, pos_c,
                       data):
-    film_fields(u, X, Y, cosp, sinp, beta_bar, width, H, P, dP, C, D, dD, k, c)
+    film_fields(u, X, Y, cosp, sinp, beta_bar, width, content_scale, H, P, dP, C, D, dD, k, c)
     if dk_dq.shape[0] > 0:
         position_derivatives(H, cosp, sinp, dk_dq, dc_dq)
     jacobian_kernel(P, dP, C, D, k, zero, k, zero, c, zero, dk_dq, dk_dq, dc_dq, no_dq, True,
@@ -118,13 +118,13 @@ def _stencil_jacobian(u, X, Y, beta_bar, width, cosp, sinp, H, P, dP, C, D, dD, 
 
 
 @njit(cache=True)
-def ode_rhs(tau, y, out, beta_bar, width, kappa, wbar, ebar, sym, cosp, sinp, area,
+def ode_rhs(tau, y, out, beta_bar, width, content_scale, kappa, wbar, ebar, sym, cosp, sinp, area,
             H, P, dP, C, D, dD, k, c, zero, R,
             fL, fR, fdir, fd, fs, bcell, bside, bdir, bd, bs, bP, bC, free, u_fixed):
     """ODE right-hand side ``y' = f(tau, y)`` of the film + rotor (module docstring)."""
     n = free.size
     X, Y, VX, VY = y[n], y[n + 1], y[n + 2], y[n + 3]
-    _stencil_residual(y[:n], X, Y, beta_bar, width, cosp, sinp, H, P, dP, C, D, dD, k, c, zero, R,
+    _stencil_residual(y[:n], X, Y, beta_bar, width, content_scale, cosp, sinp, H, P, dP, C, D, dD, k, c, zero, R,
                       fL, fR, fdir, fd, fs, bcell, bside, bdir, bd, bs, bP, bC, free, u_fixed)
     for i in range(n):
         if free[i]:
@@ -139,7 +139,7 @@ def ode_rhs(tau, y, out, beta_bar, width, kappa, wbar, ebar, sym, cosp, sinp, ar
 
 
 @njit(cache=True)
-def ode_jacobian(tau, y, data, f, beta_bar, width, kappa, sym, cosp, sinp, area,
+def ode_jacobian(tau, y, data, f, beta_bar, width, content_scale, kappa, sym, cosp, sinp, area,
                  H, P, dP, C, D, dD, k, c, zero, dk_dq, dc_dq, no_dq, pos_row, pos_col, indices, scale,
                  fL, fR, fdir, fd, fs, fpos, bcell, bside, bdir, bd, bs, bP, bC, bpos, free, pos_c):
     """CSC data of ``df/dy`` for :func:`ode_rhs`; ``f`` must hold ``f(tau, y)`` at the same state::
@@ -151,7 +151,7 @@ def ode_jacobian(tau, y, data, f, beta_bar, width, kappa, sym, cosp, sinp, area,
     """
     n = free.size
     X, Y, VX, VY = y[n], y[n + 1], y[n + 2], y[n + 3]
-    _stencil_jacobian(y[:n], X, Y, beta_bar, width, cosp, sinp, H, P, dP, C, D, dD, k, c, zero, dk_dq, dc_dq,
+    _stencil_jacobian(y[:n], X, Y, beta_bar, width, content_scale, cosp, sinp, H, P, dP, C, D, dD, k, c, zero, dk_dq, dc_dq,
                       no_dq, pos_col, fL, fR, fdir, fd, fs, fpos, bcell, bside, bdir, bd, bs, bP, bC, bpos, free,
                       pos_c, data)
     for i in range(n):
@@ -174,14 +174,14 @@ def ode_jacobian(tau, y, data, f, beta_bar, width, kappa, sym, cosp, sinp, area,
 
 
 @njit(cache=True)
-def dae_residual(tau, y, yp, out, beta_bar, width, kappa, wbar, ebar, sym, cosp, sinp, area,
+def dae_residual(tau, y, yp, out, beta_bar, width, content_scale, kappa, wbar, ebar, sym, cosp, sinp, area,
                  H, P, dP, C, D, dD, k, c, zero, R,
                  fL, fR, fdir, fd, fs, bcell, bside, bdir, bd, bs, bP, bC, free, u_fixed):
     """IDA residual ``F(tau, y, y')`` of the film + rotor (module docstring); groove cells: ``u' = 0``."""
     n = free.size
     X, Y, VX, VY = y[n], y[n + 1], y[n + 2], y[n + 3]
     Xd, Yd = yp[n], yp[n + 1]
-    _stencil_residual(y[:n], X, Y, beta_bar, width, cosp, sinp, H, P, dP, C, D, dD, k, c, zero, R,
+    _stencil_residual(y[:n], X, Y, beta_bar, width, content_scale, cosp, sinp, H, P, dP, C, D, dD, k, c, zero, R,
                       fL, fR, fdir, fd, fs, bcell, bside, bdir, bd, bs, bP, bC, free, u_fixed)
     for i in range(n):
         if free[i]:
@@ -196,7 +196,7 @@ def dae_residual(tau, y, yp, out, beta_bar, width, kappa, wbar, ebar, sym, cosp,
 
 
 @njit(cache=True)
-def dae_jacobian(tau, y, yp, cj, data, beta_bar, width, kappa, sym, cosp, sinp, area,
+def dae_jacobian(tau, y, yp, cj, data, beta_bar, width, content_scale, kappa, sym, cosp, sinp, area,
                  H, P, dP, C, D, dD, k, c, zero, dk_dq, dc_dq, no_dq, pos_row, pos_col,
                  fL, fR, fdir, fd, fs, fpos, bcell, bside, bdir, bd, bs, bP, bC, bpos, free, pos_c):
     """CSC data of ``dF/dy + cj dF/dy'`` for :func:`dae_residual`::
@@ -207,7 +207,7 @@ def dae_jacobian(tau, y, yp, cj, data, beta_bar, width, kappa, sym, cosp, sinp, 
     n = free.size
     X, Y = y[n], y[n + 1]
     Xd, Yd = yp[n], yp[n + 1]
-    _stencil_jacobian(y[:n], X, Y, beta_bar, width, cosp, sinp, H, P, dP, C, D, dD, k, c, zero, dk_dq, dc_dq,
+    _stencil_jacobian(y[:n], X, Y, beta_bar, width, content_scale, cosp, sinp, H, P, dP, C, D, dD, k, c, zero, dk_dq, dc_dq,
                       no_dq, pos_col, fL, fR, fdir, fd, fs, fpos, bcell, bside, bdir, bd, bs, bP, bC, bpos, free,
                       pos_c, data)
     for i in range(n):
@@ -230,7 +230,7 @@ def dae_jacobian(tau, y, yp, cj, data, beta_bar, width, kappa, sym, cosp, sinp, 
 
 
 @njit(cache=True)
-def film_residual(u, X, Y, VX, VY, rate, C_ref, out, beta_bar, width, cosp, sinp, area,
+def film_residual(u, X, Y, VX, VY, rate, C_ref, out, beta_bar, width, content_scale, cosp, sinp, area,
                   H, P, dP, C, D, dD, k, c, zero,
                   fL, fR, fdir, fd, fs, bcell, bside, bdir, bd, bs, bP, bC, free, u_fixed):
     """Film equations for a prescribed journal motion (steady solves and the RK4 baseline)::
@@ -241,7 +241,7 @@ def film_residual(u, X, Y, VX, VY, rate, C_ref, out, beta_bar, width, cosp, sinp
     backward-Euler step of length dtau from the content ``theta_ref`` (Elrod's time discretisation,
     used per RK4 stage, and the pseudo-time steps of the steady solver).
     """
-    _stencil_residual(u, X, Y, beta_bar, width, cosp, sinp, H, P, dP, C, D, dD, k, c, zero, out,
+    _stencil_residual(u, X, Y, beta_bar, width, content_scale, cosp, sinp, H, P, dP, C, D, dD, k, c, zero, out,
                       fL, fR, fdir, fd, fs, bcell, bside, bdir, bd, bs, bP, bC, free, u_fixed)
     for i in range(u.size):
         if free[i]:
@@ -249,12 +249,12 @@ def film_residual(u, X, Y, VX, VY, rate, C_ref, out, beta_bar, width, cosp, sinp
 
 
 @njit(cache=True)
-def film_jacobian(u, X, Y, VX, VY, rate, data, beta_bar, width, cosp, sinp, area,
+def film_jacobian(u, X, Y, VX, VY, rate, data, beta_bar, width, content_scale, cosp, sinp, area,
                   H, P, dP, C, D, dD, k, c, zero, dk_dq, dc_dq, no_dq, pos_col,
                   fL, fR, fdir, fd, fs, fpos, bcell, bside, bdir, bd, bs, bP, bC, bpos, free, pos_c):
     """CSC data of ``dG/du`` for :func:`film_residual`, and -- if the operator has 4 extra unknowns --
     ``dG/dX, dG/dY`` (rate = 0 only) and ``dG/dVX, dG/dVY = A theta (cos, sin)`` in the extra columns."""
-    _stencil_jacobian(u, X, Y, beta_bar, width, cosp, sinp, H, P, dP, C, D, dD, k, c, zero, dk_dq, dc_dq, no_dq,
+    _stencil_jacobian(u, X, Y, beta_bar, width, content_scale, cosp, sinp, H, P, dP, C, D, dD, k, c, zero, dk_dq, dc_dq, no_dq,
                       pos_col, fL, fR, fdir, fd, fs, fpos, bcell, bside, bdir, bd, bs, bP, bC, bpos, free, pos_c,
                       data)
     ne = dk_dq.shape[0]

@@ -132,7 +132,7 @@ class JournalOrbit:
         (the journal touches the bearing)."""
         f, w, op = self.film, self.film.w, self.film.op
         y0 = self.initial_state() if y0 is None else np.asarray(y0, dtype=float)
-        common = (f.beta_bar, f.width)
+        common = (f.beta_bar, f.width, f.content_scale)
         scratch = (*w.fields(), w.zero, w.R)
         rargs = op.residual_args
         n = f.n
@@ -170,7 +170,7 @@ class JournalOrbit:
                        event_terminal=[True], event_direction=[-1], name="journal orbit")
 
     # ---------------------------------------------------------------------------------------------
-    def run(self, revolutions, method="cvode", rtol=1e-6, atol=1e-9, steps_per_revolution=3000,
+    def run(self, revolutions, method="ida", rtol=1e-6, atol=1e-9, steps_per_revolution=3000,
             outputs_per_revolution=100, record=(), record_from_revolution=0.0, chunk_revolutions=None,
             checkpoint=None, resume=False, progress=None, touch_gap=1e-3, y0=None,
             inner_tolerance=1e-6) -> OrbitResult:
@@ -179,7 +179,9 @@ class JournalOrbit:
         Parameters
         ----------
         method : ``"cvode"``, ``"ida"``, ``"bdf"``, ``"radau"``, ``"lsoda"`` or ``"rk4"``.
-        rtol, atol : tolerances of the adaptive methods (atol on the dimensionless states).
+        rtol, atol : tolerances of the adaptive methods; atol is absolute on the dimensionless quantities:
+            the journal position and velocity (units of C and C omega) and, per cell, the film content
+            theta and the pressure p / p0 (see :meth:`absolute_tolerance`).
         steps_per_revolution : fixed steps of ``"rk4"`` (paper: 3000).
         inner_tolerance : ``"rk4"`` only: the per-stage film criterion sum|d theta| / sum theta (paper: 1e-6).
         outputs_per_revolution : output (sampling) rate.
@@ -223,7 +225,8 @@ class JournalOrbit:
                 res = self._run_rk4(y, tau, steps_per_revolution, rec, inner_tolerance)
             else:
                 prob = self.problem(y, tau[0], touch_gap)
-                res = solve(prob, tau, method=method, rtol=rtol, atol=atol, store=False, observer=rec.observe)
+                res = solve(prob, tau, method=method, rtol=rtol, atol=self.absolute_tolerance(atol), store=False,
+                            observer=rec.observe)
             _accumulate(stats, res.stats)
             if not res.success:
                 raise RuntimeError(f"orbit integration ({method}) failed after {done:.3f} revolutions: {res.message}")
@@ -242,6 +245,18 @@ class JournalOrbit:
                       f"{el:7.1f} s elapsed  ({el / max(done - done0, 1e-9):.3f} s/rev)", file=sys.stderr, flush=True)
         stats.wall_time = time.perf_counter() - wall0
         return rec.result(method, stats, touched, message)
+
+    def absolute_tolerance(self, atol) -> np.ndarray:
+        """Per-state absolute tolerance for a user ``atol`` on theta, p / p0 and the rotor states.
+
+        A cell's unknown is ``u = p / p0`` in the full film but ``(theta - 1) / r`` in the cavitated zone
+        (:mod:`transient.film.cavitation`, ``r`` = content width / pressure width of the switch), so the
+        cells get ``atol min(1, 1 / r)``: neither the content nor the pressure is held more loosely than
+        ``atol``."""
+        atol = check_positive("atol", atol, "-")
+        out = np.full(self.n, atol)
+        out[: self.film.n] = atol * min(1.0, 1.0 / self.film.content_scale)
+        return out
 
     # ---------------------------------------------------------------------------------------------
     @staticmethod
@@ -493,7 +508,7 @@ class _Recorder:
 def _signature(o: JournalOrbit) -> str:
     b = o.bearing
     return repr((b.diameter, b.length, b.clearance, b.viscosity, b.bulk_modulus, b.supply_pressure, b.groove,
-                 b.grid_shape, b.switch_width, b.symmetric, b.cavitation_pressure, b.ambient_pressure,
+                 b.grid_shape, b.switch_width, b.switch_content_width, b.symmetric, b.cavitation_pressure, b.ambient_pressure,
                  o.rotor_mass, o.unbalance, o.load, o.speed_rpm))
 
 
