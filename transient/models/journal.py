@@ -256,8 +256,9 @@ class Film:
         u_supply = (b.supply_pressure - b.cavitation_pressure) / self.p0
         u_amb = (b.ambient_pressure - b.cavitation_pressure) / self.p0
         P_amb, _ = softplus(np.array([u_amb]), self.width)
+        C_amb = 1.0 + P_amb[0] / self.beta_bar + self.content_scale * (u_amb - P_amb[0])  # theta = C(u_amb)
         self.op = ReynoldsOperator(b.grid, n_extra=n_extra, upwind=True, boundary_P=float(P_amb[0]),
-                                   boundary_C=1.0 + u_amb / self.beta_bar)
+                                   boundary_C=float(C_amb))
         self.op.u_fixed[~self.op.free] = u_supply  # groove cells at the supply pressure
         self.w = FilmWork(self.op, b.phi, b.symmetric)
         self.n = self.op.n_cells
