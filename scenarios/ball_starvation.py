@@ -61,6 +61,13 @@ def plot_sweep(ax, values, seqs, label, marker="o"):
     ax.plot([], [], "-", color="0.6", label=label)
 
 
+def save(fig, name):
+    """Lay out, write ``OUT/name`` (PNG, 120 dpi) and close the figure."""
+    fig.tight_layout()
+    fig.savefig(os.path.join(OUT, name), dpi=120)
+    plt.close(fig)
+
+
 def main(fast=False):
     os.makedirs(OUT, exist_ok=True)
     t0 = time.perf_counter()
@@ -93,9 +100,7 @@ def main(fast=False):
         ax.set_yscale("symlog", linthresh=1e-7)
         ax.legend(fontsize=7)
         ax.set_title(f"Central film vs {labels[key]} (30 N, 80 rpm, 6 balls)", fontsize=9)
-        fig.tight_layout()
-        fig.savefig(os.path.join(OUT, f"ball_{figs[key]}.png"), dpi=120)
-        plt.close(fig)
+        save(fig, f"ball_{figs[key]}.png")
     # Fig. 10: m and m_c vs load
     fig, ax = plt.subplots(figsize=(5.5, 4))
     for hinf, mk in zip(ambients, ("o", "s")):
@@ -108,9 +113,7 @@ def main(fast=False):
     ax.set_xlabel("axial load [N]")
     ax.set_ylabel("meniscus position m = x_in / b")
     ax.legend(fontsize=7)
-    fig.tight_layout()
-    fig.savefig(os.path.join(OUT, "ball_fig10_meniscus.png"), dpi=120)
-    plt.close(fig)
+    save(fig, "ball_fig10_meniscus.png")
     # Fig. 11: ambient film
     fig, ax = plt.subplots(figsize=(5.5, 4))
     for hinf, mk in zip((50e-6, 100e-6, 125e-6, 150e-6), ("v", "o", "s", "D")):
@@ -121,9 +124,7 @@ def main(fast=False):
     ax.set_ylabel("H_c (periodic state / last pass)")
     ax.set_yscale("symlog", linthresh=1e-7)
     ax.legend(fontsize=7)
-    fig.tight_layout()
-    fig.savefig(os.path.join(OUT, "ball_fig11_ambient.png"), dpi=120)
-    plt.close(fig)
+    save(fig, "ball_fig11_ambient.png")
     # the inlet-film sequence at the reference point (thin film vs Chiu)
     brg = ThrustBallBearing()
     fig, ax = plt.subplots(figsize=(5.5, 4))
@@ -136,9 +137,7 @@ def main(fast=False):
     ax.set_xlabel("ball pass n")
     ax.set_ylabel("inlet film h_in^n [um]")
     ax.legend(fontsize=7)
-    fig.tight_layout()
-    fig.savefig(os.path.join(OUT, "ball_sequence.png"), dpi=120)
-    plt.close(fig)
+    save(fig, "ball_sequence.png")
 
     print(f"sweep: {sum(len(v) for v in results.values())} sequences in {t_sweep:.1f} s")
     print("paper: flooded to 5 balls / 78 rpm / 25 N; starved to 6 balls / 82 rpm / 40 N; parched beyond")

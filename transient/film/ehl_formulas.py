@@ -51,19 +51,20 @@ def critical_meniscus_minimum(H_min: float, rx: float, b: float) -> float:
     return 1.0 + 3.34 * ((rx / b) ** 2 * H_min) ** 0.56
 
 
-def starved_central_film(H_flooded: float, m: float, m_c: float) -> float:
-    """Starved central film ``H_F ((m-1)/(m_c-1))^0.29`` for ``m < m_c`` (``H_F`` otherwise; 0 at m <= 1)."""
-    if m >= m_c:
+def _starved(H_flooded: float, m: float, m_limit: float, exponent: float) -> float:
+    """``H_flooded ((m-1)/(m_limit-1))^exponent`` for 1 < m < m_limit, ``H_flooded`` above, 0 at m <= 1."""
+    if m >= m_limit:
         return H_flooded
     if m <= 1.0:
         return 0.0
-    return H_flooded * ((m - 1.0) / (m_c - 1.0)) ** 0.29
+    return H_flooded * ((m - 1.0) / (m_limit - 1.0)) ** exponent
+
+
+def starved_central_film(H_flooded: float, m: float, m_c: float) -> float:
+    """Starved central film ``H_F ((m-1)/(m_c-1))^0.29`` for ``m < m_c`` (``H_F`` otherwise; 0 at m <= 1)."""
+    return _starved(H_flooded, m, m_c, 0.29)
 
 
 def starved_minimum_film(H_flooded: float, m: float, m_star: float) -> float:
     """Starved minimum film ``H_min ((m-1)/(m*-1))^0.25`` for ``m < m*``."""
-    if m >= m_star:
-        return H_flooded
-    if m <= 1.0:
-        return 0.0
-    return H_flooded * ((m - 1.0) / (m_star - 1.0)) ** 0.25
+    return _starved(H_flooded, m, m_star, 0.25)
