@@ -171,9 +171,9 @@ def jacobian_kernel(P, dP, C, dC, kx, dkx, kz, dkz, cx, cz,
         s = fs[f]
         dPd = (P[R] - P[L]) / d
         kf = 0.5 * (kL + kR)
-        up_left = cL + cR >= 0.0
+        cf = 0.5 * (cL + cR)  # face velocity of the content (upwind scheme)
+        up_left = cf >= 0.0
         if upwind:
-            cf = 0.5 * (cL + cR)
             if up_left:
                 gL = cf * dC[L]
                 gR = 0.0
