@@ -1,0 +1,1 @@
+"""Finite-volume machinery: grids, the 5-point stencil and the generalised Reynolds operator."""

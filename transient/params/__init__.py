@@ -1,0 +1,1 @@
+"""The papers' parameter sets as data (SI), one module per paper."""

@@ -1,0 +1,1 @@
+"""Numerical solvers: the integrator facade, one sparse Newton, the long-run driver."""

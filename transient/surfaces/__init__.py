@@ -1,0 +1,1 @@
+"""Rough surfaces: generation and numerical flow factors."""

@@ -1,0 +1,1 @@
+"""Closed forms and set-ups shared by the tests and the scenarios."""
