@@ -18,7 +18,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
 
-from transient.models.ball_starvation import ThrustBallBearing
+from transient.models.ball.bearing import ThrustBallBearing
 
 OUT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "out")
 N_PASSES = 100

@@ -3,7 +3,7 @@
     python scenarios/film_validation.py [--out DIR] [--quick]
     transient run scenarios/film_validation.py [--out DIR] [--quick]
 
-Checks (the discretisations of tests/test_film_accuracy.py, from transient.film.cases):
+Checks (the discretisations of tests/test_film_accuracy.py, from transient.verification.cases):
 
 1. Sommerfeld infinitely long bearing (eps = 0.6): pressure profile numeric vs closed form, and the
    grid convergence of the max pressure error on uniform and stretched grids (observed orders);
@@ -28,7 +28,7 @@ from pathlib import Path
 
 import numpy as np
 
-from transient.film.cases import EPS, observed_orders, short_bearing_case, sommerfeld_case, squeeze_plate_case
+from transient.verification.cases import EPS, observed_orders, short_bearing_case, sommerfeld_case, squeeze_plate_case
 
 DEFAULT_OUT = Path(__file__).resolve().parent / "out" / "film_validation"
 
@@ -161,7 +161,7 @@ def _plot(path, profile, somm, short, sq):
     order = np.argsort(np.mod(profile.theta, 2 * np.pi))
     th = np.mod(profile.theta, 2 * np.pi)[order]
     tt = np.linspace(0, 2 * np.pi, 400)
-    from transient.film import reference as ref
+    from transient.verification import reference as ref
     a.plot(np.degrees(tt), ref.sommerfeld_pressure(tt, EPS, 0.02, 3.0, 0.05, 1e-4) / 1e6, "k-", label="closed form")
     a.plot(np.degrees(th), profile.p[order] / 1e6, "o", ms=4, mfc="none", label=f"finite volume, n = {profile.n}")
     a.set(xlabel=r"$\theta$ [deg] (from the maximum film)", ylabel="p [MPa]",

@@ -1,4 +1,4 @@
-"""Numerical Patir-Cheng pressure flow factors vs the fits in transient.film.flow_factors.
+"""Numerical Patir-Cheng pressure flow factors vs the fits in transient.physics.flow_factors.
 
 Run: ``python scenarios/flow_factors.py [--out DIR] [--quick]`` -- writes ``flow_factors_numerical.png``
 and ``flow_factors_numerical.json`` into ``scenarios/out/flow_factors/`` (default) and prints a
@@ -23,8 +23,8 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
 
-from transient.film.flow_factors import pressure_flow_factors
-from transient.film.flow_simulation import peklenik_lengths, pressure_flow_factor_numerical
+from transient.physics.flow_factors import pressure_flow_factors
+from transient.surfaces.flow_simulation import peklenik_lengths, pressure_flow_factor_numerical
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 GAMMAS = (1 / 6, 1.0, 6.0)

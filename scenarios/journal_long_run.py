@@ -20,8 +20,9 @@ import time
 
 import numpy as np
 
-from transient.models.journal import RHO_KIM_BEARING, RHO_KIM_ROTOR, JournalBearing
-from transient.models.journal_orbit import JournalOrbit
+from transient.params.rho_kim import BEARING as RHO_KIM_BEARING, ROTOR as RHO_KIM_ROTOR
+from transient.models.journal.bearing import JournalBearing
+from transient.models.journal.orbit import JournalOrbit
 
 OUT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "out", "journal_long")
 

@@ -31,8 +31,9 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 from transient.analysis import NotPeriodicError, bearing_noise, film_transitions
-from transient.models.journal import RHO_KIM_BEARING, RHO_KIM_ROTOR, JournalBearing
-from transient.models.journal_orbit import JournalOrbit
+from transient.params.rho_kim import BEARING as RHO_KIM_BEARING, ROTOR as RHO_KIM_ROTOR
+from transient.models.journal.bearing import JournalBearing
+from transient.models.journal.orbit import JournalOrbit
 
 OUT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "out", "noise")
 FULL = dict(grid=(151, 21), speeds=(1000, 2000, 3000, 4000, 5000, 6000, 7000, 7500))

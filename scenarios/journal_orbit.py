@@ -40,8 +40,9 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
 
-from transient.models.journal import RHO_KIM_BEARING, RHO_KIM_ROTOR, JournalBearing, omega
-from transient.models.journal_orbit import JournalOrbit
+from transient.params.rho_kim import BEARING as RHO_KIM_BEARING, ROTOR as RHO_KIM_ROTOR
+from transient.models.journal.bearing import JournalBearing, omega
+from transient.models.journal.orbit import JournalOrbit
 
 OUT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "out", "journal")
 BEARING = RHO_KIM_BEARING

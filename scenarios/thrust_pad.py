@@ -11,7 +11,7 @@ Choices (not given in the paper; stated here and in the JSON):
   (256 x 256 with --quick), correlation lengths lx = l0 sqrt(gamma), ly = l0 / sqrt(gamma) with
   l0 = 16 um (the same correlation area for every gamma), the same random seed for the three gammas;
   Fig. 4b: gamma-type heights, Rq = 2.07 um, Sk = 0.3;
-* contact: :func:`transient.film.asperity.steel_asperity_contact` defaults -- E' = 115.4 GPa,
+* contact: :func:`transient.physics.asperity.steel_asperity_contact` defaults -- E' = 115.4 GPa,
   H = 4 GPa, sqrt(Rq/Rp) = 0.01, N Rq Rp = 0.04, i.e. Rp = 50 mm, N = 1.6e5 m^-2 at Rq = 5 um,
   plasticity index psi = 0.29 (elastic); W_asp, A_re and phi_c from each surface's discrete height
   density (256 bins), the flow factors from its measured gamma.
@@ -30,8 +30,8 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
 
-from transient.film.roughness import RoughSurface
-from transient.models.thrust_pad import ThrustPad
+from transient.surfaces.roughness import RoughSurface
+from transient.models.pad.pad import ThrustPad
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 UM = 1e-6

@@ -123,8 +123,9 @@ def test_periodicity_detector():
 
 @pytest.fixture(scope="module")
 def small_noise():
-    from transient.models.journal import RHO_KIM_BEARING, RHO_KIM_ROTOR, JournalBearing
-    from transient.models.journal_orbit import JournalOrbit
+    from transient.models.journal.bearing import JournalBearing
+    from transient.params.rho_kim import BEARING as RHO_KIM_BEARING, ROTOR as RHO_KIM_ROTOR
+    from transient.models.journal.orbit import JournalOrbit
 
     o = JournalOrbit(JournalBearing(**RHO_KIM_BEARING, grid=(24, 4)), **RHO_KIM_ROTOR, speed_rpm=6000)
     return o, bearing_noise(o, revolutions=2, harmonics=3)
@@ -150,8 +151,9 @@ def test_bearing_noise_end_to_end(small_noise):
 
 
 def test_no_field_when_not_asked():
-    from transient.models.journal import RHO_KIM_BEARING, RHO_KIM_ROTOR, JournalBearing
-    from transient.models.journal_orbit import JournalOrbit
+    from transient.models.journal.bearing import JournalBearing
+    from transient.params.rho_kim import BEARING as RHO_KIM_BEARING, ROTOR as RHO_KIM_ROTOR
+    from transient.models.journal.orbit import JournalOrbit
 
     o = JournalOrbit(JournalBearing(**RHO_KIM_BEARING, grid=(16, 2)), **RHO_KIM_ROTOR, speed_rpm=6000)
     r = o.run(1, outputs_per_revolution=4)

@@ -1,4 +1,4 @@
-"""Greenwood-Tripp integrals and asperity contact (transient.film.asperity).
+"""Greenwood-Tripp integrals and asperity contact (transient.physics.asperity).
 
 Reference values are computed in the tests from the standard normal closed forms (scipy.stats.norm)
 or by scipy.integrate.quad at 1e-13 relative tolerance -- never by the code under test.
@@ -10,9 +10,9 @@ import numpy as np
 import pytest
 from scipy import integrate, stats
 
-from transient.film.asperity import (STEEL_CONTACT, AsperityContact, DiscreteDensity, greenwood_tripp,
+from transient.physics.asperity import (STEEL_CONTACT, AsperityContact, DiscreteDensity, greenwood_tripp,
                                      greenwood_tripp_derivative, steel_asperity_contact)
-from transient.film.roughness import RoughSurface
+from transient.surfaces.roughness import RoughSurface
 
 H = np.array([-6.0, -3.0, -1.5, -0.5, 0.0, 0.3, 1.0, 2.0, 3.0, 4.0, 5.0])
 

@@ -5,7 +5,7 @@ import math
 import numpy as np
 import pytest
 
-from transient.models.ball_starvation import FLOODED, PARCHED, STARVED, ThrustBallBearing
+from transient.models.ball.bearing import FLOODED, PARCHED, STARVED, ThrustBallBearing
 
 
 def test_parameter_validation_names_parameter_and_unit():

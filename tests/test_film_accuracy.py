@@ -1,11 +1,11 @@
-"""Accuracy of the finite-volume Reynolds operator against closed forms (transient.film.reference).
+"""Accuracy of the finite-volume Reynolds operator against closed forms (transient.verification.reference).
 
-The discretised cases live in :mod:`transient.film.cases` (shared with scenarios/film_validation.py)."""
+The discretised cases live in :mod:`transient.verification.cases` (shared with scenarios/film_validation.py)."""
 
 import numpy as np
 import pytest
 
-from transient.film.cases import observed_orders, short_bearing_case, sommerfeld_case, squeeze_plate_case
+from transient.verification.cases import observed_orders, short_bearing_case, sommerfeld_case, squeeze_plate_case
 
 
 @pytest.mark.parametrize("delta", [0.0, 0.5])

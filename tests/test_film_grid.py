@@ -3,8 +3,8 @@
 import numpy as np
 import pytest
 
-from transient.film.grid import Axis, Grid2D, stretched_edges
-from transient.film.stencil import CENTRE, EAST, NORTH, SOUTH, WEST, Stencil
+from transient.fv.grid import Axis, Grid2D, stretched_edges
+from transient.fv.stencil import CENTRE, EAST, NORTH, SOUTH, WEST, Stencil
 
 
 def test_axis_geometry_uniform_centred_and_stretched():

@@ -3,10 +3,10 @@
 import numpy as np
 from scipy.special import expit
 
-from transient.film.grid import Axis, Grid2D
-from transient.film.reynolds import Fields, ReynoldsOperator, integrate, scale_rows
-from transient.film.steady import solve_steady
-from transient.integrate import Problem, solve
+from transient.fv.grid import Axis, Grid2D
+from transient.fv.reynolds import Fields, ReynoldsOperator, integrate, scale_rows
+from transient.solvers.newton import solve_steady
+from transient.solvers.integrate import Problem, solve
 
 
 def test_elrod_film_cvode_reaches_the_steady_newton_solution():

@@ -4,8 +4,8 @@ import numpy as np
 import pytest
 from scipy.special import expit
 
-from transient.film.grid import Axis, Grid2D, stretched_edges
-from transient.film.reynolds import Fields, ReynoldsOperator, integrate, integrate_gradient
+from transient.fv.grid import Axis, Grid2D, stretched_edges
+from transient.fv.reynolds import Fields, ReynoldsOperator, integrate, integrate_gradient
 
 BETA, WIDTH, ALPHA = 5.0, 0.05, 0.3
 

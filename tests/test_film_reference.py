@@ -1,10 +1,10 @@
-"""The closed forms of transient.film.reference against independent quadrature and series."""
+"""The closed forms of transient.verification.reference against independent quadrature and series."""
 
 import numpy as np
 import pytest
 from scipy.integrate import dblquad, quad
 
-from transient.film import reference as ref
+from transient.verification import reference as ref
 
 EPS, MU, U, R, C, L = 0.6, 0.03, 5.0, 0.02, 1e-4, 0.01
 

@@ -4,10 +4,10 @@ import numpy as np
 import pytest
 from scipy.special import expit
 
-from transient.film import reference as ref
-from transient.film.grid import Axis, Grid2D
-from transient.film.reynolds import Fields, ReynoldsOperator
-from transient.film.steady import SteadyConvergenceError, solve_steady
+from transient.verification import reference as ref
+from transient.fv.grid import Axis, Grid2D
+from transient.fv.reynolds import Fields, ReynoldsOperator
+from transient.solvers.newton import SteadyConvergenceError, solve_steady
 
 A, H, DHDT, MU = 0.01, 2e-5, -1e-3, 0.05
 

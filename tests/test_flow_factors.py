@@ -1,4 +1,4 @@
-"""Patir-Cheng flow factors and the Wu-Zheng contact factor (transient.film.flow_factors)."""
+"""Patir-Cheng flow factors and the Wu-Zheng contact factor (transient.physics.flow_factors)."""
 
 import math
 
@@ -6,8 +6,8 @@ import numpy as np
 import pytest
 from scipy import stats
 
-from transient.film.asperity import DiscreteDensity
-from transient.film.flow_factors import (PRESSURE_FLOW_TABLE, SHEAR_FLOW_TABLE, combined_shear_flow_factor,
+from transient.physics.asperity import DiscreteDensity
+from transient.physics.flow_factors import (PRESSURE_FLOW_TABLE, SHEAR_FLOW_TABLE, combined_shear_flow_factor,
                                          contact_factor, contact_factor_wu_zheng_fit, mean_film_thickness,
                                          pressure_flow_factors, shear_flow_factor)
 

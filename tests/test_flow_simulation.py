@@ -1,4 +1,4 @@
-"""Numerical Patir-Cheng flow simulation (transient.film.flow_simulation).
+"""Numerical Patir-Cheng flow simulation (transient.surfaces.flow_simulation).
 
 Reference values are closed forms (smooth gap, 1-D ridges, small-roughness perturbation theory) or
 the Patir-Cheng fits with a tolerance justified by the measured realisation spread; none are
@@ -10,10 +10,10 @@ import math
 import numpy as np
 import pytest
 
-from transient.film.flow_factors import pressure_flow_factors
-from transient.film.flow_simulation import (FlowFactorResult, patch_flow_factor, peklenik_lengths,
+from transient.physics.flow_factors import pressure_flow_factors
+from transient.surfaces.flow_simulation import (FlowFactorResult, patch_flow_factor, peklenik_lengths,
                                             pressure_flow_factor_numerical, ridge_heights)
-from transient.film.roughness import RoughSurface
+from transient.surfaces.roughness import RoughSurface
 
 UM = 1e-6
 

@@ -5,8 +5,8 @@ import math
 import numpy as np
 import pytest
 
-from transient.film import ehl_formulas as hd
-from transient.film.hertz import (displacement, ellipticity_exact, gap_rolling_axis, gap_rolling_axis_slope,
+from transient.physics import film_formulas as hd
+from transient.physics.hertz import (displacement, ellipticity_exact, gap_rolling_axis, gap_rolling_axis_slope,
                                   hamrock_brewe, hertz_contact, meniscus_position, reduced_modulus)
 from scipy.special import ellipe, ellipk
 

@@ -1,10 +1,10 @@
 """Verification of the journal-bearing model (seed 003): Jacobians, closed-form and published limits,
 convergence in grid / switch width / time step, conservation, validation and restart.
 
-Conventions (see ``transient.models.journal_film``): ``phi`` from the top (groove) in the direction of
+Conventions (see ``transient.models.journal.kernels``): ``phi`` from the top (groove) in the direction of
 rotation, load in +x (towards phi = pi), ``H = 1 + X cos(phi) + Y sin(phi)``, film force on the journal
 ``F = +int p (cos phi, sin phi) dA``. A journal displaced by ``eps`` along +x puts the maximum film at
-phi = 0 and the minimum film at phi = pi, so the closed forms of :mod:`transient.film.reference`
+phi = 0 and the minimum film at phi = pi, so the closed forms of :mod:`transient.verification.reference`
 (theta from the maximum film, ``F_ref = -int p (cos theta, sin theta) dA``) apply with ``theta = phi``
 and ``F_model = -F_ref`` component by component.
 
@@ -17,9 +17,10 @@ import numpy as np
 import pytest
 import scipy.sparse as sp
 
-from transient.film.reference import short_bearing_force
-from transient.models.journal import RHO_KIM_BEARING, RHO_KIM_ROTOR, Groove, JournalBearing, omega
-from transient.models.journal_orbit import JournalOrbit
+from transient.verification.reference import short_bearing_force
+from transient.params.rho_kim import BEARING as RHO_KIM_BEARING, ROTOR as RHO_KIM_ROTOR
+from transient.models.journal.bearing import Groove, JournalBearing, omega
+from transient.models.journal.orbit import JournalOrbit
 
 D, L, CL, MU = (RHO_KIM_BEARING[k] for k in ("diameter", "length", "clearance", "viscosity"))
 W, MASS, RPM = RHO_KIM_ROTOR["load"], RHO_KIM_ROTOR["rotor_mass"], 6000.0

@@ -1,4 +1,4 @@
-"""Rough-surface generation (transient.film.roughness) against Lee & Rhim Fig. 4 and Patir (1978).
+"""Rough-surface generation (transient.surfaces.roughness) against Lee & Rhim Fig. 4 and Patir (1978).
 
 Sampling tolerances.  For a surface of N samples whose ACF rho covers a patch of sum(rho^k) lags,
 the sample moments have standard deviations (Gaussian heights, large N)
@@ -17,7 +17,7 @@ import numpy as np
 import pytest
 from scipy import integrate, stats
 
-from transient.film.roughness import (RoughSurface, acf_model, johnson_standard_sampler, measured_acf,
+from transient.surfaces.roughness import (RoughSurface, acf_model, johnson_standard_sampler, measured_acf,
                                       patir_coefficients)
 
 UM = 1e-6

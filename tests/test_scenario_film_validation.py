@@ -50,7 +50,7 @@ def test_quick_run_writes_files_and_second_order(scenario, tmp_path, capsys):
 
 def test_orders_reflect_the_numbers(scenario, tmp_path, monkeypatch):
     """The reported orders come from the measured errors: a first-order error model must show order 1."""
-    from transient.film import cases
+    from transient.verification import cases
 
     real = cases.squeeze_plate_case
 

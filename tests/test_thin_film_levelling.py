@@ -1,12 +1,12 @@
-"""Thin-film levelling MOL (transient.film.thin_film) and Chiu's linear solution."""
+"""Thin-film levelling MOL (transient.models.ball.levelling) and Chiu's linear solution."""
 
 import math
 
 import numpy as np
 import pytest
 
-from transient.film.thin_film import BCS, LevellingGrid, chiu_depression, chiu_kernel, chiu_rate, continuous_rate
-from transient.integrate import solve
+from transient.models.ball.levelling import BCS, LevellingGrid, chiu_depression, chiu_kernel, chiu_rate, continuous_rate
+from transient.solvers.integrate import solve
 
 
 @pytest.mark.parametrize("bc", BCS)

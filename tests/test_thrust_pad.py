@@ -5,11 +5,11 @@ import math
 import numpy as np
 import pytest
 
-from transient.film.asperity import greenwood_tripp, steel_asperity_contact
-from transient.film.flow_factors import pressure_flow_factors
-from transient.film.reference import squeeze_rect_load
-from transient.film.roughness import RoughSurface
-from transient.models.thrust_pad import ThrustPad, _FullDAE, pressure_flow_clamped
+from transient.physics.asperity import greenwood_tripp, steel_asperity_contact
+from transient.physics.flow_factors import pressure_flow_factors
+from transient.verification.reference import squeeze_rect_load
+from transient.surfaces.roughness import RoughSurface
+from transient.models.pad.pad import ThrustPad, _FullDAE, pressure_flow_clamped
 
 MU = 0.03
 L = 0.02

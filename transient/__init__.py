@@ -21,14 +21,13 @@ import os as _os
 _os.environ.setdefault("OMP_WAIT_POLICY", "PASSIVE")
 
 from transient.analysis.acoustics import a_weighting, bearing_noise  # noqa: E402
-from transient.film.asperity import AsperityContact, DiscreteDensity, greenwood_tripp, steel_asperity_contact
-from transient.film.flow_factors import contact_factor, pressure_flow_factors, shear_flow_factor
-from transient.film.roughness import RoughSurface
-from transient.integrate import Problem, Result, Stats, solve
-from transient.models.ball_starvation import ThrustBallBearing
-from transient.models.journal import Groove, JournalBearing
-from transient.models.journal_orbit import JournalOrbit
-from transient.models.thrust_pad import ThrustPad
+from transient.models.ball import ThrustBallBearing
+from transient.models.journal import Groove, JournalBearing, JournalOrbit
+from transient.models.pad import ThrustPad
+from transient.physics.asperity import AsperityContact, DiscreteDensity, greenwood_tripp, steel_asperity_contact
+from transient.physics.flow_factors import contact_factor, pressure_flow_factors, shear_flow_factor
+from transient.solvers.integrate import Problem, Result, Stats, solve
+from transient.surfaces.roughness import RoughSurface
 
 __all__ = [
     "AsperityContact", "DiscreteDensity", "Groove", "JournalBearing", "JournalOrbit", "Problem", "Result",

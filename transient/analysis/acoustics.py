@@ -1,6 +1,6 @@
 """Bearing noise from the film pressure fluctuation (Rho & Kim, seed 003, sections 2.3-2.4).
 
-On the steady periodic response of :class:`~transient.models.journal_orbit.JournalOrbit`:
+On the steady periodic response of :class:`~transient.models.journal.orbit.JournalOrbit`:
 
 * per node, mean pressure p_m and RMS fluctuation p_f over an integer number of shaft periods
   (eqs. 11, 12), and the RMS amplitude of each shaft harmonic (1x, 2x, ...);
@@ -297,7 +297,7 @@ def default_samples_per_revolution(harmonics) -> int:
 def bearing_noise(orbit, revolutions=4, harmonics=5, settle_revolutions=None, max_settle_revolutions=60, tol=1e-4,
                   transmission="printed", method="ida", rtol=1e-6, samples_per_revolution=None,
                   chunk_revolutions=5, confirm=2, progress=False) -> BearingNoise:
-    """Bearing noise of a :class:`~transient.models.journal_orbit.JournalOrbit` at its speed.
+    """Bearing noise of a :class:`~transient.models.journal.orbit.JournalOrbit` at its speed.
 
     1. Settling, no fields recorded: from the static equilibrium, in chunks of ``chunk_revolutions``,
        sampling the journal position once per revolution (Poincare, in units of the clearance) until
@@ -309,7 +309,7 @@ def bearing_noise(orbit, revolutions=4, harmonics=5, settle_revolutions=None, ma
        ``samples_per_revolution`` (default :func:`default_samples_per_revolution`), only there.
     3. Analysis (:func:`analyse_pressure`).
     """
-    from transient.models.journal_orbit import JournalOrbit
+    from transient.models.journal.orbit import JournalOrbit
 
     if not isinstance(orbit, JournalOrbit):
         raise TypeError(f"orbit must be a JournalOrbit, got {type(orbit).__name__}")

@@ -2,7 +2,7 @@
 
 ``run(out_dir="docs")`` integrates the same 200-ball-pass sequence (reference conditions of the paper:
 30 N, 80 rpm, 6 balls, h_inf = 100 um; thin-film reflow on 100 cells) with every method through the
-:mod:`transient.integrate` facade, against a CVODE reference at rtol = 1e-10, and writes
+:mod:`transient.solvers.integrate` facade, against a CVODE reference at rtol = 1e-10, and writes
 ``bench_ball.md`` (table, ratios) and ``bench_ball.png`` (error vs wall time, log-log).
 Error = max over the passes of |h_in - h_in,ref| / h_inf.
 
@@ -18,8 +18,8 @@ import time
 
 import numpy as np
 
-from transient.integrate import solve
-from transient.models.ball_starvation import ThrustBallBearing
+from transient.solvers.integrate import solve
+from transient.models.ball.bearing import ThrustBallBearing
 
 CASE = dict(load=30.0, speed_rpm=80.0, ambient_film=100e-6)
 
@@ -58,7 +58,7 @@ def run(out_dir: str = "docs", n_passes: int = 200, n_cells: int = 100, quick: b
     # RK4: time a slice of the first pass at the stability-limited step
     brg = ThrustBallBearing()
     c = brg.contact(CASE["load"])
-    from transient.film.thin_film import LevellingGrid
+    from transient.models.ball.levelling import LevellingGrid
 
     X = 0.5 * brg.ball_diameter / c.a
     g = LevellingGrid(n_cells, X, "reservoir", mobility_film=0.1)

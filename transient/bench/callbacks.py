@@ -15,7 +15,7 @@ import numpy as np
 import scipy.sparse as sp
 from numba import njit
 
-from transient.integrate import Problem, solve
+from transient.solvers.integrate import Problem, solve
 
 
 @njit(cache=True)

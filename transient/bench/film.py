@@ -7,7 +7,7 @@ after the JIT warm-up:
 
 * residual -- model fields (numba) + :func:`residual_kernel` via :meth:`ReynoldsOperator.residual`;
 * Jacobian -- model fields + :func:`jacobian_kernel` with the dense ``dR/dq`` columns;
-* fields -- the softplus switch alone, :func:`transient.film.cavitation.softplus_pressure` on the
+* fields -- the softplus switch alone, :func:`transient.physics.cavitation.softplus_pressure` on the
   pressure-like variable ``beta (u - 1)`` (the journal model's kernel; included in both of the above).
 
 ``run()`` returns the rows, :func:`markdown` formats them; ``transient bench film`` writes them to docs/.
@@ -20,9 +20,9 @@ import time
 
 import numpy as np
 
-from transient.film.cavitation import softplus_pressure
-from transient.film.grid import Axis, Grid2D
-from transient.film.reynolds import ReynoldsOperator
+from transient.physics.cavitation import softplus_pressure
+from transient.fv.grid import Axis, Grid2D
+from transient.fv.reynolds import ReynoldsOperator
 
 
 def _journal(nt, nz, eps=0.6, L_over_D=0.5, beta=50.0, w=1e-3):

@@ -13,7 +13,7 @@ import time
 
 import numpy as np
 
-from transient.film.roughness import RoughSurface
+from transient.surfaces.roughness import RoughSurface
 
 UM = 1e-6
 

@@ -15,7 +15,7 @@ import time
 
 import numpy as np
 
-from transient.models.thrust_pad import ThrustPad
+from transient.models.pad.pad import ThrustPad
 
 SIG = 2e-6
 L = 0.02

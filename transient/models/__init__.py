@@ -1,0 +1,1 @@
+"""One package per machine element: parameters, state layout, Problem, steady limit, Result."""

@@ -48,7 +48,7 @@ import scipy.fft as sfft
 import scipy.sparse as sp
 from scipy.integrate import quad
 
-from transient.integrate import Problem
+from transient.solvers.integrate import Problem
 
 BCS = ("reservoir", "closed", "periodic")
 

@@ -12,7 +12,7 @@ conservation law (eq. 1 divided by ``C omega``) in each finite volume::
 
     A_i d(theta H)_i / dtau + R_i(u) = 0,   R_i = net outflow of  q = theta H / 2 e_phi - H^3 / 2 grad P
 
-with one state ``u`` per cell, ``theta = C(u)``, ``D = dC/du`` (:mod:`transient.film.cavitation`). The rotor
+with one state ``u`` per cell, ``theta = C(u)``, ``D = dC/du`` (:mod:`transient.physics.cavitation`). The rotor
 (paper eqs. 7-10; film force on the journal ``F = +int p (cos phi, sin phi) dA``)::
 
     X'' = kappa Fbar_x + Wbar + (e / C) cos(tau),   Y'' = kappa Fbar_y + (e / C) sin(tau)
@@ -33,8 +33,8 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from transient.film.cavitation import elrod_content, softplus_pressure
-from transient.film.reynolds import jacobian_kernel, residual_kernel, scale_rows
+from transient.physics.cavitation import elrod_content, softplus_pressure
+from transient.fv.reynolds import jacobian_kernel, residual_kernel, scale_rows
 
 N_ROTOR = 4  # X, Y, VX, VY appended after the cells
 

@@ -53,7 +53,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 from scipy import optimize, signal
-from transient.validation import check_positive, check_range
+from transient.checks import check_positive, check_range
 
 __all__ = [
     "ACF_MODELS",
@@ -590,5 +590,5 @@ class RoughSurface:
 
     def height_density(self, bins: int = 256):
         """Discrete height density of the surface (see asperity.DiscreteDensity)."""
-        from transient.film.asperity import DiscreteDensity
+        from transient.physics.asperity import DiscreteDensity
         return DiscreteDensity.from_samples(self.heights.ravel(), bins=bins)

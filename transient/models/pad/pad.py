@@ -18,11 +18,11 @@ Force balance on the pad (eq. 14; the paper's F_tot = 0 is the massless limit)::
     W_asp = A (4/3) N E' Rp^(1/2) int_{h0}^inf (z - h0)^(3/2) phi(z) dz                     (15)
     A_re  = A pi N Rp int_{h0}^inf (z - h0) phi(z) dz                                        (16)
 
-(:mod:`transient.film.asperity`; W [N] the applied load pressing the gap closed.)
+(:mod:`transient.physics.asperity`; W [N] the applied load pressing the gap closed.)
 
 Two solution paths, which agree (tests):
 
-* ``"full"`` -- 2-D finite volumes (:class:`~transient.film.reynolds.ReynoldsOperator`, ``nx x ny``
+* ``"full"`` -- 2-D finite volumes (:class:`~transient.fv.reynolds.ReynoldsOperator`, ``nx x ny``
   cells) with the unknowns ``[p_cells, h0, v]``, ``v = dh0/dt``::
 
       cells: R_i(p; h0) + A_i phi_c(h0) v = 0          (algebraic, R = net Poiseuille outflow)
@@ -37,7 +37,7 @@ Two solution paths, which agree (tests):
 * ``"separable"`` -- the pad is uniform and parallel and the flow factors do not depend on position,
   so the pressure is ``p = phi_c (dh0/dt) * Pi(x, y; h0)`` with ``Pi`` the solution of one Poisson
   problem, known in closed form. Stretching y by ``sqrt(phi_x/phi_y)`` turns the anisotropic operator
-  into a Laplacian; the rectangular series (:func:`transient.film.reference.squeeze_rect_load`) gives
+  into a Laplacian; the rectangular series (:func:`transient.verification.reference.squeeze_rect_load`) gives
 
       W_hyd = -K(h0) dh0/dt,  K(h0) = mu L^3 B phi_c f(B/L sqrt(phi_x/phi_y)) / (phi_x h0^3),
       f(r)  = 1 - 192/(pi^5 r) sum_{n odd} tanh(n pi r/2) / n^5,
@@ -67,13 +67,13 @@ import scipy.sparse.linalg as spla
 from scipy import special
 from scipy.optimize import brentq
 
-from transient.film.asperity import AsperityContact, DiscreteDensity, steel_asperity_contact
-from transient.film.flow_factors import PRESSURE_FLOW_TABLE, _gamma_bracket, _key
-from transient.film.grid import Axis, Grid2D
-from transient.film.reynolds import ReynoldsOperator, residual_kernel
-from transient.film.roughness import RoughSurface
-from transient.integrate import Problem, Stats, solve
-from transient.validation import check_positive, check_range
+from transient.physics.asperity import AsperityContact, DiscreteDensity, steel_asperity_contact
+from transient.physics.flow_factors import PRESSURE_FLOW_TABLE, _gamma_bracket, _key
+from transient.fv.grid import Axis, Grid2D
+from transient.fv.reynolds import ReynoldsOperator, residual_kernel
+from transient.surfaces.roughness import RoughSurface
+from transient.solvers.integrate import Problem, Stats, solve
+from transient.checks import check_positive, check_range
 
 __all__ = ["ThrustPad", "DescentResult", "pressure_flow_clamped", "rect_shape_factor"]
 
@@ -101,7 +101,7 @@ def pressure_flow_clamped(H: float, gamma: float):
     """Patir-Cheng pressure flow factors with their H-derivatives, frozen below the fit range.
 
     Returns ``(phi_x, phi_y, dphi_x/dH, dphi_y/dH, H_min)``. Same fits and log-gamma interpolation as
-    :func:`transient.film.flow_factors.pressure_flow_factors` (``phi_x = 1 - C exp(-r H)`` for
+    :func:`transient.physics.flow_factors.pressure_flow_factors` (``phi_x = 1 - C exp(-r H)`` for
     gamma <= 1, ``1 + C H^-r`` for gamma > 1, ``phi_y(gamma) = phi_x(1/gamma)``), evaluated at
     ``max(H, H_min)``; ``H_min`` is the largest lower limit of the tabulated fits involved (for phi_x
     and phi_y), and the derivatives are 0 below it.
@@ -140,7 +140,7 @@ class DescentResult:
 
     ``t`` [s], ``h0`` [m] (mean-plane separation), ``dh0_dt`` [m/s], ``w_hyd`` [N] (film load),
     ``w_asp`` [N] (asperity load), ``contact_area`` [m^2] (real contact area A_re), ``load`` [N],
-    ``path`` ("full" | "separable"), ``method``, ``stats`` (:class:`transient.integrate.Stats`),
+    ``path`` ("full" | "separable"), ``method``, ``stats`` (:class:`transient.solvers.integrate.Stats`),
     ``success``, ``message``; ``pressure`` [Pa] (ny, nx) at the last output (full IDA path only).
     """
 
@@ -176,12 +176,12 @@ class ThrustPad:
     ----------
     length L [m] (x), width B [m] (y), viscosity mu [Pa s].
     surface : None (smooth: phi_x = phi_y = phi_c = 1, no contact), a number (Gaussian heights of RMS
-        sigma [m] of the equivalent surface), or a :class:`~transient.film.roughness.RoughSurface`
+        sigma [m] of the equivalent surface), or a :class:`~transient.surfaces.roughness.RoughSurface`
         (its RMS, its measured Peklenik number gamma and its discrete height density, ``bins`` bins).
     grid : (nx, ny) finite-volume cells of the full path (each 2 ... 2000).
-    contact : ``"auto"`` (default: :func:`~transient.film.asperity.steel_asperity_contact` for a rough
+    contact : ``"auto"`` (default: :func:`~transient.physics.asperity.steel_asperity_contact` for a rough
         surface, with the surface's discrete density; none for a smooth one), an
-        :class:`~transient.film.asperity.AsperityContact`, or None (no asperity load).
+        :class:`~transient.physics.asperity.AsperityContact`, or None (no asperity load).
     gamma : Peklenik number for the flow factors, overriding the surface's ([1/9, 9]).
     """
 

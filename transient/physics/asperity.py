@@ -30,7 +30,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy import special
 
-from transient.validation import check_positive, check_range
+from transient.checks import check_positive, check_range
 
 __all__ = [
     "greenwood_tripp",

@@ -14,7 +14,7 @@ flow through the patch over the flow of the smooth gap h under the same pressure
     phi_x = [ (1/Ly) int_0^Ly  -h_T^3/(12 mu) dp/dx dy ] / [ h^3/(12 mu) (p_A - p_B)/Lx ].
 
 Here (mu and the pressures cancel; the problem is linear) the equation is discretised with
-:class:`~transient.film.reynolds.ReynoldsOperator` on a cell-centred grid whose cells are the surface
+:class:`~transient.fv.reynolds.ReynoldsOperator` on a cell-centred grid whose cells are the surface
 samples (``P = u``, ``C = 1``, ``kx = kz = k``, no Couette term): one assembly (numba kernel), one
 ``splu`` solve per H.  The flow Q is taken on the inlet Dirichlet faces (half a cell from the first
 cell centre, the cell's own k, exactly as the operator); the discrete outlet flow equals it to solver
@@ -53,10 +53,10 @@ from dataclasses import dataclass, field
 import numpy as np
 import scipy.sparse.linalg as spla
 
-from transient.film.grid import Axis, Grid2D
-from transient.film.reynolds import ReynoldsOperator
-from transient.film.roughness import RoughSurface
-from transient.validation import check_positive, check_range
+from transient.fv.grid import Axis, Grid2D
+from transient.fv.reynolds import ReynoldsOperator
+from transient.surfaces.roughness import RoughSurface
+from transient.checks import check_positive, check_range
 
 __all__ = [
     "FlowFactorResult",

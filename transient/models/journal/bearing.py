@@ -2,7 +2,7 @@
 linearised stiffness/damping and the Lund stability threshold (Rho & Kim, seed 003).
 
 All public arguments and results are SI (m, Pa, Pa s, N, rpm). The discretisation and the
-dimensionless groups are in :mod:`transient.models.journal_film`.
+dimensionless groups are in :mod:`transient.models.journal.kernels`.
 """
 
 from __future__ import annotations
@@ -14,18 +14,13 @@ import scipy.linalg as sla
 import scipy.sparse.linalg as spla
 from scipy.optimize import brentq
 
-from transient.film.cavitation import softplus
-from transient.film.grid import Axis, Grid2D
-from transient.film.reynolds import ReynoldsOperator
-from transient.models.journal_film import N_ROTOR, FilmWork, film_force, film_jacobian, film_residual
-from transient.validation import check_positive, check_range
+from transient.physics.cavitation import softplus
+from transient.fv.grid import Axis, Grid2D
+from transient.fv.reynolds import ReynoldsOperator
+from transient.models.journal.kernels import N_ROTOR, FilmWork, film_force, film_jacobian, film_residual
+from transient.checks import check_positive, check_range
 
 
-#: Rho & Kim (seed 003) Table 1 bearing [SI] (p_s = 1 atm; mu, beta, D, L/D = 0.3, C = D/1000).
-RHO_KIM_BEARING = dict(diameter=0.08, length=0.024, clearance=80e-6, viscosity=0.029, bulk_modulus=1e9,
-                       supply_pressure=101325.0)
-#: Rho & Kim rotor: W = 981 N, e = 0.01 C; the mass is not stated, m = W/g = 100 kg is adopted.
-RHO_KIM_ROTOR = dict(rotor_mass=100.0, unbalance=0.8e-6, load=981.0)
 
 
 #: Default pressure width of the Elrod switch as a fraction of p0 = 6 mu omega (R/C)^2 (docs/journal.md).
@@ -266,7 +261,7 @@ class Film:
 
     # residual / Jacobian of the prescribed-motion film equations G(u) = 0 --------------------------
     def residual(self, u, X, Y, VX=0.0, VY=0.0, rate=0.0, C_ref=None, out=None):
-        """G(u) of :func:`~transient.models.journal_film.film_residual`; also leaves the fields (P, theta,
+        """G(u) of :func:`~transient.models.journal.kernels.film_residual`; also leaves the fields (P, theta,
         ...) of ``u`` in the scratch arrays ``self.w``."""
         w, op = self.w, self.op
         out = np.empty(self.n) if out is None else out

@@ -1,6 +1,6 @@
 """Direct steady solver: Newton on the discrete film equations ``R(u) + s = 0`` with a sparse LU.
 
-``R`` is the net volume outflow of :class:`~transient.film.reynolds.ReynoldsOperator` and ``s`` a
+``R`` is the net volume outflow of :class:`~transient.fv.reynolds.ReynoldsOperator` and ``s`` a
 per-cell source (e.g. the squeeze term ``A_i d(C h)_i/dt`` for a prescribed ``dh/dt``). Each iteration
 solves ``J du = -(R + s)`` with ``scipy.sparse.linalg.splu`` on the cell block of the operator's
 pattern, then backtracks (halving) until ``||R + s||_2`` decreases. Converged when
@@ -19,7 +19,7 @@ from typing import Callable
 import numpy as np
 import scipy.sparse.linalg as spla
 
-from transient.film.reynolds import Fields, ReynoldsOperator
+from transient.fv.reynolds import Fields, ReynoldsOperator
 
 
 class SteadyConvergenceError(RuntimeError):

@@ -1,8 +1,8 @@
 """Verification cases of the film operator: discretised closed-form problems, solved and compared.
 
 Each function builds one grid, solves the steady Reynolds equation with
-:func:`~transient.film.steady.solve_steady` on an incompressible film (``P = u``, ``C = 1``) and
-compares with the closed forms of :mod:`transient.film.reference`. They are shared by the tests
+:func:`~transient.solvers.newton.solve_steady` on an incompressible film (``P = u``, ``C = 1``) and
+compares with the closed forms of :mod:`transient.verification.reference`. They are shared by the tests
 (``tests/test_film_accuracy.py``) and the validation scenario (``scenarios/film_validation.py``), so
 the numbers in ``docs/validation.md`` come from exactly the discretisations the tests check.
 
@@ -20,10 +20,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from transient.film import reference as ref
-from transient.film.grid import Axis, Grid2D, stretched_edges
-from transient.film.reynolds import Fields, ReynoldsOperator
-from transient.film.steady import solve_steady
+from transient.verification import reference as ref
+from transient.fv.grid import Axis, Grid2D, stretched_edges
+from transient.fv.reynolds import Fields, ReynoldsOperator
+from transient.solvers.newton import solve_steady
 
 #: eccentricity ratio of the journal cases
 EPS = 0.6
@@ -60,7 +60,7 @@ def sommerfeld_case(n: int, delta: float = 0.0, eps: float = EPS, mu: float = 0.
                     R: float = 0.05, C: float = 1e-4) -> SommerfeldResult:
     """Infinitely long bearing: periodic ``x = R theta`` with ``n`` cells, one axial cell between two
     symmetry planes; ``p(0) = 0`` imposed by a prescribed cell centred on ``theta = 0``. With
-    ``delta > 0`` the cells are stretched (:func:`~transient.film.grid.stretched_edges`, finest at
+    ``delta > 0`` the cells are stretched (:func:`~transient.fv.grid.stretched_edges`, finest at
     ``theta = pi``, the minimum film), shifted so that the first centre is still at ``theta = 0``.
     Film ``h = C (1 + eps cos theta)``, ``k = h^3/(12 mu)``, Couette ``U h / 2``; force over ``L = 1``."""
     if delta:
@@ -104,7 +104,7 @@ def short_bearing_case(L_over_D: float, nt: int = 240, nz: int = 160, eps: float
                        U: float = 3.0, R: float = 0.05, C: float = 1e-4) -> ShortBearingResult:
     """Full 2 pi film (negative pressures kept) of a bearing of length ``L = L_over_D * 2R``: periodic
     ``x = R theta`` (``nt`` cells, centred on theta = 0), ``z`` in ``[-L/2, L/2]`` (``nz`` cells) with
-    ambient ``P = 0`` at both ends. Compared with :func:`~transient.film.reference.short_bearing_force`."""
+    ambient ``P = 0`` at both ends. Compared with :func:`~transient.verification.reference.short_bearing_force`."""
     L = L_over_D * 2 * R
     x = Axis.uniform(nt, 2 * np.pi * R, centred=True, periodic=True, name="x")
     z = Axis.uniform(nz, L, start=-L / 2, name="z")  # ambient (P = 0) at both ends
@@ -139,7 +139,7 @@ def squeeze_plate_case(ratio: float, n: int = 64, delta: float = 0.0, a: float =
     ``n`` cells across ``a`` and ``n * ratio`` along ``b`` (``ratio`` must make that an integer). With
     ``delta > 0`` both axes are stretched (x finest at its lower edge, z finest at a quarter of its
     length). The steady solve has source ``A_i dh/dt``; the load is ``sum p_i A_i`` against
-    :func:`~transient.film.reference.squeeze_rect_load`."""
+    :func:`~transient.verification.reference.squeeze_rect_load`."""
     nz = n * ratio
     if int(nz) != nz:
         raise ValueError(f"n * ratio must be an integer, got n={n!r}, ratio={ratio!r}")

@@ -5,9 +5,9 @@ race of a thrust ball bearing from ball to ball:
 
 1. Ball n meets an inlet film ``h_in^n`` (``h_in^1 = h_inf``, the ambient film). The inlet meniscus
    sits where the dry gap outside the Hertz ellipse equals it, ``g(m b) = h_in`` (Newton–Raphson,
-   elastic displacement included; :func:`transient.film.hertz.meniscus_position`).
+   elastic displacement included; :func:`transient.physics.hertz.meniscus_position`).
 2. Hamrock–Dowson: fully flooded central film ``H_F``, critical meniscus ``m_c``, starved film
-   ``H_S = H_F ((m-1)/(m_c-1))^0.29`` for ``m < m_c`` (:mod:`transient.film.ehl_formulas`).
+   ``H_S = H_F ((m-1)/(m_c-1))^0.29`` for ``m < m_c`` (:mod:`transient.physics.film_formulas`).
 3. Between balls the depleted track levels under surface tension (Chiu 1974); the paper's recursion
    is ``h_in^n = h_in^{n-1} - Delta zeta``.
 
@@ -15,7 +15,7 @@ Here step 3 is a transient on the oil layer ``h(x, t)`` across the track: each b
 event that leaves the race its share ``h_c/2`` of the central film over the depression half width
 ``a'`` (the Hertz semi-axis across the track, the paper's ``a_x``) and moves the displaced oil into
 side ridges (fraction ``ridge_fraction``; the rest is carried away by the ball); the nonlinear
-thin-film equation (:mod:`transient.film.thin_film`) is then integrated by the facade (CVODE by
+thin-film equation (:mod:`transient.models.ball.levelling`) is then integrated by the facade (CVODE by
 default) over the time between two balls ``t_b = 4 pi / (Z omega)`` (cage at half the shaft speed,
 90 deg contact angle). The next inlet film is the film on the track centreline just before the next
 ball. ``replenishment="chiu"`` propagates the same events with Chiu's linear Stokes-layer kernel
@@ -37,11 +37,11 @@ from dataclasses import dataclass, field, replace
 
 import numpy as np
 
-from transient.film import ehl_formulas as hd
-from transient.film.hertz import HertzContact, hertz_contact, meniscus_position, reduced_modulus
-from transient.film.thin_film import LevellingGrid, chiu_rate
-from transient.integrate import solve
-from transient.validation import check_range
+from transient.physics import film_formulas as hd
+from transient.physics.hertz import HertzContact, hertz_contact, meniscus_position, reduced_modulus
+from transient.models.ball.levelling import LevellingGrid, chiu_rate
+from transient.solvers.integrate import solve
+from transient.checks import check_range
 
 FLOODED, STARVED, PARCHED = "fully flooded", "starved", "parched"
 REPLENISHMENT = ("thin_film", "chiu", "chiu_thin")
@@ -207,7 +207,7 @@ class ThrustBallBearing:
         n_passes : maximum number of ball passes over the same point of the race.
         replenishment : ``"thin_film"`` (nonlinear levelling, integrated by ``method``), ``"chiu"``
             (Chiu's linear kernel) or ``"chiu_thin"`` (its thin-film long-wave limit).
-        method, rtol, atol, dt, linear_solver : passed to :func:`transient.integrate.solve`
+        method, rtol, atol, dt, linear_solver : passed to :func:`transient.solvers.integrate.solve`
             (atol in units of ``h_inf``; dt in units of the levelling time, for ``rk4``).
         n_cells : cells across the half track ``[0, reservoir_distance]``.
         reservoir_distance : where the undisturbed ambient film is [m] (default: the ball radius).
@@ -216,7 +216,7 @@ class ThrustBallBearing:
         ridge_width : width of each side ridge [m] (default ``a'``).
         precursor_film : lower bound of the film the ball leaves on the race [m].
         mobility_film : ``b`` [m] of the regularised mobility ``h^3 + b^3`` of the levelling
-            (default ``h_inf / 10``; see :class:`transient.film.thin_film.LevellingGrid`).
+            (default ``h_inf / 10``; see :class:`transient.models.ball.levelling.LevellingGrid`).
         periodic_tol : relative change of ``h_inf`` over 3 passes that counts as periodic.
         """
         if replenishment not in REPLENISHMENT:

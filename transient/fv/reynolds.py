@@ -38,8 +38,8 @@ from typing import NamedTuple
 import numpy as np
 from numba import njit
 
-from transient.film.grid import Grid2D
-from transient.film.stencil import CENTRE, EAST, NORTH, Stencil
+from transient.fv.grid import Grid2D
+from transient.fv.stencil import CENTRE, EAST, NORTH, Stencil
 
 SIDES = ("x-", "x+", "z-", "z+")
 

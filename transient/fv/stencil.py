@@ -19,7 +19,7 @@ from __future__ import annotations
 import numpy as np
 import scipy.sparse as sp
 
-from transient.film.grid import Grid2D
+from transient.fv.grid import Grid2D
 
 # column order of Stencil.pos
 CENTRE, WEST, EAST, SOUTH, NORTH = range(5)

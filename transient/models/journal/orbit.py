@@ -1,7 +1,7 @@
 """Unbalanced rigid rotor on a journal bearing with the Elrod film, in the time domain (seed 003).
 
 :class:`JournalOrbit` assembles the film + rotor method-of-lines system of
-:mod:`transient.models.journal_film` and integrates it through :func:`transient.integrate.solve`:
+:mod:`transient.models.journal.kernels` and integrates it through :func:`transient.solvers.integrate.solve`:
 
 * ``"cvode"``, ``"bdf"``, ``"radau"``, ``"lsoda"`` -- the ODE form ``y' = f(tau, y)`` with the analytic
   sparse arrow Jacobian (LSODA gets it dense: scipy's limitation);
@@ -27,11 +27,11 @@ from dataclasses import dataclass, field
 import numpy as np
 import scipy.sparse.linalg as spla
 
-from transient.integrate import Problem, Stats, solve
-from transient.models.journal import JournalBearing
-from transient.models.journal_film import (N_ROTOR, dae_jacobian, dae_residual, film_force, ode_jacobian,
+from transient.solvers.integrate import Problem, Stats, solve
+from transient.models.journal.bearing import JournalBearing
+from transient.models.journal.kernels import (N_ROTOR, dae_jacobian, dae_residual, film_force, ode_jacobian,
                                            ode_rhs)
-from transient.validation import check_positive, check_range
+from transient.checks import check_positive, check_range
 
 RECORDABLE = ("force", "pressure", "film_content", "min_film", "mass", "outflow")
 
@@ -250,7 +250,7 @@ class JournalOrbit:
         """Per-state absolute tolerance for a user ``atol`` on theta, p / p0 and the rotor states.
 
         A cell's unknown is ``u = p / p0`` in the full film but ``(theta - 1) / r`` in the cavitated zone
-        (:mod:`transient.film.cavitation`, ``r`` = content width / pressure width of the switch), so the
+        (:mod:`transient.physics.cavitation`, ``r`` = content width / pressure width of the switch), so the
         cells get ``atol min(1, 1 / r)``: neither the content nor the pressure is held more loosely than
         ``atol``."""
         atol = check_positive("atol", atol, "-")
