@@ -4,7 +4,8 @@ SI units at the API. See docs/architecture.md for how the layers fit together.
 
 Public API (re-exported here):
 
-* integration: :func:`solve`, :class:`Problem`, :class:`Result`, :class:`Stats`
+* integration: :func:`solve`, :class:`Problem`, :class:`Solution`, :class:`Stats`
+* results: :class:`Result` (the base of every result: units, save/load, summary), :func:`load_result`
 * journal bearing (seed 003): :class:`JournalBearing`, :class:`Groove`, :class:`JournalOrbit`;
   bearing noise: :func:`bearing_noise`, :func:`a_weighting`
 * thrust ball bearing starvation (seed 002): :class:`ThrustBallBearing`
@@ -26,12 +27,13 @@ from transient.models.journal import Groove, JournalBearing, JournalOrbit
 from transient.models.pad import ThrustPad
 from transient.physics.asperity import AsperityContact, DiscreteDensity, greenwood_tripp, steel_asperity_contact
 from transient.physics.flow_factors import contact_factor, pressure_flow_factors, shear_flow_factor
-from transient.solvers.integrate import Problem, Result, Stats, solve
+from transient.results import Result, load_result
+from transient.solvers.integrate import Problem, Solution, Stats, solve
 from transient.surfaces.roughness import RoughSurface
 
 __all__ = [
     "AsperityContact", "DiscreteDensity", "Groove", "JournalBearing", "JournalOrbit", "Problem", "Result",
-    "RoughSurface", "Stats", "ThrustBallBearing", "ThrustPad", "a_weighting", "bearing_noise", "contact_factor",
-    "greenwood_tripp", "pressure_flow_factors", "shear_flow_factor", "solve", "steel_asperity_contact",
+    "RoughSurface", "Solution", "Stats", "ThrustBallBearing", "ThrustPad", "a_weighting", "bearing_noise", "contact_factor",
+    "greenwood_tripp", "load_result", "pressure_flow_factors", "shear_flow_factor", "solve", "steel_asperity_contact",
 ]
 __version__ = "0.1.0"

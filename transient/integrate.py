@@ -1,4 +1,5 @@
 """``transient.integrate`` is a documented path of the integrator facade: it lives in
 :mod:`transient.solvers.integrate`."""
 
-from transient.solvers.integrate import METHODS, Problem, Result, Stats, solve  # noqa: F401
+from transient.results import Result  # noqa: F401
+from transient.solvers.integrate import METHODS, Problem, Solution, Stats, solve  # noqa: F401

@@ -2,7 +2,7 @@
 
 A model hands :func:`solve` a :class:`Problem` (state size, initial state, right-hand side
 ``y' = f(t, y)`` and/or residual ``F(t, y, y') = 0``, the sparse Jacobian pattern and numba fill
-routines, algebraic indices, events) and gets back one :class:`Result` whatever the method.
+routines, algebraic indices, events) and gets back one :class:`Solution` whatever the method.
 
 * ``"cvode"`` / ``"ida"`` -- scikit-sundae (SUNDIALS 7), BDF with a sparse direct solver
   (SuperLU_MT) fed by the analytic Jacobian in the fixed CSC pattern order, or band / dense with
@@ -28,6 +28,8 @@ import numpy as np
 import scipy.integrate as si
 import scipy.sparse as sp
 from scipy.optimize import brentq
+
+from transient.results import Result, record_type, result_type
 
 METHODS = ("cvode", "ida", "bdf", "radau", "lsoda", "rk4")
 
@@ -100,6 +102,7 @@ class Problem:
         return self.algebraic.size > 0
 
 
+@record_type
 @dataclass
 class Stats:
     """Solver statistics, counted by the facade's own wrappers so they mean the same for every method.
@@ -122,9 +125,10 @@ class Stats:
         return self.callback_time / self.wall_time if self.wall_time > 0 else 0.0
 
 
-@dataclass
-class Result:
-    """One result type for all methods. ``y[k]`` is the state at ``t[k]`` (rows = output times)."""
+@result_type
+class Solution(Result):
+    """What :func:`solve` returns, for every method. ``y[k]`` is the state at ``t[k]`` (rows = output times;
+    ``t`` in the problem's own time unit)."""
 
     t: np.ndarray
     y: np.ndarray | None
@@ -198,9 +202,9 @@ class _Output:
             self.observer(self.t_eval[self.k], y)
         self.k += 1
 
-    def result(self, **kw) -> Result:
+    def result(self, **kw) -> Solution:
         k = self.k
-        return Result(t=self.t_eval[:k].copy(), y=None if self.y is None else self.y[:k],
+        return Solution(t=self.t_eval[:k].copy(), y=None if self.y is None else self.y[:k],
                       yp=None if self.yp is None else self.yp[:k], **kw)
 
 
@@ -241,7 +245,7 @@ class _Events:
                 stop = True
         return stop
 
-    def fill(self, res: Result):
+    def fill(self, res: Solution):
         if self.t:
             res.t_events = np.array(self.t)
             res.y_events = np.array(self.y)
@@ -251,7 +255,7 @@ class _Events:
 def solve(problem: Problem, t_eval, method: str = "cvode", rtol: float = 1e-6, atol=1e-8, *,
           dt: float | None = None, max_step: float = 0.0, first_step: float = 0.0,
           max_steps: int = 1_000_000, linear_solver: str = "auto", store: bool = True,
-          observer: Callable | None = None, options: dict | None = None) -> Result:
+          observer: Callable | None = None, options: dict | None = None) -> Solution:
     """Integrate ``problem`` and return the state at the times ``t_eval`` (the first is the start).
 
     Parameters
@@ -263,7 +267,7 @@ def solve(problem: Problem, t_eval, method: str = "cvode", rtol: float = 1e-6, a
     max_steps : upper bound on the number of steps in the whole run.
     linear_solver : ``"auto"`` (sparse if the problem has a Jacobian pattern, band if it declares a
         band, dense otherwise), ``"sparse"``, ``"band"`` or ``"dense"`` (SUNDIALS methods).
-    store : keep the outputs in ``Result.y`` (False: only pass them to ``observer``).
+    store : keep the outputs in ``Solution.y`` (False: only pass them to ``observer``).
     observer : ``observer(t, y)`` called at every output time, in order.
     options : extra keyword options for the SUNDIALS solver (e.g. ``max_nonlin_iters``, ``max_order``).
     """

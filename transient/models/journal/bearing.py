@@ -17,6 +17,7 @@ from scipy.optimize import brentq
 from transient.physics.cavitation import softplus
 from transient.fv.grid import Axis, Grid2D
 from transient.fv.reynolds import ReynoldsOperator
+from transient.solvers.newton import NewtonError, newton
 from transient.models.journal.kernels import N_ROTOR, FilmWork, film_force, film_jacobian, film_residual
 from transient.checks import check_positive, check_range
 
@@ -282,37 +283,30 @@ class Film:
     def solve(self, X, Y, VX=0.0, VY=0.0, u0=None, tol=1e-10, max_iter=400):
         """Steady film G(u) = 0 for a prescribed journal state (X, Y, VX, VY), returns (u, iterations).
 
-        Pseudo-transient continuation (Kelley & Keyes 1998): Newton steps on the backward-Euler system
-        ``A H (theta(u) - theta(u_old))/dtau + G(u) = 0`` whose pseudo-step grows as the residual falls
-        (``dtau <- dtau ||G_old|| / ||G_new||``), ending with plain Newton (dtau = inf). Every iterate is a
-        state of the film's own dynamics, so the solve cannot wander off into unphysical branches.
+        Pseudo-transient continuation (:func:`~transient.solvers.newton.newton`): Newton steps on the
+        backward-Euler system ``A H (theta(u) - theta(u_old))/dtau + G(u) = 0`` whose pseudo-step grows as
+        the residual falls, ending with plain Newton. Every iterate is a state of the film's own dynamics,
+        so the solve cannot wander off into unphysical branches. Converged when the Newton step and the
+        residual are below ``tol`` and 1e-8 of ``max(1, |u|)``.
         """
         n = self.n
         u = np.where(self.op.free, 0.0, self.u_supply) if u0 is None else np.array(u0, dtype=float)
         u[~self.op.free] = self.u_supply
         data = np.empty(self.op.nnz)
-        r = self.residual(u, X, Y, VX, VY)
-        r_norm = float(np.linalg.norm(r))
-        dtau = 1.0 if u0 is None else 1e3
-        for it in range(1, max_iter + 1):
-            rate = 0.0 if dtau > 1e12 else 1.0 / dtau
-            J = self.op.matrix(self.jacobian_data(u, X, Y, VX, VY, rate=rate, data=data))[:n, :n].tocsc()
-            du = -spla.splu(J).solve(r)  # the pseudo-time term vanishes at the current iterate
-            u_new = u + du
-            r_new = self.residual(u_new, X, Y, VX, VY)
-            rn = float(np.linalg.norm(r_new))
-            if not np.isfinite(rn) or (rate == 0.0 and rn > r_norm):
-                dtau = max(dtau * 0.1, 1e-3)  # reject: back to smaller pseudo-steps
-                continue
-            step = float(np.max(np.abs(du)))
-            u, r = u_new, r_new
-            dtau = min(dtau * max(r_norm / max(rn, 1e-300), 0.5) * 2.0, 1e15)
-            r_norm = rn
-            scale = max(1.0, float(np.max(np.abs(u))))
-            if rate == 0.0 and step <= tol * scale and float(np.max(np.abs(r))) <= 1e-8 * scale:
-                return u, it
-        raise RuntimeError(f"film solve did not converge in {max_iter} iterations at X={X:.4g}, Y={Y:.4g}: "
-                           f"residual {float(np.max(np.abs(r))):.3e}, pseudo-step {dtau:.2e}")
+        G = lambda v: self.residual(v, X, Y, VX, VY)  # noqa: E731
+        J = lambda v, rate: self.op.matrix(self.jacobian_data(v, X, Y, VX, VY, rate=rate, data=data))[:n, :n]  # noqa: E731
+
+        def converged(v, r, dv):
+            scale = max(1.0, float(np.max(np.abs(v))))
+            return float(np.max(np.abs(dv))) <= tol * scale and float(np.max(np.abs(r))) <= 1e-8 * scale
+
+        try:
+            res = newton(G, J, u, pseudo_time=1.0 if u0 is None else 1e3, max_iter=max_iter, converged=converged,
+                         name="film solve")
+        except NewtonError as e:
+            raise RuntimeError(f"film solve did not converge in {max_iter} iterations at X={X:.4g}, Y={Y:.4g}: "
+                               f"residual {e.result.residual_norm:.3e}") from None
+        return res.x, res.iterations
 
     def force(self, u, X, Y):
         """Dimensionless film force (Fbar_x, Fbar_y) at the state u (the fields are evaluated first)."""

@@ -25,9 +25,9 @@ import time
 from dataclasses import dataclass, field
 
 import numpy as np
-import scipy.sparse.linalg as spla
 
 from transient.solvers.integrate import Problem, Stats, solve
+from transient.solvers.newton import Chord, NewtonError, newton
 from transient.models.journal.bearing import JournalBearing
 from transient.models.journal.kernels import (N_ROTOR, dae_jacobian, dae_residual, film_force, ode_jacobian,
                                            ode_rhs)
@@ -327,8 +327,7 @@ class FilmStageSolver:
         self.n = self.film.n
         self.criterion = criterion
         self.max_iter = max_iter
-        self.lu = None
-        self.n_factorisations = 0
+        self.chord = Chord()
         self.n_iterations = 0
         self.t_hist = None
         self.u_hist = None
@@ -372,50 +371,34 @@ class FilmStageSolver:
                        algebraic_solve=algebraic_solve, step_begin=step_begin, name="journal orbit (RK4 + film)")
 
     def _solve(self, t, y):
-        """Film at stage time t for the stage's rotor state y (chord Newton with safeguards)."""
+        """Film at stage time t for the stage's rotor state y: chord Newton (one factorisation kept across
+        iterations, stages and steps while it contracts) to the paper's criterion on theta."""
         n, f = self.n, self.film
         X, Y, VX, VY = y[n], y[n + 1], y[n + 2], y[n + 3]
         rate = 1.0 / (t - self.t_hist)
-        G = lambda v: f.residual(v, X, Y, VX, VY, rate=rate, C_ref=self.theta_hist)
-        u = self.u_hist.copy()
-        r = G(u).copy()
-        theta = f.w.C.copy()
-        r2 = float(r @ r)
-        fresh = False
-        for it in range(self.max_iter):
-            if self.lu is None:
-                self._factorise(u, X, Y, VX, VY, rate)
-                fresh = True
-            du = -self.lu.solve(r)
-            lam = 1.0
-            while True:
-                r_new = G(u + lam * du)
-                r2_new = float(r_new @ r_new)
-                if r2_new <= (1.0 - 1e-4 * lam) * r2 or r2_new == 0.0 or lam < 1e-4:
-                    break
-                if not fresh:  # an old factorisation no longer gives descent: refresh it here
-                    self._factorise(u, X, Y, VX, VY, rate)
-                    fresh = True
-                    du = -self.lu.solve(r)
-                    continue
-                lam *= 0.5  # Newton step too long across the switch: backtrack
-            u += lam * du
-            if not fresh and r2_new > 0.25 * r2:  # chord contracting slower than 2x per iteration: refresh
-                self.lu = None
-            r, r2 = r_new.copy(), r2_new
-            fresh = False
-            self.n_iterations += 1
-            theta_new = f.w.C.copy()
-            if np.sum(np.abs(theta_new - theta)) < self.criterion * np.sum(theta_new):
-                return u  # paper eq. (6); the scratch fields now hold this film's P for the rotor
-            theta = theta_new
-        raise RuntimeError(f"RK4 film iteration did not reach the criterion {self.criterion} in {self.max_iter} "
-                           f"iterations at tau = {t:.6g}")
+        G = lambda v: f.residual(v, X, Y, VX, VY, rate=rate, C_ref=self.theta_hist)  # noqa: E731
+        J = lambda v, shift: f.op.matrix(f.jacobian_data(v, X, Y, VX, VY, rate=rate, data=self.data))  # noqa: E731
+        G(self.u_hist)
+        theta = [f.w.C.copy()]
 
-    def _factorise(self, u, X, Y, VX, VY, rate):
-        f = self.film
-        self.lu = spla.splu(f.op.matrix(f.jacobian_data(u, X, Y, VX, VY, rate=rate, data=self.data)).tocsc())
-        self.n_factorisations += 1
+        def converged(v, r, dv):  # paper eq. (6); the scratch fields hold the last iterate's film
+            new = f.w.C.copy()
+            done = np.sum(np.abs(new - theta[0])) < self.criterion * np.sum(new)
+            theta[0] = new
+            return done
+
+        try:
+            res = newton(G, J, self.u_hist, chord=self.chord, converged=converged, max_iter=self.max_iter,
+                         name="RK4 film iteration")
+        except NewtonError:
+            raise RuntimeError(f"RK4 film iteration did not reach the criterion {self.criterion} in {self.max_iter} "
+                               f"iterations at tau = {t:.6g}") from None
+        self.n_iterations += res.iterations
+        return res.x
+
+    @property
+    def n_factorisations(self) -> int:
+        return self.chord.n_factorisations
 
 
 class _Recorder:

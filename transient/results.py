@@ -1,0 +1,288 @@
+"""One base for every result: named series with units, status and message, the final state with its time,
+save/load in an open format without pickle, a one-screen summary and a DataFrame view.
+
+A result type is a dataclass deriving from :class:`Result`, declared with :func:`result_type`. Units are declared per field with
+:func:`quantity` (``x: np.ndarray = quantity("m")``); fields without a unit are dimensionless or
+non-numeric. Every result answers ``success`` / ``message`` (a failed or stopped run says why) and, where
+it is a run that can be continued, ``final_state`` and ``final_time`` [s].
+
+Files: :meth:`Result.save` writes one ``.npz`` (a zip of ``.npy`` arrays, readable by any numpy without
+this package) holding every array field and a JSON document ``__meta__`` with the class, the scalar fields,
+the units and the package version; :func:`load_result` reads it back with ``allow_pickle=False``, so a
+crafted file cannot run code, and rebuilds only classes registered here (subclasses of :class:`Result`).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import json
+import math
+import os
+import tempfile
+from pathlib import Path
+from typing import Any, ClassVar
+
+import numpy as np
+
+FORMAT = "transient-result/1"
+_REGISTRY: dict[str, type] = {}
+
+
+def quantity(unit: str, default: Any = dataclasses.MISSING, *, repr: bool = True, default_factory=dataclasses.MISSING):
+    """A dataclass field carrying its unit (``field.metadata["unit"]``)."""
+    kw = dict(metadata={"unit": unit}, repr=repr)
+    if default is not dataclasses.MISSING:
+        kw["default"] = default
+    if default_factory is not dataclasses.MISSING:
+        kw["default_factory"] = default_factory
+    return dataclasses.field(**kw)
+
+
+def result_type(cls=None, /, **kw):
+    """``@result_type``: a dataclass that keeps :class:`Result`'s short repr and identity equality
+    (array fields make the generated ``__eq__`` ambiguous)."""
+    kw.setdefault("repr", False)
+    kw.setdefault("eq", False)
+    wrap = lambda c: dataclasses.dataclass(c, **kw)  # noqa: E731
+    return wrap if cls is None else wrap(cls)
+
+
+class ResultFileError(ValueError):
+    """A result file that cannot be read: truncated, corrupted, foreign or of an unknown type."""
+
+
+class Result:
+    """Base of the package's results (see the module docstring). Subclasses are dataclasses."""
+
+    #: name of the series indexing the rows of :meth:`to_dataframe` (None: no time axis)
+    time_axis: ClassVar[str | None] = "t"
+
+    def __init_subclass__(cls, **kw):
+        super().__init_subclass__(**kw)
+        _REGISTRY[cls.__name__] = cls
+
+    # status ---------------------------------------------------------------------------------------
+    @property
+    def ok(self) -> bool:
+        return bool(getattr(self, "success", True))
+
+    # units ----------------------------------------------------------------------------------------
+    @classmethod
+    def units(cls) -> dict[str, str]:
+        """Unit of every field that declares one."""
+        return {f.name: f.metadata["unit"] for f in dataclasses.fields(cls) if "unit" in f.metadata}
+
+    # summary / repr -------------------------------------------------------------------------------
+    def summary(self) -> dict:
+        """The scalar fields (numbers, strings, booleans, None) as a JSON-ready dict."""
+        out = {}
+        for f in dataclasses.fields(self):
+            v = getattr(self, f.name)
+            if _is_scalar(v):
+                out[f.name] = _plain(v)
+        return out
+
+    def __repr__(self) -> str:
+        units = self.units()
+        parts = []
+        for f in dataclasses.fields(self):
+            if not f.repr:
+                continue
+            v = getattr(self, f.name)
+            u = f" {units[f.name]}" if f.name in units and units[f.name] not in ("", "-") else ""
+            if isinstance(v, np.ndarray):
+                parts.append(f"{f.name}=<{v.dtype} {'x'.join(map(str, v.shape))}>{u}")
+            elif _is_scalar(v):
+                parts.append(f"{f.name}={_short(v)}{u}")
+            elif isinstance(v, dict):
+                parts.append(f"{f.name}={{{', '.join(map(str, v))}}}")
+            elif dataclasses.is_dataclass(v):
+                parts.append(f"{f.name}={type(v).__name__}(...)")
+            else:
+                parts.append(f"{f.name}=<{type(v).__name__}>")
+        return f"{type(self).__name__}(" + ", ".join(parts) + ")"
+
+    # tables ---------------------------------------------------------------------------------------
+    def to_dataframe(self):
+        """The series that share the time axis as a ``pandas.DataFrame`` (one row per output time;
+        an (n, k) series becomes k columns ``name_0 .. name_k-1``); units in ``df.attrs["units"]``."""
+        import pandas as pd
+
+        if self.time_axis is None:
+            raise TypeError(f"{type(self).__name__} has no time axis to tabulate")
+        t = np.asarray(getattr(self, self.time_axis))
+        units = self.units()
+        cols, col_units = {}, {}
+        for f in dataclasses.fields(self):
+            v = getattr(self, f.name)
+            if not isinstance(v, np.ndarray) or v.ndim == 0 or v.shape[0] != t.shape[0] or v.ndim > 2:
+                continue
+            if v.ndim == 1:
+                cols[f.name] = v
+                col_units[f.name] = units.get(f.name, "")
+            else:
+                for j in range(v.shape[1]):
+                    cols[f"{f.name}_{j}"] = v[:, j]
+                    col_units[f"{f.name}_{j}"] = units.get(f.name, "")
+        df = pd.DataFrame(cols)
+        df.attrs["units"] = col_units
+        return df
+
+    # files ----------------------------------------------------------------------------------------
+    def save(self, path) -> Path:
+        """Write the result to ``path`` (``.npz`` appended if missing), atomically; returns the path."""
+        path = Path(path)
+        if path.suffix != ".npz":
+            path = path.with_name(path.name + ".npz")
+        arrays: dict[str, np.ndarray] = {}
+        meta = {"format": FORMAT, "class": type(self).__name__, "version": _version(), "units": self.units(),
+                "fields": {}}
+        for f in dataclasses.fields(self):
+            meta["fields"][f.name] = _encode(getattr(self, f.name), f.name, arrays)
+        arrays["__meta__"] = np.array(json.dumps(meta, allow_nan=True))
+        path.parent.mkdir(parents=True, exist_ok=True)
+        fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
+        try:
+            with os.fdopen(fd, "wb") as fh:
+                np.savez(fh, **arrays)
+            os.replace(tmp, path)
+        except BaseException:
+            if os.path.exists(tmp):
+                os.remove(tmp)
+            raise
+        return path
+
+
+def load_result(path) -> Result:
+    """Read a result written by :meth:`Result.save` (no pickle; only this package's result types)."""
+    import transient  # noqa: F401  (registers every model's result types)
+
+    path = Path(path)
+    try:
+        with np.load(path, allow_pickle=False) as z:
+            data = {k: z[k] for k in z.files}
+    except FileNotFoundError:
+        raise
+    except Exception as e:  # zipfile / numpy errors on a truncated or foreign file
+        raise ResultFileError(f"{path}: not a readable result file ({type(e).__name__}: {e})") from None
+    if "__meta__" not in data:
+        raise ResultFileError(f"{path}: not a transient result file (no __meta__ entry)")
+    try:
+        meta = json.loads(str(data.pop("__meta__")))
+    except ValueError as e:
+        raise ResultFileError(f"{path}: corrupted metadata ({e})") from None
+    if meta.get("format") != FORMAT:
+        raise ResultFileError(f"{path}: unknown format {meta.get('format')!r} (expected {FORMAT})")
+    cls = _REGISTRY.get(meta.get("class", ""))
+    if cls is None:
+        raise ResultFileError(f"{path}: unknown result type {meta.get('class')!r}")
+    kwargs = {}
+    names = {f.name for f in dataclasses.fields(cls) if f.init}
+    for name, enc in meta["fields"].items():
+        if name in names:
+            kwargs[name] = _decode(enc, data, path)
+    obj = cls(**kwargs)
+    for f in dataclasses.fields(cls):  # non-init fields (derived at construction) are set as saved
+        if not f.init and f.name in meta["fields"]:
+            setattr(obj, f.name, _decode(meta["fields"][f.name], data, path))
+    return obj
+
+
+# --------------------------------------------------------------------------------------------------
+# encoding of field values: arrays go to the npz, everything else into the JSON metadata
+# --------------------------------------------------------------------------------------------------
+
+def _encode(v, key, arrays):
+    if isinstance(v, np.ndarray):
+        if v.dtype == object:
+            raise TypeError(f"field {key!r}: object arrays cannot be saved without pickle")
+        arrays[key] = v
+        return {"array": key}
+    if isinstance(v, Result) and dataclasses.is_dataclass(v):
+        return {"result": type(v).__name__,
+                "fields": {f.name: _encode(getattr(v, f.name), f"{key}.{f.name}", arrays)
+                           for f in dataclasses.fields(v)}}
+    if dataclasses.is_dataclass(v) and not isinstance(v, type):
+        return {"record": type(v).__name__,
+                "fields": {f.name: _encode(getattr(v, f.name), f"{key}.{f.name}", arrays)
+                           for f in dataclasses.fields(v)}}
+    if isinstance(v, dict):
+        if not all(isinstance(k, str) for k in v):
+            raise TypeError(f"field {key!r}: dictionary keys must be strings to be saved")
+        return {"dict": {k: _encode(x, f"{key}.{k}", arrays) for k, x in v.items()}}
+    if isinstance(v, (list, tuple)):
+        if all(_is_scalar(x) for x in v):
+            return {"list" if isinstance(v, list) else "tuple": [_plain(x) for x in v]}
+        return {("list" if isinstance(v, list) else "tuple") + "_of": [_encode(x, f"{key}.{i}", arrays)
+                                                                      for i, x in enumerate(v)]}
+    if _is_scalar(v):
+        return {"value": _plain(v)}
+    raise TypeError(f"field {key!r}: cannot save a {type(v).__name__}")
+
+
+def _decode(enc, arrays, path):
+    if "array" in enc:
+        if enc["array"] not in arrays:
+            raise ResultFileError(f"{path}: array {enc['array']!r} missing")
+        return arrays[enc["array"]]
+    if "value" in enc:
+        return enc["value"]
+    if "list" in enc:
+        return list(enc["list"])
+    if "tuple" in enc:
+        return tuple(enc["tuple"])
+    if "list_of" in enc:
+        return [_decode(x, arrays, path) for x in enc["list_of"]]
+    if "tuple_of" in enc:
+        return tuple(_decode(x, arrays, path) for x in enc["tuple_of"])
+    if "dict" in enc:
+        return {k: _decode(x, arrays, path) for k, x in enc["dict"].items()}
+    if "result" in enc or "record" in enc:
+        name = enc.get("result") or enc.get("record")
+        cls = _REGISTRY.get(name) or _RECORDS.get(name)
+        if cls is None:
+            raise ResultFileError(f"{path}: unknown record type {name!r}")
+        fields = {k: _decode(x, arrays, path) for k, x in enc["fields"].items()}
+        init = {f.name for f in dataclasses.fields(cls) if f.init}
+        obj = cls(**{k: v for k, v in fields.items() if k in init})
+        for k, v in fields.items():
+            if k not in init:
+                setattr(obj, k, v)
+        return obj
+    raise ResultFileError(f"{path}: unknown field encoding {sorted(enc)}")
+
+
+#: plain dataclasses (not Results) that results may contain, e.g. the integrator's Stats
+_RECORDS: dict[str, type] = {}
+
+
+def record_type(cls):
+    """Register a plain dataclass that results may hold as a field, so it loads back (decorator)."""
+    _RECORDS[cls.__name__] = cls
+    return cls
+
+
+def _is_scalar(v) -> bool:
+    return v is None or isinstance(v, (bool, int, float, str, np.integer, np.floating, np.bool_))
+
+
+def _plain(v):
+    if isinstance(v, np.bool_):
+        return bool(v)
+    if isinstance(v, np.integer):
+        return int(v)
+    if isinstance(v, np.floating):
+        return float(v)
+    return v
+
+
+def _short(v):
+    if isinstance(v, (float, np.floating)) and math.isfinite(v):
+        return f"{v:.6g}"
+    return repr(_plain(v))
+
+
+def _version() -> str:
+    from transient import __version__
+
+    return __version__
