@@ -43,8 +43,11 @@ class Problem:
     * ``rhs(t, y, out)``: ``out = f(t, y)`` for ``y' = f(t, y)``. For a semi-explicit DAE the entries
       of ``out`` at the algebraic indices are ignored (used by ``rk4`` only).
     * ``residual(t, y, yp, out)``: ``out = F(t, y, y')`` (IDA). If absent, IDA uses ``y' - f(t, y)``.
-    * ``jac_rhs(t, y, data)``: the CSC data array of ``df/dy`` in the order of ``jac_pattern``.
-    * ``jac_residual(t, y, yp, cj, data)``: CSC data of ``dF/dy + cj dF/dy'`` in pattern order.
+    * ``jac_rhs(t, y, data)``: the CSC data array of ``df/dy`` in the order of ``jac_pattern``; with no
+      ``jac_pattern`` the Jacobian is dense and ``data`` is the (n, n) array to fill (small or dense
+      problems, e.g. elastic contact).
+    * ``jac_residual(t, y, yp, cj, data)``: ``dF/dy + cj dF/dy'``, CSC data in pattern order, or the
+      (n, n) array when there is no pattern.
     * ``events(t, y, out)``: event functions; a zero crossing is an event.
     * ``algebraic_solve(t, y) -> y``: for ``rk4`` on a DAE, returns ``y`` with its algebraic part
       solved for the given differential part (the per-stage inner solve).
@@ -333,7 +336,14 @@ def _ida_from_rhs(problem: Problem):
         res[:] = yp - f
 
     pattern = jac = None
-    if problem.jac_pattern is not None:
+    if problem.jac_pattern is None and problem.jac_rhs is not None:  # dense analytic Jacobian
+        jac_rhs = problem.jac_rhs
+
+        def jac(t, y, yp, cj, J):
+            jac_rhs(t, y, J)
+            J *= -1.0
+            J[np.diag_indices(n)] += cj
+    elif problem.jac_pattern is not None:
         pattern, p_map, diag = _with_diagonal(problem.jac_pattern)
         if problem.jac_rhs is not None:
             tmp = np.empty(problem.jac_pattern.nnz)
@@ -359,8 +369,8 @@ def _linear_solver_options(problem, pattern, have_jac, linear_solver):
         if problem.band is None:
             raise ValueError("linear_solver='band' needs problem.band = (lower, upper)")
         return {"linsolver": "band", "lband": int(problem.band[0]), "uband": int(problem.band[1])}, False
-    if kind == "dense":
-        return {"linsolver": "dense"}, False
+    if kind == "dense":  # an analytic Jacobian only if the problem's is dense (no pattern)
+        return {"linsolver": "dense"}, have_jac and pattern is None
     raise ValueError(f"linear_solver must be 'auto', 'sparse', 'band' or 'dense', got {linear_solver!r}")
 
 
@@ -455,7 +465,16 @@ def _solve_sundials(problem, method, t_eval, out, counter, events, rtol, atol, m
 
 def _scipy_jacobian(problem, counter, dense):
     if problem.jac_pattern is None:
-        return {}
+        if problem.jac_rhs is None:
+            return {}
+        jd = counter.timed(problem.jac_rhs, "jac")
+        full = np.empty((problem.n, problem.n))
+
+        def jac_dense(t, y):
+            jd(t, y, full)
+            return full.copy()
+
+        return {"jac": jac_dense}
     pat = problem.jac_pattern
     if problem.jac_rhs is None:
         return {} if dense else {"jac_sparsity": pat}
