@@ -3,7 +3,7 @@
 import math
 
 from transient.bench import journal
-from transient.cli import _write_bench
+from transient.bench import write_section as _write_bench
 
 
 def test_bench_journal_quick_structure_and_convergence(tmp_path):

@@ -1,7 +1,7 @@
 """Smoke test of the film operator benchmark (tiny grids) and of `transient bench` writing docs."""
 
 from transient.bench.film import markdown, run
-from transient.cli import _write_bench
+from transient.bench import write_section as _write_bench
 
 
 def test_bench_film_rows_and_table(tmp_path):

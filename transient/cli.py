@@ -1,10 +1,15 @@
 """The ``transient`` command.
 
-    transient run SCENARIO.py [args ...]   run a scenario script (figures and files go where it says)
+    transient run SCENARIO.py [args ...]   run a scenario script (``--help`` lists its options; every scenario
+                                           takes ``--quick`` and ``--out DIR``)
     transient bench NAME [--out DIR] [--quick]
-                                           run a benchmark, write its table/plot under DIR (docs/);
-                                           --quick: a fast smoke version (where the benchmark has one)
+                                           run a benchmark; its section, figures and raw numbers go to DIR
+                                           (default ./bench_results; ``--out docs`` updates the committed tables)
+    transient bench --list                 the benchmarks and what each measures
     transient --version
+
+Mistakes (a missing file, an unknown benchmark, an out-of-range parameter) print one line naming what is
+wrong; Ctrl-C stops with one line (long runs say where their checkpoint is).
 """
 
 from __future__ import annotations
@@ -17,88 +22,61 @@ from pathlib import Path
 import transient
 
 
-def _bench_film(out: Path, quick: bool = False) -> str:
-    from transient.bench import callbacks, film
-    rows = film.run()
-    text = "## Film operator: residual and Jacobian evaluation time against grid size\n\n" + film.markdown(rows)
-    text += ("\n\n## Integrator callback overhead\n\n"
-             "Wall time per right-hand-side call of a CVODE run (linear decay, 1000 states, sparse diagonal "
-             "Jacobian): the numba kernel alone, scikit-sundae called directly, and through `transient.solve`.\n\n"
-             + callbacks.markdown(callbacks.run()))
-    return text
-
-
-def _bench_journal(out: Path, quick: bool = False) -> str:
-    from transient.bench import journal
-    result = journal.run(quick=quick)
-    journal.write(result, out)
-    return "## Journal orbit (seed 003): work-precision at 6000 rpm\n\n" + journal.markdown(result)  # has the figure
-
-
-def _bench_ball(out: Path, quick: bool = False) -> str:
-    from transient.bench import ball
-    res = ball.run(out_dir=str(out))
-    return ("## Thrust ball bearing: 200-ball-pass sequence, work-precision (seed 002)\n"
-            + res["markdown"] + "\n\n![work-precision](bench_ball.png)")
-
-
-def _bench_roughness(out: Path, quick: bool = False) -> str:
-    from transient.bench import roughness
-    return "## Rough-surface generation (seed 000)\n" + roughness.bench_surface()
-
-
-def _bench_pad(out: Path, quick: bool = False) -> str:
-    from transient.bench import thrust_pad
-    return thrust_pad.run()  # has its own section heading
-
-
-BENCHES = {"film": _bench_film, "journal": _bench_journal, "ball": _bench_ball, "roughness": _bench_roughness,
-           "pad": _bench_pad}
-
-
-def _write_bench(name: str, text: str, out: Path) -> Path:
-    """Write docs/bench/NAME.md and rebuild docs/benchmarks.md from all bench sections."""
-    sections = out / "bench"
-    sections.mkdir(parents=True, exist_ok=True)
-    path = sections / f"{name}.md"
-    path.write_text(f"<!-- written by `transient bench {name}`; do not edit by hand -->\n{text}\n")
-    parts = ["# Benchmarks\n",
-             "Every section below is written by `transient bench NAME` on this project's 2-core machine. "
-             "Ratios between methods measured in one run are the meaningful numbers; absolute seconds depend "
-             "on the machine.\n"]
-    for sec in sorted(sections.glob("*.md")):
-        parts.append(f"\n<!-- section: {sec.name} -->\n" + sec.read_text().split("\n", 1)[1])
-    (out / "benchmarks.md").write_text("\n".join(parts))
-    return path
-
-
-def main(argv: list[str] | None = None) -> int:
+def _parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(prog="transient", description=__doc__,
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--version", action="version", version=f"transient {transient.__version__}")
+    parser.add_argument("--traceback", action="store_true", help="show the full traceback of an error")
     sub = parser.add_subparsers(dest="command", required=True)
     p_run = sub.add_parser("run", help="run a scenario script")
     p_run.add_argument("scenario", help="path to a scenario .py file (see scenarios/)")
     p_run.add_argument("args", nargs=argparse.REMAINDER, help="arguments passed to the scenario")
-    p_bench = sub.add_parser("bench", help="run a benchmark and write its results under docs/")
-    p_bench.add_argument("name", choices=sorted(BENCHES))
-    p_bench.add_argument("--out", default="docs", help="output folder (default: docs)")
+    p_bench = sub.add_parser("bench", help="run a benchmark and write its section, figures and numbers")
+    p_bench.add_argument("name", nargs="?", help="benchmark name (see --list)")
+    p_bench.add_argument("--list", action="store_true", help="list the benchmarks")
+    p_bench.add_argument("--out", default="bench_results", help="output folder (default: ./bench_results)")
     p_bench.add_argument("--quick", action="store_true", help="fast smoke version (few settings)")
-    a = parser.parse_args(argv)
+    return parser
 
-    if a.command == "run":
-        path = Path(a.scenario)
-        if not path.is_file():
-            parser.error(f"scenario file not found: {path}")
-        sys.argv = [str(path), *a.args]
-        runpy.run_path(str(path), run_name="__main__")
-        return 0
-    out = Path(a.out)
-    text = BENCHES[a.name](out, quick=a.quick)
-    path = _write_bench(a.name, text, out)
-    print(text)
-    print(f"\nwritten: {path} and {out / 'benchmarks.md'}")
+
+def _run_scenario(path: Path, args: list[str]) -> int:
+    if not path.is_file():
+        raise FileNotFoundError(f"scenario file not found: {path}")
+    sys.argv = [str(path), *args]
+    runpy.run_path(str(path), run_name="__main__")
     return 0
+
+
+def _bench(a, parser) -> int:
+    from transient import bench
+
+    if a.list or not a.name:
+        import importlib
+
+        for n in bench.names():
+            print(f"{n:10s} {importlib.import_module(f'transient.bench.{n}').TITLE}")
+        return 0
+    text, path = bench.run(a.name, a.out, quick=a.quick)
+    print(text)
+    print(f"\nwritten: {path} and {Path(a.out) / 'benchmarks.md'}")
+    return 0
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = _parser()
+    a = parser.parse_args(argv)
+    try:
+        if a.command == "run":
+            return _run_scenario(Path(a.scenario), a.args)
+        return _bench(a, parser)
+    except KeyboardInterrupt:
+        print("transient: interrupted", file=sys.stderr)
+        return 130
+    except (ValueError, TypeError, FileNotFoundError, RuntimeError) as e:
+        if a.traceback:
+            raise
+        print(f"transient: error: {e}", file=sys.stderr)
+        return 2
 
 
 if __name__ == "__main__":

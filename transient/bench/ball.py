@@ -110,3 +110,13 @@ def run(out_dir: str = "docs", n_passes: int = 200, n_cells: int = 100, quick: b
     fig.savefig(os.path.join(out_dir, "bench_ball.png"), dpi=120)
     plt.close(fig)
     return {"rows": rows, "reference_wall": t_ref, "markdown": "\n".join(lines[2:])}
+
+
+TITLE = "ball-pass sequence work-precision: CVODE sparse/band, scipy BDF/LSODA, RK4"
+
+
+def main(out, quick: bool = False) -> str:
+    """``transient bench ball``."""
+    res = run(out_dir=str(out), quick=quick)
+    return ("## Thrust ball bearing: 200-ball-pass sequence, work-precision (seed 002)\n"
+            + res["markdown"] + "\n\n![work-precision](bench_ball.png)")

@@ -100,3 +100,18 @@ def markdown(rows) -> str:
                  f"median per call after JIT warm-up; {platform.processor() or platform.machine()}, "
                  f"numba, 1 thread.")
     return "\n".join(lines)
+
+
+TITLE = "film operator: residual and Jacobian time against grid size; integrator callback overhead"
+
+
+def main(out, quick: bool = False) -> str:
+    """``transient bench film``: the operator timings and the callback overhead as one section."""
+    from transient.bench import callbacks
+
+    rows = run(grids=((151, 21), (301, 41)) if quick else ((151, 21), (301, 41), (601, 81)))
+    return ("## Film operator: residual and Jacobian evaluation time against grid size\n\n" + markdown(rows)
+            + "\n\n## Integrator callback overhead\n\n"
+            "Wall time per right-hand-side call of a CVODE run (linear decay, 1000 states, sparse diagonal "
+            "Jacobian): the numba kernel alone, scikit-sundae called directly, and through `transient.solve`.\n\n"
+            + callbacks.markdown(callbacks.run()))

@@ -394,3 +394,13 @@ def write(result, out: Path):
     plot(result, out / "bench_journal.png")
     (out / "bench_journal.json").write_text(json.dumps(result, indent=1, default=float))
     return out / "bench_journal.png"
+
+
+TITLE = "journal orbit work-precision: CVODE, IDA, scipy BDF/LSODA, the paper's RK4"
+
+
+def main(out, quick: bool = False) -> str:
+    """``transient bench journal``: the work-precision run, its figure and raw numbers in ``out``."""
+    result = run(quick=quick)
+    write(result, out)
+    return "## Journal orbit (seed 003): work-precision at 6000 rpm\n\n" + markdown(result)

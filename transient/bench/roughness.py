@@ -1,6 +1,6 @@
-"""Timing of rough-surface generation: ``python -m transient.bench_roughness [out_dir]``.
+"""Timing of rough-surface generation: ``transient bench roughness``.
 
-Writes ``<out_dir>/bench_roughness.md``: FFT spectral synthesis of a 1024 x 1024 surface (Gaussian,
+Section: FFT spectral synthesis of a 1024 x 1024 surface (Gaussian,
 gamma and Johnson heights, triangular and exponential ACF) and Patir's linear transformation on
 1024 x 1024 and 256 x 256 surfaces, best of ``repeat`` runs, with the statistics of each surface.
 """
@@ -70,3 +70,11 @@ def bench_surface(repeat: int = 3) -> str:
         "",
     ]
     return "\n".join(lines[2:])
+
+
+TITLE = "rough-surface generation time (FFT synthesis, Patir's linear transform)"
+
+
+def main(out, quick: bool = False) -> str:
+    """``transient bench roughness``."""
+    return "## Rough-surface generation (seed 000)\n" + bench_surface(repeat=1 if quick else 3)

@@ -86,3 +86,11 @@ if __name__ == "__main__":
     t = time.perf_counter()
     print(run(quick="--quick" in sys.argv))
     print(f"\n({time.perf_counter() - t:.1f} s)")
+
+
+TITLE = "thrust-pad squeeze descent work-precision: separable and full 2-D paths"
+
+
+def main(out, quick: bool = False) -> str:
+    """``transient bench pad`` (its section has its own heading)."""
+    return run(quick=quick)
