@@ -439,7 +439,7 @@ def test_default_switch_width_follows_p0_and_tolerances_are_on_theta_and_pressur
     f = o.film
     u = np.full(nf, -1e-3)
     f.residual(u, 0.3, 0.2)
-    np.testing.assert_allclose(f.w.C[f.op.free], 1.0 - f.content_scale * 1e-3, rtol=0.0, atol=1e-6)
+    np.testing.assert_allclose(f.C[f.op.free], 1.0 - f.content_scale * 1e-3, rtol=0.0, atol=1e-6)
     with pytest.raises(ValueError, match="atol"):
         o.absolute_tolerance(0.0)
 

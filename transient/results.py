@@ -141,16 +141,23 @@ class Result:
             meta["fields"][f.name] = _encode(getattr(self, f.name), f.name, arrays)
         arrays["__meta__"] = np.array(json.dumps(meta, allow_nan=True))
         path.parent.mkdir(parents=True, exist_ok=True)
-        fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
-        try:
-            with os.fdopen(fd, "wb") as fh:
-                np.savez(fh, **arrays)
-            os.replace(tmp, path)
-        except BaseException:
-            if os.path.exists(tmp):
-                os.remove(tmp)
-            raise
-        return path
+        return atomic_savez(path, arrays)
+
+
+def atomic_savez(path, arrays: dict) -> Path:
+    """``np.savez`` to a unique temporary file in the same folder, then rename: a reader (or a crash) never
+    sees a half-written file, and two writers never share a temporary file."""
+    path = Path(path)
+    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
+    try:
+        with os.fdopen(fd, "wb") as fh:
+            np.savez(fh, **arrays)
+        os.replace(tmp, path)
+    except BaseException:
+        if os.path.exists(tmp):
+            os.remove(tmp)
+        raise
+    return path
 
 
 def load_result(path) -> Result:

@@ -74,28 +74,11 @@ def film_force(P, cosp, sinp, area, sym):
     return sym * fx, sym * fy
 
 
-class FilmWork:
-    """Scratch arrays and constant geometry shared by the kernels of one film (allocated once)."""
-
-    def __init__(self, op, phi, symmetric):
-        n = op.n_cells
-        self.cosp = np.ascontiguousarray(np.cos(phi))
-        self.sinp = np.ascontiguousarray(np.sin(phi))
-        self.area = np.ascontiguousarray(op.grid.area)
-        self.sym = 2.0 if symmetric else 1.0
-        self.H, self.P, self.dP, self.C, self.D, self.dD, self.k, self.c, self.R = (np.empty(n) for _ in range(9))
-        self.zero = np.zeros(n)
-        self.scale = np.ones(op.n)  # row scaling of the ODE Jacobian; the rotor rows keep 1
-        self.dk_dq = np.zeros((N_ROTOR, n))
-        self.dc_dq = np.zeros((N_ROTOR, n))
-        self.no_dq = np.zeros((N_ROTOR, n))
-        self.pos_row = np.ascontiguousarray(op.stencil.pos_row_extra)
-        self.pos_col = np.ascontiguousarray(op.stencil.pos_col_extra)
-        self.indices = op.stencil.indices
-
-    def fields(self):
-        """The scratch field arrays in the order the kernels take them."""
-        return (self.H, self.P, self.dP, self.C, self.D, self.dD, self.k, self.c)
+@njit(cache=True)
+def rotor_accelerations(tau, fx, fy, kappa, wbar, ebar):
+    """The rotor equations (paper eqs. 7-10, dimensionless): ``(X'', Y'')`` for the film force (fx, fy),
+    the static load ``wbar`` in +x and the unbalance ``ebar`` rotating with the shaft."""
+    return kappa * fx + wbar + ebar * np.cos(tau), kappa * fy + ebar * np.sin(tau)
 
 
 @njit(cache=True)
@@ -134,8 +117,7 @@ def ode_rhs(tau, y, out, beta_bar, width, content_scale, kappa, wbar, ebar, sym,
     fx, fy = film_force(P, cosp, sinp, area, sym)
     out[n] = VX
     out[n + 1] = VY
-    out[n + 2] = kappa * fx + wbar + ebar * np.cos(tau)
-    out[n + 3] = kappa * fy + ebar * np.sin(tau)
+    out[n + 2], out[n + 3] = rotor_accelerations(tau, fx, fy, kappa, wbar, ebar)
 
 
 @njit(cache=True)
@@ -189,10 +171,11 @@ def dae_residual(tau, y, yp, out, beta_bar, width, content_scale, kappa, wbar, e
         else:
             out[i] = yp[i]
     fx, fy = film_force(P, cosp, sinp, area, sym)
+    ax, ay = rotor_accelerations(tau, fx, fy, kappa, wbar, ebar)
     out[n] = Xd - VX
     out[n + 1] = Yd - VY
-    out[n + 2] = yp[n + 2] - (kappa * fx + wbar + ebar * np.cos(tau))
-    out[n + 3] = yp[n + 3] - (kappa * fy + ebar * np.sin(tau))
+    out[n + 2] = yp[n + 2] - ax
+    out[n + 3] = yp[n + 3] - ay
 
 
 @njit(cache=True)

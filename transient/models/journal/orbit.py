@@ -19,44 +19,58 @@ from which ``run(..., resume=True)`` continues after a crash with nothing lost.
 
 from __future__ import annotations
 
-import os
-import sys
-import time
-from dataclasses import dataclass, field
+import hashlib
+from dataclasses import field
 
 import numpy as np
 
-from transient.solvers.integrate import Problem, Stats, solve
-from transient.solvers.newton import Chord, NewtonError, newton
-from transient.models.journal.bearing import JournalBearing
-from transient.models.journal.kernels import (N_ROTOR, dae_jacobian, dae_residual, film_force, ode_jacobian,
-                                           ode_rhs)
 from transient.checks import check_positive, check_range
+from transient.models.journal.bearing import JournalBearing
+from transient.models.journal.kernels import N_ROTOR, dae_jacobian, dae_residual, ode_jacobian, ode_rhs
+from transient.models.journal.rk4 import FilmStageSolver
+from transient.results import Result, quantity, result_type
+from transient.solvers.integrate import METHODS, Problem, Stats
+from transient.solvers.longrun import run_long
 
 RECORDABLE = ("force", "pressure", "film_content", "min_film", "mass", "outflow")
+FIELD_SERIES = ("pressure", "film_content")
+RECORDED_FIELDS = ("force", "min_film", "mass", "outflow", "pressure", "pressure_t", "film_content", "film_content_t")
 
 
-@dataclass
-class OrbitResult:
+@result_type
+class OrbitResult(Result):
     """Time series of one orbit run (outputs at ``outputs_per_revolution`` per revolution).
 
-    ``t`` [s], ``x``, ``y`` [m] (journal centre; x towards the load), ``eccentricity_ratio``,
-    ``force`` [N] (film force on the journal, (n, 2), if recorded), ``pressure`` [Pa] ((n, nz, ntheta),
-    only if recorded and only over the recorded window), ``stats`` (integrator statistics, summed over
-    chunks), ``touched_at`` [s] if the journal reached the wall (then the run stopped there).
+    ``t`` [s], ``x``, ``y`` [m] (journal centre; x towards the load); the recorded series (None if not
+    asked): ``force`` [N] (film force on the journal, (n, 2)), ``min_film`` [m], ``mass`` [m^3],
+    ``outflow`` [m^3/s] ((n, 2): ends, groove), ``pressure`` [Pa] ((k, nz, ntheta) at ``pressure_t``
+    [s], only over the recorded window), ``film_content`` (at ``film_content_t``). ``stats`` sums the
+    integrator statistics over chunks; ``touched_at`` [s] if the journal reached the wall (the run stopped
+    there); ``final_state`` (film + rotor, dimensionless) at ``final_time`` [s]: ``run(..., start=result)``
+    continues from it with the unbalance phase where it was. ``success`` is False (and ``message`` says
+    why) if the integrator failed; the outputs up to the failure are kept.
     """
 
-    t: np.ndarray
-    x: np.ndarray
-    y: np.ndarray
-    method: str
-    stats: Stats
-    speed_rpm: float
-    clearance: float
-    fields: dict = field(default_factory=dict)
-    touched_at: float | None = None
+    t: np.ndarray = quantity("s")
+    x: np.ndarray = quantity("m")
+    y: np.ndarray = quantity("m")
+    method: str = "ida"
+    stats: Stats = field(default_factory=Stats)
+    speed_rpm: float = quantity("rpm", 0.0)
+    clearance: float = quantity("m", 0.0)
+    success: bool = True
     message: str = ""
-    final_state: np.ndarray | None = None  # full state vector (film + rotor) at the end, to continue a run
+    touched_at: float | None = quantity("s", None)
+    final_state: np.ndarray | None = None
+    final_time: float = quantity("s", 0.0)
+    force: np.ndarray | None = quantity("N", None)
+    min_film: np.ndarray | None = quantity("m", None)
+    mass: np.ndarray | None = quantity("m^3", None)
+    outflow: np.ndarray | None = quantity("m^3/s", None)
+    pressure: np.ndarray | None = quantity("Pa", None)
+    pressure_t: np.ndarray | None = quantity("s", None)
+    film_content: np.ndarray | None = None
+    film_content_t: np.ndarray | None = quantity("s", None)
 
     @property
     def eccentricity_ratio(self) -> np.ndarray:
@@ -66,11 +80,10 @@ class OrbitResult:
     def revolutions(self) -> np.ndarray:
         return self.t * self.speed_rpm / 60.0
 
-    def __getattr__(self, name):
-        fields = self.__dict__.get("fields", {})
-        if name in fields:
-            return fields[name]
-        raise AttributeError(name)
+    @property
+    def fields(self) -> dict:
+        """The recorded series by name (only those recorded)."""
+        return {k: getattr(self, k) for k in RECORDED_FIELDS if getattr(self, k) is not None}
 
 
 class JournalOrbit:
@@ -130,7 +143,7 @@ class JournalOrbit:
 
         ``touch_gap`` > 0 adds a terminal event when the eccentricity ratio reaches ``1 - touch_gap``
         (the journal touches the bearing)."""
-        f, w, op = self.film, self.film.w, self.film.op
+        f, w, op = self.film, self.film, self.film.op
         y0 = self.initial_state() if y0 is None else np.asarray(y0, dtype=float)
         common = (f.beta_bar, f.width, f.content_scale)
         scratch = (*w.fields(), w.zero, w.R)
@@ -169,12 +182,19 @@ class JournalOrbit:
                        jac_residual=jac_residual, events=events, n_events=1 if events else 0,
                        event_terminal=[True], event_direction=[-1], name="journal orbit")
 
+    def parameters(self) -> dict:
+        """Every parameter of the bearing and the rotor that changes an orbit (SI), e.g. to key a checkpoint."""
+        return dict(**self.bearing.parameters(), rotor_mass=self.rotor_mass, unbalance=self.unbalance,
+                    load=self.load, speed_rpm=self.speed_rpm)
+
     # ---------------------------------------------------------------------------------------------
     def run(self, revolutions, method="ida", rtol=1e-6, atol=1e-9, steps_per_revolution=3000,
             outputs_per_revolution=100, record=(), record_from_revolution=0.0, chunk_revolutions=None,
             checkpoint=None, resume=False, progress=None, touch_gap=1e-3, y0=None,
-            inner_tolerance=1e-6) -> OrbitResult:
-        """Integrate ``revolutions`` shaft revolutions from the static equilibrium (or ``y0``).
+            inner_tolerance=1e-6, start=None, stop=None) -> OrbitResult:
+        """Integrate ``revolutions`` shaft revolutions from the static equilibrium, from ``y0`` (a state at
+        t = 0) or from ``start`` (a previous :class:`OrbitResult`, or ``(time [s], state)``: the run goes on
+        from its final state and time, so the unbalance keeps its phase).
 
         Parameters
         ----------
@@ -189,62 +209,85 @@ class JournalOrbit:
             ``"mass"`` [m^3] (film content as liquid volume at the cavitation density, whole bearing),
             ``"outflow"`` [m^3/s] ((n, 2): through the ends, into the groove -- negative: the supply;
             see :meth:`mass_balance`), ``"pressure"`` [Pa] and ``"film_content"`` (fields: stored only from
-            ``record_from_revolution`` on, so a long run keeps only the window it needs).
+            ``record_from_revolution`` (counted from t = 0) on, so a long run keeps only the window it needs).
         chunk_revolutions : integrate in chunks of this many revolutions (progress and checkpoints
             between chunks); default: the whole run in one chunk unless a checkpoint is asked for (10).
         checkpoint : path of an ``.npz`` file rewritten after every chunk; ``resume=True`` continues
-            from it (same parameters) instead of starting again.
-        progress : print progress after each chunk (default: when the run has more than one chunk).
+            from it; it is keyed on every parameter and setting of the run and refused (naming the one
+            that differs) if any changed. Ctrl-C says where it is and how to resume.
+        progress : a progress bar over the chunks (default: when the run has more than one chunk).
         touch_gap : stop with a clear message when the eccentricity ratio reaches ``1 - touch_gap``.
+        stop : ``stop(result_so_far) -> str | None`` called after every chunk; a non-empty string ends
+            the run early and becomes its message (e.g. "settled").
         """
         revolutions = check_positive("revolutions", revolutions, "rev")
+        if isinstance(record, str):
+            record = (record,)
         bad = [r for r in record if r not in RECORDABLE]
         if bad:
             raise ValueError(f"record: unknown series {bad}; allowed: {RECORDABLE}")
-        if outputs_per_revolution < 1:
-            raise ValueError(f"outputs_per_revolution must be >= 1, got {outputs_per_revolution}")
+        if method not in METHODS:
+            raise ValueError(f"method = {method!r} is not a method; allowed: {', '.join(METHODS)}")
+        opr = check_range("outputs_per_revolution", outputs_per_revolution, "1/rev", 1, 1e6)
+        if opr != int(opr):
+            raise ValueError(f"outputs_per_revolution = {outputs_per_revolution!r} [1/rev] must be an integer")
+        opr = int(opr)
+        touch_gap = check_range("touch_gap", touch_gap, "-", 0.0, 1.0, high_open=True,
+                                why="(0 turns touch detection off)")
         if chunk_revolutions is None:
             chunk_revolutions = 10.0 if checkpoint else revolutions
-        chunk_revolutions = check_positive("chunk_revolutions", chunk_revolutions, "rev")
-        n_chunks = int(np.ceil(revolutions / chunk_revolutions - 1e-9))
-        progress = (n_chunks > 1) if progress is None else progress
+        chunk_revolutions = check_range("chunk_revolutions", chunk_revolutions, "rev", 1.0 / opr, np.inf,
+                                        why="(at least one output interval)")
         rec = _Recorder(self, record, record_from_revolution)
-        y = self.initial_state() if y0 is None else np.array(y0, dtype=float)
-        done = 0.0
-        if resume and checkpoint and os.path.exists(checkpoint):
-            y, done = rec.load(checkpoint, self, method)
-        done0 = done
-        stats = Stats()
-        touched, message = None, "reached the final time"
-        wall0 = time.perf_counter()
-        while done < revolutions - 1e-9 and touched is None:
-            span = min(chunk_revolutions, revolutions - done)
-            k_out = max(1, int(round(span * outputs_per_revolution)))
-            tau = 2 * np.pi * (done + np.linspace(0.0, span, k_out + 1))
-            if method == "rk4":
-                res = self._run_rk4(y, tau, steps_per_revolution, rec, inner_tolerance)
-            else:
-                prob = self.problem(y, tau[0], touch_gap)
-                res = solve(prob, tau, method=method, rtol=rtol, atol=self.absolute_tolerance(atol), store=False,
-                            observer=rec.observe)
-            _accumulate(stats, res.stats)
-            if not res.success:
-                raise RuntimeError(f"orbit integration ({method}) failed after {done:.3f} revolutions: {res.message}")
-            y = rec.last_y
-            if res.t_events.size:
-                touched = float(res.t_events[0]) / self.film.omega
-                message = (f"journal touches the bearing (eccentricity ratio {1 - touch_gap:.4f}) at t = "
-                           f"{touched:.6g} s ({touched * self.speed_rpm / 60:.2f} revolutions)")
-                rec.observe(float(res.t_events[0]), res.y_events[0])
-            done += span
-            if checkpoint:
-                rec.save(checkpoint, y, done, method)
-            if progress:
-                el = time.perf_counter() - wall0
-                print(f"  [{method}] {done:8.1f}/{revolutions:g} rev  e/C = {rec.last_eps:.4f}  "
-                      f"{el:7.1f} s elapsed  ({el / max(done - done0, 1e-9):.3f} s/rev)", file=sys.stderr, flush=True)
-        stats.wall_time = time.perf_counter() - wall0
-        return rec.result(method, stats, touched, message)
+        two_pi = 2 * np.pi
+        if start is not None:
+            t_start, y = (start.final_time, start.final_state) if isinstance(start, OrbitResult) else start
+            tau0 = float(t_start) * self.film.omega
+            y = np.array(y, dtype=float)
+        else:
+            tau0 = 0.0
+            y = self.initial_state() if y0 is None else np.array(y0, dtype=float)
+        if y.shape != (self.n,):
+            raise ValueError(f"the initial state has shape {y.shape}; this orbit has {self.n} states")
+        if start is not None:
+            rec.last_tau = tau0  # the start is the previous run's last output: not repeated
+        rec.last_y = y
+        n_out = max(1, int(round(revolutions * opr)))
+        if method == "rk4":
+            dtau = two_pi / check_range("steps_per_revolution", steps_per_revolution, "1/rev", 4, 1e7)
+            steppers = []
+
+            def problem_at(y_, t_):
+                steppers.append(FilmStageSolver(self, criterion=check_positive("inner_tolerance", inner_tolerance, "-")))
+                return steppers[-1].problem(y_, t_)
+
+            kw = dict(dt=dtau)
+        else:
+            problem_at = lambda y_, t_: self.problem(y_, t_, touch_gap)  # noqa: E731
+            kw = dict(rtol=rtol, atol=self.absolute_tolerance(atol))
+        key = dict(self.parameters(), method=method, rtol=rtol if method != "rk4" else None,
+                   atol=atol if method != "rk4" else None,
+                   steps_per_revolution=steps_per_revolution if method == "rk4" else None,
+                   inner_tolerance=inner_tolerance if method == "rk4" else None, outputs_per_revolution=opr,
+                   record=sorted(record), record_from_revolution=float(record_from_revolution), touch_gap=touch_gap,
+                   chunk_revolutions=chunk_revolutions, start_time=tau0 / self.film.omega,
+                   start_state=hashlib.sha256(np.ascontiguousarray(y).tobytes()).hexdigest()[:16])
+        user_stop = None if stop is None else (lambda r: stop(r.result(method, Stats(), None, "", tau0)))
+        out = run_long(problem_at, y, tau0, two_pi / opr, n_out, rec, method=method, solve_kwargs=kw,
+                       chunk_outputs=max(1, int(round(chunk_revolutions * opr))), checkpoint=checkpoint,
+                       resume=resume, key=key, progress=progress, unit=("rev", two_pi),
+                       label=f"orbit {self.speed_rpm:g} rpm", status=lambda: f"e/C = {rec.last_eps:.4f}",
+                       stop=user_stop)
+        if method == "rk4":
+            out.stats.n_jac = sum(s.n_factorisations for s in steppers)
+        touched, message = None, out.message
+        if out.event is not None:
+            touched = out.event[0] / self.film.omega
+            message = (f"journal touches the bearing (eccentricity ratio {1 - touch_gap:.4f}) at t = "
+                       f"{touched:.6g} s ({touched * self.speed_rpm / 60:.2f} revolutions)")
+        r = rec.result(method, out.stats, touched, message, out.t)
+        r.success = out.success
+        return r
 
     def absolute_tolerance(self, atol) -> np.ndarray:
         """Per-state absolute tolerance for a user ``atol`` on theta, p / p0 and the rotor states.
@@ -297,109 +340,6 @@ class JournalOrbit:
             out["quadrature_relative"].append(abs(flow - trapezoid(net, x=t[s])) / thr)
         return {k: np.array(v) for k, v in out.items()}
 
-    # ---------------------------------------------------------------------------------------------
-    def _run_rk4(self, y0, tau, steps_per_revolution, rec, inner_tolerance):
-        """The paper's scheme through the facade's RK4 with its per-stage inner film solve."""
-        stepper = FilmStageSolver(self, criterion=check_positive("inner_tolerance", inner_tolerance, "-"))
-        prob = stepper.problem(y0, tau[0])
-        dtau = 2 * np.pi / check_range("steps_per_revolution", steps_per_revolution, "1/rev", 4, 1e7)
-        res = solve(prob, tau, method="rk4", dt=dtau, store=False, observer=rec.observe)
-        res.stats.n_jac = stepper.n_factorisations
-        return res
-
-
-class FilmStageSolver:
-    """Per-stage film solve of the RK4 baseline (paper: Elrod iteration every time step).
-
-    For the rotor state of a stage at time ``tau_s`` it solves the film equations with the squeeze rate
-    of the stage and a backward-Euler time derivative from the film ``u_n`` of the step start::
-
-        A_i (theta_i H'_i + H_i / beta_bar (u_i - u_n,i) / (tau_s - tau_n)) + R_i(u) = 0
-
-    by Newton iterations until the paper's criterion (eq. 6) ``sum|d theta| / sum theta < 1e-6``. The
-    LU factorisation is reused across iterations, stages and steps, and refreshed when an iteration
-    fails to contract (chord Newton).
-    """
-
-    def __init__(self, orbit: JournalOrbit, criterion=1e-6, max_iter=50):
-        self.orbit = orbit
-        self.film = orbit.bearing.film(orbit.speed_rpm, n_extra=0)
-        self.n = self.film.n
-        self.criterion = criterion
-        self.max_iter = max_iter
-        self.chord = Chord()
-        self.n_iterations = 0
-        self.t_hist = None
-        self.u_hist = None
-        self.theta_hist = None
-        self.data = np.empty(self.film.op.nnz)
-
-    def problem(self, y0, tau0) -> Problem:
-        o, f = self.orbit, self.film
-        n = self.n
-        w = f.w
-
-        def rhs(t, y, out):  # rotor only; the cells' entries are ignored (algebraic)
-            fx, fy = film_force(w.P, w.cosp, w.sinp, w.area, w.sym)  # P of the film just solved for y
-            out[:n] = 0.0
-            out[n] = y[n + 2]
-            out[n + 1] = y[n + 3]
-            out[n + 2] = o.kappa * fx + o.wbar + o.ebar * np.cos(t)
-            out[n + 3] = o.kappa * fy + o.ebar * np.sin(t)
-
-        def step_begin(t, y):
-            if self.t_hist is None:
-                self.u_hist = y[:n].copy()
-            elif t > self.t_hist:  # film at the new step start, for the rotor state RK4 produced
-                self.u_hist = self._solve(t, y)
-            else:
-                return
-            self.t_hist = t
-            f.residual(self.u_hist, y[n], y[n + 1], y[n + 2], y[n + 3])
-            self.theta_hist = f.w.C.copy()
-
-        def algebraic_solve(t, y):
-            if self.t_hist is None:  # the initial state: its film is the history
-                step_begin(t, y)
-            y = y.copy()
-            y[:n] = self._solve(t, y) if t > self.t_hist else self.u_hist
-            if t <= self.t_hist:  # the fields (P) must correspond to this film for rhs
-                f.residual(y[:n], y[n], y[n + 1], y[n + 2], y[n + 3])
-            return y
-
-        return Problem(y0=np.asarray(y0, dtype=float), rhs=rhs, algebraic=np.arange(n),
-                       algebraic_solve=algebraic_solve, step_begin=step_begin, name="journal orbit (RK4 + film)")
-
-    def _solve(self, t, y):
-        """Film at stage time t for the stage's rotor state y: chord Newton (one factorisation kept across
-        iterations, stages and steps while it contracts) to the paper's criterion on theta."""
-        n, f = self.n, self.film
-        X, Y, VX, VY = y[n], y[n + 1], y[n + 2], y[n + 3]
-        rate = 1.0 / (t - self.t_hist)
-        G = lambda v: f.residual(v, X, Y, VX, VY, rate=rate, C_ref=self.theta_hist)  # noqa: E731
-        J = lambda v, shift: f.op.matrix(f.jacobian_data(v, X, Y, VX, VY, rate=rate, data=self.data))  # noqa: E731
-        G(self.u_hist)
-        theta = [f.w.C.copy()]
-
-        def converged(v, r, dv):  # paper eq. (6); the scratch fields hold the last iterate's film
-            new = f.w.C.copy()
-            done = np.sum(np.abs(new - theta[0])) < self.criterion * np.sum(new)
-            theta[0] = new
-            return done
-
-        try:
-            res = newton(G, J, self.u_hist, chord=self.chord, converged=converged, max_iter=self.max_iter,
-                         name="RK4 film iteration")
-        except NewtonError:
-            raise RuntimeError(f"RK4 film iteration did not reach the criterion {self.criterion} in {self.max_iter} "
-                               f"iterations at tau = {t:.6g}") from None
-        self.n_iterations += res.iterations
-        return res.x
-
-    @property
-    def n_factorisations(self) -> int:
-        return self.chord.n_factorisations
-
 
 class _Recorder:
     """Keeps x, y (always) and the requested series at the output times; streams, never the whole state."""
@@ -410,6 +350,7 @@ class _Recorder:
         self.tau0_fields = 2 * np.pi * record_from_revolution
         self.t, self.x, self.y = [], [], []
         self.series = {k: [] for k in self.record}
+        self.field_t = {k: [] for k in self.record if k in FIELD_SERIES}
         self.last_y = None
         self.last_tau = -np.inf
 
@@ -438,65 +379,47 @@ class _Recorder:
                 self.series["mass"].append(M * vol)
             if "outflow" in self.record:
                 self.series["outflow"].append((q_ends * vol * f.omega, q_groove * vol * f.omega))
-        if tau >= self.tau0_fields - 1e-12:
+        if tau >= self.tau0_fields - 1e-12 and self.field_t:
+            f.residual(y[:n], y[n], y[n + 1])  # fills P and theta = C(u) (u is not theta - 1 in cavitation)
             grid = o.bearing.grid
             if "pressure" in self.record:
-                f.residual(y[:n], y[n], y[n + 1])
-                self.series["pressure"].append((tau / f.omega, grid.to_2d(o.bearing.cavitation_pressure
-                                                                          + f.p0 * f.w.P).astype(np.float32)))
+                self.series["pressure"].append(grid.to_2d(o.bearing.cavitation_pressure + f.p0 * f.P).astype(np.float32))
             if "film_content" in self.record:
-                f.residual(y[:n], y[n], y[n + 1])  # theta = C(u) (u is not theta - 1 in cavitation)
-                self.series["film_content"].append((tau / f.omega, grid.to_2d(f.w.C).astype(np.float32)))
+                self.series["film_content"].append(grid.to_2d(f.C).astype(np.float32))
+            for k in self.field_t:
+                self.field_t[k].append(tau / f.omega)
 
     @property
     def last_eps(self):
         n = self.o.film.n
         return float(np.hypot(self.last_y[n], self.last_y[n + 1]))
 
-    def result(self, method, stats, touched, message) -> OrbitResult:
-        fields = {}
+    def arrays(self) -> dict:
+        """Everything recorded, as plain arrays (checkpoints)."""
+        out = dict(t=np.array(self.t), x=np.array(self.x), y=np.array(self.y), last_tau=np.array(self.last_tau))
         for k, v in self.series.items():
-            if k in ("pressure", "film_content"):
-                fields[k + "_t"] = np.array([a for a, _ in v])
-                fields[k] = np.array([b for _, b in v]) if v else np.zeros((0,))
-            else:
-                fields[k] = np.array(v)
-        return OrbitResult(t=np.array(self.t), x=np.array(self.x), y=np.array(self.y), method=method, stats=stats,
-                           speed_rpm=self.o.speed_rpm, clearance=self.o.bearing.clearance, fields=fields,
-                           touched_at=touched, message=message, final_state=self.last_y)
+            out[k] = np.array(v, dtype=np.float32 if k in FIELD_SERIES else float)
+        for k, v in self.field_t.items():
+            out[k + "_t"] = np.array(v)
+        return out
 
-    # checkpoints ---------------------------------------------------------------------------------
-    def save(self, path, y, done, method):
-        tmp = f"{path}.tmp.npz"
-        np.savez(tmp, y=y, done=done, method=method, last_tau=self.last_tau, t=np.array(self.t), x=np.array(self.x), yy=np.array(self.y),
-                 signature=_signature(self.o),
-                 **{f"series_{k}": np.array(v, dtype=object) for k, v in self.series.items()})
-        os.replace(tmp, path)
-
-    def load(self, path, orbit, method):
-        d = np.load(path, allow_pickle=True)
-        if str(d["signature"]) != _signature(orbit) or str(d["method"]) != method:
-            raise ValueError(f"checkpoint {path} was written by a different orbit or method; delete it or "
-                             f"run with resume=False")
-        self.t, self.x, self.y = list(d["t"]), list(d["x"]), list(d["yy"])
+    def restore(self, a: dict):
+        self.t, self.x, self.y = list(a["t"]), list(a["x"]), list(a["y"])
+        self.last_tau = float(a["last_tau"])
         for k in self.series:
-            if f"series_{k}" in d:  # scalar / pair series back as floats (not object arrays)
-                v = d[f"series_{k}"]
-                self.series[k] = list(v) if k in ("pressure", "film_content") else v.tolist()
-        self.last_y = np.array(d["y"])
-        self.last_tau = float(d["last_tau"])
-        return np.array(d["y"]), float(d["done"])
+            self.series[k] = list(a[k]) if k in FIELD_SERIES else a[k].tolist()
+        for k in self.field_t:
+            self.field_t[k] = list(a[k + "_t"])
 
-
-def _signature(o: JournalOrbit) -> str:
-    b = o.bearing
-    return repr((b.diameter, b.length, b.clearance, b.viscosity, b.bulk_modulus, b.supply_pressure, b.groove,
-                 b.grid_shape, b.switch_width, b.switch_content_width, b.symmetric, b.cavitation_pressure, b.ambient_pressure,
-                 o.rotor_mass, o.unbalance, o.load, o.speed_rpm))
-
-
-def _accumulate(total: Stats, part: Stats):
-    total.n_steps += part.n_steps
-    total.n_rhs += part.n_rhs
-    total.n_jac += part.n_jac
-    total.callback_time += part.callback_time
+    def result(self, method, stats, touched, message, tau_end) -> OrbitResult:
+        o = self.o
+        extra = {}
+        for k, v in self.series.items():
+            if k in FIELD_SERIES:
+                extra[k] = np.array(v) if v else np.zeros((0, o.bearing.grid.z.n, o.bearing.grid.x.n), dtype=np.float32)
+                extra[k + "_t"] = np.array(self.field_t[k])
+            else:
+                extra[k] = np.array(v, dtype=float)
+        return OrbitResult(t=np.array(self.t), x=np.array(self.x), y=np.array(self.y), method=method, stats=stats,
+                           speed_rpm=o.speed_rpm, clearance=o.bearing.clearance, touched_at=touched, message=message,
+                           final_state=self.last_y, final_time=float(tau_end) / o.film.omega, **extra)

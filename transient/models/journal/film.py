@@ -1,0 +1,182 @@
+"""The discretised Elrod film of a journal bearing at one shaft speed (seed 003).
+
+Scales (``p0 = 6 mu omega (R/C)^2``, the switch widths), the finite-volume operator with the rotor's
+trailing unknowns, the scratch arrays of :mod:`transient.models.journal.kernels`, and the evaluations
+every journal computation needs: the film equations and their Jacobian for a prescribed journal
+motion, the steady film (pseudo-transient Newton), the film force and its exact sensitivities, the
+global mass balance, and the SI :class:`~transient.models.journal.bearing.FilmState`.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import scipy.sparse.linalg as spla
+
+from transient.fv.reynolds import ReynoldsOperator
+from transient.models.journal.kernels import N_ROTOR, film_force, film_jacobian, film_residual
+from transient.physics.cavitation import softplus
+from transient.solvers.newton import NewtonError, newton
+
+#: Default pressure width of the Elrod switch as a fraction of p0 = 6 mu omega (R/C)^2 (docs/journal.md).
+SWITCH_WIDTH_P0 = 1e-4
+
+
+def omega(speed_rpm) -> float:
+    """Shaft angular speed [rad/s] from [rpm]."""
+    return 2.0 * np.pi * float(speed_rpm) / 60.0
+
+
+class Film:
+    """The discretised film of a bearing at one shaft speed: scales, the operator with ``n_extra``
+    trailing unknowns (the rotor), the scratch arrays its kernels fill (H, P, theta = C, ... of the last
+    state evaluated), and the steady, sensitivity and mass-balance evaluations."""
+
+    def __init__(self, bearing, speed_rpm, n_extra=N_ROTOR):
+        b = bearing
+        self.bearing = b
+        self.speed_rpm = float(speed_rpm)
+        self.omega = omega(speed_rpm)
+        self.p0 = b.pressure_scale(speed_rpm)
+        self.beta_bar = b.bulk_modulus / self.p0
+        self.width = SWITCH_WIDTH_P0 if b.switch_width is None else b.switch_width / self.p0
+        self.content_scale = b.switch_content_width / self.width  # r: content width / pressure width
+        self.force_scale = self.p0 * b.radius ** 2  # N per unit of Fbar
+        u_supply = (b.supply_pressure - b.cavitation_pressure) / self.p0
+        u_amb = (b.ambient_pressure - b.cavitation_pressure) / self.p0
+        P_amb, _ = softplus(np.array([u_amb]), self.width)
+        C_amb = 1.0 + P_amb[0] / self.beta_bar + self.content_scale * (u_amb - P_amb[0])  # theta = C(u_amb)
+        self.op = ReynoldsOperator(b.grid, n_extra=n_extra, upwind=True, boundary_P=float(P_amb[0]),
+                                   boundary_C=float(C_amb))
+        self.op.u_fixed[~self.op.free] = u_supply  # groove cells at the supply pressure
+        self.n = n = self.op.n_cells
+        self.u_supply = u_supply
+        op = self.op
+        # constant geometry and scratch arrays shared by the kernels (allocated once)
+        self.cosp = np.ascontiguousarray(np.cos(b.phi))
+        self.sinp = np.ascontiguousarray(np.sin(b.phi))
+        self.area = np.ascontiguousarray(op.grid.area)
+        self.sym = 2.0 if b.symmetric else 1.0
+        self.H, self.P, self.dP, self.C, self.D, self.dD, self.k, self.c, self.R = (np.empty(n) for _ in range(9))
+        self.zero = np.zeros(n)
+        self.scale = np.ones(op.n)  # row scaling of the ODE Jacobian; the rotor rows keep 1
+        self.dk_dq = np.zeros((N_ROTOR, n))
+        self.dc_dq = np.zeros((N_ROTOR, n))
+        self.no_dq = np.zeros((N_ROTOR, n))
+        self.pos_row = np.ascontiguousarray(op.stencil.pos_row_extra)
+        self.pos_col = np.ascontiguousarray(op.stencil.pos_col_extra)
+        self.indices = op.stencil.indices
+
+    def fields(self):
+        """The scratch field arrays in the order the kernels take them."""
+        return (self.H, self.P, self.dP, self.C, self.D, self.dD, self.k, self.c)
+
+    # residual / Jacobian of the prescribed-motion film equations G(u) = 0 --------------------------
+    def residual(self, u, X, Y, VX=0.0, VY=0.0, rate=0.0, C_ref=None, out=None):
+        """G(u) of :func:`~transient.models.journal.kernels.film_residual`; also leaves the fields (P, theta,
+        ...) of ``u`` in the film's scratch arrays."""
+        w, op = self, self.op
+        out = np.empty(self.n) if out is None else out
+        film_residual(u, X, Y, VX, VY, rate, w.zero if C_ref is None else C_ref, out, self.beta_bar, self.width,
+                      self.content_scale, w.cosp, w.sinp, w.area, *w.fields(), w.zero, *op.residual_args)
+        return out
+
+    def jacobian_data(self, u, X, Y, VX=0.0, VY=0.0, rate=0.0, data=None):
+        """CSC data of dG/du (+ the rotor columns if the operator has them), pattern order."""
+        w, op = self, self.op
+        data = np.empty(op.nnz) if data is None else data
+        ne = op.n_extra
+        film_jacobian(u, X, Y, VX, VY, rate, data, self.beta_bar, self.width, self.content_scale,
+                      w.cosp, w.sinp, w.area,
+                      *w.fields(), w.zero, w.dk_dq[:ne], w.dc_dq[:ne], w.no_dq[:ne], w.pos_col, *op.jacobian_face_args)
+        return data
+
+    def solve(self, X, Y, VX=0.0, VY=0.0, u0=None, tol=1e-10, max_iter=400):
+        """Steady film G(u) = 0 for a prescribed journal state (X, Y, VX, VY), returns (u, iterations).
+
+        Pseudo-transient continuation (:func:`~transient.solvers.newton.newton`): Newton steps on the
+        backward-Euler system ``A H (theta(u) - theta(u_old))/dtau + G(u) = 0`` whose pseudo-step grows as
+        the residual falls, ending with plain Newton. Every iterate is a state of the film's own dynamics,
+        so the solve cannot wander off into unphysical branches. Converged when the Newton step and the
+        residual are below ``tol`` and 1e-8 of ``max(1, |u|)``.
+        """
+        n = self.n
+        u = np.where(self.op.free, 0.0, self.u_supply) if u0 is None else np.array(u0, dtype=float)
+        u[~self.op.free] = self.u_supply
+        data = np.empty(self.op.nnz)
+        G = lambda v: self.residual(v, X, Y, VX, VY)  # noqa: E731
+        J = lambda v, rate: self.op.matrix(self.jacobian_data(v, X, Y, VX, VY, rate=rate, data=data))[:n, :n]  # noqa: E731
+
+        def converged(v, r, dv):
+            scale = max(1.0, float(np.max(np.abs(v))))
+            return float(np.max(np.abs(dv))) <= tol * scale and float(np.max(np.abs(r))) <= 1e-8 * scale
+
+        try:
+            res = newton(G, J, u, pseudo_time=1.0 if u0 is None else 1e3, max_iter=max_iter, converged=converged,
+                         name="film solve")
+        except NewtonError as e:
+            raise RuntimeError(f"film solve did not converge in {max_iter} iterations at X={X:.4g}, Y={Y:.4g}: "
+                               f"residual {e.result.residual_norm:.3e}") from None
+        return res.x, res.iterations
+
+    def force(self, u, X, Y):
+        """Dimensionless film force (Fbar_x, Fbar_y) at the state u (the fields are evaluated first)."""
+        self.residual(u, X, Y)
+        return film_force(self.P, self.cosp, self.sinp, self.area, self.sym)
+
+    def force_sensitivity(self, u, X, Y):
+        """Fbar and its exact derivatives dFbar/d(X, Y) and dFbar/d(VX, VY) at a steady solution ``u``
+        (implicit differentiation: G_u du/dq = -G_q, dF/dq = F_u du/dq)."""
+        if self.op.n_extra < 4:
+            raise ValueError("force_sensitivity needs a film built with n_extra=4")
+        n, w = self.n, self
+        F = np.array(self.force(u, X, Y))
+        M = self.op.matrix(self.jacobian_data(u, X, Y))
+        Guu = M[:n, :n].tocsc()
+        Gq = M[:n, n:n + 4].toarray()
+        du = -spla.splu(Guu).solve(Gq)
+        gx = w.sym * w.dP * w.cosp * w.area
+        gy = w.sym * w.dP * w.sinp * w.area
+        dF = np.vstack([gx @ du, gy @ du])
+        return F, dF[:, :2], dF[:, 2:]
+
+    def mass_flows(self, u, X, Y):
+        """Global mass balance terms of the film at state ``u`` (dimensionless, whole bearing)::
+
+            M      = sym * sum_free A_i H_i theta_i          film content (liquid volume / (C R^2))
+            q_ends = net outflow through the bearing ends   (volume rate / (C R^2 omega))
+            q_grv  = net outflow into the groove cells      (negative: the supply)
+
+        The semi-discrete film equations give exactly ``dM/dtau = -(q_ends + q_grv)`` (the squeeze term
+        of the free cells is part of ``dM/dtau``), so a time integrator's drift from this identity
+        measures its own conservation error."""
+        w, op = self, self.op
+        R = self.residual(u, X, Y)  # VX = VY = 0: pure net outflow of each cell; fills H, P, theta
+        free = op.free
+        M = w.sym * float(np.sum((w.area * w.H * w.C)[free]))
+        total = w.sym * float(np.sum(R[free]))
+        b = op.bcell
+        ok = free[b]
+        if np.any(op.bdir[ok] != 1):
+            raise NotImplementedError("mass_flows assumes Dirichlet faces only at the bearing ends")
+        ends = w.sym * float(np.sum((-w.k[b] * (op.bP - w.P[b]) / op.bd * op.bs)[ok]))
+        return M, ends, total - ends
+
+    def state(self, u, X, Y, iterations=0):
+        from transient.models.journal.bearing import FilmState
+
+        b = self.bearing
+        F = self.force(u, X, Y)
+        Fx, Fy = F[0] * self.force_scale, F[1] * self.force_scale
+        eps = float(np.hypot(X, Y))
+        # attitude: from the load line (the load balances -F) to the line of centres
+        load_dir = np.arctan2(-Fy, -Fx)
+        att = np.degrees(np.angle(np.exp(1j * (np.arctan2(Y, X) - load_dir)))) if eps > 0 else 0.0
+        P = self.P
+        grid = b.grid
+        return FilmState(
+            eccentricity_ratio=eps, attitude_angle_deg=float(att), position=(X * b.clearance, Y * b.clearance),
+            force=(Fx, Fy), load=float(np.hypot(Fx, Fy)), min_film=b.clearance * (1.0 - eps),
+            speed_rpm=self.speed_rpm,
+            pressure=grid.to_2d(b.cavitation_pressure + self.p0 * P).copy(),
+            film_content=grid.to_2d(self.C).copy(),
+            angle_deg=np.degrees(grid.x.centres), z=grid.z.centres * b.radius, u=u.copy(), newton_iterations=iterations)
