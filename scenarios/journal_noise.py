@@ -30,7 +30,8 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
 
-from transient.analysis import NotPeriodicError, bearing_noise, film_transitions
+from transient import bearing_noise
+from transient.analysis import NotPeriodicError, film_transitions
 from transient.params.rho_kim import BEARING as RHO_KIM_BEARING, ROTOR as RHO_KIM_ROTOR
 from transient.models.journal.bearing import JournalBearing
 from transient.models.journal.orbit import JournalOrbit

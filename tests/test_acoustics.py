@@ -5,7 +5,8 @@ end-to-end bearing_noise run."""
 import numpy as np
 import pytest
 
-from transient.analysis import (NotPeriodicError, a_weighting, bearing_noise, energy_average, find_settled,
+from transient import bearing_noise
+from transient.analysis import (NotPeriodicError, a_weighting, energy_average, find_settled,
                                 film_transitions, harmonic_amplitudes, mean_and_fluctuation, require_periodic,
                                 transmission_coefficient)
 from transient.analysis.acoustics import analyse_pressure, spl

@@ -21,7 +21,7 @@ import os as _os
 # waiting costs nothing measurable on an idle machine. Set before sksundae loads; a user's value wins.
 _os.environ.setdefault("OMP_WAIT_POLICY", "PASSIVE")
 
-from transient.analysis.acoustics import a_weighting, bearing_noise  # noqa: E402
+from transient.analysis.acoustics import a_weighting  # noqa: E402
 from transient.models.ball import ThrustBallBearing
 from transient.models.journal import Groove, JournalBearing, JournalOrbit
 from transient.models.pad import ThrustPad
@@ -29,6 +29,7 @@ from transient.physics.asperity import AsperityContact, DiscreteDensity, greenwo
 from transient.physics.flow_factors import contact_factor, pressure_flow_factors, shear_flow_factor
 from transient.results import Result, load_result
 from transient.solvers.integrate import Problem, Solution, Stats, solve
+from transient.study.noise import bearing_noise  # the public API re-exports the noise protocol
 from transient.surfaces.roughness import RoughSurface
 
 __all__ = [

@@ -21,21 +21,18 @@ On the steady periodic response of :class:`~transient.models.journal.orbit.Journ
 Nodes with no fluctuation (the supply groove, held at p_s) have N_ij = -inf dB and contribute zero
 energy to the average, but count in N_x N_y as in eq. (16).
 
-:func:`bearing_noise` drives the orbit: it integrates (without recording any field) in chunks,
-sampling the journal once per revolution (Poincare), until the motion is periodic to ``tol``
-(:mod:`transient.analysis.periodic`), then integrates ``revolutions`` more revolutions recording the
-pressure field only there, at ``samples_per_revolution`` (>= 2 * harmonics + margin).
+:func:`analyse_pressure` takes a recorded window of the periodic response; the protocol that settles
+the orbit and records that window is :func:`transient.study.noise.bearing_noise`.
 """
 
 from __future__ import annotations
 
 import time
-from dataclasses import dataclass, field
 
 import numpy as np
 
-from transient.analysis.periodic import NotPeriodicError, find_settled, not_periodic_message, poincare_steps
 from transient.analysis.spectra import amplitude_spectrum, harmonic_amplitudes, mean_and_fluctuation
+from transient.results import Result, quantity, result_type
 
 P_REF = 20e-6  #: reference sound pressure in air [Pa] (eq. 15)
 P_REF_OIL = 1e-6  #: reference the paper uses for levels in the oil film (Figs. 6, 7) [Pa]
@@ -142,8 +139,8 @@ def film_transitions(state, row=0) -> dict:
 
 
 # -------------------------------------------------------------------------------------------------
-@dataclass
-class BearingNoise:
+@result_type
+class BearingNoise(Result):
     """Noise analysis of one speed. Arrays per node are (n_axial, n_theta) on the bearing grid (half
     bearing when symmetric, row 0 next to the mid-plane).
 
@@ -157,33 +154,35 @@ class BearingNoise:
     settling cost per revolution times its revolutions), ``analysis``.
     """
 
-    speed_rpm: float
-    revolutions: int
-    harmonics: int
-    samples_per_revolution: int
-    settle_revolutions: int
-    settled_at: int | None
-    poincare_steps: np.ndarray
-    window_closure: float
-    transmission: str
-    transmission_coefficient: float
-    angle_deg: np.ndarray
-    z: np.ndarray
-    t: np.ndarray
-    x: np.ndarray
-    y: np.ndarray
-    pressure: np.ndarray = field(repr=False)
-    p_mean: np.ndarray = field(repr=False)
-    p_fluct: np.ndarray = field(repr=False)
-    spl: np.ndarray = field(repr=False)
-    harmonic_rms: np.ndarray = field(repr=False)
-    harmonic_spl: np.ndarray = field(repr=False)
-    harmonic_levels_db: np.ndarray
-    harmonic_levels_dba: np.ndarray
-    level_db: float
-    level_db_harmonics: float
-    level_dba: float
-    timings: dict
+    speed_rpm: float = quantity("rpm")
+    revolutions: int = quantity("rev")
+    harmonics: int = quantity("-")
+    samples_per_revolution: int = quantity("1/rev")
+    settle_revolutions: int = quantity("rev")
+    settled_at: int | None = quantity("rev")
+    poincare_steps: np.ndarray = quantity("C")
+    window_closure: float = quantity("C")
+    transmission: str = quantity("")
+    transmission_coefficient: float = quantity("-")
+    angle_deg: np.ndarray = quantity("deg")
+    z: np.ndarray = quantity("m")
+    t: np.ndarray = quantity("s")
+    x: np.ndarray = quantity("m")
+    y: np.ndarray = quantity("m")
+    pressure: np.ndarray = quantity("Pa", repr=False)
+    p_mean: np.ndarray = quantity("Pa", repr=False)
+    p_fluct: np.ndarray = quantity("Pa", repr=False)
+    spl: np.ndarray = quantity("dB", repr=False)
+    harmonic_rms: np.ndarray = quantity("Pa", repr=False)
+    harmonic_spl: np.ndarray = quantity("dB", repr=False)
+    harmonic_levels_db: np.ndarray = quantity("dB")
+    harmonic_levels_dba: np.ndarray = quantity("dB(A)")
+    level_db: float = quantity("dB")
+    level_db_harmonics: float = quantity("dB")
+    level_dba: float = quantity("dB(A)")
+    timings: dict = quantity("s")
+    success: bool = True
+    message: str = "periodic response analysed"
 
     @property
     def frequency_hz(self) -> float:
@@ -287,95 +286,3 @@ def analyse_pressure(pressure, x, y, t, speed_rpm, revolutions, harmonics, trans
                         poincare_steps=np.asarray(meta.get("poincare_steps", np.zeros(0))),
                         window_closure=float(meta.get("window_closure", np.nan)))
 
-
-def default_samples_per_revolution(harmonics) -> int:
-    """2 * harmonics + a margin: max(16, 4 * harmonics), even."""
-    s = max(16, 4 * int(harmonics))
-    return s + (s % 2)
-
-
-def bearing_noise(orbit, revolutions=4, harmonics=5, settle_revolutions=None, max_settle_revolutions=60, tol=1e-4,
-                  transmission="printed", method="ida", rtol=1e-6, samples_per_revolution=None,
-                  chunk_revolutions=5, confirm=2, progress=False) -> BearingNoise:
-    """Bearing noise of a :class:`~transient.models.journal.orbit.JournalOrbit` at its speed.
-
-    1. Settling, no fields recorded: from the static equilibrium, in chunks of ``chunk_revolutions``,
-       sampling the journal position once per revolution (Poincare, in units of the clearance) until
-       ``confirm`` consecutive once-per-revolution steps are below ``tol`` (default 1e-4 C, ~1 % of the
-       6000 rpm orbit amplitude); :class:`~transient.analysis.periodic.NotPeriodicError` if not within
-       ``max_settle_revolutions`` (e.g. past the stability threshold) or if the journal touches the
-       bearing. ``settle_revolutions`` = int skips the detection and settles for exactly that many.
-    2. Window: ``revolutions`` (integer) more revolutions recording the pressure field at
-       ``samples_per_revolution`` (default :func:`default_samples_per_revolution`), only there.
-    3. Analysis (:func:`analyse_pressure`).
-    """
-    from transient.models.journal.orbit import JournalOrbit
-
-    if not isinstance(orbit, JournalOrbit):
-        raise TypeError(f"orbit must be a JournalOrbit, got {type(orbit).__name__}")
-    revolutions = int(revolutions)
-    harmonics = int(harmonics)
-    if revolutions < 1 or harmonics < 1:
-        raise ValueError(f"revolutions and harmonics must be >= 1, got {revolutions}, {harmonics}")
-    S = default_samples_per_revolution(harmonics) if samples_per_revolution is None else int(samples_per_revolution)
-    if S <= 2 * harmonics:
-        raise ValueError(f"samples_per_revolution = {S} cannot resolve harmonic {harmonics} (needs > {2 * harmonics})")
-    if transmission not in TRANSMISSIONS:
-        raise ValueError(f"transmission must be one of {TRANSMISSIONS}, got {transmission!r}")
-    C = orbit.bearing.clearance
-    kw = dict(method=method, rtol=rtol, progress=False)
-
-    def check(res, where):
-        if res.touched_at is not None:
-            raise NotPeriodicError(f"{where} at {orbit.speed_rpm:g} rpm: {res.message}")
-
-    t0 = time.perf_counter()
-    y = None
-    z = []
-    done = 0
-    settled_at = None
-    if settle_revolutions is None:
-        chunk = max(1, int(chunk_revolutions))
-        while settled_at is None:
-            if done >= max_settle_revolutions:
-                raise NotPeriodicError(not_periodic_message(np.array(z), tol, 1.0,
-                                                            f"the journal orbit at {orbit.speed_rpm:g} rpm"))
-            n = int(min(chunk, max_settle_revolutions - done))
-            r = orbit.run(n, outputs_per_revolution=1, y0=y, **kw)
-            check(r, "settling")
-            pts = np.column_stack([r.x, r.y]) / C
-            z.extend(pts if not z else pts[1:])
-            y = r.final_state
-            done += n
-            settled_at = find_settled(np.array(z), tol, 1.0, confirm)
-            if progress:
-                d = poincare_steps(np.array(z))
-                print(f"  settling {orbit.speed_rpm:g} rpm: {done} rev, last step {d[-1]:.2e} C", flush=True)
-    elif int(settle_revolutions) > 0:
-        done = int(settle_revolutions)
-        r = orbit.run(done, outputs_per_revolution=1, y0=None, **kw)
-        check(r, "settling")
-        z = list(np.column_stack([r.x, r.y]) / C)
-        y = r.final_state
-    t_settle = time.perf_counter() - t0
-
-    t1 = time.perf_counter()
-    r = orbit.run(revolutions, outputs_per_revolution=S, record=("pressure",), record_from_revolution=0.0, y0=y, **kw)
-    check(r, "analysis window")
-    t_window = time.perf_counter() - t1
-    N = revolutions * S
-    if r.pressure.shape[0] != N + 1:
-        raise RuntimeError(f"expected {N + 1} pressure samples over the window, got {r.pressure.shape[0]}")
-    closure = float(np.hypot(r.x[-1] - r.x[0], r.y[-1] - r.y[0]) / C)
-    per_rev = t_settle / done if done else 0.0
-    timings = dict(integration=t_settle, recording=t_window,
-                   recording_overhead=max(0.0, t_window - per_rev * revolutions) if done else float("nan"))
-    period = 60.0 / orbit.speed_rpm
-    grid = orbit.bearing.grid
-    angle = np.degrees(grid.x.centres)
-    zc = grid.z.centres * orbit.bearing.radius
-    return analyse_pressure(r.pressure[:N], r.x[:N], r.y[:N], r.t[:N] + done * period, orbit.speed_rpm, revolutions,
-                            harmonics, transmission, angle_deg=angle, z=zc, timings=timings,
-                            settle_revolutions=done, settled_at=settled_at,
-                            poincare_steps=poincare_steps(np.array(z)) if len(z) else np.zeros(0),
-                            window_closure=closure)

@@ -194,7 +194,7 @@ class JournalOrbit:
             inner_tolerance=1e-6, start=None, stop=None) -> OrbitResult:
         """Integrate ``revolutions`` shaft revolutions from the static equilibrium, from ``y0`` (a state at
         t = 0) or from ``start`` (a previous :class:`OrbitResult`, or ``(time [s], state)``: the run goes on
-        from its final state and time, so the unbalance keeps its phase).
+        from its final state and time, so the unbalance keeps its phase). The first output is the start.
 
         Parameters
         ----------
@@ -249,8 +249,6 @@ class JournalOrbit:
             y = self.initial_state() if y0 is None else np.array(y0, dtype=float)
         if y.shape != (self.n,):
             raise ValueError(f"the initial state has shape {y.shape}; this orbit has {self.n} states")
-        if start is not None:
-            rec.last_tau = tau0  # the start is the previous run's last output: not repeated
         rec.last_y = y
         n_out = max(1, int(round(revolutions * opr)))
         if method == "rk4":
