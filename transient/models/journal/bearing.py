@@ -211,6 +211,14 @@ class JournalBearing:
                            f"iterations; last eccentricity ratio {np.hypot(*q):.4f}, force residual "
                            f"{np.max(np.abs(r)) * f.force_scale:.3e} N")
 
+    def unbalance_response(self, rotor_mass, unbalance, load, speed_rpm) -> np.ndarray:
+        """Steady unbalance response of the linearised rotor ``m x'' + C x' + K x = m e W^2 (cos, sin)``:
+        complex amplitudes Z [m] with ``x(t) = Re(Z_x e^{i W t})``, ``y(t) = Re(Z_y e^{i W t})``."""
+        K, Cm = self.coefficients(load, speed_rpm)
+        w = omega(speed_rpm)
+        A = K + 1j * w * Cm - rotor_mass * w * w * np.eye(2)
+        return np.linalg.solve(A, rotor_mass * unbalance * w * w * np.array([1.0, -1j]))
+
     def growth_rate(self, rotor_mass, load, speed_rpm) -> float:
         """Largest real part [1/s] of the eigenvalues of the linearised rotor (m x'' + C x' + K x = 0)."""
         K, Cm = self.coefficients(load, speed_rpm)

@@ -138,6 +138,29 @@ class JournalOrbit:
         y0[self.film.n + 1] = e.position[1] / self.bearing.clearance
         return y0
 
+    def linear_start(self) -> np.ndarray:
+        """State at t = 0 on the linearised unbalance response (position and velocity from K and C, the
+        film solved quasi-steadily for them): a start that is already close to the settled orbit."""
+        C = self.bearing.clearance
+        Z = self.bearing.unbalance_response(self.rotor_mass, self.unbalance, self.load, self.speed_rpm)
+        e = self.equilibrium()
+        X, Y = e.position[0] / C + Z[0].real / C, e.position[1] / C + Z[1].real / C
+        VX, VY = (1j * Z[0]).real / C, (1j * Z[1]).real / C
+        u, _ = self.film.solve(X, Y, VX, VY, u0=e.u)
+        y0 = np.empty(self.n)
+        y0[:self.film.n] = u
+        y0[self.film.n:] = X, Y, VX, VY
+        return y0
+
+    def perturbed_start(self, offset) -> np.ndarray:
+        """State at t = 0 with the journal moved by ``offset`` [C] towards the load from the equilibrium, at
+        rest, the film solved for it (a start for free-vibration and stability runs)."""
+        y0 = self.initial_state()
+        n = self.film.n
+        y0[n] += offset
+        y0[:n] = self.film.solve(y0[n], y0[n + 1], u0=self.equilibrium().u)[0]
+        return y0
+
     def problem(self, y0=None, tau0=0.0, touch_gap=0.0) -> Problem:
         """The method-of-lines :class:`Problem` in dimensionless time tau = omega t.
 
