@@ -1,153 +1,76 @@
-"""Seed 002 scenarios: central film of a thrust ball bearing against number of balls, speed, load and
-ambient film (analogues of Figs. 7-11 of Jeong, Lee, Yoo & Cho 2017); prints the regime boundaries.
+"""Seed 002 (Jeong et al.): central film of a thrust ball bearing against the number of balls, speed, load and
+ambient film (Figs. 7-11); prints the regime boundaries beside the paper's.
 
-Run: ``python scenarios/ball_starvation.py [--fast]`` (figures into scenarios/out/). Each point is a
-ball-pass sequence run to its periodic steady state (or parched decline, at most N_PASSES passes)
-with the nonlinear thin-film reflow (CVODE) and, for comparison, Chiu's linear kernel.
+    transient run scenarios/ball_starvation.py [--quick] [--out DIR]
+
+Each point is a ball-pass sequence run to its periodic steady state (or parched decline, at most 100
+passes) with the nonlinear thin-film reflow (CVODE, band) and, for comparison, Chiu's linear kernel.
+Figures ball_fig7..11 and ball_starvation.json into scenarios/out/ball/.
 """
 
 from __future__ import annotations
 
-import os
 import sys
 import time
+from pathlib import Path
 
-import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt
 import numpy as np
 
-from transient.models.ball.bearing import ThrustBallBearing
+from transient import ThrustBallBearing
+from transient.params import jeong
+from transient.plots import ball as plots, save
+from transient.study.ball import boundaries, sweep
+from transient.study.scenario import JsonRecord, log, parser
 
-OUT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "out")
-N_PASSES = 100
-KW = dict(n_cells=100, rtol=1e-4, linear_solver="band")
-REF = dict(load=30.0, speed_rpm=80.0, ambient_film=100e-6, n_balls=6)
-COLORS = {"fully flooded": "tab:green", "starved": "tab:orange", "parched": "tab:red"}
-
-
-def run_point(brg, load, speed, hinf, replenishment="thin_film"):
-    kw = KW if replenishment == "thin_film" else {}
-    s = brg.sequence(load=load, speed_rpm=speed, ambient_film=hinf, n_passes=N_PASSES,
-                     replenishment=replenishment, **kw)
-    return s
+OUT = Path(__file__).resolve().parent / "out" / "ball"
+THIN = dict(replenishment="thin_film", n_cells=100, rtol=1e-4, linear_solver="band")
+CHIU = dict(replenishment="chiu")
+FIGS = {"n_balls": "fig7_balls", "speed_rpm": "fig8_speed", "load": "fig9_load"}
 
 
-def sweep(name, values, hinf, replenishment="thin_film"):
-    brg0 = ThrustBallBearing()
-    out = []
-    for v in values:
-        p = dict(REF, ambient_film=hinf)
-        p[name] = v
-        brg = brg0.with_(n_balls=int(p["n_balls"]))
-        out.append(run_point(brg, p["load"], p["speed_rpm"], p["ambient_film"], replenishment))
-    return out
-
-
-def boundaries(values, seqs):
-    """Last value of each regime (the paper's way: 'flooded up to X, starved up to Y')."""
-    res = {}
-    for v, s in zip(values, seqs):
-        res.setdefault(s.final_regime, []).append(v)
-    return {k: (min(v), max(v)) for k, v in res.items()}
-
-
-def plot_sweep(ax, values, seqs, label, marker="o"):
-    hc = np.array([s.H_central[-1] for s in seqs])
-    ax.plot(values, hc, "-", color="0.6", lw=1)
-    for v, s, h in zip(values, seqs, hc):
-        ax.plot(v, h, marker, color=COLORS[s.final_regime], ms=6)
-    ax.plot([], [], "-", color="0.6", label=label)
-
-
-def save(fig, name):
-    """Lay out, write ``OUT/name`` (PNG, 120 dpi) and close the figure."""
-    fig.tight_layout()
-    fig.savefig(os.path.join(OUT, name), dpi=120)
-    plt.close(fig)
-
-
-def main(fast=False):
-    os.makedirs(OUT, exist_ok=True)
-    t0 = time.perf_counter()
-    balls = np.arange(1, 12)
-    speeds = np.arange(70, 91, 2 if not fast else 5)
-    loads = np.arange(10, 61, 5 if not fast else 10)
+def main(argv=None):
+    a = parser(__doc__, OUT).parse_args(argv)
+    out = Path(a.out)
+    values = {"n_balls": np.arange(1, 12, 2 if a.quick else 1), "speed_rpm": np.arange(70, 91, 5 if a.quick else 2),
+              "load": np.arange(10, 61, 10 if a.quick else 5)}
     ambients = (100e-6, 50e-6)
-    results = {}
-    for hinf in ambients:
-        for rep in ("thin_film", "chiu"):
-            results[(hinf, rep, "n_balls")] = sweep("n_balls", balls, hinf, rep)
-            results[(hinf, rep, "speed_rpm")] = sweep("speed_rpm", speeds, hinf, rep)
-            results[(hinf, rep, "load")] = sweep("load", loads, hinf, rep)
-    for hinf in (125e-6, 150e-6):
-        results[(hinf, "thin_film", "n_balls")] = sweep("n_balls", balls, hinf)
-    t_sweep = time.perf_counter() - t0
-
-    xs = {"n_balls": balls, "speed_rpm": speeds, "load": loads}
-    labels = {"n_balls": "number of balls", "speed_rpm": "shaft speed [rpm]", "load": "axial load [N]"}
-    figs = {"n_balls": "fig7_balls", "speed_rpm": "fig8_speed", "load": "fig9_load"}
-    for key in ("n_balls", "speed_rpm", "load"):
-        fig, ax = plt.subplots(figsize=(5.5, 4))
-        for hinf, mk in zip(ambients, ("o", "s")):
-            plot_sweep(ax, xs[key], results[(hinf, "thin_film", key)], f"thin film, h_inf={hinf*1e6:.0f} um", mk)
-            plot_sweep(ax, xs[key], results[(hinf, "chiu", key)], f"Chiu linear, h_inf={hinf*1e6:.0f} um", "^")
-        for r, c in COLORS.items():
-            ax.plot([], [], "o", color=c, label=r)
-        ax.set_xlabel(labels[key])
-        ax.set_ylabel("H_c = h_c / r_b (periodic state / last pass)")
-        ax.set_yscale("symlog", linthresh=1e-7)
-        ax.legend(fontsize=7)
-        ax.set_title(f"Central film vs {labels[key]} (30 N, 80 rpm, 6 balls)", fontsize=9)
-        save(fig, f"ball_{figs[key]}.png")
-    # Fig. 10: m and m_c vs load
-    fig, ax = plt.subplots(figsize=(5.5, 4))
-    for hinf, mk in zip(ambients, ("o", "s")):
-        seqs = results[(hinf, "thin_film", "load")]
-        ax.plot(loads, [s.m[-1] for s in seqs], mk + "-", label=f"m (thin film, {hinf*1e6:.0f} um)")
-        seqs = results[(hinf, "chiu", "load")]
-        ax.plot(loads, [s.m[-1] for s in seqs], "^--", label=f"m (Chiu, {hinf*1e6:.0f} um)")
-    ax.plot(loads, [s.m_c for s in results[(100e-6, "thin_film", "load")]], "k-", lw=2, label="m_c")
-    ax.set_yscale("log")
-    ax.set_xlabel("axial load [N]")
-    ax.set_ylabel("meniscus position m = x_in / b")
-    ax.legend(fontsize=7)
-    save(fig, "ball_fig10_meniscus.png")
-    # Fig. 11: ambient film
-    fig, ax = plt.subplots(figsize=(5.5, 4))
-    for hinf, mk in zip((50e-6, 100e-6, 125e-6, 150e-6), ("v", "o", "s", "D")):
-        plot_sweep(ax, balls, results[(hinf, "thin_film", "n_balls")], f"h_inf = {hinf*1e6:.0f} um", mk)
-    for r, c in COLORS.items():
-        ax.plot([], [], "o", color=c, label=r)
-    ax.set_xlabel("number of balls")
-    ax.set_ylabel("H_c (periodic state / last pass)")
-    ax.set_yscale("symlog", linthresh=1e-7)
-    ax.legend(fontsize=7)
-    save(fig, "ball_fig11_ambient.png")
-    # the inlet-film sequence at the reference point (thin film vs Chiu)
-    brg = ThrustBallBearing()
-    fig, ax = plt.subplots(figsize=(5.5, 4))
-    for hinf in (100e-6, 50e-6):
-        for rep, ls in (("thin_film", "-"), ("chiu", "--")):
-            s = brg.sequence(load=30, speed_rpm=80, ambient_film=hinf, n_passes=60, replenishment=rep,
-                             stop_at_periodic=False, **(KW if rep == "thin_film" else {}))
-            ax.semilogy(np.arange(1, s.n_run + 1), np.maximum(s.h_inlet, 1e-10) * 1e6, ls,
-                        label=f"{rep}, h_inf={hinf*1e6:.0f} um")
-    ax.set_xlabel("ball pass n")
-    ax.set_ylabel("inlet film h_in^n [um]")
-    ax.legend(fontsize=7)
-    save(fig, "ball_sequence.png")
-
-    print(f"sweep: {sum(len(v) for v in results.values())} sequences in {t_sweep:.1f} s")
-    print("paper: flooded to 5 balls / 78 rpm / 25 N; starved to 6 balls / 82 rpm / 40 N; parched beyond")
-    for (hinf, rep, key), seqs in sorted(results.items(), key=lambda t: (t[0][0], t[0][1], t[0][2])):
-        b = boundaries(list(xs[key]), seqs)
-        txt = "; ".join(f"{k} {lo:g}-{hi:g}" for k, (lo, hi) in b.items())
-        hin = ", ".join(f"{s.h_inlet[-1]*1e6:.3g}" for s in seqs)
-        print(f"h_inf={hinf*1e6:5.0f} um {rep:9s} vs {key:9s}: {txt}   [h_in(um): {hin}]")
-    return results
+    rec = JsonRecord(out / "ball_starvation.json", dict(quick=a.quick, values=values, ambients=ambients))
+    brg = ThrustBallBearing(**jeong.BEARING)
+    t0 = time.perf_counter()
+    runs = {}
+    for swept, vals in values.items():
+        series = {}
+        for hinf in ambients:
+            for name, kw in (("thin film", THIN), ("Chiu linear", CHIU)):
+                seqs = sweep(brg, swept, vals, dict(ambient_film=hinf), **kw)
+                series[f"{name}, h_inf = {hinf * 1e6:.0f} um"] = seqs
+                runs[f"{swept} | {name} | {hinf * 1e6:.0f} um"] = dict(
+                    values=vals, boundaries=boundaries(vals, seqs), H_central=[s.H_central[-1] for s in seqs],
+                    h_inlet_um=[s.h_inlet[-1] * 1e6 for s in seqs], regime=[s.final_regime for s in seqs])
+        fixed = dict(jeong.REFERENCE, ambient_film=None)  # the series differ in ambient film
+        save(plots.regime_sweep(swept, vals, series, fixed, jeong.REPORTED[swept]), out / f"ball_{FIGS[swept]}.png")
+        if swept == "load":
+            save(plots.meniscus(vals, {k: v for k, v in series.items() if "thin" in k}, fixed),
+                 out / "ball_fig10_meniscus.png")
+        rec.put("sweeps", runs)
+    series = {f"h_inf = {h * 1e6:.0f} um": sweep(brg, "n_balls", values["n_balls"], dict(ambient_film=h), **THIN)
+              for h in (50e-6, 100e-6, 125e-6, 150e-6)}
+    rec.put("ambient_film_sweep", {k: dict(boundaries=boundaries(values["n_balls"], v),
+                                           regime=[s.final_regime for s in v]) for k, v in series.items()})
+    save(plots.regime_sweep("n_balls", values["n_balls"], series, dict(jeong.REFERENCE, ambient_film=None),
+                            jeong.REPORTED["n_balls"], title="Fig. 11: central film against the number of balls for "
+                            "four ambient films (30 N, 80 rpm)"), out / "ball_fig11_ambient.png")
+    ref = jeong.REFERENCE
+    seqs = {f"{name}, h_inf = {h * 1e6:.0f} um": brg.sequence(load=ref["load"], speed_rpm=ref["speed_rpm"], ambient_film=h,
+                                                               n_passes=60, stop_at_periodic=False, **kw)
+            for h in ambients for name, kw in (("thin film", THIN), ("Chiu", CHIU))}
+    save(plots.inlet_sequence(seqs, dict(ref, ambient_film=None)), out / "ball_sequence.png")
+    log(f"{sum(len(v['values']) for v in runs.values())} sequences in {time.perf_counter() - t0:.1f} s")
+    log("paper: flooded to 5 balls / 78 rpm / 25 N; starved to 6 balls / 82 rpm / 40 N; parched beyond")
+    for k, v in runs.items():
+        log(f"{k:40s}: " + "; ".join(f"{r} {lo:g}-{hi:g}" for r, (lo, hi) in v["boundaries"].items()))
+    return rec.data
 
 
 if __name__ == "__main__":
-    main(fast="--fast" in sys.argv)
+    main(sys.argv[1:])

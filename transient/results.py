@@ -89,7 +89,7 @@ class Result:
             if not f.repr:
                 continue
             v = getattr(self, f.name)
-            u = f" {units[f.name]}" if f.name in units and units[f.name] not in ("", "-") else ""
+            u = f" {units[f.name]}" if f.name in units and units[f.name] not in ("", "-") and v is not None else ""
             if isinstance(v, np.ndarray):
                 parts.append(f"{f.name}=<{v.dtype} {'x'.join(map(str, v.shape))}>{u}")
             elif _is_scalar(v):

@@ -35,9 +35,12 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
+
 from scipy.integrate import quad
 from scipy.optimize import brentq
 from scipy.special import ellipe, ellipk
+
+from transient.results import record_type
 
 
 def reduced_modulus(youngs_modulus: float, poisson_ratio: float,
@@ -72,6 +75,7 @@ def hamrock_brewe(alpha_r: float) -> tuple[float, float, float]:
     return 1.0339 * alpha_r ** 0.6360, 1.0003 + 0.5968 / alpha_r, 1.5277 + 0.6023 * math.log(alpha_r)
 
 
+@record_type
 @dataclass(frozen=True)
 class HertzContact:
     """One elliptical Hertz contact (per ball). Lengths [m], pressure [Pa], load [N].

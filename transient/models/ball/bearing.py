@@ -42,12 +42,14 @@ from transient.physics.hertz import HertzContact, hertz_contact, meniscus_positi
 from transient.models.ball.levelling import LevellingGrid, chiu_rate
 from transient.solvers.integrate import solve
 from transient.checks import check_range
+from transient.results import Result, quantity, record_type, result_type
 
 FLOODED, STARVED, PARCHED = "fully flooded", "starved", "parched"
 REPLENISHMENT = ("thin_film", "chiu", "chiu_thin")
 
 
 
+@record_type
 @dataclass(frozen=True)
 class FloodedFilm:
     """Fully flooded Hamrock–Dowson film of one contact: groups, films [m], critical menisci."""
@@ -64,8 +66,8 @@ class FloodedFilm:
     speed: float
 
 
-@dataclass
-class BallSequence:
+@result_type
+class BallSequence(Result):
     """Ball-after-ball film sequence. Arrays indexed by pass n = 0 .. n_run-1 (films in m).
 
     ``h_inlet`` inlet film met by the ball, ``h_central``/``h_minimum`` Hamrock–Dowson films,
@@ -77,25 +79,28 @@ class BallSequence:
     ``profiles`` the track profiles [m] just before each ball (if recorded), ``x`` their abscissae [m].
     """
 
-    h_inlet: np.ndarray
-    h_central: np.ndarray
-    h_minimum: np.ndarray
-    h_outlet: np.ndarray
-    m: np.ndarray
-    regime: list
-    m_c: float
-    m_star: float
-    flooded: FloodedFilm
-    contact: HertzContact
-    t_between: float
-    periodic: bool
-    n_periodic: int
-    declining: bool
-    final_regime: str
+    time_axis = "h_inlet"  # one row per ball pass
+    h_inlet: np.ndarray = quantity("m")
+    h_central: np.ndarray = quantity("m")
+    h_minimum: np.ndarray = quantity("m")
+    h_outlet: np.ndarray = quantity("m")
+    m: np.ndarray = quantity("-")
+    regime: list = quantity("")
+    m_c: float = quantity("-")
+    m_star: float = quantity("-")
+    flooded: FloodedFilm = None
+    contact: HertzContact = None
+    t_between: float = quantity("s", 0.0)
+    periodic: bool = False
+    n_periodic: int = -1
+    declining: bool = False
+    final_regime: str = ""
     stats: dict = field(default_factory=dict)
-    x: np.ndarray | None = None
-    profiles: np.ndarray | None = None
-    volume: np.ndarray | None = None
+    x: np.ndarray | None = quantity("m", None)
+    profiles: np.ndarray | None = quantity("m", None)
+    volume: np.ndarray | None = quantity("m^2", None)
+    success: bool = True
+    message: str = ""
 
     @property
     def n_run(self) -> int:
