@@ -60,7 +60,7 @@ Units: SI at the API (m, Pa, Pa s, N, kg, s). Internally the states are scaled t
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 import numpy as np
 import scipy.sparse.linalg as spla
@@ -72,13 +72,13 @@ from transient.physics.flow_factors import PRESSURE_FLOW_TABLE, _gamma_bracket, 
 from transient.fv.grid import Axis, Grid2D
 from transient.fv.reynolds import ReynoldsOperator, residual_kernel
 from transient.surfaces.roughness import RoughSurface
-from transient.solvers.integrate import Problem, Stats, solve
+from transient.results import Result, quantity, result_type
+from transient.solvers.integrate import METHODS, Problem, Stats, solve
 from transient.checks import check_positive, check_range
 
 __all__ = ["ThrustPad", "DescentResult", "pressure_flow_clamped", "rect_shape_factor"]
 
 PATHS = ("auto", "full", "separable")
-METHODS = ("ida", "cvode", "bdf", "lsoda", "rk4", "radau")
 _SQRT2PI = math.sqrt(2.0 * math.pi)
 
 
@@ -134,8 +134,8 @@ def pressure_flow_clamped(H: float, gamma: float):
 # result
 # --------------------------------------------------------------------------------------------------
 
-@dataclass
-class DescentResult:
+@result_type
+class DescentResult(Result):
     """Squeeze descent of the pad under a constant load.
 
     ``t`` [s], ``h0`` [m] (mean-plane separation), ``dh0_dt`` [m/s], ``w_hyd`` [N] (film load),
@@ -144,20 +144,20 @@ class DescentResult:
     ``success``, ``message``; ``pressure`` [Pa] (ny, nx) at the last output (full IDA path only).
     """
 
-    t: np.ndarray
-    h0: np.ndarray
-    dh0_dt: np.ndarray
-    w_hyd: np.ndarray
-    w_asp: np.ndarray
-    contact_area: np.ndarray
-    load: float
-    mass: float
-    path: str
-    method: str
-    stats: Stats
-    success: bool
-    message: str
-    pressure: np.ndarray | None = field(default=None, repr=False)
+    t: np.ndarray = quantity("s")
+    h0: np.ndarray = quantity("m")
+    dh0_dt: np.ndarray = quantity("m/s")
+    w_hyd: np.ndarray = quantity("N")
+    w_asp: np.ndarray = quantity("N")
+    contact_area: np.ndarray = quantity("m^2")
+    load: float = quantity("N")
+    mass: float = quantity("kg")
+    path: str = quantity("")
+    method: str = quantity("")
+    stats: Stats = None
+    success: bool = True
+    message: str = ""
+    pressure: np.ndarray | None = quantity("Pa", None, repr=False)
 
     @property
     def force_residual(self) -> np.ndarray:
@@ -389,7 +389,7 @@ class ThrustPad:
         t_end = check_positive("t_end", t_end, "s")
         M = check_range("mass", mass, "kg", 0.0, math.inf, high_open=True)
         if method not in METHODS:
-            raise ValueError(f"method must be one of {METHODS}, got {method!r}")
+            raise ValueError(f"method = {method!r}; allowed: {', '.join(METHODS)}")
         if path not in PATHS:
             raise ValueError(f"path must be one of {PATHS}, got {path!r}")
         if t_eval is None:
