@@ -1,7 +1,8 @@
 """Numerical Patir-Cheng pressure flow factors vs the fits in transient.physics.flow_factors.
 
-Run: ``python scenarios/flow_factors.py [--out DIR] [--quick]`` -- writes ``flow_factors_numerical.png``
-and ``flow_factors_numerical.json`` into ``scenarios/out/flow_factors/`` (default) and prints a
+    transient run scenarios/flow_factors.py [--quick] [--out DIR] [--realisations N]
+
+Writes flow_factors_numerical.png and .json into scenarios/out/flow_factors/ (default) and prints a
 markdown table (``--out docs`` for the documentation copy).
 
 Set-up (choices, stated in the JSON): Gaussian heights, exponential ACF (Patir 1978; Patir & Cheng
@@ -12,24 +13,22 @@ rough surface against a smooth one, H = h / RMS per realisation, ``n`` realisati
 
 from __future__ import annotations
 
-import argparse
 import json
-import os
+import sys
 import time
+from pathlib import Path
 
-import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt
 import numpy as np
 
 from transient.physics.flow_factors import pressure_flow_factors
+from transient.plots import save
+from transient.plots.surfaces import flow_factors as plot_flow_factors
+from transient.study.scenario import parser
 from transient.surfaces.flow_simulation import peklenik_lengths, pressure_flow_factor_numerical
 
-HERE = os.path.dirname(os.path.abspath(__file__))
+OUT = Path(__file__).resolve().parent / "out" / "flow_factors"
 GAMMAS = (1 / 6, 1.0, 6.0)
 NAME = {1 / 6: "1/6", 1.0: "1", 6.0: "6"}
-COLOR = {1 / 6: "tab:blue", 1.0: "tab:red", 6.0: "tab:green"}
 H_VALUES = (1.0, 1.5, 2.0, 3.0, 4.0, 6.0)
 
 
@@ -42,39 +41,21 @@ def run(gamma, l0=16, n_lengths=8, refine=2, n_real=8, seed=2024, H=H_VALUES, ac
     return res, params
 
 
-def plot_flow_factors(out_path, results):
-    """phi_x vs H: Patir-Cheng fits as lines, numerical means as points with +-1 std error bars."""
-    fig, ax = plt.subplots(figsize=(7, 5))
-    Hf = np.linspace(1.0, 6.5, 200)
-    for g, (res, _) in results.items():
-        ax.plot(Hf, pressure_flow_factors(Hf, g)[0], color=COLOR[g], lw=1.5,
-                label=f"Patir–Cheng fit, γ = {NAME[g]}")
-        ax.errorbar(res.H, res.phi_mean, yerr=res.phi_std, fmt="o", color=COLOR[g], capsize=3, ms=5,
-                    label=f"flow simulation, γ = {NAME[g]} (mean ± std, {res.phi.shape[0]} patches)")
-    ax.axhline(1.0, color="0.6", lw=0.8, ls=":")
-    ax.set_xlabel("H = h / σ")
-    ax.set_ylabel("pressure flow factor φx")
-    ax.set_title("Pressure flow factor: numerical flow simulation vs Patir–Cheng (1978) fits", fontsize=10)
-    ax.legend(fontsize=7.5)
-    fig.tight_layout()
-    fig.savefig(out_path, dpi=110)
-    plt.close(fig)
-
-
 def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--out", default=os.path.join(HERE, "out", "flow_factors"))
-    ap.add_argument("--quick", action="store_true", help="coarser, refine 1, fewer realisations (a few seconds; biased high)")
+    ap = parser(__doc__, OUT)
     ap.add_argument("--realisations", type=int, default=None)
     a = ap.parse_args(argv)
-    os.makedirs(a.out, exist_ok=True)
+    out = Path(a.out)
+    out.mkdir(parents=True, exist_ok=True)
     kw = dict(l0=12, refine=1, n_real=4) if a.quick else dict(l0=16, refine=2, n_real=8)
     if a.realisations:
         kw["n_real"] = a.realisations
     t0 = time.time()
     results = {g: run(g, **kw) for g in GAMMAS}
     elapsed = time.time() - t0
-    plot_flow_factors(os.path.join(a.out, "flow_factors_numerical.png"), results)
+    Hf = np.linspace(1.0, 6.5, 200)
+    fits = {g: (Hf, pressure_flow_factors(Hf, g)[0]) for g in GAMMAS}
+    save(plot_flow_factors({g: r for g, (r, _) in results.items()}, fits, NAME), out / "flow_factors_numerical.png")
     rows = []
     print("| gamma | H | phi_x numerical (mean ± std) | s.e.m. | Patir–Cheng fit | diff / std | contact % |")
     print("|---|---|---|---|---|---|---|")
@@ -91,13 +72,13 @@ def main(argv=None):
                           gamma_measured_mean=float(np.nanmean(r.gamma)), **{k: (list(v) if isinstance(v, tuple) else v)
                                                                             for k, v in r.meta.items()})
             for g, (r, p) in results.items()}
-    with open(os.path.join(a.out, "flow_factors_numerical.json"), "w") as f:
-        json.dump(dict(settings=kw, elapsed_s=elapsed, cases=meta, rows=rows), f, indent=1)
+    (out / "flow_factors_numerical.json").write_text(json.dumps(dict(settings=kw, elapsed_s=elapsed, cases=meta,
+                                                                     rows=rows), indent=1))
     for g, (r, p) in results.items():
         print(f"gamma {NAME[g]}: grid {p['shape']} x refine {r.meta['refine']}, measured gamma "
               f"{np.nanmean(r.gamma):.2f}, max flux mismatch {r.meta['max_flux_mismatch']:.1e}")
-    print(f"elapsed {elapsed:.1f} s; outputs in {a.out}")
+    print(f"elapsed {elapsed:.1f} s; outputs in {out}")
 
 
 if __name__ == "__main__":
-    main()
+    main(sys.argv[1:])

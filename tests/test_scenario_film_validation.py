@@ -50,6 +50,7 @@ def test_quick_run_writes_files_and_second_order(scenario, tmp_path, capsys):
 
 def test_orders_reflect_the_numbers(scenario, tmp_path, monkeypatch):
     """The reported orders come from the measured errors: a first-order error model must show order 1."""
+    from transient.study import film_validation
     from transient.verification import cases
 
     real = cases.squeeze_plate_case
@@ -59,7 +60,7 @@ def test_orders_reflect_the_numbers(scenario, tmp_path, monkeypatch):
         r.err = 1.0 / n
         return r
 
-    monkeypatch.setattr(scenario, "squeeze_plate_case", first_order)
+    monkeypatch.setattr(film_validation, "squeeze_plate_case", first_order)
     res = scenario.run_validation(tmp_path, make_plot=False, **{**scenario.QUICK, "sommerfeld_grids": (8, 16),
                                                                  "short_grid": (24, 8)})
     assert np.allclose(res["squeeze"]["b/a=1"]["orders"], 1.0)

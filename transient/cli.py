@@ -69,8 +69,8 @@ def main(argv: list[str] | None = None) -> int:
         if a.command == "run":
             return _run_scenario(Path(a.scenario), a.args)
         return _bench(a, parser)
-    except KeyboardInterrupt:
-        print("transient: interrupted", file=sys.stderr)
+    except KeyboardInterrupt as e:  # a long run's Interrupted says where its checkpoint is
+        print(f"transient: {e}" if str(e) else "transient: interrupted", file=sys.stderr)
         return 130
     except (ValueError, TypeError, FileNotFoundError, RuntimeError) as e:
         if a.traceback:
