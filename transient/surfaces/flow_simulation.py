@@ -56,6 +56,7 @@ import scipy.sparse.linalg as spla
 from transient.fv.grid import Axis, Grid2D
 from transient.fv.reynolds import ReynoldsOperator
 from transient.surfaces.roughness import RoughSurface
+from transient.results import Result, quantity, result_type
 from transient.checks import check_positive, check_range
 
 __all__ = [
@@ -69,8 +70,8 @@ __all__ = [
 DIRECTIONS = ("x", "y")
 
 
-@dataclass
-class FlowFactorResult:
+@result_type
+class FlowFactorResult(Result):
     """Result of :func:`pressure_flow_factor_numerical`.
 
     ``H`` (n_H,), ``phi_mean`` and ``phi_std`` (sample standard deviation over realisations, ddof=1;
@@ -79,14 +80,17 @@ class FlowFactorResult:
     ``meta`` (grid, direction, floor, refine, max flux mismatch).  Unpacks as ``H, mean, std = result``.
     """
 
-    H: np.ndarray
-    phi_mean: np.ndarray
-    phi_std: np.ndarray
-    phi: np.ndarray
-    sigma: np.ndarray
-    gamma: np.ndarray
-    contact_fraction: np.ndarray
+    time_axis = None
+    H: np.ndarray = quantity("-")
+    phi_mean: np.ndarray = quantity("-")
+    phi_std: np.ndarray = quantity("-")
+    phi: np.ndarray = quantity("-")
+    sigma: np.ndarray = quantity("m")
+    gamma: np.ndarray = quantity("-")
+    contact_fraction: np.ndarray = quantity("-")
     meta: dict = field(default_factory=dict)
+    success: bool = True
+    message: str = ""
 
     def __iter__(self):
         return iter((self.H, self.phi_mean, self.phi_std))

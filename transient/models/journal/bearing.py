@@ -7,7 +7,7 @@ dimensionless groups are in :mod:`transient.models.journal.kernels`.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 import numpy as np
 import scipy.linalg as sla
@@ -17,6 +17,7 @@ from transient.checks import check_positive, check_range
 from transient.fv.grid import Axis, Grid2D
 from transient.models.journal.film import Film, omega
 from transient.models.journal.kernels import N_ROTOR
+from transient.results import Result, quantity, result_type
 
 
 
@@ -36,8 +37,8 @@ class Groove:
         check_range("groove.width_deg", self.width_deg, "deg", 0.0, 90.0, low_open=True)
 
 
-@dataclass
-class FilmState:
+@result_type
+class FilmState(Result):
     """A film solution with the journal at a fixed position (and, optionally, moving).
 
     ``pressure`` [Pa, absolute] and ``film_content`` (theta = rho/rho_c) are (n_axial, n_theta) arrays on
@@ -48,19 +49,22 @@ class FilmState:
     centres, in the direction of rotation.
     """
 
-    eccentricity_ratio: float
-    attitude_angle_deg: float
-    position: tuple[float, float]
-    force: tuple[float, float]
-    load: float
-    min_film: float
-    speed_rpm: float
-    pressure: np.ndarray
-    film_content: np.ndarray
-    angle_deg: np.ndarray
-    z: np.ndarray
-    u: np.ndarray = field(repr=False)
+    time_axis = None
+    eccentricity_ratio: float = quantity("-")
+    attitude_angle_deg: float = quantity("deg")
+    position: tuple[float, float] = quantity("m")
+    force: tuple[float, float] = quantity("N")
+    load: float = quantity("N")
+    min_film: float = quantity("m")
+    speed_rpm: float = quantity("rpm")
+    pressure: np.ndarray = quantity("Pa")
+    film_content: np.ndarray = quantity("-")
+    angle_deg: np.ndarray = quantity("deg")
+    z: np.ndarray = quantity("m")
+    u: np.ndarray = quantity("-", repr=False)
     newton_iterations: int = 0
+    success: bool = True
+    message: str = "converged"
 
     @property
     def max_pressure(self) -> float:

@@ -1,0 +1,134 @@
+"""The long-run driver: resume equals an uninterrupted run, checkpoints keyed on every setting, locks, damaged
+files, Ctrl-C that says where the checkpoint is; and the journal orbit's use of it."""
+
+import multiprocessing as mp
+import os
+
+import numpy as np
+import pytest
+
+from transient import JournalBearing, JournalOrbit, Problem
+from transient.params import rho_kim
+from transient.solvers.longrun import CheckpointError, Interrupted, run_long
+
+
+class Recorder:
+    def __init__(self):
+        self.t, self.y = [], []
+
+    def observe(self, t, y):
+        if not self.t or t > self.t[-1]:
+            self.t.append(t)
+            self.y.append(y.copy())
+
+    def arrays(self):
+        return dict(t=np.array(self.t), y=np.array(self.y))
+
+    def restore(self, a):
+        self.t, self.y = list(a["t"]), list(a["y"])
+
+
+def oscillator(y, t0, stop_after=None, calls=None):
+    calls = [0] if calls is None else calls
+
+    def rhs(t, y, out):
+        calls[0] += 1
+        if stop_after is not None and calls[0] > stop_after:
+            raise KeyboardInterrupt
+        out[0] = y[1]
+        out[1] = -y[0] - 0.1 * y[1] + np.cos(t)
+
+    return Problem(y0=y, rhs=rhs)
+
+
+def drive(path=None, resume=False, n=40, key=None, chunk=10, stop_after=None, method="bdf"):
+    rec = Recorder()
+    calls = [0]  # right-hand-side calls over the whole run (all chunks)
+    out = run_long(lambda y, t: oscillator(y, t, stop_after, calls), np.array([1.0, 0.0]), 0.0, 0.25, n, rec,
+                   method=method, solve_kwargs=dict(rtol=1e-9, atol=1e-12), chunk_outputs=chunk, checkpoint=path,
+                   resume=resume, key=key or dict(damping=0.1), progress=False)
+    return rec, out
+
+
+def test_resume_after_interruption_equals_an_uninterrupted_run(tmp_path):
+    full, _ = drive()
+    path = tmp_path / "ck.npz"
+    drive(path, n=20)  # "crashes" after two chunks
+    resumed, out = drive(path, resume=True)
+    assert out.resumed_from == 20
+    np.testing.assert_array_equal(np.array(resumed.t), np.array(full.t))
+    np.testing.assert_array_equal(np.array(resumed.y), np.array(full.y))
+
+
+def test_changed_setting_is_named(tmp_path):
+    path = tmp_path / "ck.npz"
+    drive(path, n=20)
+    with pytest.raises(CheckpointError, match=r"damping = 0\.1, this run has damping = 0\.2"):
+        drive(path, resume=True, key=dict(damping=0.2))
+    with pytest.raises(CheckpointError, match="already holds 20 output intervals, more than the 10"):
+        drive(path, resume=True, n=10)
+
+
+def test_damaged_checkpoint_names_the_file_and_how_to_start_afresh(tmp_path):
+    path = tmp_path / "ck.npz"
+    drive(path, n=20)
+    path.write_bytes(path.read_bytes()[:100])
+    with pytest.raises(CheckpointError, match=r"ck\.npz cannot be read .*resume=False to start afresh"):
+        drive(path, resume=True)
+
+
+def test_bad_checkpoint_folder_is_refused_before_computing(tmp_path):
+    with pytest.raises(ValueError, match="does not exist"):
+        drive(tmp_path / "nowhere" / "ck.npz")
+
+
+def _hold_lock(path, ready, release):
+    from transient.solvers.longrun import _Checkpoint
+
+    c = _Checkpoint(path, {}, "holder")
+    c.acquire()
+    ready.set()
+    release.wait(10)
+    c.release()
+
+
+def test_a_checkpoint_in_use_is_refused_with_the_process(tmp_path):
+    path = tmp_path / "ck.npz"
+    ctx = mp.get_context("fork")
+    ready, release = ctx.Event(), ctx.Event()
+    p = ctx.Process(target=_hold_lock, args=(path, ready, release))
+    p.start()
+    try:
+        assert ready.wait(10)
+        with pytest.raises(CheckpointError, match=f"in use by process {p.pid}"):
+            drive(path)
+    finally:
+        release.set()
+        p.join(10)
+    drive(path)  # free again
+
+
+def test_ctrl_c_says_where_the_checkpoint_is(tmp_path):
+    path = tmp_path / "ck.npz"
+    with pytest.raises(Interrupted, match=r"checkpoint .*ck\.npz holds [1-9][0-9.]* s: run again with resume=True"):
+        drive(path, stop_after=400, chunk=4)  # 4 outputs of 0.25 s per chunk; interrupted after a few chunks
+    rec, out = drive(path, resume=True, chunk=4)
+    assert out.resumed_from > 0 and len(rec.t) == 41
+    with pytest.raises(Interrupted, match="no checkpoint was written"):
+        drive(None, stop_after=50)
+
+
+def test_orbit_checkpoint_names_a_changed_run_setting(tmp_path):
+    o = JournalOrbit(JournalBearing(**rho_kim.BEARING, grid=(16, 2)), speed_rpm=6000, **rho_kim.ROTOR)
+    path = tmp_path / "orbit.npz"
+    o.run(1.0, outputs_per_revolution=8, chunk_revolutions=0.5, checkpoint=path)
+    for change, name in ((dict(rtol=1e-7), "rtol"), (dict(outputs_per_revolution=4), "outputs_per_revolution"),
+                         (dict(record=("force",)), "record"), (dict(touch_gap=1e-2), "touch_gap")):
+        kw = dict(dict(outputs_per_revolution=8, chunk_revolutions=0.5, checkpoint=path, resume=True), **change)
+        with pytest.raises(CheckpointError, match=f"written with {name} = "):
+            o.run(1.0, **kw)
+    other = JournalOrbit(o.bearing, speed_rpm=6000, **dict(rho_kim.ROTOR, unbalance=1e-6))
+    with pytest.raises(CheckpointError, match="unbalance"):
+        other.run(1.0, outputs_per_revolution=8, chunk_revolutions=0.5, checkpoint=path, resume=True)
+    assert not any(f.name.endswith(".tmp") for f in tmp_path.iterdir())
+    assert os.path.exists(str(path) + ".lock")
