@@ -112,3 +112,75 @@ def test_integrate_gradient_matches_finite_differences():
                  - integrate(_fields(g, u - e, [0.3, -0.2])[0].P, w, g.area)) / 2e-6
     assert np.max(np.abs(grad - fd)) / np.max(np.abs(fd)) < 1e-6
     assert integrate(np.ones(g.n), np.ones(g.n), g.area) == pytest.approx(2 * np.pi * 0.8, rel=1e-14)
+
+
+SHEAR = 0.5  # strength of the pressure-gradient dependence of the per-face conductance below
+
+
+def _face_k(op, f, dq):
+    """A per-face conductance that depends on the face's own pressure gradient G (shear-thinning-like):
+    k_f = kbar_f / (1 + SHEAR G^2), kbar_f the arithmetic mean of the cells; with its exact derivatives."""
+    def one(kL, kR, dkL, dkR, PL, PR, dPL, dPR, d, dkqL, dkqR):
+        G = (PR - PL) / d
+        s = 1.0 + SHEAR * G * G
+        kbar = 0.5 * (kL + kR)
+        kf = kbar / s
+        dk_dG = -kbar * 2.0 * SHEAR * G / s**2
+        return kf, 0.5 * dkL / s + dk_dG * (-dPL / d), 0.5 * dkR / s + dk_dG * (dPR / d), 0.5 * (dkqL + dkqR) / s
+
+    kx_or_kz = lambda d, a, b: np.where(d == 0, a, b)  # noqa: E731
+    L, R = op.fL, op.fR
+    k = kx_or_kz(op.fdir, f.kx[L], f.kz[L]), kx_or_kz(op.fdir, f.kx[R], f.kz[R])
+    dk = kx_or_kz(op.fdir, f.dkx[L], f.dkz[L]), kx_or_kz(op.fdir, f.dkx[R], f.dkz[R])
+    dkq = (kx_or_kz(op.fdir, dq[0][:, L], dq[1][:, L]), kx_or_kz(op.fdir, dq[0][:, R], dq[1][:, R]))
+    kf, dkf_L, dkf_R, dkf_q = one(k[0], k[1], dk[0], dk[1], f.P[L], f.P[R], f.dP[L], f.dP[R], op.fd, dkq[0], dkq[1])
+    i = op.bcell
+    sign = op.bside  # the boundary value is on the cell's upper (+1) or lower (-1) side
+    kc, dkc = kx_or_kz(op.bdir, f.kx[i], f.kz[i]), kx_or_kz(op.bdir, f.dkx[i], f.dkz[i])
+    dkcq = kx_or_kz(op.bdir, dq[0][:, i], dq[1][:, i])
+    G = sign * (op.bP - f.P[i]) / op.bd
+    s = 1.0 + SHEAR * G * G
+    kb = kc / s
+    dkb = dkc / s - kc * 2.0 * SHEAR * G / s**2 * (-sign * f.dP[i] / op.bd)
+    return (kf, dkf_L, dkf_R, np.ascontiguousarray(dkf_q), kb, dkb, np.ascontiguousarray(dkcq / s))
+
+
+@pytest.mark.parametrize("case", ["periodic-x", "dirichlet-x"])
+def test_per_face_conductances_jacobian_matches_finite_differences(case):
+    """The per-face seam: a conductance of the face's own pressure gradient, derivatives by both cells and by
+    the extras, against central finite differences; and the arithmetic mean given per face changes nothing."""
+    g = _grid(case)
+    op = ReynoldsOperator(g, n_extra=2, upwind=True, boundary_P=0.2, boundary_C=0.9)
+    rng = np.random.default_rng(4)
+    u = 0.9 + 0.4 * rng.random(g.n)
+    u[g.fixed] = 1.05
+    q = np.array([0.3, -0.2])
+    f, dq = _fields(g, u, q)
+    fk = _face_k(op, f, dq)
+    assert np.max(np.abs(fk[0] / (0.5 * (np.where(op.fdir == 0, f.kx[op.fL] + f.kx[op.fR],
+                                                          f.kz[op.fL] + f.kz[op.fR]))) - 1)) > 0.05  # really nonlinear
+    J = op.matrix(op.jacobian(*f[:10], dq=dq, face_k=fk)).toarray()[: g.n]
+
+    def R(v, qq):
+        fv, dqv = _fields(g, v, qq)
+        return op.residual(v, fv.P, fv.C, fv.kx, fv.kz, fv.cx, fv.cz, face_k=_face_k(op, fv, dqv))
+
+    J_fd = np.zeros((g.n, g.n + 2))
+    for c in range(g.n + 2):
+        du, dqv = np.zeros(g.n), np.zeros(2)
+        if c < g.n:
+            du[c] = 1e-6
+        else:
+            dqv[c - g.n] = 1e-6
+        J_fd[:, c] = (R(u + du, q + dqv) - R(u - du, q - dqv)) / 2e-6
+    assert np.max(np.abs(J - J_fd)) / np.max(np.abs(J_fd)) < 1e-6
+    # the arithmetic mean handed in per face gives the default operator exactly
+    kx_or_kz = lambda d, a, b: np.where(d == 0, a, b)  # noqa: E731
+    L, Rr, i = op.fL, op.fR, op.bcell
+    mean = (0.5 * kx_or_kz(op.fdir, f.kx[L] + f.kx[Rr], f.kz[L] + f.kz[Rr]),
+            0.5 * kx_or_kz(op.fdir, f.dkx[L], f.dkz[L]), 0.5 * kx_or_kz(op.fdir, f.dkx[Rr], f.dkz[Rr]),
+            np.ascontiguousarray(0.5 * kx_or_kz(op.fdir, dq[0][:, L] + dq[0][:, Rr], dq[1][:, L] + dq[1][:, Rr])),
+            kx_or_kz(op.bdir, f.kx[i], f.kz[i]), kx_or_kz(op.bdir, f.dkx[i], f.dkz[i]),
+            np.ascontiguousarray(kx_or_kz(op.bdir, dq[0][:, i], dq[1][:, i])))
+    np.testing.assert_array_equal(op.residual(u, f.P, f.C, f.kx, f.kz, f.cx, f.cz, face_k=mean), op.residual_of(u, f))
+    np.testing.assert_allclose(op.jacobian(*f[:10], dq=dq, face_k=mean), op.jacobian_of(f, dq=dq), rtol=1e-15, atol=1e-15)

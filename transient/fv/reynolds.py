@@ -60,21 +60,31 @@ class Fields(NamedTuple):
 
 
 # --------------------------------------------------------------------------------------------------
-# numba kernels (every parameter is an argument)
+# numba kernels (every parameter is an argument; the face lists travel as tuples, see FACE_TUPLES)
 # --------------------------------------------------------------------------------------------------
 
-@njit(cache=True)
-def residual_kernel(u, P, C, kx, kz, cx, cz, upwind,
-                    fL, fR, fdir, fd, fs,
-                    bcell, bside, bdir, bd, bs, bP, bC,
-                    free, u_fixed, out):
-    """``out[i] = R_i`` for the cells ``i < n_cells`` (net volume outflow; ``u_i - u_fixed_i`` if fixed).
+#: What the kernels' tuple arguments hold (built by :class:`ReynoldsOperator`):
+#: ``faces = (fL, fR, fdir, fd, fs, fpos)``: interior faces ``f`` between cells ``fL[f] -> fR[f]``, direction
+#: ``fdir`` (0 = x, 1 = z), centre distance ``fd``, face length ``fs``, Jacobian positions ``fpos`` of
+#: (L, L), (L, R), (R, L), (R, R); ``boundary = (bcell, bside, bdir, bd, bs, bP, bC, bpos)``: Dirichlet faces
+#: ``b`` of cell ``bcell``, ``bside`` +1 (face on the cell's upper side) or -1, direction, half-cell distance,
+#: length, prescribed ``P, C``, position of (cell, cell); ``cells = (free, u_fixed, pos_c)``;
+#: ``face_k = (kf, dkf_L, dkf_R, dkf_q, kb, dkb, dkb_q)``: per-face Poiseuille conductances (the seam of a
+#: film whose conductance depends on the face's own pressure gradient, e.g. shear-thinning) with their
+#: derivatives by the left / right cell's unknown and by the extras ((n_extra, n_faces)), and the same on
+#: the Dirichlet faces; empty arrays (``ReynoldsOperator.no_face_k``) select the arithmetic mean of the cells.
+FACE_TUPLES = ("faces", "boundary", "cells", "face_k")
 
-    Interior faces ``f``: cells ``fL[f] -> fR[f]``, direction ``fdir`` (0 = x, 1 = z), centre distance
-    ``fd``, face length ``fs``. Dirichlet faces ``b``: cell ``bcell``, ``bside`` +1 (face on the cell's
-    upper side) or -1 (lower side), direction, half-cell distance ``bd``, length ``bs``, prescribed
-    ``bP, bC``. Entries ``out[n_cells:]`` are not touched.
-    """
+
+@njit(cache=True)
+def residual_kernel(u, P, C, kx, kz, cx, cz, upwind, faces, boundary, cells, face_k, out):
+    """``out[i] = R_i`` for the cells ``i < n_cells`` (net volume outflow; ``u_i - u_fixed_i`` if fixed).
+    Tuple arguments: :data:`FACE_TUPLES`. Entries ``out[n_cells:]`` are not touched."""
+    fL, fR, fdir, fd, fs, fpos = faces
+    bcell, bside, bdir, bd, bs, bP, bC, bpos = boundary
+    free, u_fixed, pos_c = cells
+    kf, dkf_L, dkf_R, dkf_q, kb, dkb, dkb_q = face_k
+    per_face = kf.size > 0
     n = free.size
     for i in range(n):
         out[i] = 0.0
@@ -96,7 +106,8 @@ def residual_kernel(u, P, C, kx, kz, cx, cz, upwind,
             G = cf * C[L] if cf >= 0.0 else cf * C[R]
         else:
             G = 0.5 * (cL * C[L] + cR * C[R])
-        q = (-0.5 * (kL + kR) * (P[R] - P[L]) / fd[f] + G) * fs[f]
+        k_face = kf[f] if per_face else 0.5 * (kL + kR)
+        q = (-k_face * (P[R] - P[L]) / fd[f] + G) * fs[f]
         if free[L]:
             out[L] += q
         if free[R]:
@@ -111,6 +122,8 @@ def residual_kernel(u, P, C, kx, kz, cx, cz, upwind,
         else:
             k = kz[i]
             c = cz[i]
+        if per_face:
+            k = kb[b]
         if bside[b] > 0:  # cell = L, boundary = R; outflow = +F
             if upwind:
                 G = c * C[i] if c >= 0.0 else c * bC[b]
@@ -129,23 +142,26 @@ def residual_kernel(u, P, C, kx, kz, cx, cz, upwind,
 
 
 @njit(cache=True)
-def jacobian_kernel(P, dP, C, dC, kx, dkx, kz, dkz, cx, cz,
-                    dkx_dq, dkz_dq, dcx_dq, dcz_dq, upwind,
-                    fL, fR, fdir, fd, fs, fpos,
-                    bcell, bside, bdir, bd, bs, bP, bC, bpos,
-                    free, pos_c, pos_col_extra, data):
+def jacobian_kernel(P, dP, C, dC, kx, dkx, kz, dkz, cx, cz, dkx_dq, dkz_dq, dcx_dq, dcz_dq, upwind,
+                    faces, boundary, cells, face_k, pos_col_extra, data):
     """CSC ``data`` of ``dR/du`` (cell rows) and ``dR/dq`` (dense extra columns, cell rows).
 
-    Zeroes the whole ``data`` first (fill the extra rows afterwards). ``fpos[f]`` = positions of the
-    entries (L, L), (L, R), (R, L), (R, R); ``bpos[b]`` = position of (cell, cell); ``pos_c`` = diagonal
-    positions of the cells; ``pos_col_extra[r, e]`` = position of (r, n_cells + e). ``d*_dq`` have shape
-    (n_extra, n_cells) (use shape (0, n_cells) when there are no extras). Derivatives of the face flux::
+    Zeroes the whole ``data`` first (fill the extra rows afterwards). Tuple arguments: :data:`FACE_TUPLES`;
+    ``pos_col_extra[r, e]`` = position of (r, n_cells + e). ``d*_dq`` have shape (n_extra, n_cells) (use
+    shape (0, n_cells) when there are no extras). Derivatives of the face flux::
 
-        dF/du_L = -dk_L/2 (P_R - P_L)/d + k_f dP_L/d + dG/du_L,   dG/du_L = cx_L dC_L / 2 (central),
-                                                                   cx_f dC_L or 0 (upwind)
-        dF/du_R = -dk_R/2 (P_R - P_L)/d - k_f dP_R/d + dG/du_R
-        dF/dq_e = -(dk_L/dq_e + dk_R/dq_e)/2 (P_R - P_L)/d + dG/dq_e
+        dF/du_L = -dk_f/du_L (P_R - P_L)/d + k_f dP_L/d + dG/du_L,   dG/du_L = cx_L dC_L / 2 (central),
+                                                                     cx_f dC_L or 0 (upwind)
+        dF/du_R = -dk_f/du_R (P_R - P_L)/d - k_f dP_R/d + dG/du_R
+        dF/dq_e = -dk_f/dq_e (P_R - P_L)/d + dG/dq_e
+
+    with ``dk_f/du_L = dk_L / 2`` for the arithmetic mean, or the per-face derivatives of ``face_k``.
     """
+    fL, fR, fdir, fd, fs, fpos = faces
+    bcell, bside, bdir, bd, bs, bP, bC, bpos = boundary
+    free, u_fixed, pos_c = cells
+    kf, dkf_L, dkf_R, dkf_q, kb, dkb, dkb_q = face_k
+    per_face = kf.size > 0
     n = free.size
     ne = dkx_dq.shape[0]
     for p in range(data.size):
@@ -170,7 +186,14 @@ def jacobian_kernel(P, dP, C, dC, kx, dkx, kz, dkz, cx, cz,
         d = fd[f]
         s = fs[f]
         dPd = (P[R] - P[L]) / d
-        kf = 0.5 * (kL + kR)
+        if per_face:
+            k_face = kf[f]
+            dk_L = dkf_L[f]
+            dk_R = dkf_R[f]
+        else:
+            k_face = 0.5 * (kL + kR)
+            dk_L = 0.5 * dkL
+            dk_R = 0.5 * dkR
         cf = 0.5 * (cL + cR)  # face velocity of the content (upwind scheme)
         up_left = cf >= 0.0
         if upwind:
@@ -183,8 +206,8 @@ def jacobian_kernel(P, dP, C, dC, kx, dkx, kz, dkz, cx, cz,
         else:
             gL = 0.5 * cL * dC[L]
             gR = 0.5 * cR * dC[R]
-        dFL = (-0.5 * dkL * dPd + kf * dP[L] / d + gL) * s
-        dFR = (-0.5 * dkR * dPd - kf * dP[R] / d + gR) * s
+        dFL = (-dk_L * dPd + k_face * dP[L] / d + gL) * s
+        dFR = (-dk_R * dPd - k_face * dP[R] / d + gR) * s
         fl = free[L]
         fr = free[R]
         if fl:
@@ -202,6 +225,8 @@ def jacobian_kernel(P, dP, C, dC, kx, dkx, kz, dkz, cx, cz,
                 dkq = 0.5 * (dkz_dq[e, L] + dkz_dq[e, R])
                 dcL = dcz_dq[e, L]
                 dcR = dcz_dq[e, R]
+            if per_face:
+                dkq = dkf_q[e, f]
             if upwind:
                 gq = 0.5 * (dcL + dcR) * (C[L] if up_left else C[R])
             else:
@@ -223,6 +248,9 @@ def jacobian_kernel(P, dP, C, dC, kx, dkx, kz, dkz, cx, cz,
             k = kz[i]
             dk = dkz[i]
             c = cz[i]
+        if per_face:
+            k = kb[b]
+            dk = dkb[b]
         d = bd[b]
         s = bs[b]
         if bside[b] > 0:  # outflow = +F, F = -k (Pb - Pi)/d + G(cell -> boundary)
@@ -246,6 +274,8 @@ def jacobian_kernel(P, dP, C, dC, kx, dkx, kz, dkz, cx, cz,
             else:
                 dkq = dkz_dq[e, i]
                 dcq = dcz_dq[e, i]
+            if per_face:
+                dkq = dkb_q[e, b]
             if bside[b] > 0:
                 if upwind:
                     gq = dcq * (C[i] if c >= 0.0 else bC[b])
@@ -315,8 +345,9 @@ class ReynoldsOperator:
 
     Attributes: ``grid, stencil, pattern, n (= cells + extras), n_cells, n_extra, nnz, upwind`` and the
     kernel arrays ``fL, fR, fdir, fd, fs, fpos`` (interior faces), ``bcell, bside, bdir, bd, bs, bP, bC,
-    bpos`` (Dirichlet faces), ``free, u_fixed, pos_c, pos_col_extra``. Models that call the kernels from
-    their own numba code pass :attr:`residual_args` / :attr:`jacobian_args` after the field arrays.
+    bpos`` (Dirichlet faces), ``free, u_fixed, pos_c, pos_col_extra``, bundled as the kernels take them in
+    :attr:`faces`, :attr:`boundary`, :attr:`cells` and :attr:`no_face_k` (:data:`FACE_TUPLES`). Models that
+    call the kernels from their own numba code pass :attr:`face_tuples` after the field arrays.
     """
 
     def __init__(self, grid: Grid2D, n_extra: int = 0, upwind: bool = False, boundary_P=0.0, boundary_C=1.0):
@@ -375,6 +406,8 @@ class ReynoldsOperator:
         self.pos_c = np.ascontiguousarray(st.pos[:, CENTRE])
         self.pos_col_extra = np.ascontiguousarray(st.pos_col_extra)
         self._no_dq = np.zeros((0, self.n_cells))
+        e1, e2 = np.zeros(0), np.zeros((n_extra, 0))
+        self.no_face_k = (e1, e1, e1, e2, e1, e1, e2)
         for side in SIDES:
             self.set_boundary(side, boundary_P, boundary_C)
 
@@ -397,31 +430,36 @@ class ReynoldsOperator:
             self.bC[sl] = _as_float(C, m, f"boundary C on side {side}")
 
     @property
-    def residual_args(self):
-        """Arguments of :func:`residual_kernel` after ``upwind``."""
-        return (self.fL, self.fR, self.fdir, self.fd, self.fs, self.bcell, self.bside, self.bdir, self.bd,
-                self.bs, self.bP, self.bC, self.free, self.u_fixed)
+    def faces(self):
+        """Interior-face tuple of the kernels (:data:`FACE_TUPLES`)."""
+        return (self.fL, self.fR, self.fdir, self.fd, self.fs, self.fpos)
 
     @property
-    def jacobian_face_args(self):
-        """Face and boundary arrays of :func:`jacobian_kernel` (``fL`` ... ``pos_c``), for models whose own
-        kernels take the extra-column positions separately."""
-        return (self.fL, self.fR, self.fdir, self.fd, self.fs, self.fpos, self.bcell, self.bside, self.bdir,
-                self.bd, self.bs, self.bP, self.bC, self.bpos, self.free, self.pos_c)
+    def boundary(self):
+        """Dirichlet-face tuple of the kernels (:data:`FACE_TUPLES`); ``bP, bC`` are the arrays themselves, so
+        :meth:`set_boundary` after taking it still counts."""
+        return (self.bcell, self.bside, self.bdir, self.bd, self.bs, self.bP, self.bC, self.bpos)
 
     @property
-    def jacobian_args(self):
-        """Arguments of :func:`jacobian_kernel` after ``upwind``."""
-        return self.jacobian_face_args + (self.pos_col_extra,)
+    def cells(self):
+        """Cell tuple of the kernels (:data:`FACE_TUPLES`)."""
+        return (self.free, self.u_fixed, self.pos_c)
 
-    def residual(self, u, P, C, kx, kz, cx, cz, out=None) -> np.ndarray:
-        """``R`` (length ``n_cells``, or written into ``out[:n_cells]``). See the module docstring."""
+    @property
+    def face_tuples(self):
+        """``(faces, boundary, cells)``: what every kernel takes after the field arrays."""
+        return (self.faces, self.boundary, self.cells)
+
+    def residual(self, u, P, C, kx, kz, cx, cz, out=None, face_k=None) -> np.ndarray:
+        """``R`` (length ``n_cells``, or written into ``out[:n_cells]``). See the module docstring;
+        ``face_k``: per-face conductances (:data:`FACE_TUPLES`) instead of the cells' arithmetic mean."""
         if out is None:
             out = np.empty(self.n_cells)
-        residual_kernel(u, P, C, kx, kz, cx, cz, self.upwind, *self.residual_args, out)
+        residual_kernel(u, P, C, kx, kz, cx, cz, self.upwind, *self.face_tuples,
+                        self.no_face_k if face_k is None else face_k, out)
         return out
 
-    def jacobian(self, P, dP, C, dC, kx, dkx, kz, dkz, cx, cz, dq=None, data=None) -> np.ndarray:
+    def jacobian(self, P, dP, C, dC, kx, dkx, kz, dkz, cx, cz, dq=None, data=None, face_k=None) -> np.ndarray:
         """CSC data (pattern order) of ``dR/du`` and, if ``dq = (dkx_dq, dkz_dq, dcx_dq, dcz_dq)`` (each
         (n_extra, n_cells)) is given, the dense columns ``dR/dq``. Extra rows are left zero."""
         if data is None:
@@ -430,7 +468,8 @@ class ReynoldsOperator:
             dq = (self._no_dq,) * 4
         elif self.n_extra == 0:
             raise ValueError("dq given but the operator has n_extra=0")
-        jacobian_kernel(P, dP, C, dC, kx, dkx, kz, dkz, cx, cz, *dq, self.upwind, *self.jacobian_args, data)
+        jacobian_kernel(P, dP, C, dC, kx, dkx, kz, dkz, cx, cz, *dq, self.upwind, *self.face_tuples,
+                        self.no_face_k if face_k is None else face_k, self.pos_col_extra, data)
         return data
 
     def residual_of(self, u, f: Fields, out=None) -> np.ndarray:

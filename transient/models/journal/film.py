@@ -65,29 +65,28 @@ class Film:
         self.pos_row = np.ascontiguousarray(op.stencil.pos_row_extra)
         self.pos_col = np.ascontiguousarray(op.stencil.pos_col_extra)
         self.indices = op.stencil.indices
-
-    def fields(self):
-        """The scratch field arrays in the order the kernels take them."""
-        return (self.H, self.P, self.dP, self.C, self.D, self.dD, self.k, self.c)
+        # the kernels' tuple arguments (models/journal/kernels.py)
+        ne = op.n_extra
+        self.switch = (self.beta_bar, self.width, self.content_scale)
+        self.geo = (self.cosp, self.sinp, self.area)
+        self.fields = (self.H, self.P, self.dP, self.C, self.D, self.dD, self.k, self.c, self.zero, self.R)
+        self.extras = (self.dk_dq[:ne], self.dc_dq[:ne], self.no_dq[:ne], self.pos_row, self.pos_col, self.indices,
+                       self.scale)
+        self.fv = op.face_tuples + (op.no_face_k,)
 
     # residual / Jacobian of the prescribed-motion film equations G(u) = 0 --------------------------
     def residual(self, u, X, Y, VX=0.0, VY=0.0, rate=0.0, C_ref=None, out=None):
         """G(u) of :func:`~transient.models.journal.kernels.film_residual`; also leaves the fields (P, theta,
         ...) of ``u`` in the film's scratch arrays."""
-        w, op = self, self.op
         out = np.empty(self.n) if out is None else out
-        film_residual(u, X, Y, VX, VY, rate, w.zero if C_ref is None else C_ref, out, self.beta_bar, self.width,
-                      self.content_scale, w.cosp, w.sinp, w.area, *w.fields(), w.zero, *op.residual_args)
+        film_residual(u, X, Y, VX, VY, rate, self.zero if C_ref is None else C_ref, out, self.switch, self.geo,
+                      self.fields, self.fv)
         return out
 
     def jacobian_data(self, u, X, Y, VX=0.0, VY=0.0, rate=0.0, data=None):
         """CSC data of dG/du (+ the rotor columns if the operator has them), pattern order."""
-        w, op = self, self.op
-        data = np.empty(op.nnz) if data is None else data
-        ne = op.n_extra
-        film_jacobian(u, X, Y, VX, VY, rate, data, self.beta_bar, self.width, self.content_scale,
-                      w.cosp, w.sinp, w.area,
-                      *w.fields(), w.zero, w.dk_dq[:ne], w.dc_dq[:ne], w.no_dq[:ne], w.pos_col, *op.jacobian_face_args)
+        data = np.empty(self.op.nnz) if data is None else data
+        film_jacobian(u, X, Y, VX, VY, rate, data, self.switch, self.geo, self.fields, self.extras, self.fv)
         return data
 
     def solve(self, X, Y, VX=0.0, VY=0.0, u0=None, tol=1e-10, max_iter=400):

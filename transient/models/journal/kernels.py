@@ -81,34 +81,48 @@ def rotor_accelerations(tau, fx, fy, kappa, wbar, ebar):
     return kappa * fx + wbar + ebar * np.cos(tau), kappa * fy + ebar * np.sin(tau)
 
 
+# Kernel arguments travel as tuples (built once by :class:`~transient.models.journal.film.Film`):
+#   switch = (beta_bar, width, content_scale)       the Elrod switch (physics.cavitation)
+#   rotor  = (kappa, wbar, ebar, sym)               the rotor groups (module docstring)
+#   geo    = (cosp, sinp, area)                     per cell
+#   fields = (H, P, dP, C, D, dD, k, c, zero, R)    scratch arrays, filled by film_fields
+#   extras = (dk_dq, dc_dq, no_dq, pos_row, pos_col, indices, scale)   the rotor columns and rows
+#   fv     = (faces, boundary, cells, face_k)       the operator's face tuples (fv.reynolds.FACE_TUPLES)
+
 @njit(cache=True)
-def _stencil_residual(u, X, Y, beta_bar, width, content_scale, cosp, sinp, H, P, dP, C, D, dD, k, c, zero, R,
-                      fL, fR, fdir, fd, fs, bcell, bside, bdir, bd, bs, bP, bC, free, u_fixed):
+def _stencil_residual(u, X, Y, switch, geo, fields, fv, R):
+    beta_bar, width, content_scale = switch
+    cosp, sinp, area = geo
+    H, P, dP, C, D, dD, k, c, zero, _ = fields
+    faces, boundary, cells, face_k = fv
     film_fields(u, X, Y, cosp, sinp, beta_bar, width, content_scale, H, P, dP, C, D, dD, k, c)
-    residual_kernel(u, P, C, k, k, c, zero, True, fL, fR, fdir, fd, fs, bcell, bside, bdir, bd, bs, bP, bC,
-                    free, u_fixed, R)
+    residual_kernel(u, P, C, k, k, c, zero, True, faces, boundary, cells, face_k, R)
 
 
 @njit(cache=True)
-def _stencil_jacobian(u, X, Y, beta_bar, width, content_scale, cosp, sinp, H, P, dP, C, D, dD, k, c, zero, dk_dq, dc_dq, no_dq,
-                      pos_col, fL, fR, fdir, fd, fs, fpos, bcell, bside, bdir, bd, bs, bP, bC, bpos, free, pos_c,
-                      data):
+def _stencil_jacobian(u, X, Y, switch, geo, fields, extras, fv, data):
+    beta_bar, width, content_scale = switch
+    cosp, sinp, area = geo
+    H, P, dP, C, D, dD, k, c, zero, _ = fields
+    dk_dq, dc_dq, no_dq, pos_row, pos_col, indices, scale = extras
+    faces, boundary, cells, face_k = fv
     film_fields(u, X, Y, cosp, sinp, beta_bar, width, content_scale, H, P, dP, C, D, dD, k, c)
     if dk_dq.shape[0] > 0:
         position_derivatives(H, cosp, sinp, dk_dq, dc_dq)
     jacobian_kernel(P, dP, C, D, k, zero, k, zero, c, zero, dk_dq, dk_dq, dc_dq, no_dq, True,
-                    fL, fR, fdir, fd, fs, fpos, bcell, bside, bdir, bd, bs, bP, bC, bpos, free, pos_c, pos_col, data)
+                    faces, boundary, cells, face_k, pos_col, data)
 
 
 @njit(cache=True)
-def ode_rhs(tau, y, out, beta_bar, width, content_scale, kappa, wbar, ebar, sym, cosp, sinp, area,
-            H, P, dP, C, D, dD, k, c, zero, R,
-            fL, fR, fdir, fd, fs, bcell, bside, bdir, bd, bs, bP, bC, free, u_fixed):
+def ode_rhs(tau, y, out, switch, rotor, geo, fields, fv):
     """ODE right-hand side ``y' = f(tau, y)`` of the film + rotor (module docstring)."""
+    kappa, wbar, ebar, sym = rotor
+    cosp, sinp, area = geo
+    H, P, dP, C, D, dD, k, c, zero, R = fields
+    free = fv[2][0]
     n = free.size
     X, Y, VX, VY = y[n], y[n + 1], y[n + 2], y[n + 3]
-    _stencil_residual(y[:n], X, Y, beta_bar, width, content_scale, cosp, sinp, H, P, dP, C, D, dD, k, c, zero, R,
-                      fL, fR, fdir, fd, fs, bcell, bside, bdir, bd, bs, bP, bC, free, u_fixed)
+    _stencil_residual(y[:n], X, Y, switch, geo, fields, fv, R)
     for i in range(n):
         if free[i]:
             out[i] = (-R[i] / area[i] - C[i] * (VX * cosp[i] + VY * sinp[i])) / (H[i] * D[i])
@@ -121,9 +135,7 @@ def ode_rhs(tau, y, out, beta_bar, width, content_scale, kappa, wbar, ebar, sym,
 
 
 @njit(cache=True)
-def ode_jacobian(tau, y, data, f, beta_bar, width, content_scale, kappa, sym, cosp, sinp, area,
-                 H, P, dP, C, D, dD, k, c, zero, dk_dq, dc_dq, no_dq, pos_row, pos_col, indices, scale,
-                 fL, fR, fdir, fd, fs, fpos, bcell, bside, bdir, bd, bs, bP, bC, bpos, free, pos_c):
+def ode_jacobian(tau, y, data, f, switch, rotor, geo, fields, extras, fv):
     """CSC data of ``df/dy`` for :func:`ode_rhs`; ``f`` must hold ``f(tau, y)`` at the same state::
 
         df_i/du_j = -dR_i/du_j / (H_i D_i A_i) - delta_ij (H'_i / H_i + f_i D'_i / D_i)
@@ -131,11 +143,14 @@ def ode_jacobian(tau, y, data, f, beta_bar, width, content_scale, kappa, sym, co
         df_i/dVX  = -theta_i cos(phi_i) / (H_i D_i)                     (likewise Y, VY with sin)
         df_VX/du_j = kappa sym P'(u_j) cos(phi_j) A_j,  df_X/dVX = 1
     """
+    kappa, wbar, ebar, sym = rotor
+    cosp, sinp, area = geo
+    H, P, dP, C, D, dD, k, c, zero, R = fields
+    dk_dq, dc_dq, no_dq, pos_row, pos_col, indices, scale = extras
+    free, u_fixed, pos_c = fv[2]
     n = free.size
     X, Y, VX, VY = y[n], y[n + 1], y[n + 2], y[n + 3]
-    _stencil_jacobian(y[:n], X, Y, beta_bar, width, content_scale, cosp, sinp, H, P, dP, C, D, dD, k, c, zero, dk_dq, dc_dq,
-                      no_dq, pos_col, fL, fR, fdir, fd, fs, fpos, bcell, bside, bdir, bd, bs, bP, bC, bpos, free,
-                      pos_c, data)
+    _stencil_jacobian(y[:n], X, Y, switch, geo, fields, extras, fv, data)
     for i in range(n):
         scale[i] = -1.0 / (H[i] * D[i] * area[i]) if free[i] else 0.0
     scale_rows(data, indices, scale)  # rotor rows: scale 1 (they are filled below)
@@ -156,15 +171,16 @@ def ode_jacobian(tau, y, data, f, beta_bar, width, content_scale, kappa, sym, co
 
 
 @njit(cache=True)
-def dae_residual(tau, y, yp, out, beta_bar, width, content_scale, kappa, wbar, ebar, sym, cosp, sinp, area,
-                 H, P, dP, C, D, dD, k, c, zero, R,
-                 fL, fR, fdir, fd, fs, bcell, bside, bdir, bd, bs, bP, bC, free, u_fixed):
+def dae_residual(tau, y, yp, out, switch, rotor, geo, fields, fv):
     """IDA residual ``F(tau, y, y')`` of the film + rotor (module docstring); groove cells: ``u' = 0``."""
+    kappa, wbar, ebar, sym = rotor
+    cosp, sinp, area = geo
+    H, P, dP, C, D, dD, k, c, zero, R = fields
+    free = fv[2][0]
     n = free.size
     X, Y, VX, VY = y[n], y[n + 1], y[n + 2], y[n + 3]
     Xd, Yd = yp[n], yp[n + 1]
-    _stencil_residual(y[:n], X, Y, beta_bar, width, content_scale, cosp, sinp, H, P, dP, C, D, dD, k, c, zero, R,
-                      fL, fR, fdir, fd, fs, bcell, bside, bdir, bd, bs, bP, bC, free, u_fixed)
+    _stencil_residual(y[:n], X, Y, switch, geo, fields, fv, R)
     for i in range(n):
         if free[i]:
             out[i] = area[i] * (H[i] * D[i] * yp[i] + C[i] * (Xd * cosp[i] + Yd * sinp[i])) + R[i]
@@ -179,20 +195,21 @@ def dae_residual(tau, y, yp, out, beta_bar, width, content_scale, kappa, wbar, e
 
 
 @njit(cache=True)
-def dae_jacobian(tau, y, yp, cj, data, beta_bar, width, content_scale, kappa, sym, cosp, sinp, area,
-                 H, P, dP, C, D, dD, k, c, zero, dk_dq, dc_dq, no_dq, pos_row, pos_col,
-                 fL, fR, fdir, fd, fs, fpos, bcell, bside, bdir, bd, bs, bP, bC, bpos, free, pos_c):
+def dae_jacobian(tau, y, yp, cj, data, switch, rotor, geo, fields, extras, fv):
     """CSC data of ``dF/dy + cj dF/dy'`` for :func:`dae_residual`::
 
         dF_i/du_i += A_i (H_i D'_i u_i' + D_i H'_i + cj H_i D_i),   dF_i/dX += A_i cos (D_i u_i' + cj theta_i)
         dF_VX/du_j = -kappa sym P'(u_j) cos(phi_j) A_j,  dF_X/dX = cj,  dF_X/dVX = -1,  dF_VX/dVX = cj
     """
+    kappa, wbar, ebar, sym = rotor
+    cosp, sinp, area = geo
+    H, P, dP, C, D, dD, k, c, zero, R = fields
+    dk_dq, dc_dq, no_dq, pos_row, pos_col, indices, scale = extras
+    free, u_fixed, pos_c = fv[2]
     n = free.size
     X, Y = y[n], y[n + 1]
     Xd, Yd = yp[n], yp[n + 1]
-    _stencil_jacobian(y[:n], X, Y, beta_bar, width, content_scale, cosp, sinp, H, P, dP, C, D, dD, k, c, zero, dk_dq, dc_dq,
-                      no_dq, pos_col, fL, fR, fdir, fd, fs, fpos, bcell, bside, bdir, bd, bs, bP, bC, bpos, free,
-                      pos_c, data)
+    _stencil_jacobian(y[:n], X, Y, switch, geo, fields, extras, fv, data)
     for i in range(n):
         if free[i]:
             a = area[i]
@@ -213,9 +230,7 @@ def dae_jacobian(tau, y, yp, cj, data, beta_bar, width, content_scale, kappa, sy
 
 
 @njit(cache=True)
-def film_residual(u, X, Y, VX, VY, rate, C_ref, out, beta_bar, width, content_scale, cosp, sinp, area,
-                  H, P, dP, C, D, dD, k, c, zero,
-                  fL, fR, fdir, fd, fs, bcell, bside, bdir, bd, bs, bP, bC, free, u_fixed):
+def film_residual(u, X, Y, VX, VY, rate, C_ref, out, switch, geo, fields, fv):
     """Film equations for a prescribed journal motion (steady solves and the RK4 baseline)::
 
         G_i = R_i + A_i (theta_i H'_i + rate H_i (theta_i - theta_ref,i)),   H' = VX cos + VY sin
@@ -224,22 +239,24 @@ def film_residual(u, X, Y, VX, VY, rate, C_ref, out, beta_bar, width, content_sc
     backward-Euler step of length dtau from the content ``theta_ref`` (Elrod's time discretisation,
     used per RK4 stage, and the pseudo-time steps of the steady solver).
     """
-    _stencil_residual(u, X, Y, beta_bar, width, content_scale, cosp, sinp, H, P, dP, C, D, dD, k, c, zero, out,
-                      fL, fR, fdir, fd, fs, bcell, bside, bdir, bd, bs, bP, bC, free, u_fixed)
+    cosp, sinp, area = geo
+    H, P, dP, C, D, dD, k, c, zero, R = fields
+    free = fv[2][0]
+    _stencil_residual(u, X, Y, switch, geo, fields, fv, out)
     for i in range(u.size):
         if free[i]:
             out[i] += area[i] * (C[i] * (VX * cosp[i] + VY * sinp[i]) + rate * H[i] * (C[i] - C_ref[i]))
 
 
 @njit(cache=True)
-def film_jacobian(u, X, Y, VX, VY, rate, data, beta_bar, width, content_scale, cosp, sinp, area,
-                  H, P, dP, C, D, dD, k, c, zero, dk_dq, dc_dq, no_dq, pos_col,
-                  fL, fR, fdir, fd, fs, fpos, bcell, bside, bdir, bd, bs, bP, bC, bpos, free, pos_c):
+def film_jacobian(u, X, Y, VX, VY, rate, data, switch, geo, fields, extras, fv):
     """CSC data of ``dG/du`` for :func:`film_residual`, and -- if the operator has 4 extra unknowns --
     ``dG/dX, dG/dY`` (rate = 0 only) and ``dG/dVX, dG/dVY = A theta (cos, sin)`` in the extra columns."""
-    _stencil_jacobian(u, X, Y, beta_bar, width, content_scale, cosp, sinp, H, P, dP, C, D, dD, k, c, zero, dk_dq, dc_dq, no_dq,
-                      pos_col, fL, fR, fdir, fd, fs, fpos, bcell, bside, bdir, bd, bs, bP, bC, bpos, free, pos_c,
-                      data)
+    cosp, sinp, area = geo
+    H, P, dP, C, D, dD, k, c, zero, R = fields
+    dk_dq, dc_dq, no_dq, pos_row, pos_col, indices, scale = extras
+    free, u_fixed, pos_c = fv[2]
+    _stencil_jacobian(u, X, Y, switch, geo, fields, extras, fv, data)
     ne = dk_dq.shape[0]
     for i in range(u.size):
         if free[i]:

@@ -166,31 +166,25 @@ class JournalOrbit:
 
         ``touch_gap`` > 0 adds a terminal event when the eccentricity ratio reaches ``1 - touch_gap``
         (the journal touches the bearing)."""
-        f, w, op = self.film, self.film, self.film.op
+        f = self.film
         y0 = self.initial_state() if y0 is None else np.asarray(y0, dtype=float)
-        common = (f.beta_bar, f.width, f.content_scale)
-        scratch = (*w.fields(), w.zero, w.R)
-        rargs = op.residual_args
         n = f.n
-        kappa, wbar, ebar, sym = self.kappa, self.wbar, self.ebar, w.sym
-        geo = (w.cosp, w.sinp, w.area)
-        jargs = op.jacobian_face_args
+        switch, geo, fields, extras, fv = f.switch, f.geo, f.fields, f.extras, f.fv
+        rotor = (self.kappa, self.wbar, self.ebar, f.sym)
         fbuf = np.empty(self.n)
 
         def rhs(t, y, out):
-            ode_rhs(t, y, out, *common, kappa, wbar, ebar, sym, *geo, *scratch, *rargs)
+            ode_rhs(t, y, out, switch, rotor, geo, fields, fv)
 
         def jac_rhs(t, y, data):
-            ode_rhs(t, y, fbuf, *common, kappa, wbar, ebar, sym, *geo, *scratch, *rargs)
-            ode_jacobian(t, y, data, fbuf, *common, kappa, sym, *geo, *w.fields(), w.zero,
-                         w.dk_dq, w.dc_dq, w.no_dq, w.pos_row, w.pos_col, w.indices, w.scale, *jargs)
+            ode_rhs(t, y, fbuf, switch, rotor, geo, fields, fv)
+            ode_jacobian(t, y, data, fbuf, switch, rotor, geo, fields, extras, fv)
 
         def residual(t, y, yp, out):
-            dae_residual(t, y, yp, out, *common, kappa, wbar, ebar, sym, *geo, *scratch, *rargs)
+            dae_residual(t, y, yp, out, switch, rotor, geo, fields, fv)
 
         def jac_residual(t, y, yp, cj, data):
-            dae_jacobian(t, y, yp, cj, data, *common, kappa, sym, *geo, *w.fields(),
-                         w.zero, w.dk_dq, w.dc_dq, w.no_dq, w.pos_row, w.pos_col, *jargs)
+            dae_jacobian(t, y, yp, cj, data, switch, rotor, geo, fields, extras, fv)
 
         yp0 = np.empty(self.n)
         rhs(tau0, y0, yp0)
@@ -201,7 +195,7 @@ class JournalOrbit:
             def events(t, y, out):
                 out[0] = limit - (y[n] ** 2 + y[n + 1] ** 2)
 
-        return Problem(y0=y0, yp0=yp0, rhs=rhs, residual=residual, jac_pattern=op.pattern, jac_rhs=jac_rhs,
+        return Problem(y0=y0, yp0=yp0, rhs=rhs, residual=residual, jac_pattern=f.op.pattern, jac_rhs=jac_rhs,
                        jac_residual=jac_residual, events=events, n_events=1 if events else 0,
                        event_terminal=[True], event_direction=[-1], name="journal orbit")
 

@@ -493,7 +493,7 @@ class _FullDAE:
         self.kx = np.empty(n)
         self.kz = np.empty(n)
         self.dq = (np.zeros((2, n)), np.zeros((2, n)), np.zeros((2, n)), np.zeros((2, n)))
-        self.res_args = op.residual_args
+        self.res_args = op.face_tuples + (op.no_face_k,)
         self.st = op.stencil
         # positions of the dense-row entries
         self.pos_hh = int(self.st.pos_row_extra[0, n])
