@@ -2,6 +2,10 @@
 
     transient run SCENARIO.py [args ...]   run a scenario script (``--help`` lists its options; every scenario
                                            takes ``--quick`` and ``--out DIR``)
+    transient run SCENE.toml [--out DIR]   run a scene file (one model run: result, scalars, figure)
+    transient sweep SCENE.toml --param NAME=a:b:n [--param ...] [--workers N | --scheduler ADDRESS]
+                                           [--store DIR]
+                                           sweep it (grid of the values; resumable; table + figures in DIR)
     transient bench NAME [--out DIR] [--quick]
                                            run a benchmark; its section, figures and raw numbers go to DIR
                                            (default ./bench_results; ``--out docs`` updates the committed tables)
@@ -28,9 +32,16 @@ def _parser() -> argparse.ArgumentParser:
     parser.add_argument("--version", action="version", version=f"transient {transient.__version__}")
     parser.add_argument("--traceback", action="store_true", help="show the full traceback of an error")
     sub = parser.add_subparsers(dest="command", required=True)
-    p_run = sub.add_parser("run", help="run a scenario script")
-    p_run.add_argument("scenario", help="path to a scenario .py file (see scenarios/)")
-    p_run.add_argument("args", nargs=argparse.REMAINDER, help="arguments passed to the scenario")
+    p_run = sub.add_parser("run", help="run a scenario script or a scene file")
+    p_run.add_argument("scenario", help="a scenario .py file (see scenarios/) or a scene .toml file")
+    p_run.add_argument("args", nargs=argparse.REMAINDER, help="arguments passed to the scenario (a scene: --out DIR)")
+    p_sweep = sub.add_parser("sweep", help="sweep a scene file over parameter values")
+    p_sweep.add_argument("scene", help="a scene .toml file")
+    p_sweep.add_argument("--param", action="append", default=[], metavar="NAME=VALUES",
+                         help="swept parameter: NAME=a:b:n (n values), NAME=a:b (integers), NAME=a,b,c")
+    p_sweep.add_argument("--workers", type=int, help="local worker processes (default: the cores)")
+    p_sweep.add_argument("--scheduler", help="address of a Dask scheduler (instead of the local pool)")
+    p_sweep.add_argument("--store", help="folder of the results (default: sweep_KIND)")
     p_bench = sub.add_parser("bench", help="run a benchmark and write its section, figures and numbers")
     p_bench.add_argument("name", nargs="?", help="benchmark name (see --list)")
     p_bench.add_argument("--list", action="store_true", help="list the benchmarks")
@@ -42,9 +53,38 @@ def _parser() -> argparse.ArgumentParser:
 def _run_scenario(path: Path, args: list[str]) -> int:
     if not path.is_file():
         raise FileNotFoundError(f"scenario file not found: {path}")
+    if path.suffix == ".toml":
+        from transient.study.scene import load_scene, run_scene
+
+        ap = argparse.ArgumentParser(prog=f"transient run {path}")
+        ap.add_argument("--out", default=str(path.with_suffix("")) + "_out", help="output folder")
+        a = ap.parse_args(args)
+        _, scalars = run_scene(load_scene(path), a.out)
+        for k, v in scalars.items():
+            print(f"{k:24s} {v}")
+        print(f"written: {a.out}")
+        return 0
     sys.argv = [str(path), *args]
     runpy.run_path(str(path), run_name="__main__")
     return 0
+
+
+def _sweep(a) -> int:
+    from transient.study.scene import load_scene
+    from transient.study.sweep import parse_values, sweep
+
+    values = {}
+    for spec in a.param:
+        name, sep, vals = spec.partition("=")
+        if not sep:
+            raise ValueError(f"--param {spec!r}: expected NAME=VALUES")
+        values[name.strip()] = parse_values(vals)
+    res = sweep(load_scene(a.scene), values, store=a.store, workers=a.workers, scheduler=a.scheduler)
+    print(res.message)
+    for f in res.failures:
+        print(f"  failed: {f}")
+    print(f"table: {Path(res.store) / 'results.parquet'} and results.csv")
+    return 0 if res.success else 1
 
 
 def _bench(a, parser) -> int:
@@ -68,11 +108,13 @@ def main(argv: list[str] | None = None) -> int:
     try:
         if a.command == "run":
             return _run_scenario(Path(a.scenario), a.args)
+        if a.command == "sweep":
+            return _sweep(a)
         return _bench(a, parser)
     except KeyboardInterrupt as e:  # a long run's Interrupted says where its checkpoint is
         print(f"transient: {e}" if str(e) else "transient: interrupted", file=sys.stderr)
         return 130
-    except (ValueError, TypeError, FileNotFoundError, RuntimeError) as e:
+    except (ValueError, TypeError, FileNotFoundError, RuntimeError, ImportError) as e:
         if a.traceback:
             raise
         print(f"transient: error: {e}", file=sys.stderr)

@@ -52,7 +52,7 @@ import math
 from dataclasses import dataclass, field
 
 import numpy as np
-from scipy import optimize, signal
+from scipy import optimize
 from transient.checks import check_positive, check_range
 
 __all__ = [
@@ -124,6 +124,8 @@ def _solve_1d(r: np.ndarray, tol: float = 1e-13, maxiter: int = 100) -> np.ndarr
 
 def _autocorr_2d_lags(a: np.ndarray, P: np.ndarray, Q: np.ndarray) -> np.ndarray:
     """R_pq = sum_kl a_kl a_{k+p,l+q} for the lag lists P (>= 0), Q (any sign)."""
+    from scipy import signal  # imported on use: 1 s of import time for every process otherwise
+
     full = signal.correlate(a, a, mode="full", method="direct")  # index (p + n-1, q + m-1)
     n, m = a.shape
     return full[P + n - 1, Q + m - 1]
@@ -519,6 +521,8 @@ class RoughSurface:
         if method == "fft":
             z = np.fft.irfft2(np.fft.rfft2(eta) * sqS, s=(ny, nx))
         else:
+            from scipy import signal
+
             z = signal.fftconvolve(eta, kern[::-1, ::-1], mode="valid")  # = correlate(eta, a)
         z *= rq / math.sqrt(s2)
         meta = dict(method=method, heights=family, target_rq=rq, target_skewness=sk, target_kurtosis=ku,
