@@ -281,29 +281,51 @@ def _execute(jobs, workers, scheduler):
         for j in jobs:
             yield run_point(*j)
         return
+    pool = _pool(workers)
+    pending, queue = set(), iter(jobs)
+    for j in itertools.islice(queue, 2 * workers):
+        pending.add(pool.submit(run_point, *j))
+    while pending:
+        done, pending = wait(pending, return_when=FIRST_COMPLETED)
+        for f in done:
+            yield f.result()
+            nxt = next(queue, None)
+            if nxt is not None:
+                pending.add(pool.submit(run_point, *nxt))
+
+
+_POOLS: dict = {}
+
+
+def _pool(workers: int) -> ProcessPoolExecutor:
+    """The process pool of ``workers`` single-threaded workers, kept for the life of this process: its
+    workers import the package and load the numba kernels once, not per sweep."""
+    import atexit
     import multiprocessing as mp
 
+    pool = _POOLS.get(workers)
+    if pool is not None and not getattr(pool, "_broken", False):
+        return pool
     saved = {k: os.environ.get(k) for k in ONE_THREAD}
     os.environ.update(ONE_THREAD)  # spawned workers inherit it before they import numpy or numba
     try:
-        with ProcessPoolExecutor(max_workers=workers, mp_context=mp.get_context("spawn"),
-                                 initializer=_worker_init) as pool:
-            pending, queue = set(), iter(jobs)
-            for j in itertools.islice(queue, 2 * workers):
-                pending.add(pool.submit(run_point, *j))
-            while pending:
-                done, pending = wait(pending, return_when=FIRST_COMPLETED)
-                for f in done:
-                    yield f.result()
-                    nxt = next(queue, None)
-                    if nxt is not None:
-                        pending.add(pool.submit(run_point, *nxt))
+        pool = ProcessPoolExecutor(max_workers=workers, mp_context=mp.get_context("spawn"), initializer=_worker_init)
+        # start the workers now, while the environment holds
+        list(pool.map(_noop, range(workers)))
     finally:
         for k, v in saved.items():
             if v is None:
                 os.environ.pop(k, None)
             else:
                 os.environ[k] = v
+    if not _POOLS:
+        atexit.register(lambda: [p.shutdown(wait=False, cancel_futures=True) for p in _POOLS.values()])
+    _POOLS[workers] = pool
+    return pool
+
+
+def _noop(_):
+    return os.getpid()
 
 
 def _execute_dask(jobs, scheduler):
