@@ -1,19 +1,32 @@
 """Parameter validation shared by every model: errors name the parameter, its value, its unit and the
-allowed range."""
+allowed range, in one line.
+
+Numbers must be real and finite (no strings, no booleans, no NaN, no infinity: an infinite "upper bound" is
+never a value); integers must be whole (a grid of 41.5 cells is an error, not 41); flags must be booleans
+(the string ``'False'`` is not false).
+"""
 
 from __future__ import annotations
 
 import math
+import numbers
+
+
+def _real(name, value, unit):
+    if isinstance(value, (str, bytes, bool)) or not isinstance(value, numbers.Real):
+        if not (hasattr(value, "__float__") and not isinstance(value, (str, bytes, bool))):
+            raise ValueError(f"{name} = {value!r} [{unit}] is not a real number")
+    try:
+        return float(value)
+    except (TypeError, ValueError):
+        raise ValueError(f"{name} = {value!r} [{unit}] is not a real number") from None
 
 
 def check_range(name, value, unit, low=-math.inf, high=math.inf, *, low_open=False, high_open=False, why=""):
-    """Return ``float(value)`` if it lies in the range, else raise ``ValueError`` naming all of it."""
-    try:
-        v = float(value)
-    except (TypeError, ValueError):
-        raise ValueError(f"{name} = {value!r} [{unit}] is not a real number") from None
-    ok = math.isfinite(v) or (v == high == math.inf)
-    ok = ok and (v > low if low_open else v >= low) and (v < high if high_open else v <= high)
+    """Return ``float(value)`` if it is a finite real number in the range, else raise ``ValueError`` naming
+    the parameter, the value, the unit and the allowed range."""
+    v = _real(name, value, unit)
+    ok = math.isfinite(v) and (v > low if low_open else v >= low) and (v < high if high_open else v <= high)
     if not ok:
         lo = f"{'(' if low_open else '['}{low:g}"
         hi = f"{high:g}{')' if high_open else ']'}"
@@ -25,3 +38,26 @@ def check_range(name, value, unit, low=-math.inf, high=math.inf, *, low_open=Fal
 def check_positive(name, value, unit):
     """``value > 0`` and finite."""
     return check_range(name, value, unit, 0.0, math.inf, low_open=True, high_open=True)
+
+
+def check_int(name, value, unit, low=-math.inf, high=math.inf):
+    """A whole number in [low, high] (``41.0`` is accepted as 41; ``41.5``, ``'41'`` and ``True`` are not)."""
+    v = check_range(name, value, unit, low, high)
+    if v != int(v):
+        raise ValueError(f"{name} = {value!r} [{unit}] is not a whole number; allowed: integers in "
+                         f"[{low:g}, {high:g}]")
+    return int(v)
+
+
+def check_bool(name, value):
+    """A flag: ``True`` or ``False`` only."""
+    if not isinstance(value, bool) and type(value).__name__ != "bool_":
+        raise ValueError(f"{name} = {value!r} is not a flag; allowed: True, False")
+    return bool(value)
+
+
+def check_choice(name, value, choices):
+    """One of ``choices``."""
+    if not isinstance(value, str) or value not in choices:
+        raise ValueError(f"{name} = {value!r}; allowed: {', '.join(map(repr, choices))}")
+    return value
