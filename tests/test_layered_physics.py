@@ -1,0 +1,395 @@
+"""Layered boundary films with a Gecim bulk (seed 004, transient.physics.layered): the pointwise flow law.
+
+References derived here, independently of the kernels: the Gecim law inverted by bracketed root finding
+(not the kernels' quadratic) and integrated by scipy quad across the film, straight from Jang's eqs. (4),
+(5), (14), (18); the slit (plane Poiseuille) flow of a Gecim fluid in closed form; Newtonian closed forms;
+the infinitely long slider bearing in closed form.
+"""
+
+import math
+
+import numpy as np
+import pytest
+from scipy import integrate, optimize
+
+from transient.physics.layered import (NO_LAYERS, BoundaryLayers, Gecim, LayeredFilm, Newtonian, gecim_face,
+                                       gecim_rate)
+
+MU = 0.02        # mu_1 [Pa s]
+KAPPA = 2.0e3    # [Pa]
+RATIO = 0.57     # mu_2/mu_1 (the paper's)
+C = 20e-6        # a length scale [m]
+U = 5.0          # a speed [m/s]
+G0 = MU * U / C**2  # a pressure-gradient scale [Pa/m]
+
+
+# --------------------------------------------------------------------------------------------------
+# independent references
+# --------------------------------------------------------------------------------------------------
+
+def ref_rate(tau, mu1, kappa, r):
+    """Shear rate from the forward Gecim law ``tau = mu(gdot) gdot`` by bracketed root finding."""
+    t = abs(tau)
+    if t == 0.0:
+        return 0.0
+    f = lambda g: mu1 * (kappa + r * mu1 * g) / (kappa + mu1 * g) * g - t  # noqa: E731
+    g = optimize.brentq(f, t / mu1 * (1 - 1e-9), t / (r * mu1) * (1 + 1e-9), xtol=1e-300, rtol=8.9e-16)
+    return math.copysign(g, tau)
+
+
+def ref_flow(h, G, U1, U2, mu1, kappa, r, delta=0.0, mu_a=1.0, mu_b=1.0, alpha=0.0):
+    """Flow per unit width and bulk stress at z = delta, by quadrature of eqs. (4), (5), (14), (18)."""
+    ua, ub = U1 - alpha**2 * G / mu_a, U2 - alpha**2 * G / mu_b
+    H = h - 2 * delta
+
+    def quad(fun, t0, power):  # absolute tolerance too: the velocity jump vanishes in a symmetric slit
+        pts = [z for z in (-t0 / G, (kappa - t0) / G, (-kappa - t0) / G) if 0 < z < H] if G else None
+        scale = H**power * max(abs(ref_rate(t, mu1, kappa, r)) for t in (t0, t0 + G * H))
+        return integrate.quad(fun, 0, H, points=pts, epsabs=1e-13 * scale, epsrel=1e-13, limit=200)[0]
+
+    def jump(t0):
+        return quad(lambda z: ref_rate(t0 + G * z, mu1, kappa, r), t0, 1) - (ub - ua)
+
+    t_n = mu1 * (ub - ua) / H - G * H / 2
+    w = abs(t_n) + abs(G) * H
+    t0 = optimize.brentq(jump, t_n - 3 * w, t_n + 3 * w, xtol=1e-300, rtol=8.9e-16)
+    q = delta * (ua + ub) + H * ua + quad(lambda z: (H - z) * ref_rate(t0 + G * z, mu1, kappa, r), t0, 2)
+    return q, t0
+
+
+def slit_flow_gecim(G, H, mu1, kappa, r):
+    """Plane Poiseuille flow of a Gecim fluid in closed form: ``q = -(2/G^2) sign(G) int_0^T tau gdot dtau``,
+    ``T = |G| H/2``, integrated in the shear-rate variable ``x`` where ``tau/kappa = S(x)`` is rational."""
+    s = abs(G) * H / 2 / kappa
+    X = (s - 1 + math.sqrt((s - 1) ** 2 + 4 * r * s)) / (2 * r)
+    S = r * X + (1 - r) * X / (1 + X)
+    L = math.log1p(X)
+    int_s2 = (r * r * X**3 / 3 + 2 * r * (1 - r) * (X**2 / 2 - X + L)
+              + (1 - r) ** 2 * (X - 2 * L + X / (1 + X)))       # int_0^X S^2 dx
+    int_tau_gdot = kappa**3 / mu1 * (X * S * S - int_s2) / 2     # int x S S' dx, by parts
+    return -2 * math.copysign(1.0, G) / G**2 * int_tau_gdot
+
+
+def film(rheology=Newtonian(), layers=NO_LAYERS, mu=MU, n=12):
+    return LayeredFilm(mu, rheology, layers, n)
+
+
+def q_total(f):
+    return f.q_couette + f.q_pressure
+
+
+PAPER_LAYERS = BoundaryLayers(0.2 * C, (10 * MU, 4 * MU), 0.1 * C)
+
+
+# --------------------------------------------------------------------------------------------------
+# the Gecim law
+# --------------------------------------------------------------------------------------------------
+
+def test_gecim_law_inverse_and_limits():
+    g = Gecim(KAPPA, RATIO)
+    rate = np.concatenate([-np.logspace(-4, 8, 49), [0.0], np.logspace(-4, 8, 49)]) * KAPPA / MU
+    stress = g.viscosity(rate, MU) * rate
+    np.testing.assert_allclose(g.shear_rate(stress, MU), rate, rtol=2e-15, atol=0)
+    assert g.viscosity(0.0, MU) == MU
+    assert g.viscosity(1e14 * KAPPA / MU, MU) == pytest.approx(RATIO * MU, rel=1e-13)
+    assert np.all(np.diff(g.viscosity(np.logspace(-3, 6, 50), MU)) < 0)  # shear thinning
+    np.testing.assert_allclose(Newtonian().shear_rate(stress, MU) * MU, stress, rtol=1e-15)
+
+
+@pytest.mark.parametrize("r", [0.05, RATIO, 1.0])
+def test_gecim_rate_slope_against_finite_differences(r):
+    for s in (-300.0, -1.0, -0.2, 1e-3, 0.7, 1.0, 3.0, 1e4):
+        e = 1e-6 * abs(s)
+        fd = (gecim_rate(s + e, r)[0] - gecim_rate(s - e, r)[0]) / (2 * e)
+        assert gecim_rate(s, r)[1] == pytest.approx(fd, rel=1e-8)
+        assert 1.0 <= gecim_rate(s, r)[1] <= 1.0 / r * (1 + 1e-15)
+
+
+# --------------------------------------------------------------------------------------------------
+# flow law against closed forms
+# --------------------------------------------------------------------------------------------------
+
+@pytest.mark.parametrize("layers", [NO_LAYERS, PAPER_LAYERS])
+def test_couette_gecim(layers):
+    """G = 0: flow h (U1 + U2)/2 whatever the rheology; the bulk stress is mu(gdot) gdot, gdot = dU/H."""
+    f = film(Gecim(KAPPA, RATIO), layers)
+    h = np.array([0.5, 1.0, 2.0]) * C
+    U1, U2 = -1.0, U
+    r = f.flow(h, 0.0, U1, U2)
+    np.testing.assert_allclose(q_total(r), h * (U1 + U2) / 2, rtol=1e-15)
+    assert np.all(np.abs(r.q_pressure) <= 1e-15 * h * U)
+    gdot = (U2 - U1) / (h - 2 * layers.thickness)
+    tau = f.rheology.viscosity(gdot, MU) * gdot
+    st = f.stresses(h, 0.0, U1, U2)
+    for v in st:
+        np.testing.assert_allclose(v, tau, rtol=1e-14)
+
+
+@pytest.mark.parametrize("r", [0.05, RATIO])
+@pytest.mark.parametrize("stress_over_kappa", [1e-3, 0.3, 1.0, 7.0, 300.0, 1e5])
+def test_slit_flow_gecim_closed_form(r, stress_over_kappa):
+    """Plane Poiseuille flow: kernel against the closed form (wall stress |G| H/2 = given multiple of kappa)."""
+    H = C
+    for sign in (1.0, -1.0):
+        G = sign * 2 * stress_over_kappa * KAPPA / H
+        q = film(Gecim(KAPPA, r)).flow(H, G, 0.0, 0.0).q_pressure
+        assert q == pytest.approx(slit_flow_gecim(G, H, MU, KAPPA, r), rel=2e-13)
+
+
+def test_slit_flow_closed_form_against_quadrature():
+    """The closed form itself, against root finding + scipy quad of the forward law (no shared code)."""
+    for s in (0.3, 7.0, 300.0):
+        G = -2 * s * KAPPA / C
+        assert slit_flow_gecim(G, C, MU, KAPPA, RATIO) == pytest.approx(
+            ref_flow(C, G, 0.0, 0.0, MU, KAPPA, RATIO)[0], rel=1e-12)
+
+
+CASES = [  # h/C, G/G0, U1/U, U2/U: sliding with and without a stress sign change in the bulk
+    (1.0, -3.0, 0.0, 1.0),
+    (0.6, 25.0, 0.0, 1.0),
+    (1.4, 8.0, -0.5, 0.7),
+    (0.8, -0.4, 1.0, 0.0),
+]
+
+
+@pytest.mark.parametrize("case", CASES)
+def test_layered_gecim_against_direct_integration(case):
+    hc, g, u1, u2 = case
+    ly = PAPER_LAYERS
+    h, G, U1, U2 = hc * C, g * G0, u1 * U, u2 * U
+    f = film(Gecim(KAPPA, RATIO), ly)
+    q_ref, t0_ref = ref_flow(h, G, U1, U2, MU, KAPPA, RATIO, ly.thickness, *ly.viscosity, ly.alpha)
+    assert q_total(f.flow(h, G, U1, U2)) == pytest.approx(q_ref, rel=1e-12)
+    assert f.stresses(h, G, U1, U2).lower_interface == pytest.approx(t0_ref, rel=1e-12)
+
+
+def test_corrected_eq19_with_secant_viscosity_integrals():
+    """The paper's representation (f1..f5 of the secant viscosity mu_c = tau/gdot, eq. 27 corrected) gives
+    the kernel's flow: q = delta(ua+ub) + H ua + G f40 + (ub - ua) f50/f20 with the integrals over the bulk
+    f20 = int dz/mu_c, f10 = int z/mu_c dz, f40 = int f3 dz = int (H - z) z/mu_c - (f10/f20) int (H - z)/mu_c,
+    f50 = int f2 dz = int (H - z)/mu_c dz."""
+    ly = PAPER_LAYERS
+    h, G, U1, U2 = 0.7 * C, 6 * G0, 0.0, U
+    f = film(Gecim(KAPPA, RATIO), ly)
+    t0 = float(f.stresses(h, G, U1, U2).lower_interface)
+    H = h - 2 * ly.thickness
+    inv_mu = lambda z: ref_rate(t0 + G * z, MU, KAPPA, RATIO) / (t0 + G * z)  # noqa: E731
+    pts = [-t0 / G] if 0 < -t0 / G < H else None
+
+    def q(fun):
+        return integrate.quad(fun, 0, H, points=pts, epsabs=0, epsrel=1e-13, limit=200)[0]
+
+    f20, f10 = q(inv_mu), q(lambda z: z * inv_mu(z))
+    f50 = q(lambda z: (H - z) * inv_mu(z))
+    f40 = q(lambda z: (H - z) * z * inv_mu(z)) - f10 / f20 * f50
+    ua, ub = U1 - ly.alpha**2 * G / ly.viscosity[0], U2 - ly.alpha**2 * G / ly.viscosity[1]
+    q19 = ly.thickness * (ua + ub) + H * ua + G * f40 + (ub - ua) * f50 / f20
+    assert q_total(f.flow(h, G, U1, U2)) == pytest.approx(q19, rel=1e-11)
+
+
+def test_newtonian_layered_closed_forms():
+    h = np.linspace(0.2, 2.0, 10) * C
+    G = np.linspace(-5.0, 7.0, 10) * G0
+    U1, U2 = 0.3 * U, U
+    # no layers: the classical film
+    r = film().flow(h, G, U1, U2)
+    np.testing.assert_allclose(r.q_pressure, -G * h**3 / (12 * MU), rtol=1e-14)
+    np.testing.assert_allclose(r.q_couette, h * (U1 + U2) / 2, rtol=1e-15)
+    # immobile layers (alpha = 0): exactly a classical film of thickness h - 2 delta, plus delta (U1 + U2)
+    d = 0.05 * C
+    r = film(layers=BoundaryLayers(d, 10 * MU, 0.0)).flow(h, G, U1, U2)
+    thin = film().flow(h - 2 * d, G, U1, U2)
+    np.testing.assert_allclose(r.q_pressure, thin.q_pressure, rtol=1e-14)
+    np.testing.assert_allclose(r.dqp_dG, thin.dqp_dG, rtol=1e-14)
+    np.testing.assert_allclose(q_total(r), q_total(thin) + d * (U1 + U2), rtol=1e-14)
+    # porous layers: against direct integration of the piecewise profile
+    ly = PAPER_LAYERS
+    f = film(layers=ly)
+    for i in (2, 4, 9):  # h > 2 delta
+        q_ref = ref_flow(h[i], G[i], U1, U2, MU, KAPPA, 1.0, ly.thickness, *ly.viscosity, ly.alpha)[0]
+        assert q_total(f.flow(h[i], G[i], U1, U2)) == pytest.approx(q_ref, rel=1e-13)
+    # the Gecim kernel at mu_2 = mu_1 is the Newtonian closed form
+    rg = film(Gecim(KAPPA, 1.0), ly).flow(h, G, U1, U2)
+    rn = f.flow(h, G, U1, U2)
+    for a, b in zip(rg, rn):
+        np.testing.assert_allclose(a, b, rtol=1e-13)
+
+
+@pytest.mark.parametrize("limit", ["mu_1", "mu_2"])
+def test_gecim_tends_to_newtonian_limits(limit):
+    """kappa -> inf: Newtonian mu_1, error ~ 1/kappa; kappa -> 0: Newtonian mu_2, error ~ kappa."""
+    ly = PAPER_LAYERS
+    h, G = np.array([0.5, 1.0, 1.7]) * C, np.array([4.0, -2.0, 9.0]) * G0
+    mu_n = MU if limit == "mu_1" else RATIO * MU
+    ref = film(layers=ly, mu=mu_n).flow(h, G, 0.0, U)  # same layers: alpha^2/mu_a,b are absolute
+    stress = MU * U / C
+    kappas = [1e6 * stress, 1e7 * stress] if limit == "mu_1" else [1e-6 * stress, 1e-7 * stress]
+    errs = [np.max(np.abs(q_total(film(Gecim(k, RATIO), ly).flow(h, G, 0.0, U)) / q_total(ref) - 1))
+            for k in kappas]
+    assert errs[0] < 1e-5
+    assert errs[0] / errs[1] == pytest.approx(10.0, rel=0.02)
+
+
+def test_quadrature_converges_geometrically():
+    """Relative error of the slit flow against the closed form vs Gauss points per panel, for the hardest
+    allowed law (mu_2/mu_1 = 0.05) at a wall stress of 3 kappa (the transition spans the film): geometric
+    decrease (measured: a factor ~8 per added point, rho^2 with rho ~ 2.9 the Bernstein ellipse of the
+    panels), down to rounding at 12 points."""
+    G, H = -6 * KAPPA / C, C
+    exact = slit_flow_gecim(G, H, MU, KAPPA, 0.05)
+    ns = [2, 3, 4, 6, 8, 10, 12]
+    errs = [abs(film(Gecim(KAPPA, 0.05), n=n).flow(H, G, 0.0, 0.0).q_pressure / exact - 1) for n in ns]
+    assert all(b < a / 4 ** (m - n) for a, b, n, m in zip(errs, errs[1:], ns, ns[1:]))
+    assert errs[2] / errs[-1] > 6.0**8  # n = 4 -> 12
+    assert errs[0] > 1e-4 and errs[-1] < 2e-13
+
+
+# --------------------------------------------------------------------------------------------------
+# derivatives, scales, stresses, profile
+# --------------------------------------------------------------------------------------------------
+
+FD_CASES = [  # h/C, G/G0, U1/U, U2/U, delta/C, alpha/C, (mu_a, mu_b)/MU, rheology
+    (1.0, -3.0, 0.0, 1.0, 0.2, 0.1, (10, 4), "gecim"),
+    (0.6, 25.0, 0.0, 1.0, 0.2, 0.1, (10, 10), "gecim"),
+    (1.4, 8.0, -0.5, 0.7, 0.0, 0.0, (1, 1), "gecim"),
+    (0.8, 0.0, 0.0, 1.0, 0.1, 0.05, (2, 30), "gecim"),
+    (0.3, 2.0, 0.0, 1.0, 0.2, 0.1, (10, 4), "gecim"),      # h < 2 delta: the layers share the gap
+    (0.9, -6.0, 0.0, 1.0, 0.15, 0.1, (10, 4), "newtonian"),
+]
+
+
+@pytest.mark.parametrize("case", FD_CASES)
+def test_derivatives_against_central_differences(case):
+    hc, g, u1, u2, dc, ac, mus, rh = case
+    rheo = Gecim(KAPPA, RATIO) if rh == "gecim" else Newtonian()
+    f = film(rheo, BoundaryLayers(dc * C, tuple(m * MU for m in mus), ac * C))
+    h, G, U1, U2 = hc * C, g * G0, u1 * U, u2 * U
+    sc = (C, U)  # fixed scales: the finite differences must not move the kernels' reference scales
+    r = f.flow(h, G, U1, U2, scales=sc)
+    eG, eh = 1e-5 * max(abs(G), G0), 1e-6 * h
+    fd_G = (f.flow(h, G + eG, U1, U2, sc).q_pressure - f.flow(h, G - eG, U1, U2, sc).q_pressure) / (2 * eG)
+    fd_h = (f.flow(h + eh, G, U1, U2, sc).q_pressure - f.flow(h - eh, G, U1, U2, sc).q_pressure) / (2 * eh)
+    assert float(r.dqp_dG) == pytest.approx(fd_G, rel=1e-6)
+    assert abs(float(r.dqp_dh) - fd_h) <= 1e-6 * max(abs(fd_h), 1e-3 * U)  # dq_p/dh = 0 at G = 0
+
+
+def test_results_do_not_depend_on_the_kernel_scales():
+    f = film(Gecim(KAPPA, RATIO), PAPER_LAYERS)
+    h, G = np.array([0.3, 0.9, 1.8]) * C, np.array([10.0, -4.0, 0.5]) * G0
+    a = f.flow(h, G, 0.0, U)
+    for sc in [(1e-3, 1e-2), (3 * C, 40.0)]:
+        for x, y in zip(a, f.flow(h, G, 0.0, U, scales=sc)):
+            np.testing.assert_allclose(y, x, rtol=1e-12, atol=1e-15 * np.max(np.abs(x)))
+
+
+def test_stresses_momentum_balance_and_newtonian_wall_stress():
+    h, G = np.array([0.5, 1.0, 1.6]) * C, np.array([3.0, -1.0, 8.0]) * G0
+    st = film(Gecim(KAPPA, RATIO), PAPER_LAYERS).stresses(h, G, 0.0, U)
+    # the total shear stress is linear across the whole film (layers carry G delta through their matrix)
+    np.testing.assert_allclose(st.upper_wall - st.lower_wall, G * h, rtol=1e-12)
+    np.testing.assert_allclose(st.upper_interface - st.lower_interface, G * (h - 2 * PAPER_LAYERS.thickness),
+                               rtol=1e-12)
+    d = 0.1 * C  # immobile layers, Newtonian: wall stress mu dU/(h - 2 delta) + G h/2 at the upper wall
+    st = film(layers=BoundaryLayers(d, 10 * MU, 0.0)).stresses(h, G, 0.0, U)
+    np.testing.assert_allclose(st.upper_wall, MU * U / (h - 2 * d) + G * h / 2, rtol=1e-13)
+
+
+def test_velocity_profile():
+    ly = PAPER_LAYERS
+    f = film(Gecim(KAPPA, RATIO), ly)
+    h, G, U1, U2 = 1.2 * C, -7.0 * G0, 0.0, U
+    d = ly.thickness
+    ua, ub = U1 - ly.alpha**2 * G / ly.viscosity[0], U2 - ly.alpha**2 * G / ly.viscosity[1]
+    np.testing.assert_allclose(f.velocity(h, G, U1, U2, [0.0, d / 2, d]), ua, rtol=1e-14)
+    np.testing.assert_allclose(f.velocity(h, G, U1, U2, [h - d, h]), ub, rtol=1e-14)
+    # continuous at the upper interface, integrates to the flow
+    assert f.velocity(h, G, U1, U2, h - d - 1e-12 * h) == pytest.approx(ub, rel=1e-9)
+    q = integrate.quad(lambda z: float(f.velocity(h, G, U1, U2, z)), 0, h, points=[d, h - d], epsabs=0,
+                       epsrel=1e-12)[0]
+    assert q == pytest.approx(q_total(f.flow(h, G, U1, U2)), rel=1e-11)
+    # the interface stress is the bulk law at the profile's slope there
+    e = 1e-6 * h
+    u0, u1, u2 = f.velocity(h, G, U1, U2, [d, d + e, d + 2 * e])
+    slope = (-3 * u0 + 4 * u1 - u2) / (2 * e)  # one-sided, second order
+    tau = f.stresses(h, G, U1, U2).lower_interface
+    assert f.rheology.viscosity(slope, MU) * slope == pytest.approx(tau, rel=1e-6)
+
+
+# --------------------------------------------------------------------------------------------------
+# validation
+# --------------------------------------------------------------------------------------------------
+
+@pytest.mark.parametrize("make, match", [
+    (lambda: Gecim(-1.0, 0.5), r"kappa = -1\.0 \[Pa\].*\(0, inf\) Pa"),
+    (lambda: Gecim(float("inf"), 0.5), r"kappa = inf \[Pa\]"),
+    (lambda: Gecim(1.0, 1.5), r"viscosity_ratio mu_2/mu_1 = 1\.5 \[-\].*\[0\.05, 1\]"),
+    (lambda: Gecim(1.0, 0.0), r"viscosity_ratio mu_2/mu_1 = 0\.0"),
+    (lambda: BoundaryLayers(-1e-9, 0.1, 0.0), r"thickness delta = -1e-09 \[m\].*\[0, inf\) m"),
+    (lambda: BoundaryLayers(1e-8, (0.1, -2.0), 0.0), r"viscosity mu_b \(upper layer\) = -2\.0 \[Pa s\]"),
+    (lambda: BoundaryLayers(1e-8, 0.0, 0.0), r"viscosity mu_a \(lower layer\) = 0\.0 \[Pa s\]"),
+    (lambda: BoundaryLayers(1e-8, (0.1, 0.2, 0.3), 0.0), r"viscosity = \(0\.1, 0\.2, 0\.3\) \[Pa s\]"),
+    (lambda: BoundaryLayers(1e-8, 0.1, -1e-9), r"alpha = -1e-09 \[m\].*\[0, inf\) m"),
+    (lambda: BoundaryLayers(0.0, 0.1, 1e-9), r"alpha = 1e-09 \[m\].*\[0, 0\] m.*thickness > 0"),
+    (lambda: LayeredFilm(0.0), r"viscosity mu_1 = 0\.0 \[Pa s\]"),
+    (lambda: LayeredFilm(0.1, gauss_points=0), r"gauss_points = 0 \[-\]"),
+    (lambda: LayeredFilm(0.1).flow([1e-6, -1e-6], 0.0, 0.0, 1.0), r"film thickness h = -1e-06 \[m\]"),
+])
+def test_validation_errors_name_the_parameter(make, match):
+    with pytest.raises(ValueError, match=match):
+        make()
+
+
+# --------------------------------------------------------------------------------------------------
+# the infinitely long slider bearing with layers (1-D modified Reynolds equation)
+# --------------------------------------------------------------------------------------------------
+
+def slider_load(f, h_out, K, length, speed, n=64):
+    """Load per unit width of an inclined pad ``h = h_out (1 + K (1 - x/L))``, lower wall sliding at
+    ``speed``: ``d q / dx = 0`` with ``q(h, dp/dx) = Q`` at Gauss points, ``p(0) = p(L) = 0``."""
+    xg, wg = np.polynomial.legendre.leggauss(n)
+    x, w = (xg + 1) * length / 2, wg * length / 2
+    h = h_out * (1 + K * (1 - x / length))
+    sc = (h_out, speed)
+
+    def gradient(Q):
+        G = np.zeros_like(h)
+        for _ in range(50):  # Newton on q(h, G) = Q at every point
+            r = f.flow(h, G, speed, 0.0, sc)
+            dG = (q_total(r) - Q) / r.dqp_dG
+            G -= dG
+            if np.max(np.abs(dG)) <= 1e-15 * np.max(np.abs(G)):
+                break
+        return G
+
+    Q = optimize.brentq(lambda Q: w @ gradient(Q), speed * h_out / 2, speed * h.max() / 2, xtol=1e-300,
+                        rtol=8.9e-16)
+    return w @ ((length - x) * gradient(Q))  # int p dx = int (L - x) dp/dx dx
+
+
+def slider_closed_form(mu, speed, length, h_out, K):
+    return 6 * mu * speed * length**2 / (K * h_out) ** 2 * (math.log1p(K) - 2 * K / (2 + K))
+
+
+def test_slider_with_immobile_layers_is_the_classical_slider_on_the_thinner_film():
+    h_out, K, length, d = 10e-6, 1.2, 0.02, 2e-6
+    assert slider_load(film(), h_out, K, length, U) == pytest.approx(
+        slider_closed_form(MU, U, length, h_out, K), rel=1e-12)
+    # the bulk film is h - 2 delta = (h_out - 2 delta)(1 + K' (1 - x/L)), K' = K h_out/(h_out - 2 delta)
+    w = slider_load(film(layers=BoundaryLayers(d, 10 * MU, 0.0)), h_out, K, length, U)
+    assert w == pytest.approx(slider_closed_form(MU, U, length, h_out - 2 * d, K * h_out / (h_out - 2 * d)),
+                              rel=1e-12)
+
+
+def test_slider_gecim_load_between_its_newtonian_bounds():
+    """Shear thinning lowers the load below the mu_1 film's and keeps it above the mu_2 film's; porous layers
+    carry some flow and lower the load below the immobile layers' one."""
+    h_out, K, length = 10e-6, 1.2, 0.02
+    kappa = 0.65 * MU * U / h_out
+    w1 = slider_closed_form(MU, U, length, h_out, K)
+    wg = slider_load(film(Gecim(kappa, RATIO), n=8), h_out, K, length, U, n=24)
+    assert RATIO * w1 < wg < w1
+    d = 0.2 * h_out
+    w_imm = slider_load(film(Gecim(kappa, RATIO), BoundaryLayers(d, 10 * MU, 0.0), n=8), h_out, K, length, U, 24)
+    w_por = slider_load(film(Gecim(kappa, RATIO), BoundaryLayers(d, 10 * MU, 0.1 * h_out), n=8), h_out, K,
+                        length, U, 24)
+    assert wg < w_por < w_imm
