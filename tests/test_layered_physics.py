@@ -253,6 +253,7 @@ FD_CASES = [  # h/C, G/G0, U1/U, U2/U, delta/C, alpha/C, (mu_a, mu_b)/MU, rheolo
     (0.6, 25.0, 0.0, 1.0, 0.2, 0.1, (10, 10), "gecim"),
     (1.4, 8.0, -0.5, 0.7, 0.0, 0.0, (1, 1), "gecim"),
     (0.8, 0.0, 0.0, 1.0, 0.1, 0.05, (2, 30), "gecim"),
+    (0.9, -4.0, 0.0, 1.0, 0.1, 0.3, (1, 50), "gecim"),     # strongly asymmetric Darcy slip
     (0.3, 2.0, 0.0, 1.0, 0.2, 0.1, (10, 4), "gecim"),      # h < 2 delta: the layers share the gap
     (0.9, -6.0, 0.0, 1.0, 0.15, 0.1, (10, 4), "newtonian"),
 ]

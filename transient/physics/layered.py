@@ -119,10 +119,11 @@ def _moments(tau0, G, zb, H, kappa, r, xg, wg):
     sig = 1.0 if G >= 0.0 else -1.0
     t = sig * tau0 / kappa
     t_end = sig * (tau0 + G * zb) / kappa
+    one_panel = G == 0.0 or not math.isfinite(t_end - t)  # (NaN/inf input: one panel, no endless walk)
     a = 0.0
     while a < zb:
         tn = _next_break(t)
-        b = zb if (G == 0.0 or tn >= t_end) else min(max((sig * tn * kappa - tau0) / G, a), zb)
+        b = zb if (one_panel or tn >= t_end) else min(max((sig * tn * kappa - tau0) / G, a), zb)
         half = 0.5 * (b - a)
         mid = 0.5 * (a + b)
         for j in range(xg.size):
