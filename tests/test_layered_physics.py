@@ -91,7 +91,7 @@ def test_gecim_law_inverse_and_limits():
     stress = g.viscosity(rate, MU) * rate
     np.testing.assert_allclose(g.shear_rate(stress, MU), rate, rtol=2e-15, atol=0)
     assert g.viscosity(0.0, MU) == MU
-    assert g.viscosity(1e14 * KAPPA / MU, MU) == pytest.approx(RATIO * MU, rel=1e-13)
+    assert g.viscosity(1e14 * KAPPA / MU, MU) == pytest.approx(RATIO * MU, rel=1e-13, abs=0)
     assert np.all(np.diff(g.viscosity(np.logspace(-3, 6, 50), MU)) < 0)  # shear thinning
     np.testing.assert_allclose(Newtonian().shear_rate(stress, MU) * MU, stress, rtol=1e-15)
 
@@ -101,7 +101,7 @@ def test_gecim_rate_slope_against_finite_differences(r):
     for s in (-300.0, -1.0, -0.2, 1e-3, 0.7, 1.0, 3.0, 1e4):
         e = 1e-6 * abs(s)
         fd = (gecim_rate(s + e, r)[0] - gecim_rate(s - e, r)[0]) / (2 * e)
-        assert gecim_rate(s, r)[1] == pytest.approx(fd, rel=1e-8)
+        assert gecim_rate(s, r)[1] == pytest.approx(fd, rel=1e-8, abs=0)
         assert 1.0 <= gecim_rate(s, r)[1] <= 1.0 / r * (1 + 1e-15)
 
 
@@ -125,23 +125,29 @@ def test_couette_gecim(layers):
         np.testing.assert_allclose(v, tau, rtol=1e-14)
 
 
+SLIT_ACCURACY = {0.05: 1e-11, RATIO: 1e-14}  # 12 points: measured worst 5.5e-12 and 2e-15 over 0.3..1000 kappa
+
+
 @pytest.mark.parametrize("r", [0.05, RATIO])
-@pytest.mark.parametrize("stress_over_kappa", [1e-3, 0.3, 1.0, 7.0, 300.0, 1e5])
+@pytest.mark.parametrize("stress_over_kappa", [0.3, 1.0, 7.0, 300.0, 1e5])
 def test_slit_flow_gecim_closed_form(r, stress_over_kappa):
-    """Plane Poiseuille flow: kernel against the closed form (wall stress |G| H/2 = given multiple of kappa)."""
+    """Plane Poiseuille flow: kernel against the closed form (wall stress |G| H/2 = given multiple of kappa;
+    below ~0.3 kappa the closed form loses digits to cancellation, see the quadrature test)."""
     H = C
     for sign in (1.0, -1.0):
         G = sign * 2 * stress_over_kappa * KAPPA / H
         q = film(Gecim(KAPPA, r)).flow(H, G, 0.0, 0.0).q_pressure
-        assert q == pytest.approx(slit_flow_gecim(G, H, MU, KAPPA, r), rel=2e-13)
+        assert q == pytest.approx(slit_flow_gecim(G, H, MU, KAPPA, r), rel=SLIT_ACCURACY[r], abs=0)
 
 
-def test_slit_flow_closed_form_against_quadrature():
-    """The closed form itself, against root finding + scipy quad of the forward law (no shared code)."""
-    for s in (0.3, 7.0, 300.0):
+def test_slit_flow_against_quadrature():
+    """Closed form and kernel against root finding + scipy quad of the forward law (no shared code)."""
+    for s in (1e-3, 0.3, 7.0, 300.0):
         G = -2 * s * KAPPA / C
-        assert slit_flow_gecim(G, C, MU, KAPPA, RATIO) == pytest.approx(
-            ref_flow(C, G, 0.0, 0.0, MU, KAPPA, RATIO)[0], rel=1e-12)
+        ref = ref_flow(C, G, 0.0, 0.0, MU, KAPPA, RATIO)[0]
+        assert film(Gecim(KAPPA, RATIO)).flow(C, G, 0.0, 0.0).q_pressure == pytest.approx(ref, rel=1e-14, abs=0)
+        if s >= 0.3:
+            assert slit_flow_gecim(G, C, MU, KAPPA, RATIO) == pytest.approx(ref, rel=1e-13, abs=0)
 
 
 CASES = [  # h/C, G/G0, U1/U, U2/U: sliding with and without a stress sign change in the bulk
@@ -159,8 +165,8 @@ def test_layered_gecim_against_direct_integration(case):
     h, G, U1, U2 = hc * C, g * G0, u1 * U, u2 * U
     f = film(Gecim(KAPPA, RATIO), ly)
     q_ref, t0_ref = ref_flow(h, G, U1, U2, MU, KAPPA, RATIO, ly.thickness, *ly.viscosity, ly.alpha)
-    assert q_total(f.flow(h, G, U1, U2)) == pytest.approx(q_ref, rel=1e-12)
-    assert f.stresses(h, G, U1, U2).lower_interface == pytest.approx(t0_ref, rel=1e-12)
+    assert q_total(f.flow(h, G, U1, U2)) == pytest.approx(q_ref, rel=1e-12, abs=0)
+    assert f.stresses(h, G, U1, U2).lower_interface == pytest.approx(t0_ref, rel=1e-12, abs=0)
 
 
 def test_corrected_eq19_with_secant_viscosity_integrals():
@@ -184,7 +190,7 @@ def test_corrected_eq19_with_secant_viscosity_integrals():
     f40 = q(lambda z: (H - z) * z * inv_mu(z)) - f10 / f20 * f50
     ua, ub = U1 - ly.alpha**2 * G / ly.viscosity[0], U2 - ly.alpha**2 * G / ly.viscosity[1]
     q19 = ly.thickness * (ua + ub) + H * ua + G * f40 + (ub - ua) * f50 / f20
-    assert q_total(f.flow(h, G, U1, U2)) == pytest.approx(q19, rel=1e-11)
+    assert q_total(f.flow(h, G, U1, U2)) == pytest.approx(q19, rel=1e-11, abs=0)
 
 
 def test_newtonian_layered_closed_forms():
@@ -207,7 +213,7 @@ def test_newtonian_layered_closed_forms():
     f = film(layers=ly)
     for i in (2, 4, 9):  # h > 2 delta
         q_ref = ref_flow(h[i], G[i], U1, U2, MU, KAPPA, 1.0, ly.thickness, *ly.viscosity, ly.alpha)[0]
-        assert q_total(f.flow(h[i], G[i], U1, U2)) == pytest.approx(q_ref, rel=1e-13)
+        assert q_total(f.flow(h[i], G[i], U1, U2)) == pytest.approx(q_ref, rel=1e-13, abs=0)
     # the Gecim kernel at mu_2 = mu_1 is the Newtonian closed form
     rg = film(Gecim(KAPPA, 1.0), ly).flow(h, G, U1, U2)
     rn = f.flow(h, G, U1, U2)
@@ -227,7 +233,7 @@ def test_gecim_tends_to_newtonian_limits(limit):
     errs = [np.max(np.abs(q_total(film(Gecim(k, RATIO), ly).flow(h, G, 0.0, U)) / q_total(ref) - 1))
             for k in kappas]
     assert errs[0] < 1e-5
-    assert errs[0] / errs[1] == pytest.approx(10.0, rel=0.02)
+    assert errs[0] / errs[1] == pytest.approx(10.0, rel=0.02, abs=0)
 
 
 def test_quadrature_converges_geometrically():
@@ -270,7 +276,7 @@ def test_derivatives_against_central_differences(case):
     eG, eh = 1e-5 * max(abs(G), G0), 1e-6 * h
     fd_G = (f.flow(h, G + eG, U1, U2, sc).q_pressure - f.flow(h, G - eG, U1, U2, sc).q_pressure) / (2 * eG)
     fd_h = (f.flow(h + eh, G, U1, U2, sc).q_pressure - f.flow(h - eh, G, U1, U2, sc).q_pressure) / (2 * eh)
-    assert float(r.dqp_dG) == pytest.approx(fd_G, rel=1e-6)
+    assert float(r.dqp_dG) == pytest.approx(fd_G, rel=1e-6, abs=0)
     assert abs(float(r.dqp_dh) - fd_h) <= 1e-6 * max(abs(fd_h), 1e-3 * U)  # dq_p/dh = 0 at G = 0
 
 
@@ -304,16 +310,16 @@ def test_velocity_profile():
     np.testing.assert_allclose(f.velocity(h, G, U1, U2, [0.0, d / 2, d]), ua, rtol=1e-14)
     np.testing.assert_allclose(f.velocity(h, G, U1, U2, [h - d, h]), ub, rtol=1e-14)
     # continuous at the upper interface, integrates to the flow
-    assert f.velocity(h, G, U1, U2, h - d - 1e-12 * h) == pytest.approx(ub, rel=1e-9)
+    assert f.velocity(h, G, U1, U2, h - d - 1e-12 * h) == pytest.approx(ub, rel=1e-9, abs=0)
     q = integrate.quad(lambda z: float(f.velocity(h, G, U1, U2, z)), 0, h, points=[d, h - d], epsabs=0,
                        epsrel=1e-12)[0]
-    assert q == pytest.approx(q_total(f.flow(h, G, U1, U2)), rel=1e-11)
+    assert q == pytest.approx(q_total(f.flow(h, G, U1, U2)), rel=1e-11, abs=0)
     # the interface stress is the bulk law at the profile's slope there
     e = 1e-6 * h
     u0, u1, u2 = f.velocity(h, G, U1, U2, [d, d + e, d + 2 * e])
     slope = (-3 * u0 + 4 * u1 - u2) / (2 * e)  # one-sided, second order
     tau = f.stresses(h, G, U1, U2).lower_interface
-    assert f.rheology.viscosity(slope, MU) * slope == pytest.approx(tau, rel=1e-6)
+    assert f.rheology.viscosity(slope, MU) * slope == pytest.approx(tau, rel=1e-6, abs=0)
 
 
 # --------------------------------------------------------------------------------------------------
@@ -374,11 +380,11 @@ def slider_closed_form(mu, speed, length, h_out, K):
 def test_slider_with_immobile_layers_is_the_classical_slider_on_the_thinner_film():
     h_out, K, length, d = 10e-6, 1.2, 0.02, 2e-6
     assert slider_load(film(), h_out, K, length, U) == pytest.approx(
-        slider_closed_form(MU, U, length, h_out, K), rel=1e-12)
+        slider_closed_form(MU, U, length, h_out, K), rel=1e-12, abs=0)
     # the bulk film is h - 2 delta = (h_out - 2 delta)(1 + K' (1 - x/L)), K' = K h_out/(h_out - 2 delta)
     w = slider_load(film(layers=BoundaryLayers(d, 10 * MU, 0.0)), h_out, K, length, U)
     assert w == pytest.approx(slider_closed_form(MU, U, length, h_out - 2 * d, K * h_out / (h_out - 2 * d)),
-                              rel=1e-12)
+                              rel=1e-12, abs=0)
 
 
 def test_slider_gecim_load_between_its_newtonian_bounds():
