@@ -400,3 +400,113 @@ def test_slider_gecim_load_between_its_newtonian_bounds():
     w_por = slider_load(film(Gecim(kappa, RATIO), BoundaryLayers(d, 10 * MU, 0.1 * h_out), n=8), h_out, K,
                         length, U, 24)
     assert wg < w_por < w_imm
+
+
+# --------------------------------------------------------------------------------------------------
+# the 2-D (vector) law: eq. (12) couples the directions through |gdot|
+# --------------------------------------------------------------------------------------------------
+
+def ref_flow_2d(h, G, U1, U2, mu1, kappa, r, delta=0.0, mu_a=1.0, mu_b=1.0, alpha=0.0):
+    """Flow vector per unit width by root finding on the 2-vector tau_0 and scipy quad of the forward law
+    (gdot parallel to tau, |gdot| from ``ref_rate``)."""
+    G, U1, U2 = (np.asarray(v, dtype=float) for v in (G, U1, U2))
+    ua, ub = U1 - alpha**2 * G / mu_a, U2 - alpha**2 * G / mu_b
+    H = h - 2 * delta
+
+    def gdot(t0, z):
+        t = t0 + G * z
+        m = math.hypot(*t)
+        return t * (ref_rate(m, mu1, kappa, r) / m if m > 0 else 1 / mu1)
+
+    def quad(fun, t0, power):
+        zs = -(t0 @ G) / (G @ G)
+        scale = H**power * max(np.abs(gdot(t0, z)).max() for z in (0, H))
+        return np.array([integrate.quad(lambda z: fun(z)[a], 0, H, points=[zs] if 0 < zs < H else None,
+                                        epsabs=1e-13 * scale, epsrel=1e-13, limit=200)[0] for a in (0, 1)])
+
+    def jump(t0):
+        return quad(lambda z: gdot(t0, z), t0, 1) - (ub - ua)
+
+    sol = optimize.root(jump, mu1 * (ub - ua) / H - G * H / 2, method="hybr", tol=1e-15)
+    t0 = sol.x
+    return delta * (ua + ub) + H * ua + quad(lambda z: (H - z) * gdot(t0, z), t0, 2)
+
+
+def rotate(v, a):
+    c, s = math.cos(a), math.sin(a)
+    return np.array([[c, -s], [s, c]]) @ v
+
+
+STATES_2D = [  # h/C, (Gx, Gy)/G0, U1/U, U2/U (vectors), layers
+    (1.0, (-3.0, 2.0), (0.0, 0.0), (1.0, 0.0), PAPER_LAYERS),
+    (0.6, (25.0, -8.0), (0.0, 0.0), (1.0, 0.0), PAPER_LAYERS),
+    (1.3, (4.0, 6.0), (-0.3, 0.2), (0.5, 0.4), NO_LAYERS),
+    (1.0, (-6.0, 6e-3), (0.0, 0.0), (0.0, 0.0), NO_LAYERS),   # |tau| nearly vanishes: d0/H ~ 1e-3
+]
+
+
+def test_2d_law_reduces_to_the_1d_law():
+    f = film(Gecim(KAPPA, RATIO), PAPER_LAYERS)
+    for hc, g, u1, u2 in CASES:
+        h, G, U1, U2 = hc * C, g * G0, u1 * U, u2 * U
+        one = f.flow(h, G, U1, U2)
+        two = f.flow_2d(h, [G, 0.0], [U1, 0.0], [U2, 0.0])
+        for a, b in zip(one, (two.q_couette[0], two.q_pressure[0], two.dqp_dG[0, 0], two.dqp_dh[0])):
+            assert b == pytest.approx(a, rel=1e-13, abs=0)
+        assert two.q_pressure[1] == 0.0 and two.dqp_dG[0, 1] == 0.0 and two.dqp_dh[1] == 0.0
+
+
+def test_2d_law_is_isotropic():
+    f = film(Gecim(KAPPA, RATIO), PAPER_LAYERS)
+    a = 0.7
+    for hc, g, u1, u2, ly in STATES_2D[:3]:
+        G, U1, U2 = (np.array(v) * s for v, s in ((g, G0), (u1, U), (u2, U)))
+        r0 = f.flow_2d(hc * C, G, U1, U2)
+        r1 = f.flow_2d(hc * C, rotate(G, a), rotate(U1, a), rotate(U2, a))
+        R = rotate(np.eye(2), a)
+        np.testing.assert_allclose(r1.q_pressure, R @ r0.q_pressure, rtol=1e-12)
+        np.testing.assert_allclose(r1.dqp_dG, R @ r0.dqp_dG @ R.T, rtol=1e-12, atol=1e-12 * np.abs(r0.dqp_dG).max())
+        np.testing.assert_allclose(r1.dqp_dh, R @ r0.dqp_dh, rtol=1e-12)
+
+
+@pytest.mark.parametrize("layers", [NO_LAYERS, PAPER_LAYERS])
+def test_2d_small_gradients_on_a_sheared_film_see_tangent_and_secant_viscosities(layers):
+    """Couette flow along x, G = 0: a gradient along the sliding sees the tangent viscosity d tau/d gdot,
+    one across it the secant viscosity tau/gdot (closed forms of the Gecim law at gdot = dU/H)."""
+    h, dU = 0.8 * C, U
+    H = h - 2 * layers.thickness
+    g = dU / H
+    mu_s = MU * (KAPPA + RATIO * MU * g) / (KAPPA + MU * g)
+    mu_t = MU * (KAPPA**2 + 2 * RATIO * MU * KAPPA * g + RATIO * MU**2 * g**2) / (KAPPA + MU * g) ** 2
+    darcy = h / 2 * layers.alpha**2 * sum(1 / m for m in layers.viscosity)
+    r = film(Gecim(KAPPA, RATIO), layers).flow_2d(h, [0.0, 0.0], [0.0, 0.0], [dU, 0.0])
+    assert -r.dqp_dG[0, 0] == pytest.approx(H**3 / (12 * mu_t) + darcy, rel=1e-13, abs=0)
+    assert -r.dqp_dG[1, 1] == pytest.approx(H**3 / (12 * mu_s) + darcy, rel=1e-13, abs=0)
+    assert abs(r.dqp_dG[0, 1]) < 1e-15 * abs(r.dqp_dG[0, 0]) and abs(r.dqp_dG[1, 0]) < 1e-15 * abs(r.dqp_dG[0, 0])
+    assert mu_t < mu_s < MU
+
+
+@pytest.mark.parametrize("state", STATES_2D)
+def test_2d_law_against_direct_integration(state):
+    hc, g, u1, u2, ly = state
+    h, G, U1, U2 = hc * C, np.array(g) * G0, np.array(u1) * U, np.array(u2) * U
+    f = film(Gecim(KAPPA, RATIO), ly)
+    r = f.flow_2d(h, G, U1, U2)
+    ref = ref_flow_2d(h, G, U1, U2, MU, KAPPA, RATIO, ly.thickness, *ly.viscosity, ly.alpha)
+    np.testing.assert_allclose(r.q_couette + r.q_pressure, ref, rtol=1e-12, atol=0)
+
+
+@pytest.mark.parametrize("state", STATES_2D)
+def test_2d_derivatives_against_central_differences(state):
+    hc, g, u1, u2, ly = state
+    h, G, U1, U2 = hc * C, np.array(g) * G0, np.array(u1) * U, np.array(u2) * U
+    f = film(Gecim(KAPPA, RATIO), ly)
+    sc = (C, U)
+    r = f.flow_2d(h, G, U1, U2, sc)
+    for b in (0, 1):
+        e = 1e-5 * G0 * np.eye(2)[b]
+        fd = (f.flow_2d(h, G + e, U1, U2, sc).q_pressure - f.flow_2d(h, G - e, U1, U2, sc).q_pressure) / (2e-5 * G0)
+        np.testing.assert_allclose(r.dqp_dG[:, b], fd, rtol=1e-6, atol=1e-6 * np.abs(r.dqp_dG).max())
+    eh = 1e-6 * h
+    fd = (f.flow_2d(h + eh, G, U1, U2, sc).q_pressure - f.flow_2d(h - eh, G, U1, U2, sc).q_pressure) / (2 * eh)
+    np.testing.assert_allclose(r.dqp_dh, fd, rtol=1e-6, atol=1e-6 * np.abs(fd).max())

@@ -233,6 +233,172 @@ def gecim_velocity(z, h, G, U1, U2, delta, lam_a, lam_b, kappa, ratio, xg, wg, u
 
 
 # --------------------------------------------------------------------------------------------------
+# the 2-D (vector) law: eq. (12), the shear rate is the magnitude of (u_z, v_z)
+# --------------------------------------------------------------------------------------------------
+
+@njit(cache=True)
+def _rate_2d(tx, ty, kappa, r):
+    """Shear-rate vector ``phi tau`` and its stress Jacobian ``J = phi I + (x' - phi) t t^T`` at the stress
+    ``(tx, ty)`` (``phi`` the secant fluidity ``x/s``, ``x'`` the tangent one, ``t`` the stress direction):
+    ``gx, gy, Jxx, Jxy, Jyy``."""
+    m = math.hypot(tx, ty)
+    s = m / kappa
+    b = s - 1.0
+    d = math.sqrt(b * b + 4.0 * r * s)
+    phi = (b + d) / (2.0 * r * s) if b >= 0.0 else 2.0 / (d - b)
+    x = phi * s
+    c = 1.0 / (r + (1.0 - r) / ((1.0 + x) * (1.0 + x))) - phi
+    ux = tx / m if m > 0.0 else 0.0
+    uy = ty / m if m > 0.0 else 0.0
+    return phi * tx, phi * ty, phi + c * ux * ux, c * ux * uy, phi + c * uy * uy
+
+
+@njit(cache=True)
+def _panel_2d(a, b, zs, sgn, t0x, t0y, Gx, Gy, H, kappa, r, xg, wg, acc):
+    """Add the Gauss sums over ``zeta = zs + sgn d``, ``a <= d <= b``, to ``acc``: int gdot (0, 1), int J
+    (2-4: xx, xy, yy), int zeta J (5-7), int (H/2 - zeta) gdot (8, 9), int (H/2 - zeta) J (10-12),
+    int (H/2 - zeta) zeta J (13-15)."""
+    half = 0.5 * (b - a)
+    mid = 0.5 * (a + b)
+    for j in range(xg.size):
+        z = zs + sgn * (mid + half * xg[j])
+        w = half * wg[j]
+        gx, gy, jxx, jxy, jyy = _rate_2d(t0x + Gx * z, t0y + Gy * z, kappa, r)
+        c = 0.5 * H - z
+        acc[0] += w * gx
+        acc[1] += w * gy
+        for k, f in ((2, w), (5, w * z), (10, w * c), (13, w * c * z)):
+            acc[k] += f * jxx
+            acc[k + 1] += f * jxy
+            acc[k + 2] += f * jyy
+        acc[8] += w * c * gx
+        acc[9] += w * c * gy
+
+
+@njit(cache=True)
+def _side_2d(a, b, zs, sgn, mmin, Gn, d0, t0x, t0y, Gx, Gy, H, kappa, r, xg, wg, acc):
+    """Panels over ``a <= d <= b`` on one side of the point ``zs`` of least ``|tau|``, ending where
+    ``|tau| = kappa 2^k`` and, if ``d0 > 0``, at ``d = d0 2^j`` (the branch points of ``|tau|`` lie at
+    ``d = +-i d0``, ``d0 = |tau|_min / |G|``)."""
+    tk = math.hypot(mmin, Gn * a) / kappa
+    td = a / d0 if d0 > 0.0 else math.inf
+    cur = a
+    while cur < b:
+        mk = _next_break(tk) * kappa
+        dk = math.sqrt(max(mk * mk - mmin * mmin, 0.0)) / Gn
+        dd = _next_break(td) * d0 if d0 > 0.0 else math.inf
+        if dk <= dd:
+            nxt = dk
+            tk = mk / kappa
+        else:
+            nxt = dd
+            td = dd / d0
+        nxt = min(max(nxt, cur), b)
+        if nxt > cur:
+            _panel_2d(cur, nxt, zs, sgn, t0x, t0y, Gx, Gy, H, kappa, r, xg, wg, acc)
+        cur = nxt
+
+
+@njit(cache=True)
+def _moments_2d(t0x, t0y, Gx, Gy, H, kappa, r, xg, wg, acc):
+    """The sums of :func:`_panel_2d` over the bulk ``0 <= zeta <= H`` (overwrites ``acc``)."""
+    acc[:] = 0.0
+    g2 = Gx * Gx + Gy * Gy
+    zs = -(t0x * Gx + t0y * Gy) / g2 if g2 > 0.0 else 0.0
+    if g2 == 0.0 or not math.isfinite(t0x + t0y + Gx + Gy):  # (NaN/inf input: one panel)
+        _panel_2d(0.0, H, 0.0, 1.0, t0x, t0y, Gx, Gy, H, kappa, r, xg, wg, acc)
+        return
+    Gn = math.sqrt(g2)
+    mmin = abs(t0x * Gy - t0y * Gx) / Gn
+    d0 = mmin / Gn if mmin >= 1e-9 * Gn * H else 0.0  # below: a kink to 1e-17 relative
+    if zs <= 0.0:
+        _side_2d(-zs, H - zs, zs, 1.0, mmin, Gn, d0, t0x, t0y, Gx, Gy, H, kappa, r, xg, wg, acc)
+    elif zs >= H:
+        _side_2d(zs - H, zs, zs, -1.0, mmin, Gn, d0, t0x, t0y, Gx, Gy, H, kappa, r, xg, wg, acc)
+    else:
+        _side_2d(0.0, zs, zs, -1.0, mmin, Gn, d0, t0x, t0y, Gx, Gy, H, kappa, r, xg, wg, acc)
+        _side_2d(0.0, H - zs, zs, 1.0, mmin, Gn, d0, t0x, t0y, Gx, Gy, H, kappa, r, xg, wg, acc)
+
+
+@njit(cache=True)
+def _solve_tau0_2d(dux, duy, Gx, Gy, H, kappa, r, xg, wg, acc):
+    """Bulk stress vector at ``zeta = 0`` with ``int_0^H gdot = du`` (Newton, backtracking on ``|F|``);
+    leaves the moments at the solution in ``acc``."""
+    scale = math.hypot(dux, duy) / H + math.hypot(Gx, Gy) * H
+    tx = dux / H - 0.5 * Gx * H  # Newtonian (mu_1) solution
+    ty = duy / H - 0.5 * Gy * H
+    _moments_2d(tx, ty, Gx, Gy, H, kappa, r, xg, wg, acc)
+    fx = acc[0] - dux
+    fy = acc[1] - duy
+    fn = math.hypot(fx, fy)
+    for _ in range(100):
+        if fn == 0.0:
+            break
+        det = acc[2] * acc[4] - acc[3] * acc[3]
+        sx = -(acc[4] * fx - acc[3] * fy) / det
+        sy = -(acc[2] * fy - acc[3] * fx) / det
+        small = math.hypot(sx, sy) <= 1e-14 * scale
+        t = 1.0
+        for _ in range(40):  # the Newton step is a descent direction of |F|^2
+            nx = tx + t * sx
+            ny = ty + t * sy
+            _moments_2d(nx, ny, Gx, Gy, H, kappa, r, xg, wg, acc)
+            gx = acc[0] - dux
+            gy = acc[1] - duy
+            gn = math.hypot(gx, gy)
+            if small or gn <= (1.0 - 1e-4 * t) * fn:
+                break
+            t *= 0.5
+        tx, ty, fx, fy, fn = nx, ny, gx, gy, gn
+        if small:
+            break
+    return tx, ty
+
+
+@njit(cache=True)
+def gecim_face_2d(h, Gx, Gy, U1x, U1y, U2x, U2y, delta, lam_a, lam_b, kappa, ratio, xg, wg):
+    """One point of a 2-D film: ``(qx, qy, dqx/dGx, dqx/dGy, dqy/dGx, dqy/dGy, dqx/dh, dqy/dh, tau0x, tau0y)``
+    of the pressure part ``q_p`` (dimensionless as :func:`gecim_face`; ``tau_0`` NaN if ``h <= 2 delta``)."""
+    A = lam_a + lam_b
+    H = h - 2.0 * delta
+    if H <= 0.0:
+        k = -0.5 * h * A
+        return k * Gx, k * Gy, k, 0.0, 0.0, k, -0.5 * A * Gx, -0.5 * A * Gy, math.nan, math.nan
+    dl = lam_b - lam_a
+    dux = (U2x - U1x) - dl * Gx
+    duy = (U2y - U1y) - dl * Gy
+    acc = np.empty(16)
+    tx, ty = _solve_tau0_2d(dux, duy, Gx, Gy, H, kappa, ratio, xg, wg, acc)
+    det = acc[2] * acc[4] - acc[3] * acc[3]
+    ixx, ixy, iyy = acc[4] / det, -acc[3] / det, acc[2] / det  # F_tau^-1
+    mxx, mxy, myy = acc[5] + dl, acc[6], acc[7] + dl          # dF/dG
+    txx, txy = -(ixx * mxx + ixy * mxy), -(ixx * mxy + ixy * myy)  # d tau_0/dG
+    tyx, tyy = -(ixy * mxx + iyy * mxy), -(ixy * mxy + iyy * myy)
+    g1x, g1y = _rate_2d(tx + Gx * H, ty + Gy * H, kappa, ratio)[:2]
+    sx, sy = -(ixx * g1x + ixy * g1y), -(ixy * g1x + iyy * g1y)    # d tau_0/dH
+    kxx, kxy, kyy = acc[10], acc[11], acc[12]
+    k0 = -0.5 * h * A
+    return (k0 * Gx + acc[8], k0 * Gy + acc[9],
+            k0 + acc[13] + kxx * txx + kxy * tyx, acc[14] + kxx * txy + kxy * tyy,
+            acc[14] + kxy * txx + kyy * tyx, k0 + acc[15] + kxy * txy + kyy * tyy,
+            -0.5 * (A * Gx + H * g1x - dux) + kxx * sx + kxy * sy,
+            -0.5 * (A * Gy + H * g1y - duy) + kxy * sx + kyy * sy, tx, ty)
+
+
+@njit(cache=True)
+def gecim_flow_2d(h, G, U1, U2, delta, lam_a, lam_b, kappa, ratio, xg, wg, qp, dqp_dG, dqp_dh, tau0):
+    """:func:`gecim_face_2d` over points: ``h (n,)``; ``G, U1, U2, qp, dqp_dh, tau0 (n, 2)``;
+    ``dqp_dG (n, 2, 2)`` with ``dqp_dG[i, a, b] = d qp_a / d G_b``."""
+    for i in range(h.size):
+        o = gecim_face_2d(h[i], G[i, 0], G[i, 1], U1[i, 0], U1[i, 1], U2[i, 0], U2[i, 1], delta, lam_a, lam_b,
+                          kappa, ratio, xg, wg)
+        qp[i, 0], qp[i, 1] = o[0], o[1]
+        dqp_dG[i, 0, 0], dqp_dG[i, 0, 1], dqp_dG[i, 1, 0], dqp_dG[i, 1, 1] = o[2], o[3], o[4], o[5]
+        dqp_dh[i, 0], dqp_dh[i, 1] = o[6], o[7]
+        tau0[i, 0], tau0[i, 1] = o[8], o[9]
+
+
+# --------------------------------------------------------------------------------------------------
 # rheology and layers (SI)
 # --------------------------------------------------------------------------------------------------
 
@@ -348,8 +514,7 @@ class LayeredFilm:
         object.__setattr__(self, "gauss_points", int(check_range("gauss_points", self.gauss_points, "-", 1, 64)))
 
     def _scaled(self, h, G, U1, U2, scales):
-        """Broadcast, check and scale the face data; return the dimensionless arrays and (L, V)."""
-        h, G, U1, U2 = (np.ascontiguousarray(v, dtype=float).ravel() for v in np.broadcast_arrays(h, G, U1, U2))
+        """Check and scale broadcast face data; return the dimensionless arrays and the reference (L, V)."""
         if not np.all(h > 0.0) or not np.all(np.isfinite(h)):
             bad = float(h[~((h > 0.0) & np.isfinite(h))][0])
             raise ValueError(f"film thickness h = {bad!r} [m] is out of range; allowed: (0, inf) m")
@@ -360,6 +525,12 @@ class LayeredFilm:
             L, V = scales
         gs = self.viscosity * V / L**2
         return h / L, G / gs, U1 / V, U2 / V, float(L), float(V)
+
+    @staticmethod
+    def _faces(h, G, U1, U2):
+        """Broadcast 1-D face data to flat float arrays; also return the broadcast shape."""
+        arrays = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in (h, G, U1, U2)))
+        return arrays[0].shape, [np.ascontiguousarray(a).ravel() for a in arrays]
 
     def _parameters(self, L, V):
         """Dimensionless ``delta, lam_a, lam_b, kappa, ratio`` (Newtonian: ``kappa = 1, ratio = 1``)."""
@@ -378,8 +549,8 @@ class LayeredFilm:
         """:class:`FaceFlow` at faces of film ``h`` [m], pressure gradient ``G = dp/ds`` [Pa/m] and wall
         speeds ``U1`` (lower), ``U2`` (upper) [m/s] along the face direction (arrays broadcast).
         ``scales = (L [m], V [m/s])`` overrides the kernels' reference length and speed."""
-        shape = np.broadcast_shapes(np.shape(h), np.shape(G), np.shape(U1), np.shape(U2))
-        hs, Gs, U1s, U2s, L, V = self._scaled(h, G, U1, U2, scales)
+        shape, faces = self._faces(h, G, U1, U2)
+        hs, Gs, U1s, U2s, L, V = self._scaled(*faces, scales)
         delta, lam_a, lam_b, kappa, ratio = self._parameters(L, V)
         qp, dG, dh = (np.empty_like(hs) for _ in range(3))
         if isinstance(self.rheology, Gecim):
@@ -390,10 +561,35 @@ class LayeredFilm:
         qc = 0.5 * hs * (U1s + U2s) * V * L
         return FaceFlow(*(a.reshape(shape) for a in (qc, qp * V * L, dG * L**3 / self.viscosity, dh * V)))
 
+    def flow_2d(self, h, G, U1, U2, scales=None):
+        """:class:`FaceFlow` of a 2-D film: ``h`` [m] of shape ``S``, the pressure gradient ``G`` [Pa/m] and
+        the wall velocities ``U1, U2`` [m/s] of shape ``S + (2,)``. Returns ``q_couette, q_pressure,
+        dqp_dh`` of shape ``S + (2,)`` and ``dqp_dG`` of shape ``S + (2, 2)`` (``[..., a, b] = dq_a/dG_b``).
+        For a Gecim bulk the two directions are coupled through ``|gdot|`` (eq. 12)."""
+        G, U1, U2 = (np.asarray(v, dtype=float) for v in (G, U1, U2))
+        h = np.asarray(h, dtype=float)
+        hv, G, U1, U2 = np.broadcast_arrays(h[..., None], G, U1, U2)
+        shape = hv.shape[:-1]
+        h_flat = np.ascontiguousarray(hv[..., 0]).ravel()
+        G, U1, U2 = (np.ascontiguousarray(v).reshape(-1, 2) for v in (G, U1, U2))
+        hs, Gs, U1s, U2s, L, V = self._scaled(h_flat, G, U1, U2, scales)
+        delta, lam_a, lam_b, kappa, ratio = self._parameters(L, V)
+        qp, dh = np.empty_like(Gs), np.empty_like(Gs)
+        dG = np.zeros((hs.size, 2, 2))
+        if isinstance(self.rheology, Gecim):
+            xg, wg = self._gauss()
+            gecim_flow_2d(hs, Gs, U1s, U2s, delta, lam_a, lam_b, kappa, ratio, xg, wg, qp, dG, dh, np.empty_like(Gs))
+        else:  # linear and isotropic: each direction on its own
+            for a in range(2):
+                newtonian_flow(hs, np.ascontiguousarray(Gs[:, a]), delta, lam_a + lam_b, qp[:, a], dG[:, a, a], dh[:, a])
+        qc = 0.5 * hs[:, None] * (U1s + U2s) * V * L
+        return FaceFlow(qc.reshape(shape + (2,)), (qp * V * L).reshape(shape + (2,)),
+                        (dG * L**3 / self.viscosity).reshape(shape + (2, 2)), (dh * V).reshape(shape + (2,)))
+
     def stresses(self, h, G, U1, U2):
         """:class:`ShearStresses` [Pa] (NaN at the interfaces where ``h <= 2 delta``)."""
-        shape = np.broadcast_shapes(np.shape(h), np.shape(G), np.shape(U1), np.shape(U2))
-        hs, Gs, U1s, U2s, L, V = self._scaled(h, G, U1, U2, None)
+        shape, faces = self._faces(h, G, U1, U2)
+        hs, Gs, U1s, U2s, L, V = self._scaled(*faces, None)
         delta, lam_a, lam_b, kappa, ratio = self._parameters(L, V)
         xg, wg = self._gauss()
         out = [np.empty_like(hs) for _ in range(4)]
@@ -405,7 +601,7 @@ class LayeredFilm:
 
     def velocity(self, h, G, U1, U2, z):
         """Velocity [m/s] at heights ``z`` [m] (``0 <= z <= h``) across one film (scalars ``h, G, U1, U2``)."""
-        hs, Gs, U1s, U2s, L, V = self._scaled(h, G, U1, U2, None)
+        hs, Gs, U1s, U2s, L, V = self._scaled(*self._faces(h, G, U1, U2)[1], None)
         delta, lam_a, lam_b, kappa, ratio = self._parameters(L, V)
         zs = np.asarray(z, dtype=float)
         u = np.empty(zs.size)
