@@ -55,8 +55,9 @@ enter as ``delta / L`` and the Darcy mobilities ``lam_a = alpha^2 mu_1 / (mu_a L
 ends are where the stress crosses 0 (the law has a ``|gdot|`` kink there) and ``+-kappa 2^k`` (the
 inverse law has complex branch points on ``|tau| = kappa``): each panel is then at least its own
 half-length away from a singularity and the sums converge geometrically in ``n`` (docs/layered.md).
-``tau_0`` is found by a safeguarded Newton iteration (the slope is bracketed by ``[H, H/r]``) to
-rounding; ``dq_p/dG`` and ``dq_p/dh`` are exact (implicit differentiation of the continuity condition).
+``tau_0`` is found by Newton's method from the Newtonian (``mu_1``) solution, to rounding (the slope
+lies in ``[H, H/r]``; a sweep over the parameters converges everywhere; NaN after 50 iterations);
+``dq_p/dG`` and ``dq_p/dh`` are exact (implicit differentiation of the continuity condition).
 
 Departures from the printed paper (details in docs/layered.md): eq. (19) is replaced by the flow above
 (the printed one drops the Darcy flow inside the layers, has ``h^3`` for ``h`` in x-direction alpha terms,
@@ -64,8 +65,12 @@ a sign error in a y term and an unnormalised ``f50``); eq. (27)'s ``f2`` is ``in
 ``f1``; the friction is the wall traction ``tau(0) = tau_0 - G delta``, ``tau(h) = tau_0 + G (H + delta)``
 (the stress is linear across the whole film), not the interface stress of eq. (28). The paper's
 ``f1 .. f5`` (secant-viscosity integrals) are equivalent to the moments of ``gdot`` used here.
-Only one direction is treated: for a Gecim bulk in 2-D the x and y flows are coupled through
-``|gdot|`` (eq. 12), which a per-face law in the face direction alone leaves out.
+**Two directions.** For a Gecim bulk the x and y flows are coupled through ``|gdot|`` (eq. 12): the
+same derivation with 2-vectors ``G``, ``tau_0``, ``U1``, ``U2`` and ``gdot = phi(|tau|) tau`` (``phi`` the
+secant fluidity) gives :func:`gecim_face_2d` (``dq_p/dG`` a 2 x 2 matrix). Along ``zeta`` the stress
+``|tau|`` is least at ``zeta*``; the panels end there, where ``|tau| = kappa 2^k`` and at
+``|zeta - zeta*| = d0 2^j``, ``d0 = |tau|_min/|G|`` (``|tau|`` has branch points at ``zeta* +- i d0``).
+The 1-D kernels are its special case (transverse gradient and speeds zero) and cheaper.
 """
 
 from __future__ import annotations
@@ -145,32 +150,17 @@ def _moments(tau0, G, zb, H, kappa, r, xg, wg):
 
 @njit(cache=True)
 def _solve_tau0(du, G, H, kappa, r, xg, wg):
-    """Bulk stress at ``zeta = 0`` such that ``int_0^H gdot = du`` (safeguarded Newton, to rounding)."""
+    """Bulk stress at ``zeta = 0`` such that ``int_0^H gdot = du``: Newton from the Newtonian (``mu_1``)
+    solution to rounding; NaN if 50 iterations do not converge (never seen: tests sweep the parameters)."""
     scale = abs(du) / H + abs(G) * H
-    if scale == 0.0:
-        return 0.0
-    t = du / H - 0.5 * G * H  # Newtonian (mu_1) solution
-    lo = -math.inf
-    hi = math.inf
-    for _ in range(100):
+    t = du / H - 0.5 * G * H
+    for _ in range(50):
         m = _moments(t, G, H, H, kappa, r, xg, wg)
-        f = m[0] - du
-        if f == 0.0:
+        step = (m[0] - du) / m[1]
+        t -= step
+        if abs(step) <= 1e-14 * scale:
             return t
-        if f > 0.0:
-            hi = t
-            lo = max(lo, t - 2.0 * f / H)  # slope >= H
-        else:
-            lo = t
-            hi = min(hi, t - 2.0 * f / H)
-        step = f / m[1]
-        tn = t - step
-        if not lo <= tn <= hi:
-            tn = 0.5 * (lo + hi)
-        if abs(tn - t) <= 1e-14 * scale:
-            return tn
-        t = tn
-    return t
+    return math.nan
 
 
 @njit(cache=True)
@@ -322,37 +312,23 @@ def _moments_2d(t0x, t0y, Gx, Gy, H, kappa, r, xg, wg, acc):
 
 @njit(cache=True)
 def _solve_tau0_2d(dux, duy, Gx, Gy, H, kappa, r, xg, wg, acc):
-    """Bulk stress vector at ``zeta = 0`` with ``int_0^H gdot = du`` (Newton, backtracking on ``|F|``);
-    leaves the moments at the solution in ``acc``."""
+    """Bulk stress vector at ``zeta = 0`` with ``int_0^H gdot = du``: Newton from the Newtonian solution
+    (NaN if 50 iterations do not converge); leaves the moments at the solution in ``acc``."""
     scale = math.hypot(dux, duy) / H + math.hypot(Gx, Gy) * H
-    tx = dux / H - 0.5 * Gx * H  # Newtonian (mu_1) solution
+    tx = dux / H - 0.5 * Gx * H
     ty = duy / H - 0.5 * Gy * H
-    _moments_2d(tx, ty, Gx, Gy, H, kappa, r, xg, wg, acc)
-    fx = acc[0] - dux
-    fy = acc[1] - duy
-    fn = math.hypot(fx, fy)
-    for _ in range(100):
-        if fn == 0.0:
-            break
+    for _ in range(50):
+        _moments_2d(tx, ty, Gx, Gy, H, kappa, r, xg, wg, acc)
+        fx = acc[0] - dux
+        fy = acc[1] - duy
         det = acc[2] * acc[4] - acc[3] * acc[3]
-        sx = -(acc[4] * fx - acc[3] * fy) / det
-        sy = -(acc[2] * fy - acc[3] * fx) / det
-        small = math.hypot(sx, sy) <= 1e-14 * scale
-        t = 1.0
-        for _ in range(40):  # the Newton step is a descent direction of |F|^2
-            nx = tx + t * sx
-            ny = ty + t * sy
-            _moments_2d(nx, ny, Gx, Gy, H, kappa, r, xg, wg, acc)
-            gx = acc[0] - dux
-            gy = acc[1] - duy
-            gn = math.hypot(gx, gy)
-            if small or gn <= (1.0 - 1e-4 * t) * fn:
-                break
-            t *= 0.5
-        tx, ty, fx, fy, fn = nx, ny, gx, gy, gn
-        if small:
-            break
-    return tx, ty
+        sx = (acc[4] * fx - acc[3] * fy) / det
+        sy = (acc[2] * fy - acc[3] * fx) / det
+        if math.hypot(sx, sy) <= 1e-14 * scale:
+            return tx, ty  # (acc holds the moments here, one rounding-level step away)
+        tx -= sx
+        ty -= sy
+    return math.nan, math.nan
 
 
 @njit(cache=True)
@@ -369,6 +345,9 @@ def gecim_face_2d(h, Gx, Gy, U1x, U1y, U2x, U2y, delta, lam_a, lam_b, kappa, rat
     duy = (U2y - U1y) - dl * Gy
     acc = np.empty(16)
     tx, ty = _solve_tau0_2d(dux, duy, Gx, Gy, H, kappa, ratio, xg, wg, acc)
+    if math.isnan(tx):
+        n = math.nan
+        return n, n, n, n, n, n, n, n, n, n
     det = acc[2] * acc[4] - acc[3] * acc[3]
     ixx, ixy, iyy = acc[4] / det, -acc[3] / det, acc[2] / det  # F_tau^-1
     mxx, mxy, myy = acc[5] + dl, acc[6], acc[7] + dl          # dF/dG
