@@ -68,8 +68,9 @@ a sign error in a y term and an unnormalised ``f50``); eq. (27)'s ``f2`` is ``in
 **Two directions.** For a Gecim bulk the x and y flows are coupled through ``|gdot|`` (eq. 12): the
 same derivation with 2-vectors ``G``, ``tau_0``, ``U1``, ``U2`` and ``gdot = phi(|tau|) tau`` (``phi`` the
 secant fluidity) gives :func:`gecim_face_2d` (``dq_p/dG`` a 2 x 2 matrix). Along ``zeta`` the stress
-``|tau|`` is least at ``zeta*``; the panels end there, where ``|tau| = kappa 2^k`` and at
-``|zeta - zeta*| = d0 2^j``, ``d0 = |tau|_min/|G|`` (``|tau|`` has branch points at ``zeta* +- i d0``).
+``|tau|`` is least at ``zeta*``; the panels end there and where ``|tau| = kappa 2^k``, and grow
+geometrically from ``zeta*``: no longer than ``max(|zeta - zeta*|, d0)``, ``d0 = |tau|_min/|G|``
+(``|tau|`` has branch points at ``zeta* +- i d0``).
 The 1-D kernels are its special case (transverse gradient and speeds zero) and cheaper.
 """
 
@@ -255,37 +256,42 @@ def _panel_2d(a, b, zs, sgn, t0x, t0y, Gx, Gy, H, kappa, r, xg, wg, acc):
         w = half * wg[j]
         gx, gy, jxx, jxy, jyy = _rate_2d(t0x + Gx * z, t0y + Gy * z, kappa, r)
         c = 0.5 * H - z
+        wz = w * z
+        wc = w * c
+        wcz = wc * z
         acc[0] += w * gx
         acc[1] += w * gy
-        for k, f in ((2, w), (5, w * z), (10, w * c), (13, w * c * z)):
-            acc[k] += f * jxx
-            acc[k + 1] += f * jxy
-            acc[k + 2] += f * jyy
-        acc[8] += w * c * gx
-        acc[9] += w * c * gy
+        acc[2] += w * jxx
+        acc[3] += w * jxy
+        acc[4] += w * jyy
+        acc[5] += wz * jxx
+        acc[6] += wz * jxy
+        acc[7] += wz * jyy
+        acc[8] += wc * gx
+        acc[9] += wc * gy
+        acc[10] += wc * jxx
+        acc[11] += wc * jxy
+        acc[12] += wc * jyy
+        acc[13] += wcz * jxx
+        acc[14] += wcz * jxy
+        acc[15] += wcz * jyy
 
 
 @njit(cache=True)
 def _side_2d(a, b, zs, sgn, mmin, Gn, d0, t0x, t0y, Gx, Gy, H, kappa, r, xg, wg, acc):
-    """Panels over ``a <= d <= b`` on one side of the point ``zs`` of least ``|tau|``, ending where
-    ``|tau| = kappa 2^k`` and, if ``d0 > 0``, at ``d = d0 2^j`` (the branch points of ``|tau|`` lie at
-    ``d = +-i d0``, ``d0 = |tau|_min / |G|``)."""
+    """Panels over ``a <= d <= b`` on one side of the point ``zs`` of least ``|tau|``: they end where
+    ``|tau| = kappa 2^k`` and, if ``d0 > 0``, are no longer than ``max(d, d0)`` (the branch points of
+    ``|tau|`` lie at ``d = +-i d0``, ``d0 = |tau|_min / |G|``)."""
     tk = math.hypot(mmin, Gn * a) / kappa
-    td = a / d0 if d0 > 0.0 else math.inf
     cur = a
     while cur < b:
         mk = _next_break(tk) * kappa
         dk = math.sqrt(max(mk * mk - mmin * mmin, 0.0)) / Gn
-        dd = _next_break(td) * d0 if d0 > 0.0 else math.inf
-        if dk <= dd:
-            nxt = dk
+        nxt = min(dk, cur + max(cur, d0)) if d0 > 0.0 else dk
+        if nxt >= dk:
             tk = mk / kappa
-        else:
-            nxt = dd
-            td = dd / d0
-        nxt = min(max(nxt, cur), b)
-        if nxt > cur:
-            _panel_2d(cur, nxt, zs, sgn, t0x, t0y, Gx, Gy, H, kappa, r, xg, wg, acc)
+        nxt = min(nxt, b)
+        _panel_2d(cur, nxt, zs, sgn, t0x, t0y, Gx, Gy, H, kappa, r, xg, wg, acc)
         cur = nxt
 
 
