@@ -457,6 +457,20 @@ def test_2d_law_reduces_to_the_1d_law():
         assert two.q_pressure[1] == 0.0 and two.dqp_dG[0, 1] == 0.0 and two.dqp_dh[1] == 0.0
 
 
+def test_2d_newtonian_layered_film_is_the_1d_law_in_each_direction():
+    f = film(layers=PAPER_LAYERS)
+    h = np.array([0.3, 0.9, 1.6]) * C
+    G = np.array([[2.0, -1.0], [0.5, 4.0], [-3.0, 0.0]]) * G0
+    U1, U2 = np.array([0.1, -0.2]) * U, np.array([1.0, 0.3]) * U
+    r = f.flow_2d(h, G, U1, U2)
+    for a in (0, 1):
+        one = f.flow(h, G[:, a], U1[a], U2[a])
+        for x, y in zip(one, (r.q_couette[:, a], r.q_pressure[:, a], r.dqp_dG[:, a, a], r.dqp_dh[:, a])):
+            np.testing.assert_allclose(y, x, rtol=1e-14)
+    np.testing.assert_array_equal(r.dqp_dG[:, 0, 1], 0.0)
+    np.testing.assert_array_equal(r.dqp_dG[:, 1, 0], 0.0)
+
+
 def test_2d_law_is_isotropic():
     f = film(Gecim(KAPPA, RATIO), PAPER_LAYERS)
     a = 0.7

@@ -49,15 +49,25 @@ each, the bulk is empty and ``q_p = -(h/2) alpha^2 (1/mu_a + 1/mu_b) G`` (contin
 stresses and ``kappa / (mu_1 V / L)``, ``q / (V L)``, ``dq/dG / (L^3 / mu_1)``, ``dq/dh / V``. The layers
 enter as ``delta / L`` and the Darcy mobilities ``lam_a = alpha^2 mu_1 / (mu_a L^2)``,
 ``lam_b = alpha^2 mu_1 / (mu_b L^2)``. :class:`LayeredFilm` (SI in and out) picks ``L = max h``,
-``V = max(|U1|, |U2|, |G| L^2 / mu_1)``.
+``V = max(|U1|, |U2|, |G| L^2 / mu_1)`` (1 m/s if all vanish) unless given ``scales = (L, V)``.
 
 **Quadrature.** The bulk integrals are Gauss-Legendre sums (``n`` points per panel) over panels whose
-ends are where the stress crosses 0 (the law has a ``|gdot|`` kink there) and ``+-kappa 2^k`` (the
-inverse law has complex branch points on ``|tau| = kappa``): each panel is then at least its own
-half-length away from a singularity and the sums converge geometrically in ``n`` (docs/layered.md).
+ends are where the stress crosses 0 (the law's curvature jumps there: it depends on ``|gdot|``) and
+``+-kappa 2^k`` (the inverse law has complex branch points on ``|tau| = kappa``): each panel is then at
+least its own half-length away from a singularity and the sums converge geometrically in ``n``
+(docs/layered.md).
 ``tau_0`` is found by Newton's method from the Newtonian (``mu_1``) solution, to rounding (the slope
 lies in ``[H, H/r]``; a sweep over the parameters converges everywhere; NaN after 50 iterations);
 ``dq_p/dG`` and ``dq_p/dh`` are exact (implicit differentiation of the continuity condition).
+
+**Two directions.** For a Gecim bulk the x and y flows are coupled through ``|gdot|`` (eq. 12). The
+same derivation with 2-vectors ``G``, ``tau_0``, ``U1``, ``U2`` and ``gdot = phi(|tau|) tau`` (``phi`` the
+secant fluidity) gives :func:`gecim_face_2d` (``dq_p/dG`` a 2 x 2 matrix: a small gradient along the
+sliding sees the tangent viscosity, one across it the secant viscosity). Along ``zeta`` the stress
+``|tau|`` is least at ``zeta*``; the panels end there and where ``|tau| = kappa 2^k``, and grow
+geometrically from ``zeta*``, no longer than ``max(|zeta - zeta*|, d0)``, ``d0 = |tau|_min/|G|``
+(``|tau|`` has branch points at ``zeta* +- i d0``). The 1-D kernels are its special case (transverse
+gradient and speeds zero) and about 4 times cheaper.
 
 Departures from the printed paper (details in docs/layered.md): eq. (19) is replaced by the flow above
 (the printed one drops the Darcy flow inside the layers, has ``h^3`` for ``h`` in x-direction alpha terms,
@@ -65,13 +75,6 @@ a sign error in a y term and an unnormalised ``f50``); eq. (27)'s ``f2`` is ``in
 ``f1``; the friction is the wall traction ``tau(0) = tau_0 - G delta``, ``tau(h) = tau_0 + G (H + delta)``
 (the stress is linear across the whole film), not the interface stress of eq. (28). The paper's
 ``f1 .. f5`` (secant-viscosity integrals) are equivalent to the moments of ``gdot`` used here.
-**Two directions.** For a Gecim bulk the x and y flows are coupled through ``|gdot|`` (eq. 12): the
-same derivation with 2-vectors ``G``, ``tau_0``, ``U1``, ``U2`` and ``gdot = phi(|tau|) tau`` (``phi`` the
-secant fluidity) gives :func:`gecim_face_2d` (``dq_p/dG`` a 2 x 2 matrix). Along ``zeta`` the stress
-``|tau|`` is least at ``zeta*``; the panels end there and where ``|tau| = kappa 2^k``, and grow
-geometrically from ``zeta*``: no longer than ``max(|zeta - zeta*|, d0)``, ``d0 = |tau|_min/|G|``
-(``|tau|`` has branch points at ``zeta* +- i d0``).
-The 1-D kernels are its special case (transverse gradient and speeds zero) and cheaper.
 """
 
 from __future__ import annotations
@@ -566,7 +569,8 @@ class LayeredFilm:
             gecim_flow_2d(hs, Gs, U1s, U2s, delta, lam_a, lam_b, kappa, ratio, xg, wg, qp, dG, dh, np.empty_like(Gs))
         else:  # linear and isotropic: each direction on its own
             for a in range(2):
-                newtonian_flow(hs, np.ascontiguousarray(Gs[:, a]), delta, lam_a + lam_b, qp[:, a], dG[:, a, a], dh[:, a])
+                newtonian_flow(hs, np.ascontiguousarray(Gs[:, a]), delta, lam_a + lam_b, qp[:, a], dG[:, a, a],
+                               dh[:, a])
         qc = 0.5 * hs[:, None] * (U1s + U2s) * V * L
         return FaceFlow(qc.reshape(shape + (2,)), (qp * V * L).reshape(shape + (2,)),
                         (dG * L**3 / self.viscosity).reshape(shape + (2, 2)), (dh * V).reshape(shape + (2,)))
