@@ -527,6 +527,16 @@ def test_2d_derivatives_against_central_differences(state):
     np.testing.assert_allclose(r.dqp_dh, fd, rtol=1e-6, atol=1e-6 * np.abs(fd).max())
 
 
+def test_newton_stops_at_the_rounding_floor():
+    """A state found by a 20000-point sweep: the Newtonian start is exact (r = 1) and the steps bounce at
+    2.5e-14 of the stress scale; Newton must stop there, not run out of iterations (NaN)."""
+    xg, wg = np.polynomial.legendre.leggauss(12)
+    H, G, du, kappa = 0.27902214840656486, (-0.00302075, 0.00054669), (-0.05514, 0.00273181), 0.002227983505887975
+    o = gecim_face_2d(H, *G, 0.0, 0.0, *du, 0.0, 0.0, 0.0, kappa, 1.0, xg, wg)
+    t_newton = np.array(du) / H - np.array(G) * H / 2
+    np.testing.assert_allclose(o[8:], t_newton, rtol=1e-13)
+
+
 def test_newton_converges_over_a_parameter_sweep():
     """Newton from the Newtonian solution converges (velocity continuity to rounding; measured worst
     3e-16 in 1-D, 1e-14 in 2-D of the bound's scale) for random states: stresses over ~1e-6 .. 1e7 kappa,

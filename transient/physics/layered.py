@@ -153,17 +153,26 @@ def _moments(tau0, G, zb, H, kappa, r, xg, wg):
 
 
 @njit(cache=True)
+def _converged(step, last, scale):
+    """Newton stop: the step is at 1e-14 of the stress scale, or it has stopped shrinking below 1e-10 of it
+    (the rounding floor of the sums, which grows with the number of panels and with 1/r)."""
+    return step <= 1e-14 * scale or (step <= 1e-10 * scale and step >= 0.5 * last)
+
+
+@njit(cache=True)
 def _solve_tau0(du, G, H, kappa, r, xg, wg):
     """Bulk stress at ``zeta = 0`` such that ``int_0^H gdot = du``: Newton from the Newtonian (``mu_1``)
     solution to rounding; NaN if 50 iterations do not converge (never seen: tests sweep the parameters)."""
     scale = abs(du) / H + abs(G) * H
     t = du / H - 0.5 * G * H
+    last = math.inf
     for _ in range(50):
         m = _moments(t, G, H, H, kappa, r, xg, wg)
         step = (m[0] - du) / m[1]
         t -= step
-        if abs(step) <= 1e-14 * scale:
+        if _converged(abs(step), last, scale):
             return t
+        last = abs(step)
     return math.nan
 
 
@@ -326,6 +335,7 @@ def _solve_tau0_2d(dux, duy, Gx, Gy, H, kappa, r, xg, wg, acc):
     scale = math.hypot(dux, duy) / H + math.hypot(Gx, Gy) * H
     tx = dux / H - 0.5 * Gx * H
     ty = duy / H - 0.5 * Gy * H
+    last = math.inf
     for _ in range(50):
         _moments_2d(tx, ty, Gx, Gy, H, kappa, r, xg, wg, acc)
         fx = acc[0] - dux
@@ -333,10 +343,12 @@ def _solve_tau0_2d(dux, duy, Gx, Gy, H, kappa, r, xg, wg, acc):
         det = acc[2] * acc[4] - acc[3] * acc[3]
         sx = (acc[4] * fx - acc[3] * fy) / det
         sy = (acc[2] * fy - acc[3] * fx) / det
-        if math.hypot(sx, sy) <= 1e-14 * scale:
+        step = math.hypot(sx, sy)
+        if _converged(step, last, scale):
             return tx, ty  # (acc holds the moments here, one rounding-level step away)
         tx -= sx
         ty -= sy
+        last = step
     return math.nan, math.nan
 
 
