@@ -531,7 +531,9 @@ def test_newton_stops_at_the_rounding_floor():
     """A state found by a 20000-point sweep: the Newtonian start is exact (r = 1) and the steps bounce at
     2.5e-14 of the stress scale; Newton must stop there, not run out of iterations (NaN)."""
     xg, wg = np.polynomial.legendre.leggauss(12)
-    H, G, du, kappa = 0.27902214840656486, (-0.00302075, 0.00054669), (-0.05514, 0.00273181), 0.002227983505887975
+    H, kappa = 0.27902214840656486, float.fromhex("0x1.2406b8966f164p-9")
+    G = tuple(float.fromhex(v) for v in ("-0x1.8befa55e08867p-9", "0x1.1e9fb9ff29fccp-11"))
+    du = tuple(float.fromhex(v) for v in ("-0x1.c3b4f7f66bacfp-5", "0x1.661036752bcf8p-9"))
     o = gecim_face_2d(H, *G, 0.0, 0.0, *du, 0.0, 0.0, 0.0, kappa, 1.0, xg, wg)
     t_newton = np.array(du) / H - np.array(G) * H / 2
     np.testing.assert_allclose(o[8:], t_newton, rtol=1e-13)
