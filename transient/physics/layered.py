@@ -57,7 +57,7 @@ ends are where the stress crosses 0 (the law's curvature jumps there: it depends
 least its own half-length away from a singularity and the sums converge geometrically in ``n``
 (docs/layered.md).
 ``tau_0`` is found by Newton's method from the Newtonian (``mu_1``) solution, to rounding (the slope
-lies in ``[H, H/r]``; a sweep over the parameters converges everywhere; NaN after 50 iterations);
+lies in ``[H, H/r]``; sweeps over the parameters converge everywhere; NaN after 50 iterations);
 ``dq_p/dG`` and ``dq_p/dh`` are exact (implicit differentiation of the continuity condition).
 
 **Two directions.** For a Gecim bulk the x and y flows are coupled through ``|gdot|`` (eq. 12). The
