@@ -482,7 +482,7 @@ class FaceFlow(NamedTuple):
 
     q_couette: np.ndarray   # h (U1 + U2)/2 [m^2/s]; upwinded on the content in Elrod's scheme
     q_pressure: np.ndarray  # [m^2/s]; zero at G = 0
-    dqp_dG: np.ndarray      # d q_pressure / dG [m^4/(N s)]
+    dqp_dG: np.ndarray      # d q_pressure / dG [m^5/(N s)]
     dqp_dh: np.ndarray      # d q_pressure / dh [m/s]
 
 
