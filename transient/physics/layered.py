@@ -86,7 +86,7 @@ from typing import NamedTuple
 import numpy as np
 from numba import njit
 
-from transient.validation import check_positive, check_range
+from transient.checks import check_positive, check_range
 
 RATIO_MIN = 0.05  # smallest mu_2/mu_1 for which the stated quadrature accuracy is measured
 GAUSS_POINTS = 12
