@@ -134,7 +134,7 @@ def test_plasticity_index_error():
 
 
 @pytest.mark.parametrize("args,words", [
-    (dict(asperity_density=-1.0), ["asperity_density N", "-1", "1/m^2", "(0, inf)"]),
+    (dict(asperity_density=-1.0), ["asperity_density N", "-1", "1/m^2", "[1000, 1e+16]"]),
     (dict(asperity_radius=0.0), ["asperity_radius Rp", "m"]),
     (dict(e_prime=float("nan")), ["e_prime E'", "Pa"]),
     (dict(hardness=-4e9), ["hardness H", "Pa"]),

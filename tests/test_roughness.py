@@ -165,9 +165,9 @@ def test_measured_acf_of_white_noise_is_delta():
 
 
 @pytest.mark.parametrize("kw,words", [
-    (dict(rq=-1e-6), ["rq", "-1e-06", "m", "(0, inf)"]),
-    (dict(spacing=0.0), ["spacing dx", "m"]),
-    (dict(correlation_lengths=(0.0, 1e-6)), ["correlation length lx", "m"]),
+    (dict(rq=-1e-6), ["rq", "-1e-06", "m", "[1e-10, 0.001]"]),
+    (dict(spacing=0.0), ["spacing[0]", "m", "[1e-09, 0.01]"]),
+    (dict(correlation_lengths=(0.0, 1e-6)), ["correlation_lengths[0]", "m"]),
     (dict(acf="gaussian"), ["acf", "triangular"]),
     (dict(method="spectral"), ["method"]),
     (dict(kurtosis=0.5), ["kurtosis", "0.5"]),

@@ -220,21 +220,21 @@ class AsperityContact:
 
     def __post_init__(self):
         set_ = lambda k, v: object.__setattr__(self, k, v)  # noqa: E731
-        set_("asperity_density", check_positive("asperity_density N", self.asperity_density, "1/m^2"))
-        set_("asperity_radius", check_positive("asperity_radius Rp", self.asperity_radius, "m"))
-        set_("e_prime", check_positive("e_prime E'", self.e_prime, "Pa"))
-        set_("hardness", check_positive("hardness H", self.hardness, "Pa"))
+        set_("asperity_density", check_range("asperity_density N", self.asperity_density, "1/m^2", 1e3, 1e16))
+        set_("asperity_radius", check_range("asperity_radius Rp", self.asperity_radius, "m", 1e-9, 1.0))
+        set_("e_prime", check_range("e_prime E'", self.e_prime, "Pa", 1e6, 1e13))
+        set_("hardness", check_range("hardness H", self.hardness, "Pa", 1e6, 1e12))
         if self.density is None and self.sigma is None:
             raise ValueError("give the height density: sigma [m] (Gaussian) or density (DiscreteDensity)")
         if self.density is not None and not isinstance(self.density, DiscreteDensity):
             raise ValueError(f"density must be a DiscreteDensity, got {type(self.density).__name__}")
         sig = self.density.sigma if self.sigma is None else self.sigma
-        set_("sigma", check_positive("sigma (Rq)", sig, "m"))
+        set_("sigma", check_range("sigma (Rq)", sig, "m", 1e-10, 1e-3))
         psi = self.plasticity_index
         if self.elastic_only and not psi < 1.0:
             raise ValueError(
-                f"plasticity index psi = (E'/H) sqrt(Rq/Rp) = ({self.e_prime:g} Pa / {self.hardness:g} Pa)"
-                f" * sqrt({self.sigma:g} m / {self.asperity_radius:g} m) = {psi:.4g} out of range: "
+                f"plasticity index psi = (e_prime / hardness) sqrt(sigma / asperity_radius) = ({self.e_prime:g} Pa / "
+                f"{self.hardness:g} Pa) * sqrt({self.sigma:g} m / {self.asperity_radius:g} m) = {psi:.4g} out of range: "
                 f"the elastic Greenwood-Tripp model needs psi < 1 (Lee & Rhim eq. 17); lower sqrt(Rq/Rp) "
                 f"or E'/H, or pass elastic_only=False")
 
@@ -284,7 +284,7 @@ def steel_asperity_contact(rq: float, density: DiscreteDensity | None = None, **
     if unknown:
         raise ValueError(f"unknown steel contact constants {sorted(unknown)}; allowed {sorted(STEEL_CONTACT)}")
     c = {**STEEL_CONTACT, **overrides}
-    rq = check_positive("rq", rq, "m")
+    rq = check_range("rq", rq, "m", 1e-10, 1e-4, why="(0.1 nm to 100 um for steel asperities)")
     s = check_positive("sqrt_rq_rp", c["sqrt_rq_rp"], "-")
     g = check_positive("n_rq_rp", c["n_rq_rp"], "-")
     rp = rq / s ** 2

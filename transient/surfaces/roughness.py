@@ -53,7 +53,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 from scipy import optimize
-from transient.checks import check_positive, check_range
+from transient.checks import check_int, check_positive, check_range
 
 __all__ = [
     "ACF_MODELS",
@@ -347,6 +347,17 @@ def johnson_standard_sampler(skewness: float, kurtosis: float):
 # --------------------------------------------------------------------------------------------
 # measured statistics
 # --------------------------------------------------------------------------------------------
+def _pair(name, value, unit, low, high, integer=False):
+    """A scalar (used twice) or a pair of numbers in [low, high] (whole numbers if ``integer``)."""
+    if isinstance(value, (str, bytes)) or value is None:
+        raise ValueError(f"{name} = {value!r} [{unit}]; allowed: a number or a pair of numbers in [{low:g}, {high:g}]")
+    pair = (value, value) if np.isscalar(value) else tuple(value)
+    if len(pair) != 2:
+        raise ValueError(f"{name} = {value!r} [{unit}]; allowed: a number or a pair of numbers in [{low:g}, {high:g}]")
+    check = check_int if integer else check_range
+    return tuple(check(f"{name}[{i}]", v, unit, low, high) for i, v in enumerate(pair))
+
+
 def measured_acf(z: np.ndarray, max_lag=None, periodic: bool = False) -> np.ndarray:
     """Normalised ACF of the mean-removed heights, R(p, q) / R(0, 0), for lags |p|, |q| <= max_lag.
 
@@ -438,23 +449,15 @@ class RoughSurface:
             raise ValueError(f"method must be 'fft' or 'linear', got {method!r}")
         if heights not in HEIGHT_MODELS:
             raise ValueError(f"heights must be one of {HEIGHT_MODELS}, got {heights!r}")
-        try:
-            ny, nx = (int(s) for s in shape)
-        except Exception:
-            raise ValueError(f"shape must be (ny, nx), got {shape!r}") from None
-        if ny < 2 or nx < 2:
-            raise ValueError(f"shape must be at least (2, 2) samples, got {shape!r}")
-        sp = (spacing, spacing) if np.isscalar(spacing) else tuple(spacing)
-        dx = check_positive("spacing dx", sp[0], "m")
-        dy = check_positive("spacing dy", sp[1], "m")
-        rq = check_positive("rq", rq, "m")
+        ny, nx = _pair("shape", shape, "samples", 2, 8192, integer=True)
+        if nx * ny > 2 ** 26:
+            raise ValueError(f"shape = {shape!r} [samples] holds {nx * ny} samples; allowed: at most 2^26")
+        dx, dy = _pair("spacing", spacing, "m", 1e-9, 1e-2)
+        rq = check_range("rq", rq, "m", 1e-10, 1e-3, why="(0.1 nm to 1 mm)")
         if correlation_lengths is None:
-            raise ValueError("correlation_lengths (lx, ly) [m] are required")
-        cl = (correlation_lengths, correlation_lengths) if np.isscalar(correlation_lengths) \
-            else tuple(correlation_lengths)
-        lx = check_positive("correlation length lx", cl[0], "m")
-        ly = check_positive("correlation length ly", cl[1], "m")
-        sk = check_range("skewness", skewness, "-")
+            raise ValueError("correlation_lengths = None [m]; allowed: lx or (lx, ly), each in [1e-09, 1] m")
+        lx, ly = _pair("correlation_lengths", correlation_lengths, "m", 1e-9, 1.0)
+        sk = check_range("skewness", skewness, "-", -10.0, 10.0)
         if heights == "gamma":
             if kurtosis is not None:
                 raise ValueError("kurtosis is implied by the gamma height model (Ku = 3 + 1.5 Sk_eta^2 "
@@ -473,7 +476,7 @@ class RoughSurface:
         if method == "fft":
             reach = 1.0 if acf == "triangular" else 3.0  # exponential: R(3 l) = 1e-3
             if nx * dx < 2 * reach * lx or ny * dy < 2 * reach * ly:
-                raise ValueError(f"surface {nx * dx:g} x {ny * dy:g} m too small for correlation lengths "
+                raise ValueError(f"shape x spacing = {nx * dx:g} x {ny * dy:g} m is too small for correlation_lengths "
                                  f"({lx:g}, {ly:g}) m with method='fft': need each side >= "
                                  f"{2 * reach:g} x correlation length")
             sqS = _fft_spectrum_sqrt(acf, (ny, nx), (dx, dy), (lx, ly))

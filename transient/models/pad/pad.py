@@ -74,7 +74,7 @@ from transient.fv.reynolds import ReynoldsOperator, residual_kernel
 from transient.surfaces.roughness import RoughSurface
 from transient.results import Result, quantity, result_type
 from transient.solvers.integrate import METHODS, Problem, Stats, solve
-from transient.checks import check_positive, check_range
+from transient.checks import check_int, check_positive, check_range
 
 __all__ = ["ThrustPad", "DescentResult", "pressure_flow_clamped", "rect_shape_factor"]
 
@@ -187,17 +187,13 @@ class ThrustPad:
 
     def __init__(self, length, width, viscosity, surface=None, grid=(40, 40), contact="auto", gamma=None,
                  bins: int = 256):
-        self.length = check_positive("length", length, "m")
-        self.width = check_positive("width", width, "m")
-        self.viscosity = check_positive("viscosity", viscosity, "Pa s")
-        try:
-            nx, ny = (v for v in grid)
-        except TypeError:
-            raise ValueError(f"grid must be (nx, ny) cells, got {grid!r}") from None
-        nx = int(check_range("grid[0] (nx)", nx, "cells", 2, 2000))
-        ny = int(check_range("grid[1] (ny)", ny, "cells", 2, 2000))
-        if nx != grid[0] or ny != grid[1]:
-            raise ValueError(f"grid must be two integers (nx, ny) [cells], got {grid!r}")
+        self.length = check_range("length", length, "m", 1e-5, 10.0, why="(a pad, from 10 um to 10 m)")
+        self.width = check_range("width", width, "m", 1e-5, 10.0, why="(a pad, from 10 um to 10 m)")
+        self.viscosity = check_range("viscosity", viscosity, "Pa s", 0.0, 1e4, low_open=True)
+        if isinstance(grid, (str, bytes)) or not hasattr(grid, "__len__") or len(grid) != 2:
+            raise ValueError(f"grid = {grid!r} [cells]; allowed: two integers (nx, ny), each 2 ... 2000")
+        nx = check_int("grid[0] (nx)", grid[0], "cells", 2, 2000)
+        ny = check_int("grid[1] (ny)", grid[1], "cells", 2, 2000)
         self.grid_shape = (nx, ny)
         self.area = self.length * self.width
         self.surface = None
@@ -211,7 +207,8 @@ class ThrustPad:
             self.density = surface.height_density(bins=bins)
             g = surface.gamma
         elif isinstance(surface, (int, float, np.floating, np.integer)) and not isinstance(surface, bool):
-            self.sigma = check_positive("surface (sigma, RMS roughness)", surface, "m")
+            self.sigma = check_range("surface (sigma, RMS roughness)", surface, "m", 1e-9, 1e-3,
+                                     why="(1 nm to 1 mm)")
             g = 1.0
         else:
             raise ValueError(f"surface must be None, an RMS roughness sigma [m] or a RoughSurface, got "
@@ -384,16 +381,17 @@ class ThrustPad:
         ``t_eval`` [s] or ``n_out`` equally spaced times on [0, t_end]. ``rtol``, ``atol`` apply to the
         scaled states (h0/h0_start, v/v_ref, p/p_ref; all O(1)).
         """
-        W = check_positive("load", load, "N")
-        h_s = check_positive("h0_start", h0_start, "m")
-        t_end = check_positive("t_end", t_end, "s")
-        M = check_range("mass", mass, "kg", 0.0, math.inf, high_open=True)
+        W = check_range("load", load, "N", 0.0, 1e9, low_open=True)
+        h_s = check_range("h0_start", h0_start, "m", 1e-9, 1e-2, why="(1 nm to 10 mm)")
+        t_end = check_range("t_end", t_end, "s", 0.0, 1e6, low_open=True)
+        M = check_range("mass", mass, "kg", 0.0, 1e6)
+        check_range("rtol", rtol, "-", 1e-14, 0.1)
         if method not in METHODS:
             raise ValueError(f"method = {method!r}; allowed: {', '.join(METHODS)}")
         if path not in PATHS:
             raise ValueError(f"path must be one of {PATHS}, got {path!r}")
         if t_eval is None:
-            n_out = int(check_range("n_out", n_out, "-", 2, 1e7))
+            n_out = check_int("n_out", n_out, "-", 2, 1e7)
             t_eval = np.linspace(0.0, t_end, n_out)
         else:
             t_eval = np.asarray(t_eval, dtype=float)
@@ -416,8 +414,12 @@ class ThrustPad:
         res = solve(prob, t_eval, method=method, rtol=rtol, atol=atol, dt=dt, **solve_options)
         out = sysm.outputs(res)
         pres = out.pop("pressure", None)
+        success, message = res.success, res.message
+        if success and not np.all(np.isfinite(out["h0"]) & (out["h0"] > 0)):
+            success, message = False, (f"the gap closed (h0 <= 0 at t = {res.t[np.argmax(~(out['h0'] > 0))]:.6g} s): "
+                                       "the load is not carried by this pad's film and contact")
         return DescentResult(t=res.t, load=W, mass=M, path=path, method=method, stats=res.stats,
-                             success=res.success, message=res.message, pressure=pres, **out)
+                             success=success, message=message, pressure=pres, **out)
 
 
 # --------------------------------------------------------------------------------------------------
