@@ -144,3 +144,10 @@ def test_a_killed_sweep_loses_only_the_points_in_flight(tmp_path):
     assert resumed.reused == finished and resumed.computed == 8 - finished
     whole = sweep(scene_from_dict(BALL), values, store=tmp_path / "whole", workers=1, progress=False)
     assert _values(resumed) == _values(whole)
+
+
+def test_the_shipped_scene_files_load():
+    files = sorted((Path(__file__).resolve().parents[1] / "scenarios" / "scenes").glob("*.toml"))
+    assert len(files) >= 5
+    for f in files:
+        assert load_scene(f).kind.name in KINDS
