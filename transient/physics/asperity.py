@@ -139,7 +139,7 @@ class DiscreteDensity:
     @classmethod
     def gaussian(cls, sigma: float, bins: int = 400, width: float = 8.0) -> "DiscreteDensity":
         """Gaussian of std sigma [m] discretised on +-width sigma (mainly for tests)."""
-        sigma = check_positive("sigma", sigma, "m")
+        sigma = check_range("sigma", sigma, "m", 1e-10, 1e-3, why="(0.1 nm to 1 mm)")
         e = np.linspace(-width, width, bins + 1)
         p = np.diff(special.ndtr(e))
         return cls(edges=e * sigma, prob=p / p.sum())

@@ -429,7 +429,7 @@ class Gecim:
     viscosity_ratio: float
 
     def __post_init__(self):
-        object.__setattr__(self, "kappa", check_positive("kappa", self.kappa, "Pa"))
+        object.__setattr__(self, "kappa", check_range("kappa", self.kappa, "Pa", 0.0, 1e12, low_open=True))
         object.__setattr__(self, "viscosity_ratio", check_range(
             "viscosity_ratio mu_2/mu_1", self.viscosity_ratio, "-", RATIO_MIN, 1.0,
             why="(shear thinning: mu_2 <= mu_1; below 0.05 the law approaches a kink at tau = kappa)"))
@@ -461,14 +461,15 @@ class BoundaryLayers:
     alpha: float
 
     def __post_init__(self):
-        d = check_range("thickness delta", self.thickness, "m", 0.0, math.inf, high_open=True)
+        d = check_range("thickness delta", self.thickness, "m", 0.0, 1e-3, why="(boundary layers: at most 1 mm)")
         pair = self.viscosity if np.ndim(self.viscosity) else (self.viscosity, self.viscosity)
         if len(pair) != 2:
             raise ValueError(f"viscosity = {self.viscosity!r} [Pa s] must be one value or a pair (mu_a, mu_b)")
-        mu = (check_positive("viscosity mu_a (lower layer)", pair[0], "Pa s"),
-              check_positive("viscosity mu_b (upper layer)", pair[1], "Pa s"))
-        a = check_range("alpha", self.alpha, "m", 0.0, 0.0 if d == 0.0 else math.inf, high_open=d > 0.0,
-                        why="(alpha > 0 needs layers of thickness > 0)" if d == 0.0 else "")
+        mu = (check_range("viscosity mu_a (lower layer)", pair[0], "Pa s", 1e-6, 1e6),
+              check_range("viscosity mu_b (upper layer)", pair[1], "Pa s", 1e-6, 1e6))
+        a = check_range("alpha", self.alpha, "m", 0.0, 0.0 if d == 0.0 else 1e-3,
+                        why="(the permeability length; alpha > 0 needs layers of thickness > 0)" if d == 0.0
+                        else "(the permeability length, at most 1 mm)")
         object.__setattr__(self, "thickness", d)
         object.__setattr__(self, "viscosity", mu)
         object.__setattr__(self, "alpha", a)

@@ -528,6 +528,9 @@ class RoughSurface:
 
             z = signal.fftconvolve(eta, kern[::-1, ::-1], mode="valid")  # = correlate(eta, a)
         z *= rq / math.sqrt(s2)
+        if not np.all(np.isfinite(z)):
+            raise ValueError(f"skewness = {sk:g}, kurtosis = {ku} [-]: the {family} height system gives no finite "
+                             "heights here (nearly Gaussian: give skewness = 0 and kurtosis = 3)")
         meta = dict(method=method, heights=family, target_rq=rq, target_skewness=sk, target_kurtosis=ku,
                     target_correlation_lengths=(lx, ly), eta_skewness=sk_eta, eta_kurtosis=ku_eta,
                     kernel_A3=A3, kernel_A4=A4, kernel_shape=kern.shape, acf_fit_residual=fit_res,
