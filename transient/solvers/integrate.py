@@ -35,6 +35,7 @@ from __future__ import annotations
 
 import io
 import math
+import numbers
 import signal
 import sys
 import threading
@@ -216,6 +217,11 @@ class _Stop(Exception):
     """Internal: ends a run with success=False and this message (never escapes :func:`solve`)."""
 
 
+class _Abort(Exception):
+    """Internal: raised by a poisoned SUNDIALS callback once that is safe, to end the step at once
+    (scikit-sundae turns it into an unrecoverable callback failure and re-raises it from ``step``)."""
+
+
 class _Sigint:
     """Ctrl-C during a solve sets a flag instead of raising wherever Python happens to be.
 
@@ -285,10 +291,14 @@ _WHAT = {"rhs": "the right-hand side f(t, y)", "residual": "the residual F(t, y,
 class _Guard:
     """Wraps the problem's callables for one solve: counts calls, times them, checks their outputs.
 
-    ``poison=True`` (SUNDIALS): a wrapper never lets anything escape into scikit-sundae. On an
-    exception or a non-finite output it records the failure, fills its output with NaN (zeros for a
-    Jacobian, so the linear solver only sees finite numbers) and from then on answers every call that
-    way without calling the model, so CVODE/IDA fail the current step within a few cheap calls.
+    ``poison=True`` (SUNDIALS): the model's exception never escapes into scikit-sundae. On an
+    exception or a non-finite output the wrapper records the failure and from then on never calls the
+    model again. Until the first step has succeeded it answers with NaN (zeros for a Jacobian, so the
+    linear solver only sees finite numbers): CVODE/IDA then fail the step by themselves, after they have
+    set up their linear solver (a sparse SUNDIALS solver freed before that setup crashes, see
+    :func:`_settle`); that costs a few dozen calls (about 10 n with a difference-quotient Jacobian).
+    After a successful step the setup has certainly happened and the wrapper raises :class:`_Abort`
+    instead, which SUNDIALS takes as an unrecoverable callback failure: the step ends at once.
     ``poison=False`` (scipy, rk4): the exception propagates; a non-finite output raises :class:`_Stop`.
     """
 
@@ -320,7 +330,7 @@ class _Guard:
             except Exception:  # an exception type that refuses notes: still re-raised unchanged
                 pass
 
-    def record_nonfinite(self, kind: str, t, out: np.ndarray) -> str:
+    def record_nonfinite(self, kind: str, t, out: np.ndarray, y=None) -> str:
         found = _first_nonfinite(out)
         if found is None:  # cannot happen: the probe saw a non-finite value
             found = ("?", float("nan"), 1)
@@ -328,7 +338,11 @@ class _Guard:
         label = {"rhs": "f", "residual": "F", "jac": "J", "events": "g"}[kind]
         idx = ", ".join(str(int(i)) for i in idx) if isinstance(idx, tuple) else idx
         msg = (f"{self._where(kind, t)} returned a non-finite value at t={float(t):.9g}: {label}[{idx}] = {val} "
-               f"(first of {count} non-finite of {out.size}); integration stopped")
+               f"(first of {count} non-finite of {out.size})")
+        bad_y = _first_nonfinite(np.asarray(y, dtype=float)) if isinstance(y, np.ndarray) else None
+        if bad_y is not None:  # the solver handed the model a non-finite state: say so
+            msg += f"; its input state was already non-finite (y[{bad_y[0]}] = {bad_y[1]})"
+        msg += "; integration stopped"
         if self.message is None:
             self.message = msg
         return msg
@@ -357,58 +371,78 @@ class _Guard:
         return err
 
     # -- wrappers ----------------------------------------------------------------------------------
+    # The hot path (10^4-10^6 calls per run) is generated for the callback's exact arity from this
+    # one template: ``*args`` costs ~0.5 us per call, as much as the whole non-finite check.
+    _TEMPLATE = """
+def wrapped(t, {params}):
+    if g.poisoned:
+        if g.n_steps > 0:
+            raise _Abort
+        out.fill(fill)
+        return
+    t0 = clock()
+    try:
+        if sigint.pending and sigint.take():
+            raise KeyboardInterrupt
+        fn(t, {params})
+    except BaseException as exc:
+        if timed:
+            g.seconds += clock() - t0
+        g.record_exception(exc, kind, t)
+        if not poison:
+            raise
+        keep_alive = g.solver  # noqa: F841 -- this frame is in exc's traceback and its arrays view
+        g.poison()             # the solver's memory, which must outlive the traceback
+        out.fill(fill)
+        abort = g.n_steps > 0
+    else:
+        abort = None
+    if abort is not None:  # the model raised: stop (outside the except block: no chained context)
+        if abort:
+            raise _Abort
+        return
+    if timed:
+        g.seconds += clock() - t0
+    if counts_rhs:
+        g.n_rhs += 1
+    elif counts_jac:
+        g.n_jac += 1
+    arr = out if fixed is None else fixed
+    if probe(arr if arr.ndim == 1 else arr.reshape(-1)) != 0.0:
+        msg = g.record_nonfinite(kind, t, arr, y)
+        if not poison:
+            raise _Stop(msg)
+        g.poison()
+        if g.n_steps > 0:
+            raise _Abort
+        out.fill(fill)
+"""
+    _PARAMS = {3: "y, out", 4: "y, a2, out", 5: "y, a2, a3, out"}
+    _COMPILED: dict = {}
+
     def wrap(self, fn: Callable, kind: str, poison: bool, timed: bool = True, counted: bool = True,
-             check=None) -> Callable:
-        """``wrapped(t, *args)`` calls ``fn(t, *args)``; its last argument is the output array.
+             check=None, arity: int = 3) -> Callable:
+        """``wrapped(t, y, ..., out)`` (``arity`` arguments) calls ``fn`` with the same arguments; the
+        last one is the output array.
 
         ``check``: None checks that output, an array checks that array (an adapter's inner buffer
         holding the model's own values), False checks nothing."""
-        clock = time.perf_counter
-        probe = _nonfinite_probe if check is not False else (lambda a: 0.0)
+        code = self._COMPILED.get(arity)
+        if code is None:
+            code = self._COMPILED[arity] = compile(self._TEMPLATE.format(params=self._PARAMS[arity]),
+                                                   f"<transient guard, {arity} arguments>", "exec")
         fixed = check if isinstance(check, np.ndarray) else None
         if fixed is not None and (fixed.ndim != 1 or not fixed.flags.c_contiguous):
             raise ValueError("check array must be 1-D and contiguous")
-        fill = 0.0 if kind == "jac" else np.nan
-        counts_rhs = counted and kind in ("rhs", "residual")
-        counts_jac = counted and kind == "jac"
-        sigint = _SIGINT
-        g = self
-
-        def wrapped(t, *args):
-            out = args[-1]
-            if g.poisoned:
-                out.fill(fill)
-                return
-            t0 = clock()
-            try:
-                if sigint.pending and sigint.take():
-                    raise KeyboardInterrupt
-                fn(t, *args)
-            except BaseException as exc:
-                if timed:
-                    g.seconds += clock() - t0
-                g.record_exception(exc, kind, t)
-                if not poison:
-                    raise
-                keep_alive = g.solver  # noqa: F841 -- this frame is in exc's traceback: the arrays it
-                g.poison()  # holds view the solver's memory, which must outlive the traceback
-                out.fill(fill)
-                return
-            if timed:
-                g.seconds += clock() - t0
-            if counts_rhs:
-                g.n_rhs += 1
-            elif counts_jac:
-                g.n_jac += 1
-            arr = out if fixed is None else fixed
-            if probe(arr if arr.ndim == 1 else arr.reshape(-1)) != 0.0:
-                msg = g.record_nonfinite(kind, t, arr)
-                if not poison:
-                    raise _Stop(msg)
-                g.poison()
-                out.fill(fill)
-
-        return wrapped
+        scope = {
+            "g": self, "fn": fn, "kind": kind, "poison": poison, "timed": timed,
+            "clock": time.perf_counter, "sigint": _SIGINT, "_Abort": _Abort, "_Stop": _Stop,
+            "probe": _nonfinite_probe if check is not False else (lambda a: 0.0), "fixed": fixed,
+            "fill": 0.0 if kind == "jac" else np.nan,
+            "counts_rhs": counted and kind in ("rhs", "residual"), "counts_jac": counted and kind == "jac",
+        }
+        exec(code, scope)
+        return scope["wrapped"]
 
     # -- states ------------------------------------------------------------------------------------
     def check_state(self, t, y, what="state"):
@@ -444,26 +478,31 @@ class _Stall:
 # Arguments and outputs
 # --------------------------------------------------------------------------------------------------
 
+def _real(value):
+    """``value`` as a float if it is a real number (not a bool, a string or an array), else None."""
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (numbers.Real, np.floating, np.integer)):
+        return None
+    return float(value)
+
+
+def _show(value) -> str:
+    """A value for an error message: numbers plainly (0.5, nan; not np.float64(0.5))."""
+    x = _real(value)
+    return repr(x) if x is not None else _short(value)
+
+
 def _positive_number(name, value, upper=None) -> float:
     rng = f"(0, {upper:g})" if upper is not None else "(0, inf)"
-    try:
-        ok = not isinstance(value, (bool, np.bool_)) and np.ndim(value) == 0
-        x = float(value) if ok else float("nan")
-    except (TypeError, ValueError):
-        x, ok = float("nan"), False
-    if not ok or not (0.0 < x < (upper if upper is not None else math.inf)):
-        raise ValueError(f"{name} must be a finite number in {rng}, got {_short(value)}")
+    x = _real(value)
+    if x is None or not (0.0 < x < (upper if upper is not None else math.inf)):
+        raise ValueError(f"{name} must be a finite number in {rng}, got {_show(value)}")
     return x
 
 
 def _nonnegative_number(name, value) -> float:
-    try:
-        ok = not isinstance(value, (bool, np.bool_)) and np.ndim(value) == 0
-        x = float(value) if ok else float("nan")
-    except (TypeError, ValueError):
-        x, ok = float("nan"), False
-    if not ok or not (0.0 <= x < math.inf):
-        raise ValueError(f"{name} must be a finite number >= 0 (0 = free), got {_short(value)}")
+    x = _real(value)
+    if x is None or not (0.0 <= x < math.inf):
+        raise ValueError(f"{name} must be a finite number >= 0 (0 = free), got {_show(value)}")
     return x
 
 
@@ -478,12 +517,12 @@ def _check_atol(atol, n):
         raise ValueError(f"atol must be a finite number > 0 or an array of {n} such numbers (one per state), "
                          f"got {_short(atol)}") from None
     if a.ndim == 0:
-        return _positive_number("atol", float(a))
+        return _positive_number("atol", atol if _real(atol) is not None else float(a))
     if a.shape != (n,):
         raise ValueError(f"atol must be a scalar or an array of length n={n} (one per state), got shape {a.shape}")
     bad = np.flatnonzero(~(np.isfinite(a) & (a > 0)))
     if bad.size:
-        raise ValueError(f"atol[{bad[0]}] must be a finite number > 0, got {a[bad[0]]!r} ({bad.size} bad of {n})")
+        raise ValueError(f"atol[{bad[0]}] must be a finite number > 0, got {_show(a[bad[0]])} ({bad.size} bad of {n})")
     return np.ascontiguousarray(a)
 
 
@@ -497,12 +536,12 @@ def _check_t_eval(t_eval) -> np.ndarray:
         raise ValueError(f"t_eval must be a 1-D array of at least 2 times [s], got shape {t_eval.shape}")
     bad = np.flatnonzero(~np.isfinite(t_eval))
     if bad.size:
-        raise ValueError(f"t_eval must be finite, got t_eval[{bad[0]}] = {t_eval[bad[0]]}")
+        raise ValueError(f"t_eval must be finite, got t_eval[{bad[0]}] = {_show(t_eval[bad[0]])}")
     d = np.flatnonzero(~(np.diff(t_eval) > 0))
     if d.size:
         k = d[0]
-        raise ValueError(f"t_eval must be strictly increasing [s], got t_eval[{k + 1}] = {t_eval[k + 1]!r} <= "
-                         f"t_eval[{k}] = {t_eval[k]!r}")
+        raise ValueError(f"t_eval must be strictly increasing [s], got t_eval[{k + 1}] = {_show(t_eval[k + 1])} <= "
+                         f"t_eval[{k}] = {_show(t_eval[k])}")
     return t_eval
 
 
@@ -613,7 +652,7 @@ def solve(problem: Problem, t_eval, method: str = "cvode", rtol: float = 1e-6, a
     Bad arguments raise ``ValueError`` naming the parameter, the value and the allowed range.
     An exception raised by any callback (rhs, residual, Jacobian, events, observer, the rk4 hooks),
     ``KeyboardInterrupt`` included, stops the integration and is re-raised from here unchanged
-    (same object, original traceback, one added note). Everything else that stops a run returns a
+    (same object, original traceback; the model callbacks add a note saying where and when). Everything else that stops a run returns a
     :class:`Solution` with ``success=False`` and a one-line message with the method and the time:
     a non-finite value from a callback (the first bad component is named), a non-finite state, a
     stalled time (steps collapsing to the roundoff of t), ``max_steps``, or the backend's own
@@ -644,10 +683,10 @@ def solve(problem: Problem, t_eval, method: str = "cvode", rtol: float = 1e-6, a
     t_eval = _check_t_eval(t_eval)
     bad = _first_nonfinite(problem.y0)
     if bad is not None:
-        raise ValueError(f"problem '{problem.name}': y0 must be finite, got y0[{bad[0]}] = {bad[1]}")
+        raise ValueError(f"problem '{problem.name}': y0 must be finite, got y0[{bad[0]}] = {_show(bad[1])}")
     if problem.yp0 is not None and _first_nonfinite(problem.yp0) is not None:
         k, v, _ = _first_nonfinite(problem.yp0)
-        raise ValueError(f"problem '{problem.name}': yp0 must be finite, got yp0[{k}] = {v}")
+        raise ValueError(f"problem '{problem.name}': yp0 must be finite, got yp0[{k}] = {_show(v)}")
 
     guard = _Guard(problem, method)
     out = _Output(t_eval, problem.n, store, observer, with_yp=(method == "ida"), guard=guard)
@@ -669,7 +708,10 @@ def solve(problem: Problem, t_eval, method: str = "cvode", rtol: float = 1e-6, a
             guard.solver = None
             err = guard.take_error()  # drop the guard's reference (the exception may hold the guard)
         if err is not None:
-            raise err
+            try:
+                raise err
+            finally:  # this frame is in err's traceback: no cycle keeping the solver for the GC
+                del err
     if success and guard.message is not None:  # a backend that carried on after a callback failed
         success, message = False, guard.message
     stats = Stats(n_steps=guard.n_steps, n_rhs=guard.n_rhs, n_jac=guard.n_jac,
@@ -714,7 +756,7 @@ def _ida_from_rhs(problem: Problem, guard: _Guard):
         rhs(t, y, f)
         np.subtract(yp, f, out=res)
 
-    residual = guard.wrap(adapter, "rhs", poison=True, check=f)
+    residual = guard.wrap(adapter, "rhs", poison=True, check=f, arity=4)
 
     pattern = jac = None
     if problem.jac_pattern is None and problem.jac_rhs is not None:  # dense analytic Jacobian
@@ -726,7 +768,7 @@ def _ida_from_rhs(problem: Problem, guard: _Guard):
             J *= -1.0
             J[diag_n] += cj
 
-        jac = guard.wrap(dense_adapter, "jac", poison=True, timed=False, counted=False, check=False)
+        jac = guard.wrap(dense_adapter, "jac", poison=True, timed=False, counted=False, check=False, arity=5)
     elif problem.jac_pattern is not None:
         pattern, p_map, diag = _with_diagonal(problem.jac_pattern)
         if problem.jac_rhs is not None:
@@ -739,7 +781,7 @@ def _ida_from_rhs(problem: Problem, guard: _Guard):
                 data[p_map] = -tmp
                 data[diag] += cj
 
-            jac = guard.wrap(sparse_adapter, "jac", poison=True, check=tmp)
+            jac = guard.wrap(sparse_adapter, "jac", poison=True, check=tmp, arity=5)
     return residual, pattern, jac
 
 
@@ -806,32 +848,27 @@ def _solve_sundials(problem, method, t_eval, out, guard, rtol, atol, max_step, f
             opts["eventsfn"], opts["num_events"] = ev, problem.n_events
         with warnings.catch_warnings():  # sksundae notes that jacfn replaces its FD Jacobian: intended
             warnings.simplefilter("ignore", UserWarning)
-            solver = CVODE(lambda t, y, yp: rhs(t, y, yp), method="BDF", **opts)
+            solver = CVODE(rhs, method="BDF", **opts)  # the guard has the (t, y, out) signature
         yp0 = None
     else:
         if problem.residual is not None:
             residual, pattern, jac = problem.residual, problem.jac_pattern, problem.jac_residual
-            res = guard.wrap(residual, "residual", poison=True)
+            res = guard.wrap(residual, "residual", poison=True, arity=4)
         else:  # an ODE: F = y' - f, guarded inside
             res, pattern, jac = _ida_from_rhs(problem, guard)
         lin, use_jac = _linear_solver_options(problem, pattern, jac is not None, linear_solver)
         opts.update(lin)
         if use_jac:
-            jj = guard.wrap(jac, "jac", poison=True) if problem.residual is not None else jac
+            jj = guard.wrap(jac, "jac", poison=True, arity=5) if problem.residual is not None else jac
             opts["jacfn"] = lambda t, y, yp, r, cj, data: jj(t, y, yp, cj, data)
         if problem.is_dae:
             opts["algebraic_idx"] = problem.algebraic
         yp0 = problem.yp0
         if yp0 is None:
             yp0 = np.zeros(problem.n)
-            if problem.rhs is not None:
-                problem.rhs(t0, problem.y0, yp0)  # plain Python call, before any solver exists
+            if problem.rhs is not None:  # before any solver exists: an ordinary guarded call
+                guard.wrap(problem.rhs, "rhs", poison=False)(t0, problem.y0, yp0)
                 yp0[problem.algebraic] = 0.0
-                bad = _first_nonfinite(yp0)
-                if bad is not None:
-                    return False, (f"ida: the right-hand side f(t, y) of problem '{problem.name}' returned a "
-                                   f"non-finite value at t={t0:.9g}: f[{bad[0]}] = {bad[1]} (initial slope); "
-                                   "integration not started")
             if problem.is_dae or problem.rhs is None:
                 opts["calc_initcond"] = "yp0"
                 opts["calc_init_dt"] = t_eval[1] - t_eval[0]
@@ -843,18 +880,22 @@ def _solve_sundials(problem, method, t_eval, out, guard, rtol, atol, max_step, f
             opts["eventsfn"], opts["num_events"] = ev, problem.n_events
         with warnings.catch_warnings():
             warnings.simplefilter("ignore", UserWarning)
-            solver = IDA(lambda t, y, yp, r: res(t, y, yp, r), **opts)
+            solver = IDA(res, **opts)  # the guard has the (t, y, yp, out) signature
     guard.solver = solver
     stepped = False
     try:
         if method == "cvode":
             solver.init_step(t0, problem.y0)
         else:
-            r0 = solver.init_step(t0, problem.y0, yp0)
+            try:  # with calc_initcond, IDACalcIC runs the callbacks; scikit-sundae raises if it fails
+                r0 = solver.init_step(t0, problem.y0, yp0)
+                init_message = None if r0.success else r0.message
+            except RuntimeError as exc:
+                init_message = str(exc)
             if guard.stopped():
                 return False, guard.message
-            if not r0.success:
-                return False, f"IDA initialisation failed at t={t0:.9g}: {r0.message}"
+            if init_message is not None:
+                return False, f"IDA initialisation failed at t={t0:.9g}: {init_message}"
         out.put(problem.y0, yp0 if method == "ida" else None)
         tiny, n_tiny, sigint = _Stall.TINY, 0, _SIGINT
         t_now = t0
@@ -862,7 +903,13 @@ def _solve_sundials(problem, method, t_eval, out, guard, rtol, atol, max_step, f
             if guard.n_steps >= max_steps:
                 return False, f"reached max_steps={max_steps} at t={t_now:.9g}"
             stepped = True
-            r = solver.step(t_end, method="onestep", tstop=t_end)
+            try:
+                r = solver.step(t_end, method="onestep", tstop=t_end)
+            except Exception as exc:  # noqa: BLE001 -- scikit-sundae's own (a callback's never gets here)
+                guard.stopped()
+                if guard.message is not None:
+                    return False, guard.message
+                return False, f"{method.upper()} failed at t={t_now:.9g}: {type(exc).__name__}: {_short(str(exc), 200)}"
             if guard.message is not None or guard.poisoned:
                 guard.stopped()
                 return False, guard.message
@@ -1018,6 +1065,14 @@ def _step_events(events, state_at, ta, tb, g_prev, y_b, out):
     return g_new, None
 
 
+def _scipy_failure(exc, guard, method, t):
+    """An exception out of scipy: the model's own (or the facade's stop) propagates; scipy's internal
+    ones (e.g. its LU refusing a matrix after the step size degenerated) are a failed run."""
+    if isinstance(exc, _Stop) or exc is guard.error:
+        raise exc
+    return False, f"{method} failed at t={float(t):.9g}: scipy raised {type(exc).__name__}: {_short(str(exc), 200)}"
+
+
 def _solve_scipy(problem, method, t_eval, out, guard, rtol, atol, max_step, first_step, max_steps):
     if problem.rhs is None or problem.is_dae:
         raise ValueError(f"method '{method}' integrates ODEs only; problem '{problem.name}' is a DAE "
@@ -1036,7 +1091,10 @@ def _solve_scipy(problem, method, t_eval, out, guard, rtol, atol, max_step, firs
     if first_step > 0:
         kw["first_step"] = first_step
     events = out.events = _Events(problem, guard, poison=False) if problem.n_events else None
-    solver = cls(fun, t_eval[0], problem.y0.copy(), t_eval[-1], **kw)
+    try:
+        solver = cls(fun, t_eval[0], problem.y0.copy(), t_eval[-1], **kw)
+    except Exception as exc:  # noqa: BLE001
+        return _scipy_failure(exc, guard, method, t_eval[0])
     pooled = _LSODA_POOL.install(solver) if method == "lsoda" else None
     try:
         out.put(problem.y0)
@@ -1046,7 +1104,10 @@ def _solve_scipy(problem, method, t_eval, out, guard, rtol, atol, max_step, firs
             if guard.n_steps >= max_steps:
                 return False, f"reached max_steps={max_steps} at t={solver.t:.9g}"
             t_old = solver.t
-            msg = solver.step()
+            try:
+                msg = solver.step()
+            except Exception as exc:  # noqa: BLE001
+                return _scipy_failure(exc, guard, method, t_old)
             _SIGINT.check()
             if solver.status == "failed":
                 return False, f"{method} failed at t={solver.t:.9g}: {msg}"
