@@ -20,9 +20,10 @@ Failures are reported, never hidden, and never crash the interpreter (see :func:
 
 * an exception raised inside any callback (``KeyboardInterrupt`` included) stops the integration
   and is re-raised from :func:`solve` unchanged, with its original traceback (plus a note saying
-  where it was raised). SUNDIALS never sees a Python exception: scikit-sundae 1.2 ignores callback
-  return values, so the facade's wrappers stop CVODE/IDA by handing them NaN ("poisoning") until
-  the current step fails, which takes a few dozen cheap calls;
+  where it was raised). SUNDIALS never sees the model's exception: scikit-sundae 1.2 ignores
+  callback return values, so the wrappers stop CVODE/IDA themselves -- by handing them NaN until
+  the step fails while the linear solver may not be set up yet (a sparse solver freed before that
+  setup crashes the interpreter), by raising an internal abort once a step has succeeded;
 * a non-finite value returned by the right-hand side, residual, Jacobian or event functions, a
   non-finite output state, or a time that stops advancing (steps collapsing to the roundoff of t)
   ends the run at once with ``success=False`` and a message naming the method, the time and the
