@@ -258,3 +258,20 @@ def test_max_steps_reported_not_raised(method):
 def test_t_eval_must_increase():
     with pytest.raises(ValueError, match="strictly increasing"):
         solve(oscillator(), np.array([0.0, 1.0, 0.5]))
+
+
+@pytest.mark.parametrize("method", ["cvode", "ida", "bdf", "lsoda", "rk4"])
+def test_time_budget_stops_a_long_run(method):
+    """A run that would take far longer than its wall-clock budget stops after it, with the outputs so far."""
+    import time as _time
+
+    def rhs(t, y, out):
+        _time.sleep(2e-4)  # make every step cost wall time
+        out[0] = -y[0]
+
+    kw = dict(dt=1e-4) if method == "rk4" else dict(max_step=1e-4)
+    t0 = _time.perf_counter()
+    r = solve(Problem(y0=np.ones(1), rhs=rhs), np.linspace(0.0, 100.0, 11), method=method, time_budget=0.2, **kw)
+    wall = _time.perf_counter() - t0
+    assert not r.success and "time budget of 0.2 s used up" in r.message
+    assert wall < 5.0 and r.t.size < 11

@@ -23,8 +23,8 @@ criterion). For each method the cost to reach E* is interpolated log-log on its 
 loosest tolerance that reaches E* integrates 100 revolutions (target: under 30 s).
 
 Cost control: each method's runs go from cheap to expensive; once a run takes longer than
-``time_budget_s`` the method's remaining (tighter) settings are skipped, scipy runs are aborted
-when they pass the budget, and RK4 settings whose cost predicted from the 500-step run exceeds the
+``time_budget_s`` the method's remaining (tighter) settings are skipped, scipy runs are stopped by the
+facade's ``time_budget`` when they pass it, and RK4 settings whose cost predicted from the 500-step run exceeds the
 budget are skipped. Skips are listed in the table.
 
 ``run()`` returns a dict; :func:`markdown` formats it, :func:`plot` writes the log-log figure;
@@ -69,35 +69,6 @@ def atol_for(rtol: float) -> float:
     return min(1e-9, 1e-3 * rtol)
 
 
-class _OverBudget(Exception):
-    pass
-
-
-class _TimedOrbit(JournalOrbit):
-    """A JournalOrbit whose callbacks raise once a deadline has passed (used for the scipy methods,
-    whose single run can otherwise take arbitrarily long)."""
-
-    deadline = math.inf
-
-    def problem(self, *args, **kwargs):
-        p = super().problem(*args, **kwargs)
-        if math.isfinite(self.deadline):
-            p.rhs, p.jac_rhs = self._guard(p.rhs), self._guard(p.jac_rhs)
-        return p
-
-    def _guard(self, fn):
-        if fn is None:
-            return None
-        clock, orbit = time.perf_counter, self
-
-        def guarded(*args):
-            if clock() > orbit.deadline:
-                raise _OverBudget()
-            fn(*args)
-
-        return guarded
-
-
 def _log(msg, progress):
     if progress:
         print(msg, file=sys.stderr, flush=True)
@@ -105,7 +76,7 @@ def _log(msg, progress):
 
 def _orbit(grid, speed_rpm, switch_width=None):
     b = JournalBearing(**BEARING, grid=tuple(grid), switch_width=switch_width)
-    return _TimedOrbit(b, speed_rpm=speed_rpm, **ROTOR)
+    return JournalOrbit(b, speed_rpm=speed_rpm, **ROTOR)
 
 
 def _kwargs(line, setting):
@@ -205,17 +176,24 @@ def run(revolutions=None, grid=(151, 21), quick=False, time_budget_s=300.0, spee
                 rows.append(row)
                 _log(f"  {label:28s} {setting:>7s}  {row['status']}", progress)
                 continue
-            o.deadline = time.perf_counter() + time_budget_s if line in ("bdf", "lsoda") else math.inf
+            budget = dict(time_budget=time_budget_s) if line in ("bdf", "lsoda") else {}
             try:
-                res = o.run(**kw, **common)
-            except _OverBudget:
-                row["status"] = f"aborted (> {time_budget_s:g} s)"
-                row["wall"] = time_budget_s
-                over = f"a looser setting took > {time_budget_s:g} s"
+                res = o.run(**kw, **common, **budget)
             except Exception as exc:  # a failed run is a result, not a crash of the benchmark
                 row["status"] = f"failed: {str(exc)[:80]}"
                 over = "a looser setting failed"
             else:
+                if not res.success and "time budget" in res.message:
+                    row.update(status=f"aborted (> {time_budget_s:g} s)", wall=time_budget_s)
+                    over = f"a looser setting took > {time_budget_s:g} s"
+                    rows.append(row)
+                    _log(f"  {label:28s} {setting:>7s}  {row['status']}", progress)
+                    continue
+                if not res.success:
+                    row["status"] = f"failed: {res.message[:80]}"
+                    over = "a looser setting failed"
+                    rows.append(row)
+                    continue
                 st = res.stats
                 row.update(wall=st.wall_time, n_steps=st.n_steps, n_rhs=st.n_rhs, n_jac=st.n_jac,
                            callback_share=st.callback_share)
@@ -224,8 +202,6 @@ def run(revolutions=None, grid=(151, 21), quick=False, time_budget_s=300.0, spee
                     per_step = st.wall_time / max(st.n_steps, 1)
                 if st.wall_time > time_budget_s:
                     over = f"a looser setting took {st.wall_time:.0f} s > budget {time_budget_s:g} s"
-            finally:
-                o.deadline = math.inf
             rows.append(row)
             _log(f"  {label:28s} {setting:>7s}  error {row['error_max']:.2e} C  {row['wall']:7.2f} s  "
                  f"{row['status']}", progress)

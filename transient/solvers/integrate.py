@@ -315,6 +315,14 @@ class _Guard:
         self.message: str | None = None  # the first failure, as reported
         self.solver = None  # the SUNDIALS solver, kept alive by a failing callback's frame
         self._stdout = None
+        self.deadline = math.inf  # wall-clock end of the time budget (time.perf_counter)
+        self.budget = None
+
+    def over_budget(self, t) -> str | None:
+        """The failure message once the wall-clock time budget is used up (checked once per step)."""
+        if time.perf_counter() > self.deadline:
+            return f"time budget of {self.budget:g} s used up at t={float(t):.9g} ({self.n_steps} steps)"
+        return None
 
     # -- failure records ---------------------------------------------------------------------------
     def _where(self, kind, t) -> str:
@@ -631,7 +639,8 @@ class _Events:
 def solve(problem: Problem, t_eval, method: str = "cvode", rtol: float = 1e-6, atol=1e-8, *,
           dt: float | None = None, max_step: float = 0.0, first_step: float = 0.0,
           max_steps: int = 1_000_000, linear_solver: str = "auto", store: bool = True,
-          observer: Callable | None = None, options: dict | None = None) -> Solution:
+          observer: Callable | None = None, options: dict | None = None,
+          time_budget: float | None = None) -> Solution:
     """Integrate ``problem`` and return the state at the times ``t_eval`` (the first is the start).
 
     Parameters
@@ -647,6 +656,8 @@ def solve(problem: Problem, t_eval, method: str = "cvode", rtol: float = 1e-6, a
     store : keep the outputs in ``Solution.y`` (False: only pass them to ``observer``).
     observer : ``observer(t, y)`` called at every output time, in order.
     options : extra keyword options for the SUNDIALS solver (e.g. ``max_nonlin_iters``, ``max_order``).
+    time_budget : wall-clock seconds the run may take (None: no limit); checked once per step, so a run
+        stops at most one step after it (``success=False``, the message says where it stopped).
 
     Failures
     --------
@@ -692,6 +703,9 @@ def solve(problem: Problem, t_eval, method: str = "cvode", rtol: float = 1e-6, a
     guard = _Guard(problem, method)
     out = _Output(t_eval, problem.n, store, observer, with_yp=(method == "ida"), guard=guard)
     wall0 = time.perf_counter()
+    if time_budget is not None:
+        guard.budget = _positive_number("time_budget", time_budget)
+        guard.deadline = wall0 + guard.budget
     with _SIGINT:
         try:
             if method in ("cvode", "ida"):
@@ -903,6 +917,9 @@ def _solve_sundials(problem, method, t_eval, out, guard, rtol, atol, max_step, f
         while out.k < t_eval.size:
             if guard.n_steps >= max_steps:
                 return False, f"reached max_steps={max_steps} at t={t_now:.9g}"
+            late = guard.over_budget(t_now)
+            if late:
+                return False, late
             stepped = True
             try:
                 r = solver.step(t_end, method="onestep", tstop=t_end)
@@ -1104,6 +1121,9 @@ def _solve_scipy(problem, method, t_eval, out, guard, rtol, atol, max_step, firs
         while out.k < t_eval.size:
             if guard.n_steps >= max_steps:
                 return False, f"reached max_steps={max_steps} at t={solver.t:.9g}"
+            late = guard.over_budget(solver.t)
+            if late:
+                return False, late
             t_old = solver.t
             try:
                 msg = solver.step()
@@ -1193,6 +1213,9 @@ def _solve_rk4(problem, t_eval, out, guard, dt, max_steps):
             return False, (f"rk4: the state of problem '{problem.name}' became non-finite at t={t_new:.9g}: "
                            f"y[{idx}] = {val} ({count} of {n}); the step diverged, reduce dt (dt={dt:g})")
         guard.n_steps += 1
+        late = guard.over_budget(t_new)
+        if late:
+            return False, late
         if events is not None:
             partial = lambda s, t=t, y=y: consistent(s, step(t, y, s - t)) if s > t else y
             g_prev, te = _step_events(events, partial, t, t_new, g_prev, consistent(t_new, y_new), out)

@@ -20,6 +20,7 @@ Ctrl-C raises :class:`Interrupted`, whose message says where the checkpoint is a
 from __future__ import annotations
 
 import json
+import math
 import os
 import sys
 import time
@@ -63,13 +64,15 @@ class Outcome:
 def run_long(problem_at: Callable, y0, t0: float, dt_out: float, n_outputs: int, recorder, *, method: str,
              solve_kwargs: dict, chunk_outputs: int | None = None, checkpoint=None, resume: bool = False,
              key: dict | None = None, progress: bool | None = None, unit: tuple[str, float] = ("s", 1.0),
-             label: str = "run", status: Callable | None = None, stop: Callable | None = None) -> Outcome:
+             label: str = "run", status: Callable | None = None, stop: Callable | None = None,
+             time_budget: float | None = None) -> Outcome:
     """Integrate ``n_outputs`` output intervals (module docstring).
 
     ``unit = (name, length)``: the display unit of the progress bar and messages (e.g. ``("rev", 2 pi)``
     for a time in radians of shaft rotation). ``status()`` returns a short string for the bar (e.g. the
     current eccentricity). ``solve_kwargs`` go to :func:`~transient.solvers.integrate.solve` (method
-    excluded); ``rk4`` needs ``dt``."""
+    excluded); ``rk4`` needs ``dt``. ``time_budget`` [s of wall time] bounds the whole run (all chunks): past
+    it the run ends with ``success=False`` and the outputs so far."""
     n_outputs = int(n_outputs)
     if n_outputs < 1:
         raise ValueError(f"the run must span at least one output interval, got {n_outputs}")
@@ -95,13 +98,15 @@ def run_long(problem_at: Callable, y0, t0: float, dt_out: float, n_outputs: int,
         progress = (n_chunks > 1) if progress is None else bool(progress)
         bar = _bar(progress, n_outputs * dt_out / ulen, k * dt_out / ulen, uname, label)
         wall0 = time.perf_counter()
+        deadline = math.inf if time_budget is None else wall0 + float(time_budget)
         out = Outcome(y=y, t=t0 + k * dt_out, stats=stats, outputs_done=k, resumed_from=resumed_from)
         try:
             while k < n_outputs:
                 k_end = min(n_outputs, k + chunk_outputs)
                 tau = t0 + dt_out * np.arange(k, k_end + 1)
+                budget = {} if time_budget is None else dict(time_budget=max(deadline - time.perf_counter(), 1e-9))
                 res = solve(problem_at(y, tau[0]), tau, method=method, store=False, observer=_Last(recorder, out),
-                            **solve_kwargs)
+                            **solve_kwargs, **budget)
                 _accumulate(stats, res.stats)
                 if not res.success:
                     out.success = False

@@ -208,7 +208,7 @@ class JournalOrbit:
     def run(self, revolutions, method="ida", rtol=1e-6, atol=1e-9, steps_per_revolution=3000,
             outputs_per_revolution=100, record=(), record_from_revolution=0.0, chunk_revolutions=None,
             checkpoint=None, resume=False, progress=None, touch_gap=1e-3, y0=None,
-            inner_tolerance=1e-6, start=None, stop=None) -> OrbitResult:
+            inner_tolerance=1e-6, start=None, stop=None, time_budget=None) -> OrbitResult:
         """Integrate ``revolutions`` shaft revolutions from the static equilibrium, from ``y0`` (a state at
         t = 0) or from ``start`` (a previous :class:`OrbitResult`, or ``(time [s], state)``: the run goes on
         from its final state and time, so the unbalance keeps its phase). The first output is the start.
@@ -236,6 +236,8 @@ class JournalOrbit:
         touch_gap : stop with a clear message when the eccentricity ratio reaches ``1 - touch_gap``.
         stop : ``stop(result_so_far) -> str | None`` called after every chunk; a non-empty string ends
             the run early and becomes its message (e.g. "settled").
+        time_budget : wall-clock seconds the whole run may take (None: no limit); past it the run stops with
+            ``success=False`` and keeps the outputs so far.
         """
         revolutions = check_positive("revolutions", revolutions, "rev")
         if isinstance(record, str):
@@ -292,7 +294,7 @@ class JournalOrbit:
                        chunk_outputs=max(1, int(round(chunk_revolutions * opr))), checkpoint=checkpoint,
                        resume=resume, key=key, progress=progress, unit=("rev", two_pi),
                        label=f"orbit {self.speed_rpm:g} rpm", status=lambda: f"e/C = {rec.last_eps:.4f}",
-                       stop=user_stop)
+                       stop=user_stop, time_budget=time_budget)
         if method == "rk4":
             out.stats.n_jac = sum(s.n_factorisations for s in steppers)
         touched, message = None, out.message
