@@ -1,0 +1,206 @@
+"""Steady EHL of an infinitely long line contact: the 1-D limit of the roller model (Park, seed 001).
+
+A cylinder of reduced radius ``R`` on a plane, load ``w`` per unit length, mean entrainment speed
+``u``, lubricant ``eta(p)``, ``rho(p)`` (:mod:`transient.physics.rheology`). Reynolds with the exit
+condition, load balance and the plane-strain elastic film (Johnson eq. 2.25b)::
+
+    d/dx(rho h^3/(12 eta) dp/dx) = u d(rho h)/dx,   p(x_in) = 0,  p = dp/dx = 0 at the free exit
+    h = h0 + x^2/(2R) - 4/(pi E') int p(s) ln|x - s| ds,           int p dx = w
+
+Scaled by the Hertz half-width ``b`` and pressure ``p_h`` (:func:`transient.physics.line_formulas.hertz_line`):
+``x = b X``, ``p = p_h P``, ``h = (b^2/R) H``; then ``H = H0 + X^2/2 - (1/pi) int P ln|X - S| dS``,
+``int P dX = pi/2`` and the Reynolds equation has the wedge coefficient ``lam = 12 eta0 u R^2/(b^3 p_h)``.
+Domain ``X in [domain[0], domain[1]]`` (default -5 ... 2.5, the paper's extent in the rolling
+direction), uniform nodes by default; finite volumes with second-order upwind wedge flux, the
+complementarity form of the exit condition solved inside Newton (:mod:`transient.models.roller.kernels`).
+``elastic=False`` gives the rigid cylinder (Martin's limit).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+import time
+
+import numpy as np
+
+from transient.checks import check_positive, check_range
+from transient.models.roller.film import EHLFilm, interpolate_state, solve_steady
+from transient.models.roller.grid import TensorGrid
+from transient.models.roller.results import EHLConvergenceError, LineSteady
+from transient.physics.line_formulas import dowson_toyoda_central, hertz_line, line_groups, martin_min
+from transient.physics.rheology import DOWSON_HIGGINSON_PARK, Rheology
+from transient.solvers.newton import NewtonError
+
+SCHEMES = ("upwind2", "upwind1")
+
+
+def film_extrema(x, h):
+    """Minimum of a nodal film refined by the parabola through the lowest node and its neighbours:
+    ``(h_min, x_of_h_min)``."""
+    k = int(np.argmin(h))
+    if 0 < k < h.size - 1:
+        x0, x1, x2 = x[k - 1], x[k], x[k + 1]
+        y0, y1, y2 = h[k - 1], h[k], h[k + 1]
+        d01, d12, d02 = x1 - x0, x2 - x1, x2 - x0
+        a = ((y2 - y1) / d12 - (y1 - y0) / d01) / d02
+        bcoef = (y1 - y0) / d01 - a * (x0 + x1)
+        if a > 0:
+            xm = -bcoef / (2 * a)
+            if x0 <= xm <= x2:
+                return float(y1 + a * (xm - x1) ** 2 + (2 * a * x1 + bcoef) * (xm - x1)), float(xm)
+    return float(h[k]), float(x[k])
+
+
+class LineContact:
+    """Steady EHL line contact, SI at the API (module docstring).
+
+    Parameters: ``radius`` R [m] (reduced), ``load_per_length`` w [N/m], ``speed`` u [m/s] (mean
+    entrainment), ``viscosity`` eta0 [Pa s], ``pressure_viscosity`` alpha [1/Pa], ``modulus`` E' [Pa];
+    ``density`` ``"dowson-higginson"`` (the paper's constants 0.58, 1.68 /GPa unless ``dh_constants``)
+    or ``"incompressible"``; ``viscosity_law`` ``"barus"``, ``"roelands"`` or ``"isoviscous"``;
+    ``grid``: number of nodes (uniform, boundary nodes included) or the node positions in units of b;
+    ``domain`` (inlet, outlet) in units of b; ``scheme`` ``"upwind2"`` or ``"upwind1"``;
+    ``elastic=False`` for a rigid cylinder.
+    """
+
+    def __init__(self, radius, load_per_length, speed, viscosity, pressure_viscosity, modulus,
+                 density: str = "dowson-higginson", viscosity_law: str = "barus", grid=401, domain=(-5.0, 2.5),
+                 scheme: str = "upwind2", elastic: bool = True, dh_constants=DOWSON_HIGGINSON_PARK):
+        self.radius = check_positive("radius", radius, "m")
+        self.load_per_length = check_positive("load_per_length", load_per_length, "N/m")
+        self.speed = check_positive("speed", speed, "m/s")
+        self.modulus = check_positive("modulus", modulus, "Pa")
+        self.rheology = Rheology(viscosity=check_positive("viscosity", viscosity, "Pa s"),
+                                 pressure_viscosity=pressure_viscosity, viscosity_law=viscosity_law,
+                                 density=density, dh_constants=tuple(dh_constants))
+        if scheme not in SCHEMES:
+            raise ValueError(f"scheme = {scheme!r} is not one of {SCHEMES}")
+        self.scheme = scheme
+        self.elastic = bool(elastic)
+        lo = check_range("domain[0] (inlet)", domain[0], "b", -1e3, -1.0)
+        hi = check_range("domain[1] (outlet)", domain[1], "b", 1.0, 1e3)
+        self.domain = (lo, hi)
+        self.b, self.p_h = hertz_line(self.load_per_length, self.radius, self.modulus)
+        if np.ndim(grid) == 0:
+            n = int(check_range("grid", grid, "nodes", 11, 100001))
+            nodes = np.linspace(lo, hi, n)
+        else:
+            nodes = np.asarray(grid, dtype=float)
+            if nodes[0] != lo or nodes[-1] != hi:
+                raise ValueError(f"grid nodes must start at the inlet {lo} and end at the outlet {hi} (units of b)")
+        self.grid = TensorGrid(nodes)
+        inside = np.count_nonzero(np.abs(nodes) < 1.0)
+        if inside < 8:
+            raise ValueError(f"grid = {nodes.size} nodes puts {inside} nodes inside the Hertz contact |x| < b; "
+                             "allowed: at least 8 (use more nodes)")
+        self.U, self.G, self.W = line_groups(self.rheology.viscosity, self.speed, self.rheology.pressure_viscosity,
+                                             self.load_per_length, self.modulus, self.radius)
+
+    # -- scaled problem ------------------------------------------------------------------------------
+    @property
+    def lam(self) -> float:
+        """Wedge coefficient ``12 eta0 u R^2 / (b^3 p_h)``."""
+        return 12.0 * self.rheology.viscosity * self.speed * self.radius ** 2 / (self.b ** 3 * self.p_h)
+
+    @property
+    def film_scale(self) -> float:
+        """Film unit ``b^2 / R`` [m]."""
+        return self.b * self.b / self.radius
+
+    def film_problem(self, grid: TensorGrid | None = None, rheology: Rheology | None = None) -> EHLFilm:
+        """The scaled discrete problem (:class:`~transient.models.roller.film.EHLFilm`) on ``grid``
+        (default: the contact's grid)."""
+        grid = self.grid if grid is None else grid
+        x = grid.x
+        return EHLFilm(grid, 0.5 * x * x, np.ones(1), self.lam, self.load_per_length / (self.b * self.p_h),
+                       rheology or self.rheology, self.p_h, elastic="dense" if self.elastic else "rigid",
+                       elastic_factor=-1.0 / math.pi, order2=(self.scheme == "upwind2"))
+
+    def initial_guess(self, film: EHLFilm) -> np.ndarray:
+        """Hertz pressure plus a small inlet ramp and the Dowson-Toyoda central film (elastic), or an
+        inlet ramp and Martin's film (rigid)."""
+        xi = film.grid.x[1:-1]
+        ramp = np.where(xi < -1.0, 0.1 * (xi - xi[0]) / (-1.0 - xi[0]), 0.0)
+        if self.elastic:
+            p = np.sqrt(np.clip(1.0 - xi * xi, 0.0, None)) + ramp
+            hc = dowson_toyoda_central(self.U, self.G, self.W) * self.radius / self.film_scale
+            h0 = hc - float(np.interp(0.0, film.grid.x, film.deformation(p)))
+        else:
+            p = ramp
+            h0 = martin_min(self.U, self.W) * self.radius / self.film_scale
+        return np.append(p, h0)
+
+    def levels(self) -> list[TensorGrid]:
+        """Grids of the nested iteration, coarse to fine: every other node of the next finer grid while
+        the coarser one keeps >= 8 nodes in the Hertz contact and >= 41 nodes."""
+        out = [self.grid]
+        while True:
+            x = out[0].x
+            if (x.size - 1) % 2:
+                break
+            xc = x[::2]
+            if xc.size < 41 or np.count_nonzero(np.abs(xc) < 1.0) < 8:
+                break
+            out.insert(0, TensorGrid(xc))
+        return out
+
+    # -- solves --------------------------------------------------------------------------------------
+    def steady(self, initial=None, tol: float = 1e-9, max_iter: int = 60, raise_on_failure: bool = True) -> LineSteady:
+        """Steady film by nested iteration: Newton on the complementarity system on :meth:`levels`,
+        each level started from the coarser solution (the coarsest from :meth:`initial_guess`, by
+        continuation in the pressure-viscosity coefficient if the direct start fails). ``initial``: a
+        previous :class:`LineSteady` on the same grid to start from instead. Raises
+        :class:`EHLConvergenceError` (its ``result`` flagged ``success=False`` with the residual history)
+        if Newton fails, unless ``raise_on_failure=False``."""
+        t0 = time.perf_counter()
+        levels = [self.grid] if initial is not None else self.levels()
+        u, grid_prev, iters, norms, ok, msg = None, None, 0, [], True, ""
+        for k, grid in enumerate(levels):
+            film = self.film_problem(grid)
+            if k == 0:
+                u0 = initial.state if initial is not None else self.initial_guess(film)
+            else:
+                u0 = interpolate_state(grid_prev, u, grid)
+            try:
+                nr = self._newton(film, u0, tol, max_iter, continuation=(k == 0 and initial is None))
+            except NewtonError as exc:
+                nr, ok, msg = exc.result, False, f"level {k + 1}/{len(levels)} ({grid.x.size} nodes): {exc}"
+            u, grid_prev = nr.x, grid
+            iters += nr.iterations
+            norms = nr.residual_norms
+            if not ok:
+                break
+        if ok:
+            msg = f"converged: {iters} Newton iterations over {len(levels)} grid level(s)"
+        res = self._result(film, u, ok, msg, iters, norms, time.perf_counter() - t0)
+        if not ok and raise_on_failure:
+            raise EHLConvergenceError(msg, res)
+        return res
+
+    def _newton(self, film, u0, tol, max_iter, continuation):
+        try:
+            return solve_steady(film, u0, tol=tol, max_iter=max_iter, name="LineContact.steady Newton")
+        except NewtonError:
+            if not continuation or self.rheology.pressure_viscosity == 0.0:
+                raise
+        u = u0
+        for frac in (0.25, 0.5, 0.75, 1.0):  # continuation in alpha from a quarter of it
+            rh = dataclasses.replace(self.rheology, pressure_viscosity=frac * self.rheology.pressure_viscosity)
+            nr = solve_steady(self.film_problem(film.grid, rh), u, tol=tol, max_iter=max_iter,
+                              name=f"LineContact.steady Newton (continuation, alpha x {frac})")
+            u = nr.x
+        return nr
+
+    def _result(self, film, u, ok, msg, iterations, norms, wall) -> LineSteady:
+        p, h0 = u[:-1], u[-1]
+        x = self.grid.x * self.b
+        pressure = self.grid.full(p).ravel() * self.p_h
+        h = film.film(p, h0) * self.film_scale
+        h_min, x_min = film_extrema(x, h)
+        return LineSteady(x=x, pressure=pressure, film=h, h_central=float(np.interp(0.0, x, h)), h_min=h_min,
+                          x_of_h_min=x_min, p_max=float(pressure.max()),
+                          load_error=float(film.area_w @ p - 1.0), radius=self.radius, modulus=self.modulus,
+                          hertz_half_width=self.b, hertz_pressure=self.p_h, success=ok, message=msg,
+                          iterations=int(iterations), wall_time=wall, residual_norms=list(map(float, norms)),
+                          state=np.array(u, dtype=float))
