@@ -41,12 +41,12 @@ def _phi(xi, eta):
     return out
 
 
-@njit(cache=True, parallel=False)
+@njit(cache=True, parallel=True)
 def _surface_kernel(xo, yo, xe, ye, out):
     nxo, nyo = xo.size, yo.size
     npx, npy = xe.size - 1, ye.size - 1
-    g = np.empty((npy + 1, npx + 1))
-    for jo in range(nyo):
+    for jo in prange(nyo):
+        g = np.empty((npy + 1, npx + 1))
         for io in range(nxo):
             for b in range(npy + 1):
                 eta = ye[b] - yo[jo]

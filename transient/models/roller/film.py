@@ -85,6 +85,7 @@ class EHLFilm:
         self.colp, self.colh = slot_maps(grid)
         self.y_nodes = grid.y if grid.two_d else np.zeros(1)
         self.K = None
+        self._K32 = None
         self.conv = None
         if elastic == "dense":
             self.K = kernel if kernel is not None else self.influence_matrix()
@@ -100,6 +101,7 @@ class EHLFilm:
         self.phi = np.empty(self.n)
         self._p_full = np.zeros(grid.shape_full)
         self.row_scale = np.ones(self.n)
+        self.mu = 0.0
 
     # -- elasticity ------------------------------------------------------------------------------
     def influence_matrix(self) -> np.ndarray:
@@ -116,6 +118,15 @@ class EHLFilm:
         if self.elastic == "fft":
             return self.conv.apply(self.grid.full(p)).ravel()
         return np.zeros(self.n_full)
+
+    def deformation_approx(self, p) -> np.ndarray:
+        """:meth:`deformation` with the dense matrix in single precision (relative error ~1e-7; half
+        the memory traffic): for Jacobian-vector products inside GMRES, never for residuals."""
+        if self.elastic == "dense":
+            if self._K32 is None:
+                self._K32 = self.K.astype(np.float32)
+            return self._K32 @ p.astype(np.float32)
+        return self.deformation(p)
 
     def film(self, p, h0) -> np.ndarray:
         """Film ``h`` at every full node (flat)."""
@@ -176,15 +187,28 @@ class EHLFilm:
         p, h0 = u[:-1], u[-1]
         F = self.reynolds(p, self.film(p, h0))
         out = np.empty(self.n + 1)
-        fischer_burmeister(p, -F * self.row_scale, out[:-1], self.fb_a, self.fb_b)
+        fischer_burmeister(p, -F * self.row_scale, out[:-1], self.fb_a, self.fb_b, self.mu)
         out[-1] = self.area_w @ p - 1.0
         return out
 
+    def add_storage(self, p, h, shift: float) -> None:
+        """Add ``shift`` times the storage term of the transient, ``-lam d(rho h)/du`` (time in units of
+        b/u), to the local Jacobian ``Sp``, ``Sh`` (after :meth:`reynolds` with ``jac=True``): a
+        pseudo-transient Newton step is then a backward-Euler step of the physical squeeze-film
+        dynamics (:func:`~transient.solvers.newton.newton`, ``pseudo_time``)."""
+        c = self.colh[:, 0]
+        rho, drho = self.props[0][c], self.props[1][c]
+        self.Sp[:, 0] -= shift * self.lam * drho * h[c]
+        self.Sh[:, 0] -= shift * self.lam * rho
+
     def jacobian(self, u, shift: float = 0.0) -> np.ndarray:
-        """Dense semismooth Newton matrix at ``u`` (``shift`` is not used: no pseudo-time here)."""
+        """Dense semismooth Newton matrix at ``u`` (plus ``shift`` times the storage term)."""
         p, h0 = u[:-1], u[-1]
-        F = self.reynolds(p, self.film(p, h0), jac=True)
-        fischer_burmeister(p, -F * self.row_scale, self.phi, self.fb_a, self.fb_b)
+        h = self.film(p, h0)
+        F = self.reynolds(p, h, jac=True)
+        if shift:
+            self.add_storage(p, h, shift)
+        fischer_burmeister(p, -F * self.row_scale, self.phi, self.fb_a, self.fb_b, self.mu)
         J = np.empty((self.n + 1, self.n + 1))
         K = self.K if self.elastic == "dense" else np.zeros((1, 1))
         assemble_dense(self.Sp, self.Sh, self.colp, self.colh, K, self.elastic == "dense", self.fb_a,
@@ -204,11 +228,14 @@ class EHLFilm:
 
 
 def solve_steady(film: EHLFilm, u0, *, tol: float = 1e-9, max_iter: int = 60, jacobian=None,
-                 name: str = "EHL Newton"):
-    """Semismooth Newton with line search (:func:`transient.solvers.newton.newton`) on ``film``'s equations.
+                 pseudo_time: float | None = None, name: str = "EHL Newton"):
+    """Semismooth Newton on ``film``'s equations (:func:`transient.solvers.newton.newton`).
 
     Steps are shortened so that the film stays above a tenth of its current value
-    (:meth:`EHLFilm.step_limit`). Converged when ``|residual|_inf <= tol`` and the last step ``<= tol max(1, |u|_inf)`` (scaled units).
+    (:meth:`EHLFilm.step_limit`); with ``pseudo_time`` (initial step, units of b/u) the first iterations
+    are backward-Euler steps of the physical squeeze-film transient (:meth:`EHLFilm.add_storage`) with
+    a growing step, else a backtracking line search globalises. Converged when
+    ``|residual|_inf <= tol`` and the last step ``<= tol max(1, |u|_inf)`` (scaled units).
     ``jacobian(u, shift)``: the film's dense matrix by default, or e.g. a Krylov solver object.
     Raises :class:`~transient.solvers.newton.NewtonError` (with the histories) otherwise."""
     film.set_row_scale(u0)
@@ -217,7 +244,7 @@ def solve_steady(film: EHLFilm, u0, *, tol: float = 1e-9, max_iter: int = 60, ja
         return float(np.max(np.abs(r))) <= tol and float(np.max(np.abs(du))) <= tol * max(1.0, float(np.max(np.abs(u))))
 
     return newton(film.residual, jacobian or film.jacobian, u0, converged=converged, max_iter=max_iter,
-                  max_step=film.step_limit, name=name)
+                  max_step=film.step_limit, pseudo_time=pseudo_time, name=name)
 
 
 def interpolate_state(grid_from: TensorGrid, u_from, grid_to: TensorGrid) -> np.ndarray:

@@ -155,10 +155,12 @@ def reynolds_kernel(p_full, h_full, x, y, rs, lam, two_d, order2, vcode, alpha, 
 
 
 @njit(cache=True, error_model="numpy")
-def fischer_burmeister(a, b, phi, da, db):
-    """``phi = a + b - sqrt(a^2 + b^2)`` and a generalised gradient (``da``, ``db``) per entry."""
+def fischer_burmeister(a, b, phi, da, db, mu=0.0):
+    """``phi = a + b - sqrt(a^2 + b^2 + 2 mu^2)`` and a generalised gradient (``da``, ``db``) per entry
+    (``mu > 0``: the smoothed function, whose root satisfies ``a, b > 0, a b = mu^2``)."""
+    m2 = 2.0 * mu * mu
     for k in range(a.size):
-        r = math.sqrt(a[k] * a[k] + b[k] * b[k])
+        r = math.sqrt(a[k] * a[k] + b[k] * b[k] + m2)
         phi[k] = a[k] + b[k] - r
         if r > 0.0:
             da[k] = 1.0 - a[k] / r

@@ -95,3 +95,71 @@ class LineTransient(Result):
     wall_time: float = quantity("s", 0.0)
     final_state: np.ndarray = quantity("-", default_factory=lambda: np.zeros(0))
     final_time: float = quantity("s", 0.0)
+
+
+@result_type
+class RollerSteady(Result):
+    """Steady EHL of the tapered roller (:class:`~transient.models.roller.contact.RollerContact`).
+
+    ``x`` (rolling direction) and ``y`` (along the roller, from the mid-plane, negative at the small
+    end) node positions including the boundary nodes; ``pressure`` and ``film`` of shape
+    ``(y.size, x.size)``. ``h_central`` is the film at ``x = 0`` on the mid-plane; ``h_min``,
+    ``p_max`` the extrema with their positions. Dimensionless views (the paper's): ``X, Y`` (by R_m),
+    ``P`` (by E'), ``H`` (by R_m)."""
+
+    time_axis = None
+    x: np.ndarray = quantity("m")
+    y: np.ndarray = quantity("m")
+    pressure: np.ndarray = quantity("Pa")
+    film: np.ndarray = quantity("m")
+    h_central: float = quantity("m")
+    h_min: float = quantity("m")
+    x_of_h_min: float = quantity("m")
+    y_of_h_min: float = quantity("m")
+    p_max: float = quantity("Pa")
+    x_of_p_max: float = quantity("m")
+    y_of_p_max: float = quantity("m")
+    load_error: float = quantity("-")
+    mean_radius: float = quantity("m")
+    modulus: float = quantity("Pa")
+    half_width: float = quantity("m")
+    footprint_length: float = quantity("m")
+    success: bool = True
+    message: str = ""
+    iterations: int = 0
+    wall_time: float = quantity("s", 0.0)
+    residual_norms: list = field(default_factory=list)
+    state: np.ndarray = quantity("-", default_factory=lambda: np.zeros(0))
+    solver_info: dict = field(default_factory=dict)
+
+    @property
+    def X(self):
+        return self.x / self.mean_radius
+
+    @property
+    def Y(self):
+        return self.y / self.mean_radius
+
+    @property
+    def P(self):
+        return self.pressure / self.modulus
+
+    @property
+    def H(self):
+        return self.film / self.mean_radius
+
+    def section_x(self, y: float):
+        """``(x, pressure, film)`` along the rolling direction at ``y`` [m] (linear in y between rows)."""
+        p, h = _row(self.y, self.pressure, y), _row(self.y, self.film, y)
+        return self.x, p, h
+
+    def section_y(self, x: float = 0.0):
+        """``(y, pressure, film)`` along the roller at ``x`` [m] (linear in x between columns)."""
+        p, h = _row(self.x, self.pressure.T, x), _row(self.x, self.film.T, x)
+        return self.y, p, h
+
+
+def _row(coord, field2d, at):
+    j = int(np.clip(np.searchsorted(coord, at), 1, coord.size - 1))
+    w = (at - coord[j - 1]) / (coord[j] - coord[j - 1])
+    return (1.0 - w) * field2d[j - 1] + w * field2d[j]
