@@ -315,6 +315,6 @@ class RollerContact:
                             x_of_h_min=float(x[ih + 1]), y_of_h_min=float(y[jh + 1]), p_max=float(P[jp, ip]),
                             x_of_p_max=float(x[ip]), y_of_p_max=float(y[jp]), load_error=float(film.area_w @ p - 1.0),
                             mean_radius=rm, modulus=self.modulus, half_width=s["B"] * rm,
-                            footprint_length=s["d"] * s["B"] * rm, success=ok, message=msg, iterations=int(iters),
+                            footprint_length=s["d"] * s["B"] * rm, profile_start=self.roller.profile_start, success=ok, message=msg, iterations=int(iters),
                             wall_time=wall, residual_norms=list(map(float, norms)), state=np.array(u, float),
                             solver_info=info or {})

@@ -101,7 +101,6 @@ class EHLFilm:
         self.phi = np.empty(self.n)
         self._p_full = np.zeros(grid.shape_full)
         self.row_scale = np.ones(self.n)
-        self.mu = 0.0
 
     # -- elasticity ------------------------------------------------------------------------------
     def influence_matrix(self) -> np.ndarray:
@@ -187,7 +186,7 @@ class EHLFilm:
         p, h0 = u[:-1], u[-1]
         F = self.reynolds(p, self.film(p, h0))
         out = np.empty(self.n + 1)
-        fischer_burmeister(p, -F * self.row_scale, out[:-1], self.fb_a, self.fb_b, self.mu)
+        fischer_burmeister(p, -F * self.row_scale, out[:-1], self.fb_a, self.fb_b)
         out[-1] = self.area_w @ p - 1.0
         return out
 
@@ -208,7 +207,7 @@ class EHLFilm:
         F = self.reynolds(p, h, jac=True)
         if shift:
             self.add_storage(p, h, shift)
-        fischer_burmeister(p, -F * self.row_scale, self.phi, self.fb_a, self.fb_b, self.mu)
+        fischer_burmeister(p, -F * self.row_scale, self.phi, self.fb_a, self.fb_b)
         J = np.empty((self.n + 1, self.n + 1))
         K = self.K if self.elastic == "dense" else np.zeros((1, 1))
         assemble_dense(self.Sp, self.Sh, self.colp, self.colh, K, self.elastic == "dense", self.fb_a,

@@ -155,12 +155,10 @@ def reynolds_kernel(p_full, h_full, x, y, rs, lam, two_d, order2, vcode, alpha, 
 
 
 @njit(cache=True, error_model="numpy")
-def fischer_burmeister(a, b, phi, da, db, mu=0.0):
-    """``phi = a + b - sqrt(a^2 + b^2 + 2 mu^2)`` and a generalised gradient (``da``, ``db``) per entry
-    (``mu > 0``: the smoothed function, whose root satisfies ``a, b > 0, a b = mu^2``)."""
-    m2 = 2.0 * mu * mu
+def fischer_burmeister(a, b, phi, da, db):
+    """``phi = a + b - sqrt(a^2 + b^2)`` and a generalised gradient (``da``, ``db``) per entry."""
     for k in range(a.size):
-        r = math.sqrt(a[k] * a[k] + b[k] * b[k] + m2)
+        r = math.sqrt(a[k] * a[k] + b[k] * b[k])
         phi[k] = a[k] + b[k] - r
         if r > 0.0:
             da[k] = 1.0 - a[k] / r
@@ -186,11 +184,11 @@ def assemble_dense(Sp, Sh, colp, colh, K, elastic, fb_a, fb_b, area_w, J):
             ch = colh[r, s]
             if ch >= 0:
                 v = Sh[r, s]
+                s_h0 += v
                 if elastic and v != 0.0:
                     krow = K[ch]
                     for q in range(n):
                         row[q] += v * krow[q]
-                    s_h0 += v
             cp = colp[r, s]
             if cp >= 0:
                 row[cp] += Sp[r, s]

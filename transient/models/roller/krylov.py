@@ -56,7 +56,7 @@ class NewtonMatrix(spla.LinearOperator):
         F = film.reynolds(p, h, jac=True)
         if shift:
             film.add_storage(p, h, shift)
-        fischer_burmeister(p, -F * film.row_scale, film.phi, film.fb_a, film.fb_b, film.mu)
+        fischer_burmeister(p, -F * film.row_scale, film.phi, film.fb_a, film.fb_b)
         self.Sp, self.Sh = film.Sp.copy(), film.Sh.copy()
         self.da = film.fb_a.copy()
         self.db = film.fb_b * film.row_scale

@@ -18,7 +18,6 @@ complementarity form of the exit condition solved inside Newton (:mod:`transient
 
 from __future__ import annotations
 
-import dataclasses
 import math
 import time
 
@@ -27,12 +26,24 @@ import numpy as np
 from transient.checks import check_positive, check_range
 from transient.models.roller.film import EHLFilm, interpolate_state, solve_steady
 from transient.models.roller.grid import TensorGrid
-from transient.models.roller.results import EHLConvergenceError, LineSteady
+from transient.models.roller.dry import edge_positions, polonsky_keer
+from transient.models.roller.results import EHLConvergenceError, LineDry, LineSteady
+from transient.physics.elasticity import line_influence
 from transient.physics.line_formulas import dowson_toyoda_central, hertz_line, line_groups, martin_min
 from transient.physics.rheology import DOWSON_HIGGINSON_PARK, Rheology
 from transient.solvers.newton import NewtonError
 
 SCHEMES = ("upwind2", "upwind1")
+
+
+class _DenseOperator:
+    """``apply(p)``: a dense influence matrix acting on a (1, n) pressure row (for the dry solver)."""
+
+    def __init__(self, K):
+        self.K = K
+
+    def apply(self, p):
+        return (self.K @ p.ravel()).reshape(p.shape)
 
 
 def film_extrema(x, h):
@@ -133,26 +144,43 @@ class LineContact:
 
     def levels(self) -> list[TensorGrid]:
         """Grids of the nested iteration, coarse to fine: every other node of the next finer grid while
-        the coarser one keeps >= 8 nodes in the Hertz contact and >= 41 nodes."""
+        the coarser one keeps >= 20 nodes in the Hertz contact and >= 101 nodes."""
         out = [self.grid]
         while True:
             x = out[0].x
             if (x.size - 1) % 2:
                 break
             xc = x[::2]
-            if xc.size < 41 or np.count_nonzero(np.abs(xc) < 1.0) < 8:
+            if xc.size < 101 or np.count_nonzero(np.abs(xc) < 1.0) < 20:
                 break
             out.insert(0, TensorGrid(xc))
         return out
 
+    def dry(self, nodes: int = 401) -> LineDry:
+        """Dry contact of the cylinder (the zero-speed limit) on ``nodes`` uniform nodes over
+        ``[-1.5 b, 1.5 b]`` with the same plane-strain patches, by Polonsky-Keer CG
+        (:func:`transient.models.roller.dry.polonsky_keer`): compare with Hertz, ``p_h sqrt(1 - x^2/b^2)``."""
+        x = np.linspace(-1.5, 1.5, int(check_range("nodes", nodes, "-", 21, 100001)))
+        dx = x[1] - x[0]
+        edges = np.concatenate(([x[0] - 0.5 * dx], 0.5 * (x[1:] + x[:-1]), [x[-1] + 0.5 * dx]))
+        K = -line_influence(x, edges) / math.pi
+        p, delta, it, ok = polonsky_keer((0.5 * x * x)[None, :], _DenseOperator(K), dx, math.pi / 2.0)
+        e = edge_positions(x, p[0])
+        return LineDry(x=x * self.b, pressure=p[0] * self.p_h, p_max=float(p.max() * self.p_h),
+                       half_width=0.5 * (e[1] - e[0]) * self.b, hertz_half_width=self.b, hertz_pressure=self.p_h,
+                       success=ok, message="converged" if ok else "Polonsky-Keer CG did not reach its tolerance",
+                       iterations=it)
+
     # -- solves --------------------------------------------------------------------------------------
     def steady(self, initial=None, tol: float = 1e-9, max_iter: int = 60, raise_on_failure: bool = True) -> LineSteady:
         """Steady film by nested iteration: Newton on the complementarity system on :meth:`levels`,
-        each level started from the coarser solution (the coarsest from :meth:`initial_guess`, by
-        continuation in the pressure-viscosity coefficient if the direct start fails). ``initial``: a
-        previous :class:`LineSteady` on the same grid to start from instead. Raises
-        :class:`EHLConvergenceError` (its ``result`` flagged ``success=False`` with the residual history)
-        if Newton fails, unless ``raise_on_failure=False``."""
+        each level started from the coarser solution, the coarsest from :meth:`initial_guess`; where
+        Newton with line search fails, the level is redone with pseudo-transient continuation
+        (backward-Euler steps of the squeeze-film transient, first step 0.3 b/u, then 0.03 b/u on the
+        coarsest level): line search is the more robust at high speed, pseudo-time at high load.
+        ``initial``: a previous :class:`LineSteady` on the same grid to start from instead. Raises
+        :class:`EHLConvergenceError` (its ``result`` flagged ``success=False`` with the residual
+        history) if Newton fails, unless ``raise_on_failure=False``."""
         t0 = time.perf_counter()
         levels = [self.grid] if initial is not None else self.levels()
         u, grid_prev, iters, norms, ok, msg = None, None, 0, [], True, ""
@@ -162,10 +190,15 @@ class LineContact:
                 u0 = initial.state if initial is not None else self.initial_guess(film)
             else:
                 u0 = interpolate_state(grid_prev, u, grid)
-            try:
-                nr = self._newton(film, u0, tol, max_iter, continuation=(k == 0 and initial is None))
-            except NewtonError as exc:
-                nr, ok, msg = exc.result, False, f"level {k + 1}/{len(levels)} ({grid.x.size} nodes): {exc}"
+            attempts = [None, 0.3, 0.03] if (k == 0 and initial is None) else [None, 0.3]
+            for pseudo in attempts:
+                try:
+                    nr = solve_steady(film, u0, tol=tol, max_iter=max_iter, pseudo_time=pseudo,
+                                      name="LineContact.steady Newton")
+                    ok = True
+                    break
+                except NewtonError as exc:
+                    nr, ok, msg = exc.result, False, f"level {k + 1}/{len(levels)} ({grid.x.size} nodes): {exc}"
             u, grid_prev = nr.x, grid
             iters += nr.iterations
             norms = nr.residual_norms
@@ -178,24 +211,10 @@ class LineContact:
             raise EHLConvergenceError(msg, res)
         return res
 
-    def _newton(self, film, u0, tol, max_iter, continuation):
-        try:
-            return solve_steady(film, u0, tol=tol, max_iter=max_iter, name="LineContact.steady Newton")
-        except NewtonError:
-            if not continuation or self.rheology.pressure_viscosity == 0.0:
-                raise
-        u = u0
-        for frac in (0.25, 0.5, 0.75, 1.0):  # continuation in alpha from a quarter of it
-            rh = dataclasses.replace(self.rheology, pressure_viscosity=frac * self.rheology.pressure_viscosity)
-            nr = solve_steady(self.film_problem(film.grid, rh), u, tol=tol, max_iter=max_iter,
-                              name=f"LineContact.steady Newton (continuation, alpha x {frac})")
-            u = nr.x
-        return nr
-
     def _result(self, film, u, ok, msg, iterations, norms, wall) -> LineSteady:
         p, h0 = u[:-1], u[-1]
-        x = self.grid.x * self.b
-        pressure = self.grid.full(p).ravel() * self.p_h
+        x = film.grid.x * self.b
+        pressure = film.grid.full(p).ravel() * self.p_h
         h = film.film(p, h0) * self.film_scale
         h_min, x_min = film_extrema(x, h)
         return LineSteady(x=x, pressure=pressure, film=h, h_central=float(np.interp(0.0, x, h)), h_min=h_min,

@@ -76,6 +76,23 @@ class LineSteady(Result):
 
 
 @result_type
+class LineDry(Result):
+    """Dry contact of the cylinder (:meth:`LineContact.dry`): pressure, maximum, half-width, and the Hertz
+    values for comparison."""
+
+    time_axis = None
+    x: np.ndarray = quantity("m")
+    pressure: np.ndarray = quantity("Pa")
+    p_max: float = quantity("Pa")
+    half_width: float = quantity("m")
+    hertz_half_width: float = quantity("m")
+    hertz_pressure: float = quantity("Pa")
+    success: bool = True
+    message: str = ""
+    iterations: int = 0
+
+
+@result_type
 class LineTransient(Result):
     """Transient of the line contact (IDA): series at the output times ``t``, final fields."""
 
@@ -124,6 +141,7 @@ class RollerSteady(Result):
     modulus: float = quantity("Pa")
     half_width: float = quantity("m")
     footprint_length: float = quantity("m")
+    profile_start: float = quantity("m", 0.0)
     success: bool = True
     message: str = ""
     iterations: int = 0

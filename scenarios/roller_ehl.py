@@ -1,0 +1,100 @@
+"""Seed 001 scenario: EHL of a tilted tapered roller (Park 2015), the paper's Figs. 3-10.
+
+Run: ``python scenarios/roller_ehl.py [--quick] [--out DIR]`` (PNGs and ``roller_ehl.json`` into
+``scenarios/out/roller_ehl/`` by default). The paper's case (:mod:`transient.params.park`): U_m = 1e-11,
+G = 2500, W = 2e-5, E' = 220 GPa, theta = 10 deg, R_d* = 0.5, Y_d = 0.7, tilt +0.002, -0.002 and 0 deg,
+on the paper's 94 x 45 non-uniform grid (``--quick``: 62 x 45). Prints the paper's statements checked.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import time
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+
+from transient.analysis.ehl import end_features, midplane_features, tilt_effects, transverse_features
+from transient.models.roller import RollerContact, TaperedRoller
+from transient.params import park
+from transient.plots import roller as plots
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+
+
+def solve_all(grid):
+    out = {}
+    for tilt in park.TILTS_DEG:
+        roller = TaperedRoller(**park.ROLLER, tilt_deg=tilt)
+        contact = RollerContact.from_dimensionless(**park.DIMENSIONLESS, roller=roller, speed=park.SPEED, grid=grid)
+        t0 = time.perf_counter()
+        out[tilt] = contact.steady()
+        print(f"tilt {tilt:+.3f} deg: {out[tilt].message} in {time.perf_counter() - t0:.1f} s "
+              f"(dry c = {contact.dry().half_width * 1e6:.1f} um, d = {contact.dry().footprint_length * 1e3:.3f} mm)")
+    return out
+
+
+def statements(res) -> dict:
+    """The paper's statements, each with the numbers that decide it (sections at Y = -+0.7 as Figs. 7-10)."""
+    s0, yd = res[0.0], park.ROLLER["profile_start"]
+    sec = {e: midplane_features(s0, at=y) for e, y in (("small", -yd), ("large", yd))}
+    ends0, eff = end_features(s0), tilt_effects(res, yd)
+    tr = {t: transverse_features(r) for t, r in res.items()}
+    return {
+        "spike": dict(holds=all(v["spike"] for v in sec.values()), **{e: v["spike_over_centre"] for e, v in sec.items()}),
+        "flat_central_film": dict(holds=all(v["central_film_variation"] < 0.05 for v in sec.values()),
+                                  **{e: v["central_film_variation"] for e, v in sec.items()}),
+        "outlet_constriction": dict(holds=all(v["h_min"] < 0.95 * v["h_central"] and v["x_of_h_min"] > 0 for v in sec.values()),
+                                    **{e: v["h_min"] / v["h_central"] for e, v in sec.items()}),
+        "small_end_more_affected": dict(holds=eff["small_section_p_max_change"] > eff["large_section_p_max_change"]
+                                        and eff["small_end_h_min_change"] > eff["large_end_h_min_change"], **eff),
+        "pressure_more_affected_than_film": dict(holds=all(eff[f"{e}_section_p_max_change"] > eff[f"{e}_section_h_at_x0_change"]
+                                                           for e in ("small", "large")), **eff),
+        "transverse_peak_inboard_of_min_film": dict(holds=all(v["peak_inboard"] for t in tr for v in tr[t].values()),
+                                                    **{f"tilt {t:+.3f} {e}": v for t in tr for e, v in tr[t].items()}),
+        "untilted_max_pressure_and_min_film_at_small_end": dict(
+            holds=ends0["small"]["p_max"] > ends0["large"]["p_max"] and ends0["small"]["h_min"] < ends0["large"]["h_min"], **ends0),
+    }
+
+
+def save(fig, out, name):
+    fig.savefig(os.path.join(out, name), dpi=110)
+    plt.close(fig)
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--quick", action="store_true", help="62 x 45 non-uniform grid instead of the paper's 94 x 45")
+    ap.add_argument("--out", default=os.path.join(HERE, "out", "roller_ehl"), help="output directory")
+    args = ap.parse_args(argv)
+    os.makedirs(args.out, exist_ok=True)
+    grid = ("clustered", 62, 45) if args.quick else "paper"
+    res = solve_all(grid)
+    lab = {t: f"φ = {t:+.3f}°" for t in res}
+    for fig_no, tilt in ((3, 0.002), (5, -0.002)):
+        save(plots.maps(res[tilt], "pressure", f"Fig. {fig_no}: pressure, {lab[tilt]}"), args.out, f"fig{fig_no}_pressure.png")
+        save(plots.maps(res[tilt], "film", f"Fig. {fig_no + 1}: film, {lab[tilt]}"), args.out, f"fig{fig_no + 1}_film.png")
+    save(plots.maps(res[0.0], "pressure", "no tilt: pressure"), args.out, "fig_untilted_pressure.png")
+    named = {lab[t]: res[t] for t in res}
+    rm = park.MEAN_RADIUS
+    save(plots.rolling_sections(named, -0.7 * rm, "Fig. 7: rolling direction at Y = -0.7 (small end)"), args.out, "fig7_section_small_end.png")
+    save(plots.rolling_sections(named, 0.7 * rm, "Fig. 8: rolling direction at Y = +0.7 (large end)"), args.out, "fig8_section_large_end.png")
+    save(plots.rolling_sections(named, 0.0, "rolling direction at Y = 0 (mid-plane)"), args.out, "fig_section_midplane.png")
+    save(plots.transverse_sections(named, "small", 0.0, "Fig. 9: along X = 0 near the small end"), args.out, "fig9_transverse_small_end.png")
+    save(plots.transverse_sections(named, "large", 0.0, "Fig. 10: along X = 0 near the large end"), args.out, "fig10_transverse_large_end.png")
+    st = statements(res)
+    summary = {f"{t:+.3f}": dict(r.summary(), H_central=r.h_central / rm, H_min=r.h_min / rm, P_max=r.p_max / r.modulus,
+                                 ends=end_features(r), midplane=midplane_features(r)) for t, r in res.items()}
+    with open(os.path.join(args.out, "roller_ehl.json"), "w") as fh:
+        json.dump({"grid": list(grid) if not isinstance(grid, str) else grid, "results": summary, "statements": st}, fh, indent=1, default=float)
+    for name, v in st.items():
+        print(f"{name}: {'reproduced' if v['holds'] else 'NOT reproduced'}")
+    return res
+
+
+if __name__ == "__main__":
+    main()
