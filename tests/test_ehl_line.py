@@ -32,6 +32,7 @@ def test_dry_limit_is_hertz():
     assert np.max(err) < 0.5 * math.sqrt(0.0075)
 
 
+@pytest.mark.slow
 def test_ehl_pressure_tends_to_dry_as_speed_falls():
     gaps = []
     for u in (2.0, 0.5, 0.125):
@@ -44,18 +45,21 @@ def test_ehl_pressure_tends_to_dry_as_speed_falls():
     assert gaps[2] < 0.1
 
 
-def test_rigid_isoviscous_matches_martin_with_the_same_inlet():
+def test_rigid_isoviscous_matches_martin_with_second_order_convergence():
     w, u, eta = 2e4, 1.0, 0.05
-    c = LineContact(R, w, u, eta, 0.0, E, density="incompressible", viscosity_law="isoviscous", elastic=False,
-                    grid=801, domain=(-20.0, 10.0))
-    s = c.steady()
-    ref = martin_film(w, R, eta, u, inlet=-20.0 * c.b)
-    assert s.h_min == pytest.approx(ref, rel=2e-3)
+    err = []
+    for n in (401, 801):
+        c = LineContact(R, w, u, eta, 0.0, E, density="incompressible", viscosity_law="isoviscous", elastic=False,
+                        grid=n, domain=(-20.0, 10.0))
+        s = c.steady()
+        err.append(s.h_min / martin_film(w, R, eta, u, inlet=-20.0 * c.b) - 1.0)
+    assert abs(err[1]) < 2e-3 and 3.0 < err[0] / err[1] < 5.0
     U, _, W = line_groups(eta, u, 0.0, w, E, R)
     assert s.H_min == pytest.approx(4.9 * U / W, rel=0.05)  # the infinite-inlet constant, wide inlet
 
 
-@pytest.mark.parametrize("w,u", [(3e4, 0.5), (1e5, 2.0), (2e5, 8.0)])
+@pytest.mark.parametrize("w,u", [(1e5, 2.0), pytest.param(3e4, 0.5, marks=pytest.mark.slow),
+                                 pytest.param(2e5, 8.0, marks=pytest.mark.slow)])
 def test_barus_films_against_dowson_formulas(w, u):
     c = contact(w=w, u=u, grid=801, domain=(-8.0, 2.5))
     s = c.steady()
@@ -64,6 +68,7 @@ def test_barus_films_against_dowson_formulas(w, u):
     assert s.H_central == pytest.approx(dowson_toyoda_central(U, G, W), rel=0.12)
 
 
+@pytest.mark.slow
 def test_grid_convergence_is_second_order():
     h = [contact(grid=n).steady() for n in (201, 401, 801)]
     for key in ("h_central", "h_min"):
