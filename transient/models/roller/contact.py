@@ -41,7 +41,7 @@ from transient.models.roller.dry import DryContact, DrySolver, dry_contact
 from transient.models.roller.film import EHLFilm, interpolate_state, solve_steady
 from transient.models.roller.geometry import TaperedRoller
 from transient.models.roller.grid import TensorGrid, clustered_axis
-from transient.models.roller.krylov import DenseLU, NewtonKrylov
+from transient.models.roller.krylov import DenseLU, NewtonKrylov, NewtonMatrix, TwoLevel
 from transient.models.roller.results import EHLConvergenceError, RollerSteady
 from transient.physics.line_formulas import dowson_toyoda_central
 from transient.physics.rheology import DOWSON_HIGGINSON_PARK, Rheology
@@ -55,6 +55,8 @@ def _dense_lu(film, u, shift):
 
 #: above this many unknowns the dense path solves its linear systems by GMRES + a reused LU
 KRYLOV_ABOVE = 600
+#: first level (and two-level coarse grid) of the uniform-grid solves
+COARSE = ("clustered", 47, 45)
 
 
 def _weights(length, clusters):
@@ -214,12 +216,28 @@ class RollerContact:
             raise ValueError(f"grid nx = {g.x.size} puts {across} nodes across the dry contact width 2c; allowed: >= 8")
         if along < 16:
             raise ValueError(f"grid ny = {g.y.size} puts {along} nodes along the dry footprint length d; allowed: >= 16")
+        yd = self.roller.y_d / s["B"]
+        for name, side, end in (("small", -1.0, -s["y_lo"]), ("large", 1.0, s["y_hi"])):
+            ys = side * g.y
+            n_end = np.count_nonzero((ys >= yd) & (ys <= end))
+            if end > yd and n_end < 2:
+                dy = np.diff(g.y)[min(int(np.argmin(np.abs(ys - yd))), g.y.size - 2)]
+                raise ValueError(f"grid ny = {g.y.size} puts {n_end} node(s) on the profiled part of the footprint at the "
+                                 f"{name} end ({end - yd:.2f} c long; node spacing there {dy:.2f} c); allowed: >= 2 "
+                                 "(refine y or use a clustered grid)")
 
     def levels(self) -> list[tuple[str, int, int]]:
-        """Grid specifications of the nested iteration, coarse to fine: the x node count halved while
-        it stays >= 40 (y is kept: coarser y grids do not resolve the profiled ends)."""
+        """Grid specifications of the nested iteration, coarse to fine. Clustered grids: the x node count
+        halved while it stays >= 40 (y is kept: coarser y grids do not resolve the profiled ends).
+        Uniform grids: the clustered 47 x 45 grid first (also the coarse grid of the two-level
+        preconditioner), then uniform grids with the x node count halved while it stays >= 64."""
         kind, nx, ny = self.grid_spec
         out = [(kind, nx, ny)]
+        if kind == "uniform":
+            while nx // 2 >= 64:
+                nx //= 2
+                out.insert(0, ("uniform", nx, ny))
+            return [COARSE] + out
         while (nx + 1) // 2 >= 40:
             nx = (nx + 1) // 2
             out.insert(0, ("clustered", nx, ny))
@@ -271,11 +289,17 @@ class RollerContact:
         for k, spec in enumerate(specs):
             last = k == len(specs) - 1
             g = grid if last else self.make_grid(*spec)
-            film = self.film_problem(g)
+            film = self.film_problem(g, "fft" if spec[0] == "uniform" else "dense")
+            if k == 0:
+                coarse = film
             u0 = self.initial_guess(film) if k == 0 else interpolate_state(g_prev, u, g)
             attempts = [0.3] if k == 0 else [None, 0.3]
             for pseudo in attempts:
-                jac = NewtonKrylov(film, _dense_lu) if film.n > KRYLOV_ABOVE else None
+                if spec[0] == "uniform":
+                    jac = NewtonKrylov(film, lambda f, v, shift, c=coarse: TwoLevel(f, c, v, shift, NewtonMatrix(f, v, shift)),
+                                       restart=80, max_iter=400, refresh_after=60)
+                else:
+                    jac = NewtonKrylov(film, _dense_lu) if film.n > KRYLOV_ABOVE else None
                 try:
                     nr = solve_steady(film, u0, tol=tol if last else math.sqrt(tol), max_iter=max_iter,
                                       jacobian=jac, pseudo_time=pseudo,

@@ -128,41 +128,85 @@ class _KrylovSolve:
         return x
 
 
-def truncated_stencil_matrix(film, A: NewtonMatrix, near: int) -> sp.csr_matrix:
-    """Sparse Newton matrix of ``film`` at the state of ``A`` with the elastic coupling truncated to
-    ``|di|, |dj| <= near`` (uniform grid, FFT elasticity: ``K`` is Toeplitz)."""
+def interpolation_matrix(fine: np.ndarray, coarse: np.ndarray) -> sp.csr_matrix:
+    """Linear interpolation from the interior nodes of a coarse axis (values 0 at its boundary nodes) to
+    the interior nodes of a fine axis spanning the same interval: ``(n_fine_interior, n_coarse_interior)``."""
+    xf = fine[1:-1]
+    k = np.clip(np.searchsorted(coarse, xf) - 1, 0, coarse.size - 2)
+    w = (xf - coarse[k]) / (coarse[k + 1] - coarse[k])
+    rows = np.r_[np.arange(xf.size), np.arange(xf.size)]
+    cols = np.r_[k, k + 1] - 1  # coarse interior index
+    vals = np.r_[1.0 - w, w]
+    keep = (cols >= 0) & (cols < coarse.size - 2)
+    return sp.csr_matrix((vals[keep], (rows[keep], cols[keep])), shape=(xf.size, coarse.size - 2))
+
+
+class TwoLevel:
+    """Two-level preconditioner for a uniform grid with FFT elasticity (module docstring): a coarse-grid
+    correction with the dense Newton matrix of ``coarse_film`` (single-precision LU), then one
+    row-block relaxation -- for each grid row along x the exact block of the Newton matrix that couples
+    that row's pressures with each other (its local terms and the in-row and neighbouring-row elastic
+    coefficients, a dense ``nx x nx`` LU per row). ``A``: the fine :class:`NewtonMatrix`."""
+
+    def __init__(self, film, coarse_film, u, shift, A: NewtonMatrix):
+        g, gc = film.grid, coarse_film.grid
+        px, py = interpolation_matrix(g.x, gc.x), interpolation_matrix(g.y, gc.y)
+        P = sp.kron(py, px, format="csr")
+        self.P = sp.block_diag([P, sp.identity(1)], format="csr")
+        R = P.T.tocsr()
+        R = sp.diags(1.0 / np.maximum(np.asarray(R.sum(axis=1)).ravel(), 1e-300)) @ R
+        self.R = sp.block_diag([R, sp.identity(1)], format="csr")
+        pc = interpolate_pressure(g, u[:-1], gc)
+        self.coarse = DenseLU(coarse_film.jacobian(np.append(pc, u[-1]), shift))
+        self.A = A
+        self.blocks = _row_blocks(film, A)
+
+    def solve(self, b):
+        z = self.P @ self.coarse.solve(self.R @ b)
+        r = b - self.A.matvec(z)
+        nx, ny = self.A.film.grid.nx, self.A.film.grid.ny
+        rr = r[:-1].reshape(ny, nx)
+        zz = np.empty((ny, nx))
+        for j, lu in enumerate(self.blocks):
+            zz[j] = sla.lu_solve(lu, rr[j], check_finite=False)
+        z[:-1] += zz.ravel()
+        return z
+
+
+def interpolate_pressure(grid_from, p, grid_to) -> np.ndarray:
+    """Interior pressures of ``grid_from`` carried to the interior nodes of ``grid_to`` (bilinear)."""
+    from scipy.interpolate import RegularGridInterpolator
+
+    f = RegularGridInterpolator((grid_from.y, grid_from.x), grid_from.full(p), bounds_error=False, fill_value=0.0)
+    yy, xx = np.meshgrid(grid_to.y[1:-1], grid_to.x[1:-1], indexing="ij")
+    return f(np.stack([yy.ravel(), xx.ravel()], axis=1))
+
+
+def _row_blocks(film, A: NewtonMatrix) -> list:
+    """LU factors of the in-row blocks of the Newton matrix ``A`` (uniform grid, FFT elasticity)."""
     g = film.grid
-    nxf, nyf = g.x.size, g.y.size
-    n = film.n
-    offs = [(di, dj) for dj in range(-near, near + 1) for di in range(-near, near + 1)]
-    kval = np.array([film.conv.coefficient(di, dj) for di, dj in offs])
-    rows, cols, vals = [], [], []
-    jf, i_f = np.divmod(np.arange(nxf * nyf), nxf)  # full-node (J, I)
-    for s in range(N_SLOTS):
-        ch = film.colh[:, s]
-        ok = ch >= 0
-        w = -A.db * A.Sh[:, s]
-        for (di, dj), kv in zip(offs, kval):
-            I = i_f[ch] + di
-            J = jf[ch] + dj
-            inside = ok & (I >= 1) & (I <= nxf - 2) & (J >= 1) & (J <= nyf - 2)
-            r = np.flatnonzero(inside)
-            rows.append(r)
-            cols.append((J[inside] - 1) * g.nx + (I[inside] - 1))
-            vals.append(w[inside] * kv)
-        cp = film.colp[:, s]
-        okp = cp >= 0
-        r = np.flatnonzero(okp)
-        rows.append(r)
-        cols.append(cp[okp])
-        vals.append(-A.db[okp] * A.Sp[okp, s])
-    rows.append(np.arange(n))
-    cols.append(np.arange(n))
-    vals.append(A.da)
-    # h0 column and load row
-    hcol = -A.db * np.where(film.colh >= 0, A.Sh, 0.0).sum(axis=1)
-    rows += [np.arange(n), np.full(n, n)]
-    cols += [np.full(n, n), np.arange(n)]
-    vals += [hcol, film.area_w]
-    m = sp.coo_matrix((np.concatenate(vals), (np.concatenate(rows), np.concatenate(cols))), shape=(n + 1, n + 1))
-    return m.tocsc()
+    nx, ny, nxf = g.nx, g.ny, g.x.size
+    conv = film.conv
+    ii = np.arange(nx)
+    blocks = []
+    for j in range(ny):
+        rows = j * nx + ii
+        B = np.zeros((nx, nx))
+        for s in range(N_SLOTS):
+            ch = film.colh[rows, s]
+            ok = ch >= 0
+            if not np.any(ok):
+                continue
+            Jn, In = np.divmod(ch[ok], nxf)  # full-node indices of the slot's node
+            dj = Jn - (j + 1)
+            # K[(Jn, In), (j+1, i'+1)] = k(In - i' - 1, dj): Toeplitz along the row
+            di = In[:, None] - (ii[None, :] + 1)
+            kk = conv._offsets[conv.ny - 1 + dj[:, None], conv.nx - 1 + di]
+            B[np.flatnonzero(ok)] += A.Sh[rows[ok], s][:, None] * kk
+            cp = film.colp[rows, s]
+            inrow = (cp >= j * nx) & (cp < (j + 1) * nx)
+            B[np.flatnonzero(inrow), cp[inrow] - j * nx] += A.Sp[rows[inrow], s]
+        B *= -A.db[rows][:, None]
+        B[ii, ii] += A.da[rows]
+        blocks.append(sla.lu_factor(B, check_finite=False))
+    return blocks
