@@ -42,7 +42,9 @@ from transient.models.roller.film import EHLFilm, interpolate_state, solve_stead
 from transient.models.roller.geometry import TaperedRoller
 from transient.models.roller.grid import TensorGrid, clustered_axis
 from transient.models.roller.krylov import DenseLU, NewtonKrylov, NewtonMatrix, TwoLevel
-from transient.models.roller.results import EHLConvergenceError, RollerSteady
+from transient.models.roller.line_contact import _load_ratio
+from transient.models.roller.results import EHLConvergenceError, RollerSteady, RollerTransient
+from transient.models.roller.transient import SqueezeDAE, integrate
 from transient.physics.line_formulas import dowson_toyoda_central
 from transient.physics.rheology import DOWSON_HIGGINSON_PARK, Rheology
 from transient.solvers.newton import NewtonError
@@ -275,11 +277,13 @@ class RollerContact:
         return np.append(p, max(hc - h_here[j0, i0], 0.5 * hc - h_here.min()))
 
     # -- steady ---------------------------------------------------------------------------------------
-    def steady(self, tol: float = 1e-8, max_iter: int = 60, raise_on_failure: bool = True) -> RollerSteady:
+    def steady(self, tol: float = 1e-8, max_iter: int = 60, raise_on_failure: bool = True,
+               penalty: float | None = None) -> RollerSteady:
         """Steady EHL film (module docstring). The coarsest level starts from the dry pressure with
         pseudo-transient continuation (backward-Euler steps of the squeeze-film transient, first step
         0.3 c/u) and is solved to ``sqrt(tol)``; finer levels start from the interpolated coarser
-        solution with plain Newton (pseudo-transient if that fails). Raises
+        solution with plain Newton (pseudo-transient if that fails). ``penalty``: None for the exact
+        complementarity (Fischer-Burmeister), or the penalty factor (the transient's ``GAMMA`` gives its limit). Raises
         :class:`EHLConvergenceError` with the non-converged result (``success=False``, residual history)
         unless ``raise_on_failure=False``."""
         t0 = time.perf_counter()
@@ -290,6 +294,7 @@ class RollerContact:
             last = k == len(specs) - 1
             g = grid if last else self.make_grid(*spec)
             film = self.film_problem(g, "fft" if spec[0] == "uniform" else "dense")
+            film.penalty = None if penalty is None else check_range("penalty", penalty, "-", 1.0, 1e12)
             if k == 0:
                 coarse = film
             u0 = self.initial_guess(film) if k == 0 else interpolate_state(g_prev, u, g)
@@ -324,6 +329,60 @@ class RollerContact:
         if not ok and raise_on_failure:
             raise EHLConvergenceError(msg, res)
         return res
+
+    # -- transient --------------------------------------------------------------------------------------
+    @property
+    def time_scale(self) -> float:
+        """Time unit of the scaled transient, the transit time ``c/u`` [s]."""
+        return self.dry().half_width / self.speed
+
+    def transient(self, t_end: float, load=None, start="dry", rtol: float = 1e-4, n_out: int = 51,
+                  initial_film: float | None = None, ramp_time: float | None = None) -> RollerTransient:
+        """Transient EHL by IDA (:mod:`transient.models.roller.transient`) on this contact's grid
+        (dense elasticity: use a coarse clustered grid, docs/ehl.md gives the cost) over ``[0, t_end]`` [s].
+
+        ``load``: None (constant), a number [N] (a step from the starting load smoothed over
+        ``ramp_time``, default one transit time c/u) or a function of t [s] -> N. ``start``: ``"dry"``
+        -- the dry pressure with the film at the mid-plane centre lifted to ``initial_film`` [m] (default
+        half the Dowson-Toyoda central film of the mid-plane) -- or a :class:`RollerSteady` of this
+        contact. The long-time limit is ``steady(penalty=GAMMA)`` (:data:`transient.models.roller.transient.GAMMA`).
+        """
+        t_end = check_positive("t_end", t_end, "s")
+        if self.grid_spec[0] == "uniform":
+            raise ValueError("transient needs a clustered grid (dense elasticity for IDA's dense Jacobian)")
+        film = self.film_problem(self.grid)
+        s = self.scales
+        w_start = self.load
+        if isinstance(start, RollerSteady):
+            y0 = np.array(start.state, float)
+            if y0.size != film.n + 1:
+                raise ValueError(f"start has {y0.size - 1} pressure nodes, this grid {film.n}")
+            w_start = float(film.area_w @ y0[:-1]) * self.load
+        elif start == "dry":
+            y0 = self.initial_guess(film)
+            g = film.grid
+            h = film.film(y0[:-1], 0.0).reshape(g.shape_full)
+            j0, i0 = int(np.argmin(np.abs(g.y))), int(np.argmin(np.abs(g.x)))
+            d = self.dry()
+            w_len = self.W / (d.footprint_length / self.roller.mean_radius)
+            hc = dowson_toyoda_central(self.U, self.G, w_len) * self.roller.mean_radius
+            h_init = 0.5 * hc if initial_film is None else check_positive("initial_film", initial_film, "m")
+            y0[-1] = h_init / s["film"] - h[j0, i0]
+        else:
+            raise ValueError(f"start = {start!r}: use 'dry' or a RollerSteady of this contact")
+        t_ref = self.time_scale
+        ratio = _load_ratio(load, self.load, w_start, t_ref, ramp_time)
+        dae = SqueezeDAE(film, s["lam"], ratio)
+        tau = np.linspace(0.0, t_end / t_ref, int(check_range("n_out", n_out, "-", 2, 1e6)))
+        sol, wall = integrate(dae, y0, tau, rtol, dt0=1e-3 * tau[1])
+        rows = [self.result(film, y, True, "", 0, [], 0.0) for y in sol.y]
+        last = rows[-1]
+        return RollerTransient(t=sol.t * t_ref, h_central=np.array([r.h_central for r in rows]),
+                               h_min=np.array([r.h_min for r in rows]), p_max=np.array([r.p_max for r in rows]),
+                               h0=sol.y[:, -1] * s["film"], load=np.array([ratio(t) for t in sol.t]) * self.load,
+                               x=last.x, y=last.y, pressure=last.pressure, film=last.film, success=sol.success,
+                               message=sol.message, n_steps=sol.stats.n_steps, n_jacobians=sol.stats.n_jac,
+                               wall_time=wall, final_state=sol.y[-1].copy(), final_time=float(sol.t[-1] * t_ref))
 
     def result(self, film: EHLFilm, u, ok, msg, iters, norms, wall, info=None) -> RollerSteady:
         s = self.scales

@@ -21,7 +21,7 @@ from __future__ import annotations
 import numpy as np
 
 from transient.models.roller.grid import TensorGrid
-from transient.models.roller.kernels import N_SLOTS, assemble_dense, fischer_burmeister, reynolds_kernel
+from transient.models.roller.kernels import N_SLOTS, assemble_dense, fischer_burmeister, penalty, reynolds_kernel
 from transient.physics.elasticity import SurfaceConvolution, line_influence, surface_influence
 from transient.physics.rheology import Rheology
 from transient.solvers.newton import newton
@@ -101,6 +101,8 @@ class EHLFilm:
         self.phi = np.empty(self.n)
         self._p_full = np.zeros(grid.shape_full)
         self.row_scale = np.ones(self.n)
+        #: complementarity form: None for Fischer-Burmeister, else the penalty factor gamma (the transient's)
+        self.penalty = None
 
     # -- elasticity ------------------------------------------------------------------------------
     def influence_matrix(self) -> np.ndarray:
@@ -162,7 +164,10 @@ class EHLFilm:
         """Scale each Reynolds row by ``1/d_i``, ``d_i`` the magnitude of its Poiseuille diagonal plus
         ``lam Rs`` at ``u``, so that ``-F_i/d_i`` is a pressure-like quantity comparable with ``p_i`` in
         the Fischer-Burmeister pair and in the Newton merit function. A positive row scaling does not
-        change the complementarity solution."""
+        change the complementarity solution; the penalty form is not invariant, so there the scale is 1."""
+        if self.penalty is not None:
+            self.row_scale = np.ones(self.n)
+            return
         p, h0 = u[:-1], u[-1]
         self.reynolds(p, self.film(p, h0))
         g = self.grid
@@ -181,12 +186,20 @@ class EHLFilm:
                   + 0.5 * (cols[1:-1] + cols[:-2]) / np.diff(y)[:-1, None]) / dyc
         self.row_scale = 1.0 / np.abs(d.ravel())
 
+    def complementarity(self, p, b, out) -> None:
+        """``out = phi(p, b)`` and its derivatives into ``fb_a``, ``fb_b``: Fischer-Burmeister, or the
+        penalty form when ``self.penalty`` is set (:mod:`transient.models.roller.kernels`)."""
+        if self.penalty is None:
+            fischer_burmeister(p, b, out, self.fb_a, self.fb_b)
+        else:
+            penalty(p, b, out, self.fb_a, self.fb_b, self.penalty)
+
     def residual(self, u) -> np.ndarray:
         """``[phi(p, -F/d); (sum A p - W)/W]`` at ``u = [p, h0]`` (``1/d``: :meth:`set_row_scale`)."""
         p, h0 = u[:-1], u[-1]
         F = self.reynolds(p, self.film(p, h0))
         out = np.empty(self.n + 1)
-        fischer_burmeister(p, -F * self.row_scale, out[:-1], self.fb_a, self.fb_b)
+        self.complementarity(p, -F * self.row_scale, out[:-1])
         out[-1] = self.area_w @ p - 1.0
         return out
 
@@ -207,7 +220,7 @@ class EHLFilm:
         F = self.reynolds(p, h, jac=True)
         if shift:
             self.add_storage(p, h, shift)
-        fischer_burmeister(p, -F * self.row_scale, self.phi, self.fb_a, self.fb_b)
+        self.complementarity(p, -F * self.row_scale, self.phi)
         J = np.empty((self.n + 1, self.n + 1))
         K = self.K if self.elastic == "dense" else np.zeros((1, 1))
         assemble_dense(self.Sp, self.Sh, self.colp, self.colh, K, self.elastic == "dense", self.fb_a,

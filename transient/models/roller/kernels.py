@@ -22,7 +22,8 @@ node films). The full Jacobian is ``Sp + Sh dh/dp`` with ``dh/dp`` the elastic i
 
 Reynolds exit condition (P = dP/dn = 0 at the free boundary) as the complementarity problem
 ``p >= 0, -F >= 0, p F = 0``, written as the Fischer-Burmeister equation
-``phi(p, -F) = p - F - sqrt(p^2 + F^2) = 0`` and solved by a semismooth Newton.
+``phi(p, -F) = p - F - sqrt(p^2 + F^2) = 0`` and solved by a semismooth Newton, or (the transient) in
+penalty form ``-F + gamma min(p, 0) = 0`` (smoothed), whose error is O(1/gamma).
 """
 
 from __future__ import annotations
@@ -166,6 +167,20 @@ def fischer_burmeister(a, b, phi, da, db):
         else:
             da[k] = 1.0 - 1.0 / math.sqrt(2.0)
             db[k] = da[k]
+
+
+@njit(cache=True, error_model="numpy")
+def penalty(a, b, phi, da, db, gamma):
+    """Penalty form of the complementarity ``a >= 0, b >= 0, a b = 0``: ``phi = b + gamma q(a)`` with
+    ``q(a) = (a - sqrt(a^2 + d^2))/2`` (``min(a, 0)`` rounded over ``|a| < d = 1e-10``; a larger ``d``
+    puts a spurious source ``gamma d^2 / (4 a)`` into the low-pressure inlet): where ``b > 0`` the
+    solution has ``a ~ -b/gamma`` (slightly negative), where ``a > 0`` it has ``b ~ 0``."""
+    d2 = 1e-20
+    for k in range(a.size):
+        r = math.sqrt(a[k] * a[k] + d2)
+        phi[k] = b[k] + 0.5 * gamma * (a[k] - r)
+        da[k] = 0.5 * gamma * (1.0 - a[k] / r)
+        db[k] = 1.0
 
 
 @njit(cache=True, error_model="numpy")

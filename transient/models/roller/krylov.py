@@ -25,7 +25,7 @@ import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 from numba import njit
 
-from transient.models.roller.kernels import N_SLOTS, fischer_burmeister
+from transient.models.roller.kernels import N_SLOTS
 
 
 @njit(cache=True)
@@ -56,7 +56,7 @@ class NewtonMatrix(spla.LinearOperator):
         F = film.reynolds(p, h, jac=True)
         if shift:
             film.add_storage(p, h, shift)
-        fischer_burmeister(p, -F * film.row_scale, film.phi, film.fb_a, film.fb_b)
+        film.complementarity(p, -F * film.row_scale, film.phi)
         self.Sp, self.Sh = film.Sp.copy(), film.Sh.copy()
         self.da = film.fb_a.copy()
         self.db = film.fb_b * film.row_scale

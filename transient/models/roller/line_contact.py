@@ -27,7 +27,8 @@ from transient.checks import check_positive, check_range
 from transient.models.roller.film import EHLFilm, interpolate_state, solve_steady
 from transient.models.roller.grid import TensorGrid
 from transient.models.roller.dry import edge_positions, polonsky_keer
-from transient.models.roller.results import EHLConvergenceError, LineDry, LineSteady
+from transient.models.roller.results import EHLConvergenceError, LineDry, LineSteady, LineTransient
+from transient.models.roller.transient import SqueezeDAE, integrate
 from transient.physics.elasticity import line_influence
 from transient.physics.line_formulas import dowson_toyoda_central, hertz_line, line_groups, martin_min
 from transient.physics.rheology import DOWSON_HIGGINSON_PARK, Rheology
@@ -172,13 +173,16 @@ class LineContact:
                        iterations=it)
 
     # -- solves --------------------------------------------------------------------------------------
-    def steady(self, initial=None, tol: float = 1e-9, max_iter: int = 60, raise_on_failure: bool = True) -> LineSteady:
+    def steady(self, initial=None, tol: float = 1e-9, max_iter: int = 60, raise_on_failure: bool = True,
+               penalty: float | None = None) -> LineSteady:
         """Steady film by nested iteration: Newton on the complementarity system on :meth:`levels`,
         each level started from the coarser solution, the coarsest from :meth:`initial_guess`; where
         Newton with line search fails, the level is redone with pseudo-transient continuation
         (backward-Euler steps of the squeeze-film transient, first step 0.3 b/u, then 0.03 b/u on the
         coarsest level): line search is the more robust at high speed, pseudo-time at high load.
-        ``initial``: a previous :class:`LineSteady` on the same grid to start from instead. Raises
+        ``initial``: a previous :class:`LineSteady` on the same grid to start from instead. ``penalty``:
+        None for the exact complementarity (Fischer-Burmeister), or the penalty factor of the penalty
+        form (the transient's ``GAMMA`` gives its limit). Raises
         :class:`EHLConvergenceError` (its ``result`` flagged ``success=False`` with the residual
         history) if Newton fails, unless ``raise_on_failure=False``."""
         t0 = time.perf_counter()
@@ -186,6 +190,7 @@ class LineContact:
         u, grid_prev, iters, norms, ok, msg = None, None, 0, [], True, ""
         for k, grid in enumerate(levels):
             film = self.film_problem(grid)
+            film.penalty = None if penalty is None else check_range("penalty", penalty, "-", 1.0, 1e12)
             if k == 0:
                 u0 = initial.state if initial is not None else self.initial_guess(film)
             else:
@@ -211,6 +216,57 @@ class LineContact:
             raise EHLConvergenceError(msg, res)
         return res
 
+    # -- transient -----------------------------------------------------------------------------------
+    @property
+    def time_scale(self) -> float:
+        """Time unit of the scaled transient, the transit time ``b/u`` [s]."""
+        return self.b / self.speed
+
+    def transient(self, t_end: float, load=None, start="dry", rtol: float = 1e-4, n_out: int = 101,
+                  initial_film: float | None = None, ramp_time: float | None = None) -> LineTransient:
+        """Transient film by IDA (:mod:`transient.models.roller.transient`) over ``[0, t_end]`` [s].
+
+        ``load``: None (constant, the contact's load), a number [N/m] (a step from the starting load,
+        smoothed over ``ramp_time``, default one transit time b/u) or a function of t [s] -> N/m.
+        ``start``: ``"dry"`` -- the dry (Hertz) pressure with the film lifted to ``initial_film`` [m] at
+        x = 0 (default half the Dowson-Toyoda central film) -- or a :class:`LineSteady` on this grid.
+        The exit condition is in penalty form (:data:`transient.models.roller.transient.GAMMA`): the
+        long-time limit is ``steady(penalty=GAMMA)``.
+        """
+        t_end = check_positive("t_end", t_end, "s")
+        film = self.film_problem()
+        w_start = self.load_per_length
+        if start == "dry":
+            xi = self.grid.x[1:-1]
+            p = np.sqrt(np.clip(1.0 - xi * xi, 0.0, None))
+            hc = dowson_toyoda_central(self.U, self.G, self.W) * self.radius
+            h_init = 0.5 * hc if initial_film is None else check_positive("initial_film", initial_film, "m")
+            h0 = h_init / self.film_scale - float(np.interp(0.0, self.grid.x, film.film(p, 0.0)))
+            y0 = np.append(p, h0)
+        elif isinstance(start, LineSteady):
+            y0 = np.array(start.state, float)
+            if y0.size != self.grid.n + 1:
+                raise ValueError(f"start has {y0.size - 1} pressure nodes, this grid {self.grid.n}")
+            w_start = float(np.trapezoid(start.pressure, start.x))
+        else:
+            raise ValueError(f"start = {start!r}: use 'dry' or a LineSteady of this contact")
+        return self._transient(film, y0, self.lam, self.time_scale, self.load_per_length, w_start, t_end, load, rtol,
+                               n_out, ramp_time)
+
+    def _transient(self, film, y0, kappa, t_ref, w_ref, w_start, t_end, load, rtol, n_out, ramp_time):
+        ratio = _load_ratio(load, w_ref, w_start, t_ref, ramp_time)
+        dae = SqueezeDAE(film, kappa, ratio)
+        tau = np.linspace(0.0, t_end / t_ref, int(check_range("n_out", n_out, "-", 2, 1e6)))
+        sol, wall = integrate(dae, y0, tau, rtol, dt0=1e-3 * tau[1])
+        rows = [self._result(film, y, True, "", 0, [], 0.0) for y in sol.y]
+        last = rows[-1]
+        return LineTransient(t=sol.t * t_ref, h_central=np.array([r.h_central for r in rows]),
+                             h_min=np.array([r.h_min for r in rows]), p_max=np.array([r.p_max for r in rows]),
+                             h0=sol.y[:, -1] * self.film_scale, load=np.array([ratio(t) for t in sol.t]) * w_ref,
+                             x=last.x, pressure=last.pressure, film=last.film, success=sol.success,
+                             message=sol.message, n_steps=sol.stats.n_steps, n_jacobians=sol.stats.n_jac,
+                             wall_time=wall, final_state=sol.y[-1].copy(), final_time=float(sol.t[-1] * t_ref))
+
     def _result(self, film, u, ok, msg, iterations, norms, wall) -> LineSteady:
         p, h0 = u[:-1], u[-1]
         x = film.grid.x * self.b
@@ -223,3 +279,39 @@ class LineContact:
                           hertz_half_width=self.b, hertz_pressure=self.p_h, success=ok, message=msg,
                           iterations=int(iterations), wall_time=wall, residual_norms=list(map(float, norms)),
                           state=np.array(u, dtype=float))
+
+
+def _load_ratio(load, w_ref, w_start, t_ref, ramp_time):
+    """``W(t)/W_ref`` as a function of scaled time: constant, a smoothed step, or the user's function."""
+    if load is None:
+        return lambda tau: w_start / w_ref
+    if callable(load):
+        return lambda tau: float(load(tau * t_ref)) / w_ref
+    w_end = check_positive("load", load, "N/m or N")
+    t_ramp = (1.0 if ramp_time is None else check_positive("ramp_time", ramp_time, "s") / t_ref)
+
+    def ratio(tau):
+        s = min(max(tau / t_ramp, 0.0), 1.0)
+        return (w_start + (w_end - w_start) * s * s * (3.0 - 2.0 * s)) / w_ref
+
+    return ratio
+
+
+def rigid_squeeze(radius, load_per_length, viscosity, h0_start, t_end, grid: int = 401, half_width: float = 10.0,
+                  rtol: float = 1e-6, n_out: int = 51) -> LineTransient:
+    """Pure squeeze of a rigid cylinder on a plane (no rolling, isoviscous, incompressible) under a
+    constant load, from the gap ``h0_start`` [m] at rest, by the same DAE and IDA (the closed form is
+    :func:`transient.verification.ehl_reference.squeeze_film_history`). Domain ``|x| <= half_width b``
+    with the length unit ``b = sqrt(2 R h0_start)`` (the Hertz half-width of a fictitious modulus
+    ``4 w/(pi h0_start)``: lengths, pressure and time are only scaled by it); time unit
+    ``12 eta0 R^2 / (b^2 p_h)``."""
+    h0_start = check_positive("h0_start", h0_start, "m")
+    w = check_positive("load_per_length", load_per_length, "N/m")
+    lc = LineContact(radius, w, 1.0, viscosity, 0.0, 4.0 * w / (math.pi * h0_start), density="incompressible",
+                     viscosity_law="isoviscous", grid=grid, domain=(-half_width, half_width), elastic=False)
+    film = lc.film_problem()
+    film.lam = 0.0
+    t_ref = 12.0 * viscosity * radius ** 2 / (lc.b ** 2 * lc.p_h)
+    y0 = np.append(np.zeros(lc.grid.n), h0_start / lc.film_scale)
+    return lc._transient(film, y0, 1.0, t_ref, lc.load_per_length, lc.load_per_length,
+                         check_positive("t_end", t_end, "s"), None, rtol, n_out, None)

@@ -181,3 +181,26 @@ def _row(coord, field2d, at):
     j = int(np.clip(np.searchsorted(coord, at), 1, coord.size - 1))
     w = (at - coord[j - 1]) / (coord[j] - coord[j - 1])
     return (1.0 - w) * field2d[j - 1] + w * field2d[j]
+
+
+@result_type
+class RollerTransient(Result):
+    """Transient of the roller contact (IDA): series at the output times ``t``, final fields."""
+
+    t: np.ndarray = quantity("s")
+    h_central: np.ndarray = quantity("m")
+    h_min: np.ndarray = quantity("m")
+    p_max: np.ndarray = quantity("Pa")
+    h0: np.ndarray = quantity("m")
+    load: np.ndarray = quantity("N")
+    x: np.ndarray = quantity("m")
+    y: np.ndarray = quantity("m")
+    pressure: np.ndarray = quantity("Pa")
+    film: np.ndarray = quantity("m")
+    success: bool = True
+    message: str = ""
+    n_steps: int = 0
+    n_jacobians: int = 0
+    wall_time: float = quantity("s", 0.0)
+    final_state: np.ndarray = quantity("-", default_factory=lambda: np.zeros(0))
+    final_time: float = quantity("s", 0.0)
