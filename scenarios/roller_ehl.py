@@ -30,35 +30,41 @@ def solve_all(grid):
     out = {}
     for tilt in park.TILTS_DEG:
         roller = TaperedRoller(**park.ROLLER, tilt_deg=tilt)
-        contact = RollerContact.from_dimensionless(**park.DIMENSIONLESS, roller=roller, speed=park.SPEED, grid=grid)
+        contact = RollerContact.from_dimensionless(**park.DIMENSIONLESS, roller=roller, speed=park.SPEED,
+                                                   grid=grid)
         t0 = time.perf_counter()
         out[tilt] = contact.steady()
+        d = contact.dry()
         print(f"tilt {tilt:+.3f} deg: {out[tilt].message} in {time.perf_counter() - t0:.1f} s "
-              f"(dry c = {contact.dry().half_width * 1e6:.1f} um, d = {contact.dry().footprint_length * 1e3:.3f} mm)")
+              f"(dry c = {d.half_width * 1e6:.1f} um, d = {d.footprint_length * 1e3:.3f} mm)")
     return out
 
 
 def statements(res) -> dict:
-    """The paper's statements, each with the numbers that decide it (sections at Y = -+0.7 as Figs. 7-10)."""
+    """The paper's statements, each with the numbers that decide it (sections at Y = -+0.7: Figs. 7-10)."""
     s0, yd = res[0.0], park.ROLLER["profile_start"]
     sec = {e: midplane_features(s0, at=y) for e, y in (("small", -yd), ("large", yd))}
     ends0, eff = end_features(s0), tilt_effects(res, yd)
-    tr = {t: transverse_features(r) for t, r in res.items()}
-    return {
-        "spike": dict(holds=all(v["spike"] for v in sec.values()), **{e: v["spike_over_centre"] for e, v in sec.items()}),
+    tr = {f"{t:+.3f} {e}": v for t, r in res.items() for e, v in transverse_features(r).items()}
+    out = {
+        "spike": dict(holds=all(v["spike"] for v in sec.values()),
+                      **{e: v["spike_over_centre"] for e, v in sec.items()}),
         "flat_central_film": dict(holds=all(v["central_film_variation"] < 0.05 for v in sec.values()),
                                   **{e: v["central_film_variation"] for e, v in sec.items()}),
-        "outlet_constriction": dict(holds=all(v["h_min"] < 0.95 * v["h_central"] and v["x_of_h_min"] > 0 for v in sec.values()),
+        "outlet_constriction": dict(holds=all(v["h_min"] < 0.95 * v["h_central"] and v["x_of_h_min"] > 0
+                                              for v in sec.values()),
                                     **{e: v["h_min"] / v["h_central"] for e, v in sec.items()}),
         "small_end_more_affected": dict(holds=eff["small_section_p_max_change"] > eff["large_section_p_max_change"]
                                         and eff["small_end_h_min_change"] > eff["large_end_h_min_change"], **eff),
-        "pressure_more_affected_than_film": dict(holds=all(eff[f"{e}_section_p_max_change"] > eff[f"{e}_section_h_at_x0_change"]
-                                                           for e in ("small", "large")), **eff),
-        "transverse_peak_inboard_of_min_film": dict(holds=all(v["peak_inboard"] for t in tr for v in tr[t].values()),
-                                                    **{f"tilt {t:+.3f} {e}": v for t in tr for e, v in tr[t].items()}),
+        "pressure_more_affected_than_film": dict(holds=all(
+            eff[f"{e}_section_p_max_change"] > eff[f"{e}_section_h_at_x0_change"] for e in ("small", "large")), **eff),
+        "transverse_peak_inboard_of_min_film": dict(holds=all(v["peak_inboard"] for v in tr.values()), **tr),
         "untilted_max_pressure_and_min_film_at_small_end": dict(
-            holds=ends0["small"]["p_max"] > ends0["large"]["p_max"] and ends0["small"]["h_min"] < ends0["large"]["h_min"], **ends0),
+            holds=ends0["small"]["p_max"] > ends0["large"]["p_max"]
+            and ends0["small"]["h_min"] < ends0["large"]["h_min"],
+            **ends0),
     }
+    return out
 
 
 def save(fig, out, name):
@@ -75,22 +81,24 @@ def main(argv=None):
     grid = ("clustered", 62, 45) if args.quick else "paper"
     res = solve_all(grid)
     lab = {t: f"φ = {t:+.3f}°" for t in res}
-    for fig_no, tilt in ((3, 0.002), (5, -0.002)):
-        save(plots.maps(res[tilt], "pressure", f"Fig. {fig_no}: pressure, {lab[tilt]}"), args.out, f"fig{fig_no}_pressure.png")
-        save(plots.maps(res[tilt], "film", f"Fig. {fig_no + 1}: film, {lab[tilt]}"), args.out, f"fig{fig_no + 1}_film.png")
-    save(plots.maps(res[0.0], "pressure", "no tilt: pressure"), args.out, "fig_untilted_pressure.png")
     named = {lab[t]: res[t] for t in res}
-    rm = park.MEAN_RADIUS
-    save(plots.rolling_sections(named, -0.7 * rm, "Fig. 7: rolling direction at Y = -0.7 (small end)"), args.out, "fig7_section_small_end.png")
-    save(plots.rolling_sections(named, 0.7 * rm, "Fig. 8: rolling direction at Y = +0.7 (large end)"), args.out, "fig8_section_large_end.png")
-    save(plots.rolling_sections(named, 0.0, "rolling direction at Y = 0 (mid-plane)"), args.out, "fig_section_midplane.png")
-    save(plots.transverse_sections(named, "small", 0.0, "Fig. 9: along X = 0 near the small end"), args.out, "fig9_transverse_small_end.png")
-    save(plots.transverse_sections(named, "large", 0.0, "Fig. 10: along X = 0 near the large end"), args.out, "fig10_transverse_large_end.png")
+    rm, out = park.MEAN_RADIUS, args.out
+    for no, tilt in ((3, 0.002), (5, -0.002)):
+        save(plots.maps(res[tilt], "pressure", f"Fig. {no}: pressure, {lab[tilt]}"), out, f"fig{no}_pressure.png")
+        save(plots.maps(res[tilt], "film", f"Fig. {no + 1}: film, {lab[tilt]}"), out, f"fig{no + 1}_film.png")
+    save(plots.maps(res[0.0], "pressure", "no tilt: pressure"), out, "fig_untilted_pressure.png")
+    for name, y, title in (("fig7_section_small_end", -0.7, "Fig. 7: rolling direction at Y = -0.7 (small end)"),
+                           ("fig8_section_large_end", 0.7, "Fig. 8: rolling direction at Y = +0.7 (large end)"),
+                           ("fig_section_midplane", 0.0, "rolling direction at Y = 0 (mid-plane)")):
+        save(plots.rolling_sections(named, y * rm, title), out, name + ".png")
+    for no, end in ((9, "small"), (10, "large")):
+        save(plots.transverse_sections(named, end, 0.0, f"Fig. {no}: along X = 0 near the {end} end"), out,
+             f"fig{no}_transverse_{end}_end.png")
     st = statements(res)
     summary = {f"{t:+.3f}": dict(r.summary(), H_central=r.h_central / rm, H_min=r.h_min / rm, P_max=r.p_max / r.modulus,
                                  ends=end_features(r), midplane=midplane_features(r)) for t, r in res.items()}
-    with open(os.path.join(args.out, "roller_ehl.json"), "w") as fh:
-        json.dump({"grid": list(grid) if not isinstance(grid, str) else grid, "results": summary, "statements": st}, fh, indent=1, default=float)
+    with open(os.path.join(out, "roller_ehl.json"), "w") as fh:
+        json.dump({"grid": grid, "results": summary, "statements": st}, fh, indent=1, default=float)
     for name, v in st.items():
         print(f"{name}: {'reproduced' if v['holds'] else 'NOT reproduced'}")
     return res

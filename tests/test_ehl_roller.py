@@ -1,8 +1,6 @@
 """Seed 001, finite line contact: dry footprint against Hertz, exact symmetries of the steady EHL
 solution, the mid-plane against the line contact, load balance, Jacobian, DC-FFT, bad input."""
 
-import math
-
 import numpy as np
 import pytest
 

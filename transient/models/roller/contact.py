@@ -31,7 +31,7 @@ from __future__ import annotations
 
 import math
 import time
-from functools import cached_property
+from functools import cached_property, partial
 
 import numpy as np
 from scipy.interpolate import RegularGridInterpolator
@@ -54,6 +54,10 @@ PAPER_GRID = (94, 45)
 
 def _dense_lu(film, u, shift):
     return DenseLU(film.jacobian(u, shift))
+
+
+def _two_level(coarse, film, u, shift):
+    return TwoLevel(film, coarse, u, shift, NewtonMatrix(film, u, shift))
 
 #: above this many unknowns the dense path solves its linear systems by GMRES + a reused LU
 KRYLOV_ABOVE = 600
@@ -217,16 +221,17 @@ class RollerContact:
         if across < 8:
             raise ValueError(f"grid nx = {g.x.size} puts {across} nodes across the dry contact width 2c; allowed: >= 8")
         if along < 16:
-            raise ValueError(f"grid ny = {g.y.size} puts {along} nodes along the dry footprint length d; allowed: >= 16")
+            raise ValueError(f"grid ny = {g.y.size} puts {along} nodes along the dry footprint length d; "
+                             "allowed: >= 16")
         yd = self.roller.y_d / s["B"]
         for name, side, end in (("small", -1.0, -s["y_lo"]), ("large", 1.0, s["y_hi"])):
             ys = side * g.y
             n_end = np.count_nonzero((ys >= yd) & (ys <= end))
             if end > yd and n_end < 2:
                 dy = np.diff(g.y)[min(int(np.argmin(np.abs(ys - yd))), g.y.size - 2)]
-                raise ValueError(f"grid ny = {g.y.size} puts {n_end} node(s) on the profiled part of the footprint at the "
-                                 f"{name} end ({end - yd:.2f} c long; node spacing there {dy:.2f} c); allowed: >= 2 "
-                                 "(refine y or use a clustered grid)")
+                raise ValueError(f"grid ny = {g.y.size} puts {n_end} node(s) on the profiled part of the footprint "
+                                 f"at the {name} end ({end - yd:.2f} c long; node spacing there {dy:.2f} c); "
+                                 "allowed: >= 2 (refine y or use a clustered grid)")
 
     def levels(self) -> list[tuple[str, int, int]]:
         """Grid specifications of the nested iteration, coarse to fine. Clustered grids: the x node count
@@ -301,8 +306,7 @@ class RollerContact:
             attempts = [0.3] if k == 0 else [None, 0.3]
             for pseudo in attempts:
                 if spec[0] == "uniform":
-                    jac = NewtonKrylov(film, lambda f, v, shift, c=coarse: TwoLevel(f, c, v, shift, NewtonMatrix(f, v, shift)),
-                                       restart=80, max_iter=400, refresh_after=60)
+                    jac = NewtonKrylov(film, partial(_two_level, coarse), restart=80, max_iter=400, refresh_after=60)
                 else:
                     jac = NewtonKrylov(film, _dense_lu) if film.n > KRYLOV_ABOVE else None
                 try:
@@ -400,6 +404,7 @@ class RollerContact:
                             x_of_h_min=float(x[ih + 1]), y_of_h_min=float(y[jh + 1]), p_max=float(P[jp, ip]),
                             x_of_p_max=float(x[ip]), y_of_p_max=float(y[jp]), load_error=float(film.area_w @ p - 1.0),
                             mean_radius=rm, modulus=self.modulus, half_width=s["B"] * rm,
-                            footprint_length=s["d"] * s["B"] * rm, profile_start=self.roller.profile_start, success=ok, message=msg, iterations=int(iters),
+                            footprint_length=s["d"] * s["B"] * rm, profile_start=self.roller.profile_start,
+                            success=ok, message=msg, iterations=int(iters),
                             wall_time=wall, residual_norms=list(map(float, norms)), state=np.array(u, float),
                             solver_info=info or {})

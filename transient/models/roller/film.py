@@ -175,7 +175,8 @@ class EHLFilm:
         x = g.x
         dxc = g.dx[1:-1]
         rows = eps[1:-1] if g.two_d else eps
-        d = (0.5 * (rows[:, 1:-1] + rows[:, 2:]) / np.diff(x)[1:] + 0.5 * (rows[:, 1:-1] + rows[:, :-2]) / np.diff(x)[:-1]) / dxc
+        d = (0.5 * (rows[:, 1:-1] + rows[:, 2:]) / np.diff(x)[1:]
+             + 0.5 * (rows[:, 1:-1] + rows[:, :-2]) / np.diff(x)[:-1]) / dxc
         rs = self.rs[1:-1] if g.two_d else self.rs
         d = d + self.lam * rs[:, None]
         if g.two_d:

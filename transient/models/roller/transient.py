@@ -97,7 +97,8 @@ class SqueezeDAE:
             return J.copy()
 
         def converged(y, r, dy):
-            return float(np.max(np.abs(r))) <= 1e-10 and float(np.max(np.abs(dy))) <= 1e-10 * max(1.0, float(np.max(np.abs(y))))
+            scale = max(1.0, float(np.max(np.abs(y))))
+            return float(np.max(np.abs(r))) <= 1e-10 and float(np.max(np.abs(dy))) <= 1e-10 * scale
 
         guess = y0.copy()  # off the Fischer-Burmeister kink (p = 0 and F = 0) where y0 has no pressure
         guess[:-1] = np.maximum(guess[:-1], 1e-3 * max(1.0, float(np.max(y0[:-1]))))
