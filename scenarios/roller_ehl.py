@@ -46,18 +46,22 @@ def statements(res) -> dict:
     sec = {e: midplane_features(s0, at=y) for e, y in (("small", -yd), ("large", yd))}
     ends0, eff = end_features(s0), tilt_effects(res, yd)
     tr = {f"{t:+.3f} {e}": v for t, r in res.items() for e, v in transverse_features(r).items()}
+    spikes = {f"{t:+.3f} Y={y / park.MEAN_RADIUS:+.1f}": midplane_features(r, at=y) for t, r in res.items()
+              for y in (-yd, 0.0, yd)}
     out = {
-        "spike": dict(holds=all(v["spike"] for v in sec.values()),
-                      **{e: v["spike_over_centre"] for e, v in sec.items()}),
+        "spike": dict(holds=all(v["spike"] for v in spikes.values()),
+                      **{k: v["spike_over_centre"] if v["spike"] else None for k, v in spikes.items()}),
         "flat_central_film": dict(holds=all(v["central_film_variation"] < 0.05 for v in sec.values()),
                                   **{e: v["central_film_variation"] for e, v in sec.items()}),
         "outlet_constriction": dict(holds=all(v["h_min"] < 0.95 * v["h_central"] and v["x_of_h_min"] > 0
                                               for v in sec.values()),
                                     **{e: v["h_min"] / v["h_central"] for e, v in sec.items()}),
-        "small_end_more_affected": dict(holds=eff["small_section_p_max_change"] > eff["large_section_p_max_change"]
-                                        and eff["small_end_h_min_change"] > eff["large_end_h_min_change"], **eff),
-        "pressure_more_affected_than_film": dict(holds=all(
-            eff[f"{e}_section_p_max_change"] > eff[f"{e}_section_h_at_x0_change"] for e in ("small", "large")), **eff),
+        "small_end_more_affected": dict(
+            holds=all(eff[f"small_{k}_change"] > eff[f"large_{k}_change"] for k in
+                      ("section_p_max", "end_p_max", "section_h_at_x0", "end_h_min")), **eff),
+        "pressure_more_affected_than_film": dict(
+            holds=all(eff[f"{e}_{p}_change"] > eff[f"{e}_{h}_change"] for e in ("small", "large")
+                      for p, h in (("section_p_max", "section_h_at_x0"), ("end_p_max", "end_h_min"))), **eff),
         "transverse_peak_inboard_of_min_film": dict(holds=all(v["peak_inboard"] for v in tr.values()), **tr),
         "untilted_max_pressure_and_min_film_at_small_end": dict(
             holds=ends0["small"]["p_max"] > ends0["large"]["p_max"]

@@ -23,7 +23,8 @@ def midplane_features(s, c: float | None = None, at: float = 0.0) -> dict:
     """Features of the rolling-direction section at ``y = at`` (default the mid-plane): film at ``x = 0``
     (``h_central``), minimum film and its position (outlet constriction), variation of the film over
     ``|x| <= c/2`` relative to ``h_central`` (flatness), and the spike -- the largest local pressure
-    maximum on the outlet side (``x > 0.3 c``) after a local minimum, i.e. a second peak (``spike_over_centre``:
+    maximum above half the section's maximum on the outlet side (``x > 0.3 c``) after a local minimum, i.e. a
+    second peak (``spike_over_centre``:
     its height over the pressure at ``x = 0``); ``c`` defaults to the result's ``half_width``."""
     c = s.half_width if c is None else c
     x, p, h = s.section_x(at)
@@ -32,7 +33,7 @@ def midplane_features(s, c: float | None = None, at: float = 0.0) -> dict:
     k = int(np.argmin(h[1:-1])) + 1
     out = dict(h_central=float(h[i0]), h_min=float(h[k]), x_of_h_min=float(x[k]),
                central_film_variation=float((h[core].max() - h[core].min()) / h[i0]), p_centre=float(p[i0]))
-    loc = np.flatnonzero((p[1:-1] > p[:-2]) & (p[1:-1] >= p[2:]) & (x[1:-1] > 0.3 * c)) + 1
+    loc = np.flatnonzero((p[1:-1] > p[:-2]) & (p[1:-1] >= p[2:]) & (x[1:-1] > 0.3 * c) & (p[1:-1] > 0.5 * p.max())) + 1
     dips = np.flatnonzero((p[1:-1] < p[:-2]) & (p[1:-1] <= p[2:])) + 1
     loc = [j for j in loc if np.any((dips < j) & (x[dips] > x[i0] - c))]
     if loc:
