@@ -61,6 +61,15 @@ def test_load_balance_and_positive_film(untapered):
     assert s.film[1:-1, 1:-1].min() > 0 and s.pressure.min() > -1e-9 * s.p_max
 
 
+def test_result_saves_and_loads_with_units(untapered, tmp_path):
+    from transient.results import load_result
+
+    s = untapered[1]
+    back = load_result(s.save(tmp_path / "steady"))
+    assert np.array_equal(back.pressure, s.pressure) and back.h_min == s.h_min
+    assert back.units()["film"] == "m" and back.units()["pressure"] == "Pa"
+
+
 def test_midplane_equals_line_contact_on_the_same_nodes(untapered):
     c, s = untapered
     x, p, h = s.section_x(0.0)

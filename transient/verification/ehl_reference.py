@@ -30,7 +30,7 @@ from scipy.optimize import brentq
 
 
 def _q(f, a, b):
-    return quad(f, a, b, epsabs=0.0, epsrel=1e-10, limit=400)[0]
+    return quad(f, a, b, epsabs=0.0, epsrel=1e-9, limit=400)[0]
 
 
 # Integrals are taken in gamma, x = s0 tan(gamma), s0 = sqrt(2 R h0): h = h0 sec^2(gamma) and
