@@ -1,0 +1,410 @@
+"""EHL of a tilted tapered roller: the finite line contact of Park (seed 001), steady.
+
+Dimensionless as in the paper (X, Y by R_m, ``P = p/E'``, ``H = h/R_m``, ``U_m = eta0 u/(E' R_m)``,
+``G = alpha E'``, ``W = w/(E' R_m^2)`` with w the total load), eqs. (1)-(6)::
+
+    d/dX(rho H^3/eta dP/dX) + d/dY(rho H^3/eta dP/dY) = 12 U_m Rs(Y) d(rho H)/dX            (1)
+    eta = exp(G P) (Barus) or Roelands; rho = 1 + 0.58 p/(1 + 1.68 p), p in GPa        (2), (3)
+    H = H0 + H_rigid(X, Y) + (2/pi) iint P/r dX'dY'   (geometry: TaperedRoller)          (4)
+    W = iint P dX dY                                                                     (5)
+    P = 0 on the boundary, P = dP/dn = 0 at the free exit boundary (complementarity)     (6)
+
+Domain (Park's Fig. 2): ``X`` from ``-5c`` to ``2.5c``, ``Y`` over ``+-0.55 d`` (widened to the dry
+footprint's ends plus 5 % of ``d`` if it is off-centre), with ``c`` (mid-plane half-width) and ``d``
+(length) of the dry elastostatic footprint (:mod:`transient.models.roller.dry`). Internally lengths are
+scaled by ``c``, pressure by ``p_h = E' c/(4 R_m)`` and the film by ``c^2/R_m``
+(:mod:`transient.models.roller.film`).
+
+Grids: ``"paper"`` -- 94 x 45 nodes (the paper's maximum), non-uniform: 60 % of the X nodes clustered on
+the inlet side of the contact (sech^2 density centred at -0.5 c, width 1.8 c: on the line contact this
+gives the central film within 0.7 % of its grid-converged value, the uniform 94-node grid 1.2 %), and in
+Y 30 % of the nodes on each profiled end; nodes on ``X = 0`` and ``Y = 0, +-Y_d``; elasticity by the
+dense influence matrix. ``("clustered", nx, ny)``: the same law with other node counts. ``(nx, ny)``:
+uniform, elasticity by DC-FFT and Newton-Krylov (:mod:`transient.models.roller.krylov`).
+
+Steady solve: nested iteration from the dry pressure on coarse grids to the requested one; Newton on the
+Fischer-Burmeister system with the dense matrix (small grids) or GMRES with a single-precision LU
+preconditioner kept across iterations (the paper grid) or a two-level preconditioner (uniform grids).
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from functools import cached_property, partial
+
+import numpy as np
+from scipy.interpolate import RegularGridInterpolator
+
+from transient.checks import check_positive, check_range
+from transient.models.roller.dry import DryContact, DrySolver, dry_contact
+from transient.models.roller.film import EHLFilm, interpolate_state, solve_steady
+from transient.models.roller.geometry import TaperedRoller
+from transient.models.roller.grid import TensorGrid, clustered_axis
+from transient.models.roller.krylov import DenseLU, NewtonKrylov, NewtonMatrix, TwoLevel
+from transient.models.roller.line_contact import _load_ratio
+from transient.models.roller.results import EHLConvergenceError, RollerSteady, RollerTransient
+from transient.models.roller.transient import SqueezeDAE, integrate
+from transient.physics.line_formulas import dowson_toyoda_central
+from transient.physics.rheology import DOWSON_HIGGINSON_PARK, Rheology
+from transient.solvers.newton import NewtonError
+
+PAPER_GRID = (94, 45)
+
+
+def _dense_lu(film, u, shift):
+    return DenseLU(film.jacobian(u, shift))
+
+
+def _two_level(coarse, film, u, shift):
+    return TwoLevel(film, coarse, u, shift, NewtonMatrix(film, u, shift))
+
+#: above this many unknowns the dense path solves its linear systems by GMRES + a reused LU
+KRYLOV_ABOVE = 600
+#: first level (and two-level coarse grid) of the uniform-grid solves
+COARSE = ("clustered", 47, 45)
+
+
+def _weights(length, clusters):
+    """sech^2 cluster weights giving each cluster ``(centre, width, fraction)`` that fraction of the nodes."""
+    total = sum(f for _, _, f in clusters)
+    return [(c, d, f * length / ((1.0 - total) * 2.0 * d)) for c, d, f in clusters]
+
+
+class RollerContact:
+    """Steady EHL of a tapered roller on a flat race, SI at the API (module docstring).
+
+    ``roller`` (:class:`TaperedRoller`), ``load`` [N] (total), ``speed`` [m/s] (mean entrainment speed at
+    the mid-plane), ``viscosity`` eta0 [Pa s], ``pressure_viscosity`` alpha [1/Pa], ``modulus`` E' [Pa],
+    ``density``, ``viscosity_law``, ``dh_constants`` as in :class:`~transient.physics.rheology.Rheology`;
+    ``grid``: ``"paper"``, ``("clustered", nx, ny)`` or ``(nx, ny)`` (uniform); ``domain``: (inlet,
+    outlet) in units of c and the half-length of the domain in units of d.
+    """
+
+    def __init__(self, roller: TaperedRoller, load, speed, viscosity, pressure_viscosity, modulus,
+                 density: str = "dowson-higginson", viscosity_law: str = "barus", grid="paper",
+                 domain=(-5.0, 2.5, 0.55), scheme: str = "upwind2", dh_constants=DOWSON_HIGGINSON_PARK):
+        if not isinstance(roller, TaperedRoller):
+            raise TypeError(f"roller must be a TaperedRoller, got {type(roller).__name__}")
+        self.roller = roller
+        self.load = check_positive("load", load, "N")
+        self.speed = check_positive("speed", speed, "m/s")
+        self.modulus = check_positive("modulus", modulus, "Pa")
+        self.rheology = Rheology(viscosity=check_positive("viscosity", viscosity, "Pa s"),
+                                 pressure_viscosity=pressure_viscosity, viscosity_law=viscosity_law, density=density,
+                                 dh_constants=tuple(dh_constants))
+        self.domain = (check_range("domain[0] (inlet)", domain[0], "c", -50.0, -1.5),
+                       check_range("domain[1] (outlet)", domain[1], "c", 1.2, 50.0),
+                       check_range("domain[2] (half-length)", domain[2], "d", 0.5, 2.0, low_open=True))
+        if scheme not in ("upwind2", "upwind1"):
+            raise ValueError(f"scheme = {scheme!r} is not one of ('upwind2', 'upwind1')")
+        self.scheme = scheme
+        self.grid_spec = self._parse_grid(grid)
+
+    @classmethod
+    def from_dimensionless(cls, U: float, G: float, W: float, modulus: float, roller: TaperedRoller,
+                           speed: float = 1.0, **kw) -> "RollerContact":
+        """The paper's dimensionless case: ``U = eta0 u/(E' R_m)``, ``G = alpha E'``, ``W = w/(E' R_m^2)``
+        (total load) with ``E' = modulus`` [Pa] and R_m from ``roller``; ``speed`` [m/s] fixes the SI
+        viscosity ``eta0 = U E' R_m / speed`` (only the product matters with Barus)."""
+        U = check_positive("U", U, "-")
+        G = check_range("G", G, "-", 0.0, 1e5)
+        W = check_positive("W", W, "-")
+        modulus = check_positive("modulus", modulus, "Pa")
+        rm = roller.mean_radius
+        return cls(roller, load=W * modulus * rm * rm, speed=speed, viscosity=U * modulus * rm / speed,
+                   pressure_viscosity=G / modulus, modulus=modulus, **kw)
+
+    @staticmethod
+    def _parse_grid(grid):
+        if isinstance(grid, str):
+            if grid != "paper":
+                raise ValueError(f"grid = {grid!r}: use 'paper', ('clustered', nx, ny) or (nx, ny)")
+            return ("clustered",) + PAPER_GRID
+        grid = tuple(grid)
+        if len(grid) == 3 and grid[0] == "clustered":
+            kind, nx, ny = grid
+        elif len(grid) == 2:
+            kind, (nx, ny) = "uniform", grid
+        else:
+            raise ValueError(f"grid = {grid!r}: use 'paper', ('clustered', nx, ny) or (nx, ny)")
+        nx = int(check_range("grid nx", nx, "nodes", 12, 4097))
+        ny = int(check_range("grid ny", ny, "nodes", 8, 4097))
+        return (kind, nx, ny)
+
+    # -- dimensionless groups and scales --------------------------------------------------------------
+    @property
+    def U(self) -> float:
+        return self.rheology.viscosity * self.speed / (self.modulus * self.roller.mean_radius)
+
+    @property
+    def G(self) -> float:
+        return self.rheology.pressure_viscosity * self.modulus
+
+    @property
+    def W(self) -> float:
+        return self.load / (self.modulus * self.roller.mean_radius ** 2)
+
+    def dry(self) -> DryContact:
+        """The dry (elastostatic) contact at the same load (cached): footprint c, d, pressure."""
+        return self._dry
+
+    @cached_property
+    def _dry(self) -> DryContact:
+        d = dry_contact(self.roller, self.load, self.modulus)
+        if d.half_width <= 0.0:
+            self._raise_open()
+        return d
+
+    def _raise_open(self):
+        """The tilt opens the contact at the mid-plane: raise naming the tilt and its allowed range."""
+        ro = self.roller
+
+        def closed(tilt):
+            solver = DrySolver(ro.with_tilt(tilt), self.W, coarse=(32, 192))
+            x, y, p, *_ = solver._solve_on(4.0 * math.sqrt(8.0 * self.W / (2 * max(ro.y_d, 0.05)) / math.pi),
+                                           -ro.half_length, ro.half_length, 32, 192)
+            return solver.footprint(x, y, p)["c"] > 0.0
+
+        lo, hi = 0.0, abs(ro.tilt_deg)
+        for _ in range(12):
+            mid = 0.5 * (lo + hi)
+            lo, hi = (mid, hi) if closed(math.copysign(mid, ro.tilt_deg)) else (lo, mid)
+        check_range("tilt_deg", ro.tilt_deg, "deg", -lo, lo,
+                    why=f"(at load = {self.load:g} N a larger tilt opens the contact at the mid-plane, c = 0, "
+                        "and the paper's domain is built on c)")
+
+    @cached_property
+    def scales(self) -> dict:
+        """Scaled-unit constants: ``B = c/R_m``, ``P_h = B/4`` (p_h/E'), wedge ``lam``, load ``w_bar``."""
+        d = self.dry()
+        rm = self.roller.mean_radius
+        B = d.half_width / rm
+        Ph = B / 4.0
+        return {"B": B, "Ph": Ph, "p_scale": Ph * self.modulus, "lam": 48.0 * self.U / B ** 4,
+                "w_bar": self.W / (B * B * Ph), "film": B * B * rm,
+                "y_lo": d.footprint_start / rm / B, "y_hi": d.footprint_end / rm / B,
+                "d": d.footprint_length / rm / B}
+
+    # -- grids ------------------------------------------------------------------------------------------
+    def y_range(self) -> tuple[float, float]:
+        """Domain along Y in units of c."""
+        s = self.scales
+        half = self.domain[2] * s["d"]
+        return min(-half, s["y_lo"] - 0.05 * s["d"]), max(half, s["y_hi"] + 0.05 * s["d"])
+
+    def make_grid(self, kind: str, nx: int, ny: int) -> TensorGrid:
+        """A grid of the domain in units of c (module docstring)."""
+        x0, x1 = self.domain[:2]
+        y0, y1 = self.y_range()
+        if kind == "uniform":
+            return TensorGrid(np.linspace(x0, x1, nx), np.linspace(y0, y1, ny))
+        s = self.scales
+        x = clustered_axis(x0, x1, nx, _weights(x1 - x0, [(-0.5, 1.8, 0.6)]), snap=[0.0])
+        yd = self.roller.y_d / s["B"]
+        ends = [0.5 * (-yd + s["y_lo"]), 0.5 * (yd + s["y_hi"])]
+        narrow = max(1.5, 0.5 * (s["y_hi"] - yd))
+        cl = [(e, narrow, 0.3) for e in ends] + [(e, 10.0 * narrow, 0.1) for e in ends]
+        y = clustered_axis(y0, y1, ny, _weights(y1 - y0, cl), snap=[0.0, -yd, yd])
+        return TensorGrid(x, y)
+
+    @cached_property
+    def grid(self) -> TensorGrid:
+        g = self.make_grid(*self.grid_spec)
+        self._check_grid(g)
+        return g
+
+    def _check_grid(self, g: TensorGrid):
+        s = self.scales
+        across = np.count_nonzero(np.abs(g.x) < 1.0)
+        along = np.count_nonzero((g.y > s["y_lo"]) & (g.y < s["y_hi"]))
+        if across < 8:
+            raise ValueError(f"grid nx = {g.x.size} puts {across} nodes across the dry contact width 2c; allowed: >= 8")
+        if along < 16:
+            raise ValueError(f"grid ny = {g.y.size} puts {along} nodes along the dry footprint length d; "
+                             "allowed: >= 16")
+        yd = self.roller.y_d / s["B"]
+        for name, side, end in (("small", -1.0, -s["y_lo"]), ("large", 1.0, s["y_hi"])):
+            ys = side * g.y
+            n_end = np.count_nonzero((ys >= yd) & (ys <= end))
+            if end > yd and n_end < 2:
+                dy = np.diff(g.y)[min(int(np.argmin(np.abs(ys - yd))), g.y.size - 2)]
+                raise ValueError(f"grid ny = {g.y.size} puts {n_end} node(s) on the profiled part of the footprint "
+                                 f"at the {name} end ({end - yd:.2f} c long; node spacing there {dy:.2f} c); "
+                                 "allowed: >= 2 (refine y or use a clustered grid)")
+
+    def levels(self) -> list[tuple[str, int, int]]:
+        """Grid specifications of the nested iteration, coarse to fine. Clustered grids: the x node count
+        halved while it stays >= 40 (y is kept: coarser y grids do not resolve the profiled ends).
+        Uniform grids: the clustered 47 x 45 grid first (also the coarse grid of the two-level
+        preconditioner), then uniform grids with the x node count halved while it stays >= 64."""
+        kind, nx, ny = self.grid_spec
+        out = [(kind, nx, ny)]
+        if kind == "uniform":
+            while nx // 2 >= 64:
+                nx //= 2
+                out.insert(0, ("uniform", nx, ny))
+            return [COARSE] + out
+        while (nx + 1) // 2 >= 40:
+            nx = (nx + 1) // 2
+            out.insert(0, ("clustered", nx, ny))
+        return out
+
+    # -- the discrete problem ---------------------------------------------------------------------------
+    def film_problem(self, grid: TensorGrid, elastic: str = "dense") -> EHLFilm:
+        s = self.scales
+        ro = self.roller
+        B = s["B"]
+        X, Y = grid.x * B, grid.y * B
+        rigid = ro.gap(X[None, :], Y[:, None]) / (B * B)
+        return EHLFilm(grid, rigid, ro.radius_ratio(Y), s["lam"], s["w_bar"], self.rheology, s["p_scale"],
+                       elastic=elastic, elastic_factor=1.0 / (2.0 * math.pi), order2=(self.scheme == "upwind2"))
+
+    def initial_guess(self, film: EHLFilm) -> np.ndarray:
+        """The dry pressure on ``film``'s grid (plus a small inlet ramp) and ``h0`` giving the
+        Dowson-Toyoda central film of a line contact carrying W/d per unit length at the mid-plane."""
+        d = self.dry()
+        s = self.scales
+        rm = self.roller.mean_radius
+        f = RegularGridInterpolator((d.y / rm / s["B"], d.x / rm / s["B"]), d.pressure / self.modulus / s["Ph"],
+                                    bounds_error=False, fill_value=0.0)
+        g = film.grid
+        yy, xx = np.meshgrid(g.y[1:-1], g.x[1:-1], indexing="ij")
+        p = f(np.stack([yy.ravel(), xx.ravel()], axis=1))
+        ramp = np.where(xx.ravel() < -1.0, 0.1 * (xx.ravel() - g.x[0]) / (-1.0 - g.x[0]), 0.0)
+        inside = (yy.ravel() > s["y_lo"]) & (yy.ravel() < s["y_hi"])
+        p = p + ramp * inside
+        w_len = self.W / (d.footprint_length / rm)
+        hc = dowson_toyoda_central(self.U, self.G, w_len) / (s["B"] ** 2)
+        h_here = film.film(p, 0.0).reshape(g.shape_full)
+        j0, i0 = int(np.argmin(np.abs(g.y))), int(np.argmin(np.abs(g.x)))
+        # the dry pressure interpolated to a coarse grid need not give a flat gap: keep the film >= hc/2
+        return np.append(p, max(hc - h_here[j0, i0], 0.5 * hc - h_here.min()))
+
+    # -- steady ---------------------------------------------------------------------------------------
+    def steady(self, tol: float = 1e-8, max_iter: int = 60, raise_on_failure: bool = True,
+               penalty: float | None = None) -> RollerSteady:
+        """Steady EHL film (module docstring). The coarsest level starts from the dry pressure with
+        pseudo-transient continuation (backward-Euler steps of the squeeze-film transient, first step
+        0.3 c/u) and is solved to ``sqrt(tol)``; finer levels start from the interpolated coarser
+        solution with plain Newton (pseudo-transient if that fails). ``penalty``: None for the exact
+        complementarity (Fischer-Burmeister), or the penalty factor (the transient's ``GAMMA`` gives its limit). Raises
+        :class:`EHLConvergenceError` with the non-converged result (``success=False``, residual history)
+        unless ``raise_on_failure=False``."""
+        t0 = time.perf_counter()
+        grid = self.grid
+        u, g_prev, iters, ok, msg, info = None, None, 0, True, "", {"levels": []}
+        specs = self.levels()
+        for k, spec in enumerate(specs):
+            last = k == len(specs) - 1
+            g = grid if last else self.make_grid(*spec)
+            film = self.film_problem(g, "fft" if spec[0] == "uniform" else "dense")
+            film.penalty = None if penalty is None else check_range("penalty", penalty, "-", 1.0, 1e12)
+            if k == 0:
+                coarse = film
+            u0 = self.initial_guess(film) if k == 0 else interpolate_state(g_prev, u, g)
+            attempts = [0.3] if k == 0 else [None, 0.3]
+            for pseudo in attempts:
+                if spec[0] == "uniform":
+                    jac = NewtonKrylov(film, partial(_two_level, coarse), restart=80, max_iter=400, refresh_after=60)
+                else:
+                    jac = NewtonKrylov(film, _dense_lu) if film.n > KRYLOV_ABOVE else None
+                try:
+                    nr = solve_steady(film, u0, tol=tol if last else math.sqrt(tol), max_iter=max_iter,
+                                      jacobian=jac, pseudo_time=pseudo,
+                                      name=f"RollerContact.steady Newton ({g.x.size} x {g.y.size})")
+                    ok = True
+                    break
+                except NewtonError as exc:
+                    nr, ok = exc.result, False
+                    msg = f"level {k + 1}/{len(specs)} ({g.x.size} x {g.y.size} nodes): {exc}"
+            u, g_prev = nr.x, g
+            iters += nr.iterations
+            level = {"grid": [int(g.x.size), int(g.y.size)], "iterations": int(nr.iterations),
+                     "pseudo_time": pseudo}
+            if jac is not None:
+                level.update(gmres_iterations=list(jac.gmres_iterations), preconditioners=jac.n_preconditioners)
+            info["levels"].append(level)
+            if not ok:
+                break
+        if ok:
+            msg = f"converged: {iters} Newton iterations over {len(specs)} grid level(s)"
+        res = self.result(film, u, ok, msg, iters, nr.residual_norms, time.perf_counter() - t0, info)
+        if not ok and raise_on_failure:
+            raise EHLConvergenceError(msg, res)
+        return res
+
+    # -- transient --------------------------------------------------------------------------------------
+    @property
+    def time_scale(self) -> float:
+        """Time unit of the scaled transient, the transit time ``c/u`` [s]."""
+        return self.dry().half_width / self.speed
+
+    def transient(self, t_end: float, load=None, start="dry", rtol: float = 1e-4, n_out: int = 51,
+                  initial_film: float | None = None, ramp_time: float | None = None) -> RollerTransient:
+        """Transient EHL by IDA (:mod:`transient.models.roller.transient`) on this contact's grid
+        (dense elasticity: use a coarse clustered grid, docs/ehl.md gives the cost) over ``[0, t_end]`` [s].
+
+        ``load``: None (constant), a number [N] (a step from the starting load smoothed over
+        ``ramp_time``, default one transit time c/u) or a function of t [s] -> N. ``start``: ``"dry"``
+        -- the dry pressure with the film at the mid-plane centre lifted to ``initial_film`` [m] (default
+        half the Dowson-Toyoda central film of the mid-plane) -- or a :class:`RollerSteady` of this
+        contact. The long-time limit is ``steady(penalty=GAMMA)`` (:data:`transient.models.roller.transient.GAMMA`).
+        """
+        t_end = check_positive("t_end", t_end, "s")
+        if self.grid_spec[0] == "uniform":
+            raise ValueError("transient needs a clustered grid (dense elasticity for IDA's dense Jacobian)")
+        film = self.film_problem(self.grid)
+        s = self.scales
+        w_start = self.load
+        if isinstance(start, RollerSteady):
+            y0 = np.array(start.state, float)
+            if y0.size != film.n + 1:
+                raise ValueError(f"start has {y0.size - 1} pressure nodes, this grid {film.n}")
+            w_start = float(film.area_w @ y0[:-1]) * self.load
+        elif start == "dry":
+            y0 = self.initial_guess(film)
+            g = film.grid
+            h = film.film(y0[:-1], 0.0).reshape(g.shape_full)
+            j0, i0 = int(np.argmin(np.abs(g.y))), int(np.argmin(np.abs(g.x)))
+            d = self.dry()
+            w_len = self.W / (d.footprint_length / self.roller.mean_radius)
+            hc = dowson_toyoda_central(self.U, self.G, w_len) * self.roller.mean_radius
+            h_init = 0.5 * hc if initial_film is None else check_positive("initial_film", initial_film, "m")
+            y0[-1] = h_init / s["film"] - h[j0, i0]
+        else:
+            raise ValueError(f"start = {start!r}: use 'dry' or a RollerSteady of this contact")
+        t_ref = self.time_scale
+        ratio = _load_ratio(load, self.load, w_start, t_ref, ramp_time)
+        dae = SqueezeDAE(film, s["lam"], ratio)
+        tau = np.linspace(0.0, t_end / t_ref, int(check_range("n_out", n_out, "-", 2, 1e6)))
+        sol, wall = integrate(dae, y0, tau, rtol, dt0=1e-3 * tau[1])
+        rows = [self.result(film, y, True, "", 0, [], 0.0) for y in sol.y]
+        last = rows[-1]
+        return RollerTransient(t=sol.t * t_ref, h_central=np.array([r.h_central for r in rows]),
+                               h_min=np.array([r.h_min for r in rows]), p_max=np.array([r.p_max for r in rows]),
+                               h0=sol.y[:, -1] * s["film"], load=np.array([ratio(t) for t in sol.t]) * self.load,
+                               x=last.x, y=last.y, pressure=last.pressure, film=last.film, success=sol.success,
+                               message=sol.message, n_steps=sol.stats.n_steps, n_jacobians=sol.stats.n_jac,
+                               wall_time=wall, final_state=sol.y[-1].copy(), final_time=float(sol.t[-1] * t_ref))
+
+    def result(self, film: EHLFilm, u, ok, msg, iters, norms, wall, info=None) -> RollerSteady:
+        s = self.scales
+        g = film.grid
+        rm = self.roller.mean_radius
+        p, h0 = u[:-1], u[-1]
+        P = g.full(p) * s["p_scale"]
+        H = film.film(p, h0).reshape(g.shape_full) * s["film"]
+        x, y = g.x * s["B"] * rm, g.y * s["B"] * rm
+        jp, ip = np.unravel_index(int(np.argmax(P)), P.shape)
+        inner = H[1:-1, 1:-1]
+        jh, ih = np.unravel_index(int(np.argmin(inner)), inner.shape)
+        j0, i0 = int(np.argmin(np.abs(y))), int(np.argmin(np.abs(x)))
+        return RollerSteady(x=x, y=y, pressure=P, film=H, h_central=float(H[j0, i0]), h_min=float(inner[jh, ih]),
+                            x_of_h_min=float(x[ih + 1]), y_of_h_min=float(y[jh + 1]), p_max=float(P[jp, ip]),
+                            x_of_p_max=float(x[ip]), y_of_p_max=float(y[jp]), load_error=float(film.area_w @ p - 1.0),
+                            mean_radius=rm, modulus=self.modulus, half_width=s["B"] * rm,
+                            footprint_length=s["d"] * s["B"] * rm, profile_start=self.roller.profile_start,
+                            success=ok, message=msg, iterations=int(iters),
+                            wall_time=wall, residual_norms=list(map(float, norms)), state=np.array(u, float),
+                            solver_info=info or {})

@@ -1,0 +1,217 @@
+"""numba kernels of the EHL film (Park, seed 001): finite-volume Reynolds residual, its local Jacobian,
+Fischer-Burmeister complementarity, dense Jacobian assembly.
+
+Scaled variables (see :mod:`transient.models.roller.film`): lengths ``x, y`` in units of the contact
+half-width, pressure ``p`` in units of ``p_h``, film ``h`` in units of ``b^2/R``. Per interior node
+``I`` with control volume ``A = dx dy`` the residual is the net inflow per unit area::
+
+    F_I = { dy [e_{I+1/2} (p_{I+1} - p_I)/(x_{I+1} - x_I) - e_{I-1/2} (p_I - p_{I-1})/(x_I - x_{I-1})]
+          + dx [same along y]
+          - lam Rs(y) dy (q_{I+1/2} - q_{I-1/2}) } / A  [ - kappa d(rho h)_I/dt  in the transient ]
+
+    e = rho h^3 / eta (face value: arithmetic mean of the two nodes),  q = rho h at the face, upwind
+    (U > 0): q_{I+1/2} = m_I + (x_{I+1} - x_I)/(2 (x_I - x_{I-1})) (m_I - m_{I-1}),  m = rho h
+    (second-order linear upwind extrapolation; ``order2=False``: first-order q = m_I).
+
+which is eq. (1) of the paper, ``div(rho H^3/eta grad P) = 12 U d(rho H)/dX``, in these units
+(``lam = 12 eta0 u_m R^2 / (b^3 p_h)``). Boundary nodes carry ``p = 0``.
+
+The local Jacobian is returned per row in six slots -- centre, I-1, I+1, J-1, J+1, I-2 -- as
+``Sp`` (derivative with respect to the node pressures at fixed film) and ``Sh`` (with respect to the
+node films). The full Jacobian is ``Sp + Sh dh/dp`` with ``dh/dp`` the elastic influence matrix.
+
+Reynolds exit condition (P = dP/dn = 0 at the free boundary) as the complementarity problem
+``p >= 0, -F >= 0, p F = 0``, written as the Fischer-Burmeister equation
+``phi(p, -F) = p - F - sqrt(p^2 + F^2) = 0`` and solved by a semismooth Newton, or (the transient) in
+penalty form ``-F + gamma min(p, 0) = 0`` (smoothed), whose error is O(1/gamma).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit
+
+from transient.physics.rheology import density_point, viscosity_point
+
+#: slots of the local Jacobian
+C, W, E, S, N, WW = 0, 1, 2, 3, 4, 5
+N_SLOTS = 6
+
+
+@njit(cache=True, error_model="numpy")
+def node_properties(p_full, h_full, vcode, alpha, ln_eta0, dcode, c1, c2, p_scale, out):
+    """Per full node: rho, drho/dp, eps = rho h^3/eta, deps/dp, deps/dh, m = rho h, dm/dp (scaled p).
+
+    ``out`` has shape (7, n_full)."""
+    pf, hf = p_full.ravel(), h_full.ravel()
+    for k in range(pf.size):
+        pp = pf[k] * p_scale
+        eta, deta = viscosity_point(vcode, pp, alpha, ln_eta0)
+        rho, drho = density_point(dcode, pp, c1, c2)
+        deta *= p_scale
+        drho *= p_scale
+        h = hf[k]
+        h3 = h * h * h
+        out[0, k] = rho
+        out[1, k] = drho
+        out[2, k] = rho * h3 / eta
+        out[3, k] = h3 * (drho * eta - rho * deta) / (eta * eta)
+        out[4, k] = 3.0 * rho * h * h / eta
+        out[5, k] = rho * h
+        out[6, k] = drho * h
+
+
+@njit(cache=True, error_model="numpy")
+def reynolds_kernel(p_full, h_full, x, y, rs, lam, two_d, order2, vcode, alpha, ln_eta0, dcode, c1, c2, p_scale,
+                    jac, F, Sp, Sh, props):
+    """Residual ``F`` (interior nodes, flat) and, if ``jac``, the local Jacobian ``Sp``, ``Sh`` (n, 6)."""
+    nyf, nxf = p_full.shape
+    node_properties(p_full, h_full, vcode, alpha, ln_eta0, dcode, c1, c2, p_scale, props)
+    rho, eps, deps_p, deps_h, m, dm_p = props[0], props[2], props[3], props[4], props[5], props[6]
+    pf = p_full.ravel()
+    nx = nxf - 2
+    j0, j1 = (1, nyf - 1) if two_d else (0, 1)
+    dE = np.zeros(N_SLOTS)
+    dM = np.zeros(N_SLOTS)
+    dP = np.zeros(N_SLOTS)
+    nb = np.zeros(N_SLOTS, np.int64)
+    for J in range(j0, j1):
+        if two_d:
+            dy = 0.5 * (y[J + 1] - y[J - 1])
+        else:
+            dy = 1.0
+        coef = lam * rs[J] * dy
+        for I in range(1, nxf - 1):
+            r = (J - j0) * nx + (I - 1)
+            c = J * nxf + I
+            w = c - 1
+            e = c + 1
+            dxR = x[I + 1] - x[I]
+            dxL = x[I] - x[I - 1]
+            dx = 0.5 * (dxR + dxL)
+            A = dx * dy
+            eR = 0.5 * (eps[c] + eps[e])
+            eL = 0.5 * (eps[w] + eps[c])
+            gR = (pf[e] - pf[c]) / dxR
+            gL = (pf[c] - pf[w]) / dxL
+            fx = dy * (eR * gR - eL * gL)
+            fR = 0.5 * dxR / dxL if order2 else 0.0
+            fL = 0.0
+            qL = m[w]
+            if I >= 2:
+                if order2:
+                    fL = 0.5 * dxL / (x[I - 1] - x[I - 2])
+                qL = m[w] + fL * (m[w] - m[c - 2])
+            qR = m[c] + fR * (m[c] - m[w])
+            fc = -coef * (qR - qL)
+            fy = 0.0
+            if two_d:
+                s_ = c - nxf
+                n_ = c + nxf
+                dyN = y[J + 1] - y[J]
+                dyS = y[J] - y[J - 1]
+                eN = 0.5 * (eps[c] + eps[n_])
+                eS = 0.5 * (eps[s_] + eps[c])
+                gN = (pf[n_] - pf[c]) / dyN
+                gS = (pf[c] - pf[s_]) / dyS
+                fy = dx * (eN * gN - eS * gS)
+            F[r] = (fx + fy + fc) / A
+            if not jac:
+                continue
+            for s in range(N_SLOTS):
+                dE[s] = 0.0
+                dM[s] = 0.0
+                dP[s] = 0.0
+                nb[s] = -1
+            nb[C], nb[W], nb[E] = c, w, e
+            dE[E] += 0.5 * dy * gR
+            dE[C] += 0.5 * dy * (gR - gL)
+            dE[W] -= 0.5 * dy * gL
+            dP[E] += dy * eR / dxR
+            dP[C] -= dy * (eR / dxR + eL / dxL)
+            dP[W] += dy * eL / dxL
+            dM[C] -= coef * (1.0 + fR)
+            dM[W] += coef * (1.0 + fR + fL)
+            if I >= 2:
+                nb[WW] = c - 2
+                dM[WW] -= coef * fL
+            if two_d:
+                nb[S], nb[N] = c - nxf, c + nxf
+                dE[N] += 0.5 * dx * gN
+                dE[C] += 0.5 * dx * (gN - gS)
+                dE[S] -= 0.5 * dx * gS
+                dP[N] += dx * eN / dyN
+                dP[C] -= dx * (eN / dyN + eS / dyS)
+                dP[S] += dx * eS / dyS
+            for s in range(N_SLOTS):
+                k = nb[s]
+                if k < 0:
+                    Sp[r, s] = 0.0
+                    Sh[r, s] = 0.0
+                    continue
+                Sh[r, s] = (dE[s] * deps_h[k] + dM[s] * rho[k]) / A
+                Sp[r, s] = (dP[s] + dE[s] * deps_p[k] + dM[s] * dm_p[k]) / A
+
+
+@njit(cache=True, error_model="numpy")
+def fischer_burmeister(a, b, phi, da, db):
+    """``phi = a + b - sqrt(a^2 + b^2)`` and a generalised gradient (``da``, ``db``) per entry."""
+    for k in range(a.size):
+        r = math.sqrt(a[k] * a[k] + b[k] * b[k])
+        phi[k] = a[k] + b[k] - r
+        if r > 0.0:
+            da[k] = 1.0 - a[k] / r
+            db[k] = 1.0 - b[k] / r
+        else:
+            da[k] = 1.0 - 1.0 / math.sqrt(2.0)
+            db[k] = da[k]
+
+
+@njit(cache=True, error_model="numpy")
+def penalty(a, b, phi, da, db, gamma):
+    """Penalty form of the complementarity ``a >= 0, b >= 0, a b = 0``: ``phi = b + gamma q(a)`` with
+    ``q(a) = (a - sqrt(a^2 + d^2))/2`` (``min(a, 0)`` rounded over ``|a| < d = 1e-10``; a larger ``d``
+    puts a spurious source ``gamma d^2 / (4 a)`` into the low-pressure inlet): where ``b > 0`` the
+    solution has ``a ~ -b/gamma`` (slightly negative), where ``a > 0`` it has ``b ~ 0``."""
+    d2 = 1e-20
+    for k in range(a.size):
+        r = math.sqrt(a[k] * a[k] + d2)
+        phi[k] = b[k] + 0.5 * gamma * (a[k] - r)
+        da[k] = 0.5 * gamma * (1.0 - a[k] / r)
+        db[k] = 1.0
+
+
+@njit(cache=True, error_model="numpy")
+def assemble_dense(Sp, Sh, colp, colh, K, elastic, fb_a, fb_b, area_w, J):
+    """Dense Newton matrix of ``[phi(p, -F); (sum A p - W)/W]`` in the unknowns ``[p, h0]``.
+
+    ``K`` (n_full, n): film change per unit interior pressure (``dh/dp``; not read for a rigid body,
+    ``elastic=False``); ``colp`` / ``colh`` map the slots to interior / full node indices (-1: none)."""
+    n = Sp.shape[0]
+    for r in range(n):
+        row = J[r]
+        for q in range(n + 1):
+            row[q] = 0.0
+        s_h0 = 0.0
+        for s in range(N_SLOTS):
+            ch = colh[r, s]
+            if ch >= 0:
+                v = Sh[r, s]
+                s_h0 += v
+                if elastic and v != 0.0:
+                    krow = K[ch]
+                    for q in range(n):
+                        row[q] += v * krow[q]
+            cp = colp[r, s]
+            if cp >= 0:
+                row[cp] += Sp[r, s]
+        row[n] = s_h0
+        b = -fb_b[r]
+        for q in range(n + 1):
+            row[q] *= b
+        row[r] += fb_a[r]
+    for q in range(n):
+        J[n, q] = area_w[q]
+    J[n, n] = 0.0

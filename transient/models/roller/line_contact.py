@@ -1,0 +1,317 @@
+"""Steady EHL of an infinitely long line contact: the 1-D limit of the roller model (Park, seed 001).
+
+A cylinder of reduced radius ``R`` on a plane, load ``w`` per unit length, mean entrainment speed
+``u``, lubricant ``eta(p)``, ``rho(p)`` (:mod:`transient.physics.rheology`). Reynolds with the exit
+condition, load balance and the plane-strain elastic film (Johnson eq. 2.25b)::
+
+    d/dx(rho h^3/(12 eta) dp/dx) = u d(rho h)/dx,   p(x_in) = 0,  p = dp/dx = 0 at the free exit
+    h = h0 + x^2/(2R) - 4/(pi E') int p(s) ln|x - s| ds,           int p dx = w
+
+Scaled by the Hertz half-width ``b`` and pressure ``p_h`` (:func:`transient.physics.line_formulas.hertz_line`):
+``x = b X``, ``p = p_h P``, ``h = (b^2/R) H``; then ``H = H0 + X^2/2 - (1/pi) int P ln|X - S| dS``,
+``int P dX = pi/2`` and the Reynolds equation has the wedge coefficient ``lam = 12 eta0 u R^2/(b^3 p_h)``.
+Domain ``X in [domain[0], domain[1]]`` (default -5 ... 2.5, the paper's extent in the rolling
+direction), uniform nodes by default; finite volumes with second-order upwind wedge flux, the
+complementarity form of the exit condition solved inside Newton (:mod:`transient.models.roller.kernels`).
+``elastic=False`` gives the rigid cylinder (Martin's limit).
+"""
+
+from __future__ import annotations
+
+import math
+import time
+
+import numpy as np
+
+from transient.checks import check_positive, check_range
+from transient.models.roller.film import EHLFilm, interpolate_state, solve_steady
+from transient.models.roller.grid import TensorGrid
+from transient.models.roller.dry import edge_positions, polonsky_keer
+from transient.models.roller.results import EHLConvergenceError, LineDry, LineSteady, LineTransient
+from transient.models.roller.transient import SqueezeDAE, integrate
+from transient.physics.elasticity import line_influence
+from transient.physics.line_formulas import dowson_toyoda_central, hertz_line, line_groups, martin_min
+from transient.physics.rheology import DOWSON_HIGGINSON_PARK, Rheology
+from transient.solvers.newton import NewtonError
+
+SCHEMES = ("upwind2", "upwind1")
+
+
+class _DenseOperator:
+    """``apply(p)``: a dense influence matrix acting on a (1, n) pressure row (for the dry solver)."""
+
+    def __init__(self, K):
+        self.K = K
+
+    def apply(self, p):
+        return (self.K @ p.ravel()).reshape(p.shape)
+
+
+def film_extrema(x, h):
+    """Minimum of a nodal film refined by the parabola through the lowest node and its neighbours:
+    ``(h_min, x_of_h_min)``."""
+    k = int(np.argmin(h))
+    if 0 < k < h.size - 1:
+        x0, x1, x2 = x[k - 1], x[k], x[k + 1]
+        y0, y1, y2 = h[k - 1], h[k], h[k + 1]
+        d01, d12, d02 = x1 - x0, x2 - x1, x2 - x0
+        a = ((y2 - y1) / d12 - (y1 - y0) / d01) / d02
+        bcoef = (y1 - y0) / d01 - a * (x0 + x1)
+        if a > 0:
+            xm = -bcoef / (2 * a)
+            if x0 <= xm <= x2:
+                return float(y1 + a * (xm - x1) ** 2 + (2 * a * x1 + bcoef) * (xm - x1)), float(xm)
+    return float(h[k]), float(x[k])
+
+
+class LineContact:
+    """Steady EHL line contact, SI at the API (module docstring).
+
+    Parameters: ``radius`` R [m] (reduced), ``load_per_length`` w [N/m], ``speed`` u [m/s] (mean
+    entrainment), ``viscosity`` eta0 [Pa s], ``pressure_viscosity`` alpha [1/Pa], ``modulus`` E' [Pa];
+    ``density`` ``"dowson-higginson"`` (the paper's constants 0.58, 1.68 /GPa unless ``dh_constants``)
+    or ``"incompressible"``; ``viscosity_law`` ``"barus"``, ``"roelands"`` or ``"isoviscous"``;
+    ``grid``: number of nodes (uniform, boundary nodes included) or the node positions in units of b;
+    ``domain`` (inlet, outlet) in units of b; ``scheme`` ``"upwind2"`` or ``"upwind1"``;
+    ``elastic=False`` for a rigid cylinder.
+    """
+
+    def __init__(self, radius, load_per_length, speed, viscosity, pressure_viscosity, modulus,
+                 density: str = "dowson-higginson", viscosity_law: str = "barus", grid=401, domain=(-5.0, 2.5),
+                 scheme: str = "upwind2", elastic: bool = True, dh_constants=DOWSON_HIGGINSON_PARK):
+        self.radius = check_positive("radius", radius, "m")
+        self.load_per_length = check_positive("load_per_length", load_per_length, "N/m")
+        self.speed = check_positive("speed", speed, "m/s")
+        self.modulus = check_positive("modulus", modulus, "Pa")
+        self.rheology = Rheology(viscosity=check_positive("viscosity", viscosity, "Pa s"),
+                                 pressure_viscosity=pressure_viscosity, viscosity_law=viscosity_law,
+                                 density=density, dh_constants=tuple(dh_constants))
+        if scheme not in SCHEMES:
+            raise ValueError(f"scheme = {scheme!r} is not one of {SCHEMES}")
+        self.scheme = scheme
+        self.elastic = bool(elastic)
+        lo = check_range("domain[0] (inlet)", domain[0], "b", -1e3, -1.0)
+        hi = check_range("domain[1] (outlet)", domain[1], "b", 1.0, 1e3)
+        self.domain = (lo, hi)
+        self.b, self.p_h = hertz_line(self.load_per_length, self.radius, self.modulus)
+        if np.ndim(grid) == 0:
+            n = int(check_range("grid", grid, "nodes", 11, 100001))
+            nodes = np.linspace(lo, hi, n)
+        else:
+            nodes = np.asarray(grid, dtype=float)
+            if nodes[0] != lo or nodes[-1] != hi:
+                raise ValueError(f"grid nodes must start at the inlet {lo} and end at the outlet {hi} (units of b)")
+        self.grid = TensorGrid(nodes)
+        inside = np.count_nonzero(np.abs(nodes) < 1.0)
+        if inside < 8:
+            raise ValueError(f"grid = {nodes.size} nodes puts {inside} nodes inside the Hertz contact |x| < b; "
+                             "allowed: at least 8 (use more nodes)")
+        self.U, self.G, self.W = line_groups(self.rheology.viscosity, self.speed, self.rheology.pressure_viscosity,
+                                             self.load_per_length, self.modulus, self.radius)
+
+    # -- scaled problem ------------------------------------------------------------------------------
+    @property
+    def lam(self) -> float:
+        """Wedge coefficient ``12 eta0 u R^2 / (b^3 p_h)``."""
+        return 12.0 * self.rheology.viscosity * self.speed * self.radius ** 2 / (self.b ** 3 * self.p_h)
+
+    @property
+    def film_scale(self) -> float:
+        """Film unit ``b^2 / R`` [m]."""
+        return self.b * self.b / self.radius
+
+    def film_problem(self, grid: TensorGrid | None = None, rheology: Rheology | None = None) -> EHLFilm:
+        """The scaled discrete problem (:class:`~transient.models.roller.film.EHLFilm`) on ``grid``
+        (default: the contact's grid)."""
+        grid = self.grid if grid is None else grid
+        x = grid.x
+        return EHLFilm(grid, 0.5 * x * x, np.ones(1), self.lam, self.load_per_length / (self.b * self.p_h),
+                       rheology or self.rheology, self.p_h, elastic="dense" if self.elastic else "rigid",
+                       elastic_factor=-1.0 / math.pi, order2=(self.scheme == "upwind2"))
+
+    def initial_guess(self, film: EHLFilm) -> np.ndarray:
+        """Hertz pressure plus a small inlet ramp and the Dowson-Toyoda central film (elastic), or an
+        inlet ramp and Martin's film (rigid)."""
+        xi = film.grid.x[1:-1]
+        ramp = np.where(xi < -1.0, 0.1 * (xi - xi[0]) / (-1.0 - xi[0]), 0.0)
+        if self.elastic:
+            p = np.sqrt(np.clip(1.0 - xi * xi, 0.0, None)) + ramp
+            hc = dowson_toyoda_central(self.U, self.G, self.W) * self.radius / self.film_scale
+            h0 = hc - float(np.interp(0.0, film.grid.x, film.deformation(p)))
+        else:
+            p = ramp
+            h0 = martin_min(self.U, self.W) * self.radius / self.film_scale
+        return np.append(p, h0)
+
+    def levels(self) -> list[TensorGrid]:
+        """Grids of the nested iteration, coarse to fine: every other node of the next finer grid while
+        the coarser one keeps >= 20 nodes in the Hertz contact and >= 101 nodes."""
+        out = [self.grid]
+        while True:
+            x = out[0].x
+            if (x.size - 1) % 2:
+                break
+            xc = x[::2]
+            if xc.size < 101 or np.count_nonzero(np.abs(xc) < 1.0) < 20:
+                break
+            out.insert(0, TensorGrid(xc))
+        return out
+
+    def dry(self, nodes: int = 401) -> LineDry:
+        """Dry contact of the cylinder (the zero-speed limit) on ``nodes`` uniform nodes over
+        ``[-1.5 b, 1.5 b]`` with the same plane-strain patches, by Polonsky-Keer CG
+        (:func:`transient.models.roller.dry.polonsky_keer`): compare with Hertz, ``p_h sqrt(1 - x^2/b^2)``."""
+        x = np.linspace(-1.5, 1.5, int(check_range("nodes", nodes, "-", 21, 100001)))
+        dx = x[1] - x[0]
+        edges = np.concatenate(([x[0] - 0.5 * dx], 0.5 * (x[1:] + x[:-1]), [x[-1] + 0.5 * dx]))
+        K = -line_influence(x, edges) / math.pi
+        p, delta, it, ok = polonsky_keer((0.5 * x * x)[None, :], _DenseOperator(K), dx, math.pi / 2.0)
+        e = edge_positions(x, p[0])
+        return LineDry(x=x * self.b, pressure=p[0] * self.p_h, p_max=float(p.max() * self.p_h),
+                       half_width=0.5 * (e[1] - e[0]) * self.b, hertz_half_width=self.b, hertz_pressure=self.p_h,
+                       success=ok, message="converged" if ok else "Polonsky-Keer CG did not reach its tolerance",
+                       iterations=it)
+
+    # -- solves --------------------------------------------------------------------------------------
+    def steady(self, initial=None, tol: float = 1e-9, max_iter: int = 60, raise_on_failure: bool = True,
+               penalty: float | None = None) -> LineSteady:
+        """Steady film by nested iteration: Newton on the complementarity system on :meth:`levels`,
+        each level started from the coarser solution, the coarsest from :meth:`initial_guess`; where
+        Newton with line search fails, the level is redone with pseudo-transient continuation
+        (backward-Euler steps of the squeeze-film transient, first step 0.3 b/u, then 0.03 b/u on the
+        coarsest level): line search is the more robust at high speed, pseudo-time at high load.
+        ``initial``: a previous :class:`LineSteady` on the same grid to start from instead. ``penalty``:
+        None for the exact complementarity (Fischer-Burmeister), or the penalty factor of the penalty
+        form (the transient's ``GAMMA`` gives its limit). Raises
+        :class:`EHLConvergenceError` (its ``result`` flagged ``success=False`` with the residual
+        history) if Newton fails, unless ``raise_on_failure=False``."""
+        t0 = time.perf_counter()
+        levels = [self.grid] if initial is not None else self.levels()
+        u, grid_prev, iters, norms, ok, msg = None, None, 0, [], True, ""
+        for k, grid in enumerate(levels):
+            film = self.film_problem(grid)
+            film.penalty = None if penalty is None else check_range("penalty", penalty, "-", 1.0, 1e12)
+            if k == 0:
+                u0 = initial.state if initial is not None else self.initial_guess(film)
+            else:
+                u0 = interpolate_state(grid_prev, u, grid)
+            attempts = [None, 0.3, 0.03] if (k == 0 and initial is None) else [None, 0.3]
+            for pseudo in attempts:
+                try:
+                    nr = solve_steady(film, u0, tol=tol, max_iter=max_iter, pseudo_time=pseudo,
+                                      name="LineContact.steady Newton")
+                    ok = True
+                    break
+                except NewtonError as exc:
+                    nr, ok, msg = exc.result, False, f"level {k + 1}/{len(levels)} ({grid.x.size} nodes): {exc}"
+            u, grid_prev = nr.x, grid
+            iters += nr.iterations
+            norms = nr.residual_norms
+            if not ok:
+                break
+        if ok:
+            msg = f"converged: {iters} Newton iterations over {len(levels)} grid level(s)"
+        res = self._result(film, u, ok, msg, iters, norms, time.perf_counter() - t0)
+        if not ok and raise_on_failure:
+            raise EHLConvergenceError(msg, res)
+        return res
+
+    # -- transient -----------------------------------------------------------------------------------
+    @property
+    def time_scale(self) -> float:
+        """Time unit of the scaled transient, the transit time ``b/u`` [s]."""
+        return self.b / self.speed
+
+    def transient(self, t_end: float, load=None, start="dry", rtol: float = 1e-4, n_out: int = 101,
+                  initial_film: float | None = None, ramp_time: float | None = None) -> LineTransient:
+        """Transient film by IDA (:mod:`transient.models.roller.transient`) over ``[0, t_end]`` [s].
+
+        ``load``: None (constant, the contact's load), a number [N/m] (a step from the starting load,
+        smoothed over ``ramp_time``, default one transit time b/u) or a function of t [s] -> N/m.
+        ``start``: ``"dry"`` -- the dry (Hertz) pressure with the film lifted to ``initial_film`` [m] at
+        x = 0 (default half the Dowson-Toyoda central film) -- or a :class:`LineSteady` on this grid.
+        The exit condition is in penalty form (:data:`transient.models.roller.transient.GAMMA`): the
+        long-time limit is ``steady(penalty=GAMMA)``.
+        """
+        t_end = check_positive("t_end", t_end, "s")
+        film = self.film_problem()
+        w_start = self.load_per_length
+        if start == "dry":
+            xi = self.grid.x[1:-1]
+            p = np.sqrt(np.clip(1.0 - xi * xi, 0.0, None))
+            hc = dowson_toyoda_central(self.U, self.G, self.W) * self.radius
+            h_init = 0.5 * hc if initial_film is None else check_positive("initial_film", initial_film, "m")
+            h0 = h_init / self.film_scale - float(np.interp(0.0, self.grid.x, film.film(p, 0.0)))
+            y0 = np.append(p, h0)
+        elif isinstance(start, LineSteady):
+            y0 = np.array(start.state, float)
+            if y0.size != self.grid.n + 1:
+                raise ValueError(f"start has {y0.size - 1} pressure nodes, this grid {self.grid.n}")
+            w_start = float(np.trapezoid(start.pressure, start.x))
+        else:
+            raise ValueError(f"start = {start!r}: use 'dry' or a LineSteady of this contact")
+        return self._transient(film, y0, self.lam, self.time_scale, self.load_per_length, w_start, t_end, load, rtol,
+                               n_out, ramp_time)
+
+    def _transient(self, film, y0, kappa, t_ref, w_ref, w_start, t_end, load, rtol, n_out, ramp_time):
+        ratio = _load_ratio(load, w_ref, w_start, t_ref, ramp_time)
+        dae = SqueezeDAE(film, kappa, ratio)
+        tau = np.linspace(0.0, t_end / t_ref, int(check_range("n_out", n_out, "-", 2, 1e6)))
+        sol, wall = integrate(dae, y0, tau, rtol, dt0=1e-3 * tau[1])
+        rows = [self._result(film, y, True, "", 0, [], 0.0) for y in sol.y]
+        last = rows[-1]
+        return LineTransient(t=sol.t * t_ref, h_central=np.array([r.h_central for r in rows]),
+                             h_min=np.array([r.h_min for r in rows]), p_max=np.array([r.p_max for r in rows]),
+                             h0=sol.y[:, -1] * self.film_scale, load=np.array([ratio(t) for t in sol.t]) * w_ref,
+                             x=last.x, pressure=last.pressure, film=last.film, success=sol.success,
+                             message=sol.message, n_steps=sol.stats.n_steps, n_jacobians=sol.stats.n_jac,
+                             wall_time=wall, final_state=sol.y[-1].copy(), final_time=float(sol.t[-1] * t_ref))
+
+    def _result(self, film, u, ok, msg, iterations, norms, wall) -> LineSteady:
+        p, h0 = u[:-1], u[-1]
+        x = film.grid.x * self.b
+        pressure = film.grid.full(p).ravel() * self.p_h
+        h = film.film(p, h0) * self.film_scale
+        h_min, x_min = film_extrema(x, h)
+        return LineSteady(x=x, pressure=pressure, film=h, h_central=float(np.interp(0.0, x, h)), h_min=h_min,
+                          x_of_h_min=x_min, p_max=float(pressure.max()),
+                          load_error=float(film.area_w @ p - 1.0), radius=self.radius, modulus=self.modulus,
+                          hertz_half_width=self.b, hertz_pressure=self.p_h, success=ok, message=msg,
+                          iterations=int(iterations), wall_time=wall, residual_norms=list(map(float, norms)),
+                          state=np.array(u, dtype=float))
+
+
+def _load_ratio(load, w_ref, w_start, t_ref, ramp_time):
+    """``W(t)/W_ref`` as a function of scaled time: constant, a smoothed step, or the user's function."""
+    if load is None:
+        return lambda tau: w_start / w_ref
+    if callable(load):
+        return lambda tau: float(load(tau * t_ref)) / w_ref
+    w_end = check_positive("load", load, "N/m or N")
+    t_ramp = (1.0 if ramp_time is None else check_positive("ramp_time", ramp_time, "s") / t_ref)
+
+    def ratio(tau):
+        s = min(max(tau / t_ramp, 0.0), 1.0)
+        return (w_start + (w_end - w_start) * s * s * (3.0 - 2.0 * s)) / w_ref
+
+    return ratio
+
+
+def rigid_squeeze(radius, load_per_length, viscosity, h0_start, t_end, grid: int = 401, half_width: float = 10.0,
+                  rtol: float = 1e-6, n_out: int = 51) -> LineTransient:
+    """Pure squeeze of a rigid cylinder on a plane (no rolling, isoviscous, incompressible) under a
+    constant load, from the gap ``h0_start`` [m] at rest, by the same DAE and IDA (the closed form is
+    :func:`transient.verification.ehl_reference.squeeze_film_history`). Domain ``|x| <= half_width b``
+    with the length unit ``b = sqrt(2 R h0_start)`` (the Hertz half-width of a fictitious modulus
+    ``4 w/(pi h0_start)``: lengths, pressure and time are only scaled by it); time unit
+    ``12 eta0 R^2 / (b^2 p_h)``."""
+    h0_start = check_positive("h0_start", h0_start, "m")
+    w = check_positive("load_per_length", load_per_length, "N/m")
+    lc = LineContact(radius, w, 1.0, viscosity, 0.0, 4.0 * w / (math.pi * h0_start), density="incompressible",
+                     viscosity_law="isoviscous", grid=grid, domain=(-half_width, half_width), elastic=False)
+    film = lc.film_problem()
+    film.lam = 0.0
+    t_ref = 12.0 * viscosity * radius ** 2 / (lc.b ** 2 * lc.p_h)
+    y0 = np.append(np.zeros(lc.grid.n), h0_start / lc.film_scale)
+    return lc._transient(film, y0, 1.0, t_ref, lc.load_per_length, lc.load_per_length,
+                         check_positive("t_end", t_end, "s"), None, rtol, n_out, None)

@@ -1,0 +1,206 @@
+"""Results of the EHL models (Park, seed 001): SI fields with units, dimensionless views as properties.
+
+Every result says ``success`` / ``message``; a steady solve also keeps its Newton residual history
+(``residual_norms``, the infinity norm of the scaled equations per iteration), so a failed solve can be
+inspected (:class:`EHLConvergenceError` carries the result).
+"""
+
+from __future__ import annotations
+
+from dataclasses import field
+
+import numpy as np
+
+from transient.results import Result, quantity, result_type
+
+
+class EHLConvergenceError(RuntimeError):
+    """A steady EHL solve did not converge; ``result`` is the last iterate, flagged ``success=False``."""
+
+    def __init__(self, message: str, result):
+        super().__init__(message)
+        self.result = result
+
+
+@result_type
+class LineSteady(Result):
+    """Steady EHL line contact (:class:`~transient.models.roller.line_contact.LineContact`).
+
+    ``x`` node positions (boundary nodes included), ``pressure`` and ``film`` at the nodes; the film at
+    ``x = 0`` (``h_central``), its minimum (``h_min``, at ``x_of_h_min``), the maximum pressure; the
+    contact's radius and modulus give the dimensionless views ``X, P, H, H_central, H_min, P_max``."""
+
+    time_axis = None
+    x: np.ndarray = quantity("m")
+    pressure: np.ndarray = quantity("Pa")
+    film: np.ndarray = quantity("m")
+    h_central: float = quantity("m")
+    h_min: float = quantity("m")
+    x_of_h_min: float = quantity("m")
+    p_max: float = quantity("Pa")
+    load_error: float = quantity("-")
+    radius: float = quantity("m")
+    modulus: float = quantity("Pa")
+    hertz_half_width: float = quantity("m")
+    hertz_pressure: float = quantity("Pa")
+    success: bool = True
+    message: str = ""
+    iterations: int = 0
+    wall_time: float = quantity("s", 0.0)
+    residual_norms: list = field(default_factory=list)
+    state: np.ndarray = quantity("-", default_factory=lambda: np.zeros(0))
+
+    @property
+    def X(self):
+        return self.x / self.radius
+
+    @property
+    def P(self):
+        return self.pressure / self.modulus
+
+    @property
+    def H(self):
+        return self.film / self.radius
+
+    @property
+    def H_central(self):
+        return self.h_central / self.radius
+
+    @property
+    def H_min(self):
+        return self.h_min / self.radius
+
+    @property
+    def P_max(self):
+        return self.p_max / self.modulus
+
+
+@result_type
+class LineDry(Result):
+    """Dry contact of the cylinder (:meth:`LineContact.dry`): pressure, maximum, half-width, and the Hertz
+    values for comparison."""
+
+    time_axis = None
+    x: np.ndarray = quantity("m")
+    pressure: np.ndarray = quantity("Pa")
+    p_max: float = quantity("Pa")
+    half_width: float = quantity("m")
+    hertz_half_width: float = quantity("m")
+    hertz_pressure: float = quantity("Pa")
+    success: bool = True
+    message: str = ""
+    iterations: int = 0
+
+
+@result_type
+class LineTransient(Result):
+    """Transient of the line contact (IDA): series at the output times ``t``, final fields."""
+
+    t: np.ndarray = quantity("s")
+    h_central: np.ndarray = quantity("m")
+    h_min: np.ndarray = quantity("m")
+    p_max: np.ndarray = quantity("Pa")
+    h0: np.ndarray = quantity("m")
+    load: np.ndarray = quantity("N/m")
+    x: np.ndarray = quantity("m")
+    pressure: np.ndarray = quantity("Pa")
+    film: np.ndarray = quantity("m")
+    success: bool = True
+    message: str = ""
+    n_steps: int = 0
+    n_jacobians: int = 0
+    wall_time: float = quantity("s", 0.0)
+    final_state: np.ndarray = quantity("-", default_factory=lambda: np.zeros(0))
+    final_time: float = quantity("s", 0.0)
+
+
+@result_type
+class RollerSteady(Result):
+    """Steady EHL of the tapered roller (:class:`~transient.models.roller.contact.RollerContact`).
+
+    ``x`` (rolling direction) and ``y`` (along the roller, from the mid-plane, negative at the small
+    end) node positions including the boundary nodes; ``pressure`` and ``film`` of shape
+    ``(y.size, x.size)``. ``h_central`` is the film at ``x = 0`` on the mid-plane; ``h_min``,
+    ``p_max`` the extrema with their positions. Dimensionless views (the paper's): ``X, Y`` (by R_m),
+    ``P`` (by E'), ``H`` (by R_m)."""
+
+    time_axis = None
+    x: np.ndarray = quantity("m")
+    y: np.ndarray = quantity("m")
+    pressure: np.ndarray = quantity("Pa")
+    film: np.ndarray = quantity("m")
+    h_central: float = quantity("m")
+    h_min: float = quantity("m")
+    x_of_h_min: float = quantity("m")
+    y_of_h_min: float = quantity("m")
+    p_max: float = quantity("Pa")
+    x_of_p_max: float = quantity("m")
+    y_of_p_max: float = quantity("m")
+    load_error: float = quantity("-")
+    mean_radius: float = quantity("m")
+    modulus: float = quantity("Pa")
+    half_width: float = quantity("m")
+    footprint_length: float = quantity("m")
+    profile_start: float = quantity("m", 0.0)
+    success: bool = True
+    message: str = ""
+    iterations: int = 0
+    wall_time: float = quantity("s", 0.0)
+    residual_norms: list = field(default_factory=list)
+    state: np.ndarray = quantity("-", default_factory=lambda: np.zeros(0))
+    solver_info: dict = field(default_factory=dict)
+
+    @property
+    def X(self):
+        return self.x / self.mean_radius
+
+    @property
+    def Y(self):
+        return self.y / self.mean_radius
+
+    @property
+    def P(self):
+        return self.pressure / self.modulus
+
+    @property
+    def H(self):
+        return self.film / self.mean_radius
+
+    def section_x(self, y: float):
+        """``(x, pressure, film)`` along the rolling direction at ``y`` [m] (linear in y between rows)."""
+        p, h = _row(self.y, self.pressure, y), _row(self.y, self.film, y)
+        return self.x, p, h
+
+    def section_y(self, x: float = 0.0):
+        """``(y, pressure, film)`` along the roller at ``x`` [m] (linear in x between columns)."""
+        p, h = _row(self.x, self.pressure.T, x), _row(self.x, self.film.T, x)
+        return self.y, p, h
+
+
+def _row(coord, field2d, at):
+    j = int(np.clip(np.searchsorted(coord, at), 1, coord.size - 1))
+    w = (at - coord[j - 1]) / (coord[j] - coord[j - 1])
+    return (1.0 - w) * field2d[j - 1] + w * field2d[j]
+
+
+@result_type
+class RollerTransient(Result):
+    """Transient of the roller contact (IDA): series at the output times ``t``, final fields."""
+
+    t: np.ndarray = quantity("s")
+    h_central: np.ndarray = quantity("m")
+    h_min: np.ndarray = quantity("m")
+    p_max: np.ndarray = quantity("Pa")
+    h0: np.ndarray = quantity("m")
+    load: np.ndarray = quantity("N")
+    x: np.ndarray = quantity("m")
+    y: np.ndarray = quantity("m")
+    pressure: np.ndarray = quantity("Pa")
+    film: np.ndarray = quantity("m")
+    success: bool = True
+    message: str = ""
+    n_steps: int = 0
+    n_jacobians: int = 0
+    wall_time: float = quantity("s", 0.0)
+    final_state: np.ndarray = quantity("-", default_factory=lambda: np.zeros(0))
+    final_time: float = quantity("s", 0.0)

@@ -1,0 +1,102 @@
+"""Figures of the tapered-roller EHL (Park, seed 001, Figs. 3-10), drawn from
+:class:`~transient.models.roller.results.RollerSteady` results only, in the paper's dimensionless units
+(X, Y by R_m; P = p/E' x 10^3; H = h/R_m x 10^5).
+
+* :func:`maps` -- contours of pressure or film: the whole contact and zooms on the small and large end
+  (Figs. 3-6);
+* :func:`rolling_sections` -- pressure and film along X at a given Y for several results (Figs. 7, 8);
+* :func:`transverse_sections` -- pressure and film along Y at X = 0 near one end (Figs. 9, 10).
+"""
+
+from __future__ import annotations
+
+import matplotlib.pyplot as plt
+import numpy as np
+
+P_UNIT, H_UNIT = 1e3, 1e5
+STYLES = ("-", "--", ":", "-.")
+
+
+def _zoom(s, end: str) -> tuple[float, float]:
+    """Y window (units of R_m) around one profiled end: from 6 c inboard of the profile start to
+    2 c beyond the footprint end."""
+    rm, c = s.mean_radius, s.half_width
+    yd, half = s.profile_start / rm, 0.5 * s.footprint_length / rm
+    lo, hi = yd - 6 * c / rm, half + 2 * c / rm
+    return (-hi, -lo) if end == "small" else (lo, hi)
+
+
+def maps(s, quantity: str = "pressure", title: str = ""):
+    """Contour maps of ``quantity`` (``"pressure"`` or ``"film"``): (a) complete, (b) small end,
+    (c) large end. The film is drawn where it is below three times the central film."""
+    X, Y = s.X, s.Y
+    if quantity == "pressure":
+        Z, label = s.P * P_UNIT, r"$P \times 10^3$"
+        levels = np.linspace(0.0, Z.max(), 16)[1:]
+    else:
+        Z, label = s.H * H_UNIT, r"$H \times 10^5$"
+        hc = s.h_central / s.mean_radius * H_UNIT
+        levels = np.linspace(Z[1:-1, 1:-1].min(), 3.0 * hc, 16)
+    fig = plt.figure(figsize=(12, 8), layout="constrained")
+    gs = fig.add_gridspec(2, 2, height_ratios=(1.0, 1.1))
+    panels = [(fig.add_subplot(gs[0, :]), None, "(a) complete"), (fig.add_subplot(gs[1, 0]), "small", "(b) small end"),
+              (fig.add_subplot(gs[1, 1]), "large", "(c) large end")]
+    cs = None
+    for ax, end, name in panels:
+        cs = ax.contourf(Y, X, Z.T, levels=levels, cmap="viridis", extend="max")
+        ax.contour(Y, X, Z.T, levels=levels[::3], colors="k", linewidths=0.5)
+        if end is not None:
+            ax.set_xlim(*_zoom(s, end))
+        ax.set_ylim(-1.6 * s.half_width / s.mean_radius, 1.6 * s.half_width / s.mean_radius)
+        ax.set_xlabel("Y (along the roller; small end < 0)")
+        ax.set_ylabel("X (rolling)")
+        ax.set_title(name, fontsize=10)
+    fig.colorbar(cs, ax=[p[0] for p in panels], label=label, shrink=0.8)
+    fig.suptitle(title)
+    return fig
+
+
+def rolling_sections(results: dict, y: float, title: str = ""):
+    """Pressure and film along the rolling direction at ``y`` [m] for ``{label: RollerSteady}``."""
+    fig, (ap, ah) = plt.subplots(2, 1, figsize=(7.5, 7), sharex=True)
+    for k, (label, s) in enumerate(results.items()):
+        x, p, h = s.section_x(y)
+        ap.plot(x / s.mean_radius, p / s.modulus * P_UNIT, STYLES[k % 4], label=label)
+        ah.plot(x / s.mean_radius, h / s.mean_radius * H_UNIT, STYLES[k % 4], label=label)
+    s0 = next(iter(results.values()))
+    c = s0.half_width / s0.mean_radius
+    hc = s0.h_central / s0.mean_radius * H_UNIT
+    ah.set_ylim(0.0, 4.0 * hc)
+    ah.set_xlim(-2.5 * c, 2.0 * c)
+    ap.set_ylabel(r"$P \times 10^3$")
+    ah.set_ylabel(r"$H \times 10^5$")
+    ah.set_xlabel("X")
+    ap.legend()
+    for a in (ap, ah):
+        a.grid(alpha=0.3)
+    fig.suptitle(title)
+    fig.tight_layout()
+    return fig
+
+
+def transverse_sections(results: dict, end: str, x: float = 0.0, title: str = ""):
+    """Pressure and film along the roller at ``x`` [m] near the ``end`` (``"small"``/``"large"``)."""
+    fig, (ap, ah) = plt.subplots(2, 1, figsize=(7.5, 7), sharex=True)
+    s0 = next(iter(results.values()))
+    lo, hi = _zoom(s0, end)
+    for k, (label, s) in enumerate(results.items()):
+        y, p, h = s.section_y(x)
+        ap.plot(y / s.mean_radius, p / s.modulus * P_UNIT, STYLES[k % 4], marker=".", ms=3, label=label)
+        ah.plot(y / s.mean_radius, h / s.mean_radius * H_UNIT, STYLES[k % 4], marker=".", ms=3, label=label)
+    hc = s0.h_central / s0.mean_radius * H_UNIT
+    ah.set_ylim(0.0, 3.0 * hc)
+    ah.set_xlim(lo, hi)
+    ap.set_ylabel(r"$P \times 10^3$")
+    ah.set_ylabel(r"$H \times 10^5$")
+    ah.set_xlabel("Y")
+    ap.legend()
+    for a in (ap, ah):
+        a.grid(alpha=0.3)
+    fig.suptitle(title)
+    fig.tight_layout()
+    return fig
