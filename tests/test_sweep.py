@@ -58,7 +58,7 @@ def test_scene_file_and_kinds(tmp_path):
     path.write_text('kind = "pad_descent"\n[overrides]\ngamma = 0.0\ngrid = [8, 8]\n[run]\nt_end = 0.05\noutputs = 5\n')
     s = load_scene(path)
     assert s.params["gamma"] == 0.0 and s.run["t_end"] == 0.05 and s.run["rtol"] == 1e-8
-    assert set(KINDS) == {"journal_orbit", "journal_noise", "ball_sequence", "pad_descent"}
+    assert set(KINDS) == {"journal_orbit", "journal_noise", "ball_sequence", "pad_descent", "roller_ehl"}
 
 
 @pytest.fixture(scope="module")

@@ -32,7 +32,7 @@ from typing import Callable
 import numpy as np
 
 from transient.checks import check_range
-from transient.params import jeong, lee_rhim, rho_kim
+from transient.params import jeong, lee_rhim, park, rho_kim
 
 SECTIONS = ("kind", "parameters", "overrides", "run", "outputs", "title")
 
@@ -259,6 +259,24 @@ def _pad_point(p, run):
                    w_asp_end=float(r.w_asp[-1]), contact_area_end_mm2=float(r.contact_area[-1] * 1e6))
 
 
+def _roller_build(p):
+    from transient import RollerContact, TaperedRoller
+
+    roller = TaperedRoller(**{k: p[k] for k in ("mean_radius", "half_angle_deg", "length", "dub_off_radius",
+                                                  "profile_start", "tilt_deg")})
+    g = p["grid"]  # "paper", (nx, ny) uniform, or ("clustered", nx, ny)
+    grid = g if isinstance(g, str) else tuple(v if isinstance(v, str) else int(v) for v in g)
+    return RollerContact.from_dimensionless(U=p["U"], G=p["G"], W=p["W"], modulus=p["modulus"], roller=roller,
+                                            grid=grid)
+
+
+def _roller_point(p, run):
+    s = _roller_build(p).steady(tol=run["tol"])
+    return s, dict(h_min_um=s.h_min * 1e6, h_central_um=s.h_central * 1e6, p_max_GPa=s.p_max / 1e9,
+                   y_of_h_min_mm=s.y_of_h_min * 1e3, y_of_p_max_mm=s.y_of_p_max * 1e3, load_error=s.load_error,
+                   wall_s=s.wall_time)
+
+
 def _figures(x_label_units):
     def make(table, swept):
         from transient.plots.sweep import regime_map, scalar_curves
@@ -317,4 +335,11 @@ KINDS = {
         _pad_point, _pad_build, _figures(dict(curves=("h_eq_over_rq", "t_to_2rq_ms", "contact_area_end_mm2"))),
         lambda r, run: _plots("pad").descent_vs_time({1.0: r}, r.h0[0] / 5.0, r.load),
         "squeeze descent of a rough parallel thrust pad (seed 000); gamma = 0: Gaussian heights, no generated surface"),
+    "roller_ehl": Kind(
+        "roller_ehl", {"park": dict(**park.ROLLER, tilt_deg=0.0, **park.DIMENSIONLESS, grid="paper")},
+        dict(mean_radius="m", half_angle_deg="deg", length="m", dub_off_radius="m", profile_start="m", tilt_deg="deg",
+             U="-", G="-", W="-", modulus="Pa", grid="nodes"),
+        dict(tol=Option("-", 1e-8, 1e-14, 1e-3)),
+        _roller_point, _roller_build, _figures(dict(curves=("h_min_um", "h_central_um", "p_max_GPa"))),
+        None, "steady EHL of the tilted tapered roller (seed 001), the paper's dimensionless case"),
 }
