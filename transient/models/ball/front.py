@@ -386,6 +386,7 @@ def front_kernel(y, moving, s_fixed, s_lo, s_hi, alpha, beta, X, h_res, closed, 
     # fluxes through the moving faces: the content carried is the face value, blended towards the upwind
     # cell's by the cell Peclet number Pe = |v| dz^3 / mobility (psi = Pe^2/(1+Pe^2)): central (second order)
     # where capillarity dominates, upwind in the precursor ahead of the front, where nothing damps wiggles
+    # (while the front is fast, Pe ~ 1 at the followed cell and the law holds it near H* rather than at it)
     for j in range(1, last + 1):
         v = beta[j] * sdot
         hadv[j] = 0.0
@@ -665,6 +666,7 @@ def remap(x_old: np.ndarray, c_old: np.ndarray, x_new: np.ndarray) -> np.ndarray
         dl = (h[1:-1] - h[:-2]) / (zc[1:-1] - zc[:-2])
         dr = (h[2:] - h[1:-1]) / (zc[2:] - zc[1:-1])
         slope[1:-1] = np.where(dl * dr > 0, np.sign(dl) * np.minimum(np.abs(dl), np.abs(dr)), 0.0)
+        slope[0], slope[-1] = dl[0], dr[-1]   # one-sided at the ends (exact for linear profiles)
     # cumulative integral of the reconstruction at arbitrary points
     cum = np.concatenate([[0.0], np.cumsum(c_old)])
 
