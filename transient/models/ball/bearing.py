@@ -228,7 +228,8 @@ class ThrustBallBearing:
         ridge_width : width of each side ridge [m] (default ``a'``).
         precursor_film : film the ball leaves on the band [m]; default (None): the outlet film of the pass,
             half the central film on each surface, ``h_c/2``; a number replaces it by ``max(h_c/2, value)``
-            (the convergence study towards the physical value).
+            (the convergence study towards the physical value). The uniform grid keeps its earlier floor of
+            1 nm by default (its floor mobility can drain a cell below zero).
         mobility_film : ``b`` [m] of a regularised mobility ``h^3 + b^3`` (0: none, the physical model;
             ``h_inf/10`` was the earlier formulation's arbitrary floor).
         edge_width : width [m] of the wall of the depression (``grid="front"``; default ``a'/50``; 0 = the
@@ -295,7 +296,10 @@ class ThrustBallBearing:
         periodic, n_per, calm = False, -1, 0
         h_out_prev = 0.0
         n_run = n_max
-        floor = 0.0 if precursor_film is None else precursor_film
+        if precursor_film is not None:
+            floor = precursor_film
+        else:  # the front mesh needs no floor; the uniform grid's floor mobility can drain a cell below zero
+            floor = 0.0 if track.kind == "front" else 1e-9
         for n in range(n_max):
             if record_profiles:
                 profiles.append(track.profile(x_out) * h_ref)
