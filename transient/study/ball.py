@@ -16,9 +16,8 @@ from transient.results import Result, quantity, result_type
 
 SWEPT = ("n_balls", "speed_rpm", "load", "ambient_film")
 REGIMES = (FLOODED, STARVED, PARCHED)
-#: settings of the regime maps: the physical model, BDF2 at rtol 1e-3 (the inlet film of the first passes moves
-#: by < 0.5 % against rtol 1e-5, see docs/ball.md), at most 60 passes (periodic or parched long before)
-MAP_SETTINGS = dict(replenishment="thin_film", grid="front", rtol=1e-3, atol=1e-7)
+#: settings of the regime maps (transient.params.jeong.MAP_SETTINGS): the physical model, BDF2 at rtol 1e-3
+MAP_SETTINGS = jeong.MAP_SETTINGS
 
 
 def _point(bearing, p: dict, n_passes: int, kw: dict):
