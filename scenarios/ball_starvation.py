@@ -91,6 +91,13 @@ def main(argv=None):
         log(f"critical ambient film vs {ax}: " + ", ".join(f"{c['value']:g}: {c['h_crit_um'] or float('nan'):.0f} um"
                                                           for c in crit[ax]))
     save(plots.critical_films(lines, REF["ambient_film"], jeong.REPORTED), out / "ball_fig11_critical_film.png")
+    films = (100e-6, 150e-6, 300e-6) if q else (100e-6, 125e-6, 150e-6, 250e-6, 300e-6)   # Fig. 11 and beyond
+    fig11 = {f"h_inf = {h * 1e6:.0f} um": sweep(brg, "n_balls", Z, dict(ambient_film=h), n_passes=30, **MAP_SETTINGS)
+             for h in films}
+    save(plots.regime_sweep("n_balls", Z, fig11, dict(REF, ambient_film=None), jeong.REPORTED["n_balls"],
+                            title="Fig. 11: central film against the number of balls for several ambient films "
+                                  "(30 N, 80 rpm)"), out / "ball_fig11_ambient.png")
+    rec.put("fig11", {k: [s.final_regime for s in v] for k, v in fig11.items()})
     sig = critical_value(brg, "surface_tension", 0.036, 0.9, rel_tol=0.05, n_passes=30)
     rec.put("critical_surface_tension", sig)
     log(f"6 balls at 100 um: {sig['regime_lo']} at sigma = {sig['lo']:.3g} N/m, {sig['regime_hi']} at "

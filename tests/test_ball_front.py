@@ -58,7 +58,7 @@ def test_uniform_film_stays_uniform_on_a_moving_mesh():
     s = y[-1]
     assert abs(s - 1.0) > 0.1  # the mesh moved a long way
     h = y[:-1] / m.widths(s)
-    assert np.max(np.abs(h - 0.7)) < 1e-9
+    assert np.max(np.abs(h - 0.7)) < 1e-8   # (round-off of the third differences on 2e-5 cells: ~1e-9)
     assert abs(np.sum(y[:-1]) - np.sum(y0[:-1])) < 1e-12 * np.sum(y0[:-1])
 
 

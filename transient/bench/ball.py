@@ -45,13 +45,13 @@ def _timed(n_passes, **kw):
 
         cls.relax = relax
     try:
-        t0 = time.perf_counter()
+        c0, t0 = time.process_time(), time.perf_counter()
         s = ThrustBallBearing().sequence(**CASE, n_passes=n_passes, stop_at_periodic=False, **kw)
-        wall = time.perf_counter() - t0
+        wall, cpu = time.perf_counter() - t0, time.process_time() - c0
     finally:
         for cls, f in orig.items():
             cls.relax = f
-    return s, wall, per_pass
+    return s, (wall, cpu), per_pass
 
 
 def run(out_dir: str = "docs", n_passes: int = 200, quick: bool = False) -> dict:
@@ -61,32 +61,37 @@ def run(out_dir: str = "docs", n_passes: int = 200, quick: bool = False) -> dict
     os.makedirs(out_dir, exist_ok=True)
     ThrustBallBearing().sequence(**CASE, n_passes=3)                # JIT warm-up (both kernels)
     ThrustBallBearing().sequence(**CASE, n_passes=2, **OLD)
-    ref, t_ref, _ = _timed(n_passes, rtol=1e-6, atol=1e-10)
+    ref, (t_ref, _), _ = _timed(n_passes, rtol=1e-6, atol=1e-10)
     plan = [("earlier: uniform 100 cells, floor h_inf/10, band DQ", dict(OLD, rtol=1e-4, atol=1e-8, linear_solver="band")),
             ("earlier: uniform 100 cells, floor h_inf/10, sparse analytic", dict(OLD, rtol=1e-4, atol=1e-8))]
     plan += [(f"physical: front mesh, rtol {r:.0e}", dict(rtol=r, atol=r * 1e-4)) for r in
              ((1e-3, 1e-4) if quick else (1e-3, 1e-4, 1e-5))]
-    rows = []
-    for label, kw in plan:
-        s, wall, per = _timed(n_passes, **kw)
-        steps = np.array([p[0] for p in per])
-        secs = np.array([p[1] for p in per])
-        err = float(np.max(np.abs(s.h_inlet - ref.h_inlet)) / CASE["ambient_film"]) if "physical" in label else np.nan
-        rows.append(dict(label=label, wall=wall, steps=int(s.stats["n_steps"]), rhs=int(s.stats["n_rhs"]),
-                         jac=int(s.stats["n_jac"]), first=int(steps[0]), rest=float(np.mean(steps[1:])),
-                         us_step=1e6 * secs.sum() / max(steps.sum(), 1), error=err, final=s.final_regime,
-                         h_last=float(s.h_inlet[-1])))
-    base = rows[0]["wall"]
+    rows = [None] * len(plan)
+    for rep in range(1 if quick else 2):   # interleaved repeats, the best of each kept (the cores are shared)
+        for i, (label, kw) in enumerate(plan):
+            s, (wall, cpu), per = _timed(n_passes, **kw)
+            if rows[i] is not None and rows[i]["cpu"] <= cpu:
+                continue
+            steps = np.array([p[0] for p in per])
+            err = float(np.max(np.abs(s.h_inlet - ref.h_inlet)) / CASE["ambient_film"]) if "physical" in label else np.nan
+            rows[i] = dict(label=label, wall=wall, cpu=cpu, steps=int(s.stats["n_steps"]), rhs=int(s.stats["n_rhs"]),
+                           jac=int(s.stats["n_jac"]), first=int(steps[0]), rest=float(np.mean(steps[1:])),
+                           us_step=1e6 * cpu / max(int(s.stats["n_steps"]), 1), error=err, final=s.final_regime,
+                           h_last=float(s.h_inlet[-1]))
+    base, base_cpu = rows[0]["wall"], rows[0]["cpu"]
     lines = [f"Case: {n_passes} ball passes of the reference point (30 N, 80 rpm, 6 balls, h_inf = 100 um), "
              "`stop_at_periodic=False`, one run, 2 shared cores. Physical model's error = max over the passes "
              f"of |h_in - ref| / h_inf against rtol 1e-6 ({t_ref:.1f} s). The earlier formulation solves "
              "another model (its verdict is its floor's), so it has no error column.", "",
-             "| formulation | wall [s] | ratio to earlier (band) | steps | steps 1st pass | steps per later pass "
-             "| us per step | error | final regime | last h_in [um] |", "|---|---|---|---|---|---|---|---|---|---|"]
+             "| formulation | CPU [s] | CPU ratio | wall [s] | wall ratio | steps | steps 1st pass | steps per later "
+             "pass | CPU us per step | error | final regime | last h_in [um] |",
+             "|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in rows:
-        lines.append(f"| {r['label']} | {r['wall']:.2f} | {r['wall'] / base:.2f} | {r['steps']} | {r['first']} | "
-                     f"{r['rest']:.0f} | {r['us_step']:.0f} | {r['error']:.1e} | {r['final']} | "
-                     f"{r['h_last'] * 1e6:.3g} |")
+        lines.append(f"| {r['label']} | {r['cpu']:.2f} | {r['cpu'] / base_cpu:.2f} | {r['wall']:.2f} | "
+                     f"{r['wall'] / base:.2f} | {r['steps']} | {r['first']} | {r['rest']:.0f} | {r['us_step']:.0f} | "
+                     f"{r['error']:.1e} | {r['final']} | {r['h_last'] * 1e6:.3g} |")
+    lines += ["", "Ratios are to the earlier formulation with SUNDIALS' band Jacobian (its cheapest run); CPU time "
+                  "(this process only) is the steadier measure on the shared cores, best of the repeats."]
     res = {"rows": rows, "reference_wall": t_ref}
     if not quick:
         # the loop of transient.study.ball.regime_map (the bench may not import study/), same settings
@@ -109,10 +114,10 @@ def run(out_dir: str = "docs", n_passes: int = 200, quick: bool = False) -> dict
                       + ", ".join(f"{k}: {v}" for k, v in counts.items()) + "."]
     fig, ax = figure(size=(5.5, 4))
     ph = [r for r in rows if np.isfinite(r["error"])]
-    ax.loglog([r["wall"] for r in ph], [max(r["error"], 1e-12) for r in ph], "o-", label="physical (front mesh)")
+    ax.loglog([r["cpu"] for r in ph], [max(r["error"], 1e-12) for r in ph], "o-", label="physical (front mesh)")
     for r in rows[:2]:
-        ax.axvline(r["wall"], ls="--" if "band" in r["label"] else ":", color="0.4", label=r["label"])
-    ax.set(xlabel="wall time [s]", ylabel="max error in h_in / h_inf")
+        ax.axvline(r["cpu"], ls="--" if "band" in r["label"] else ":", color="0.4", label=r["label"])
+    ax.set(xlabel="CPU time [s]", ylabel="max error in h_in / h_inf")
     ax.legend(fontsize=6)
     ax.set_title(f"{n_passes}-ball-pass sequence", fontsize=9)
     save(fig, os.path.join(out_dir, "bench_ball.png"))

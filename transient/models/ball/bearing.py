@@ -38,7 +38,8 @@ from dataclasses import dataclass, field, replace
 import numpy as np
 
 from transient.physics import film_formulas as hd
-from transient.physics.hertz import HertzContact, hertz_contact, meniscus_position, reduced_modulus
+from transient.physics.hertz import (HertzContact, gap_rolling_axis, gap_rolling_axis_slope, hertz_contact,
+                                     meniscus_position, reduced_modulus)
 from transient.models.ball.track import FrontTrack, UniformTrack
 from transient.checks import check_range
 from transient.results import Result, quantity, record_type, result_type
@@ -110,6 +111,41 @@ class BallSequence(Result):
     def H_central(self) -> np.ndarray:
         """Dimensionless central film ``H_c = h_c / r_b`` as plotted by the paper (r_b = ball radius = Rx)."""
         return self.h_central / self.contact.rx
+
+
+class _Meniscus:
+    """``meniscus_position`` with memory: a repeated inlet film is answered from the cache, a nearby one by
+    Newton from the previous root (the sequence's inlet films change little from ball to ball; the cold start
+    costs ~15 quadratures of Love's integral, a warm one ~4). Same tolerance, same root."""
+
+    def __init__(self, contact: HertzContact):
+        self.c = contact
+        self.cache = {}
+        self.last = None
+
+    def __call__(self, h_in: float, tol: float = 1e-12) -> float:
+        if h_in in self.cache:
+            return self.cache[h_in]
+        c = self.c
+        m = None
+        if self.last is not None and h_in > 0.0:
+            x = self.last * c.b
+            for _ in range(8):
+                g = gap_rolling_axis(c, x) - h_in
+                if abs(g) <= tol * h_in:
+                    m = x / c.b
+                    break
+                dg = gap_rolling_axis_slope(c, x)
+                xn = x - g / dg if dg > 0 else -1.0
+                if not xn > c.b:
+                    break
+                x = xn
+        if m is None:
+            m = meniscus_position(c, h_in, tol=tol)
+        if len(self.cache) < 4096:
+            self.cache[h_in] = m
+        self.last = m if m > 1.0 else None
+        return m
 
 
 @dataclass(frozen=True)
@@ -300,12 +336,13 @@ class ThrustBallBearing:
             floor = precursor_film
         else:  # the front mesh needs no floor; the uniform grid's floor mobility can drain a cell below zero
             floor = 0.0 if track.kind == "front" else 1e-9
+        meniscus = _Meniscus(c)
         for n in range(n_max):
             if record_profiles:
                 profiles.append(track.profile(x_out) * h_ref)
             vol[n] = track.volume() * h_ref * a_p
             hin = track.inlet() * h_ref
-            m = meniscus_position(c, hin)
+            m = meniscus(hin)
             Hc = hd.starved_central_film(ff.H_c, m, ff.m_c)
             Hm = hd.starved_minimum_film(ff.H_min, m, ff.m_star)
             hc = Hc * c.rx

@@ -294,6 +294,23 @@ def _face(j, ze, dze, he, dhe, xfj, dxfj, mob0, dq_dh, dhf_dh, out):
 
 
 @nb.njit(cache=True)
+def _face_q(j, ze, he, xfj, mob0, out):
+    """``_face`` without derivatives (the right-hand side): out = (q, hf, mobility)."""
+    z0, z1, z2, z3 = ze[j], ze[j + 1], ze[j + 2], ze[j + 3]
+    h0, h1, h2, h3 = he[j], he[j + 1], he[j + 2], he[j + 3]
+    d01, d02, d03, d12, d13, d23 = z0 - z1, z0 - z2, z0 - z3, z1 - z2, z1 - z3, z2 - z3
+    d3 = h0 / (d01 * d02 * d03) - h1 / (d01 * d12 * d13) + h2 / (d02 * d12 * d23) - h3 / (d03 * d13 * d23)
+    th = (xfj - z1) / (z2 - z1)
+    if h1 > 0.0 and h2 > 0.0:
+        mob = 2.0 * h1 * h1 * h2 * h2 / (h1 + h2) + mob0
+    else:
+        mob = mob0
+    out[0] = 6.0 * mob * d3
+    out[1] = (1.0 - th) * h1 + th * h2
+    out[2] = mob
+
+
+@nb.njit(cache=True)
 def _pos(indptr, indices, r, c):
     lo, hi = indptr[c], indptr[c + 1] - 1
     while lo <= hi:
@@ -335,8 +352,9 @@ def front_kernel(y, moving, s_fixed, s_lo, s_hi, alpha, beta, X, h_res, closed, 
         for i in range(n + 4):
             dze[i] = 0.0
             dhe[i] = 0.0
-    dq_dc = np.empty((n + 1, 4))   # by the real cells re[j + a] (chain dH/dc = she / width)
-    dhf_dc = np.empty((n + 1, 4))
+    m_d = n + 1 if want_jac else 1
+    dq_dc = np.empty((m_d, 4))   # by the real cells re[j + a] (chain dH/dc = she / width)
+    dhf_dc = np.empty((m_d, 4))
     tmp_q = np.empty(4)
     tmp_f = np.empty(4)
     o7 = np.empty(7)
@@ -348,6 +366,10 @@ def front_kernel(y, moving, s_fixed, s_lo, s_hi, alpha, beta, X, h_res, closed, 
         dhf_ds[j] = 0.0
         F[j] = 0.0
     for j in range(1, last + 1):
+        if not want_jac:
+            _face_q(j, ze, he, xf[j], mob0, o7)
+            q[j], hf[j], mob[j] = o7[0], o7[1], o7[2]
+            continue
         _face(j, ze, dze, he, dhe, xf[j], beta[j], mob0, tmp_q, tmp_f, o7)
         q[j], hf[j], dq_ds[j], dhf_ds[j] = o7[0], o7[1], o7[2], o7[3]
         mob[j], dml[j], dmr[j] = o7[4], o7[5], o7[6]
@@ -366,6 +388,7 @@ def front_kernel(y, moving, s_fixed, s_lo, s_hi, alpha, beta, X, h_res, closed, 
         root = math.sqrt(den * den + delta * delta)
         den_r = 0.5 * (den + root) if den >= 0.0 else 0.5 * delta * delta / (root - den)  # no cancellation
         sdot = num / den_r
+    if moving and want_jac:
         dr = 0.5 * (1.0 + den / root)
         # d num, d den by cells (stencils of faces jc and jc+1 span cells jc-2 .. jc+2)
         dnum = np.zeros(5)
@@ -416,6 +439,8 @@ def front_kernel(y, moving, s_fixed, s_lo, s_hi, alpha, beta, X, h_res, closed, 
         ha = hc + psi * (hu - hc)
         hadv[j] = ha
         F[j] = q[j] - v * ha
+        if not want_jac:
+            continue
         # derivatives of ha: by H_left, H_right (fixed sdot), by s (fixed c and sdot), by v
         th = (xf[j] - ze[kl]) / dzz
         dha_l = (1.0 - psi) * (1.0 - th) + psi * up_l + (hu - hc) * dpsi * dpe_l
@@ -494,7 +519,11 @@ class FrontLevelling:
         n, jc = mesh.n, mesh.jc
         self.wk = np.zeros((N_WORK, n + 4))
         self.iwk = np.zeros((1, n + 4), dtype=np.int64)
-        self.patterns = {False: self._pattern(n, jc, False), True: self._pattern(n, jc, True)}
+        cached = getattr(mesh, "_patterns", None)   # the pattern depends on the mesh only
+        if cached is None:
+            cached = {False: self._pattern(n, jc, False), True: self._pattern(n, jc, True)}
+            mesh._patterns = cached
+        self.patterns = cached
 
     @staticmethod
     def _pattern(n, jc, moving):

@@ -53,7 +53,14 @@ class FrontTrack:
         self.front = False
 
     def _mesh_for(self, eps: float) -> FrontMesh:
-        return FrontMesh(self.X, min(0.5 * eps, 0.05), refine=self.refine, **self.mesh_options)
+        """The mesh for a precursor ``eps`` (cached: a parched sequence repeats the same precursor)."""
+        key = float(eps)
+        cache = self.__dict__.setdefault("_meshes", {})
+        if key not in cache:
+            if len(cache) > 64:
+                cache.clear()
+            cache[key] = FrontMesh(self.X, min(0.5 * eps, 0.05), refine=self.refine, **self.mesh_options)
+        return cache[key]
 
     def start(self, h0: float = 1.0):
         """Uniform film ``h0`` before the first ball (mesh designed for a precursor of 1e-3)."""
