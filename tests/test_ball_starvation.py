@@ -110,3 +110,39 @@ def test_old_formulation_verdict_moves_with_its_mobility_floor():
     hi, lo = run(10e-6), run(3e-6)
     assert hi.regime[-1] == FLOODED and hi.h_inlet[-1] > 5e-6
     assert lo.h_inlet[-1] < 0.2 * hi.h_inlet[-1]
+
+
+def test_regime_map_loops_over_points_and_round_trips(tmp_path):
+    from transient.results import load_result
+    from transient.study.ball import RegimeMap, regime_map
+
+    b = ThrustBallBearing()
+    calls = []
+    m = regime_map(b, [6], [80.0], [20.0, 30.0], 100e-6, n_passes=20, progress=lambda k, n, p, s: calls.append(k))
+    assert calls == [1, 2] and m.regime.shape == (1, 1, 2)
+    assert list(m.names()[0, 0]) == [PARCHED, PARCHED]
+    vals, names = m.line("load", n_balls=6, speed_rpm=80.0)
+    assert list(vals) == [20.0, 30.0] and list(names) == [PARCHED, PARCHED]
+    q = load_result(m.save(tmp_path / "map"))
+    assert isinstance(q, RegimeMap) and np.array_equal(q.regime, m.regime) and q.regimes == m.regimes
+
+
+def test_regime_figures_show_regimes_values_and_the_papers_boundaries():
+    from transient.params import jeong
+    from transient.plots import ball as plots
+    from transient.study.ball import RegimeMap
+
+    Z, N, W = np.arange(1, 12), np.arange(70.0, 91.0, 5.0), np.arange(10.0, 61.0, 10.0)
+    reg = np.where(Z[:, None, None] <= 5, 0, np.where(Z[:, None, None] == 6, 1, 2)) + 0 * N[None, :, None] + 0 * W
+    m = RegimeMap(n_balls=Z, speed_rpm=N, load=W, ambient_film=100e-6, regime=reg, H_central=np.full(reg.shape, 1e-5))
+    fig = plots.regime_map(m, "n_balls", "speed_rpm", at=jeong.REFERENCE, paper=jeong.REPORTED)
+    ax = fig.axes[0]
+    assert ax.get_xlabel() == "number of balls" and "30 N" in ax.get_title() and "100 um" in ax.get_title()
+    labels = [t.get_text() for t in ax.get_legend().get_texts()]
+    assert {"fully flooded", "starved", "parched"} <= set(labels)
+    assert "paper, number of balls: flooded up to 5 balls" in labels
+    assert "paper, shaft speed: starved up to 82 rpm" in labels
+    assert sum(1 for t in ax.texts) == Z.size * N.size            # H_c written in every cell
+    fig = plots.critical_films({"n_balls": (Z, 1e-6 * (220 + 8 * Z), dict(load=30, speed_rpm=80))}, 100e-6,
+                               jeong.REPORTED)
+    assert "critical ambient film" in fig.axes[0].get_ylabel()

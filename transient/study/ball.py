@@ -79,7 +79,7 @@ class RegimeMap(Result):
 
     def names(self) -> np.ndarray:
         """The regime of every point as a string array."""
-        return np.array(self.regimes, dtype=object)[self.regime]
+        return np.array(self.regimes, dtype=object)[np.asarray(self.regime, dtype=np.int64)]
 
     def line(self, axis: str, **at) -> tuple[np.ndarray, np.ndarray]:
         """(values, regime names) along ``axis`` (``n_balls``, ``speed_rpm`` or ``load``) at the other two
