@@ -12,14 +12,16 @@ race of a thrust ball bearing from ball to ball:
    is ``h_in^n = h_in^{n-1} - Delta zeta``.
 
 Here step 3 is a transient on the oil layer ``h(x, t)`` across the track: each ball pass is an
-event that leaves the race its share ``h_c/2`` of the central film over the depression half width
-``a'`` (the Hertz semi-axis across the track, the paper's ``a_x``) and moves the displaced oil into
-side ridges (fraction ``ridge_fraction``; the rest is carried away by the ball); the nonlinear
-thin-film equation (:mod:`transient.models.ball.levelling`) is then integrated by the facade (CVODE by
-default) over the time between two balls ``t_b = 4 pi / (Z omega)`` (cage at half the shaft speed,
-90 deg contact angle). The next inlet film is the film on the track centreline just before the next
-ball. ``replenishment="chiu"`` propagates the same events with Chiu's linear Stokes-layer kernel
-(the paper's model, linearised about ``h_inf``) instead.
+event that leaves the race the outlet film of the pass, ``h_c/2`` (half the central film on each surface),
+over the depression half width ``a'`` (the Hertz semi-axis across the track, the paper's ``a_x``) and moves the
+displaced oil into side ridges (fraction ``ridge_fraction``; the rest is carried away by the ball); the
+thin-film equation with the pure ``h^3`` mobility is then integrated over the time between two balls
+``t_b = 4 pi / (Z omega)`` (cage at half the shaft speed, 90 deg contact angle) on a mesh that follows the
+re-wetting front advancing over that outlet film (:mod:`transient.models.ball.track`,
+:mod:`transient.models.ball.front`; docs/ball.md). The next inlet film is the film on the track centreline
+just before the next ball. ``grid="uniform"`` keeps the earlier formulation (uniform cells, optional
+mobility floor ``h^3 + b^3``, :mod:`transient.models.ball.levelling`); ``replenishment="chiu"`` propagates
+the same events with Chiu's linear Stokes-layer kernel (the paper's model, linearised about ``h_inf``).
 
 Regime of a pass (stated criterion): *fully flooded* if ``m >= m_c``; otherwise *starved* if the oil
 regained on the track since the previous pass, ``h_in^n - h_out^{n-1}``, is at least what the
