@@ -1,11 +1,15 @@
-"""Seed 002 (Jeong et al.): central film of a thrust ball bearing against the number of balls, speed, load and
-ambient film (Figs. 7-11); prints the regime boundaries beside the paper's.
+"""Seed 002 (Jeong et al.): the regime of a thrust ball bearing against the number of balls, speed, load and
+ambient film (Figs. 7-11), with the physical replenishment model (no mobility floor; the track keeps the
+outlet film h_c/2 of the pass; a mesh that follows the re-wetting front), beside the paper's boundaries.
 
     transient run scenarios/ball_starvation.py [--quick] [--out DIR]
 
-Each point is a ball-pass sequence run to its periodic steady state (or parched decline, at most 100
-passes) with the nonlinear thin-film reflow (CVODE, band) and, for comparison, Chiu's linear kernel.
-Figures ball_fig7..11 and ball_starvation.json into scenarios/out/ball/.
+1. The reference sequence (30 N, 80 rpm, 6 balls, 100 um) ball after ball: the physical model, the earlier
+   formulation with its mobility floor b = h_inf/10 and b = 0.03 h_inf, Chiu's linear kernel.
+2. The regime map over 1-11 balls x 70-90 rpm x 10-60 N at 100 um (Figs. 7-10), and the 1-D cuts of it.
+3. What would reproduce the paper: the ambient film at which the bearing stops re-wetting its track, against
+   the ball count, the speed and the load (Fig. 11); the surface tension at which the 6-ball bearing would.
+Figures ball_*.png and ball_starvation.json (+ the map as ball_map.npz) into scenarios/out/ball/.
 """
 
 from __future__ import annotations
@@ -13,62 +17,93 @@ from __future__ import annotations
 import sys
 import time
 from pathlib import Path
+from types import SimpleNamespace
 
 import numpy as np
 
 from transient import ThrustBallBearing
 from transient.params import jeong
 from transient.plots import ball as plots, save
-from transient.study.ball import boundaries, sweep
+from transient.study.ball import MAP_SETTINGS, critical_value, regime_map, sweep
 from transient.study.scenario import JsonRecord, log, parser
 
 OUT = Path(__file__).resolve().parent / "out" / "ball"
-THIN = dict(replenishment="thin_film", n_cells=100, rtol=1e-4, linear_solver="band")
-CHIU = dict(replenishment="chiu")
-FIGS = {"n_balls": "fig7_balls", "speed_rpm": "fig8_speed", "load": "fig9_load"}
+REF = jeong.REFERENCE
 
 
 def main(argv=None):
     a = parser(__doc__, OUT).parse_args(argv)
     out = Path(a.out)
-    values = {"n_balls": np.arange(1, 12, 2 if a.quick else 1), "speed_rpm": np.arange(70, 91, 5 if a.quick else 2),
-              "load": np.arange(10, 61, 10 if a.quick else 5)}
-    ambients = (100e-6, 50e-6)
-    rec = JsonRecord(out / "ball_starvation.json", dict(quick=a.quick, values=values, ambients=ambients))
+    q = a.quick
+    Z = np.array([1, 6, 11]) if q else np.arange(1, 12)
+    N = np.array([70.0, 90.0]) if q else np.arange(70.0, 91.0, 5.0)
+    W = np.array([10.0, 60.0]) if q else np.arange(10.0, 61.0, 10.0)
+    rec = JsonRecord(out / "ball_starvation.json", dict(quick=q, Z=Z, N=N, W=W, settings=MAP_SETTINGS))
     brg = ThrustBallBearing(**jeong.BEARING)
     t0 = time.perf_counter()
-    runs = {}
-    for swept, vals in values.items():
-        series = {}
-        for hinf in ambients:
-            for name, kw in (("thin film", THIN), ("Chiu linear", CHIU)):
-                seqs = sweep(brg, swept, vals, dict(ambient_film=hinf), **kw)
-                series[f"{name}, h_inf = {hinf * 1e6:.0f} um"] = seqs
-                runs[f"{swept} | {name} | {hinf * 1e6:.0f} um"] = dict(
-                    values=vals, boundaries=boundaries(vals, seqs), H_central=[s.H_central[-1] for s in seqs],
-                    h_inlet_um=[s.h_inlet[-1] * 1e6 for s in seqs], regime=[s.final_regime for s in seqs])
-        fixed = dict(jeong.REFERENCE, ambient_film=None)  # the series differ in ambient film
-        save(plots.regime_sweep(swept, vals, series, fixed, jeong.REPORTED[swept]), out / f"ball_{FIGS[swept]}.png")
-        if swept == "load":
-            save(plots.meniscus(vals, {k: v for k, v in series.items() if "thin" in k}, fixed),
-                 out / "ball_fig10_meniscus.png")
-        rec.put("sweeps", runs)
-    series = {f"h_inf = {h * 1e6:.0f} um": sweep(brg, "n_balls", values["n_balls"], dict(ambient_film=h), **THIN)
-              for h in (50e-6, 100e-6, 125e-6, 150e-6)}
-    rec.put("ambient_film_sweep", {k: dict(boundaries=boundaries(values["n_balls"], v),
-                                           regime=[s.final_regime for s in v]) for k, v in series.items()})
-    save(plots.regime_sweep("n_balls", values["n_balls"], series, dict(jeong.REFERENCE, ambient_film=None),
-                            jeong.REPORTED["n_balls"], title="Fig. 11: central film against the number of balls for "
-                            "four ambient films (30 N, 80 rpm)"), out / "ball_fig11_ambient.png")
-    ref = jeong.REFERENCE
-    seqs = {f"{name}, h_inf = {h * 1e6:.0f} um": brg.sequence(load=ref["load"], speed_rpm=ref["speed_rpm"], ambient_film=h,
-                                                               n_passes=60, stop_at_periodic=False, **kw)
-            for h in ambients for name, kw in (("thin film", THIN), ("Chiu", CHIU))}
-    save(plots.inlet_sequence(seqs, dict(ref, ambient_film=None)), out / "ball_sequence.png")
-    log(f"{sum(len(v['values']) for v in runs.values())} sequences in {time.perf_counter() - t0:.1f} s")
-    log("paper: flooded to 5 balls / 78 rpm / 25 N; starved to 6 balls / 82 rpm / 40 N; parched beyond")
-    for k, v in runs.items():
-        log(f"{k:40s}: " + "; ".join(f"{r} {lo:g}-{hi:g}" for r, (lo, hi) in v["boundaries"].items()))
+
+    # 1. the reference sequence, four ways
+    kinds = {"physical (front mesh, precursor h_c/2)": dict(MAP_SETTINGS),
+             "floor b = h_inf/10 (earlier)": dict(grid="uniform", n_cells=100, mobility_film=10e-6, rtol=1e-4),
+             "floor b = 0.03 h_inf": dict(grid="uniform", n_cells=100, mobility_film=3e-6, rtol=1e-4),
+             "Chiu linear (the paper's)": dict(replenishment="chiu")}
+    seqs = {k: brg.sequence(load=REF["load"], speed_rpm=REF["speed_rpm"], ambient_film=REF["ambient_film"],
+                            n_passes=30, stop_at_periodic=False, **kw) for k, kw in kinds.items()}
+    save(plots.inlet_sequence(seqs, REF), out / "ball_sequence.png")
+    rec.put("reference", {k: dict(h_inlet_um=(s.h_inlet * 1e6).tolist(), regime=s.regime) for k, s in seqs.items()})
+
+    # 2. the regime map at the paper's ambient film, and its cuts (Figs. 7-9)
+    t1 = time.perf_counter()
+    rmap = regime_map(brg, Z, N, W, REF["ambient_film"])
+    t_map = time.perf_counter() - t1
+    rmap.save(out / "ball_map.npz")
+    for x, y in (("n_balls", "speed_rpm"), ("n_balls", "load"), ("speed_rpm", "load")):
+        save(plots.regime_map(rmap, x, y, at=REF, paper=jeong.REPORTED), out / f"ball_map_{x}_{y}.png")
+    chiu = {ax: sweep(brg, ax, vals, n_passes=100, replenishment="chiu") for ax, vals in
+            (("n_balls", Z), ("speed_rpm", N), ("load", W))}
+    cuts = {}
+    for ax, vals, fig in (("n_balls", Z, "fig7_balls"), ("speed_rpm", N, "fig8_speed"), ("load", W, "fig9_load")):
+        at = {k: REF[k] for k in ("n_balls", "speed_rpm", "load") if k != ax}
+        idx = [slice(None) if k == ax else int(np.argmin(np.abs(np.asarray(getattr(rmap, k)) - at[k])))
+               for k in ("n_balls", "speed_rpm", "load")]
+        phys = [SimpleNamespace(H_central=np.array([h]), final_regime=r)
+                for h, r in zip(rmap.H_central[tuple(idx)], rmap.names()[tuple(idx)])]
+        cuts[ax] = dict(values=vals, regime=[p.final_regime for p in phys], H_c=[p.H_central[0] for p in phys],
+                        chiu_regime=[s.final_regime for s in chiu[ax]])
+        save(plots.regime_sweep(ax, vals, {"physical model": phys, "Chiu linear": chiu[ax]}, REF,
+                                jeong.REPORTED[ax]), out / f"ball_{fig}.png")
+    rec.put("map", dict(seconds=t_map, points=int(rmap.regime.size), counts={r: int(np.sum(rmap.names() == r))
+                                                                            for r in rmap.regimes}, cuts=cuts))
+    log(f"regime map: {rmap.regime.size} points in {t_map:.0f} s; "
+        + ", ".join(f"{r}: {int(np.sum(rmap.names() == r))}" for r in rmap.regimes))
+
+    # 3. what would reproduce the paper: the critical ambient film along each axis, the critical surface tension
+    crit = {}
+    lines = {}
+    for ax, vals in (("n_balls", Z), ("speed_rpm", N), ("load", W)):
+        rows = [critical_value(brg, "ambient_film", 100e-6, 400e-6, point={ax: v}, rel_tol=0.05 if q else 0.02,
+                               n_passes=30) for v in vals]
+        crit[ax] = [dict(value=float(v), h_crit_um=None if r["value"] is None else r["value"] * 1e6,
+                         bracket_um=[r["lo"] * 1e6, r["hi"] * 1e6], regimes=[r["regime_lo"], r["regime_hi"]])
+                    for v, r in zip(vals, rows)]
+        lines[ax] = (vals, [r["value"] for r in rows], {k: REF[k] for k in ("n_balls", "speed_rpm", "load") if k != ax})
+        rec.put("critical_ambient_film", crit)
+        log(f"critical ambient film vs {ax}: " + ", ".join(f"{c['value']:g}: {c['h_crit_um'] or float('nan'):.0f} um"
+                                                          for c in crit[ax]))
+    save(plots.critical_films(lines, REF["ambient_film"], jeong.REPORTED), out / "ball_fig11_critical_film.png")
+    films = (100e-6, 150e-6, 300e-6) if q else (100e-6, 125e-6, 150e-6, 250e-6, 300e-6)   # Fig. 11 and beyond
+    fig11 = {f"h_inf = {h * 1e6:.0f} um": sweep(brg, "n_balls", Z, dict(ambient_film=h), n_passes=30, **MAP_SETTINGS)
+             for h in films}
+    save(plots.regime_sweep("n_balls", Z, fig11, dict(REF, ambient_film=None), jeong.REPORTED["n_balls"],
+                            title="Fig. 11: central film against the number of balls for several ambient films "
+                                  "(30 N, 80 rpm)"), out / "ball_fig11_ambient.png")
+    rec.put("fig11", {k: [s.final_regime for s in v] for k, v in fig11.items()})
+    sig = critical_value(brg, "surface_tension", 0.036, 0.9, rel_tol=0.05, n_passes=30)
+    rec.put("critical_surface_tension", sig)
+    log(f"6 balls at 100 um: {sig['regime_lo']} at sigma = {sig['lo']:.3g} N/m, {sig['regime_hi']} at "
+        f"{sig['hi']:.3g} N/m" + (f" (switch near {sig['value']:.3g} N/m)" if sig["value"] else ""))
+    log(f"done in {time.perf_counter() - t0:.0f} s; paper: flooded to 5 balls / 78 rpm / 25 N, starved to 6 balls "
+        "/ 82 rpm / 40 N, parched beyond")
     return rec.data
 
 

@@ -88,3 +88,94 @@ def inlet_sequence(series: dict, fixed: dict):
     ax.legend(fontsize=7)
     ax.grid(True, which="both", lw=0.3)
     return fig
+
+
+_AXES = ("n_balls", "speed_rpm", "load")
+_PAPER_EDGE = {"flooded": "fully flooded", "starved": "starved"}
+
+
+def regime_map(rmap, x: str = "n_balls", y: str = "speed_rpm", at: dict | None = None, paper: dict | None = None,
+               title: str = ""):
+    """Regime map over two swept values (a :class:`transient.study.ball.RegimeMap`), the third fixed at ``at``
+    (nearest map value; default the middle one): one colour per regime (cells), the value of ``H_c = h_c/r_b``
+    written in each cell, the paper's boundaries (``paper[axis] = {"flooded": last flooded, "starved": last
+    starved}``) drawn as dashed lines between the regimes they separate."""
+    third = [a for a in _AXES if a not in (x, y)][0]
+    vals3 = np.asarray(getattr(rmap, third), float)
+    v3 = vals3[len(vals3) // 2] if not at or third not in at else float(at[third])
+    k3 = int(np.argmin(np.abs(vals3 - v3)))
+    names = rmap.names()
+    order = {a: i for i, a in enumerate(_AXES)}
+    sl = [slice(None)] * 3
+    sl[order[third]] = k3
+    reg = names[tuple(sl)]
+    hc = rmap.H_central[tuple(sl)]
+    if order[x] > order[y]:  # rows follow x
+        reg, hc = reg.T, hc.T
+    xs, ys = np.asarray(getattr(rmap, x), float), np.asarray(getattr(rmap, y), float)
+    fig, ax = figure(size=(7.0, 4.6))
+
+    def edges(v):
+        mid = 0.5 * (v[1:] + v[:-1])
+        return np.concatenate([[v[0] - (mid[0] - v[0]) if v.size > 1 else v[0] - 0.5], mid,
+                               [v[-1] + (v[-1] - mid[-1]) if v.size > 1 else v[-1] + 0.5]])
+
+    ex, ey = edges(xs), edges(ys)
+    for i in range(xs.size):
+        for j in range(ys.size):
+            ax.fill_between([ex[i], ex[i + 1]], ey[j], ey[j + 1], color=REGIME_COLOURS[reg[i, j]], alpha=0.75, lw=0)
+            ax.text(xs[i], ys[j], f"{hc[i, j] * 1e6:.1f}", ha="center", va="center", fontsize=6)
+    handles = [ax.fill_between([], [], [], color=c, alpha=0.75, label=r) for r, c in REGIME_COLOURS.items()]
+    for axis, line, ls in ((x, ax.axvline, "--"), (y, ax.axhline, ":")):
+        for k, v in (paper or {}).get(axis, {}).items():
+            pos = v + 0.5 if axis == "n_balls" else v   # between the last ball count of a regime and the next
+            col = REGIME_COLOURS[_PAPER_EDGE[k]]
+            line(pos, color=col, ls=ls, lw=2.0)
+            what = LABELS[axis].split(" [")[0]
+            unit = {"n_balls": " balls", "speed_rpm": " rpm", "load": " N"}[axis]
+            handles.append(ax.plot([], [], color=col, ls=ls, lw=2.0,
+                                   label=f"paper, {what}: {k} up to {v:g}{unit}")[0])
+    ax.set(xlabel=LABELS[x], ylabel=LABELS[y], xlim=(ex[0], ex[-1]), ylim=(ey[0], ey[-1]))
+    ax.legend(handles=handles, fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0))
+    fixed = {third: float(getattr(rmap, third)[k3]), "ambient_film": rmap.ambient_film}
+    ax.set_title(title or f"Final regime (cell colour) and H_c x 1e6 (number), {fixed_title(fixed, '')}", fontsize=9)
+    return fig
+
+
+def critical_films(lines: dict, ambient: float | None = None, paper: dict | None = None, title: str = ""):
+    """The ambient film at which the bearing stops re-wetting its track, against each swept value.
+
+    ``lines``: axis -> (values, critical films [m], fixed dict); one panel per axis; ``ambient`` the paper's
+    ambient film (horizontal line: below the curve the bearing parches); ``paper`` the paper's boundaries."""
+    fig, axs = figure(1, len(lines), size=(3.3 * len(lines), 3.6))
+    axs = np.atleast_1d(axs)
+    for ax, (axis, (vals, crit, fixed)) in zip(axs, lines.items()):
+        vals = np.asarray(vals, float)
+        crit = np.asarray([np.nan if c is None else c for c in crit], float) * 1e6
+        ax.fill_between(vals, crit, np.nanmax(crit) * 1.3 if np.isfinite(crit).any() else 1, color=REGIME_COLOURS["fully flooded"], alpha=0.3, lw=0)
+        ax.fill_between(vals, 0, crit, color=REGIME_COLOURS["parched"], alpha=0.25, lw=0)
+        ax.plot(vals, crit, "ko-", ms=4, label="model: critical ambient film")
+        if ambient is not None:
+            ax.axhline(ambient * 1e6, color="tab:blue", lw=1, label=f"paper's ambient film {ambient * 1e6:g} um")
+        for k, v in (paper or {}).get(axis, {}).items():
+            ax.axvline(v, color=REGIME_COLOURS[_PAPER_EDGE[k]], ls="--", lw=1, label=f"paper: {k} to {v:g}")
+        ax.set(xlabel=LABELS[axis], ylabel="critical ambient film [um]")
+        ax.set_ylim(bottom=0)
+        ax.set_title(fixed_title(fixed, axis), fontsize=8)
+        ax.grid(True, lw=0.3)
+    axs[0].legend(fontsize=6, loc="lower left")
+    fig.suptitle(title or "Ambient film needed to keep re-wetting the track (flooded above, parched below)", fontsize=9)
+    return fig
+
+
+def convergence(rows: list, key: str, label: str, title: str = ""):
+    """Inlet film of the 2nd ball (the first re-wetting) against a convergence parameter (``key`` of the rows;
+    ``None`` is the physical value, written as such)."""
+    fig, ax = figure(size=(5.2, 3.8))
+    xs = [r[key] for r in rows]
+    ax.plot(range(len(xs)), [r["h_inlet"][1] * 1e6 for r in rows], "ko-")
+    ax.set_xticks(range(len(xs)), [("physical" if x is None else f"{x:g}") for x in xs], fontsize=7)
+    ax.set(xlabel=label, ylabel="inlet film of ball 2 [um]")
+    ax.set_title(title, fontsize=9)
+    ax.grid(True, lw=0.3)
+    return fig

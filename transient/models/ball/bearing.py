@@ -12,14 +12,16 @@ race of a thrust ball bearing from ball to ball:
    is ``h_in^n = h_in^{n-1} - Delta zeta``.
 
 Here step 3 is a transient on the oil layer ``h(x, t)`` across the track: each ball pass is an
-event that leaves the race its share ``h_c/2`` of the central film over the depression half width
-``a'`` (the Hertz semi-axis across the track, the paper's ``a_x``) and moves the displaced oil into
-side ridges (fraction ``ridge_fraction``; the rest is carried away by the ball); the nonlinear
-thin-film equation (:mod:`transient.models.ball.levelling`) is then integrated by the facade (CVODE by
-default) over the time between two balls ``t_b = 4 pi / (Z omega)`` (cage at half the shaft speed,
-90 deg contact angle). The next inlet film is the film on the track centreline just before the next
-ball. ``replenishment="chiu"`` propagates the same events with Chiu's linear Stokes-layer kernel
-(the paper's model, linearised about ``h_inf``) instead.
+event that leaves the race the outlet film of the pass, ``h_c/2`` (half the central film on each surface),
+over the depression half width ``a'`` (the Hertz semi-axis across the track, the paper's ``a_x``) and moves the
+displaced oil into side ridges (fraction ``ridge_fraction``; the rest is carried away by the ball); the
+thin-film equation with the pure ``h^3`` mobility is then integrated over the time between two balls
+``t_b = 4 pi / (Z omega)`` (cage at half the shaft speed, 90 deg contact angle) on a mesh that follows the
+re-wetting front advancing over that outlet film (:mod:`transient.models.ball.track`,
+:mod:`transient.models.ball.front`; docs/ball.md). The next inlet film is the film on the track centreline
+just before the next ball. ``grid="uniform"`` keeps the earlier formulation (uniform cells, optional
+mobility floor ``h^3 + b^3``, :mod:`transient.models.ball.levelling`); ``replenishment="chiu"`` propagates
+the same events with Chiu's linear Stokes-layer kernel (the paper's model, linearised about ``h_inf``).
 
 Regime of a pass (stated criterion): *fully flooded* if ``m >= m_c``; otherwise *starved* if the oil
 regained on the track since the previous pass, ``h_in^n - h_out^{n-1}``, is at least what the
@@ -38,14 +40,15 @@ from dataclasses import dataclass, field, replace
 import numpy as np
 
 from transient.physics import film_formulas as hd
-from transient.physics.hertz import HertzContact, hertz_contact, meniscus_position, reduced_modulus
-from transient.models.ball.levelling import LevellingGrid, chiu_rate
-from transient.solvers.integrate import solve
+from transient.physics.hertz import (HertzContact, gap_rolling_axis, gap_rolling_axis_slope, hertz_contact,
+                                     meniscus_position, reduced_modulus)
+from transient.models.ball.track import FrontTrack, UniformTrack
 from transient.checks import check_range
 from transient.results import Result, quantity, record_type, result_type
 
 FLOODED, STARVED, PARCHED = "fully flooded", "starved", "parched"
 REPLENISHMENT = ("thin_film", "chiu", "chiu_thin")
+GRIDS = ("front", "uniform")
 
 
 
@@ -110,6 +113,41 @@ class BallSequence(Result):
     def H_central(self) -> np.ndarray:
         """Dimensionless central film ``H_c = h_c / r_b`` as plotted by the paper (r_b = ball radius = Rx)."""
         return self.h_central / self.contact.rx
+
+
+class _Meniscus:
+    """``meniscus_position`` with memory: a repeated inlet film is answered from the cache, a nearby one by
+    Newton from the previous root (the sequence's inlet films change little from ball to ball; the cold start
+    costs ~15 quadratures of Love's integral, a warm one ~4). Same tolerance, same root."""
+
+    def __init__(self, contact: HertzContact):
+        self.c = contact
+        self.cache = {}
+        self.last = None
+
+    def __call__(self, h_in: float, tol: float = 1e-12) -> float:
+        if h_in in self.cache:
+            return self.cache[h_in]
+        c = self.c
+        m = None
+        if self.last is not None and h_in > 0.0:
+            x = self.last * c.b
+            for _ in range(8):
+                g = gap_rolling_axis(c, x) - h_in
+                if abs(g) <= tol * h_in:
+                    m = x / c.b
+                    break
+                dg = gap_rolling_axis_slope(c, x)
+                xn = x - g / dg if dg > 0 else -1.0
+                if not xn > c.b:
+                    break
+                x = xn
+        if m is None:
+            m = meniscus_position(c, h_in, tol=tol)
+        if len(self.cache) < 4096:
+            self.cache[h_in] = m
+        self.last = m if m > 1.0 else None
+        return m
 
 
 @dataclass(frozen=True)
@@ -198,69 +236,90 @@ class ThrustBallBearing:
 
     # the sequence ---------------------------------------------------------------------------------
     def sequence(self, load: float, speed_rpm: float, ambient_film: float, n_passes: int = 200, *,
-                 replenishment: str = "thin_film", method: str = "cvode", rtol: float = 1e-6,
-                 atol: float = 1e-10, dt: float | None = None, n_cells: int = 200,
+                 replenishment: str = "thin_film", grid: str = "front", method: str = "cvode", rtol: float = 1e-6,
+                 atol: float = 1e-10, dt: float | None = None, n_cells: int = 200, refine: float = 1.0,
                  reservoir_distance: float | None = None, bc: str = "reservoir",
                  ridge_fraction: float = 1.0, ridge_width: float | None = None,
-                 precursor_film: float = 1e-9, mobility_film: float | None = None, periodic_tol: float = 1e-4, stop_at_periodic: bool = True,
-                 record_profiles: bool = False, linear_solver: str = "auto") -> BallSequence:
+                 precursor_film: float | None = None, mobility_film: float = 0.0,
+                 front_level: float = 3.0, front_tau: float = 1e-3, edge_width: float | None = None, periodic_tol: float = 1e-4,
+                 stop_at_periodic: bool = True, record_profiles: bool = False,
+                 linear_solver: str = "auto") -> BallSequence:
         """Inlet and central film ball after ball (module docstring).
 
         Parameters
         ----------
-        load : TOTAL axial load [N]; speed_rpm : shaft speed [rpm]; ambient_film : ``h_inf`` [m].
+        load : TOTAL axial load [N]; speed_rpm : shaft speed [rpm]; ambient_film : ``h_inf`` [m], at least the
+            fully flooded central film (a thinner layer cannot feed the contact it is said to flood).
         n_passes : maximum number of ball passes over the same point of the race.
         replenishment : ``"thin_film"`` (nonlinear levelling, integrated by ``method``), ``"chiu"``
             (Chiu's linear kernel) or ``"chiu_thin"`` (its thin-film long-wave limit).
+        grid : ``"front"`` (default: a mesh that follows the re-wetting front, no mobility floor; see
+            :mod:`transient.models.ball.front`) or ``"uniform"`` (``n_cells`` uniform cells: the earlier
+            formulation, with the mobility floor ``mobility_film`` if given; Chiu always uses it).
         method, rtol, atol, dt, linear_solver : passed to :func:`transient.solvers.integrate.solve`
             (atol in units of ``h_inf``; dt in units of the levelling time, for ``rk4``).
-        n_cells : cells across the half track ``[0, reservoir_distance]``.
+        n_cells : uniform cells across the half track ``[0, reservoir_distance]`` (``grid="uniform"``, Chiu).
+        refine : refinement factor of the front mesh (cell sizes and growth rates divided by it).
         reservoir_distance : where the undisturbed ambient film is [m] (default: the ball radius).
         bc : ``"reservoir"`` (ambient film held there) or ``"closed"`` (no flux: a closed groove).
         ridge_fraction : share of the oil pushed off the track that stays on the race as side ridges.
         ridge_width : width of each side ridge [m] (default ``a'``).
-        precursor_film : lower bound of the film the ball leaves on the race [m].
-        mobility_film : ``b`` [m] of the regularised mobility ``h^3 + b^3`` of the levelling
-            (default ``h_inf / 10``; see :class:`transient.models.ball.levelling.LevellingGrid`).
+        precursor_film : film the ball leaves on the band [m]; default (None): the outlet film of the pass,
+            half the central film on each surface, ``h_c/2``; a number replaces it by ``max(h_c/2, value)``
+            (the convergence study towards the physical value). The uniform grid keeps its earlier floor of
+            1 nm by default (its floor mobility can drain a cell below zero).
+        mobility_film : ``b`` [m] of a regularised mobility ``h^3 + b^3`` (0: none, the physical model;
+            ``h_inf/10`` was the earlier formulation's arbitrary floor).
+        edge_width : width [m] of the wall of the depression (``grid="front"``; default ``a'/50``; 0 = the
+            paper's rectangular depression, the limit it converges to).
+        front_level, front_tau : the front mesh follows the level ``front_level * h_out`` with relaxation
+            time ``front_tau`` (scaled).
         periodic_tol : relative change of ``h_inf`` over 3 passes that counts as periodic.
         """
         if replenishment not in REPLENISHMENT:
             raise ValueError(f"replenishment = {replenishment!r} must be one of {REPLENISHMENT}")
-        check_range("ambient_film", ambient_film, "m", 0.0, 1e-2, low_open=True, high_open=True)
+        if grid not in GRIDS:
+            raise ValueError(f"grid = {grid!r} must be one of {GRIDS}")
         if int(n_passes) != n_passes or n_passes < 1:
             raise ValueError(f"n_passes = {n_passes!r} [-] must be an integer >= 1")
         check_range("ridge_fraction", ridge_fraction, "-", 0.0, 1.0, low_open=False, high_open=False)
-        check_range("precursor_film", precursor_film, "m", 0.0, ambient_film, low_open=True, high_open=True)
         c = self.contact(load)
         ff = self.flooded_film(load, speed_rpm)
+        check_range("ambient_film", ambient_film, "m", ff.h_c, 1e-2, low_open=False, high_open=True,
+                    why=f"(at least the fully flooded central film h_c = {ff.h_c:.4g} m at {load:g} N, "
+                        f"{speed_rpm:g} rpm)")
+        if precursor_film is not None:
+            check_range("precursor_film", precursor_film, "m", 0.0, ambient_film, low_open=True, high_open=True,
+                        why="(below the ambient film)")
+        check_range("mobility_film", mobility_film, "m", 0.0, ambient_film, low_open=False, high_open=True,
+                    why="(below the ambient film)")
+        check_range("refine", refine, "-", 0.05, 64.0)
+        check_range("front_level", front_level, "-", 1.0, 1e3, low_open=True,
+                    why="(the level the front mesh follows, in units of the precursor film)")
+        check_range("front_tau", front_tau, "-", 0.0, 1e3, low_open=True)
         t_b = self.pass_interval(speed_rpm)
         a_p = c.a
         X = 0.5 * self.ball_diameter if reservoir_distance is None else reservoir_distance
         check_range("reservoir_distance", X, "m", 2.0 * a_p, 1.0, low_open=True, high_open=True)
         w_r = a_p if ridge_width is None else ridge_width
         check_range("ridge_width", w_r, "m", 0.0, X - a_p, high_open=False, low_open=True)
+        ew = 0.02 * a_p if edge_width is None else edge_width
+        check_range("edge_width", ew, "m", 0.0, 0.5 * a_p, why="(the wall of the depression, at most a'/2)")
         h_ref = ambient_film
-        b_mob = 0.1 * ambient_film if mobility_film is None else mobility_film
-        check_range("mobility_film", b_mob, "m", 0.0, ambient_film, low_open=False, high_open=True)
-        grid = LevellingGrid(n_cells, X / a_p, bc, h_res=1.0, mobility_film=b_mob / h_ref)
         T = 3.0 * self.viscosity * a_p ** 4 / (self.surface_tension * h_ref ** 3)  # levelling time [s]
         tb_hat = t_b / T
-        xs = grid.x
-        # share of each cell inside the depression |x| < a' (exact edge, no O(dx) quantisation)
-        band = np.clip((1.0 - (xs - 0.5 * grid.dx)) / grid.dx, 0.0, 1.0)
-        if not band.any():
-            raise ValueError(f"n_cells = {n_cells} leaves no cell inside the depression half width a' = {a_p:.3e} m")
-        rmask = (xs >= 1.0) & (xs < 1.0 + w_r / a_p)
-        ridge_shape = np.where(rmask, np.sin(np.pi * (xs - 1.0) / (w_r / a_p)), 0.0)
-        if ridge_fraction > 0 and ridge_shape.sum() <= 0:
-            raise ValueError(f"ridge_width = {w_r:.3e} m is narrower than one cell ({grid.dx * a_p:.3e} m)")
-        ridge_shape = ridge_shape / (ridge_shape.sum() * grid.dx) if ridge_shape.sum() > 0 else ridge_shape
-        if replenishment != "thin_film":
-            kap = grid.mode_wavenumbers() / a_p  # SI wavenumbers of the grid's cosine modes
-            decay = np.exp(-chiu_rate(kap, h_ref, self.surface_tension, self.viscosity,
-                                      thin=(replenishment == "chiu_thin")) * t_b)
+        if replenishment == "thin_film" and grid == "front":
+            track = FrontTrack(X / a_p, bc, refine=refine, level=front_level, tau=front_tau,
+                               mobility_film=mobility_film / h_ref, edge=ew / a_p)
+        else:
+            track = UniformTrack(n_cells, X / a_p, bc, replenishment=replenishment,
+                                 mobility_film=mobility_film / h_ref)
+            if replenishment != "thin_film":
+                track.chiu_decay = UniformTrack.chiu_decay_factors(track.grid, a_p, h_ref, self.surface_tension,
+                                                                   self.viscosity, t_b, replenishment == "chiu_thin")
+        track.start(1.0)
+        x_out = np.linspace(0.0, X / a_p, 401) if track.kind == "front" else track.grid.x
 
-        h = np.ones(grid.n)
         n_max = int(n_passes)
         h_in = np.empty(n_max)
         h_cen = np.empty(n_max)
@@ -270,17 +329,22 @@ class ThrustBallBearing:
         vol = np.empty(n_max)
         regime = []
         profiles = [] if record_profiles else None
-        st = {"n_steps": 0, "n_rhs": 0, "n_jac": 0, "wall_time": 0.0, "integrate_time": 0.0}
+        st = {"n_steps": 0, "n_rhs": 0, "n_jac": 0, "n_freeze": 0, "wall_time": 0.0, "integrate_time": 0.0}
         wall0 = time.perf_counter()
         periodic, n_per, calm = False, -1, 0
         h_out_prev = 0.0
         n_run = n_max
+        if precursor_film is not None:
+            floor = precursor_film
+        else:  # the front mesh needs no floor; the uniform grid's floor mobility can drain a cell below zero
+            floor = 0.0 if track.kind == "front" else 1e-9
+        meniscus = _Meniscus(c)
         for n in range(n_max):
             if record_profiles:
-                profiles.append(h * h_ref)
-            vol[n] = grid.volume(h) * h_ref * a_p
-            hin = max(float(h[0]), 0.0) * h_ref
-            m = meniscus_position(c, hin)
+                profiles.append(track.profile(x_out) * h_ref)
+            vol[n] = track.volume() * h_ref * a_p
+            hin = track.inlet() * h_ref
+            m = meniscus(hin)
             Hc = hd.starved_central_film(ff.H_c, m, ff.m_c)
             Hm = hd.starved_minimum_film(ff.H_min, m, ff.m_star)
             hc = Hc * c.rx
@@ -302,34 +366,24 @@ class ThrustBallBearing:
                     n_run = n + 1
                     break
             # ball pass: the track keeps h_out, the displaced oil goes into side ridges
-            h_out = max(0.5 * hc, precursor_film)
+            h_out = max(0.5 * hc, floor)
+            if not h_out > 0:
+                raise RuntimeError(f"pass {n}: the contact left no film (h_in = {hin:.3g} m); the precursor must be > 0")
             h_outs[n] = h_out
             h_out_prev = h_out
-            ho = h_out / h_ref
-            excess = band * np.maximum(h - ho, 0.0)
-            h = h - excess
-            if ridge_fraction > 0:
-                h = h + ridge_fraction * excess.sum() * grid.dx * ridge_shape
+            track.ball_pass(h_out / h_ref, ridge_fraction, w_r / a_p)
             # replenishment until the next ball
             if n == n_max - 1:
                 break
             t0 = time.perf_counter()
-            if replenishment == "thin_film":
-                res = solve(grid.problem(h, name="ball_levelling"), np.array([0.0, tb_hat]), method=method,
-                            rtol=rtol, atol=atol, dt=dt, linear_solver=linear_solver)
-                if not res.success:
-                    raise RuntimeError(f"levelling after pass {n} failed ({method}): {res.message}")
-                h = np.array(res.y[-1])
-                st["n_steps"] += res.stats.n_steps
-                st["n_rhs"] += res.stats.n_rhs
-                st["n_jac"] += res.stats.n_jac
-            else:
-                ref = 1.0 if bc == "reservoir" else 0.0
-                h = ref + grid.from_modes(grid.to_modes(h - ref) * decay)
+            try:
+                track.relax(tb_hat, st, method=method, rtol=rtol, atol=atol, linear_solver=linear_solver, dt=dt)
+            except RuntimeError as e:
+                raise RuntimeError(f"levelling after pass {n}: {e}") from None
             st["integrate_time"] += time.perf_counter() - t0
         st["wall_time"] = time.perf_counter() - wall0
         sl = slice(0, n_run)
-        h_outs[n_run - 1] = max(0.5 * h_cen[n_run - 1], precursor_film)
+        h_outs[n_run - 1] = max(0.5 * h_cen[n_run - 1], floor)
         declining = False
         if not periodic and n_run >= 6:
             tail = h_in[n_run - 6:n_run]
@@ -342,5 +396,5 @@ class ThrustBallBearing:
                             h_outlet=h_outs[sl].copy(), m=ms[sl].copy(), regime=regime[:n_run], m_c=ff.m_c,
                             m_star=ff.m_star, flooded=ff, contact=c, t_between=t_b, periodic=periodic,
                             n_periodic=n_per, declining=declining, final_regime=final, stats=st,
-                            x=xs * a_p, profiles=np.array(profiles) if record_profiles else None,
+                            x=x_out * a_p, profiles=np.array(profiles) if record_profiles else None,
                             volume=vol[sl].copy())

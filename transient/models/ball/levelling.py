@@ -1,5 +1,6 @@
-"""Surface-tension levelling of an oil layer across a rolling track: nonlinear thin-film equation (MOL)
-and Chiu's (1974) linear Fourier solution.
+"""Surface-tension levelling of an oil layer across a rolling track: nonlinear thin-film equation (MOL) on a
+uniform grid (the earlier formulation, with its optional mobility floor; the physical model with re-wetting
+fronts is :mod:`transient.models.ball.front`) and Chiu's (1974) linear Fourier solution.
 
 Thin-film (lubrication) equation for the oil layer ``h(x, t)`` on a flat surface, surface tension
 ``sigma``, viscosity ``eta`` (no gravity, no slip at the wall, free surface)::
