@@ -232,3 +232,14 @@ def test_noise_from_the_periodic_state_equals_the_settled_noise():
     assert abs(a.level_db - b.level_db) < 1e-3 and np.allclose(a.harmonic_levels_db, b.harmonic_levels_db, atol=0.02)
     with pytest.raises(NotPeriodicError, match="no stable periodic orbit"):
         bearing_noise(_orbit(9500.0), revolutions=1, harmonics=2, rtol=1e-5)
+
+
+def test_the_bench_baseline_is_todays_settle_loop():
+    """bench/ may not import study/: its copy of the Fig. 8 settle loop must stay the same loop."""
+    from transient.bench.periodic import settle_loop
+    from transient.study.journal import settled_unbalance_orbit
+
+    o = _orbit(5000.0)
+    shape, n, change = settle_loop(o, 1e-5, 16)
+    ref = settled_unbalance_orbit(o, 1e-5, 16)
+    assert shape == ref[0] and n == ref[1] and change == ref[2]

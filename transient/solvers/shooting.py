@@ -207,7 +207,8 @@ def newton_picard(flow: Callable, y0, period: float, basis, *, t0: float = 0.0, 
         V, S = _refined(V, W, V.T @ W, refine_floor)
     out.periods, out.derivatives = f.periods, f.derivatives
     out.error_estimate = out.step_norms[-1] if out.step_norms else float("nan")
-    out.multipliers = _ordered(ritz) if W is not None else _ordered(np.linalg.eigvals(S))
+    if S is not None:
+        out.multipliers = _ordered(ritz) if W is not None else _ordered(np.linalg.eigvals(S))
     out.basis, out.monodromy = V, S
     out.wall_time = time.perf_counter() - wall0
     return out
@@ -231,7 +232,7 @@ def _refined(V, W, S, floor):
 def newton_krylov(flow: Callable, y0, period: float, *, t0: float = 0.0, tol: float = 1e-8, rtol: float = 1e-8,
                   rtol_max: float = 1e-4, eta: float = 0.01, norm: Callable = _max_norm,
                   derivative: Callable | None = None, fd_step: float = 1e-3, fd_rtol: float | None = None,
-                  krylov_tol: float = 1e-3, max_krylov: int = 20, max_iter: int = 25) -> ShootingResult:
+                  krylov_tol: float = 1e-3, max_krylov: int = 20, max_iter: int = 25, relax: int = 0) -> ShootingResult:
     """Fixed point of the period map by Newton-GMRES with matrix-free ``M v`` (one period per Krylov vector).
 
     Arguments as :func:`newton_picard`; ``krylov_tol`` is GMRES's relative residual. Multipliers are not
@@ -240,6 +241,8 @@ def newton_krylov(flow: Callable, y0, period: float, *, t0: float = 0.0, tol: fl
     f = _Counted(flow, derivative, norm, fd_step)
     fd_rtol = float(np.clip(fd_step / 100.0, rtol, rtol_max)) if fd_rtol is None else float(fd_rtol)
     y = np.array(y0, dtype=float)
+    for _ in range(int(relax)):
+        y = f.flow(y, t0, period, rtol_max)
     out = ShootingResult(state=y, image=y, success=False, message="")
     rt = rtol_max
     n = y.size

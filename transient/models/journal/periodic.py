@@ -219,14 +219,15 @@ def whirl_basis(orbit: JournalOrbit, y) -> np.ndarray:
 
 def periodic_response(orbit: JournalOrbit, rtol: float = 1e-6, tol: float | None = None, method: str = "shooting",
                       start=None, basis=None, outputs_per_revolution: int = 64, max_iter: int = 25,
-                      fallback: bool = False, max_revolutions: int = 200, fd_step: float = 1e-3) -> PeriodicOrbit:
+                      fallback: bool = False, max_revolutions: int = 200, fd_step: float = 1e-3,
+                      relax: int | None = None) -> PeriodicOrbit:
     """The periodic unbalance response of ``orbit`` (module docstring).
 
     Parameters
     ----------
     rtol : integration tolerance of the final iterations (IDA); early ones run looser.
-    tol : fixed-point tolerance [C] on the rotor position and velocity (default ``10 rtol``: the map's own
-        noise is ~0.2 rtol C).
+    tol : fixed-point tolerance [C] on the rotor position and velocity (default ``rtol``; the map's own noise,
+        from the integration error, is ~0.2 rtol C).
     method : ``"shooting"`` (Newton-Picard on the whirl pair, multipliers included) or ``"newton-krylov"``
         (matrix-free Newton-GMRES; no multipliers).
     start : state at t = 0 (dimensionless, as :meth:`JournalOrbit.initial_state`) or a :class:`PeriodicOrbit`
@@ -235,13 +236,15 @@ def periodic_response(orbit: JournalOrbit, rtol: float = 1e-6, tol: float | None
     fallback : if the shooting does not converge, settle by time integration from its last iterate
         (at most ``max_revolutions``, until two consecutive once-per-revolution steps are below ``tol``).
     fd_step : size [C] of the perturbations of the finite-difference directional derivatives.
+    relax : periods integrated before the first Newton step (default 1 from the linearised start, whose film is
+        only quasi-steady, 0 from a given start).
     """
     if not isinstance(orbit, JournalOrbit):
         raise TypeError(f"orbit must be a JournalOrbit, got {type(orbit).__name__}")
     if method not in METHODS:
         raise ValueError(f"method = {method!r}; allowed: {', '.join(METHODS)}")
     rtol = check_range("rtol", rtol, "-", 1e-13, 1e-2)
-    tol = 10.0 * rtol if tol is None else check_positive("tol", tol, "C")
+    tol = rtol if tol is None else check_positive("tol", tol, "C")
     opr = int(check_range("outputs_per_revolution", outputs_per_revolution, "1/rev", 4, 1e5))
     wall0 = time.perf_counter()
     F = _Flow(orbit, opr)
@@ -252,22 +255,22 @@ def periodic_response(orbit: JournalOrbit, rtol: float = 1e-6, tol: float | None
     kw = dict(tol=tol, rtol=rtol, rtol_max=max(rtol, 1e-4), norm=_Flow.norm, fd_step=fd_step, max_iter=max_iter)
     if method == "shooting":
         V = whirl_basis(orbit, y0) if basis is None else np.asarray(basis, dtype=float)
-        sh = newton_picard(F, F.reduce(y0), two_pi, F.reduce(V), relax=1 if start is None else 0,
+        sh = newton_picard(F, F.reduce(y0), two_pi, F.reduce(V), relax=(start is None) if relax is None else relax,
                            final_ritz=basis is None, **kw)
     else:
-        sh = newton_krylov(F, F.reduce(y0), two_pi, **kw)
+        sh = newton_krylov(F, F.reduce(y0), two_pi, relax=(start is None) if relax is None else relax, **kw)
     C = orbit.bearing.clearance
     state = F.embed(sh.state)
     periods, message, converged = sh.periods, sh.message, sh.success
-    if not sh.success and fallback:
+    if not sh.success and fallback and np.all(np.isfinite(state)):
         state, extra, message, converged = _settle(orbit, state, rtol, tol, max_revolutions)
         periods += extra
-        t, x, y = _one_period(F, state, rtol)
+    samples = F.samples.get(F.reduce(state).tobytes())
+    if samples is None and np.all(np.isfinite(state)):  # the orbit of a state not integrated yet
+        F(F.reduce(state), 0.0, two_pi, rtol)
         periods += 1
-    elif np.all(np.isfinite(sh.state)):
-        t, x, y = F.samples[sh.state.tobytes()][1:] if sh.state.tobytes() in F.samples else _one_period(F, state, rtol)
-    else:
-        t = x = y = np.zeros(0)
+        samples = F.samples.get(F.reduce(state).tobytes())
+    t, x, y = samples[1:] if samples else (np.zeros(0), np.zeros(0), np.zeros(0))
     mu = sh.multipliers
     stable = bool(mu.size and np.abs(mu).max() < 1.0)
     success = converged and (stable or method != "shooting")
@@ -290,11 +293,6 @@ def _embed_basis(F: _Flow, V) -> np.ndarray:
     out = np.zeros((F.o.n, V.shape[1]))
     out[F.keep] = V
     return out
-
-
-def _one_period(F: _Flow, state, rtol):
-    F(F.reduce(state), 0.0, 2.0 * np.pi, rtol)
-    return F.samples[F.reduce(state).tobytes()][1:]
 
 
 def _settle(orbit: JournalOrbit, state, rtol, tol, max_revolutions):
@@ -345,6 +343,10 @@ def response_curve(orbit: JournalOrbit, speeds_rpm, rtol: float = 1e-5, tol: flo
         start = _extrapolate(np.array(path), [p.state for p in done], s, 3 if predictor == "quadratic" else 2)
         p = periodic_response(o, rtol=rtol, tol=tol, start=start, basis=basis, fd_step=fd_step,
                               outputs_per_revolution=outputs_per_revolution)
+        if not p.converged and start is not None:  # the extrapolation went astray: start afresh
+            q = periodic_response(o, rtol=rtol, tol=tol, fd_step=fd_step, outputs_per_revolution=outputs_per_revolution)
+            q.revolutions_integrated += p.revolutions_integrated
+            p = q
         orbits.append(p)
         if p.converged:
             done, path, basis = done + [p], path + [s], p.basis
