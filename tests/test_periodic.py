@@ -52,7 +52,7 @@ def _linear_system():
 def test_newton_picard_and_krylov_on_a_forced_linear_system():
     flow, y_star, mu, _ = _linear_system()
     V0 = np.eye(10)[:, :2]  # a poor basis: the true whirl subspace is X[:, :2]
-    r = newton_picard(flow, np.zeros(10), 2 * np.pi, V0, tol=1e-10, rtol=1e-8, final_ritz=True)
+    r = newton_picard(flow, np.zeros(10), 2 * np.pi, V0, tol=1e-10, rtol=1e-8, second_ritz=True)
     assert r.success, r.message
     assert np.max(np.abs(r.state - y_star)) < 1e-9
     assert np.allclose(np.sort_complex(r.multipliers), np.sort_complex(mu[:2]), atol=1e-6)
@@ -144,7 +144,7 @@ def test_dominant_multiplier_is_the_decay_rate_of_the_settling_transient(settled
     p = periodic_response(o, rtol=1e-9, tol=1e-8)
     n = o.film.n
     d = np.hypot(r.x[::64] / C - p.state[n], r.y[::64] / C - p.state[n + 1])
-    k = np.flatnonzero((d < 1e-5) & (d > 1e-9))
+    k = np.flatnonzero((d < 1e-4) & (d > 1e-7))  # above the ~2e-9 C between the two maps' fixed points
     rate = np.exp(np.polyfit(k, np.log(d[k]), 1)[0])
     assert abs(rate - p.max_multiplier) < 0.03 * p.max_multiplier, (rate, p.max_multiplier)
 

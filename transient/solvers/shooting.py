@@ -119,10 +119,10 @@ def _ordered(mu) -> np.ndarray:
 
 
 def newton_picard(flow: Callable, y0, period: float, basis, *, t0: float = 0.0, tol: float = 1e-8,
-                  rtol: float = 1e-8, rtol_max: float = 1e-4, eta: float = 0.01, norm: Callable = _max_norm,
-                  monodromy=None, derivative: Callable | None = None, fd_step: float = 1e-3,
+                  rtol: float = 1e-8, rtol_max: float = 1e-4, eta: float = 3e-3, norm: Callable = _max_norm,
+                  derivative: Callable | None = None, fd_step: float = 1e-3,
                   fd_rtol: float | None = None, refresh: float = 0.3, max_iter: int = 25, relax: int = 0,
-                  final_ritz: bool = False, refine_floor: float = 0.05,
+                  second_ritz: bool = False, refine_floor: float = 0.05,
                   callback: Callable | None = None) -> ShootingResult:
     """Fixed point of the period map by Newton-Picard (module docstring).
 
@@ -130,8 +130,7 @@ def newton_picard(flow: Callable, y0, period: float, basis, *, t0: float = 0.0, 
     ----------
     flow : ``flow(y, t0, T, rtol) -> y(t0 + T)``.
     y0 : start guess; period : T; t0 : start time (the phase of the forcing).
-    basis : (n, p) guess of the dominant subspace (orthonormalised here); monodromy : (p, p) ``V^T M V`` on
-        that orthonormal basis if known (e.g. from the previous point of a continuation), else computed.
+    basis : (n, p) guess of the dominant subspace (orthonormalised here).
     tol : accept the iterate when ``norm(d) <= tol`` at the final tolerance ``rtol``.
     rtol_max, eta : loosest integration tolerance and the factor on the error estimate (inexact iterations).
     norm : ``norm(d) -> float``, the error measure (e.g. the journal position in units of its clearance).
@@ -139,10 +138,10 @@ def newton_picard(flow: Callable, y0, period: float, basis, *, t0: float = 0.0, 
         that ``norm(e v) = fd_step``; the iteration that computes them integrates at ``fd_rtol`` or tighter
         (default ``clip(fd_step / 100, rtol, rtol_max)``).
     refresh : recompute ``S`` when a step is not at least ``1 / refresh`` times smaller than the last.
-    final_ritz : at the solution, recompute ``S`` on the refined basis (p more periods): the Ritz values of a
-        poor initial basis (e.g. from a linearised model) can be off by 1e-2, those of the refined one are
-        within ~1e-4 of Arnoldi's (docs/periodic.md). A continuation, which passes the previous refined
-        basis, does not need it.
+    second_ritz : take the derivatives once more at the iteration after the first ones, on the refined basis
+        (p more periods): the Ritz values of a poor initial basis (e.g. from a linearised model) can be off by
+        1e-2, those of the refined one are within ~1e-3 of Arnoldi's (docs/periodic.md), and the later steps
+        converge faster. A continuation, which passes the previous refined basis, does not need it.
     refine_floor : the basis follows ``W = M V`` only while every Ritz value exceeds it (the derivatives'
         relative noise is ~``rtol / fd_step``).
     relax : plain iterations of the map (at ``rtol_max``) before the first Newton step: they let the fast
@@ -160,16 +159,16 @@ def newton_picard(flow: Callable, y0, period: float, basis, *, t0: float = 0.0, 
     fd_rtol = float(np.clip(fd_step / 100.0, rtol, rtol_max)) if fd_rtol is None else float(fd_rtol)
     V = _orthonormal(basis)
     p = V.shape[1]
-    S = None if monodromy is None else np.array(monodromy, dtype=float).reshape(p, p)
+    S = None
     y = np.array(y0, dtype=float)
     out = ShootingResult(state=y, image=y, success=False, message="")
-    W = None
+    ritz, derived_at = None, None
     rt = rtol_max
     for _ in range(int(relax)):
         y = f.flow(y, t0, period, rtol_max)
     for k in range(int(max_iter)):
         slow = len(out.step_norms) > 1 and out.step_norms[-1] > refresh * out.step_norms[-2]
-        new_S = S is None or slow
+        new_S = S is None or slow or (second_ritz and derived_at == k - 1 and k == 1)
         if new_S:  # the derivatives share the base flow: integrate it at least as tightly as they need
             rt = min(rt, fd_rtol)
         fy = f.flow(y, t0, period, rt)
@@ -179,7 +178,7 @@ def newton_picard(flow: Callable, y0, period: float, basis, *, t0: float = 0.0, 
         r = fy - y
         if new_S:
             W = np.column_stack([f.jvp(y, fy, V[:, j], t0, period, rt) for j in range(p)])
-            ritz = np.linalg.eigvals(V.T @ W)
+            ritz, derived_at = np.linalg.eigvals(V.T @ W), k
             V, S = _refined(V, W, V.T @ W, refine_floor)
         a = np.linalg.solve(np.eye(p) - S, V.T @ r)
         d = r - V @ (V.T @ r) + V @ a
@@ -200,15 +199,10 @@ def newton_picard(flow: Callable, y0, period: float, basis, *, t0: float = 0.0, 
         out.state, out.image = y, fy
         out.message = (f"Newton-Picard did not converge in {max_iter} iterations: error estimates "
                        + ", ".join(f"{e:.2e}" for e in out.step_norms[-5:]))
-    if out.success and final_ritz and W is not None:  # Rayleigh-Ritz at the solution on the refined basis
-        fb = fy if rt >= fd_rtol else f.flow(y, t0, period, fd_rtol)  # a cheaper base than the final one
-        W = np.column_stack([f.jvp(y, fb, V[:, j], t0, period, max(rt, fd_rtol)) for j in range(p)])
-        ritz = np.linalg.eigvals(V.T @ W)
-        V, S = _refined(V, W, V.T @ W, refine_floor)
     out.periods, out.derivatives = f.periods, f.derivatives
     out.error_estimate = out.step_norms[-1] if out.step_norms else float("nan")
-    if S is not None:
-        out.multipliers = _ordered(ritz) if W is not None else _ordered(np.linalg.eigvals(S))
+    if ritz is not None:
+        out.multipliers = _ordered(ritz)
     out.basis, out.monodromy = V, S
     out.wall_time = time.perf_counter() - wall0
     return out
@@ -230,7 +224,7 @@ def _refined(V, W, S, floor):
 
 
 def newton_krylov(flow: Callable, y0, period: float, *, t0: float = 0.0, tol: float = 1e-8, rtol: float = 1e-8,
-                  rtol_max: float = 1e-4, eta: float = 0.01, norm: Callable = _max_norm,
+                  rtol_max: float = 1e-4, eta: float = 3e-3, norm: Callable = _max_norm,
                   derivative: Callable | None = None, fd_step: float = 1e-3, fd_rtol: float | None = None,
                   krylov_tol: float = 1e-3, max_krylov: int = 20, max_iter: int = 25, relax: int = 0) -> ShootingResult:
     """Fixed point of the period map by Newton-GMRES with matrix-free ``M v`` (one period per Krylov vector).

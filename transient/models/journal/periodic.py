@@ -42,6 +42,9 @@ from transient.solvers.integrate import solve
 from transient.solvers.shooting import floquet_multipliers, newton_krylov, newton_picard
 
 METHODS = ("shooting", "newton-krylov")
+#: below this dominant multiplier the derivatives' noise (~rtol / fd_step) swamps the whirl pair: a continuation
+#: then re-lifts the film onto the last rotor directions instead of following the noisy subspace
+REFINE_FLOOR = 0.05
 
 
 @result_type
@@ -203,16 +206,21 @@ def whirl_basis(orbit: JournalOrbit, y) -> np.ndarray:
     """(n, 2) basis of the whirl subspace at state ``y``: real and imaginary parts of the dominant eigenvector of
     the linearised rotor ``q' = A q``, ``A = [[0, I], [kappa dF/dq, kappa dF/dq']]`` (the K, C of
     :meth:`JournalBearing.coefficients`, dimensionless in tau, from the film sensitivities at the static
-    equilibrium), the film lifted by its quasi-steady sensitivity at ``y``, ``du = -G_u^-1 G_q dq``."""
+    equilibrium), the film lifted onto it by :func:`lift`."""
     f, C = orbit.film, orbit.bearing.clearance
     e = orbit.equilibrium()
     _, dF_dq, dF_dv = f.force_sensitivity(e.u, e.position[0] / C, e.position[1] / C)
     A = np.block([[np.zeros((2, 2)), np.eye(2)], [orbit.kappa * dF_dq, orbit.kappa * dF_dv]])
     lam, vec = sla.eig(A)
     q = vec[:, int(np.argmax(lam.real))]
-    dq = np.column_stack([q.real, q.imag])
-    n = f.n
-    M = f.op.matrix(f.jacobian_data(y[:n], *y[n:n + 4]))
+    return lift(orbit, y, np.column_stack([q.real, q.imag]))
+
+
+def lift(orbit: JournalOrbit, y, dq) -> np.ndarray:
+    """Film + rotor directions from rotor directions ``dq`` (4, p) at state ``y``: the film's quasi-steady
+    sensitivity ``du = -G_u^-1 G_q dq`` (the film slaved to the rotor)."""
+    f, n = orbit.film, orbit.film.n
+    M = f.op.matrix(f.jacobian_data(y[:n], *y[n:n + N_ROTOR]))
     du = -spla.splu(M[:n, :n].tocsc()).solve(M[:n, n:n + N_ROTOR].toarray() @ dq)
     return np.vstack([du, dq])
 
@@ -220,7 +228,7 @@ def whirl_basis(orbit: JournalOrbit, y) -> np.ndarray:
 def periodic_response(orbit: JournalOrbit, rtol: float = 1e-6, tol: float | None = None, method: str = "shooting",
                       start=None, basis=None, outputs_per_revolution: int = 64, max_iter: int = 25,
                       fallback: bool = False, max_revolutions: int = 200, fd_step: float = 1e-3,
-                      relax: int | None = None) -> PeriodicOrbit:
+                      relax: int | None = None, relift: bool = False) -> PeriodicOrbit:
     """The periodic unbalance response of ``orbit`` (module docstring).
 
     Parameters
@@ -232,7 +240,8 @@ def periodic_response(orbit: JournalOrbit, rtol: float = 1e-6, tol: float | None
         (matrix-free Newton-GMRES; no multipliers).
     start : state at t = 0 (dimensionless, as :meth:`JournalOrbit.initial_state`) or a :class:`PeriodicOrbit`
         (e.g. at a nearby speed); default the linearised response.
-    basis : (n, 2) whirl subspace (default :func:`whirl_basis`; a continuation passes the previous one).
+    basis : (n, 2) whirl subspace (default :func:`whirl_basis`; a continuation passes the previous one);
+        ``relift``: keep only its rotor rows and :func:`lift` the film onto them at the start.
     fallback : if the shooting does not converge, settle by time integration from its last iterate
         (at most ``max_revolutions``, until two consecutive once-per-revolution steps are below ``tol``).
     fd_step : size [C] of the perturbations of the finite-difference directional derivatives.
@@ -255,8 +264,10 @@ def periodic_response(orbit: JournalOrbit, rtol: float = 1e-6, tol: float | None
     kw = dict(tol=tol, rtol=rtol, rtol_max=max(rtol, 1e-4), norm=_Flow.norm, fd_step=fd_step, max_iter=max_iter)
     if method == "shooting":
         V = whirl_basis(orbit, y0) if basis is None else np.asarray(basis, dtype=float)
+        if relift and basis is not None:
+            V = lift(orbit, y0, V[orbit.film.n:])
         sh = newton_picard(F, F.reduce(y0), two_pi, F.reduce(V), relax=(start is None) if relax is None else relax,
-                           final_ritz=basis is None, **kw)
+                           second_ritz=basis is None, refine_floor=REFINE_FLOOR, **kw)
     else:
         sh = newton_krylov(F, F.reduce(y0), two_pi, relax=(start is None) if relax is None else relax, **kw)
     C = orbit.bearing.clearance
@@ -342,6 +353,7 @@ def response_curve(orbit: JournalOrbit, speeds_rpm, rtol: float = 1e-5, tol: flo
                                                              orbit.load, s)
         start = _extrapolate(np.array(path), [p.state for p in done], s, 3 if predictor == "quadratic" else 2)
         p = periodic_response(o, rtol=rtol, tol=tol, start=start, basis=basis, fd_step=fd_step,
+                              relift=bool(done) and not done[-1].max_multiplier > REFINE_FLOOR,
                               outputs_per_revolution=outputs_per_revolution)
         if not p.converged and start is not None:  # the extrapolation went astray: start afresh
             q = periodic_response(o, rtol=rtol, tol=tol, fd_step=fd_step, outputs_per_revolution=outputs_per_revolution)
