@@ -203,7 +203,7 @@ def test_response_curve_follows_the_linear_response_and_saves(tmp_path):
         Z = o.bearing.unbalance_response(o.rotor_mass, o.unbalance, o.load, s)
         lin = np.linalg.svd(np.array([[Z[0].real, -Z[0].imag], [Z[1].real, -Z[1].imag]]), compute_uv=False)[0]
         assert abs(a - lin) < 0.03 * lin
-    assert c.revolutions_integrated[1:].max() < c.revolutions_integrated[0]  # warm starts are cheaper
+    assert c.revolutions_integrated.max() <= 8  # relax, 2-3 iterations, 2 derivatives (+2 on a fresh basis)
     back = load_result(c.save(tmp_path / "curve"))
     assert isinstance(back, ResponseCurve) and isinstance(back.orbits[0], PeriodicOrbit)
     assert np.array_equal(back.multipliers, c.multipliers) and back.orbits[2].state.shape == (o.n,)

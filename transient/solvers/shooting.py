@@ -139,7 +139,7 @@ def newton_picard(flow: Callable, y0, period: float, basis, *, t0: float = 0.0, 
         (default ``clip(fd_step / 100, rtol, rtol_max)``).
     refresh : recompute ``S`` when a step is not at least ``1 / refresh`` times smaller than the last.
     second_ritz : take the derivatives once more at the iteration after the first ones, on the refined basis
-        (p more periods): the Ritz values of a poor initial basis (e.g. from a linearised model) can be off by
+        (p more periods; not when the basis was not refined, see ``refine_floor``): the Ritz values of a poor initial basis (e.g. from a linearised model) can be off by
         1e-2, those of the refined one are within ~1e-3 of Arnoldi's (docs/periodic.md), and the later steps
         converge faster. A continuation, which passes the previous refined basis, does not need it.
     refine_floor : the basis follows ``W = M V`` only while every Ritz value exceeds it (the derivatives'
@@ -162,13 +162,13 @@ def newton_picard(flow: Callable, y0, period: float, basis, *, t0: float = 0.0, 
     S = None
     y = np.array(y0, dtype=float)
     out = ShootingResult(state=y, image=y, success=False, message="")
-    ritz, derived_at = None, None
+    ritz, derived_at, refined = None, None, False
     rt = rtol_max
     for _ in range(int(relax)):
         y = f.flow(y, t0, period, rtol_max)
     for k in range(int(max_iter)):
         slow = len(out.step_norms) > 1 and out.step_norms[-1] > refresh * out.step_norms[-2]
-        new_S = S is None or slow or (second_ritz and derived_at == k - 1 and k == 1)
+        new_S = S is None or slow or (second_ritz and derived_at == k - 1 and k == 1 and refined)
         if new_S:  # the derivatives share the base flow: integrate it at least as tightly as they need
             rt = min(rt, fd_rtol)
         fy = f.flow(y, t0, period, rt)
@@ -178,8 +178,9 @@ def newton_picard(flow: Callable, y0, period: float, basis, *, t0: float = 0.0, 
         r = fy - y
         if new_S:
             W = np.column_stack([f.jvp(y, fy, V[:, j], t0, period, rt) for j in range(p)])
-            ritz, derived_at = np.linalg.eigvals(V.T @ W), k
+            ritz, derived_at, V0 = np.linalg.eigvals(V.T @ W), k, V
             V, S = _refined(V, W, V.T @ W, refine_floor)
+            refined = V is not V0
         a = np.linalg.solve(np.eye(p) - S, V.T @ r)
         d = r - V @ (V.T @ r) + V @ a
         est = norm(d)

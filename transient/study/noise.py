@@ -61,8 +61,9 @@ def bearing_noise(orbit, revolutions=4, harmonics=5, settle_revolutions=None, ma
         p = periodic_response(orbit, rtol=rtol, tol=tol)
         if not p.success:
             raise NotPeriodicError(f"{what}: {p.message}")
-        s = Settled(result=(0.0, p.state), settled_at=None, poincare_steps=np.array(p.residual_norms) / p.clearance,
-                    periods=p.revolutions_integrated, wall_time=p.wall_time)
+        # periodic after the periods the shooting integrated; its "Poincare steps" are the residuals |Phi(y) - y|
+        s = Settled(result=(0.0, p.state), settled_at=p.revolutions_integrated, periods=p.revolutions_integrated,
+                    poincare_steps=np.array(p.residual_norms) / p.clearance, wall_time=p.wall_time)
     else:
         s = settle(orbit, tol=tol, confirm=confirm, max_periods=max_settle_revolutions, chunk_periods=chunk_revolutions,
                    periods=settle_revolutions, what=what, **kw)

@@ -43,7 +43,7 @@ from transient.solvers.shooting import floquet_multipliers, newton_krylov, newto
 
 METHODS = ("shooting", "newton-krylov")
 #: below this dominant multiplier the derivatives' noise (~rtol / fd_step) swamps the whirl pair: a continuation
-#: then re-lifts the film onto the last rotor directions instead of following the noisy subspace
+#: then takes the whirl basis afresh at the next speed instead of following the noisy subspace
 REFINE_FLOOR = 0.05
 
 
@@ -144,8 +144,9 @@ class WhirlResponse(Result):
     ``t`` [s], ``x``, ``y`` [m] at ``outputs_per_revolution``; ``poincare_x``, ``poincare_y`` [m]: once per
     revolution (t = k T); ``whirl_frequency_ratio``: frequency of the largest sub-synchronous component of
     x over the last half of the run (the 1x, 2x and 3x parts fitted and removed first), in shaft orders;
-    ``whirl_amplitude`` [m] and ``synchronous_amplitude`` [m]: its amplitude and the 1x amplitude there; ``poincare_spread`` [m]: the largest distance of the last
-    half's Poincare points from their mean (0 for a periodic response)."""
+    ``whirl_amplitude`` [m] and ``synchronous_amplitude`` [m]: its amplitude and the 1x amplitude there;
+    ``poincare_spread`` [m]: the largest distance of the last half's Poincare points from their mean (0 for a
+    periodic response)."""
 
     t: np.ndarray = quantity("s")
     x: np.ndarray = quantity("m")
@@ -205,11 +206,11 @@ class _Flow:
 def whirl_basis(orbit: JournalOrbit, y) -> np.ndarray:
     """(n, 2) basis of the whirl subspace at state ``y``: real and imaginary parts of the dominant eigenvector of
     the linearised rotor ``q' = A q``, ``A = [[0, I], [kappa dF/dq, kappa dF/dq']]`` (the K, C of
-    :meth:`JournalBearing.coefficients`, dimensionless in tau, from the film sensitivities at the static
-    equilibrium), the film lifted onto it by :func:`lift`."""
-    f, C = orbit.film, orbit.bearing.clearance
-    e = orbit.equilibrium()
-    _, dF_dq, dF_dv = f.force_sensitivity(e.u, e.position[0] / C, e.position[1] / C)
+    :meth:`JournalBearing.coefficients`, dimensionless in tau, here from the film sensitivities at ``y``'s film
+    and journal position rather than at the static equilibrium: one sparse LU, no equilibrium solve), the film
+    lifted onto it by :func:`lift`."""
+    f, n = orbit.film, orbit.film.n
+    _, dF_dq, dF_dv = f.force_sensitivity(y[:n], y[n], y[n + 1])
     A = np.block([[np.zeros((2, 2)), np.eye(2)], [orbit.kappa * dF_dq, orbit.kappa * dF_dv]])
     lam, vec = sla.eig(A)
     q = vec[:, int(np.argmax(lam.real))]
@@ -228,7 +229,7 @@ def lift(orbit: JournalOrbit, y, dq) -> np.ndarray:
 def periodic_response(orbit: JournalOrbit, rtol: float = 1e-6, tol: float | None = None, method: str = "shooting",
                       start=None, basis=None, outputs_per_revolution: int = 64, max_iter: int = 25,
                       fallback: bool = False, max_revolutions: int = 200, fd_step: float = 1e-3,
-                      relax: int | None = None, relift: bool = False) -> PeriodicOrbit:
+                      relax: int = 1) -> PeriodicOrbit:
     """The periodic unbalance response of ``orbit`` (module docstring).
 
     Parameters
@@ -240,13 +241,14 @@ def periodic_response(orbit: JournalOrbit, rtol: float = 1e-6, tol: float | None
         (matrix-free Newton-GMRES; no multipliers).
     start : state at t = 0 (dimensionless, as :meth:`JournalOrbit.initial_state`) or a :class:`PeriodicOrbit`
         (e.g. at a nearby speed); default the linearised response.
-    basis : (n, 2) whirl subspace (default :func:`whirl_basis`; a continuation passes the previous one);
-        ``relift``: keep only its rotor rows and :func:`lift` the film onto them at the start.
+    basis : (n, 2) whirl subspace (default :func:`whirl_basis` at the start; a continuation passes the previous
+        speed's refined one while its whirl pair is above the derivatives' noise floor).
     fallback : if the shooting does not converge, settle by time integration from its last iterate
         (at most ``max_revolutions``, until two consecutive once-per-revolution steps are below ``tol``).
     fd_step : size [C] of the perturbations of the finite-difference directional derivatives.
-    relax : periods integrated before the first Newton step (default 1 from the linearised start, whose film is
-        only quasi-steady, 0 from a given start).
+    relax : periods integrated (at a loose tolerance) before the first Newton step: the film of a start -- the
+        linearised response's quasi-steady film, an extrapolation in speed -- is not the periodic one, and its
+        error would spoil the first step (docs/periodic.md).
     """
     if not isinstance(orbit, JournalOrbit):
         raise TypeError(f"orbit must be a JournalOrbit, got {type(orbit).__name__}")
@@ -264,12 +266,10 @@ def periodic_response(orbit: JournalOrbit, rtol: float = 1e-6, tol: float | None
     kw = dict(tol=tol, rtol=rtol, rtol_max=max(rtol, 1e-4), norm=_Flow.norm, fd_step=fd_step, max_iter=max_iter)
     if method == "shooting":
         V = whirl_basis(orbit, y0) if basis is None else np.asarray(basis, dtype=float)
-        if relift and basis is not None:
-            V = lift(orbit, y0, V[orbit.film.n:])
-        sh = newton_picard(F, F.reduce(y0), two_pi, F.reduce(V), relax=(start is None) if relax is None else relax,
+        sh = newton_picard(F, F.reduce(y0), two_pi, F.reduce(V), relax=relax,
                            second_ritz=basis is None, refine_floor=REFINE_FLOOR, **kw)
     else:
-        sh = newton_krylov(F, F.reduce(y0), two_pi, relax=(start is None) if relax is None else relax, **kw)
+        sh = newton_krylov(F, F.reduce(y0), two_pi, relax=relax, **kw)
     C = orbit.bearing.clearance
     state = F.embed(sh.state)
     periods, message, converged = sh.periods, sh.message, sh.success
@@ -347,21 +347,21 @@ def response_curve(orbit: JournalOrbit, speeds_rpm, rtol: float = 1e-5, tol: flo
     done = [p for p in getattr(previous, "orbits", previous or []) if p.converged][-3:]
     path = [p.speed_rpm for p in done]
     orbits, whirls = [], []
-    basis = done[-1].basis if done else None
+    basis = done[-1].basis if done and done[-1].max_multiplier > REFINE_FLOOR else None
     for s in speeds:
         o = orbit if s == orbit.speed_rpm else JournalOrbit(orbit.bearing, orbit.rotor_mass, orbit.unbalance,
                                                              orbit.load, s)
         start = _extrapolate(np.array(path), [p.state for p in done], s, 3 if predictor == "quadratic" else 2)
         p = periodic_response(o, rtol=rtol, tol=tol, start=start, basis=basis, fd_step=fd_step,
-                              relift=bool(done) and not done[-1].max_multiplier > REFINE_FLOOR,
                               outputs_per_revolution=outputs_per_revolution)
         if not p.converged and start is not None:  # the extrapolation went astray: start afresh
             q = periodic_response(o, rtol=rtol, tol=tol, fd_step=fd_step, outputs_per_revolution=outputs_per_revolution)
             q.revolutions_integrated += p.revolutions_integrated
             p = q
         orbits.append(p)
-        if p.converged:
-            done, path, basis = done + [p], path + [s], p.basis
+        if p.converged:  # the refined basis, unless it was refined from noise: then afresh at the next start
+            done, path = done + [p], path + [s]
+            basis = p.basis if p.max_multiplier > REFINE_FLOOR else None
         w = None
         if whirl_revolutions > 0 and p.converged and not p.stable:
             w = quasi_periodic_response(o, whirl_revolutions, start=p.state, rtol=rtol)
@@ -405,7 +405,8 @@ def _curve(speeds, orbits, whirls) -> ResponseCurve:
     return ResponseCurve(
         speed_rpm=speeds, semi_major=np.array([p.semi_major if good else nan for p, good in zip(orbits, ok)]),
         amplitude_x=np.array([half_ptp(p.x) for p in orbits]), amplitude_y=np.array([half_ptp(p.y) for p in orbits]),
-        phase_x=np.degrees(np.angle(Z[:, 0])), phase_y=np.degrees(np.angle(Z[:, 1])), multipliers=mu, max_multiplier=mmax,
+        phase_x=np.degrees(np.angle(Z[:, 0])), phase_y=np.degrees(np.angle(Z[:, 1])), multipliers=mu,
+        max_multiplier=mmax,
         unstable=np.array([p.converged and not p.stable for p in orbits]),
         converged=np.array([p.converged for p in orbits]), iterations=np.array([p.iterations for p in orbits]),
         revolutions_integrated=np.array([p.revolutions_integrated for p in orbits]),
@@ -480,8 +481,9 @@ def quasi_periodic_response(orbit: JournalOrbit, revolutions: int = 100, start=N
     ratio = float(order[k] + shift * (order[1] - order[0]))
     hp = np.hypot(px[len(px) // 2:] - px[len(px) // 2:].mean(), py[len(py) // 2:] - py[len(py) // 2:].mean())
     spread = float(hp.max())
-    msg = (f"{orbit.speed_rpm:g} rpm: quasi-periodic response (oil whirl at {ratio:.3f} x shaft speed, "
-           f"Poincare points spread over {spread / orbit.bearing.clearance:.2e} C)")
+    C = orbit.bearing.clearance
+    msg = (f"{orbit.speed_rpm:g} rpm: sub-synchronous whirl at {ratio:.3f} x shaft speed ({spec[k] / C:.2e} C); the "
+           f"Poincare points of the last half spread over {spread / C:.2e} C")
     if not r.success or r.touched_at is not None:
         msg = f"{orbit.speed_rpm:g} rpm: {r.message}"
     return WhirlResponse(t=r.t, x=r.x, y=r.y, poincare_x=px, poincare_y=py, speed_rpm=orbit.speed_rpm,
