@@ -23,14 +23,18 @@ tolerance and returns that iterate (its period is integrated: ``image``). Early 
 at a looser tolerance ``clip(eta * error estimate, rtol, rtol_max)`` (an inexact Newton method).
 The eigenvalues of ``S`` are the Ritz values of the monodromy on ``V``: the dominant multipliers.
 ``W = M V`` spans a better approximation of the dominant subspace than ``V`` (one step of subspace
-iteration); it is returned (``basis``) to start the next solve of a continuation.
+iteration): the iteration goes on in its orthonormal basis (unless the Ritz values are at the derivatives'
+noise level), and returns it (``basis``) to start the next solve of a continuation. Plain iterations
+(``relax``) before the first step let the fast modes of a poor start die out: the step leaves out the
+coupling ``V^T M Q`` through which they would spoil it.
 
 **Newton-Krylov** (:func:`newton_krylov`): GMRES on ``(I - M) d = r`` with ``M v`` matrix-free; every
 Krylov vector costs one period. Kept for comparison: with few dominant multipliers it needs 3-5 periods of
 derivatives per Newton step where Newton-Picard needs p once.
 
-:func:`floquet_multipliers`: the k multipliers of largest modulus by Arnoldi (ARPACK, ``scipy.sparse.linalg.eigs``)
-on the monodromy as a LinearOperator (one period per product): the independent check of the Ritz values.
+:func:`floquet_multipliers`: the k multipliers of largest modulus by Arnoldi (ARPACK,
+``scipy.sparse.linalg.eigs``) on the monodromy as a LinearOperator (one period per product): the independent
+check of the Ritz values.
 """
 
 from __future__ import annotations
@@ -139,9 +143,10 @@ def newton_picard(flow: Callable, y0, period: float, basis, *, t0: float = 0.0, 
         (default ``clip(fd_step / 100, rtol, rtol_max)``).
     refresh : recompute ``S`` when a step is not at least ``1 / refresh`` times smaller than the last.
     second_ritz : take the derivatives once more at the iteration after the first ones, on the refined basis
-        (p more periods; not when the basis was not refined, see ``refine_floor``): the Ritz values of a poor initial basis (e.g. from a linearised model) can be off by
-        1e-2, those of the refined one are within ~1e-3 of Arnoldi's (docs/periodic.md), and the later steps
-        converge faster. A continuation, which passes the previous refined basis, does not need it.
+        (p more periods; not when the basis was not refined, see ``refine_floor``): the Ritz values of a poor
+        initial basis (e.g. from a linearised model) can be off by 2e-2, those of the refined one are within
+        ~1e-3 of Arnoldi's (docs/periodic.md). A continuation, which passes the previous refined basis, does
+        not need it.
     refine_floor : the basis follows ``W = M V`` only while every Ritz value exceeds it (the derivatives'
         relative noise is ~``rtol / fd_step``).
     relax : plain iterations of the map (at ``rtol_max``) before the first Newton step: they let the fast

@@ -5,19 +5,21 @@ The unbalance force ``m e Omega^2 (cos tau, sin tau)`` has the period 2 pi in ``
 response is a fixed point of the once-per-revolution map ``y(0) -> y(2 pi)`` of the whole method-of-lines state
 (film cells u and the rotor X, Y, VX, VY of :class:`~transient.models.journal.JournalOrbit`; the groove cells
 are fixed and left out). It is found by shooting (:func:`transient.solvers.shooting.newton_picard`): the map's
-Jacobian (the monodromy) has two multipliers that matter -- the rotor's whirl pair, |mu| = 0.62 at 6000 rpm,
-0.9-1 near the onset -- and all others below 5e-3 (the second rotor pair and the film modes, which the
+Jacobian (the monodromy) has two multipliers that matter -- the rotor's whirl pair, |mu| = 0.64 at 6000 rpm on
+the paper grid, 0.9-1 near the onset -- and all others below 5e-3 (the second rotor pair and the film modes, which the
 film's compressibility and its content transport through the cavitated zone wipe out within a
 revolution; Arnoldi, docs/periodic.md). So Newton acts on that pair only (two directional derivatives, one
 period each) and a plain iteration of the map handles everything else.
 
-* Start (first speed): the linearised unbalance response (:meth:`JournalOrbit.linear_start`); the whirl
-  subspace: the dominant eigenvector of the linearised rotor (K, C of the same discrete film) lifted onto
-  the film by its quasi-steady sensitivity ``du = -G_u^-1 G_q dq``.
+* Start (first speed): the linearised unbalance response (:meth:`JournalOrbit.linear_start`) and one relaxing
+  period; the whirl subspace: the dominant eigenvector of the linearised rotor (K, C of the same discrete
+  film) lifted onto the film by its quasi-steady sensitivity ``du = -G_u^-1 G_q dq``, refined by the
+  directional derivatives (one step of subspace iteration).
 * Floquet multipliers: the Ritz values of the monodromy on that subspace; the orbit is stable when
   |mu| < 1 (the nonlinear stability verdict). :func:`floquet_check` runs Arnoldi on the full monodromy.
 * Continuation in speed (:func:`response_curve`): each orbit starts from a polynomial (secant or quadratic)
-  extrapolation of the previous ones, with the previous speed's refined subspace; the speed where the
+  extrapolation of the previous ones, with the previous speed's refined subspace (a fresh one where the whirl
+  pair was below the derivatives' noise floor); the speed where the
   dominant multiplier leaves the unit circle is interpolated (:func:`stability_onset` refines it by secant
   steps in speed).
 * Past the onset the periodic orbit exists but is unstable and the response is quasi-periodic (oil whirl):
