@@ -1,11 +1,12 @@
 """Seed 003 (Rho & Kim) sections 2.3-2.4: bearing noise from the film pressure fluctuation against speed.
 
-    transient run scenarios/journal_noise.py [--quick] [--out DIR] [--grid NT NZ] [--speeds ...]
+    transient run scenarios/journal_noise.py [--quick] [--out DIR] [--grid NT NZ] [--speeds ...] [--settle]
 
 Default: the paper's 151 x 21 half grid, 1000-7500 rpm (quick: 41 x 6, 3 speeds). Each speed:
-transient.bearing_noise (settle from the static equilibrium until the once-per-revolution journal position
-repeats to 1e-4 C, then record the pressure over an integer number of revolutions only). Figures and
-journal_noise.json (rewritten after each speed) into scenarios/out/noise/:
+transient.bearing_noise (the periodic orbit by shooting to 1e-4 C -- no settling run; --settle: settle from
+the static equilibrium until the once-per-revolution journal position repeats to 1e-4 C -- then record the
+pressure over an integer number of revolutions only). Figures and journal_noise.json (rewritten after each
+speed) into scenarios/out/noise/:
 * Fig. 9/10 -- N_b (eq. 16) and A-weighted N_b against speed; Fig. 11/12 -- per-harmonic levels;
 * Fig. 5/6 -- equilibrium pressure, RMS fluctuation p_f and its level in the oil at 6000 rpm;
 * Fig. 4/7 -- journal x spectrum and nodal spectra at film rupture, reformation, 96 deg and max p_f;
@@ -64,6 +65,7 @@ def main(argv=None):
     ap.add_argument("--transmission", choices=("printed", "two_interface"), default="printed")
     ap.add_argument("--rtol", type=float, default=1e-6)
     ap.add_argument("--max-settle", type=int, default=60, help="max settling revolutions (default 60)")
+    ap.add_argument("--settle", action="store_true", help="settling runs instead of the periodic orbit by shooting")
     a = ap.parse_args(argv)
     cfg = dict(QUICK if a.quick else FULL)
     grid = tuple(a.grid) if a.grid else cfg["grid"]
@@ -71,6 +73,7 @@ def main(argv=None):
     out = Path(a.out)
     rec = JsonRecord(out / "journal_noise.json", dict(grid=grid, speeds=speeds, revolutions=a.revolutions,
                      harmonics=a.harmonics, transmission=a.transmission, rtol=a.rtol, method="ida", settle_tol_C=1e-4,
+                     periodic=not a.settle,
                      rotor=rho_kim.ROTOR))
     bearing = JournalBearing(**rho_kim.BEARING, grid=grid)
     wall0 = time.perf_counter()
@@ -84,7 +87,7 @@ def main(argv=None):
         tr = film_transitions(eq)
         try:
             n = bearing_noise(o, revolutions=a.revolutions, harmonics=a.harmonics, transmission=a.transmission,
-                              rtol=a.rtol, max_settle_revolutions=a.max_settle)
+                              rtol=a.rtol, max_settle_revolutions=a.max_settle, periodic=not a.settle)
         except NotPeriodicError as exc:
             log(f"{sp:6.0f} rpm: {exc}")
             points.append(dict(speed_rpm=sp, error=str(exc)))
@@ -94,7 +97,8 @@ def main(argv=None):
             tot[k] += n.timings.get(k, 0.0)
         points.append(point(n, eq, tr))
         log(f"{sp:6.0f} rpm: N_b = {n.level_db:6.2f} dB, A-weighted {n.level_dba:6.2f} dB(A), harmonics "
-            f"{np.array2string(n.harmonic_levels_db, precision=1)} dB; settled after {n.settle_revolutions} rev")
+            f"{np.array2string(n.harmonic_levels_db, precision=1)} dB; {n.settle_revolutions} rev "
+            + ("to settle" if a.settle else "integrated by shooting"))
         if abs(sp - FIG_SPEED) < 1e-9:
             save(plots.noise_maps(n, eq, tr), out / "fig5_fig6_pfluct.png")
             save(plots.noise_spectra(n, tr), out / "fig4_fig7_spectra.png")
@@ -112,7 +116,7 @@ def main(argv=None):
         L, s = np.array([p["level_db"] for p in ok]), np.array([p["speed_rpm"] for p in ok])
         rec.put("slope_db_per_krpm", np.diff(L) / np.diff(s) * 1e3)
     total = time.perf_counter() - wall0
-    log(f"total {total:.1f} s: settling {tot['integration']:.1f} s ({100 * tot['integration'] / total:.0f} %), recording "
+    log(f"total {total:.1f} s: {'settling' if a.settle else 'periodic orbits'} {tot['integration']:.1f} s ({100 * tot['integration'] / total:.0f} %), recording "
         f"{tot['recording']:.1f} s, analysis {tot['analysis']:.3f} s, equilibria {tot['equilibrium']:.1f} s; {rec.path}")
     return rec.data
 

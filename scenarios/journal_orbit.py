@@ -2,16 +2,19 @@
 stability threshold.
 
     transient run scenarios/journal_orbit.py [--quick] [--out DIR] [--grid NT NZ] [--rtol R] [--resume]
-                                             [--only fig3 fig8 stability]
+                                             [--only fig3 fig8 stability] [--settle]
 
 Default: the paper's 151 x 21 half grid; figures and journal_orbit.json in scenarios/out/journal/.
 * Fig. 3: orbit from the static equilibrium at 6000 rpm settling onto the ellipse; Fig. 4: spectrum of x(t)
   over an integer number of revolutions of the settled orbit (transient.study.journal.orbit_from_equilibrium);
-* Fig. 8: unbalance response amplitude against speed, 1000-7500 rpm: nonlinear settled orbits from the
-  linear start, with the linearised K, C response as lines (transient.study.journal);
+* Fig. 8: unbalance response amplitude against speed, 1000-7500 rpm in 250 rpm steps: periodic orbits by
+  shooting and continuation in speed, continued until the dominant Floquet multiplier leaves the unit circle
+  (the onset of whirl of the periodic orbit, refined by secant steps), the whirl past it integrated in time
+  (transient.study.journal.continuation_response); --settle: settled orbits from the linear start instead
+  (the former way); lines: the linearised K, C response;
 * stability: the linear (Lund) threshold bracketed by free-vibration runs of a perturbed, balanced rotor
-  just below and above it (decay vs growth, against the linear growth rate).
-The JSON is rewritten after every stage and sweep speed; --resume reuses the points already in it.
+  just below and above it (decay vs growth, against the linear growth rate), beside the periodic onset.
+The JSON is rewritten after every stage (and sweep speed with --settle); --resume reuses those points.
 """
 
 from __future__ import annotations
@@ -26,18 +29,17 @@ from transient import JournalBearing, JournalOrbit
 from transient.analysis.orbits import peak_abscissa
 from transient.params import rho_kim
 from transient.plots import journal as plots, save
-from transient.study.journal import (linear_response_curve, orbit_from_equilibrium, settled_unbalance_orbit,
-                                     stability_run)
+from transient.study.journal import (continuation_response, linear_response_curve, orbit_from_equilibrium,
+                                     settled_unbalance_orbit, stability_run)
 from transient.study.scenario import JsonRecord, log, parser
 
 OUT = Path(__file__).resolve().parent / "out" / "journal"
 ROTOR, PAPER = rho_kim.ROTOR, rho_kim.REPORTED
 PERTURB = 0.01  # initial offset of the balanced rotor in the stability runs [C]
 OPR = 64  # outputs per revolution (spectrum up to 32x)
-FULL = dict(grid=(151, 21), fig3_revs=30, fft_revs=10, speeds=(1000, 2000, 3000, 4000, 4500, 5000, 5500, 6000,
-                                                                 6500, 7000, 7500),
+FULL = dict(grid=(151, 21), fig3_revs=30, fft_revs=10, speeds=tuple(range(1000, 7501, 250)), whirl_revs=120,
             sweep_min_revs=4, sweep_max_revs=40, stab_revs=20, stab_factor=0.1, linear_speeds=40)
-QUICK = dict(grid=(41, 6), fig3_revs=12, fft_revs=4, speeds=(1000, 3000, 5000, 6000, 7500),
+QUICK = dict(grid=(41, 6), fig3_revs=12, fft_revs=4, speeds=(1000, 3000, 5000, 6000, 7500), whirl_revs=40,
              sweep_min_revs=3, sweep_max_revs=8, stab_revs=8, stab_factor=0.15, linear_speeds=15)
 
 
@@ -59,22 +61,32 @@ def fig3_fig4(bearing, cfg, rtol, out, rec):
         f"2x/1x = {r['ratio_2x_to_1x']:.2e}")
 
 
-def fig8(bearing, cfg, rtol, out, rec):
+def fig8(bearing, cfg, rtol, out, rec, settle=False):
     old = rec.data.get("fig8", {})
     sweep = {int(p["speed_rpm"]): p for p in old.get("points", [])}
-    lin = old.get("linear") or linear_response_curve(bearing, ROTOR, np.linspace(min(cfg["speeds"]), max(cfg["speeds"]),
-                                                                                 cfg["linear_speeds"]))
-    for s in cfg["speeds"]:
+    sp = cfg["speeds"]
+    lin = old.get("linear") or linear_response_curve(bearing, ROTOR, np.linspace(min(sp), max(sp), cfg["linear_speeds"]))
+    if not settle:
+        log(f"[fig 8] continuation over {len(sp)} speeds {sp[0]}-{sp[-1]} rpm (rtol {rtol:g}) ...")
+        curve, r = continuation_response(bearing, ROTOR, sp, rtol, OPR, whirl_revolutions=cfg["whirl_revs"], progress=True)
+        curve.save(out / "fig8_response_curve.npz")
+        sweep = {int(p["speed_rpm"]): p for p in r.pop("points")}
+        rec.put("periodic_onset", r)
+        log(f"[fig 8] {r['wall_s']:.1f} s, {r['periods']} periods in all; the periodic orbit loses stability at "
+            f"{r['onset_rpm'] or float('nan'):.0f} rpm (paper ~{PAPER['threshold_rpm']:g}); past it: "
+            + "; ".join(f"{b['speed_rpm']:.0f} rpm whirl {b['whirl_frequency_ratio']:.3f}x" for b in r["beyond"][-1:]))
+    for s in sp if settle else ():
         if s in sweep:
             continue
         shape, n, change, steps, wall = settled_unbalance_orbit(orbit(bearing, s), rtol, OPR, cfg["sweep_min_revs"],
                                                                 cfg["sweep_max_revs"])
-        (lp,) = linear_response_curve(bearing, ROTOR, [s])
-        sweep[s] = dict(speed_rpm=s, revolutions=n, settle_estimate=change, n_steps=steps, wall_s=wall, **shape,
-                        linear_amp_x=lp["amp_x"], linear_amp_y=lp["amp_y"], linear_semi_major=lp["semi_major"])
+        sweep[s] = dict(speed_rpm=s, revolutions=n, settle_estimate=change, n_steps=steps, wall_s=wall, **shape)
         rec.put("fig8", dict(points=[sweep[k] for k in sorted(sweep)], linear=lin))
-        log(f"[fig 8] {s:5d} rpm: semi-major {shape['semi_major']:.4f} C (linear {lp['semi_major']:.4f}); {n} rev, "
-            f"distance from settled ~{change:.1e} of the amplitude, {wall:.1f} s")
+        log(f"[fig 8] {s:5d} rpm: semi-major {shape['semi_major']:.4f} C; {n} rev, distance from settled ~{change:.1e} "
+            f"of the amplitude, {wall:.1f} s")
+    for s, p in sweep.items():
+        (lp,) = linear_response_curve(bearing, ROTOR, [s])
+        p.update(linear_amp_x=lp["amp_x"], linear_amp_y=lp["amp_y"], linear_semi_major=lp["semi_major"])
     pts = [sweep[k] for k in sorted(sweep)]
     keys = ("semi_major", "amp_x", "amp_y")
     peak = {k: peak_abscissa([p["speed_rpm"] for p in pts], [p[k] for p in pts]) for k in keys}
@@ -100,6 +112,9 @@ def stability(bearing, cfg, rtol, out, rec):
         st["transient_threshold_rpm"] = a["speed_rpm"] - a["growth_per_rev"] * (b["speed_rpm"] - a["speed_rpm"]) / (
             b["growth_per_rev"] - a["growth_per_rev"])
         log(f"[stability] zero growth between the runs at {st['transient_threshold_rpm']:.0f} rpm")
+    st["periodic_onset_rpm"] = rec.data.get("periodic_onset", {}).get("onset_rpm")
+    log(f"[stability] Lund {th:.0f} rpm, periodic orbit (Floquet) {st['periodic_onset_rpm'] or float('nan'):.0f} rpm, "
+        f"paper ~{PAPER['threshold_rpm']:g} rpm")
     rec.put("stability", st)
     save(plots.stability_runs(runs, th, PAPER["threshold_rpm"]), out / "journal_stability.png")
 
@@ -110,12 +125,13 @@ def main(argv=None):
     ap.add_argument("--rtol", type=float, default=1e-5, help="IDA relative tolerance (default 1e-5)")
     ap.add_argument("--resume", action="store_true", help="reuse the sweep points already in the JSON")
     ap.add_argument("--only", choices=("fig3", "fig8", "stability"), nargs="+", help="run only these stages")
+    ap.add_argument("--settle", action="store_true", help="Fig. 8 by settling runs instead of continuation")
     a = ap.parse_args(argv)
     cfg = dict(QUICK if a.quick else FULL)
     if a.grid:
         cfg["grid"] = tuple(a.grid)
     out = Path(a.out)
-    meta = dict(grid=list(cfg["grid"]), quick=a.quick, rtol=a.rtol, bearing=rho_kim.BEARING, rotor=ROTOR,
+    meta = dict(grid=list(cfg["grid"]), quick=a.quick, rtol=a.rtol, settle=a.settle, bearing=rho_kim.BEARING, rotor=ROTOR,
                 speeds=list(cfg["speeds"]))
     rec = JsonRecord(out / "journal_orbit.json", meta, a.resume)
     bearing = JournalBearing(**rho_kim.BEARING, grid=cfg["grid"])
@@ -123,7 +139,7 @@ def main(argv=None):
     t0 = time.perf_counter()
     for stage, run in (("fig3", fig3_fig4), ("fig8", fig8), ("stability", stability)):
         if stage in (a.only or (stage,)):
-            run(bearing, cfg, a.rtol, out, rec)
+            run(bearing, cfg, a.rtol, out, rec, **(dict(settle=a.settle) if stage == "fig8" else {}))
     rec.put("wall_s", time.perf_counter() - t0)
     log(f"total {time.perf_counter() - t0:.0f} s; numbers in {rec.path}, figures in {out}")
     return rec.data

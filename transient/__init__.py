@@ -6,7 +6,8 @@ Public API (re-exported here):
 
 * integration: :func:`solve`, :class:`Problem`, :class:`Solution`, :class:`Stats`
 * results: :class:`Result` (the base of every result: units, save/load, summary), :func:`load_result`
-* journal bearing (seed 003): :class:`JournalBearing`, :class:`Groove`, :class:`JournalOrbit`;
+* journal bearing (seed 003): :class:`JournalBearing`, :class:`Groove`, :class:`JournalOrbit` (with
+  ``periodic_response`` and ``response_curve``: periodic orbits by shooting), :func:`stability_onset`;
   bearing noise: :func:`bearing_noise`, :func:`a_weighting`
 * thrust ball bearing starvation (seed 002): :class:`ThrustBallBearing`
 * EHL of a tilted tapered roller (seed 001): :class:`LineContact`, :class:`TaperedRoller`, :class:`RollerContact`
@@ -27,7 +28,7 @@ _os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 
 from transient.analysis.acoustics import a_weighting  # noqa: E402
 from transient.models.ball import ThrustBallBearing
-from transient.models.journal import Groove, JournalBearing, JournalOrbit
+from transient.models.journal import Groove, JournalBearing, JournalOrbit, stability_onset
 from transient.models.pad import ThrustPad
 from transient.models.roller import LineContact, RollerContact, TaperedRoller
 from transient.physics.asperity import AsperityContact, DiscreteDensity, greenwood_tripp, steel_asperity_contact
@@ -41,6 +42,6 @@ __all__ = [
     "AsperityContact", "DiscreteDensity", "Groove", "JournalBearing", "JournalOrbit", "LineContact", "Problem",
     "Result", "RollerContact", "TaperedRoller",
     "RoughSurface", "Solution", "Stats", "ThrustBallBearing", "ThrustPad", "a_weighting", "bearing_noise", "contact_factor",
-    "greenwood_tripp", "load_result", "pressure_flow_factors", "shear_flow_factor", "solve", "steel_asperity_contact",
+    "greenwood_tripp", "load_result", "pressure_flow_factors", "stability_onset", "shear_flow_factor", "solve", "steel_asperity_contact",
 ]
 __version__ = "0.1.0"

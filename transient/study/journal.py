@@ -1,9 +1,14 @@
 """Studies of the journal orbit (seed 003, Rho & Kim): the orbit from the equilibrium (Figs. 3-4), the
 unbalance response over speed (Fig. 8) and the stability runs around the linear threshold.
 
-Settling of the Fig. 8 sweep: each speed starts on the linear unbalance response
-(:meth:`~transient.models.journal.JournalOrbit.linear_start`) and runs until the distance from the settled
-orbit, estimated from the change between consecutive revolutions ``d`` and its decay ratio ``q`` as
+Fig. 8 by continuation (:func:`continuation_response`, the default): the periodic orbit at every speed by
+shooting (:mod:`transient.models.journal.periodic`), each warm-started from the previous ones, continued past
+the last speed until the dominant Floquet multiplier leaves the unit circle, the onset then located by
+secant steps in speed; no settling runs.
+
+Fig. 8 by settling (:func:`settled_unbalance_orbit`, the former way): each speed starts on the linear unbalance
+response (:meth:`~transient.models.journal.JournalOrbit.linear_start`) and runs until the distance from the
+settled orbit, estimated from the change between consecutive revolutions ``d`` and its decay ratio ``q`` as
 ``d q / (1 - q)``, is below ``settle_fraction`` of the orbit amplitude (checked every 2 revolutions after
 ``min_revolutions``, capped at ``max_revolutions``); the estimate is saved with each point.
 """
@@ -14,6 +19,8 @@ import numpy as np
 
 from transient.analysis.orbits import (ellipse_semi_major, growth_per_revolution, orbit_shape, per_revolution,
                                        revolution_spectrum)
+from transient.models.journal import JournalOrbit
+from transient.models.journal.periodic import response_curve, stability_onset
 
 
 def orbit_from_equilibrium(orbit, revolutions, rtol, outputs_per_revolution=64, fft_revolutions=10,
@@ -68,6 +75,50 @@ def settled_unbalance_orbit(orbit, rtol, outputs_per_revolution=64, min_revoluti
         wall += res.stats.wall_time
         n += extra
     return orbit_shape(X[-1], Y[-1]), n, change / max(amp, 1e-300), steps, wall
+
+
+def continuation_response(bearing, rotor, speeds, rtol, outputs_per_revolution=64, step_beyond=250.0,
+                          max_speed=12000.0, whirl_revolutions=0, progress=False):
+    """Fig. 8 by continuation (module docstring): periodic orbits along ``speeds`` (rotor: rotor_mass, unbalance,
+    load), then on in ``step_beyond`` steps until one is unstable (at most to ``max_speed``; its quasi-periodic
+    response integrated for ``whirl_revolutions``) and the onset by secant steps between the last stable and the
+    first unstable orbit. Returns (the :class:`~transient.models.journal.periodic.ResponseCurve` along ``speeds``,
+    a record: ``points`` (per speed: the orbit shape [C] of :func:`~transient.analysis.orbits.orbit_shape` and the
+    shooting's numbers), ``beyond`` (the speeds past ``speeds``), ``onset_rpm``, ``secant`` (the orbits of the
+    onset search), ``wall_s`` and ``periods`` in all)."""
+    o = JournalOrbit(bearing, speed_rpm=float(speeds[0]), **rotor)
+    kw = dict(rtol=rtol, outputs_per_revolution=outputs_per_revolution, whirl_revolutions=whirl_revolutions,
+              progress=progress)
+    curve = response_curve(o, speeds, **kw)
+    history, beyond = [p for p in curve.orbits if p.converged], []
+    s = float(speeds[-1])
+    while all(p.stable for p in history) and s + step_beyond <= max_speed:
+        s += step_beyond
+        c = response_curve(o, [s], previous=history, **kw)
+        p = c.orbits[0]
+        beyond.append(dict(speed_rpm=s, max_multiplier=p.max_multiplier, stable=p.stable, message=p.message,
+                           whirl_frequency_ratio=float(c.whirl_frequency_ratio[0]),
+                           whirl_amplitude_C=float(c.whirl_amplitude[0] / bearing.clearance), wall_s=p.wall_time,
+                           periods=p.revolutions_integrated))
+        if not p.converged:
+            break
+        history.append(p)
+    k = next((i for i in range(1, len(history)) if history[i - 1].stable and not history[i].stable), None)
+    onset = None if k is None else stability_onset(o, history[k - 1], history[k], rtol=rtol)
+    C = bearing.clearance
+    points = []
+    for p in curve.orbits:
+        shape = orbit_shape(p.x[:-1] / C, p.y[:-1] / C) if p.t.size else {}
+        points.append(dict(speed_rpm=p.speed_rpm, revolutions=p.revolutions_integrated, iterations=p.iterations,
+                           max_multiplier=p.max_multiplier, stable=p.stable, converged=p.converged,
+                           error_estimate_C=p.error_estimate / C, wall_s=p.wall_time, **shape))
+    extra = [] if onset is None else onset.orbits[1:-1]
+    rec = dict(points=points, beyond=beyond, onset_rpm=None if onset is None else onset.onset_rpm,
+               secant=None if onset is None else dict(speed_rpm=onset.speed_rpm, max_multiplier=onset.max_multiplier),
+               wall_s=float(curve.wall_time.sum() + sum(b["wall_s"] for b in beyond) + sum(p.wall_time for p in extra)),
+               periods=int(curve.revolutions_integrated.sum() + sum(b["periods"] for b in beyond)
+                           + sum(p.revolutions_integrated for p in extra)))
+    return curve, rec
 
 
 def linear_response_curve(bearing, rotor, speeds):

@@ -1,9 +1,13 @@
-"""Bearing noise at one speed (Rho & Kim, seed 003, sections 2.3-2.4): settle, record a window, analyse.
+"""Bearing noise at one speed (Rho & Kim, seed 003, sections 2.3-2.4): the periodic orbit, a recorded window,
+the analysis.
 
-1. :func:`~transient.study.settle.settle` the orbit from its static equilibrium, recording nothing but the
-   journal position once per revolution, until the motion is periodic to ``tol``;
-2. integrate ``revolutions`` more revolutions (continuing the settled run, phase kept) recording the
-   pressure field only there, at ``samples_per_revolution`` (> 2 * harmonics);
+1. the settled orbit: by default its periodic state by shooting
+   (:func:`~transient.models.journal.periodic.periodic_response`: Newton-Picard on the once-per-revolution map,
+   no settling run); with ``periodic=False`` by :func:`~transient.study.settle.settle` from the static
+   equilibrium, recording nothing but the journal position once per revolution, until the motion is
+   periodic to ``tol``;
+2. integrate ``revolutions`` more revolutions from it (phase kept) recording the pressure field only there, at
+   ``samples_per_revolution`` (> 2 * harmonics);
 3. :func:`~transient.analysis.acoustics.analyse_pressure`: mean and fluctuation per node, harmonics,
    transmission, levels.
 """
@@ -17,7 +21,7 @@ import numpy as np
 from transient.analysis.acoustics import TRANSMISSIONS, BearingNoise, analyse_pressure
 from transient.analysis.periodic import NotPeriodicError
 from transient.checks import check_range
-from transient.study.settle import settle
+from transient.study.settle import Settled, settle
 
 
 def default_samples_per_revolution(harmonics) -> int:
@@ -28,15 +32,18 @@ def default_samples_per_revolution(harmonics) -> int:
 
 def bearing_noise(orbit, revolutions=4, harmonics=5, settle_revolutions=None, max_settle_revolutions=60, tol=1e-4,
                   transmission="printed", method="ida", rtol=1e-6, samples_per_revolution=None,
-                  chunk_revolutions=5, confirm=2, progress=False) -> BearingNoise:
+                  chunk_revolutions=5, confirm=2, progress=False, periodic=True) -> BearingNoise:
     """Bearing noise of a :class:`~transient.models.journal.JournalOrbit` at its speed (module docstring).
 
-    ``tol`` [C]: the Poincare step below which the orbit counts as settled (default 1e-4 C, ~1 % of the
-    6000 rpm orbit amplitude), ``confirm`` consecutive times; ``settle_revolutions`` = int skips the
-    detection and settles for exactly that many. Raises
-    :class:`~transient.analysis.periodic.NotPeriodicError` if the orbit does not settle within
-    ``max_settle_revolutions`` (e.g. past the stability threshold) or touches the bearing."""
+    ``tol`` [C]: the distance from the periodic orbit accepted (default 1e-4 C, ~1 % of the 6000 rpm orbit
+    amplitude): the shooting's error estimate (``periodic=True``), or the Poincare step below which the settling
+    run counts as settled, ``confirm`` consecutive times (``periodic=False``; ``settle_revolutions`` = int skips
+    the detection and settles for exactly that many). Raises :class:`~transient.analysis.periodic.NotPeriodicError`
+    if there is no stable periodic orbit (past the onset of whirl: the shooting's dominant Floquet multiplier is
+    outside the unit circle, or the settling run does not settle within ``max_settle_revolutions``) or the
+    journal touches the bearing."""
     from transient.models.journal import JournalOrbit
+    from transient.models.journal.periodic import periodic_response
 
     if not isinstance(orbit, JournalOrbit):
         raise TypeError(f"orbit must be a JournalOrbit, got {type(orbit).__name__}")
@@ -50,10 +57,19 @@ def bearing_noise(orbit, revolutions=4, harmonics=5, settle_revolutions=None, ma
         raise ValueError(f"transmission = {transmission!r}; allowed: {', '.join(TRANSMISSIONS)}")
     what = f"the journal orbit at {orbit.speed_rpm:g} rpm"
     kw = dict(method=method, rtol=rtol)
-    s = settle(orbit, tol=tol, confirm=confirm, max_periods=max_settle_revolutions, chunk_periods=chunk_revolutions,
-               periods=settle_revolutions, what=what, **kw)
+    if periodic:
+        p = periodic_response(orbit, rtol=rtol, tol=tol)
+        if not p.success:
+            raise NotPeriodicError(f"{what}: {p.message}")
+        # periodic after the periods the shooting integrated; its "Poincare steps" are the residuals |Phi(y) - y|
+        s = Settled(result=(0.0, p.state), settled_at=p.revolutions_integrated, periods=p.revolutions_integrated,
+                    poincare_steps=np.array(p.residual_norms) / p.clearance, wall_time=p.wall_time)
+    else:
+        s = settle(orbit, tol=tol, confirm=confirm, max_periods=max_settle_revolutions, chunk_periods=chunk_revolutions,
+                   periods=settle_revolutions, what=what, **kw)
     if progress:
-        print(f"  {what}: {s.periods} revolutions to settle ({s.wall_time:.1f} s)", flush=True)
+        print(f"  {what}: {s.periods} revolutions {'integrated by shooting' if periodic else 'to settle'} "
+              f"({s.wall_time:.1f} s)", flush=True)
     t1 = time.perf_counter()
     r = orbit.run(revolutions, outputs_per_revolution=S, record=("pressure",), start=s.result, progress=False, **kw)
     if r.touched_at is not None or not r.success:

@@ -306,6 +306,20 @@ class JournalOrbit:
         r.success = out.success
         return r
 
+    def periodic_response(self, **kwargs):
+        """The periodic orbit of this rotor at its speed by shooting, with its Floquet multipliers:
+        :func:`transient.models.journal.periodic.periodic_response` (its arguments)."""
+        from transient.models.journal.periodic import periodic_response
+
+        return periodic_response(self, **kwargs)
+
+    def response_curve(self, speeds_rpm, **kwargs):
+        """Periodic orbits along ``speeds_rpm`` by continuation (amplitude, phase, multipliers, unstable speeds):
+        :func:`transient.models.journal.periodic.response_curve` (its arguments)."""
+        from transient.models.journal.periodic import response_curve
+
+        return response_curve(self, speeds_rpm, **kwargs)
+
     def absolute_tolerance(self, atol) -> np.ndarray:
         """Per-state absolute tolerance for a user ``atol`` on theta, p / p0 and the rotor states.
 

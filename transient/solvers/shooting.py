@@ -1,0 +1,295 @@
+"""Periodic orbits of a system forced with period T: shooting on the once-per-period map.
+
+A periodic orbit through ``y*`` at time ``t0`` is a fixed point of the period map
+``Phi(y) = y(t0 + T)`` of the solution started at ``y(t0) = y``. The Jacobian of the map, the monodromy
+matrix ``M = dPhi/dy``, has the Floquet multipliers as eigenvalues: the orbit is linearly stable when all
+of them lie inside the unit circle. Nothing here knows a model: the caller hands over
+``flow(y, t0, T, rtol) -> y(t0 + T)`` (one integration at relative tolerance ``rtol``) and, optionally,
+``derivative(y, fy, v, rtol) -> M v`` (default: a one-sided finite difference of two flows).
+
+**Newton-Picard** (:func:`newton_picard`; Lust, Roose, Spence & Champneys, SIAM J. Sci. Comput. 19 (1998)
+1188; Shroff & Keller, SIAM J. Numer. Anal. 30 (1993) 1099). In a dissipative system only a few
+multipliers are not small. With an orthonormal basis ``V`` (n x p) of their (approximately) invariant
+subspace, ``P = V V^T`` and ``Q = I - P``, the Newton step for ``Phi(y) - y = 0`` splits into a p x p Newton
+step with the projected monodromy ``S = V^T M V`` and a Picard (fixed-point) step on the rest::
+
+    r = Phi(y) - y,    a = (I - S)^-1 V^T r,    d = Q r + V a,    y <- y + d
+
+The Q part contracts at the rate of the largest multiplier left out; the P part converges like Newton.
+``S`` costs p directional derivatives (p periods) and is kept (a chord) while the steps shrink at least
+``1 / refresh``-fold per iteration, and recomputed otherwise. The error of the current iterate is
+estimated by the step ``norm(d)``; the iteration stops when it is below ``tol`` at the final integration
+tolerance and returns that iterate (its period is integrated: ``image``). Early iterations run the flow
+at a looser tolerance ``clip(eta * error estimate, rtol, rtol_max)`` (an inexact Newton method).
+The eigenvalues of ``S`` are the Ritz values of the monodromy on ``V``: the dominant multipliers.
+``W = M V`` spans a better approximation of the dominant subspace than ``V`` (one step of subspace
+iteration): the iteration goes on in its orthonormal basis (unless the Ritz values are at the derivatives'
+noise level), and returns it (``basis``) to start the next solve of a continuation. Plain iterations
+(``relax``) before the first step let the fast modes of a poor start die out: the step leaves out the
+coupling ``V^T M Q`` through which they would spoil it.
+
+**Newton-Krylov** (:func:`newton_krylov`): GMRES on ``(I - M) d = r`` with ``M v`` matrix-free; every
+Krylov vector costs one period. Kept for comparison: with few dominant multipliers it needs 3-5 periods of
+derivatives per Newton step where Newton-Picard needs p once.
+
+:func:`floquet_multipliers`: the k multipliers of largest modulus by Arnoldi (ARPACK,
+``scipy.sparse.linalg.eigs``) on the monodromy as a LinearOperator (one period per product): the independent
+check of the Ritz values.
+"""
+
+from __future__ import annotations
+
+import time
+from dataclasses import field
+from typing import Callable
+
+import numpy as np
+import scipy.sparse.linalg as spla
+
+from transient.results import Result, result_type
+
+
+@result_type
+class ShootingResult(Result):
+    """Outcome of a shooting solve. ``state``: the accepted start state (a fixed point of the period map to
+    ``error_estimate`` in the caller's norm), ``image``: its flow over one period, ``multipliers``: the
+    Ritz values of the monodromy (dominant first), ``basis``/``monodromy``: ``W = M V`` orthonormalised
+    and the projected monodromy on it (to warm-start a continuation). Histories per iteration:
+    ``residual_norms`` (``norm(Phi(y) - y)``), ``step_norms`` (``norm(d)``, the error estimates) and
+    ``rtols``; ``periods``: flows integrated, derivatives included; ``derivatives``: of those, the
+    directional derivatives."""
+
+    time_axis = None
+    state: np.ndarray
+    image: np.ndarray
+    success: bool
+    message: str
+    iterations: int = 0
+    periods: int = 0
+    derivatives: int = 0
+    error_estimate: float = float("nan")
+    multipliers: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=complex))
+    basis: np.ndarray | None = None
+    monodromy: np.ndarray | None = None
+    residual_norms: list = field(default_factory=list)
+    step_norms: list = field(default_factory=list)
+    rtols: list = field(default_factory=list)
+    wall_time: float = 0.0
+
+
+def _max_norm(d) -> float:
+    return float(np.max(np.abs(d)))
+
+
+class _Counted:
+    """The caller's flow and derivative, counted; the default derivative is a one-sided difference."""
+
+    def __init__(self, flow, derivative, norm, fd_step):
+        self.flow_fn, self.derivative_fn, self.norm, self.fd_step = flow, derivative, norm, fd_step
+        self.periods = 0
+        self.derivatives = 0
+
+    def flow(self, y, t0, T, rtol):
+        self.periods += 1
+        return np.asarray(self.flow_fn(y, t0, T, rtol), dtype=float)
+
+    def relaxed(self, y, t0, T, rtol, periods):
+        """``periods`` plain iterations of the map from ``y``; stops at the last finite state if the flow fails."""
+        for _ in range(int(periods)):
+            fy = self.flow(y, t0, T, rtol)
+            if not np.all(np.isfinite(fy)):
+                break
+            y = fy
+        return y
+
+    def jvp(self, y, fy, v, t0, T, rtol):
+        """``M v`` at ``y`` (``fy = Phi(y)`` at the same ``rtol``)."""
+        self.derivatives += 1
+        if self.derivative_fn is not None:
+            self.periods += 1
+            return np.asarray(self.derivative_fn(y, fy, v, rtol), dtype=float)
+        size = self.norm(v)
+        if not size > 1e-3 * _max_norm(v):  # v hardly moves the observed part: scale on the whole vector
+            size = _max_norm(v)
+        eps = self.fd_step / size
+        return (self.flow(y + eps * v, t0, T, rtol) - fy) / eps
+
+
+def _orthonormal(basis) -> np.ndarray:
+    V = np.asarray(basis, dtype=float)
+    if V.ndim == 1:
+        V = V[:, None]
+    q, r = np.linalg.qr(V)
+    keep = np.abs(np.diag(r)) > 1e-12 * max(1.0, float(np.abs(r).max()))
+    if not keep.any():
+        raise ValueError("basis: the columns are zero or linearly dependent")
+    return q[:, keep]
+
+
+def _ordered(mu) -> np.ndarray:
+    mu = np.asarray(mu, dtype=complex)
+    return mu[np.argsort(-np.abs(mu), kind="stable")]
+
+
+def newton_picard(flow: Callable, y0, period: float, basis, *, t0: float = 0.0, tol: float = 1e-8,
+                  rtol: float = 1e-8, rtol_max: float = 1e-4, eta: float = 3e-3, norm: Callable = _max_norm,
+                  derivative: Callable | None = None, fd_step: float = 1e-3,
+                  fd_rtol: float | None = None, refresh: float = 0.3, max_iter: int = 25, relax: int = 0,
+                  second_ritz: bool = False, refine_floor: float = 0.05,
+                  callback: Callable | None = None) -> ShootingResult:
+    """Fixed point of the period map by Newton-Picard (module docstring).
+
+    Parameters
+    ----------
+    flow : ``flow(y, t0, T, rtol) -> y(t0 + T)``.
+    y0 : start guess; period : T; t0 : start time (the phase of the forcing).
+    basis : (n, p) guess of the dominant subspace (orthonormalised here).
+    tol : accept the iterate when ``norm(d) <= tol`` at the final tolerance ``rtol``.
+    rtol_max, eta : loosest integration tolerance and the factor on the error estimate (inexact iterations).
+    norm : ``norm(d) -> float``, the error measure (e.g. the journal position in units of its clearance).
+    derivative : ``derivative(y, fy, v, rtol) -> M v``; default ``(Phi(y + e v) - Phi(y)) / e`` with ``e`` such
+        that ``norm(e v) = fd_step``; the iteration that computes them integrates at ``fd_rtol`` or tighter
+        (default ``clip(fd_step / 100, rtol, rtol_max)``).
+    refresh : recompute ``S`` when a step is not at least ``1 / refresh`` times smaller than the last.
+    second_ritz : take the derivatives once more at the iteration after the first ones, on the refined basis
+        (p more periods; not when the basis was not refined, see ``refine_floor``): the Ritz values of a poor
+        initial basis (e.g. from a linearised model) can be off by 2e-2, those of the refined one are within
+        ~1e-3 of Arnoldi's (docs/periodic.md). A continuation, which passes the previous refined basis, does
+        not need it.
+    refine_floor : the basis follows ``W = M V`` only while every Ritz value exceeds it (the derivatives'
+        relative noise is ~``rtol / fd_step``).
+    relax : plain iterations of the map (at ``rtol_max``) before the first Newton step: they let the fast
+        modes of a poor start die out so that they do not pollute the first step through the coupling
+        ``V^T M Q`` that the Newton-Picard step leaves out.
+    callback : ``callback(k, y, r, d, rtol)`` after every iteration.
+
+    Returns a :class:`ShootingResult`; ``success`` False (with the histories) if ``max_iter`` is reached.
+    """
+    if not (tol > 0 and rtol > 0 and rtol_max >= rtol and period > 0):
+        raise ValueError(f"need tol > 0, period > 0 and 0 < rtol <= rtol_max; got tol={tol!r}, period={period!r}, "
+                         f"rtol={rtol!r}, rtol_max={rtol_max!r}")
+    wall0 = time.perf_counter()
+    f = _Counted(flow, derivative, norm, fd_step)
+    fd_rtol = float(np.clip(fd_step / 100.0, rtol, rtol_max)) if fd_rtol is None else float(fd_rtol)
+    V = _orthonormal(basis)
+    p = V.shape[1]
+    S = None
+    y = f.relaxed(np.array(y0, dtype=float), t0, period, rtol_max, relax)
+    out = ShootingResult(state=y, image=y, success=False, message="")
+    ritz, derived_at, refined = None, None, False
+    rt = rtol_max
+    for k in range(int(max_iter)):
+        slow = len(out.step_norms) > 1 and out.step_norms[-1] > refresh * out.step_norms[-2]
+        new_S = S is None or slow or (second_ritz and derived_at == k - 1 and k == 1 and refined)
+        if new_S:  # the derivatives share the base flow: integrate it at least as tightly as they need
+            rt = min(rt, fd_rtol)
+        fy = f.flow(y, t0, period, rt)
+        if not np.all(np.isfinite(fy)):
+            out.message = f"the flow returned a non-finite state at iteration {k}"
+            break
+        r = fy - y
+        if new_S:
+            W = np.column_stack([f.jvp(y, fy, V[:, j], t0, period, rt) for j in range(p)])
+            ritz, derived_at, V0 = np.linalg.eigvals(V.T @ W), k, V
+            V, S = _refined(V, W, V.T @ W, refine_floor)
+            refined = V is not V0
+        a = np.linalg.solve(np.eye(p) - S, V.T @ r)
+        d = r - V @ (V.T @ r) + V @ a
+        est = norm(d)
+        out.residual_norms.append(norm(r))
+        out.step_norms.append(est)
+        out.rtols.append(rt)
+        out.iterations = k + 1
+        if callback is not None:
+            callback(k, y, r, d, rt)
+        if est <= tol and rt <= rtol:
+            out.state, out.image, out.success = y, fy, True
+            out.message = f"converged in {k + 1} iterations: error estimate {est:.2e} <= tol {tol:.2e}"
+            break
+        y = y + d
+        rt = float(np.clip(eta * est, rtol, rtol_max))
+    else:
+        out.state, out.image = y, fy
+        out.message = (f"Newton-Picard did not converge in {max_iter} iterations: error estimates "
+                       + ", ".join(f"{e:.2e}" for e in out.step_norms[-5:]))
+    out.periods, out.derivatives = f.periods, f.derivatives
+    out.error_estimate = out.step_norms[-1] if out.step_norms else float("nan")
+    if ritz is not None:
+        out.multipliers = _ordered(ritz)
+    out.basis, out.monodromy = V, S
+    out.wall_time = time.perf_counter() - wall0
+    return out
+
+
+def _refined(V, W, S, floor):
+    """One step of subspace iteration: the orthonormal basis ``V'`` of ``W = M V`` and the monodromy on it,
+    ``V'^T M V' = R (V'^T V)^-1`` (``W = V' R``; exact when ``M`` annihilates the part of ``V`` outside the
+    dominant subspace). Keeps ``(V, S)`` when a Ritz value of ``S`` is below ``floor`` (then ``W`` is mostly the
+    noise of the derivatives, and following it would lose the dominant subspace along a continuation) or
+    when ``W`` does not span a p-dimensional space close to ``V``."""
+    if np.abs(np.linalg.eigvals(S)).min() < floor:
+        return V, S
+    q, R = np.linalg.qr(W)
+    G = q.T @ V
+    if np.linalg.svd(G, compute_uv=False).min() < 0.5:
+        return V, S
+    return q, R @ np.linalg.inv(G)
+
+
+def newton_krylov(flow: Callable, y0, period: float, *, t0: float = 0.0, tol: float = 1e-8, rtol: float = 1e-8,
+                  rtol_max: float = 1e-4, eta: float = 3e-3, norm: Callable = _max_norm,
+                  derivative: Callable | None = None, fd_step: float = 1e-3, fd_rtol: float | None = None,
+                  krylov_tol: float = 1e-3, max_krylov: int = 20, max_iter: int = 25, relax: int = 0) -> ShootingResult:
+    """Fixed point of the period map by Newton-GMRES with matrix-free ``M v`` (one period per Krylov vector).
+
+    Arguments as :func:`newton_picard`; ``krylov_tol`` is GMRES's relative residual. Multipliers are not
+    computed (use :func:`floquet_multipliers`)."""
+    wall0 = time.perf_counter()
+    f = _Counted(flow, derivative, norm, fd_step)
+    fd_rtol = float(np.clip(fd_step / 100.0, rtol, rtol_max)) if fd_rtol is None else float(fd_rtol)
+    y = f.relaxed(np.array(y0, dtype=float), t0, period, rtol_max, relax)
+    out = ShootingResult(state=y, image=y, success=False, message="")
+    rt = rtol_max
+    n = y.size
+    for k in range(int(max_iter)):
+        fy = f.flow(y, t0, period, rt)
+        if not np.all(np.isfinite(fy)):
+            out.message = f"the flow returned a non-finite state at iteration {k}"
+            break
+        r = fy - y
+        fr = f.flow(y, t0, period, fd_rtol) if fd_rtol != rt else fy
+        A = spla.LinearOperator((n, n), matvec=lambda v: v - f.jvp(y, fr, np.ravel(v), t0, period, fd_rtol),
+                                dtype=float)
+        d, _ = spla.gmres(A, r, rtol=krylov_tol, atol=0.0, restart=max_krylov, maxiter=1)
+        est = norm(d)
+        out.residual_norms.append(norm(r))
+        out.step_norms.append(est)
+        out.rtols.append(rt)
+        out.iterations = k + 1
+        if est <= tol and rt <= rtol:
+            out.state, out.image, out.success = y, fy, True
+            out.message = f"converged in {k + 1} iterations: error estimate {est:.2e} <= tol {tol:.2e}"
+            break
+        y = y + d
+        rt = float(np.clip(eta * est, rtol, rtol_max))
+    else:
+        out.state, out.image = y, fy
+        out.message = f"Newton-Krylov did not converge in {max_iter} iterations"
+    out.periods, out.derivatives = f.periods, f.derivatives
+    out.error_estimate = out.step_norms[-1] if out.step_norms else float("nan")
+    out.wall_time = time.perf_counter() - wall0
+    return out
+
+
+def floquet_multipliers(flow: Callable, y, period: float, k: int = 4, *, t0: float = 0.0, rtol: float = 1e-8,
+                        derivative: Callable | None = None, fd_step: float = 1e-6, norm: Callable = _max_norm,
+                        ncv: int | None = None, arnoldi_tol: float = 1e-6) -> tuple[np.ndarray, np.ndarray, int]:
+    """The ``k`` Floquet multipliers of largest modulus of the orbit through ``y`` (Arnoldi on the
+    monodromy, one period per product). Returns (multipliers, eigenvectors (n, k), periods integrated)."""
+    f = _Counted(flow, derivative, norm, fd_step)
+    fy = f.flow(y, t0, period, rtol)
+    n = np.size(y)
+    A = spla.LinearOperator((n, n), matvec=lambda v: f.jvp(y, fy, np.ravel(v), t0, period, rtol), dtype=float)
+    vals, vecs = spla.eigs(A, k=k, which="LM", ncv=ncv or min(n - 1, max(2 * k + 1, 12)), tol=arnoldi_tol)
+    order = np.argsort(-np.abs(vals), kind="stable")
+    return vals[order], vecs[:, order], f.periods
