@@ -146,3 +146,11 @@ def test_regime_figures_show_regimes_values_and_the_papers_boundaries():
     fig = plots.critical_films({"n_balls": (Z, 1e-6 * (220 + 8 * Z), dict(load=30, speed_rpm=80))}, 100e-6,
                                jeong.REPORTED)
     assert "critical ambient film" in fig.axes[0].get_ylabel()
+
+
+def test_an_isoviscous_oil_is_outside_the_flooded_film_fit():
+    """pressure_viscosity = 0 used to give a zero flooded film (h ~ G^0.49) without a word (issue 17)."""
+    with pytest.raises(ValueError, match="pressure_viscosity"):
+        ThrustBallBearing(pressure_viscosity=0.0)
+    with pytest.raises(ValueError, match="n_balls"):
+        ThrustBallBearing(n_balls="6")

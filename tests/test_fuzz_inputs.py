@@ -8,14 +8,17 @@ gathered in ``COUNTS`` and printed at the end of the run (docs/validation.md quo
 
 import math
 import os
+import warnings
 from collections import Counter
 
 import numpy as np
 import pytest
-from hypothesis import HealthCheck, given, settings
+from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 
 from transient import AsperityContact, DiscreteDensity, RoughSurface, ThrustPad, steel_asperity_contact
+from transient.models.ball import ThrustBallBearing
+from transient.models.journal import Groove, JournalBearing, JournalOrbit
 from transient.physics.layered import BoundaryLayers, Gecim, LayeredFilm
 
 COUNTS = Counter()
@@ -138,6 +141,73 @@ def test_boundary_layers(key, value):
         _finite(f.flow(20e-6, -1e9, 1.0, 0.0))
 
     _outcome(key, lambda: BoundaryLayers(**kw), check)
+
+
+JOURNAL = dict(diameter=0.08, length=0.04, clearance=8e-5, viscosity=0.03, bulk_modulus=1e9, supply_pressure=101325.0,
+               cavitation_pressure=0.0, ambient_pressure=0.0, switch_content_width=1e-2, grid=(24, 4), symmetric=True,
+               groove=Groove())
+
+
+@SETTINGS
+@given(key=st.sampled_from(sorted(JOURNAL)), value=hostile)
+def test_journal_bearing(key, value):
+    kw = dict(JOURNAL, **{key: value})
+
+    def run():
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            return JournalBearing(**kw).steady_state(0.6, 6000.0)
+
+    _outcome(key, run, lambda st_: _finite(st_.pressure, st_.force, st_.film_content))
+
+
+@SETTINGS
+@given(key=st.sampled_from(["angle_deg", "width_deg"]), value=hostile)
+def test_groove(key, value):
+    _outcome(key, lambda: Groove(**{key: value}), lambda g: _finite(JournalBearing(**dict(JOURNAL, groove=g))
+                                                                     .steady_state(0.5, 3000.0).force))
+
+
+_ORBIT = None
+
+
+def _orbit():
+    global _ORBIT
+    if _ORBIT is None:
+        _ORBIT = JournalOrbit(JournalBearing(**JOURNAL), 50.0, 1e-6, 500.0, 6000.0)
+    return _ORBIT
+
+
+@SETTINGS
+@given(key=st.sampled_from(["revolutions", "rtol", "atol", "outputs_per_revolution", "touch_gap", "y0",
+                            "chunk_revolutions"]), value=hostile)
+def test_journal_orbit_run(key, value):
+    assume(not (key == "revolutions" and isinstance(value, (int, float)) and value > 0.5))  # valid, but long
+    kw = dict(revolutions=0.05, rtol=1e-4, atol=1e-8, outputs_per_revolution=20, progress=False) | {key: value}
+    name = {"y0": "initial state"}.get(key, key)
+    _outcome(name, lambda: _orbit().run(**kw), lambda r: _finite(r.x, r.y))
+
+
+@SETTINGS
+@given(key=st.sampled_from(["rotor_mass", "unbalance", "load", "speed_rpm"]), value=hostile)
+def test_journal_orbit(key, value):
+    kw = dict(rotor_mass=50.0, unbalance=1e-6, load=500.0, speed_rpm=6000.0) | {key: value}
+    _outcome(key, lambda: JournalOrbit(_orbit().bearing, **kw), lambda o: _finite(o.initial_state()))
+
+
+BALL = dict(pitch_diameter=0.031, ball_diameter=0.003, n_balls=6, conformity=0.52, youngs_modulus=207e9,
+            poisson_ratio=0.3, viscosity=0.02, pressure_viscosity=2e-8, surface_tension=0.036)
+
+
+@SETTINGS
+@given(key=st.sampled_from(sorted(BALL)), value=hostile)
+def test_thrust_ball_bearing(key, value):
+    def check(b):
+        f = b.flooded_film(100.0, 1000.0)
+        _finite(f.h_c, f.h_min, f.m_star)
+        assert f.h_c > 0 and f.h_min > 0, "a flooded film is positive"
+
+    _outcome(key, lambda: ThrustBallBearing(**dict(BALL, **{key: value})), check)
 
 
 def test_zz_report_counts():

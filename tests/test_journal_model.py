@@ -496,3 +496,44 @@ def test_checkpoint_resume_equals_uninterrupted_run(tmp_path):
     other = JournalOrbit(b, MASS, 0.02 * CL, W, RPM)
     with pytest.raises(ValueError, match="checkpoint"):
         other.run(2.0, checkpoint=path, resume=True, **kw)
+
+
+# ---- issue 17: inputs that used to pass silently or fail deep inside -------------------------------------------
+@pytest.mark.parametrize("make, name", [
+    (lambda: Groove(angle_deg=float("nan")), "angle_deg"),
+    (lambda: Groove(angle_deg="90"), "angle_deg"),
+    (lambda: JournalBearing(D, L, CL, MU, symmetric="False", grid=(24, 4)), "symmetric"),
+    (lambda: JournalBearing(D, L, CL, MU, grid=(41.5, 6)), "n_theta"),
+    (lambda: JournalBearing(D, L, CL, MU, grid=(41, "6")), "n_axial"),
+    (lambda: JournalBearing(D, L, CL, MU, cavitation_pressure=float("nan"), grid=(24, 4)), "cavitation_pressure"),
+    (lambda: JournalBearing(D, L, CL, MU, cavitation_pressure="0", grid=(24, 4)), "cavitation_pressure"),
+    (lambda: JournalBearing(D, L, CL, MU, grid=(24, 4)).steady_state(0.5, 1e300), "speed_rpm"),
+])
+def test_bad_journal_inputs_are_named(make, name):
+    with pytest.raises(ValueError, match=name):
+        make()
+
+
+def test_orbit_rejects_a_start_outside_the_clearance_and_non_numeric_states():
+    o = JournalOrbit(JournalBearing(D, L, CL, MU, grid=(24, 4)), MASS, 0.01 * CL, W, RPM)
+    y = o.initial_state()
+    y[o.film.n] = 1.2
+    with pytest.raises(ValueError, match="outside the clearance"):
+        o.run(0.1, y0=y, progress=False)
+    for bad in ("5", 1.0, [None] * o.n):
+        with pytest.raises(ValueError, match="initial state"):
+            o.run(0.1, y0=bad, progress=False)
+    with pytest.raises(ValueError, match="revolutions"):
+        o.run("5", progress=False)
+
+
+def test_an_unreachable_equilibrium_is_a_named_value_error():
+    b = JournalBearing(D, L, CL, MU, grid=(24, 4))
+    with pytest.raises(ValueError, match=r"load=1000000\.0 N, speed_rpm=6000"):
+        b.equilibrium(1e6, 6000.0)
+
+
+def test_pressures_beyond_the_isoviscous_rigid_model_warn():
+    b = JournalBearing(D, L, CL, MU, grid=(48, 8))
+    with pytest.warns(UserWarning, match="outside its validity"):
+        b.steady_state(0.98, RPM)

@@ -43,7 +43,7 @@ from transient.physics import film_formulas as hd
 from transient.physics.hertz import (HertzContact, gap_rolling_axis, gap_rolling_axis_slope, hertz_contact,
                                      meniscus_position, reduced_modulus)
 from transient.models.ball.track import FrontTrack, UniformTrack
-from transient.checks import check_range
+from transient.checks import check_int, check_range
 from transient.results import Result, quantity, record_type, result_type
 
 FLOODED, STARVED, PARCHED = "fully flooded", "starved", "parched"
@@ -175,16 +175,16 @@ class ThrustBallBearing:
     def __post_init__(self):
         check_range("ball_diameter", self.ball_diameter, "m", 0.0, 1.0, low_open=True, high_open=True)
         check_range("pitch_diameter", self.pitch_diameter, "m", self.ball_diameter, 10.0, low_open=True, high_open=True)
-        if int(self.n_balls) != self.n_balls:
-            raise ValueError(f"n_balls = {self.n_balls!r} [-] must be an integer")
         z_max = int(math.pi * self.pitch_diameter / self.ball_diameter)
-        check_range("n_balls", self.n_balls, "-", 1, z_max, low_open=False, high_open=False)
+        check_int("n_balls", self.n_balls, "-", 1, z_max)
         check_range("conformity", self.conformity, "-", 0.5, 1.0, low_open=True, high_open=False,
                     why="(conformity = groove radius / ball diameter)")
         check_range("youngs_modulus", self.youngs_modulus, "Pa", 0.0, 1e13, low_open=True, high_open=True)
         check_range("poisson_ratio", self.poisson_ratio, "-", 0.0, 0.5, low_open=False, high_open=True)
         check_range("viscosity", self.viscosity, "Pa s", 0.0, 1e4, low_open=True, high_open=True)
-        check_range("pressure_viscosity", self.pressure_viscosity, "1/Pa", 0.0, 1e-6, low_open=False, high_open=True)
+        check_range("pressure_viscosity", self.pressure_viscosity, "1/Pa", 1e-9, 1e-6, high_open=True,
+                    why="(the Hamrock-Dowson fit behind the flooded film, h ~ (alpha E')^0.49, is for a "
+                    "piezoviscous oil: mineral oils 1e-8 - 3e-8 1/Pa)")
         check_range("surface_tension", self.surface_tension, "N/m", 0.0, 1.0, low_open=True, high_open=True)
 
     # geometry -------------------------------------------------------------------------------------

@@ -7,13 +7,14 @@ dimensionless groups are in :mod:`transient.models.journal.kernels`.
 
 from __future__ import annotations
 
+import warnings
 from dataclasses import dataclass
 
 import numpy as np
 import scipy.linalg as sla
 from scipy.optimize import brentq
 
-from transient.checks import check_positive, check_range
+from transient.checks import check_bool, check_int, check_positive, check_range
 from transient.fv.grid import Axis, Grid2D
 from transient.models.journal.film import Film, omega
 from transient.models.journal.kernels import N_ROTOR
@@ -22,6 +23,33 @@ from transient.results import Result, quantity, result_type
 
 
 
+
+
+SPEED_RANGE_RPM = (1e-3, 1e6)
+
+
+def check_speed(speed_rpm) -> float:
+    """A shaft speed [rpm] in ``SPEED_RANGE_RPM``."""
+    return check_range("speed_rpm", speed_rpm, "rpm", *SPEED_RANGE_RPM)
+
+
+class NoEquilibriumError(RuntimeError, ValueError):
+    """The film cannot carry the load at this speed inside the clearance (names ``load`` and ``speed_rpm``)."""
+
+
+VALIDITY_PRESSURE = 100e6  # [Pa]: exp(alpha p) = 7.4 for a mineral oil's alpha = 2e-8 1/Pa
+
+
+def _warn_validity(state: "FilmState") -> "FilmState":
+    """Warn when the film pressure leaves the isoviscous rigid model's range: above ``VALIDITY_PRESSURE`` a
+    mineral oil's viscosity has grown sevenfold (Barus, alpha ~ 2e-8 1/Pa) and the bearing surfaces deform
+    by a sizeable part of the film -- an EHL regime this model does not represent."""
+    p = state.max_pressure
+    if p > VALIDITY_PRESSURE:
+        warnings.warn(f"the film pressure reaches {p / 1e6:.0f} MPa (e/C = {state.eccentricity_ratio:.3f}): above "
+                      f"{VALIDITY_PRESSURE / 1e6:.0f} MPa the isoviscous rigid film is outside its validity "
+                      f"(piezoviscosity and elastic deformation matter)", UserWarning, stacklevel=3)
+    return state
 
 
 @dataclass(frozen=True)
@@ -34,6 +62,7 @@ class Groove:
     width_deg: float = 6.0
 
     def __post_init__(self):
+        check_range("groove.angle_deg", self.angle_deg, "deg", -360.0, 360.0)
         check_range("groove.width_deg", self.width_deg, "deg", 0.0, 90.0, low_open=True)
 
 
@@ -103,7 +132,8 @@ class JournalBearing:
                     why="(a clearance above D/10 is not a journal bearing)")
         self.viscosity = check_positive("viscosity", viscosity, "Pa s")
         self.bulk_modulus = check_positive("bulk_modulus", bulk_modulus, "Pa")
-        self.cavitation_pressure = float(cavitation_pressure)
+        self.cavitation_pressure = check_range("cavitation_pressure", cavitation_pressure, "Pa", 0.0, 1e9,
+                                               why="(absolute pressure)")
         self.ambient_pressure = check_range("ambient_pressure", ambient_pressure, "Pa", cavitation_pressure, np.inf,
                                             why="(must be >= cavitation_pressure)")
         self.supply_pressure = check_range("supply_pressure", supply_pressure, "Pa", cavitation_pressure, np.inf,
@@ -115,14 +145,12 @@ class JournalBearing:
         if groove is not None and not isinstance(groove, Groove):
             raise TypeError(f"groove must be a Groove or None, got {type(groove).__name__}")
         self.groove = groove
-        try:
-            n_theta, n_axial = (int(v) for v in grid)
-        except (TypeError, ValueError):
-            raise ValueError(f"grid must be (n_theta, n_axial), got {grid!r}") from None
-        check_range("grid[0] (n_theta)", n_theta, "cells", 8, 20000)
-        check_range("grid[1] (n_axial)", n_axial, "cells", 1, 5000)
+        if isinstance(grid, (str, bytes)) or not hasattr(grid, "__len__") or len(grid) != 2:
+            raise ValueError(f"grid must be (n_theta, n_axial) cells, got {grid!r}")
+        n_theta = check_int("grid[0] (n_theta)", grid[0], "cells", 8, 20000)
+        n_axial = check_int("grid[1] (n_axial)", grid[1], "cells", 1, 5000)
         self.grid_shape = (n_theta, n_axial)
-        self.symmetric = bool(symmetric)
+        self.symmetric = check_bool("symmetric", symmetric)
         self.radius = 0.5 * self.diameter
         self._build_grid()
 
@@ -171,17 +199,17 @@ class JournalBearing:
         """Film with the journal held at eccentricity ratio ``eps`` in the direction ``position_angle_deg``
         (from the load line +x, in the direction of rotation); a direct Newton solve."""
         eps = check_range("eccentricity_ratio", eccentricity_ratio, "-", 0.0, 1.0, high_open=True)
-        check_positive("speed_rpm", speed_rpm, "rpm")
+        check_speed(speed_rpm)
         a = np.radians(position_angle_deg)
         f = self.film(speed_rpm)
         u, its = f.solve(eps * np.cos(a), eps * np.sin(a))
-        return f.state(u, eps * np.cos(a), eps * np.sin(a), its)
+        return _warn_validity(f.state(u, eps * np.cos(a), eps * np.sin(a), its))
 
     def equilibrium(self, load, speed_rpm, tol=1e-10, max_iter=40) -> FilmState:
         """Static equilibrium under ``load`` [N] (in +x): 2-D Newton on the journal position with the
         exact derivative of the discrete film force (implicit differentiation of the film equations)."""
         f, u, q, it, _ = self._equilibrium(load, speed_rpm, tol, max_iter)
-        return f.state(u, q[0], q[1], it)
+        return _warn_validity(f.state(u, q[0], q[1], it))
 
     def coefficients(self, load, speed_rpm) -> tuple[np.ndarray, np.ndarray]:
         """Linearised stiffness K [N/m] and damping C [N s/m] (2x2, x towards the load) at the static
@@ -195,7 +223,7 @@ class JournalBearing:
         """Newton on the journal position; returns (film, u, (X, Y), iterations, (dF/dq, dF/dv)) with the
         force sensitivities at the converged state (they are the Newton matrix and the damping)."""
         W = check_positive("load", load, "N")
-        check_positive("speed_rpm", speed_rpm, "rpm")
+        check_speed(speed_rpm)
         f = self.film(speed_rpm)
         wbar = W / f.force_scale
         q = np.array([0.3, 0.3])  # eccentric start in the loaded quadrant
@@ -211,7 +239,7 @@ class JournalBearing:
             while np.hypot(*(q + lam * dq)) >= 0.995:
                 lam *= 0.5
             q = q + lam * dq
-        raise RuntimeError(f"equilibrium(load={W} N, speed_rpm={speed_rpm}) did not converge in {max_iter} "
+        raise NoEquilibriumError(f"equilibrium(load={W} N, speed_rpm={speed_rpm}) did not converge in {max_iter} "
                            f"iterations; last eccentricity ratio {np.hypot(*q):.4f}, force residual "
                            f"{np.max(np.abs(r)) * f.force_scale:.3e} N")
 

@@ -25,7 +25,7 @@ from dataclasses import field
 import numpy as np
 
 from transient.checks import check_positive, check_range
-from transient.models.journal.bearing import JournalBearing
+from transient.models.journal.bearing import JournalBearing, check_speed
 from transient.models.journal.kernels import N_ROTOR, dae_jacobian, dae_residual, ode_jacobian, ode_rhs
 from transient.models.journal.rk4 import FilmStageSolver
 from transient.results import Result, quantity, result_type
@@ -106,7 +106,7 @@ class JournalOrbit:
         self.unbalance = check_range("unbalance", unbalance, "m", 0.0, bearing.clearance, high_open=True,
                                      why="(mass eccentricity, must be below the clearance)")
         self.load = check_range("load", load, "N", 0.0, np.inf, high_open=True)
-        self.speed_rpm = check_positive("speed_rpm", speed_rpm, "rpm")
+        self.speed_rpm = check_speed(speed_rpm)
         self.film = bearing.film(speed_rpm)
         f = self.film
         mc_w2 = self.rotor_mass * bearing.clearance * f.omega ** 2
@@ -262,12 +262,18 @@ class JournalOrbit:
         if start is not None:
             t_start, y = (start.final_time, start.final_state) if isinstance(start, OrbitResult) else start
             tau0 = float(t_start) * self.film.omega
-            y = np.array(y, dtype=float)
+            y = _state_array(y)
         else:
             tau0 = 0.0
-            y = self.initial_state() if y0 is None else np.array(y0, dtype=float)
+            y = self.initial_state() if y0 is None else _state_array(y0)
         if y.shape != (self.n,):
             raise ValueError(f"the initial state has shape {y.shape}; this orbit has {self.n} states")
+        if not np.all(np.isfinite(y)):
+            raise ValueError(f"the initial state has a non-finite entry at index {int(np.argmin(np.isfinite(y)))}")
+        e_start = float(np.hypot(y[self.film.n], y[self.film.n + 1]))
+        if e_start >= 1.0:
+            raise ValueError(f"the initial journal position is outside the clearance: e/C = {e_start:.4g} "
+                             f"[-]; allowed: [0, 1)")
         rec.last_y = y
         n_out = max(1, int(round(revolutions * opr)))
         if method == "rk4":
@@ -454,3 +460,13 @@ class _Recorder:
         return OrbitResult(t=np.array(self.t), x=np.array(self.x), y=np.array(self.y), method=method, stats=stats,
                            speed_rpm=o.speed_rpm, clearance=o.bearing.clearance, touched_at=touched, message=message,
                            final_state=self.last_y, final_time=float(tau_end) / o.film.omega, **extra)
+
+
+def _state_array(y) -> np.ndarray:
+    """A user's initial state as a float array (a one-line error naming it otherwise)."""
+    if isinstance(y, (str, bytes)):
+        raise ValueError(f"the initial state y0 must be an array of numbers, got {y!r}")
+    try:
+        return np.array(y, dtype=float)
+    except (TypeError, ValueError):
+        raise ValueError(f"the initial state y0 must be an array of numbers, got {type(y).__name__}") from None
