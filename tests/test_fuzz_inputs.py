@@ -145,7 +145,7 @@ def test_boundary_layers(key, value):
 
 JOURNAL = dict(diameter=0.08, length=0.04, clearance=8e-5, viscosity=0.03, bulk_modulus=1e9, supply_pressure=101325.0,
                cavitation_pressure=0.0, ambient_pressure=0.0, switch_content_width=1e-2, grid=(24, 4), symmetric=True,
-               groove=Groove())
+               groove=Groove(), cavitation="elrod")
 
 
 @SETTINGS

@@ -1,5 +1,6 @@
-"""Finite plain journal bearing with a mass-conserving Elrod film: steady film, static equilibrium,
-linearised stiffness/damping and the Lund stability threshold (Rho & Kim, seed 003).
+"""Finite plain journal bearing with a mass-conserving Elrod film (default) or the classical
+incompressible film with the Reynolds (Swift-Stieber) condition: steady film, static equilibrium,
+linearised stiffness/damping and the Lund stability threshold (Rho & Kim, seed 003; issue 17).
 
 All public arguments and results are SI (m, Pa, Pa s, N, rpm). The discretisation and the
 dimensionless groups are in :mod:`transient.models.journal.kernels`.
@@ -18,6 +19,10 @@ from transient.checks import check_bool, check_int, check_positive, check_range
 from transient.fv.grid import Axis, Grid2D
 from transient.models.journal.film import Film, omega
 from transient.models.journal.kernels import N_ROTOR
+from transient.models.journal.reynolds_film import ReynoldsFilm
+
+#: The cavitation models of :class:`JournalBearing` (``cavitation=``).
+CAVITATION_MODES = ("elrod", "reynolds")
 from transient.results import Result, quantity, result_type
 
 
@@ -101,7 +106,8 @@ class FilmState(Result):
 
 
 class JournalBearing:
-    """Plain journal bearing, Elrod (JFO) mass-conserving film, rigid journal.
+    """Plain journal bearing, Elrod (JFO) mass-conserving film or classical Reynolds-condition film,
+    rigid journal.
 
     Parameters (SI)
     ----------
@@ -120,11 +126,21 @@ class JournalBearing:
         fills or empties); it hardly biases the film but sets how abruptly a cell turns at rupture and
         reformation, so a wider one saves the orbit integrator time steps (docs/journal.md, section 3).
     symmetric : model half the length with a symmetry plane at the mid-plane (exact for this model).
+    cavitation : ``"elrod"`` (default) -- the mass-conserving, compressible Elrod film above; or
+        ``"reynolds"`` -- the classical incompressible film with the Reynolds (Swift-Stieber) condition,
+        ``p >= p_c`` solved as a complementarity problem on the same finite-volume stencil
+        (:mod:`transient.models.journal.reynolds_film`; ``bulk_modulus`` and the switch widths are then
+        unused). Both serve ``steady_state``, ``equilibrium``, ``coefficients`` and
+        ``stability_threshold``; the time-domain orbit needs ``"elrod"``. The classical full 360 deg bearing
+        of the design charts (Raimondi & Boyd) is ``cavitation="reynolds"`` with ``groove=None``.
     """
 
     def __init__(self, diameter, length, clearance, viscosity, bulk_modulus=1e9, supply_pressure=101325.0,
                  groove: Groove | None = Groove(), grid=(151, 21), cavitation_pressure=0.0, ambient_pressure=0.0,
-                 switch_width=None, switch_content_width=1e-2, symmetric=True):
+                 switch_width=None, switch_content_width=1e-2, symmetric=True, cavitation="elrod"):
+        if not isinstance(cavitation, str) or cavitation not in CAVITATION_MODES:
+            raise ValueError(f"cavitation must be one of {CAVITATION_MODES}, got cavitation={cavitation!r}")
+        self.cavitation = cavitation
         self.diameter = check_positive("diameter", diameter, "m")
         self.length = check_positive("length", length, "m")
         self.clearance = check_positive("clearance", clearance, "m")
@@ -145,6 +161,11 @@ class JournalBearing:
         if groove is not None and not isinstance(groove, Groove):
             raise TypeError(f"groove must be a Groove or None, got {type(groove).__name__}")
         self.groove = groove
+        if cavitation == "elrod" and groove is None and self.ambient_pressure <= self.cavitation_pressure:
+            warnings.warn("JournalBearing: the Elrod film has no oil supply (groove=None and ambient_pressure <= "
+                          "cavitation_pressure: nothing drives oil into the film, which starves); add a Groove, "
+                          "raise the ambient pressure, or use cavitation=\"reynolds\" for the classical 360-deg "
+                          "bearing", UserWarning, stacklevel=2)
         if isinstance(grid, (str, bytes)) or not hasattr(grid, "__len__") or len(grid) != 2:
             raise ValueError(f"grid must be (n_theta, n_axial) cells, got {grid!r}")
         n_theta = check_int("grid[0] (n_theta)", grid[0], "cells", 8, 20000)
@@ -184,20 +205,24 @@ class JournalBearing:
                     groove=None if g is None else [g.angle_deg, g.width_deg], grid=list(self.grid_shape),
                     cavitation_pressure=self.cavitation_pressure, ambient_pressure=self.ambient_pressure,
                     switch_width=self.switch_width, switch_content_width=self.switch_content_width,
-                    symmetric=self.symmetric)
+                    symmetric=self.symmetric, cavitation=self.cavitation)
 
     def pressure_scale(self, speed_rpm) -> float:
         """p0 = 6 mu omega (R/C)^2 [Pa], the dimensionless pressure unit at this speed."""
         return 6.0 * self.viscosity * omega(speed_rpm) * (self.radius / self.clearance) ** 2
 
-    def film(self, speed_rpm, n_extra=N_ROTOR) -> "Film":
-        """The discretised film at a shaft speed (scales, operator, scratch arrays)."""
+    def film(self, speed_rpm, n_extra=N_ROTOR) -> "Film | ReynoldsFilm":
+        """The discretised film at a shaft speed (scales, operator, scratch arrays): a :class:`Film`
+        (Elrod) or a :class:`~transient.models.journal.reynolds_film.ReynoldsFilm` (``cavitation="reynolds"``)."""
+        if self.cavitation == "reynolds":
+            return ReynoldsFilm(self, speed_rpm, n_extra)
         return Film(self, speed_rpm, n_extra)
 
     # ---------------------------------------------------------------------------------------------
     def steady_state(self, eccentricity_ratio, speed_rpm, position_angle_deg=0.0) -> FilmState:
         """Film with the journal held at eccentricity ratio ``eps`` in the direction ``position_angle_deg``
-        (from the load line +x, in the direction of rotation); a direct Newton solve."""
+        (from the load line +x, in the direction of rotation); a direct Newton solve (Elrod) or the
+        active-set solve of the complementarity problem (Reynolds)."""
         eps = check_range("eccentricity_ratio", eccentricity_ratio, "-", 0.0, 1.0, high_open=True)
         check_speed(speed_rpm)
         a = np.radians(position_angle_deg)
@@ -220,7 +245,8 @@ class JournalBearing:
         return K, Cmat
 
     def _equilibrium(self, load, speed_rpm, tol=1e-10, max_iter=40):
-        """Newton on the journal position; returns (film, u, (X, Y), iterations, (dF/dq, dF/dv)) with the
+        """Newton on the journal position (either film: both give the force and its exact sensitivities; the
+        Reynolds film's on its converged active set); returns (film, u, (X, Y), iterations, (dF/dq, dF/dv)) with the
         force sensitivities at the converged state (they are the Newton matrix and the damping)."""
         W = check_positive("load", load, "N")
         check_speed(speed_rpm)

@@ -101,6 +101,11 @@ class JournalOrbit:
     def __init__(self, bearing: JournalBearing, rotor_mass, unbalance, load, speed_rpm):
         if not isinstance(bearing, JournalBearing):
             raise TypeError(f"bearing must be a JournalBearing, got {type(bearing).__name__}")
+        if getattr(bearing, "cavitation", "elrod") != "elrod":
+            raise ValueError(f"JournalOrbit does not support cavitation={bearing.cavitation!r} yet: the time-domain "
+                             "orbit integrates the mass-conserving Elrod film; build the bearing with "
+                             "cavitation=\"elrod\" (the Reynolds-condition film serves steady_state, equilibrium, "
+                             "coefficients and stability_threshold)")
         self.bearing = bearing
         self.rotor_mass = check_positive("rotor_mass", rotor_mass, "kg")
         self.unbalance = check_range("unbalance", unbalance, "m", 0.0, bearing.clearance, high_open=True,
