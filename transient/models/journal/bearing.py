@@ -141,11 +141,11 @@ class JournalBearing:
         if not isinstance(cavitation, str) or cavitation not in CAVITATION_MODES:
             raise ValueError(f"cavitation must be one of {CAVITATION_MODES}, got cavitation={cavitation!r}")
         self.cavitation = cavitation
-        self.diameter = check_positive("diameter", diameter, "m")
-        self.length = check_positive("length", length, "m")
-        self.clearance = check_positive("clearance", clearance, "m")
-        check_range("clearance", clearance, "m", 0.0, 0.1 * diameter, low_open=True,
-                    why="(a clearance above D/10 is not a journal bearing)")
+        self.diameter = check_range("diameter", diameter, "m", 0.0, 10.0, low_open=True)
+        self.length = check_range("length", length, "m", 0.0, 10.0 * self.diameter, low_open=True,
+                                  why="(L/D up to 10: longer is a long-bearing limit, not a journal bearing)")
+        self.clearance = check_range("clearance", clearance, "m", 1e-5 * self.diameter, 0.1 * self.diameter,
+                                     why="(C/D from 1e-5 to 0.1: a journal bearing's radial clearance)")
         self.viscosity = check_positive("viscosity", viscosity, "Pa s")
         self.bulk_modulus = check_positive("bulk_modulus", bulk_modulus, "Pa")
         self.cavitation_pressure = check_range("cavitation_pressure", cavitation_pressure, "Pa", 0.0, 1e9,
