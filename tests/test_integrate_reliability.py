@@ -404,3 +404,13 @@ def test_scalar_or_nonfinite_initial_state_is_a_clear_error():
         Problem(y0=1.0, rhs=lambda t, y, out: None, name="scalar")
     with pytest.raises(ValueError, match=r"problem 'bad': y0 must be finite, got y0\[1\] = nan"):
         solve(Problem(y0=np.array([1.0, np.nan]), rhs=lambda t, y, out: None, name="bad"), [0.0, 1.0])
+
+
+def test_a_vanishing_atol_is_refused_before_ida_overflows():
+    """atol = 1e-300 made IDA's error weights overflow and segfault the process (fuzzing, issue 17)."""
+    def rhs(t, y, out):
+        out[:] = -y
+
+    p = Problem(y0=np.zeros(2), rhs=rhs)
+    with pytest.raises(ValueError, match="atol"):
+        solve(p, [0.0, 1.0], method="ida", atol=1e-300)

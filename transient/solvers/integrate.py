@@ -515,6 +515,9 @@ def _nonnegative_number(name, value) -> float:
     return x
 
 
+ATOL_FLOOR = 1e-30  # smaller absolute tolerances overflow the weighted norms of states at zero (IDA segfaults)
+
+
 def _check_atol(atol, n):
     """A positive finite scalar, or one positive finite value per state."""
     if isinstance(atol, (bool, np.bool_)):
@@ -526,12 +529,17 @@ def _check_atol(atol, n):
         raise ValueError(f"atol must be a finite number > 0 or an array of {n} such numbers (one per state), "
                          f"got {_short(atol)}") from None
     if a.ndim == 0:
-        return _positive_number("atol", atol if _real(atol) is not None else float(a))
+        v = _positive_number("atol", atol if _real(atol) is not None else float(a))
+        if v < ATOL_FLOOR:
+            raise ValueError(f"atol = {v!r} is below {ATOL_FLOOR:g}: the error weights 1/atol of states at zero "
+                             f"would overflow SUNDIALS' weighted norms")
+        return v
     if a.shape != (n,):
         raise ValueError(f"atol must be a scalar or an array of length n={n} (one per state), got shape {a.shape}")
-    bad = np.flatnonzero(~(np.isfinite(a) & (a > 0)))
+    bad = np.flatnonzero(~(np.isfinite(a) & (a >= ATOL_FLOOR)))
     if bad.size:
-        raise ValueError(f"atol[{bad[0]}] must be a finite number > 0, got {_show(a[bad[0]])} ({bad.size} bad of {n})")
+        raise ValueError(f"atol[{bad[0]}] must be a finite number > 0 (at least {ATOL_FLOOR:g}), got {_show(a[bad[0]])} "
+                         f"({bad.size} bad of {n})")
     return np.ascontiguousarray(a)
 
 

@@ -338,7 +338,7 @@ class JournalOrbit:
         (:mod:`transient.physics.cavitation`, ``r`` = content width / pressure width of the switch), so the
         cells get ``atol min(1, 1 / r)``: neither the content nor the pressure is held more loosely than
         ``atol``."""
-        atol = check_positive("atol", atol, "-")
+        atol = check_range("atol", atol, "-", 1e-25, 1.0, why="(absolute on the dimensionless states; below 1e-25 the integrators' error weights overflow)")
         out = np.full(self.n, atol)
         out[: self.film.n] = atol * min(1.0, 1.0 / self.film.content_scale)
         return out
