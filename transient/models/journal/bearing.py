@@ -95,7 +95,7 @@ class JournalBearing:
 
     def __init__(self, diameter, length, clearance, viscosity, bulk_modulus=1e9, supply_pressure=101325.0,
                  groove: Groove | None = Groove(), grid=(151, 21), cavitation_pressure=0.0, ambient_pressure=0.0,
-                 switch_width=None, switch_content_width=1e-2, symmetric=True):
+                 switch_width=None, switch_content_width=5e-4, symmetric=True):
         self.diameter = check_positive("diameter", diameter, "m")
         self.length = check_positive("length", length, "m")
         self.clearance = check_positive("clearance", clearance, "m")
