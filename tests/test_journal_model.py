@@ -125,6 +125,78 @@ def test_dae_jacobian_matches_finite_differences(switch_width):
     assert outside == 0.0
 
 
+@pytest.mark.parametrize("switch_width", [1e5, 1e3])
+def test_content_jacobians_match_finite_differences(switch_width):
+    """The content formulation (state m = H theta): the IDA residual Jacobian dF/dy + cj dF/dy' and the ODE
+    Jacobian, with the chain rule through u = C^-1(m / H) (du/dm and du/dX at fixed m) in the film rows and
+    in the rotor rows (the force depends on X through u at fixed content)."""
+    o, _, y_u = _orbit_state(switch_width)
+    n = o.n
+    prob = o.problem(y_u, formulation="content")
+    y = prob.y0.copy()
+    np.testing.assert_allclose(o.universal_state(y), y_u, rtol=1e-9, atol=1e-12)  # the layouts map back
+    pat = prob.jac_pattern.tocsc()
+    mask = (pat.toarray() != 0) | np.eye(n, dtype=bool)
+    h = 5e-5 * o.film.width  # the content bends on the scale w_theta + w / beta_bar: a finer step than in u
+    yp = np.empty(n)
+    prob.rhs(0.3, y, yp)
+    yp *= 1.3
+    cj = 7.5
+    data = np.empty(pat.nnz)
+    prob.jac_residual(0.3, y, yp, cj, data)
+    J_an = sp.csc_matrix((data, pat.indices, pat.indptr), shape=(n, n)).toarray()
+
+    def F(v, vp):
+        out = np.empty(n)
+        prob.residual(0.3, v, vp, out)
+        return out
+
+    J_fd = _fd_columns(lambda v: F(v, yp), y, n, h=h) + cj * _fd_columns(lambda v: F(y, v), yp, n, h=h)
+    rel, outside = _compare(J_an, J_fd, mask)
+    assert rel < 1e-6, rel
+    assert outside == 0.0
+    nf = o.film.n
+    assert np.abs(J_an[nf + 2:, nf:nf + 2]).max() > 0  # dF_V/dX through u(m, X): really there
+    prob.jac_rhs(0.3, y, data)
+    J_an = sp.csc_matrix((data, pat.indices, pat.indptr), shape=(n, n)).toarray()
+
+    def f(v):
+        out = np.empty(n)
+        prob.rhs(0.3, v, out)
+        return out
+
+    rel, outside = _compare(J_an, _fd_columns(f, y, n, h=h), mask)
+    assert rel < 1e-6, rel
+    assert outside == 0.0
+
+
+def test_content_inverse_and_conservation():
+    """u = C^-1(theta) inverts the switch to rounding error on both sides, in the switch band and for
+    beta = 1e7 (convex C) and 1e12 (concave); the content residual is the conservation law: the film rows of
+    F sum (times sym) to d/dt of the film content plus the net outflow (Film.mass_flows)."""
+    from transient.physics.cavitation import elrod_content, elrod_inverse, softplus_pressure
+
+    for beta_bar, w, r in ((0.37, 2e-3, 0.25), (37.0, 2e-3, 0.25), (3.7e4, 2e-3, 0.25), (37.0, 1e-4, 100.0)):
+        u = np.concatenate([np.linspace(-1.0 / r, 0.3, 200), np.linspace(-20 * w, 20 * w, 200)])
+        P, dP, C, D, dD = (np.empty_like(u) for _ in range(5))
+        softplus_pressure(u, w, P, dP)
+        elrod_content(u, P, dP, w, r, beta_bar, C, D, dD)
+        back = np.empty_like(u)
+        elrod_inverse(C, w, r, beta_bar, back)
+        # |du| <= a few ulps of theta divided by the slope D
+        assert np.all(np.abs(back - u) <= 1e-13 * np.maximum(1.0, np.abs(u)) + 8e-16 / D), (beta_bar, w, r)
+    o, _, y_u = _orbit_state(1e4)
+    prob = o.problem(y_u, formulation="content")
+    nf, f = o.film.n, o.film
+    y = prob.y0.copy()
+    yp = np.zeros(o.n)
+    out = np.empty(o.n)
+    prob.residual(0.3, y, yp, out)  # m' = 0: the film rows are the net outflows R_i
+    M, q_ends, q_groove = f.mass_flows(o.universal_state(y)[:nf], y[nf], y[nf + 1])
+    assert M == pytest.approx(f.sym * np.sum((f.area * y[:nf])[f.op.free]), rel=1e-12)
+    assert f.sym * np.sum(out[:nf][f.op.free]) == pytest.approx(q_ends + q_groove, rel=1e-9)
+
+
 @pytest.mark.parametrize("rate", [0.0, 3.0])
 def test_film_jacobian_matches_finite_differences(rate):
     """dG/du, and at rate = 0 the rotor columns dG/dX, dG/dY, dG/dVX, dG/dVY (the columns the
@@ -291,19 +363,36 @@ def test_grid_convergence_cavitating():
 
 
 def test_switch_width_convergence():
-    """Load / attitude as the switch width -> 0 (48x8, eps = 0.6 at 50 deg): 1874.15, 1823.15, 1815.51,
-    1814.69, 1814.60 N and 49.60, 46.60, 46.22, 46.18, 46.18 deg for 1e5 ... 1e1 Pa: the change falls
-    ~10x per decade (linear in the width). 1e3 Pa is within 0.05 % (load) and 0.05 deg of the
-    sharp-switch limit."""
-    loads, atts = [], []
-    for w in (1e5, 1e4, 1e3, 1e2):
-        s = paper_bearing(switch_width=w).steady_state(0.6, RPM, 50.0)
-        loads.append(s.load)
-        atts.append(s.attitude_angle_deg)
-    dl, da = np.abs(np.diff(loads)), np.abs(np.diff(atts))
-    assert np.all(dl[1:] < 0.3 * dl[:-1]), loads
-    assert np.all(da[1:] < 0.3 * da[:-1]), atts
-    assert dl[-1] / loads[-1] < 1e-3 and da[-1] < 0.1
+    """The switch biases the film by the area it rounds off the sharp Elrod corner, ~(pi^2/6) w w_theta
+    (physics.cavitation), and the prescribed pressures (groove, ends) are on the sharp curve: the bias is
+    second order in the widths. 48x8, eps = 0.6 at 50 deg, against w = 10 Pa, w_theta = 1e-5 (1814.5905 N,
+    46.1754 deg); both widths times 1, sqrt(10), 10 (measured): attitude -0.0066, -0.054, -0.41 deg (x8.2,
+    x7.6 per sqrt(10); first order would be x3.2), load -0.0024 %, -0.0012 %, +0.075 %. The first version
+    (ends at P(0) = w ln 2) was linear in w: +0.14 % / +0.10 deg at its default."""
+    ref = paper_bearing(switch_width=10.0, switch_content_width=1e-5).steady_state(0.6, RPM, 50.0)
+    p0 = paper_bearing().pressure_scale(RPM)
+    dl, da = [], []
+    for k in (1.0, np.sqrt(10.0), 10.0):
+        s = paper_bearing(switch_width=2e-3 * p0 * k, switch_content_width=5e-4 * k).steady_state(0.6, RPM, 50.0)
+        dl.append(s.load / ref.load - 1.0)
+        da.append(s.attitude_angle_deg - ref.attitude_angle_deg)
+    da = np.abs(da)
+    assert da[1] > 5.0 * da[0] and da[2] > 5.0 * da[1], da
+    assert abs(dl[0]) < 1e-4 and da[0] < 0.01, (dl, da)
+    assert abs(dl[2]) < 2e-3, dl
+
+
+def test_prescribed_pressures_are_on_the_sharp_curve():
+    """The ends (p_amb = p_c) and the groove (p_s) carry exactly their pressure and theta = 1 + p / beta, not
+    the rounded switch's P(u_amb) = w ln 2 (which biased the load linearly in w)."""
+    b = paper_bearing(switch_width=1e5)  # a wide switch would show any rounding at once
+    f = b.film(RPM)
+    assert np.all(f.op.bP == 0.0) and np.all(f.op.bC == 1.0)
+    f.residual(np.zeros(f.n), 0.3, 0.2)
+    g = ~f.op.free
+    u_s = b.supply_pressure / f.p0
+    np.testing.assert_array_equal(f.P[g], u_s)
+    np.testing.assert_allclose(f.C[g], 1.0 + u_s / f.beta_bar, rtol=1e-15)
 
 
 # --------------------------------------------------------------------------------------------------
@@ -421,8 +510,9 @@ def test_bad_bearing_parameters_raise(kwargs, name):
 
 
 def test_default_switch_width_follows_p0_and_tolerances_are_on_theta_and_pressure():
-    """The default pressure width is 1e-4 p0 at every speed; the cells' atol is atol min(1, 1/r) because a
-    cavitated cell's unknown is its content deficit divided by r = w_theta / w (p/p0 in the full film)."""
+    """The default pressure width is 1e-4 p0 at every speed; in the universal layout the cells' atol is
+    atol min(1, 1/r) because a cavitated cell's unknown is its content deficit divided by r = w_theta / w
+    (p/p0 in the full film); in the content layout it is atol."""
     b = paper_bearing()
     for rpm in (1000.0, 6000.0):
         f = b.film(rpm)
@@ -432,6 +522,7 @@ def test_default_switch_width_follows_p0_and_tolerances_are_on_theta_and_pressur
     tol = o.absolute_tolerance(1e-6)
     nf = o.film.n
     assert np.allclose(tol[:nf], 1e-6 / 100.0) and np.allclose(tol[nf:], 1e-6)
+    assert np.allclose(o.absolute_tolerance(1e-6, "content"), 1e-6)
     wide = JournalOrbit(paper_bearing(switch_width=1e4, switch_content_width=1e-4), MASS, 0.01 * CL, W, RPM)
     assert wide.film.content_scale < 1 and np.allclose(wide.absolute_tolerance(1e-6), 1e-6)
     # the content deficit of a cavitated cell (10 switch widths below 0) is r times its unknown, up to the
@@ -442,6 +533,8 @@ def test_default_switch_width_follows_p0_and_tolerances_are_on_theta_and_pressur
     np.testing.assert_allclose(f.C[f.op.free], 1.0 - f.content_scale * 1e-3, rtol=0.0, atol=1e-6)
     with pytest.raises(ValueError, match="atol"):
         o.absolute_tolerance(0.0)
+    with pytest.raises(ValueError, match="formulation"):
+        o.absolute_tolerance(1e-6, "theta")
 
 
 def test_bad_groove_and_operating_parameters_raise():

@@ -24,10 +24,16 @@ p0) and ``w_theta = r w`` in content. The pressure and the content are::
     D(u) = dC/du = P' / beta_bar + r (1 - P'),   dD/du = P'' (1/beta_bar - r),   P'' = P' (1 - P') / w
 
 so ``P`` and ``C`` are smooth and monotone and the model tends to the sharp Elrod model as both widths
-go to zero. The two widths do different jobs (docs/journal.md, section 3): the pressure width biases the
-load (linearly in ``w``), the content width -- over which a cell fills or empties -- hardly does, but
-sets how abruptly a cell's state turns at rupture and reformation, and so the time steps a BDF
-integrator needs there. ``r = 1`` is the single-width switch.
+go to zero. In the (P, theta) plane the switch is the rounded corner ``e^(-P/w) + e^(-(1-theta)/w_theta) = 1``
+of the sharp "L" (P = 0 for theta < 1, theta = 1 + P / beta_bar for P > 0); the bias it puts on a film is set
+by the area it cuts off that corner, ``(pi^2 / 6) w w_theta``: second order in the widths when both shrink
+together (docs/journal.md, section 3). Prescribed values (the supply groove, the bearing ends) are not on
+the rounded corner but on the sharp one (:func:`sharp_fixed_cells`): a boundary at p = p_c would otherwise
+carry P(0) = w ln 2 and bias the load linearly in ``w`` -- that was the +0.14 % of the first versions.
+
+The content formulation of the journal orbit integrates the content ``theta`` (times the film thickness)
+itself, so a cell that fills or empties within one time step conserves its mass exactly; the pressure
+comes from the universal variable ``u = C^-1(theta)`` (:func:`elrod_inverse`, a monotone scalar Newton).
 """
 
 from __future__ import annotations
@@ -72,3 +78,53 @@ def elrod_content(u, P, dP, width, content_scale, beta_bar, C, D, dD):
         C[i] = 1.0 + P[i] * inv + r * (u[i] - P[i])
         D[i] = dP[i] * inv + r * (1.0 - dP[i])
         dD[i] = dP[i] * (1.0 - dP[i]) / width * (inv - r)
+
+
+@njit(cache=True)
+def sharp_fixed_cells(free, u_fixed, beta_bar, P, dP, C, D, dD):
+    """Cells held at a prescribed state (``free[i]`` False) take the *sharp* Elrod values of their prescribed
+    ``u_fixed`` (a pressure: ``P = max(u_fixed, 0)``, ``theta = 1 + P / beta_bar``), whatever their current
+    ``u``, so the fields and their (zero) derivatives do not depend on it."""
+    inv = 1.0 / beta_bar
+    for i in range(free.size):
+        if not free[i]:
+            p = u_fixed[i] if u_fixed[i] > 0.0 else 0.0
+            P[i] = p
+            C[i] = 1.0 + p * inv
+            dP[i] = 0.0
+            D[i] = 0.0
+            dD[i] = 0.0
+
+
+@njit(cache=True)
+def elrod_inverse(theta, width, content_scale, beta_bar, u):
+    """``u = C^-1(theta)`` elementwise for the switch of :func:`elrod_content` (any real ``theta``).
+
+    ``C`` is monotone and concave if ``1/beta_bar < r`` (convex otherwise) and ``C(u0) - theta`` has the sign
+    of ``P(u0) (1/beta_bar - r)`` at ``u0 = (theta - 1) / r``, so Newton from ``u0`` converges monotonically
+    (from the side the curvature allows); it stops when the step is below 1e-14 of ``max(1, |u|)``."""
+    r = content_scale
+    inv = 1.0 / beta_bar
+    for i in range(theta.size):
+        t = theta[i]
+        x = (t - 1.0) / r
+        for _ in range(200):
+            s = x / width
+            if s > 30.0:
+                e = np.exp(-s)
+                P = x + width * np.log1p(e)
+                dP = 1.0 / (1.0 + e)
+            elif s < -30.0:
+                e = np.exp(s)
+                P = width * e
+                dP = e
+            else:
+                e = np.exp(s)
+                P = width * np.log1p(e)
+                dP = e / (1.0 + e)
+            f = 1.0 + P * inv + r * (x - P) - t
+            dx = -f / (dP * inv + r * (1.0 - dP))
+            x += dx
+            if abs(dx) <= 1e-14 * max(1.0, abs(x)):
+                break
+        u[i] = x

@@ -161,7 +161,8 @@ class JournalBearing:
         if groove is not None and not isinstance(groove, Groove):
             raise TypeError(f"groove must be a Groove or None, got {type(groove).__name__}")
         self.groove = groove
-        if cavitation == "elrod" and groove is None and self.ambient_pressure <= self.cavitation_pressure:
+        self.unsupplied = cavitation == "elrod" and groove is None and self.ambient_pressure <= self.cavitation_pressure
+        if self.unsupplied:
             warnings.warn("JournalBearing: the Elrod film has no oil supply (groove=None and ambient_pressure <= "
                           "cavitation_pressure: nothing drives oil into the film, which starves); add a Groove, "
                           "raise the ambient pressure, or use cavitation=\"reynolds\" for the classical 360-deg "
@@ -218,6 +219,13 @@ class JournalBearing:
             return ReynoldsFilm(self, speed_rpm, n_extra)
         return Film(self, speed_rpm, n_extra)
 
+    def _check_supplied(self):
+        """A steady Elrod film needs a supply: without one every starved content field is a steady state."""
+        if self.unsupplied:
+            raise ValueError("groove = None with ambient_pressure <= cavitation_pressure: the Elrod film has no oil "
+                             "supply and no unique steady state; add a Groove, raise the ambient pressure, or use "
+                             "cavitation=\"reynolds\" (the classical 360-deg bearing)")
+
     # ---------------------------------------------------------------------------------------------
     def steady_state(self, eccentricity_ratio, speed_rpm, position_angle_deg=0.0) -> FilmState:
         """Film with the journal held at eccentricity ratio ``eps`` in the direction ``position_angle_deg``
@@ -226,6 +234,7 @@ class JournalBearing:
         eps = check_range("eccentricity_ratio", eccentricity_ratio, "-", 0.0, 1.0, high_open=True)
         check_speed(speed_rpm)
         a = np.radians(position_angle_deg)
+        self._check_supplied()
         f = self.film(speed_rpm)
         u, its = f.solve(eps * np.cos(a), eps * np.sin(a))
         return _warn_validity(f.state(u, eps * np.cos(a), eps * np.sin(a), its))
@@ -250,6 +259,7 @@ class JournalBearing:
         force sensitivities at the converged state (they are the Newton matrix and the damping)."""
         W = check_positive("load", load, "N")
         check_speed(speed_rpm)
+        self._check_supplied()
         f = self.film(speed_rpm)
         wbar = W / f.force_scale
         q = np.array([0.3, 0.3])  # eccentric start in the loaded quadrant

@@ -13,8 +13,7 @@ import numpy as np
 import scipy.sparse.linalg as spla
 
 from transient.fv.reynolds import ReynoldsOperator
-from transient.models.journal.kernels import N_ROTOR, film_force, film_jacobian, film_residual
-from transient.physics.cavitation import softplus
+from transient.models.journal.kernels import N_ROTOR, content_universal, film_force, film_jacobian, film_residual
 from transient.solvers.newton import NewtonError, newton
 
 #: Default pressure width of the Elrod switch as a fraction of p0 = 6 mu omega (R/C)^2 (docs/journal.md).
@@ -43,10 +42,10 @@ class Film:
         self.force_scale = self.p0 * b.radius ** 2  # N per unit of Fbar
         u_supply = (b.supply_pressure - b.cavitation_pressure) / self.p0
         u_amb = (b.ambient_pressure - b.cavitation_pressure) / self.p0
-        P_amb, _ = softplus(np.array([u_amb]), self.width)
-        C_amb = 1.0 + P_amb[0] / self.beta_bar + self.content_scale * (u_amb - P_amb[0])  # theta = C(u_amb)
-        self.op = ReynoldsOperator(b.grid, n_extra=n_extra, upwind=True, boundary_P=float(P_amb[0]),
-                                   boundary_C=float(C_amb))
+        # prescribed pressures sit on the sharp Elrod curve, not on the rounded switch (physics.cavitation:
+        # P(0) = w ln 2 at an end held at p_c biased the load linearly in w): P = u, theta = 1 + u / beta_bar
+        self.op = ReynoldsOperator(b.grid, n_extra=n_extra, upwind=True, boundary_P=u_amb,
+                                   boundary_C=1.0 + u_amb / self.beta_bar)
         self.op.u_fixed[~self.op.free] = u_supply  # groove cells at the supply pressure
         self.n = n = self.op.n_cells
         self.u_supply = u_supply
@@ -73,6 +72,9 @@ class Film:
         self.extras = (self.dk_dq[:ne], self.dc_dq[:ne], self.no_dq[:ne], self.pos_row, self.pos_col, self.indices,
                        self.scale)
         self.fv = op.face_tuples + (op.no_face_k,)
+        # content formulation (kernels.content_*): u, theta, du/dm, du/dX, du/dY, CSC column pointers
+        self.work = (np.zeros(n), np.zeros(n), np.zeros(n), np.zeros(n), np.zeros(n),
+                     np.ascontiguousarray(op.stencil.indptr, dtype=np.int64))
 
     # residual / Jacobian of the prescribed-motion film equations G(u) = 0 --------------------------
     def residual(self, u, X, Y, VX=0.0, VY=0.0, rate=0.0, C_ref=None, out=None):
@@ -116,6 +118,18 @@ class Film:
             raise RuntimeError(f"film solve did not converge in {max_iter} iterations at X={X:.4g}, Y={Y:.4g}: "
                                f"residual {e.result.residual_norm:.3e}") from None
         return res.x, res.iterations
+
+    def content(self, u, X, Y):
+        """The content state ``m = H theta(u)`` of the content formulation (groove cells included)."""
+        self.residual(u, X, Y)
+        return self.H * self.C
+
+    def universal(self, m, X, Y):
+        """The universal variable ``u`` of the content state ``m`` (groove cells: their prescribed u)."""
+        y = np.concatenate([np.asarray(m, dtype=float), [X, Y]])
+        u = np.empty(self.n)
+        content_universal(y, self.switch, self.geo, self.op.free, self.op.u_fixed, np.empty(self.n), u)
+        return u
 
     def force(self, u, X, Y):
         """Dimensionless film force (Fbar_x, Fbar_y) at the state u (the fields are evaluated first)."""

@@ -33,7 +33,7 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from transient.physics.cavitation import elrod_content, softplus_pressure
+from transient.physics.cavitation import elrod_content, elrod_inverse, sharp_fixed_cells, softplus_pressure
 from transient.fv.reynolds import jacobian_kernel, residual_kernel, scale_rows
 
 N_ROTOR = 4  # X, Y, VX, VY appended after the cells
@@ -96,6 +96,7 @@ def _stencil_residual(u, X, Y, switch, geo, fields, fv, R):
     H, P, dP, C, D, dD, k, c, zero, _ = fields
     faces, boundary, cells, face_k = fv
     film_fields(u, X, Y, cosp, sinp, beta_bar, width, content_scale, H, P, dP, C, D, dD, k, c)
+    sharp_fixed_cells(cells[0], cells[1], beta_bar, P, dP, C, D, dD)
     residual_kernel(u, P, C, k, k, c, zero, True, faces, boundary, cells, face_k, R)
 
 
@@ -107,6 +108,7 @@ def _stencil_jacobian(u, X, Y, switch, geo, fields, extras, fv, data):
     dk_dq, dc_dq, no_dq, pos_row, pos_col, indices, scale = extras
     faces, boundary, cells, face_k = fv
     film_fields(u, X, Y, cosp, sinp, beta_bar, width, content_scale, H, P, dP, C, D, dD, k, c)
+    sharp_fixed_cells(cells[0], cells[1], beta_bar, P, dP, C, D, dD)
     if dk_dq.shape[0] > 0:
         position_derivatives(H, cosp, sinp, dk_dq, dc_dq)
     jacobian_kernel(P, dP, C, D, k, zero, k, zero, c, zero, dk_dq, dk_dq, dc_dq, no_dq, True,
@@ -264,3 +266,174 @@ def film_jacobian(u, X, Y, VX, VY, rate, data, switch, geo, fields, extras, fv):
             if ne > 0:
                 data[pos_col[i, 2]] = area[i] * C[i] * cosp[i]
                 data[pos_col[i, 3]] = area[i] * C[i] * sinp[i]
+
+
+# --------------------------------------------------------------------------------------------------
+# Content formulation: the film state is the content m_i = H_i theta_i of each cell (conservative)
+# --------------------------------------------------------------------------------------------------
+#   work = (u, theta, E, ux, uy, indptr): scratch for the universal variable of the cells, theta = m / H,
+#          du/dm, du/dX, du/dY, and the CSC column pointers of the pattern.
+# The state is [m (cells), X, Y, VX, VY]; fixed (groove) cells keep their prescribed u and a constant m.
+# The universal variable u = C^-1(m / H) of the free cells is found cell by cell (physics.cavitation
+# .elrod_inverse), so the residual is the conservation law itself, linear in m':
+#
+#     F_i = A_i m_i' + R_i(u(m, X, Y), X, Y)                     (IDA)
+#     m_i' = -R_i / A_i                                         (ODE methods)
+#
+# A cell that fills or empties inside one step then changes its mass by exactly what flowed in; in the
+# universal form ``A H D(u) u'`` the BDF step multiplies the jump of u by the slope D at the step's end
+# (which changes by r beta_bar across the switch) and only the error test, holding every crossing to
+# the tolerance, kept that mass error small (docs/journal.md, section 5).
+
+H_FLOOR = 1e-9  # film thickness / C below which theta = m / H is not divided further (Newton iterates past a touch)
+
+
+@njit(cache=True)
+def content_universal(y, switch, geo, free, u_fixed, theta, u):
+    """theta = m / H and the universal variable u = C^-1(theta) of the free cells (fixed cells: u_fixed)."""
+    beta_bar, width, content_scale = switch
+    cosp, sinp, area = geo
+    n = free.size
+    X, Y = y[n], y[n + 1]
+    for i in range(n):
+        h = 1.0 + X * cosp[i] + Y * sinp[i]
+        theta[i] = y[i] / (h if h > H_FLOOR else H_FLOOR)
+    elrod_inverse(theta, width, content_scale, beta_bar, u)
+    for i in range(n):
+        if not free[i]:
+            u[i] = u_fixed[i]
+
+
+@njit(cache=True)
+def content_residual(tau, y, yp, out, switch, rotor, geo, fields, fv, work):
+    """IDA residual of the content formulation (block comment above); groove cells: ``m' = 0``."""
+    kappa, wbar, ebar, sym = rotor
+    cosp, sinp, area = geo
+    H, P, dP, C, D, dD, k, c, zero, R = fields
+    free, u_fixed, pos_c = fv[2]
+    u, theta = work[0], work[1]
+    n = free.size
+    content_universal(y, switch, geo, free, u_fixed, theta, u)
+    _stencil_residual(u, y[n], y[n + 1], switch, geo, fields, fv, R)
+    for i in range(n):
+        out[i] = area[i] * yp[i] + R[i] if free[i] else yp[i]
+    fx, fy = film_force(P, cosp, sinp, area, sym)
+    ax, ay = rotor_accelerations(tau, fx, fy, kappa, wbar, ebar)
+    out[n] = yp[n] - y[n + 2]
+    out[n + 1] = yp[n + 1] - y[n + 3]
+    out[n + 2] = yp[n + 2] - ax
+    out[n + 3] = yp[n + 3] - ay
+
+
+@njit(cache=True)
+def content_rhs(tau, y, out, switch, rotor, geo, fields, fv, work):
+    """ODE right-hand side of the content formulation: ``m' = -R / A`` (free cells), 0 (groove), rotor."""
+    kappa, wbar, ebar, sym = rotor
+    cosp, sinp, area = geo
+    H, P, dP, C, D, dD, k, c, zero, R = fields
+    free, u_fixed, pos_c = fv[2]
+    u, theta = work[0], work[1]
+    n = free.size
+    content_universal(y, switch, geo, free, u_fixed, theta, u)
+    _stencil_residual(u, y[n], y[n + 1], switch, geo, fields, fv, R)
+    for i in range(n):
+        out[i] = -R[i] / area[i] if free[i] else 0.0
+    fx, fy = film_force(P, cosp, sinp, area, sym)
+    out[n] = y[n + 2]
+    out[n + 1] = y[n + 3]
+    out[n + 2], out[n + 3] = rotor_accelerations(tau, fx, fy, kappa, wbar, ebar)
+
+
+@njit(cache=True)
+def content_jacobian(tau, y, yp, cj, data, switch, rotor, geo, fields, extras, fv, work):
+    """CSC data of ``dF/dy + cj dF/dy'`` for :func:`content_residual`. With ``E_j = du_j/dm_j = 1 / (H_j D_j)``
+    and ``du_j/dX = -theta_j cos(phi_j) / D_j`` / H_j (at fixed m)::
+
+        dF_i/dm_j = dR_i/du_j E_j + delta_ij cj A_i,   dF_i/dX = dR_i/dX|_u + sum_j dR_i/du_j du_j/dX
+        dF_VX/dm_j = -kappa sym P'_j A_j cos(phi_j) E_j,  dF_VX/dX = -kappa sym sum_j P'_j A_j cos(phi_j) du_j/dX
+    """
+    kappa, wbar, ebar, sym = rotor
+    cosp, sinp, area = geo
+    H, P, dP, C, D, dD, k, c, zero, R = fields
+    dk_dq, dc_dq, no_dq, pos_row, pos_col, indices, scale = extras
+    free, u_fixed, pos_c = fv[2]
+    u, theta, E, ux, uy, indptr = work
+    n = free.size
+    content_universal(y, switch, geo, free, u_fixed, theta, u)
+    _stencil_jacobian(u, y[n], y[n + 1], switch, geo, fields, extras, fv, data)
+    for j in range(n):
+        h = H[j]
+        if free[j] and h > H_FLOOR:
+            E[j] = 1.0 / (h * D[j])
+            ux[j] = -C[j] * cosp[j] * E[j]
+            uy[j] = -C[j] * sinp[j] * E[j]
+        elif free[j]:
+            E[j] = 1.0 / (H_FLOOR * D[j])
+            ux[j] = 0.0
+            uy[j] = 0.0
+        else:
+            E[j] = 0.0
+            ux[j] = 0.0
+            uy[j] = 0.0
+    for j in range(n):  # chain rule through u(m, X, Y), column by column of the stencil block
+        for p in range(indptr[j], indptr[j + 1]):
+            i = indices[p]
+            if i < n:
+                if free[i]:
+                    data[pos_col[i, 0]] += data[p] * ux[j]
+                    data[pos_col[i, 1]] += data[p] * uy[j]
+                    data[p] *= E[j]
+                else:
+                    data[p] = 0.0
+    gxx = 0.0
+    gxy = 0.0
+    gyx = 0.0
+    gyy = 0.0
+    for i in range(n):
+        if free[i]:
+            data[pos_c[i]] += cj * area[i]
+        else:
+            data[pos_c[i]] = cj
+            data[pos_col[i, 0]] = 0.0
+            data[pos_col[i, 1]] = 0.0
+        g = -kappa * sym * dP[i] * area[i]
+        data[pos_row[2, i]] = g * cosp[i] * E[i]
+        data[pos_row[3, i]] = g * sinp[i] * E[i]
+        gxx += g * cosp[i] * ux[i]
+        gxy += g * cosp[i] * uy[i]
+        gyx += g * sinp[i] * ux[i]
+        gyy += g * sinp[i] * uy[i]
+    data[pos_row[0, n]] = cj
+    data[pos_row[0, n + 1]] = 0.0
+    data[pos_row[0, n + 2]] = -1.0
+    data[pos_row[0, n + 3]] = 0.0
+    data[pos_row[1, n]] = 0.0
+    data[pos_row[1, n + 1]] = cj
+    data[pos_row[1, n + 2]] = 0.0
+    data[pos_row[1, n + 3]] = -1.0
+    data[pos_row[2, n]] = gxx
+    data[pos_row[2, n + 1]] = gxy
+    data[pos_row[2, n + 2]] = cj
+    data[pos_row[2, n + 3]] = 0.0
+    data[pos_row[3, n]] = gyx
+    data[pos_row[3, n + 1]] = gyy
+    data[pos_row[3, n + 2]] = 0.0
+    data[pos_row[3, n + 3]] = cj
+
+
+@njit(cache=True)
+def content_ode_jacobian(tau, y, data, switch, rotor, geo, fields, extras, fv, work):
+    """CSC data of ``df/dy`` for :func:`content_rhs`: ``-diag(1/A, 1, 1, 1, 1)`` times the residual Jacobian
+    at ``cj = 0`` (groove rows zero)."""
+    free = fv[2][0]
+    indices, scale = extras[5], extras[6]
+    n = free.size
+    content_jacobian(tau, y, y, 0.0, data, switch, rotor, geo, fields, extras, fv, work)
+    area = geo[2]
+    for i in range(n):
+        scale[i] = -1.0 / area[i] if free[i] else 0.0
+    for i in range(n, scale.size):
+        scale[i] = -1.0
+    scale_rows(data, indices, scale)
+    for i in range(n, scale.size):
+        scale[i] = 1.0

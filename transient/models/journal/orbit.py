@@ -26,12 +26,18 @@ import numpy as np
 
 from transient.checks import check_positive, check_range
 from transient.models.journal.bearing import JournalBearing, check_speed
-from transient.models.journal.kernels import N_ROTOR, dae_jacobian, dae_residual, ode_jacobian, ode_rhs
+from transient.models.journal.kernels import (N_ROTOR, content_jacobian, content_ode_jacobian, content_residual,
+                                              content_rhs, dae_jacobian, dae_residual, ode_jacobian, ode_rhs)
 from transient.models.journal.rk4 import FilmStageSolver
 from transient.results import Result, quantity, result_type
 from transient.solvers.integrate import METHODS, Problem, Stats
 from transient.solvers.longrun import run_long
 
+FORMULATIONS = ("content", "universal")
+#: The content formulation's film state is O(1) in the full film, where the pressure is only its 1/beta_bar
+#: part, so ``run`` hands the integrator ``rtol * CONTENT_RTOL_FACTOR`` there: a user's rtol then buys about
+#: the orbit accuracy of the universal form (docs/journal.md, section 5).
+CONTENT_RTOL_FACTOR = 0.1
 RECORDABLE = ("force", "pressure", "film_content", "min_film", "mass", "outflow")
 FIELD_SERIES = ("pressure", "film_content")
 RECORDED_FIELDS = ("force", "min_film", "mass", "outflow", "pressure", "pressure_t", "film_content", "film_content_t")
@@ -166,30 +172,76 @@ class JournalOrbit:
         y0[:n] = self.film.solve(y0[n], y0[n + 1], u0=self.equilibrium().u)[0]
         return y0
 
-    def problem(self, y0=None, tau0=0.0, touch_gap=0.0) -> Problem:
+    def content_state(self, y) -> np.ndarray:
+        """A state of the universal layout ``[u (cells), X, Y, VX, VY]`` (what :meth:`initial_state`,
+        :meth:`linear_start`, ``OrbitResult.final_state`` hold) in the content layout ``[m, X, Y, VX, VY]``
+        of ``formulation="content"`` (``m = H theta``, the film content per unit area of each cell)."""
+        y = np.array(y, dtype=float)
+        n = self.film.n
+        y[:n] = self.film.content(y[:n], y[n], y[n + 1])
+        return y
+
+    def universal_state(self, y) -> np.ndarray:
+        """The inverse of :meth:`content_state`."""
+        y = np.array(y, dtype=float)
+        n = self.film.n
+        y[:n] = self.film.universal(y[:n], y[n], y[n + 1])
+        return y
+
+    def problem(self, y0=None, tau0=0.0, touch_gap=0.0, formulation="universal") -> Problem:
         """The method-of-lines :class:`Problem` in dimensionless time tau = omega t.
+
+        ``y0`` is a state of the universal layout (default: :meth:`initial_state`). ``formulation``:
+        ``"universal"`` -- the state is ``[u, X, Y, VX, VY]`` and the film equation carries ``A H D(u) u'``
+        (module docstring of :mod:`~transient.models.journal.kernels`); ``"content"`` -- the state is
+        ``[m, X, Y, VX, VY]`` with ``m = H theta`` (:meth:`content_state`; the problem's ``y0`` and every
+        state it produces are in that layout, :meth:`universal_state` maps back) and the film equation is
+        the conservation law ``A m' + R = 0`` itself (docs/journal.md, section 5).
 
         ``touch_gap`` > 0 adds a terminal event when the eccentricity ratio reaches ``1 - touch_gap``
         (the journal touches the bearing)."""
-        f = self.film
+        if formulation not in FORMULATIONS:
+            raise ValueError(f"formulation = {formulation!r}; allowed: {', '.join(FORMULATIONS)}")
         y0 = self.initial_state() if y0 is None else np.asarray(y0, dtype=float)
+        if y0.shape != (self.n,):
+            raise ValueError(f"the initial state has shape {y0.shape}; this orbit has {self.n} states")
+        if formulation == "content":
+            y0 = self.content_state(y0)
+        return self._problem(y0, tau0, touch_gap, formulation)
+
+    def _problem(self, y0, tau0, touch_gap, formulation) -> Problem:
+        """:meth:`problem` with ``y0`` already in the formulation's own layout."""
+        f = self.film
         n = f.n
-        switch, geo, fields, extras, fv = f.switch, f.geo, f.fields, f.extras, f.fv
+        switch, geo, fields, extras, fv, work = f.switch, f.geo, f.fields, f.extras, f.fv, f.work
         rotor = (self.kappa, self.wbar, self.ebar, f.sym)
         fbuf = np.empty(self.n)
 
-        def rhs(t, y, out):
-            ode_rhs(t, y, out, switch, rotor, geo, fields, fv)
+        if formulation == "content":
+            def rhs(t, y, out):
+                content_rhs(t, y, out, switch, rotor, geo, fields, fv, work)
 
-        def jac_rhs(t, y, data):
-            ode_rhs(t, y, fbuf, switch, rotor, geo, fields, fv)
-            ode_jacobian(t, y, data, fbuf, switch, rotor, geo, fields, extras, fv)
+            def jac_rhs(t, y, data):
+                content_ode_jacobian(t, y, data, switch, rotor, geo, fields, extras, fv, work)
 
-        def residual(t, y, yp, out):
-            dae_residual(t, y, yp, out, switch, rotor, geo, fields, fv)
+            def residual(t, y, yp, out):
+                content_residual(t, y, yp, out, switch, rotor, geo, fields, fv, work)
 
-        def jac_residual(t, y, yp, cj, data):
-            dae_jacobian(t, y, yp, cj, data, switch, rotor, geo, fields, extras, fv)
+            def jac_residual(t, y, yp, cj, data):
+                content_jacobian(t, y, yp, cj, data, switch, rotor, geo, fields, extras, fv, work)
+        else:
+            def rhs(t, y, out):
+                ode_rhs(t, y, out, switch, rotor, geo, fields, fv)
+
+            def jac_rhs(t, y, data):
+                ode_rhs(t, y, fbuf, switch, rotor, geo, fields, fv)
+                ode_jacobian(t, y, data, fbuf, switch, rotor, geo, fields, extras, fv)
+
+            def residual(t, y, yp, out):
+                dae_residual(t, y, yp, out, switch, rotor, geo, fields, fv)
+
+            def jac_residual(t, y, yp, cj, data):
+                dae_jacobian(t, y, yp, cj, data, switch, rotor, geo, fields, extras, fv)
 
         yp0 = np.empty(self.n)
         rhs(tau0, y0, yp0)
@@ -202,7 +254,7 @@ class JournalOrbit:
 
         return Problem(y0=y0, yp0=yp0, rhs=rhs, residual=residual, jac_pattern=f.op.pattern, jac_rhs=jac_rhs,
                        jac_residual=jac_residual, events=events, n_events=1 if events else 0,
-                       event_terminal=[True], event_direction=[-1], name="journal orbit")
+                       event_terminal=[True], event_direction=[-1], name=f"journal orbit ({formulation})")
 
     def parameters(self) -> dict:
         """Every parameter of the bearing and the rotor that changes an orbit (SI), e.g. to key a checkpoint."""
@@ -213,7 +265,7 @@ class JournalOrbit:
     def run(self, revolutions, method="ida", rtol=1e-6, atol=1e-9, steps_per_revolution=3000,
             outputs_per_revolution=100, record=(), record_from_revolution=0.0, chunk_revolutions=None,
             checkpoint=None, resume=False, progress=None, touch_gap=1e-3, y0=None,
-            inner_tolerance=1e-6, start=None, stop=None, time_budget=None) -> OrbitResult:
+            inner_tolerance=1e-6, start=None, stop=None, time_budget=None, formulation=None) -> OrbitResult:
         """Integrate ``revolutions`` shaft revolutions from the static equilibrium, from ``y0`` (a state at
         t = 0) or from ``start`` (a previous :class:`OrbitResult`, or ``(time [s], state)``: the run goes on
         from its final state and time, so the unbalance keeps its phase). The first output is the start.
@@ -243,8 +295,15 @@ class JournalOrbit:
             the run early and becomes its message (e.g. "settled").
         time_budget : wall-clock seconds the whole run may take (None: no limit); past it the run stops with
             ``success=False`` and keeps the outputs so far.
+        formulation : ``"universal"`` (default; state u, every method) or ``"content"`` (state H theta, IDA and
+            CVODE; :meth:`problem`). The content form conserves a cell's mass exactly through a cavity crossing
+            but, at equal rtol, is measured less accurate on the rotor (its full-film pressure is the 1/beta_bar
+            part of the content) and no faster (``transient bench orbit-size``, docs/journal.md section 5).
+            ``y0``, ``start`` and ``final_state`` are in the universal layout either way.
         """
         revolutions = check_positive("revolutions", revolutions, "rev")
+        if method != "rk4":
+            rtol = check_range("rtol", rtol, "-", 1e-14, 1.0)
         if isinstance(record, str):
             record = (record,)
         bad = [r for r in record if r not in RECORDABLE]
@@ -252,6 +311,12 @@ class JournalOrbit:
             raise ValueError(f"record: unknown series {bad}; allowed: {RECORDABLE}")
         if method not in METHODS:
             raise ValueError(f"method = {method!r} is not a method; allowed: {', '.join(METHODS)}")
+        if formulation is None:
+            formulation = "universal"
+        if formulation not in FORMULATIONS:
+            raise ValueError(f"formulation = {formulation!r}; allowed: {', '.join(FORMULATIONS)}")
+        if method == "rk4" and formulation != "universal":
+            raise ValueError('method "rk4" solves the film in the universal variable; formulation must be "universal"')
         opr = check_range("outputs_per_revolution", outputs_per_revolution, "1/rev", 1, 1e6)
         if opr != int(opr):
             raise ValueError(f"outputs_per_revolution = {outputs_per_revolution!r} [1/rev] must be an integer")
@@ -262,7 +327,7 @@ class JournalOrbit:
             chunk_revolutions = 10.0 if checkpoint else revolutions
         chunk_revolutions = check_range("chunk_revolutions", chunk_revolutions, "rev", 1.0 / opr, np.inf,
                                         why="(at least one output interval)")
-        rec = _Recorder(self, record, record_from_revolution)
+        rec = _Recorder(self, record, record_from_revolution, formulation)
         two_pi = 2 * np.pi
         if start is not None:
             t_start, y = (start.final_time, start.final_state) if isinstance(start, OrbitResult) else start
@@ -291,17 +356,18 @@ class JournalOrbit:
 
             kw = dict(dt=dtau)
         else:
-            problem_at = lambda y_, t_: self.problem(y_, t_, touch_gap)  # noqa: E731
-            kw = dict(rtol=rtol, atol=self.absolute_tolerance(atol))
+            problem_at = lambda y_, t_: self._problem(y_, t_, touch_gap, formulation)  # noqa: E731
+            kw = dict(rtol=rtol * (CONTENT_RTOL_FACTOR if formulation == "content" else 1.0),
+                      atol=self.absolute_tolerance(atol, formulation))
         key = dict(self.parameters(), method=method, rtol=rtol if method != "rk4" else None,
                    atol=atol if method != "rk4" else None,
                    steps_per_revolution=steps_per_revolution if method == "rk4" else None,
                    inner_tolerance=inner_tolerance if method == "rk4" else None, outputs_per_revolution=opr,
                    record=sorted(record), record_from_revolution=float(record_from_revolution), touch_gap=touch_gap,
-                   chunk_revolutions=chunk_revolutions, start_time=tau0 / self.film.omega,
+                   chunk_revolutions=chunk_revolutions, start_time=tau0 / self.film.omega, formulation=formulation,
                    start_state=hashlib.sha256(np.ascontiguousarray(y).tobytes()).hexdigest()[:16])
         user_stop = None if stop is None else (lambda r: stop(r.result(method, Stats(), None, "", tau0)))
-        out = run_long(problem_at, y, tau0, two_pi / opr, n_out, rec, method=method, solve_kwargs=kw,
+        out = run_long(problem_at, self.content_state(y) if formulation == "content" else y, tau0, two_pi / opr, n_out, rec, method=method, solve_kwargs=kw,
                        chunk_outputs=max(1, int(round(chunk_revolutions * opr))), checkpoint=checkpoint,
                        resume=resume, key=key, progress=progress, unit=("rev", two_pi),
                        label=f"orbit {self.speed_rpm:g} rpm", status=lambda: f"e/C = {rec.last_eps:.4f}",
@@ -331,16 +397,20 @@ class JournalOrbit:
 
         return response_curve(self, speeds_rpm, **kwargs)
 
-    def absolute_tolerance(self, atol) -> np.ndarray:
+    def absolute_tolerance(self, atol, formulation="universal") -> np.ndarray:
         """Per-state absolute tolerance for a user ``atol`` on theta, p / p0 and the rotor states.
 
-        A cell's unknown is ``u = p / p0`` in the full film but ``(theta - 1) / r`` in the cavitated zone
-        (:mod:`transient.physics.cavitation`, ``r`` = content width / pressure width of the switch), so the
-        cells get ``atol min(1, 1 / r)``: neither the content nor the pressure is held more loosely than
+        Universal layout: a cell's unknown is ``u = p / p0`` in the full film but ``(theta - 1) / r`` in the
+        cavitated zone (:mod:`transient.physics.cavitation`, ``r`` = content width / pressure width of the
+        switch), so the cells get ``atol min(1, 1 / r)``: neither the content nor the pressure is held more
+        loosely than ``atol``. Content layout: the cells' unknown is the content ``H theta`` itself and gets
         ``atol``."""
         atol = check_range("atol", atol, "-", 1e-25, 1.0, why="(absolute on the dimensionless states; below 1e-25 the integrators' error weights overflow)")
         out = np.full(self.n, atol)
-        out[: self.film.n] = atol * min(1.0, 1.0 / self.film.content_scale)
+        if formulation == "universal":
+            out[: self.film.n] = atol * min(1.0, 1.0 / self.film.content_scale)
+        elif formulation != "content":
+            raise ValueError(f"formulation = {formulation!r}; allowed: {', '.join(FORMULATIONS)}")
         return out
 
     # ---------------------------------------------------------------------------------------------
@@ -386,8 +456,9 @@ class JournalOrbit:
 class _Recorder:
     """Keeps x, y (always) and the requested series at the output times; streams, never the whole state."""
 
-    def __init__(self, orbit: JournalOrbit, record, record_from_revolution):
+    def __init__(self, orbit: JournalOrbit, record, record_from_revolution, formulation="universal"):
         self.o = orbit
+        self.content = formulation == "content"
         self.record = tuple(record)
         self.tau0_fields = 2 * np.pi * record_from_revolution
         self.t, self.x, self.y = [], [], []
@@ -399,7 +470,8 @@ class _Recorder:
     def observe(self, tau, y):
         o, f = self.o, self.o.film
         n = f.n
-        self.last_y = np.array(y)
+        y = o.universal_state(y) if self.content else np.array(y)
+        self.last_y = y
         if tau <= self.last_tau:  # a chunk starts with the last output of the previous one
             return
         self.last_tau = tau

@@ -1,0 +1,81 @@
+"""Oil whip (seed 003): the whip scenario end to end on a tiny grid, the run-up's state hand-over between
+speeds, and the whirl numbers on a synthetic orbit."""
+
+import importlib.util
+import json
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from transient.models.journal import JournalBearing, JournalOrbit, OrbitResult
+from transient.params.rho_kim import BEARING, ROTOR
+from transient.study.whip import carry_state, whirl_numbers
+
+SCENARIO = Path(__file__).resolve().parents[1] / "scenarios" / "journal_whip.py"
+
+
+def _load():
+    spec = importlib.util.spec_from_file_location("journal_whip_scenario", SCENARIO)
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    return mod
+
+
+def test_whip_scenario_quick_and_resumed(tmp_path):
+    """32x4 grid, 5 speeds x 5 revolutions, 16 revolutions at 1.2x and 1.5x: below the threshold the orbit is
+    synchronous (whirl ratio ~1), above it the whirl is at about half the shaft speed and grows (measured
+    0.96, 0.51, 0.45, 0.47, 0.50 over the run-up; 1.5x: e/C up to 0.93 within 16 revolutions). A second
+    call with the same settings resumes from the checkpoints and gives the same numbers."""
+    mod = _load()
+    args = ["--quick", "--grid", "32", "4", "--revolutions", "16", "--out", str(tmp_path)]
+    data = mod.main(args)
+    for name in ("run_up.png", "whirl_1.2x.png", "whirl_1.5x.png", "whip.json", "run_up.npz", "whirl_1.5x.npz"):
+        assert (tmp_path / name).stat().st_size > 1000, name
+    ru = data["run_up"]
+    assert ru["speed_over_threshold"][0] == pytest.approx(0.8) and ru["speed_over_threshold"][-1] == pytest.approx(1.6)
+    assert 0.8 < ru["whirl_ratio"][0] < 1.2
+    assert 0.4 < ru["whirl_ratio"][-1] < 0.6
+    assert ru["eps_max"][-1] > ru["eps_max"][0] + 0.3  # the whirl above the threshold is far larger
+    w = data["whirl_1.5x"]
+    assert 0.4 < w["whirl_ratio"] < 0.6 and w["eps_max"] > 0.8
+    assert len(w["poincare_x"]) == 16 and w["touched_at_s"] is None and w["min_film_m"] > 0
+    again = mod.main(args)  # resumed from the finished checkpoints: nothing recomputed, same numbers
+    for tag in ("whirl_1.2x", "whirl_1.5x"):
+        a, b = dict(again[tag]), dict(data[tag])
+        a.pop("wall_s"), b.pop("wall_s")
+        assert a == b, tag
+    assert json.loads((tmp_path / "whip.json").read_text())["threshold_rpm"] == data["threshold_rpm"]
+
+
+def test_carry_state_keeps_content_position_and_velocity():
+    """Between two speeds the film keeps H theta, the journal its position and its velocity in m/s."""
+    b = JournalBearing(**BEARING, grid=(24, 4))
+    slow, fast = JournalOrbit(b, speed_rpm=5000.0, **ROTOR), JournalOrbit(b, speed_rpm=9000.0, **ROTOR)
+    y = slow.initial_state()
+    n = slow.film.n
+    y[n:] = [0.3, 0.25, 0.05, -0.02]
+    z = carry_state(slow, fast, y)
+    np.testing.assert_allclose(fast.content_state(z)[:n], slow.content_state(y)[:n], rtol=1e-12)
+    np.testing.assert_allclose(z[n:n + 2], y[n:n + 2])
+    np.testing.assert_allclose(z[n + 2:] * fast.film.omega, y[n + 2:] * slow.film.omega, rtol=1e-14)
+    # full-film pressures follow the speed: p = p0 P with the same theta (P scales with 1 / p0 ... exactly
+    # where theta - 1 = P / beta_bar is what is kept)
+    assert np.max(fast.film.universal(fast.content_state(z)[:n], 0.3, 0.25)) > 0
+
+
+def test_whirl_numbers_of_a_synthetic_whirl():
+    """A circular whirl at 0.47 of the shaft speed around the centre plus a small synchronous orbit: the whirl
+    ratio is 0.47, the amplitude its radius, the Poincare section one point per revolution."""
+    C, opr, revs, rpm = 1e-4, 64, 20, 6000.0
+    t = np.arange(revs * opr + 1) / opr * 60.0 / rpm
+    ph = 2 * np.pi * rpm / 60.0 * t
+    x = C * (0.6 * np.cos(0.47 * ph) + 0.01 * np.cos(ph))
+    y = C * (0.6 * np.sin(0.47 * ph) + 0.01 * np.sin(ph))
+    r = OrbitResult(t=t, x=x, y=y, speed_rpm=rpm, clearance=C)
+    w = whirl_numbers(r, opr, last_revolutions=10)
+    assert w["whirl_ratio"] == pytest.approx(0.47, abs=2e-3)
+    assert w["amp_x"] == pytest.approx(0.61, abs=0.01) and w["eps_max"] == pytest.approx(0.61, abs=1e-3)
+    assert len(w["poincare_x"]) == revs and w["revolutions"] == revs
+    with pytest.raises(ValueError, match="revolution"):
+        whirl_numbers(OrbitResult(t=t[:10], x=x[:10], y=y[:10], speed_rpm=rpm, clearance=C), opr)
