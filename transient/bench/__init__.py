@@ -28,7 +28,9 @@ def names() -> list[str]:
 
 
 def run(name: str, out, quick: bool = False) -> tuple[str, Path]:
-    """Run bench ``name``, write its section under ``out``; returns (markdown, path of the section)."""
+    """Run bench ``name`` (``orbit-size`` and ``orbit_size`` are the same), write its section under ``out``;
+    returns (markdown, path of the section)."""
+    name = str(name).replace("-", "_")
     if name not in names():
         raise ValueError(f"bench = {name!r} is not a benchmark; available: {', '.join(names())}")
     out = Path(out)
