@@ -21,6 +21,7 @@ from transient.verification.reference import short_bearing_force
 from transient.params.rho_kim import BEARING as RHO_KIM_BEARING, ROTOR as RHO_KIM_ROTOR
 from transient.models.journal.bearing import Groove, JournalBearing, omega
 from transient.models.journal.orbit import JournalOrbit
+from transient.physics.layered import BoundaryLayers
 
 D, L, CL, MU = (RHO_KIM_BEARING[k] for k in ("diameter", "length", "clearance", "viscosity"))
 W, MASS, RPM = RHO_KIM_ROTOR["load"], RHO_KIM_ROTOR["rotor_mass"], 6000.0
@@ -56,10 +57,14 @@ def _compare(J_an, J_fd, mask):
     return rel, outside
 
 
-def _orbit_state(switch_width):
+#: boundary layers of seed 004 (Newtonian bulk) for the Jacobian checks: thick, mobile, unequal
+LAYERS = BoundaryLayers(thickness=0.1 * CL, viscosity=(10 * MU, 20 * MU), alpha=0.05 * CL)
+
+
+def _orbit_state(switch_width, layers=None):
     """A small orbit problem at a state with cavitated, full-film and switch-band cells, the journal
     off equilibrium and moving."""
-    b = paper_bearing(grid=(16, 4), switch_width=switch_width)
+    b = paper_bearing(grid=(16, 4), switch_width=switch_width, layers=layers)
     o = JournalOrbit(b, MASS, 0.01 * CL, W, RPM)
     prob = o.problem()
     nf = o.film.n
@@ -70,9 +75,10 @@ def _orbit_state(switch_width):
     return o, prob, y
 
 
+@pytest.mark.parametrize("layers", [None, LAYERS], ids=["classical", "layers"])
 @pytest.mark.parametrize("switch_width", [1e5, 1e3])
-def test_ode_jacobian_matches_finite_differences(switch_width):
-    o, prob, y = _orbit_state(switch_width)
+def test_ode_jacobian_matches_finite_differences(switch_width, layers):
+    o, prob, y = _orbit_state(switch_width, layers)
     n = o.n
     pat = prob.jac_pattern.tocsc()
     data = np.empty(pat.nnz)
@@ -93,9 +99,10 @@ def test_ode_jacobian_matches_finite_differences(switch_width):
     assert np.abs(J_an[:nf, nf:]).max() > 0 and np.abs(J_an[nf + 2:, :nf]).max() > 0
 
 
+@pytest.mark.parametrize("layers", [None, LAYERS], ids=["classical", "layers"])
 @pytest.mark.parametrize("switch_width", [1e5, 1e3])
-def test_dae_jacobian_matches_finite_differences(switch_width):
-    o, prob, y = _orbit_state(switch_width)
+def test_dae_jacobian_matches_finite_differences(switch_width, layers):
+    o, prob, y = _orbit_state(switch_width, layers)
     n = o.n
     yp = np.empty(n)
     prob.rhs(0.3, y, yp)
@@ -125,12 +132,13 @@ def test_dae_jacobian_matches_finite_differences(switch_width):
     assert outside == 0.0
 
 
+@pytest.mark.parametrize("layers", [None, LAYERS], ids=["classical", "layers"])
 @pytest.mark.parametrize("switch_width", [1e5, 1e3])
-def test_content_jacobians_match_finite_differences(switch_width):
+def test_content_jacobians_match_finite_differences(switch_width, layers):
     """The content formulation (state m = H theta): the IDA residual Jacobian dF/dy + cj dF/dy' and the ODE
     Jacobian, with the chain rule through u = C^-1(m / H) (du/dm and du/dX at fixed m) in the film rows and
     in the rotor rows (the force depends on X through u at fixed content)."""
-    o, _, y_u = _orbit_state(switch_width)
+    o, _, y_u = _orbit_state(switch_width, layers)
     n = o.n
     prob = o.problem(y_u, formulation="content")
     y = prob.y0.copy()

@@ -9,6 +9,8 @@ Public API (re-exported here):
 * journal bearing (seed 003): :class:`JournalBearing`, :class:`Groove`, :class:`JournalOrbit` (with
   ``periodic_response`` and ``response_curve``: periodic orbits by shooting), :func:`stability_onset`;
   bearing noise: :func:`bearing_noise`, :func:`a_weighting`
+* layered boundary films and shear-thinning bulk (seed 004): :class:`BoundaryLayers` (``JournalBearing(...,
+  layers=)``), :class:`Gecim`, :class:`Newtonian`, :class:`LayeredFilm` (the pointwise flow law)
 * thrust ball bearing starvation (seed 002): :class:`ThrustBallBearing`
 * EHL of a tilted tapered roller (seed 001): :class:`LineContact`, :class:`TaperedRoller`, :class:`RollerContact`
 * rough surfaces and asperity contact (seed 000): :class:`RoughSurface`, :func:`greenwood_tripp`,
@@ -33,13 +35,14 @@ from transient.models.pad import ThrustPad
 from transient.models.roller import LineContact, RollerContact, TaperedRoller
 from transient.physics.asperity import AsperityContact, DiscreteDensity, greenwood_tripp, steel_asperity_contact
 from transient.physics.flow_factors import contact_factor, pressure_flow_factors, shear_flow_factor
+from transient.physics.layered import BoundaryLayers, Gecim, LayeredFilm, Newtonian
 from transient.results import Result, load_result
 from transient.solvers.integrate import Problem, Solution, Stats, solve
 from transient.study.noise import bearing_noise  # the public API re-exports the noise protocol
 from transient.surfaces.roughness import RoughSurface
 
 __all__ = [
-    "AsperityContact", "DiscreteDensity", "Groove", "JournalBearing", "JournalOrbit", "LineContact", "Problem",
+    "AsperityContact", "BoundaryLayers", "DiscreteDensity", "Gecim", "Groove", "LayeredFilm", "Newtonian", "JournalBearing", "JournalOrbit", "LineContact", "Problem",
     "Result", "RollerContact", "TaperedRoller",
     "RoughSurface", "Solution", "Stats", "ThrustBallBearing", "ThrustPad", "a_weighting", "bearing_noise", "contact_factor",
     "greenwood_tripp", "load_result", "pressure_flow_factors", "stability_onset", "shear_flow_factor", "solve", "steel_asperity_contact",

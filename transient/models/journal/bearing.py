@@ -18,6 +18,7 @@ from scipy.optimize import brentq
 from transient.checks import check_bool, check_int, check_positive, check_range
 from transient.fv.grid import Axis, Grid2D
 from transient.models.journal.film import Film, omega
+from transient.physics.layered import BoundaryLayers, Newtonian
 from transient.models.journal.kernels import N_ROTOR
 from transient.models.journal.reynolds_film import ReynoldsFilm
 
@@ -133,11 +134,18 @@ class JournalBearing:
         unused). Both serve ``steady_state``, ``equilibrium``, ``coefficients`` and
         ``stability_threshold``; the time-domain orbit needs ``"elrod"``. The classical full 360 deg bearing
         of the design charts (Raimondi & Boyd) is ``cavitation="reynolds"`` with ``groove=None``.
+    rheology : ``None`` or :class:`~transient.physics.layered.Newtonian` (the Gecim bulk of seed 004 is not in
+        the journal film yet: its flow law is :class:`~transient.physics.layered.LayeredFilm`).
+    layers : :class:`~transient.physics.layered.BoundaryLayers` on journal and bearing (seed 004, Newtonian
+        bulk): the bulk is ``h - 2 delta`` thick and the layers add their Darcy flow to the Poiseuille
+        conductance (:func:`~transient.models.journal.kernels.conductances`); the film closes at
+        ``e/C = 1 - 2 delta / C`` (the orbit stops there: "boundary layers touch"). Default: none.
     """
 
     def __init__(self, diameter, length, clearance, viscosity, bulk_modulus=1e9, supply_pressure=101325.0,
                  groove: Groove | None = Groove(), grid=(151, 21), cavitation_pressure=0.0, ambient_pressure=0.0,
-                 switch_width=None, switch_content_width=1e-2, symmetric=True, cavitation="elrod"):
+                 switch_width=None, switch_content_width=1e-2, symmetric=True, cavitation="elrod", rheology=None,
+                 layers: BoundaryLayers | None = None):
         if not isinstance(cavitation, str) or cavitation not in CAVITATION_MODES:
             raise ValueError(f"cavitation must be one of {CAVITATION_MODES}, got cavitation={cavitation!r}")
         self.cavitation = cavitation
@@ -148,6 +156,16 @@ class JournalBearing:
                                      why="(C/D from 1e-5 to 0.1: a journal bearing's radial clearance)")
         self.viscosity = check_positive("viscosity", viscosity, "Pa s")
         self.bulk_modulus = check_positive("bulk_modulus", bulk_modulus, "Pa")
+        if rheology is not None and not isinstance(rheology, Newtonian):
+            raise ValueError(f"rheology = {rheology!r}: the journal film takes a Newtonian bulk (with or without "
+                             f"boundary layers); the shear-thinning Gecim bulk's flow law is "
+                             f"transient.physics.layered.LayeredFilm but is not in the journal film yet")
+        if layers is not None and not isinstance(layers, BoundaryLayers):
+            raise TypeError(f"layers must be a BoundaryLayers or None, got {type(layers).__name__}")
+        if layers is not None:
+            check_range("layers.thickness", layers.thickness, "m", 0.0, 0.5 * self.clearance, high_open=True,
+                        why="(two layers thinner than the clearance: the bulk must not vanish)")
+        self.layers = layers
         self.cavitation_pressure = check_range("cavitation_pressure", cavitation_pressure, "Pa", 0.0, 1e9,
                                                why="(absolute pressure)")
         self.ambient_pressure = check_range("ambient_pressure", ambient_pressure, "Pa", cavitation_pressure, np.inf,
@@ -206,7 +224,24 @@ class JournalBearing:
                     groove=None if g is None else [g.angle_deg, g.width_deg], grid=list(self.grid_shape),
                     cavitation_pressure=self.cavitation_pressure, ambient_pressure=self.ambient_pressure,
                     switch_width=self.switch_width, switch_content_width=self.switch_content_width,
-                    symmetric=self.symmetric, cavitation=self.cavitation)
+                    symmetric=self.symmetric, cavitation=self.cavitation,
+                    layers=None if self.layers is None else dict(thickness=self.layers.thickness,
+                                                                 viscosity=list(self.layers.viscosity),
+                                                                 alpha=self.layers.alpha))
+
+    def layer_groups(self) -> tuple[float, float]:
+        """The boundary layers in the film's scales: ``(2 delta / C, 3 alpha^2 mu (1/mu_a + 1/mu_b) / C^2)``
+        (:func:`~transient.models.journal.kernels.conductances`); ``(0, 0)`` without layers."""
+        ly = self.layers
+        if ly is None:
+            return 0.0, 0.0
+        darcy = 3.0 * ly.alpha ** 2 * self.viscosity * (1.0 / ly.viscosity[0] + 1.0 / ly.viscosity[1])
+        return 2.0 * ly.thickness / self.clearance, darcy / self.clearance ** 2
+
+    @property
+    def max_eccentricity_ratio(self) -> float:
+        """Largest e/C with a film: 1, less the two boundary layers (2 delta / C)."""
+        return 1.0 - self.layer_groups()[0]
 
     def pressure_scale(self, speed_rpm) -> float:
         """p0 = 6 mu omega (R/C)^2 [Pa], the dimensionless pressure unit at this speed."""
@@ -231,7 +266,9 @@ class JournalBearing:
         """Film with the journal held at eccentricity ratio ``eps`` in the direction ``position_angle_deg``
         (from the load line +x, in the direction of rotation); a direct Newton solve (Elrod) or the
         active-set solve of the complementarity problem (Reynolds)."""
-        eps = check_range("eccentricity_ratio", eccentricity_ratio, "-", 0.0, 1.0, high_open=True)
+        eps = check_range("eccentricity_ratio", eccentricity_ratio, "-", 0.0, self.max_eccentricity_ratio,
+                          high_open=True, why="(the film, less its boundary layers, must be open everywhere)"
+                          if self.layers is not None else "")
         check_speed(speed_rpm)
         a = np.radians(position_angle_deg)
         self._check_supplied()
@@ -272,7 +309,7 @@ class JournalBearing:
                 return f, u, q, it, (dF_dq, dF_dv)
             dq = -np.linalg.solve(dF_dq, r)
             lam = 1.0  # keep the journal inside the clearance
-            while np.hypot(*(q + lam * dq)) >= 0.995:
+            while np.hypot(*(q + lam * dq)) >= 0.995 * self.max_eccentricity_ratio:
                 lam *= 0.5
             q = q + lam * dq
         raise NoEquilibriumError(f"equilibrium(load={W} N, speed_rpm={speed_rpm}) did not converge in {max_iter} "

@@ -66,7 +66,7 @@ class Film:
         self.indices = op.stencil.indices
         # the kernels' tuple arguments (models/journal/kernels.py)
         ne = op.n_extra
-        self.switch = (self.beta_bar, self.width, self.content_scale)
+        self.switch = (self.beta_bar, self.width, self.content_scale) + b.layer_groups()
         self.geo = (self.cosp, self.sinp, self.area)
         self.fields = (self.H, self.P, self.dP, self.C, self.D, self.dD, self.k, self.c, self.zero, self.R)
         self.extras = (self.dk_dq[:ne], self.dc_dq[:ne], self.no_dq[:ne], self.pos_row, self.pos_col, self.indices,

@@ -40,23 +40,38 @@ N_ROTOR = 4  # X, Y, VX, VY appended after the cells
 
 
 @njit(cache=True)
-def film_fields(u, X, Y, cosp, sinp, beta_bar, width, content_scale, H, P, dP, C, D, dD, k, c):
-    """Cell fields at state ``u`` and journal position (X, Y): H, P(u), P', theta = C(u), D = C', D',
-    k = H^3/2 (Poiseuille), c = H/2 (Couette)."""
-    softplus_pressure(u, width, P, dP)
-    elrod_content(u, P, dP, width, content_scale, beta_bar, C, D, dD)
-    for i in range(u.size):
+def conductances(X, Y, cosp, sinp, layer_gap, darcy, H, k, c):
+    """Film thickness ``H = 1 + X cos + Y sin``, Poiseuille conductance ``k = (H - gap)^3/2 + darcy H`` and
+    Couette coefficient ``c = H/2`` of every cell.
+
+    ``gap = 2 delta / C`` and ``darcy = 3 alpha^2 mu_1 (1/mu_a + 1/mu_b) / C^2`` are the boundary layers of
+    seed 004 with a Newtonian bulk (:func:`transient.physics.layered.newtonian_flow` in the journal's scales,
+    p0 = 6 mu omega (R/C)^2): the bulk is ``H - gap`` thick, the layers add their Darcy flow; the Couette flux
+    is ``H/2`` whatever the layers (they move with their walls). Without layers (0, 0) ``k = H^3/2``."""
+    for i in range(H.size):
         h = 1.0 + X * cosp[i] + Y * sinp[i]
         H[i] = h
-        k[i] = 0.5 * h * h * h
+        hb = h - layer_gap if h > layer_gap else 0.0
+        k[i] = 0.5 * hb * hb * hb + darcy * h
         c[i] = 0.5 * h
 
 
 @njit(cache=True)
-def position_derivatives(H, cosp, sinp, dk_dq, dc_dq):
-    """d k / d(X, Y) = 1.5 H^2 (cos, sin) and d c / d(X, Y) = (cos, sin) / 2 (rows 0, 1; rows 2, 3 = 0)."""
+def film_fields(u, X, Y, cosp, sinp, beta_bar, width, content_scale, layer_gap, darcy, H, P, dP, C, D, dD, k, c):
+    """Cell fields at state ``u`` and journal position (X, Y): H, P(u), P', theta = C(u), D = C', D', k, c
+    (:func:`conductances`)."""
+    softplus_pressure(u, width, P, dP)
+    elrod_content(u, P, dP, width, content_scale, beta_bar, C, D, dD)
+    conductances(X, Y, cosp, sinp, layer_gap, darcy, H, k, c)
+
+
+@njit(cache=True)
+def position_derivatives(H, cosp, sinp, layer_gap, darcy, dk_dq, dc_dq):
+    """d k / d(X, Y) = (1.5 (H - gap)^2 + darcy) (cos, sin) and d c / d(X, Y) = (cos, sin) / 2 (rows 0, 1;
+    rows 2, 3 = 0)."""
     for i in range(H.size):
-        h2 = 1.5 * H[i] * H[i]
+        hb = H[i] - layer_gap if H[i] > layer_gap else 0.0
+        h2 = 1.5 * hb * hb + darcy
         dk_dq[0, i] = h2 * cosp[i]
         dk_dq[1, i] = h2 * sinp[i]
         dc_dq[0, i] = 0.5 * cosp[i]
@@ -82,7 +97,8 @@ def rotor_accelerations(tau, fx, fy, kappa, wbar, ebar):
 
 
 # Kernel arguments travel as tuples (built once by :class:`~transient.models.journal.film.Film`):
-#   switch = (beta_bar, width, content_scale)       the Elrod switch (physics.cavitation)
+#   switch = (beta_bar, width, content_scale, layer_gap, darcy)   the Elrod switch (physics.cavitation) and the
+#                                                   boundary layers' Poiseuille law (film_fields)
 #   rotor  = (kappa, wbar, ebar, sym)               the rotor groups (module docstring)
 #   geo    = (cosp, sinp, area)                     per cell
 #   fields = (H, P, dP, C, D, dD, k, c, zero, R)    scratch arrays, filled by film_fields
@@ -91,26 +107,26 @@ def rotor_accelerations(tau, fx, fy, kappa, wbar, ebar):
 
 @njit(cache=True)
 def _stencil_residual(u, X, Y, switch, geo, fields, fv, R):
-    beta_bar, width, content_scale = switch
+    beta_bar, width, content_scale, layer_gap, darcy = switch
     cosp, sinp, area = geo
     H, P, dP, C, D, dD, k, c, zero, _ = fields
     faces, boundary, cells, face_k = fv
-    film_fields(u, X, Y, cosp, sinp, beta_bar, width, content_scale, H, P, dP, C, D, dD, k, c)
+    film_fields(u, X, Y, cosp, sinp, beta_bar, width, content_scale, layer_gap, darcy, H, P, dP, C, D, dD, k, c)
     sharp_fixed_cells(cells[0], cells[1], beta_bar, P, dP, C, D, dD)
     residual_kernel(u, P, C, k, k, c, zero, True, faces, boundary, cells, face_k, R)
 
 
 @njit(cache=True)
 def _stencil_jacobian(u, X, Y, switch, geo, fields, extras, fv, data):
-    beta_bar, width, content_scale = switch
+    beta_bar, width, content_scale, layer_gap, darcy = switch
     cosp, sinp, area = geo
     H, P, dP, C, D, dD, k, c, zero, _ = fields
     dk_dq, dc_dq, no_dq, pos_row, pos_col, indices, scale = extras
     faces, boundary, cells, face_k = fv
-    film_fields(u, X, Y, cosp, sinp, beta_bar, width, content_scale, H, P, dP, C, D, dD, k, c)
+    film_fields(u, X, Y, cosp, sinp, beta_bar, width, content_scale, layer_gap, darcy, H, P, dP, C, D, dD, k, c)
     sharp_fixed_cells(cells[0], cells[1], beta_bar, P, dP, C, D, dD)
     if dk_dq.shape[0] > 0:
-        position_derivatives(H, cosp, sinp, dk_dq, dc_dq)
+        position_derivatives(H, cosp, sinp, layer_gap, darcy, dk_dq, dc_dq)
     jacobian_kernel(P, dP, C, D, k, zero, k, zero, c, zero, dk_dq, dk_dq, dc_dq, no_dq, True,
                     faces, boundary, cells, face_k, pos_col, data)
 
@@ -291,7 +307,7 @@ H_FLOOR = 1e-9  # film thickness / C below which theta = m / H is not divided fu
 @njit(cache=True)
 def content_universal(y, switch, geo, free, u_fixed, theta, u):
     """theta = m / H and the universal variable u = C^-1(theta) of the free cells (fixed cells: u_fixed)."""
-    beta_bar, width, content_scale = switch
+    beta_bar, width, content_scale, layer_gap, darcy = switch
     cosp, sinp, area = geo
     n = free.size
     X, Y = y[n], y[n + 1]

@@ -247,7 +247,7 @@ class JournalOrbit:
         rhs(tau0, y0, yp0)
         events = None
         if touch_gap > 0:
-            limit = (1.0 - touch_gap) ** 2
+            limit = (self.bearing.max_eccentricity_ratio - touch_gap) ** 2
 
             def events(t, y, out):
                 out[0] = limit - (y[n] ** 2 + y[n + 1] ** 2)
@@ -290,7 +290,8 @@ class JournalOrbit:
             from it; it is keyed on every parameter and setting of the run and refused (naming the one
             that differs) if any changed. Ctrl-C says where it is and how to resume.
         progress : a progress bar over the chunks (default: when the run has more than one chunk).
-        touch_gap : stop with a clear message when the eccentricity ratio reaches ``1 - touch_gap``.
+        touch_gap : stop with a clear message when the eccentricity ratio reaches ``1 - touch_gap`` (with
+            boundary layers ``1 - 2 delta / C - touch_gap``: "boundary layers touch at t = ...").
         stop : ``stop(result_so_far) -> str | None`` called after every chunk; a non-empty string ends
             the run early and becomes its message (e.g. "settled").
         time_budget : wall-clock seconds the whole run may take (None: no limit); past it the run stops with
@@ -341,9 +342,9 @@ class JournalOrbit:
         if not np.all(np.isfinite(y)):
             raise ValueError(f"the initial state has a non-finite entry at index {int(np.argmin(np.isfinite(y)))}")
         e_start = float(np.hypot(y[self.film.n], y[self.film.n + 1]))
-        if e_start >= 1.0:
+        if e_start >= self.bearing.max_eccentricity_ratio:
             raise ValueError(f"the initial journal position is outside the clearance: e/C = {e_start:.4g} "
-                             f"[-]; allowed: [0, 1)")
+                             f"[-]; allowed: [0, {self.bearing.max_eccentricity_ratio:.4g})")
         rec.last_y = y
         n_out = max(1, int(round(revolutions * opr)))
         if method == "rk4":
@@ -377,7 +378,8 @@ class JournalOrbit:
         touched, message = None, out.message
         if out.event is not None:
             touched = out.event[0] / self.film.omega
-            message = (f"journal touches the bearing (eccentricity ratio {1 - touch_gap:.4f}) at t = "
+            what = "journal touches the bearing" if self.bearing.layers is None else "boundary layers touch"
+            message = (f"{what} (eccentricity ratio {self.bearing.max_eccentricity_ratio - touch_gap:.4f}) at t = "
                        f"{touched:.6g} s ({touched * self.speed_rpm / 60:.2f} revolutions)")
         r = rec.result(method, out.stats, touched, message, out.t)
         r.success = out.success

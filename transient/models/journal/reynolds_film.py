@@ -27,7 +27,8 @@ damping). Moving the rupture boundary adds nothing to first order because ``p = 
 (checked against finite differences of the complementarity solve in tests/test_journal_reynolds.py).
 
 The kernels are those of :mod:`transient.fv.reynolds` (numba) with ``P = u``, ``C = 1``,
-``k = H^3 / 2``, ``c = H / 2``; the Jacobian (cells and the four journal columns) is analytic and sparse.
+``k = H^3 / 2`` (boundary layers: :func:`~transient.models.journal.kernels.conductances`), ``c = H / 2``;
+the Jacobian (cells and the four journal columns) is analytic and sparse.
 """
 
 from __future__ import annotations
@@ -37,7 +38,7 @@ import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
 from transient.fv.reynolds import ReynoldsOperator, jacobian_kernel, residual_kernel
-from transient.models.journal.kernels import N_ROTOR, film_force
+from transient.models.journal.kernels import N_ROTOR, conductances, film_force, position_derivatives
 
 
 def _omega(speed_rpm) -> float:
@@ -77,18 +78,16 @@ class ReynoldsFilm:
         self.dc_dq = np.zeros((ne, n))
         self.no_dq = np.zeros((ne, n))
         self.fv = op.face_tuples + (op.no_face_k,)
+        self.layers = b.layer_groups()
 
     # fields, residual and Jacobian --------------------------------------------------------------
     def _fields(self, X, Y):
-        """H, k = H^3/2, c = H/2 and (if the operator has extras) their position derivatives."""
-        np.multiply(X, self.cosp, out=self.H)
-        self.H += Y * self.sinp + 1.0
-        np.multiply(0.5 * self.H * self.H, self.H, out=self.k)
-        np.multiply(0.5, self.H, out=self.c)
+        """H, k, c (:func:`~transient.models.journal.kernels.conductances`, boundary layers included) and (if
+        the operator has extras) their position derivatives."""
+        gap, darcy = self.layers
+        conductances(X, Y, self.cosp, self.sinp, gap, darcy, self.H, self.k, self.c)
         if self.op.n_extra >= 2:
-            h2 = 1.5 * self.H * self.H
-            self.dk_dq[0], self.dk_dq[1] = h2 * self.cosp, h2 * self.sinp
-            self.dc_dq[0], self.dc_dq[1] = 0.5 * self.cosp, 0.5 * self.sinp
+            position_derivatives(self.H, self.cosp, self.sinp, gap, darcy, self.dk_dq, self.dc_dq)
 
     def residual(self, u, X, Y, VX=0.0, VY=0.0, out=None):
         """``G(P)`` of the module docstring (free cells; ``P - P_supply`` on the groove cells)."""
