@@ -103,3 +103,24 @@ def test_bad_layers_are_named():
     b = bearing(layers=BoundaryLayers(0.2 * CL, MU, 0.0))
     with pytest.raises(ValueError, match="eccentricity_ratio"):
         b.steady_state(0.65, RPM)
+
+
+def test_seed_004_findings_with_a_newtonian_bulk(tmp_path):
+    """The scenario (quick grid): thicker layers raise the pressure strongly, more for thicker layers; the layer
+    viscosity matters less than the thickness (2 -> 100 mu moves the load less than 0.1 -> 0.2 h_min does)."""
+    import importlib.util
+    import pathlib
+
+    path = pathlib.Path(__file__).resolve().parents[1] / "scenarios" / "journal_layers.py"
+    spec = importlib.util.spec_from_file_location("journal_layers", path)
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    data = mod.main(["--quick", "--out", str(tmp_path)])
+    c = data["cases"]
+    peaks = [c["base"]["peak"]] + [r["mobile"]["peak"] for r in c["thickness"]]
+    assert all(b > 1.3 * a for a, b in zip(peaks[:-1], peaks[1:])), peaks
+    loads_mu = [r["load_N"] for r in c["viscosity"]]
+    thick = [r["mobile"]["load_N"] for r in c["thickness"]]
+    assert loads_mu[-1] - loads_mu[0] < 0.5 * (thick[1] - thick[0])
+    assert all(r["darcy_share"] < 0 for r in c["thickness"])  # the Darcy flow relieves the film
+    assert (tmp_path / "layers.png").exists()

@@ -1,0 +1,51 @@
+"""Seed 004: boundary layers in Jang's journal bearing (eps = 0.9, R/B = 1), Newtonian bulk.
+
+    transient run scenarios/journal_layers.py [--quick] [--out DIR]
+
+Layers of 0.1, 0.2, 0.3 h_min on both walls (layer viscosity 10 mu; 2 and 100 mu at 0.1 h_min), immobile
+(alpha = 0) and mobile (alpha = 0.1 h_min): the load and the peak pressure against the layer-free film, the
+rise split into the thinner bulk and the Darcy flow, and the mid-plane pressure profiles (DIR/layers.png).
+The shear-thinning Gecim bulk of the paper is not in the journal film yet (docs/layered.md).
+Numbers in DIR/layers.json.
+"""
+
+from __future__ import annotations
+
+import sys
+import time
+from pathlib import Path
+
+from transient.plots import layers as plots, save
+from transient.study.layers import layered_cases
+from transient.study.scenario import JsonRecord, log, parser
+
+OUT = Path(__file__).resolve().parent / "out" / "journal_layers"
+
+
+def main(argv=None):
+    a = parser(__doc__, OUT).parse_args(argv)
+    grid = (61, 10) if a.quick else (241, 40)
+    out = Path(a.out)
+    out.mkdir(parents=True, exist_ok=True)
+    t0 = time.perf_counter()
+    res = layered_cases(grid)
+    rec = JsonRecord(out / "layers.json", dict(grid=grid, quick=a.quick))
+    rec.put("cases", {k: v for k, v in res.items() if k != "angle_deg"})
+    b = res["base"]
+    log(f"[layers] grid {grid[0]} x {grid[1]}: no layers: load {b['load_N']:.1f} N, peak p/p0 {b['peak']:.3f}")
+    for row in res["thickness"]:
+        im, mo = row["immobile"], row["mobile"]
+        log(f"  delta {row['delta_over_hmin']:.1f} h_min: immobile {im['load_N']:.1f} N (peak {im['peak']:.3f}), "
+            f"mobile {mo['load_N']:.1f} N (peak {mo['peak']:.3f}); thinner bulk +{100 * row['rise_thinner_bulk']:.1f} %, "
+            f"Darcy {100 * row['darcy_share']:+.1f} % of the layer-free load")
+    for row in res["viscosity"]:
+        log(f"  mu_ab {row['mu_ab_over_mu']:g} mu (delta 0.1 h_min, mobile): load {row['load_N']:.1f} N, "
+            f"peak {row['peak']:.3f}")
+    log(f"written: {save(plots.layered_profiles(res), out / 'layers.png')}")
+    rec.put("wall_s", time.perf_counter() - t0)
+    log(f"[layers] done in {time.perf_counter() - t0:.1f} s; numbers in {out / 'layers.json'}")
+    return rec.data
+
+
+if __name__ == "__main__":
+    main(sys.argv[1:])
