@@ -174,7 +174,8 @@ class ThrustBallBearing:
 
     def __post_init__(self):
         check_range("ball_diameter", self.ball_diameter, "m", 0.0, 1.0, low_open=True, high_open=True)
-        check_range("pitch_diameter", self.pitch_diameter, "m", self.ball_diameter, 10.0, low_open=True, high_open=True)
+        check_range("pitch_diameter", self.pitch_diameter, "m", self.ball_diameter, 10.0, low_open=True, high_open=True,
+                    why=f"(above ball_diameter = {self.ball_diameter:g} m)")
         z_max = int(math.pi * self.pitch_diameter / self.ball_diameter)
         check_int("n_balls", self.n_balls, "-", 1, z_max)
         check_range("conformity", self.conformity, "-", 0.5, 1.0, low_open=True, high_open=False,

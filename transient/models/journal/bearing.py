@@ -168,10 +168,10 @@ class JournalBearing:
         self.layers = layers
         self.cavitation_pressure = check_range("cavitation_pressure", cavitation_pressure, "Pa", 0.0, 1e9,
                                                why="(absolute pressure)")
-        self.ambient_pressure = check_range("ambient_pressure", ambient_pressure, "Pa", cavitation_pressure, np.inf,
-                                            why="(must be >= cavitation_pressure)")
-        self.supply_pressure = check_range("supply_pressure", supply_pressure, "Pa", cavitation_pressure, np.inf,
-                                           why="(must be >= cavitation_pressure)")
+        self.ambient_pressure = check_range("ambient_pressure", ambient_pressure, "Pa", cavitation_pressure, 1e9,
+                                            why="(absolute; at least cavitation_pressure)")
+        self.supply_pressure = check_range("supply_pressure", supply_pressure, "Pa", cavitation_pressure, 1e9,
+                                           why="(absolute; at least cavitation_pressure)")
         self.switch_width = None if switch_width is None else check_positive("switch_width", switch_width, "Pa")
         self.switch_content_width = check_range("switch_content_width", switch_content_width, "-", 0.0, 0.1,
                                                 low_open=True, why="(a content deficit; above 0.1 the switch "
