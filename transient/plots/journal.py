@@ -184,3 +184,22 @@ def whirl_amplitude(points):
     ax.plot([p["speed_rpm"] for p in ok], [p["whirl_amplitude_um"] for p in ok], "o-")
     ax.set(xlabel="speed [rpm]", ylabel="max |r - r_mean| [um]", title="Fig. 8: unbalance response")
     return fig
+
+
+def cavitation_modes(res):
+    """Elrod against Reynolds film (:func:`transient.study.cavitation_modes.coefficients_by_mode`): the largest
+    entry of (K_Elrod - K_Reynolds) and of the same for C, relative to the largest Reynolds entry, against the
+    Reynolds equilibrium eccentricity, one line per groove angle."""
+    from transient.study.cavitation_modes import relative_difference
+
+    fig, axes = figure(1, 2, size=(11, 4.2))
+    for ang, r in res.items():
+        for ax, q in zip(axes, ("K", "C")):
+            d = np.abs(relative_difference(r, q)).reshape(len(r["loads"]), -1).max(axis=1)
+            ax.plot(r["eps_reynolds"], 100 * d, "o-", label=f"groove at {ang:g} deg")
+    for ax, q in zip(axes, ("stiffness K", "damping C")):
+        ax.set(xlabel="equilibrium e/C (Reynolds film)", ylabel="largest |Elrod - Reynolds| / max |Reynolds| [%]",
+               title=f"{q}: mass-conserving vs Reynolds-condition film")
+        ax.grid(True, lw=0.3)
+        ax.legend(fontsize=8)
+    return fig
