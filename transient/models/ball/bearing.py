@@ -173,7 +173,7 @@ class ThrustBallBearing:
     surface_tension: float = 0.036
 
     def __post_init__(self):
-        check_range("ball_diameter", self.ball_diameter, "m", 0.0, 1.0, low_open=True, high_open=True)
+        check_range("ball_diameter", self.ball_diameter, "m", 1e-4, 1.0, high_open=True)
         check_range("pitch_diameter", self.pitch_diameter, "m", self.ball_diameter, 10.0, low_open=True, high_open=True,
                     why=f"(above ball_diameter = {self.ball_diameter:g} m)")
         z_max = int(math.pi * self.pitch_diameter / self.ball_diameter)

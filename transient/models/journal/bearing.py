@@ -151,11 +151,13 @@ class JournalBearing:
         self.cavitation = cavitation
         self.diameter = check_range("diameter", diameter, "m", 0.0, 10.0, low_open=True)
         self.length = check_range("length", length, "m", 0.0, 10.0 * self.diameter, low_open=True,
-                                  why="(L/D up to 10: longer is a long-bearing limit, not a journal bearing)")
+                                  why=f"(L/D up to 10 with diameter = {self.diameter:g} m: longer is a long-bearing "
+                                  "limit, not a journal bearing)")
         self.clearance = check_range("clearance", clearance, "m", 1e-5 * self.diameter, 0.1 * self.diameter,
                                      why="(C/D from 1e-5 to 0.1: a journal bearing's radial clearance)")
-        self.viscosity = check_positive("viscosity", viscosity, "Pa s")
-        self.bulk_modulus = check_positive("bulk_modulus", bulk_modulus, "Pa")
+        self.viscosity = check_range("viscosity", viscosity, "Pa s", 1e-6, 1e4)
+        self.bulk_modulus = check_range("bulk_modulus", bulk_modulus, "Pa", 1e6, 1e15,
+                                        why="(oils ~1e9; 1e12 and above is the incompressible limit)")
         if rheology is not None and not isinstance(rheology, Newtonian):
             raise ValueError(f"rheology = {rheology!r}: the journal film takes a Newtonian bulk (with or without "
                              f"boundary layers); the shear-thinning Gecim bulk's flow law is "
