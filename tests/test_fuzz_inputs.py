@@ -6,13 +6,11 @@ strings, booleans, None, containers, non-integers); the counts of named errors a
 gathered in ``COUNTS`` and printed at the end of the run (docs/validation.md quotes them).
 """
 
-import math
 import os
 import warnings
 from collections import Counter
 
 import numpy as np
-import pytest
 from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 

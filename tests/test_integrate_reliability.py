@@ -149,7 +149,7 @@ def test_callback_exceptions_propagate_from_scipy_and_rk4(method, where, exc_typ
         solve(decay_problem(where, when, exc, rate=rate), np.linspace(0.0, 5.0, 6), method=method, dt=0.01)
     assert info.value is exc  # the very object, not a wrapper
     assert any(f.name in ("rhs", "jac", "events") for f in info.traceback)  # raised where it was raised
-    assert any(f"at t=" in note and "[transient.solve]" in note for note in exc.__notes__)
+    assert any("at t=" in note and "[transient.solve]" in note for note in exc.__notes__)
 
 
 # --------------------------------------------------------------------------------------------------

@@ -9,7 +9,6 @@ import textwrap
 import time
 from pathlib import Path
 
-import numpy as np
 import pytest
 
 from transient.study.scene import KINDS, load_scene, scene_from_dict

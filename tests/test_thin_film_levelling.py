@@ -5,7 +5,7 @@ import math
 import numpy as np
 import pytest
 
-from transient.models.ball.levelling import BCS, LevellingGrid, chiu_depression, chiu_kernel, chiu_rate, continuous_rate
+from transient.models.ball.levelling import BCS, LevellingGrid, chiu_depression, chiu_kernel, chiu_rate
 from transient.solvers.integrate import solve
 
 

@@ -189,14 +189,12 @@ def whirl_amplitude(points):
 def cavitation_modes(res):
     """Elrod against Reynolds film (:func:`transient.study.cavitation_modes.coefficients_by_mode`): the largest
     entry of (K_Elrod - K_Reynolds) and of the same for C, relative to the largest Reynolds entry, against the
-    Reynolds equilibrium eccentricity, one line per groove angle."""
-    from transient.study.cavitation_modes import relative_difference
-
+    Reynolds equilibrium eccentricity, one line per groove angle (``dK_max``, ``dC_max`` of each angle's
+    table)."""
     fig, axes = figure(1, 2, size=(11, 4.2))
     for ang, r in res.items():
         for ax, q in zip(axes, ("K", "C")):
-            d = np.abs(relative_difference(r, q)).reshape(len(r["loads"]), -1).max(axis=1)
-            ax.plot(r["eps_reynolds"], 100 * d, "o-", label=f"groove at {ang:g} deg")
+            ax.plot(r["eps_reynolds"], 100 * r[f"d{q}_max"], "o-", label=f"groove at {ang:g} deg")
     for ax, q in zip(axes, ("stiffness K", "damping C")):
         ax.set(xlabel="equilibrium e/C (Reynolds film)", ylabel="largest |Elrod - Reynolds| / max |Reynolds| [%]",
                title=f"{q}: mass-conserving vs Reynolds-condition film")

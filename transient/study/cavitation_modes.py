@@ -17,8 +17,10 @@ from transient.models.journal.bearing import Groove, JournalBearing
 
 
 def coefficients_by_mode(bearing_kw: dict, loads_N, speed_rpm: float, groove_angles_deg=(0.0, 90.0)) -> dict:
-    """For each groove angle and load: equilibrium eccentricity, K [N/m] and C [N s/m] (2x2) of both films.
-    Returns ``{angle: dict(loads, eps_elrod, eps_reynolds, K_elrod, K_reynolds, C_elrod, C_reynolds)}``."""
+    """For each groove angle and load: equilibrium eccentricity, K [N/m] and C [N s/m] (2x2) of both films, and
+    ``dK_max``, ``dC_max``: the largest entry of :func:`relative_difference` per load.
+    Returns ``{angle: dict(loads, eps_elrod, eps_reynolds, K_elrod, K_reynolds, C_elrod, C_reynolds, dK_max,
+    dC_max)}``."""
     out = {}
     for ang in groove_angles_deg:
         kw = dict(bearing_kw, groove=Groove(angle_deg=ang))
@@ -30,8 +32,11 @@ def coefficients_by_mode(bearing_kw: dict, loads_N, speed_rpm: float, groove_ang
                 K, C = b.coefficients(W, speed_rpm)
                 rows[mode]["K"].append(K)
                 rows[mode]["C"].append(C)
-        out[float(ang)] = dict(loads=np.asarray(loads_N, dtype=float),
-                               **{f"{q}_{m}": np.asarray(rows[m][q]) for m in rows for q in ("eps", "K", "C")})
+        r = dict(loads=np.asarray(loads_N, dtype=float),
+                 **{f"{q}_{m}": np.asarray(rows[m][q]) for m in rows for q in ("eps", "K", "C")})
+        for q in ("K", "C"):
+            r[f"d{q}_max"] = np.abs(relative_difference(r, q)).reshape(len(r["loads"]), -1).max(axis=1)
+        out[float(ang)] = r
     return out
 
 

@@ -15,7 +15,6 @@ Pressures are reported as p* = p / p0, p0 = 6 mu omega (R/C)^2 (the layer-free b
 
 from __future__ import annotations
 
-import numpy as np
 
 from transient.models.journal.bearing import JournalBearing
 from transient.physics.layered import BoundaryLayers

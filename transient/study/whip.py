@@ -96,7 +96,7 @@ def run_up(make_orbit, speeds, revolutions_per_speed, rtol=1e-4, outputs_per_rev
     opr = int(outputs_per_revolution)
     t_all, x_all, y_all, s_all = [], [], [], []
     seg = dict(speeds=[], eps_min=[], eps_max=[], whirl_ratio=[], steps=[])
-    prev, state, t_phys = None, None, 0.0
+    prev, state, t_phys, tau_end = None, None, 0.0, 0.0
     touched, ok, msg = None, True, "reached the last speed"
     for s in speeds:
         o = make_orbit(float(s))

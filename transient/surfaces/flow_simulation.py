@@ -48,7 +48,7 @@ Public API
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import field
 
 import numpy as np
 import scipy.sparse.linalg as spla

@@ -311,7 +311,7 @@ def _embed_basis(F: _Flow, V) -> np.ndarray:
 def _settle(orbit: JournalOrbit, state, rtol, tol, max_revolutions):
     """Time integration from ``state`` until two consecutive once-per-revolution steps of the rotor are below
     ``tol``; returns (state at the last revolution, revolutions, message, settled)."""
-    n, C = orbit.film.n, orbit.bearing.clearance
+    C = orbit.bearing.clearance
 
     def settled(r):
         z = np.column_stack([r.x, r.y]) / C

@@ -60,7 +60,6 @@ Units: SI at the API (m, Pa, Pa s, N, kg, s). Internally the states are scaled t
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
 import numpy as np
 import scipy.sparse.linalg as spla
