@@ -81,6 +81,20 @@ def _max_norm(d) -> float:
     return float(np.max(np.abs(d)))
 
 
+def _step_taken(out, k, y, fy, residual_norm, est, rt, tol, rtol) -> bool:
+    """Record iteration ``k`` in ``out``; True (and ``out`` converged at ``y``) when the Newton step's error
+    estimate is below ``tol`` with the flow integrated at the final ``rtol``."""
+    out.residual_norms.append(residual_norm)
+    out.step_norms.append(est)
+    out.rtols.append(rt)
+    out.iterations = k + 1
+    if est <= tol and rt <= rtol:
+        out.state, out.image, out.success = y, fy, True
+        out.message = f"converged in {k + 1} iterations: error estimate {est:.2e} <= tol {tol:.2e}"
+        return True
+    return False
+
+
 class _Counted:
     """The caller's flow and derivative, counted; the default derivative is a one-sided difference."""
 
@@ -196,15 +210,9 @@ def newton_picard(flow: Callable, y0, period: float, basis, *, t0: float = 0.0, 
         a = np.linalg.solve(np.eye(p) - S, V.T @ r)
         d = r - V @ (V.T @ r) + V @ a
         est = norm(d)
-        out.residual_norms.append(norm(r))
-        out.step_norms.append(est)
-        out.rtols.append(rt)
-        out.iterations = k + 1
         if callback is not None:
             callback(k, y, r, d, rt)
-        if est <= tol and rt <= rtol:
-            out.state, out.image, out.success = y, fy, True
-            out.message = f"converged in {k + 1} iterations: error estimate {est:.2e} <= tol {tol:.2e}"
+        if _step_taken(out, k, y, fy, norm(r), est, rt, tol, rtol):
             break
         y = y + d
         rt = float(np.clip(eta * est, rtol, rtol_max))
@@ -262,13 +270,7 @@ def newton_krylov(flow: Callable, y0, period: float, *, t0: float = 0.0, tol: fl
                                 dtype=float)
         d, _ = spla.gmres(A, r, rtol=krylov_tol, atol=0.0, restart=max_krylov, maxiter=1)
         est = norm(d)
-        out.residual_norms.append(norm(r))
-        out.step_norms.append(est)
-        out.rtols.append(rt)
-        out.iterations = k + 1
-        if est <= tol and rt <= rtol:
-            out.state, out.image, out.success = y, fy, True
-            out.message = f"converged in {k + 1} iterations: error estimate {est:.2e} <= tol {tol:.2e}"
+        if _step_taken(out, k, y, fy, norm(r), est, rt, tol, rtol):
             break
         y = y + d
         rt = float(np.clip(eta * est, rtol, rtol_max))

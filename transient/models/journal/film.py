@@ -175,21 +175,27 @@ class Film:
         return M, ends, total - ends
 
     def state(self, u, X, Y, iterations=0):
-        from transient.models.journal.bearing import FilmState
+        """The SI :class:`~transient.models.journal.bearing.FilmState` of the film ``u`` at (X, Y)."""
+        F = self.force(u, X, Y)  # fills P and C
+        return film_state(self, u, X, Y, F, self.P, self.C, iterations)
 
-        b = self.bearing
-        F = self.force(u, X, Y)
-        Fx, Fy = F[0] * self.force_scale, F[1] * self.force_scale
-        eps = float(np.hypot(X, Y))
-        # attitude: from the load line (the load balances -F) to the line of centres
-        load_dir = np.arctan2(-Fy, -Fx)
-        att = np.degrees(np.angle(np.exp(1j * (np.arctan2(Y, X) - load_dir)))) if eps > 0 else 0.0
-        P = self.P
-        grid = b.grid
-        return FilmState(
-            eccentricity_ratio=eps, attitude_angle_deg=float(att), position=(X * b.clearance, Y * b.clearance),
-            force=(Fx, Fy), load=float(np.hypot(Fx, Fy)), min_film=b.clearance * (1.0 - eps),
-            speed_rpm=self.speed_rpm,
-            pressure=grid.to_2d(b.cavitation_pressure + self.p0 * P).copy(),
-            film_content=grid.to_2d(self.C).copy(),
-            angle_deg=np.degrees(grid.x.centres), z=grid.z.centres * b.radius, u=u.copy(), newton_iterations=iterations)
+
+def film_state(film, u, X, Y, F, P, content, iterations=0):
+    """The SI :class:`~transient.models.journal.bearing.FilmState` of a film (:class:`Film` or
+    :class:`~transient.models.journal.reynolds_film.ReynoldsFilm`) at journal position (X, Y): its dimensionless
+    force ``F``, pressure ``P`` (p0 units above p_c) and film content per cell. The attitude is measured from
+    the load line (the load balances -F) to the line of centres."""
+    from transient.models.journal.bearing import FilmState
+
+    b = film.bearing
+    Fx, Fy = F[0] * film.force_scale, F[1] * film.force_scale
+    eps = float(np.hypot(X, Y))
+    load_dir = np.arctan2(-Fy, -Fx)
+    att = np.degrees(np.angle(np.exp(1j * (np.arctan2(Y, X) - load_dir)))) if eps > 0 else 0.0
+    grid = b.grid
+    return FilmState(
+        eccentricity_ratio=eps, attitude_angle_deg=float(att), position=(X * b.clearance, Y * b.clearance),
+        force=(Fx, Fy), load=float(np.hypot(Fx, Fy)), min_film=b.clearance * (1.0 - eps),
+        speed_rpm=film.speed_rpm, pressure=grid.to_2d(b.cavitation_pressure + film.p0 * np.asarray(P)).copy(),
+        film_content=grid.to_2d(np.asarray(content, dtype=float)).copy(), angle_deg=np.degrees(grid.x.centres),
+        z=grid.z.centres * b.radius, u=np.array(u, dtype=float), newton_iterations=iterations)

@@ -321,19 +321,29 @@ def content_universal(y, switch, geo, free, u_fixed, theta, u):
 
 
 @njit(cache=True)
-def content_residual(tau, y, yp, out, switch, rotor, geo, fields, fv, work):
-    """IDA residual of the content formulation (block comment above); groove cells: ``m' = 0``."""
-    kappa, wbar, ebar, sym = rotor
+def _content_film(y, switch, geo, fields, fv, work, sym):
+    """The film of a content state: u = C^-1(m / H), the stencil residual R (in ``fields``) and the force."""
     cosp, sinp, area = geo
-    H, P, dP, C, D, dD, k, c, zero, R = fields
-    free, u_fixed, pos_c = fv[2]
+    P, R = fields[1], fields[9]
+    free, u_fixed = fv[2][0], fv[2][1]
     u, theta = work[0], work[1]
     n = free.size
     content_universal(y, switch, geo, free, u_fixed, theta, u)
     _stencil_residual(u, y[n], y[n + 1], switch, geo, fields, fv, R)
+    return film_force(P, cosp, sinp, area, sym)
+
+
+@njit(cache=True)
+def content_residual(tau, y, yp, out, switch, rotor, geo, fields, fv, work):
+    """IDA residual of the content formulation (block comment above); groove cells: ``m' = 0``."""
+    kappa, wbar, ebar, sym = rotor
+    area = geo[2]
+    R = fields[9]
+    free = fv[2][0]
+    n = free.size
+    fx, fy = _content_film(y, switch, geo, fields, fv, work, sym)
     for i in range(n):
         out[i] = area[i] * yp[i] + R[i] if free[i] else yp[i]
-    fx, fy = film_force(P, cosp, sinp, area, sym)
     ax, ay = rotor_accelerations(tau, fx, fy, kappa, wbar, ebar)
     out[n] = yp[n] - y[n + 2]
     out[n + 1] = yp[n + 1] - y[n + 3]
@@ -345,16 +355,13 @@ def content_residual(tau, y, yp, out, switch, rotor, geo, fields, fv, work):
 def content_rhs(tau, y, out, switch, rotor, geo, fields, fv, work):
     """ODE right-hand side of the content formulation: ``m' = -R / A`` (free cells), 0 (groove), rotor."""
     kappa, wbar, ebar, sym = rotor
-    cosp, sinp, area = geo
-    H, P, dP, C, D, dD, k, c, zero, R = fields
-    free, u_fixed, pos_c = fv[2]
-    u, theta = work[0], work[1]
+    area = geo[2]
+    R = fields[9]
+    free = fv[2][0]
     n = free.size
-    content_universal(y, switch, geo, free, u_fixed, theta, u)
-    _stencil_residual(u, y[n], y[n + 1], switch, geo, fields, fv, R)
+    fx, fy = _content_film(y, switch, geo, fields, fv, work, sym)
     for i in range(n):
         out[i] = -R[i] / area[i] if free[i] else 0.0
-    fx, fy = film_force(P, cosp, sinp, area, sym)
     out[n] = y[n + 2]
     out[n + 1] = y[n + 3]
     out[n + 2], out[n + 3] = rotor_accelerations(tau, fx, fy, kappa, wbar, ebar)

@@ -38,6 +38,7 @@ import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
 from transient.fv.reynolds import ReynoldsOperator, jacobian_kernel, residual_kernel
+from transient.models.journal.film import film_state
 from transient.models.journal.kernels import N_ROTOR, conductances, film_force, position_derivatives
 
 
@@ -194,18 +195,4 @@ class ReynoldsFilm:
     def state(self, u, X, Y, iterations=0):
         """The SI :class:`~transient.models.journal.bearing.FilmState`. ``film_content`` is 1 everywhere:
         the incompressible film has no content variable (its cavitated cells are those at p = p_c)."""
-        from transient.models.journal.bearing import FilmState
-
-        b = self.bearing
-        F = self.force(u, X, Y)
-        Fx, Fy = F[0] * self.force_scale, F[1] * self.force_scale
-        eps = float(np.hypot(X, Y))
-        load_dir = np.arctan2(-Fy, -Fx)
-        att = np.degrees(np.angle(np.exp(1j * (np.arctan2(Y, X) - load_dir)))) if eps > 0 else 0.0
-        grid = b.grid
-        return FilmState(
-            eccentricity_ratio=eps, attitude_angle_deg=float(att), position=(X * b.clearance, Y * b.clearance),
-            force=(Fx, Fy), load=float(np.hypot(Fx, Fy)), min_film=b.clearance * (1.0 - eps),
-            speed_rpm=self.speed_rpm, pressure=grid.to_2d(b.cavitation_pressure + self.p0 * u).copy(),
-            film_content=np.ones((grid.nz, grid.nx)), angle_deg=np.degrees(grid.x.centres),
-            z=grid.z.centres * b.radius, u=np.array(u, dtype=float), newton_iterations=iterations)
+        return film_state(self, u, X, Y, self.force(u, X, Y), u, self.ones, iterations)
