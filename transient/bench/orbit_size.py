@@ -215,7 +215,8 @@ def markdown(res) -> str:
     m = res["large_matched"]
     rk4 = next(r for r in res["rows"] if r.get("form") == "rk4")
     L += ["", f"**Large orbit at RK4's error** ({_fmt(rk4['error'])} C, {rk4['wall_per_rev']:.1f} s): "
-          + ", ".join(f"IDA {f} {_fmt(m[f]['wall_per_rev'], '{:.2f}')} s ({m[f]['speedup_vs_rk4']:.1f}x RK4)"
+          + ", ".join(f"IDA {f} {m[f]['wall_per_rev']:.2f} s ({m[f]['speedup_vs_rk4']:.1f}x RK4)"
+                      if math.isfinite(m[f]["wall_per_rev"]) else f"IDA {f}: RK4's error not reached at the rtols run"
                       for f in FORMS) + " (a candidate whose loosest run is already more accurate is charged that run).",
           f"**Whip, {wl['revolutions']} revolutions** (universal, rtol 1e-4): {wl['steps_per_rev']:.0f} steps and "
           f"{wl['jac_per_rev']:.0f} Jacobians per revolution, {wl['wall']:.0f} s -> "
