@@ -144,9 +144,9 @@ def main(out, quick: bool = False) -> str:
     ours_its = f"{sum(v['iterations'] for v in levels)} ({' + '.join(str(v['iterations']) for v in levels)})"
     lines = [
         "## Tapered-roller EHL (seed 001)", "",
-        f"`transient bench ehl`{' --quick' if quick else ''}; 2 cores shared with another worker (the other core "
-        "was busy during our runs: absolute seconds vary by up to 2x, the ratios measured in one run are the "
-        f"numbers); OPENBLAS_NUM_THREADS={data['openblas_threads']}.", "",
+        f"`transient bench ehl`{' --quick' if quick else ''}; 2 cores, possibly shared with other work (absolute "
+        "seconds then vary by up to 2x; the ratios measured in one run are the numbers); "
+        f"OPENBLAS_NUM_THREADS={data['openblas_threads']}.", "",
         f"### The paper's case (U = 1e-11, G = 2500, W = 2e-5, tilt 0) on {p['grid'][0]} x {p['grid'][1]} nodes "
         f"({p['unknowns']} unknowns)", "",
         "| method | wall [s] | Newton iterations | factorisations | H_central | H_min | P_max |",
