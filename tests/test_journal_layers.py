@@ -124,3 +124,14 @@ def test_seed_004_findings_with_a_newtonian_bulk(tmp_path):
     assert loads_mu[-1] - loads_mu[0] < 0.5 * (thick[1] - thick[0])
     assert all(r["darcy_share"] < 0 for r in c["thickness"])  # the Darcy flow relieves the film
     assert (tmp_path / "layers.png").exists()
+
+
+@pytest.mark.parametrize("layers", [None, BoundaryLayers(0.2 * CL, 10 * MU, 0.0), BoundaryLayers(0.2 * CL, 10 * MU, 0.05 * CL)])
+def test_concentric_friction_is_petroff(layers):
+    """Concentric, flooded film (no pressure gradient): the friction is Petroff's mu U (2 pi R L) / (C - 2 delta),
+    exactly (layers of any mobility move with their walls when the pressure is uniform)."""
+    b = bearing(groove=None, ambient_pressure=1e5, supply_pressure=1e5, layers=layers)
+    s = b.steady_state(0.0, RPM)
+    gap = CL - (0.0 if layers is None else 2 * layers.thickness)
+    petroff = MU * omega(RPM) * b.radius / gap * 2 * np.pi * b.radius * b.length
+    assert s.friction_force == pytest.approx(petroff, rel=1e-12)

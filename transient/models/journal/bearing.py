@@ -81,7 +81,8 @@ class FilmState(Result):
     ``z`` [m] are the cell-centre coordinates. ``force`` [N] is the film force on the journal
     (x towards the load, y at +90 deg in the direction of rotation), ``load`` [N] its magnitude (the
     external load it carries) and ``attitude_angle_deg`` the angle from the load line to the line of
-    centres, in the direction of rotation.
+    centres, in the direction of rotation. ``friction_force`` [N]: the film's drag on the journal surface
+    (:func:`~transient.models.journal.film.journal_friction`; boundary layers included).
     """
 
     time_axis = None
@@ -98,6 +99,7 @@ class FilmState(Result):
     z: np.ndarray = quantity("m")
     u: np.ndarray = quantity("-", repr=False)
     newton_iterations: int = 0
+    friction_force: float = quantity("N", float("nan"))
     success: bool = True
     message: str = "converged"
 
