@@ -135,3 +135,29 @@ def test_concentric_friction_is_petroff(layers):
     gap = CL - (0.0 if layers is None else 2 * layers.thickness)
     petroff = MU * omega(RPM) * b.radius / gap * 2 * np.pi * b.radius * b.length
     assert s.friction_force == pytest.approx(petroff, rel=1e-12)
+
+
+def test_velocity_profile_and_saved_state(tmp_path):
+    """The velocity across the film at a cell: the journal's speed at z = 0 and rest at z = h (no layers); with
+    immobile layers plug flow in both (journal speed over delta, rest over the last delta); its integral is the
+    flow of the law (Couette h U/2 plus the pressure flow). The state saves and loads with the new fields."""
+    from transient import load_result
+
+    for ly in (None, BoundaryLayers(0.1 * CL, 10 * MU, 0.0)):
+        s = bearing(layers=ly).steady_state(0.6, RPM)
+        z, v = s.velocity_profile(120.0, points=2001)
+        U = s.sliding_speed
+        assert v[0] == pytest.approx(U, rel=1e-12) and abs(v[-1]) < 1e-12 * U
+        if ly is not None:
+            inner = z <= ly.thickness
+            outer = z >= z[-1] - ly.thickness
+            assert np.allclose(v[inner], U, rtol=1e-12) and np.allclose(v[outer], 0.0, atol=1e-12 * U)
+        col = int(np.argmin(np.abs(s.angle_deg - 120.0)))
+        h, G = s.film_thickness[0, col], s.pressure_gradient[0, col]
+        law = LayeredFilm(MU, Gecim(kappa=1e12, viscosity_ratio=1.0), ly or BoundaryLayers(0.0, MU, 0.0)).flow(h, G, U, 0.0)
+        q = np.trapezoid(v, z)
+        assert q == pytest.approx(float(law.q_couette + law.q_pressure), rel=1e-6)
+    s.save(tmp_path / "state.npz")
+    r = load_result(tmp_path / "state.npz")
+    assert r.friction_force == s.friction_force and r.layers == s.layers
+    np.testing.assert_array_equal(r.film_thickness, s.film_thickness)

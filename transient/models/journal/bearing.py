@@ -18,7 +18,7 @@ from scipy.optimize import brentq
 from transient.checks import check_bool, check_int, check_positive, check_range
 from transient.fv.grid import Axis, Grid2D
 from transient.models.journal.film import Film, omega
-from transient.physics.layered import BoundaryLayers, Newtonian
+from transient.physics.layered import NO_LAYERS, BoundaryLayers, LayeredFilm, Newtonian
 from transient.models.journal.kernels import N_ROTOR
 from transient.models.journal.reynolds_film import ReynoldsFilm
 
@@ -100,12 +100,32 @@ class FilmState(Result):
     u: np.ndarray = quantity("-", repr=False)
     newton_iterations: int = 0
     friction_force: float = quantity("N", float("nan"))
+    film_thickness: np.ndarray = quantity("m", None, repr=False)
+    pressure_gradient: np.ndarray = quantity("Pa/m", None, repr=False)
+    viscosity: float = quantity("Pa s", float("nan"))
+    sliding_speed: float = quantity("m/s", float("nan"))
+    layers: tuple | None = None  # (delta [m], mu_a [Pa s], mu_b [Pa s], alpha [m]) or None
     success: bool = True
     message: str = "converged"
 
     @property
     def max_pressure(self) -> float:
         return float(self.pressure.max())
+
+    def velocity_profile(self, angle_deg: float, axial_index: int = 0, points: int = 41):
+        """Circumferential velocity across the film at the cell nearest ``angle_deg`` in axial row
+        ``axial_index`` (0: next to the mid-plane): (heights z [m] from the journal surface, velocity [m/s]),
+        from the film's flow law (seed 004: the journal moves at ``sliding_speed``, the bearing is at rest;
+        boundary layers, if any, move with their walls plus their Darcy slip)."""
+        ang = check_range("angle_deg", angle_deg, "deg", -360.0, 720.0)
+        row = check_int("axial_index", axial_index, "-", 0, self.pressure.shape[0] - 1)
+        n = check_int("points", points, "-", 2, 100000)
+        col = int(np.argmin(np.abs(np.angle(np.exp(1j * np.radians(self.angle_deg - ang))))))
+        h, G = float(self.film_thickness[row, col]), float(self.pressure_gradient[row, col])
+        ly = NO_LAYERS if self.layers is None else BoundaryLayers(self.layers[0], (self.layers[1], self.layers[2]),
+                                                                  self.layers[3])
+        z = np.linspace(0.0, h, n)
+        return z, LayeredFilm(self.viscosity, Newtonian(), ly).velocity(h, G, self.sliding_speed, 0.0, z)
 
 
 class JournalBearing:

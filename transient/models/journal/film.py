@@ -195,28 +195,39 @@ def film_state(film, u, X, Y, F, P, content, iterations=0):
     grid = b.grid
     pressure = grid.to_2d(b.cavitation_pressure + film.p0 * np.asarray(P)).copy()
     theta = grid.to_2d(np.asarray(content, dtype=float)).copy()
+    h, G = film_geometry(film, X, Y, pressure)
+    ly = b.layers
     return FilmState(
         eccentricity_ratio=eps, attitude_angle_deg=float(att), position=(X * b.clearance, Y * b.clearance),
         force=(Fx, Fy), load=float(np.hypot(Fx, Fy)), min_film=b.clearance * (1.0 - eps),
         speed_rpm=film.speed_rpm, pressure=pressure, film_content=theta, angle_deg=np.degrees(grid.x.centres),
         z=grid.z.centres * b.radius, u=np.array(u, dtype=float), newton_iterations=iterations,
-        friction_force=journal_friction(film, X, Y, pressure, theta))
+        friction_force=journal_friction(film, h, G, theta), film_thickness=h, pressure_gradient=G,
+        viscosity=b.viscosity, sliding_speed=omega(film.speed_rpm) * b.radius,
+        layers=None if ly is None else (ly.thickness, ly.viscosity[0], ly.viscosity[1], ly.alpha))
 
 
-def journal_friction(film, X, Y, pressure, theta) -> float:
-    """Friction force [N] on the journal: ``-sum tau_wall min(theta, 1) dA`` over the bearing, with the wall shear
-    stress of the film's flow law (seed 004's layered film; ``mu U / h - (h/2) dp/ds`` without layers) at each
-    cell's film ``h``, circumferential pressure gradient ``dp/ds`` (central, periodic) and journal speed
-    ``U = omega R``; a cavitated cell shears only its content fraction theta (Elrod's striated film)."""
-    from transient.physics.layered import NO_LAYERS, LayeredFilm, Newtonian
-
+def film_geometry(film, X, Y, pressure):
+    """Film thickness ``h`` [m] and circumferential pressure gradient ``dp/ds`` [Pa/m] (central, periodic;
+    ``s = R phi`` along the rotation) per cell, as (n_axial, n_theta) arrays."""
     b = film.bearing
     grid = b.grid
     h = b.clearance * grid.to_2d(1.0 + X * film.cosp + Y * film.sinp)
     dphi = np.gradient(np.unwrap(grid.x.centres))
     G = (np.roll(pressure, -1, axis=1) - np.roll(pressure, 1, axis=1)) / (b.radius * (np.roll(dphi, -1) + dphi))
+    return h, G
+
+
+def journal_friction(film, h, G, theta) -> float:
+    """Friction force [N] on the journal: ``-sum tau_wall min(theta, 1) dA`` over the bearing, with the wall shear
+    stress of the film's flow law (seed 004's layered film; ``mu U / h - (h/2) dp/ds`` without layers) at each
+    cell's film ``h`` and pressure gradient ``G`` (:func:`film_geometry`) and the journal speed ``U = omega R``;
+    a cavitated cell shears only its content fraction theta (Elrod's striated film)."""
+    from transient.physics.layered import NO_LAYERS, LayeredFilm, Newtonian
+
+    b = film.bearing
     law = LayeredFilm(b.viscosity, Newtonian(), b.layers or NO_LAYERS)
     tau = law.stresses(h, G, omega(film.speed_rpm) * b.radius, 0.0).lower_wall
-    area = grid.to_2d(film.area) * b.radius ** 2
+    area = b.grid.to_2d(film.area) * b.radius ** 2
     sym = 2.0 if b.symmetric else 1.0
     return float(-sym * np.sum(tau * np.minimum(theta, 1.0) * area))
