@@ -8,20 +8,16 @@ on the paper's 94 x 45 non-uniform grid (``--quick``: 62 x 45). Prints the paper
 
 from __future__ import annotations
 
-import argparse
 import json
 import os
 import time
-
-import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt
 
 from transient.analysis.ehl import end_features, midplane_features, tilt_effects, transverse_features
 from transient.models.roller import RollerContact, TaperedRoller
 from transient.params import park
 from transient.plots import roller as plots
+from transient.plots import save as save_figure
+from transient.study.scenario import parser
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 
@@ -72,15 +68,11 @@ def statements(res) -> dict:
 
 
 def save(fig, out, name):
-    fig.savefig(os.path.join(out, name), dpi=110)
-    plt.close(fig)
+    save_figure(fig, os.path.join(out, name), dpi=110)
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    ap.add_argument("--quick", action="store_true", help="62 x 45 non-uniform grid instead of the paper's 94 x 45")
-    ap.add_argument("--out", default=os.path.join(HERE, "out", "roller_ehl"), help="output directory")
-    args = ap.parse_args(argv)
+    args = parser(__doc__, os.path.join(HERE, "out", "roller_ehl")).parse_args(argv)
     os.makedirs(args.out, exist_ok=True)
     grid = ("clustered", 62, 45) if args.quick else "paper"
     res = solve_all(grid)

@@ -10,8 +10,10 @@
 
 from __future__ import annotations
 
-import matplotlib.pyplot as plt
 import numpy as np
+from matplotlib.figure import Figure
+
+from transient.plots import figure
 
 P_UNIT, H_UNIT = 1e3, 1e5
 STYLES = ("-", "--", ":", "-.")
@@ -37,7 +39,7 @@ def maps(s, quantity: str = "pressure", title: str = ""):
         Z, label = s.H * H_UNIT, r"$H \times 10^5$"
         hc = s.h_central / s.mean_radius * H_UNIT
         levels = np.linspace(Z[1:-1, 1:-1].min(), 3.0 * hc, 16)
-    fig = plt.figure(figsize=(12, 8), layout="constrained")
+    fig = Figure(figsize=(12, 8), layout="constrained")
     gs = fig.add_gridspec(2, 2, height_ratios=(1.0, 1.1))
     panels = [(fig.add_subplot(gs[0, :]), None, "(a) complete"), (fig.add_subplot(gs[1, 0]), "small", "(b) small end"),
               (fig.add_subplot(gs[1, 1]), "large", "(c) large end")]
@@ -58,45 +60,37 @@ def maps(s, quantity: str = "pressure", title: str = ""):
 
 def rolling_sections(results: dict, y: float, title: str = ""):
     """Pressure and film along the rolling direction at ``y`` [m] for ``{label: RollerSteady}``."""
-    fig, (ap, ah) = plt.subplots(2, 1, figsize=(7.5, 7), sharex=True)
+    fig, (ap, ah) = figure(2, 1, size=(7.5, 7), sharex=True)
     for k, (label, s) in enumerate(results.items()):
         x, p, h = s.section_x(y)
         ap.plot(x / s.mean_radius, p / s.modulus * P_UNIT, STYLES[k % 4], label=label)
         ah.plot(x / s.mean_radius, h / s.mean_radius * H_UNIT, STYLES[k % 4], label=label)
     s0 = next(iter(results.values()))
     c = s0.half_width / s0.mean_radius
-    hc = s0.h_central / s0.mean_radius * H_UNIT
-    ah.set_ylim(0.0, 4.0 * hc)
-    ah.set_xlim(-2.5 * c, 2.0 * c)
-    ap.set_ylabel(r"$P \times 10^3$")
-    ah.set_ylabel(r"$H \times 10^5$")
-    ah.set_xlabel("X")
-    ap.legend()
-    for a in (ap, ah):
-        a.grid(alpha=0.3)
-    fig.suptitle(title)
-    fig.tight_layout()
-    return fig
+    return _sections_frame(fig, ap, ah, s0, 4.0, (-2.5 * c, 2.0 * c), "X", title)
 
 
 def transverse_sections(results: dict, end: str, x: float = 0.0, title: str = ""):
     """Pressure and film along the roller at ``x`` [m] near the ``end`` (``"small"``/``"large"``)."""
-    fig, (ap, ah) = plt.subplots(2, 1, figsize=(7.5, 7), sharex=True)
+    fig, (ap, ah) = figure(2, 1, size=(7.5, 7), sharex=True)
     s0 = next(iter(results.values()))
-    lo, hi = _zoom(s0, end)
     for k, (label, s) in enumerate(results.items()):
         y, p, h = s.section_y(x)
         ap.plot(y / s.mean_radius, p / s.modulus * P_UNIT, STYLES[k % 4], marker=".", ms=3, label=label)
         ah.plot(y / s.mean_radius, h / s.mean_radius * H_UNIT, STYLES[k % 4], marker=".", ms=3, label=label)
-    hc = s0.h_central / s0.mean_radius * H_UNIT
-    ah.set_ylim(0.0, 3.0 * hc)
-    ah.set_xlim(lo, hi)
+    return _sections_frame(fig, ap, ah, s0, 3.0, _zoom(s0, end), "Y", title)
+
+
+def _sections_frame(fig, ap, ah, s0, film_top, xlim, xlabel, title):
+    """Axes of a pressure (top) / film (bottom) section figure: the film up to ``film_top`` central films of
+    ``s0``, the abscissa window ``xlim``, labels in the paper's units, legend, grid, title."""
+    ah.set_ylim(0.0, film_top * s0.h_central / s0.mean_radius * H_UNIT)
+    ah.set_xlim(*xlim)
     ap.set_ylabel(r"$P \times 10^3$")
     ah.set_ylabel(r"$H \times 10^5$")
-    ah.set_xlabel("Y")
+    ah.set_xlabel(xlabel)
     ap.legend()
     for a in (ap, ah):
         a.grid(alpha=0.3)
     fig.suptitle(title)
-    fig.tight_layout()
     return fig
