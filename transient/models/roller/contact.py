@@ -42,9 +42,8 @@ from transient.models.roller.film import EHLFilm, interpolate_state, solve_stead
 from transient.models.roller.geometry import TaperedRoller
 from transient.models.roller.grid import TensorGrid, clustered_axis
 from transient.models.roller.krylov import DenseLU, NewtonKrylov, NewtonMatrix, TwoLevel
-from transient.models.roller.line_contact import _load_ratio
 from transient.models.roller.results import EHLConvergenceError, RollerSteady, RollerTransient
-from transient.models.roller.transient import SqueezeDAE, integrate
+from transient.models.roller.transient import load_ratio, run_squeeze
 from transient.physics.line_formulas import dowson_toyoda_central
 from transient.physics.rheology import DOWSON_HIGGINSON_PARK, Rheology
 from transient.solvers.newton import NewtonError
@@ -375,11 +374,9 @@ class RollerContact:
         else:
             raise ValueError(f"start = {start!r}: use 'dry' or a RollerSteady of this contact")
         t_ref = self.time_scale
-        ratio = _load_ratio(load, self.load, w_start, t_ref, ramp_time)
-        dae = SqueezeDAE(film, s["lam"], ratio)
-        tau = np.linspace(0.0, t_end / t_ref, int(check_range("n_out", n_out, "-", 2, 1e6)))
-        sol, wall = integrate(dae, y0, tau, rtol, dt0=1e-3 * tau[1])
-        rows = [self.result(film, y, True, "", 0, [], 0.0) for y in sol.y]
+        ratio = load_ratio(load, self.load, w_start, t_ref, ramp_time)
+        sol, wall, rows = run_squeeze(film, s["lam"], ratio, y0, t_end, t_ref, rtol, n_out,
+                                      lambda f, y: self.result(f, y, True, "", 0, [], 0.0))
         last = rows[-1]
         return RollerTransient(t=sol.t * t_ref, h_central=np.array([r.h_central for r in rows]),
                                h_min=np.array([r.h_min for r in rows]), p_max=np.array([r.p_max for r in rows]),

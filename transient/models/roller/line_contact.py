@@ -28,7 +28,7 @@ from transient.models.roller.film import EHLFilm, interpolate_state, solve_stead
 from transient.models.roller.grid import TensorGrid
 from transient.models.roller.dry import edge_positions, polonsky_keer
 from transient.models.roller.results import EHLConvergenceError, LineDry, LineSteady, LineTransient
-from transient.models.roller.transient import SqueezeDAE, integrate
+from transient.models.roller.transient import load_ratio, run_squeeze
 from transient.physics.elasticity import line_influence
 from transient.physics.line_formulas import dowson_toyoda_central, hertz_line, line_groups, martin_min
 from transient.physics.rheology import DOWSON_HIGGINSON_PARK, Rheology
@@ -254,11 +254,9 @@ class LineContact:
                                n_out, ramp_time)
 
     def _transient(self, film, y0, kappa, t_ref, w_ref, w_start, t_end, load, rtol, n_out, ramp_time):
-        ratio = _load_ratio(load, w_ref, w_start, t_ref, ramp_time)
-        dae = SqueezeDAE(film, kappa, ratio)
-        tau = np.linspace(0.0, t_end / t_ref, int(check_range("n_out", n_out, "-", 2, 1e6)))
-        sol, wall = integrate(dae, y0, tau, rtol, dt0=1e-3 * tau[1])
-        rows = [self._result(film, y, True, "", 0, [], 0.0) for y in sol.y]
+        ratio = load_ratio(load, w_ref, w_start, t_ref, ramp_time)
+        sol, wall, rows = run_squeeze(film, kappa, ratio, y0, t_end, t_ref, rtol, n_out,
+                                      lambda f, y: self._result(f, y, True, "", 0, [], 0.0))
         last = rows[-1]
         return LineTransient(t=sol.t * t_ref, h_central=np.array([r.h_central for r in rows]),
                              h_min=np.array([r.h_min for r in rows]), p_max=np.array([r.p_max for r in rows]),
@@ -279,22 +277,6 @@ class LineContact:
                           hertz_half_width=self.b, hertz_pressure=self.p_h, success=ok, message=msg,
                           iterations=int(iterations), wall_time=wall, residual_norms=list(map(float, norms)),
                           state=np.array(u, dtype=float))
-
-
-def _load_ratio(load, w_ref, w_start, t_ref, ramp_time):
-    """``W(t)/W_ref`` as a function of scaled time: constant, a smoothed step, or the user's function."""
-    if load is None:
-        return lambda tau: w_start / w_ref
-    if callable(load):
-        return lambda tau: float(load(tau * t_ref)) / w_ref
-    w_end = check_positive("load", load, "N/m or N")
-    t_ramp = (1.0 if ramp_time is None else check_positive("ramp_time", ramp_time, "s") / t_ref)
-
-    def ratio(tau):
-        s = min(max(tau / t_ramp, 0.0), 1.0)
-        return (w_start + (w_end - w_start) * s * s * (3.0 - 2.0 * s)) / w_ref
-
-    return ratio
 
 
 def rigid_squeeze(radius, load_per_length, viscosity, h0_start, t_end, grid: int = 401, half_width: float = 10.0,

@@ -24,6 +24,7 @@ import time
 
 import numpy as np
 
+from transient.checks import check_positive, check_range
 from transient.models.roller.film import EHLFilm
 from transient.models.roller.kernels import assemble_dense
 from transient.solvers.integrate import Problem, solve
@@ -124,3 +125,28 @@ def integrate(dae: SqueezeDAE, y0, tau_eval, rtol: float, dt0: float):
     sol.y[0] = y0
     sol.t[0] = tau_eval[0]
     return sol, time.perf_counter() - t0
+
+
+def load_ratio(load, w_ref, w_start, t_ref, ramp_time):
+    """``W(t)/W_ref`` as a function of scaled time: constant, a smoothed step, or the user's function."""
+    if load is None:
+        return lambda tau: w_start / w_ref
+    if callable(load):
+        return lambda tau: float(load(tau * t_ref)) / w_ref
+    w_end = check_positive("load", load, "N/m or N")
+    t_ramp = (1.0 if ramp_time is None else check_positive("ramp_time", ramp_time, "s") / t_ref)
+
+    def ratio(tau):
+        s = min(max(tau / t_ramp, 0.0), 1.0)
+        return (w_start + (w_end - w_start) * s * s * (3.0 - 2.0 * s)) / w_ref
+
+    return ratio
+
+
+def run_squeeze(film: EHLFilm, kappa: float, ratio, y0, t_end: float, t_ref: float, rtol: float, n_out, row):
+    """The squeeze DAE of ``film`` from ``y0`` over ``t_end`` [s] (time unit ``t_ref`` [s]) with ``n_out``
+    outputs and the load ratio ``ratio(tau)``; returns (Solution, wall time, ``[row(film, y)]`` per output)."""
+    dae = SqueezeDAE(film, kappa, ratio)
+    tau = np.linspace(0.0, t_end / t_ref, int(check_range("n_out", n_out, "-", 2, 1e6)))
+    sol, wall = integrate(dae, y0, tau, rtol, dt0=1e-3 * tau[1])
+    return sol, wall, [row(film, y) for y in sol.y]
