@@ -16,6 +16,7 @@ import os
 import numpy as np
 import pytest
 import scipy.sparse as sp
+from fd_jacobian import central_jacobian
 
 from transient.verification.reference import short_bearing_force
 from transient.params.rho_kim import BEARING as RHO_KIM_BEARING, ROTOR as RHO_KIM_ROTOR
@@ -34,19 +35,6 @@ def paper_bearing(grid=(48, 8), **kw):
 # --------------------------------------------------------------------------------------------------
 # analytic Jacobians vs central finite differences
 # --------------------------------------------------------------------------------------------------
-
-def _fd_columns(f, y, m, h=1e-6):
-    """Central-difference Jacobian (m rows) of f(y) -> array; the step ``h max(1, |y_j|)`` must be well
-    below the scale on which f bends (the switch width, in u)."""
-    J = np.zeros((m, y.size))
-    for j in range(y.size):
-        hj = h * max(1.0, abs(y[j]))
-        yp, ym = y.copy(), y.copy()
-        yp[j] += hj
-        ym[j] -= hj
-        J[:, j] = (f(yp) - f(ym)) / (2 * hj)
-    return J
-
 
 def _compare(J_an, J_fd, mask):
     """Relative difference (max entry / max |J| per column, worst column) and the largest FD entry
@@ -90,7 +78,7 @@ def test_ode_jacobian_matches_finite_differences(switch_width, layers):
         prob.rhs(0.3, v, out)
         return out
 
-    J_fd = _fd_columns(f, y, n, h=5e-4 * o.film.width)
+    J_fd = central_jacobian(f, y, n, step=5e-4 * o.film.width)
     rel, outside = _compare(J_an, J_fd, pat.toarray() != 0)
     assert rel < 1e-6, rel
     assert outside == 0.0
@@ -124,7 +112,7 @@ def test_dae_jacobian_matches_finite_differences(switch_width, layers):
         return out
 
     h = 5e-4 * o.film.width
-    J_fd = _fd_columns(F_y, y, n, h=h) + cj * _fd_columns(F_yp, yp, n, h=h)
+    J_fd = central_jacobian(F_y, y, n, step=h) + cj * central_jacobian(F_yp, yp, n, step=h)
     mask = pat.toarray() != 0
     mask |= np.eye(n, dtype=bool)  # IDA's pattern always includes the diagonal
     rel, outside = _compare(J_an, J_fd, mask)
@@ -159,7 +147,7 @@ def test_content_jacobians_match_finite_differences(switch_width, layers):
         prob.residual(0.3, v, vp, out)
         return out
 
-    J_fd = _fd_columns(lambda v: F(v, yp), y, n, h=h) + cj * _fd_columns(lambda v: F(y, v), yp, n, h=h)
+    J_fd = central_jacobian(lambda v: F(v, yp), y, n, step=h) + cj * central_jacobian(lambda v: F(y, v), yp, n, step=h)
     rel, outside = _compare(J_an, J_fd, mask)
     assert rel < 1e-6, rel
     assert outside == 0.0
@@ -173,7 +161,7 @@ def test_content_jacobians_match_finite_differences(switch_width, layers):
         prob.rhs(0.3, v, out)
         return out
 
-    rel, outside = _compare(J_an, _fd_columns(f, y, n, h=h), mask)
+    rel, outside = _compare(J_an, central_jacobian(f, y, n, step=h), mask)
     assert rel < 1e-6, rel
     assert outside == 0.0
 
@@ -222,7 +210,7 @@ def test_film_jacobian_matches_finite_differences(rate):
     def G(v):
         return f.residual(v, X, Y, VX, VY, rate=rate, C_ref=C_ref).copy()
 
-    J_fd = _fd_columns(G, u, n, h=5e-4 * f.width)
+    J_fd = central_jacobian(G, u, n, step=5e-4 * f.width)
     rel, outside = _compare(M[:n, :n], J_fd, pat[:n, :n])
     assert rel < 1e-6, rel
     assert outside == 0.0
@@ -232,7 +220,7 @@ def test_film_jacobian_matches_finite_differences(rate):
         def Gq(v):
             return f.residual(u, *v, rate=rate, C_ref=C_ref).copy()
 
-        Jq = _fd_columns(Gq, q, n)
+        Jq = central_jacobian(Gq, q, n)
         rel_q, _ = _compare(M[:n, n:n + 4], Jq, pat[:n, n:n + 4])
         assert rel_q < 1e-6, rel_q
 

@@ -13,6 +13,7 @@ import warnings
 
 import numpy as np
 import pytest
+from fd_jacobian import central_jacobian
 from scipy.integrate import quad
 from scipy.optimize import brentq
 
@@ -64,16 +65,6 @@ def test_elrod_film_without_supply_warns():
 # analytic Jacobian vs finite differences; complementarity
 # --------------------------------------------------------------------------------------------------
 
-def _fd(f, y, m, h):
-    J = np.zeros((m, y.size))
-    for j in range(y.size):
-        yp, ym = y.copy(), y.copy()
-        yp[j] += h
-        ym[j] -= h
-        J[:, j] = (f(yp) - f(ym)) / (2 * h)
-    return J
-
-
 def test_jacobian_matches_finite_differences():
     """dG/dP (affine: exact up to rounding) and the journal columns dG/d(X, Y, VX, VY) on a 16x4 grid with a
     groove, at a moving, off-centre journal and a pressure with cavitated cells; the finite-difference
@@ -86,8 +77,8 @@ def test_jacobian_matches_finite_differences():
     assert np.any(P[f.free] == 0.0) and np.any(P[f.free] > 0.0)
     M = f.op.matrix(f.jacobian_data(P, *q)).toarray()
     pattern = f.op.matrix(np.ones(f.op.nnz)).toarray() != 0
-    Ju = _fd(lambda v: f.residual(v, *q).copy(), P + 0.1, n, 1e-3)
-    Jq = _fd(lambda v: f.residual(P, *v).copy(), q, n, 1e-6)
+    Ju = central_jacobian(lambda v: f.residual(v, *q).copy(), P + 0.1, n, 1e-3, relative=False)
+    Jq = central_jacobian(lambda v: f.residual(P, *v).copy(), q, n, 1e-6, relative=False)
     for an, fd, pat in ((M[:n, :n], Ju, pattern[:n, :n]), (M[:n, n:n + 4], Jq, pattern[:n, n:n + 4])):
         scale = np.abs(an).max(axis=0)
         assert float((np.abs(fd - an).max(axis=0) / scale).max()) < 1e-7
@@ -228,7 +219,7 @@ def test_force_sensitivity_matches_finite_differences_of_the_solve():
 
     P, _ = f.solve(X, Y)
     _, dq, dv = f.force_sensitivity(P, X, Y)
-    fd = _fd(F, np.array([X, Y, 0.0, 0.0]), 2, 1e-6)
+    fd = central_jacobian(F, np.array([X, Y, 0.0, 0.0]), 2, 1e-6, relative=False)
     assert np.abs(fd[:, :2] - dq).max() < 1e-6 * np.abs(dq).max()
     assert np.abs(fd[:, 2:] - dv).max() < 1e-6 * np.abs(dv).max()
     assert abs(dv[0, 1] - dv[1, 0]) < 1e-9 * np.abs(dv).max()  # fixed-boundary damping is symmetric
@@ -256,7 +247,7 @@ def _short_coefficient_error(LD, X=0.55, Y=0.25):
     Reynolds film (no groove, 480 around, axially Richardson-extrapolated from 6/12 cells) against the
     derivatives of the short-bearing pi-film force (quadrature + central differences)."""
     zb = 0.5 * LD * D / (0.5 * D)
-    ref = _fd(lambda v: _short_force(v, zb), np.array([X, Y, 0.0, 0.0]), 2, 1e-5)
+    ref = central_jacobian(lambda v: _short_force(v, zb), np.array([X, Y, 0.0, 0.0]), 2, 1e-5, relative=False)
     S = {}
     for nz in (6, 12):
         f = reynolds_bearing(LD * D, (480, nz), groove=None).film(RPM)
