@@ -265,7 +265,7 @@ class JournalOrbit:
     def run(self, revolutions, method="ida", rtol=1e-6, atol=1e-9, steps_per_revolution=3000,
             outputs_per_revolution=100, record=(), record_from_revolution=0.0, chunk_revolutions=None,
             checkpoint=None, resume=False, progress=None, touch_gap=1e-3, y0=None,
-            inner_tolerance=1e-6, start=None, stop=None, time_budget=None, formulation=None) -> OrbitResult:
+            inner_tolerance=1e-6, start=None, stop=None, time_budget=None, formulation="universal") -> OrbitResult:
         """Integrate ``revolutions`` shaft revolutions from the static equilibrium, from ``y0`` (a state at
         t = 0) or from ``start`` (a previous :class:`OrbitResult`, or ``(time [s], state)``: the run goes on
         from its final state and time, so the unbalance keeps its phase). The first output is the start.
@@ -312,8 +312,6 @@ class JournalOrbit:
             raise ValueError(f"record: unknown series {bad}; allowed: {RECORDABLE}")
         if method not in METHODS:
             raise ValueError(f"method = {method!r} is not a method; allowed: {', '.join(METHODS)}")
-        if formulation is None:
-            formulation = "universal"
         if formulation not in FORMULATIONS:
             raise ValueError(f"formulation = {formulation!r}; allowed: {', '.join(FORMULATIONS)}")
         if method == "rk4" and formulation != "universal":
@@ -368,7 +366,8 @@ class JournalOrbit:
                    chunk_revolutions=chunk_revolutions, start_time=tau0 / self.film.omega, formulation=formulation,
                    start_state=hashlib.sha256(np.ascontiguousarray(y).tobytes()).hexdigest()[:16])
         user_stop = None if stop is None else (lambda r: stop(r.result(method, Stats(), None, "", tau0)))
-        out = run_long(problem_at, self.content_state(y) if formulation == "content" else y, tau0, two_pi / opr, n_out, rec, method=method, solve_kwargs=kw,
+        y_run = self.content_state(y) if formulation == "content" else y
+        out = run_long(problem_at, y_run, tau0, two_pi / opr, n_out, rec, method=method, solve_kwargs=kw,
                        chunk_outputs=max(1, int(round(chunk_revolutions * opr))), checkpoint=checkpoint,
                        resume=resume, key=key, progress=progress, unit=("rev", two_pi),
                        label=f"orbit {self.speed_rpm:g} rpm", status=lambda: f"e/C = {rec.last_eps:.4f}",
