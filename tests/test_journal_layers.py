@@ -11,7 +11,7 @@ checked against finite differences in tests/test_journal_model.py (``layers`` pa
 import numpy as np
 import pytest
 
-from transient import BoundaryLayers, Gecim, JournalBearing, JournalOrbit, LayeredFilm
+from transient import BoundaryLayers, Gecim, JournalBearing, JournalOrbit, LayeredFilm, Newtonian
 from transient.models.journal.bearing import omega
 from transient.params.rho_kim import BEARING, ROTOR
 
@@ -96,8 +96,8 @@ def test_orbit_with_layers_conserves_mass_and_stops_where_the_layers_touch():
 def test_bad_layers_are_named():
     with pytest.raises(ValueError, match="layers.thickness"):
         bearing(layers=BoundaryLayers(0.5 * CL, MU, 0.0))
-    with pytest.raises(ValueError, match="rheology"):
-        bearing(rheology=Gecim(kappa=1e5, viscosity_ratio=0.57))
+    with pytest.raises(TypeError, match="rheology"):
+        bearing(rheology=Newtonian)  # the class, not an instance
     with pytest.raises(TypeError, match="layers"):
         bearing(layers=0.1)
     b = bearing(layers=BoundaryLayers(0.2 * CL, MU, 0.0))

@@ -342,6 +342,7 @@ class ReynoldsOperator:
     upwind : Couette face value by upwinding (True; needed for Elrod's cavitated zone) or central.
     boundary_P, boundary_C : default prescribed P and C on every Dirichlet face (change per side with
         :meth:`set_boundary`).
+    diagonals : add the corner neighbours to the pattern (:class:`~transient.fv.stencil.Stencil`).
 
     Attributes: ``grid, stencil, pattern, n (= cells + extras), n_cells, n_extra, nnz, upwind`` and the
     kernel arrays ``fL, fR, fdir, fd, fs, fpos`` (interior faces), ``bcell, bside, bdir, bd, bs, bP, bC,
@@ -350,9 +351,10 @@ class ReynoldsOperator:
     call the kernels from their own numba code pass :attr:`face_tuples` after the field arrays.
     """
 
-    def __init__(self, grid: Grid2D, n_extra: int = 0, upwind: bool = False, boundary_P=0.0, boundary_C=1.0):
+    def __init__(self, grid: Grid2D, n_extra: int = 0, upwind: bool = False, boundary_P=0.0, boundary_C=1.0,
+                 diagonals: bool = False):
         self.grid = grid
-        self.stencil = st = Stencil(grid, n_extra)
+        self.stencil = st = Stencil(grid, n_extra, diagonals)
         self.pattern = st.pattern
         self.n, self.n_cells, self.n_extra, self.nnz = st.n, st.n_cells, st.n_extra, st.nnz
         self.upwind = bool(upwind)

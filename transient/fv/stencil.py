@@ -7,7 +7,9 @@ unknowns (e.g. journal position and velocity). The pattern holds
 * for every cell row ``k``: columns ``k`` and its west/east/south/north neighbours (periodic wrap
   included; no entry across a Dirichlet or symmetry face);
 * dense columns ``n + e`` (every row depends on the extras) and dense rows ``n + e`` (the extras'
-  equations depend on every unknown).
+  equations depend on every unknown);
+* with ``diagonals=True`` also the four corner neighbours of every cell (the 9-point stencil of a face flux
+  that depends on the full gradient vector, :mod:`transient.fv.face_gradient`).
 
 The maps give the position of an entry ``(row, col)`` in the CSC ``data`` array (column-major, rows
 sorted within a column, the order scikit-sundae and scipy use), so numba kernels can fill ``data``
@@ -56,7 +58,7 @@ class Stencil:
     pos_diag : (n,) int64, position of the diagonal entries
     """
 
-    def __init__(self, grid: Grid2D, n_extra: int = 0):
+    def __init__(self, grid: Grid2D, n_extra: int = 0, diagonals: bool = False):
         if isinstance(n_extra, bool) or int(n_extra) != n_extra or n_extra < 0:
             raise ValueError(f"n_extra must be an integer >= 0, got {n_extra!r}")
         n_extra = int(n_extra)
@@ -72,6 +74,14 @@ class Stencil:
             ok = nb[:, d] >= 0
             rows.append(k[ok])
             cols.append(nb[ok, d])
+        if diagonals:
+            for a in (0, 1):  # west, east; then their south and north neighbours
+                for b in (2, 3):
+                    side = nb[:, a]
+                    corner = np.where(side >= 0, nb[np.maximum(side, 0), b], -1)
+                    ok = corner >= 0
+                    rows.append(k[ok])
+                    cols.append(corner[ok])
         if n_extra:
             allr = np.arange(N, dtype=np.int64)
             for e in range(n_extra):

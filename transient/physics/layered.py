@@ -313,10 +313,12 @@ def _moments_2d(t0x, t0y, Gx, Gy, H, kappa, r, xg, wg, acc):
     acc[:] = 0.0
     g2 = Gx * Gx + Gy * Gy
     zs = -(t0x * Gx + t0y * Gy) / g2 if g2 > 0.0 else 0.0
-    if g2 == 0.0 or not math.isfinite(t0x + t0y + Gx + Gy):  # (NaN/inf input: one panel)
+    Gn = math.sqrt(g2)
+    if Gn * H <= 1e-3 * math.hypot(t0x, t0y) or not math.isfinite(t0x + t0y + Gx + Gy):
+        # |tau| varies by at most 1e-3 of itself: no kink, singularities far away, one panel is exact to
+        # rounding (and the panel ends measured from a far-away zs would cancel); NaN/inf input: one panel
         _panel_2d(0.0, H, 0.0, 1.0, t0x, t0y, Gx, Gy, H, kappa, r, xg, wg, acc)
         return
-    Gn = math.sqrt(g2)
     mmin = abs(t0x * Gy - t0y * Gx) / Gn
     d0 = mmin / Gn if mmin >= 1e-9 * Gn * H else 0.0  # below: a kink to 1e-17 relative
     if zs <= 0.0:
@@ -331,7 +333,8 @@ def _moments_2d(t0x, t0y, Gx, Gy, H, kappa, r, xg, wg, acc):
 @njit(cache=True)
 def _solve_tau0_2d(dux, duy, Gx, Gy, H, kappa, r, xg, wg, acc):
     """Bulk stress vector at ``zeta = 0`` with ``int_0^H gdot = du``: Newton from the Newtonian solution
-    (NaN if 50 iterations do not converge); leaves the moments at the solution in ``acc``."""
+    (NaN if 50 iterations do not converge); leaves the moments at the solution in ``acc`` (the flow moments
+    8, 9 corrected to the last step)."""
     scale = math.hypot(dux, duy) / H + math.hypot(Gx, Gy) * H
     tx = dux / H - 0.5 * Gx * H
     ty = duy / H - 0.5 * Gy * H
@@ -345,7 +348,11 @@ def _solve_tau0_2d(dux, duy, Gx, Gy, H, kappa, r, xg, wg, acc):
         sy = (acc[2] * fy - acc[3] * fx) / det
         step = math.hypot(sx, sy)
         if _converged(step, last, scale):
-            return tx, ty  # (acc holds the moments here, one rounding-level step away)
+            # take the last (rounding-level) step and carry the flow moments along to first order, so the
+            # flow has no jump where the iteration count changes (only the derivative sums stay one step away)
+            acc[8] -= acc[10] * sx + acc[11] * sy
+            acc[9] -= acc[11] * sx + acc[12] * sy
+            return tx - sx, ty - sy
         tx -= sx
         ty -= sy
         last = step

@@ -18,7 +18,7 @@ from scipy.optimize import brentq
 from transient.checks import check_bool, check_int, check_positive, check_range
 from transient.fv.grid import Axis, Grid2D
 from transient.models.journal.film import Film, omega
-from transient.physics.layered import NO_LAYERS, BoundaryLayers, LayeredFilm, Newtonian
+from transient.physics.layered import NO_LAYERS, BoundaryLayers, Gecim, LayeredFilm, Newtonian
 from transient.models.journal.kernels import N_ROTOR
 from transient.models.journal.reynolds_film import ReynoldsFilm
 
@@ -156,12 +156,15 @@ class JournalBearing:
         unused). Both serve ``steady_state``, ``equilibrium``, ``coefficients`` and
         ``stability_threshold``; the time-domain orbit needs ``"elrod"``. The classical full 360 deg bearing
         of the design charts (Raimondi & Boyd) is ``cavitation="reynolds"`` with ``groove=None``.
-    rheology : ``None`` or :class:`~transient.physics.layered.Newtonian` (the Gecim bulk of seed 004 is not in
-        the journal film yet: its flow law is :class:`~transient.physics.layered.LayeredFilm`).
-    layers : :class:`~transient.physics.layered.BoundaryLayers` on journal and bearing (seed 004, Newtonian
-        bulk): the bulk is ``h - 2 delta`` thick and the layers add their Darcy flow to the Poiseuille
-        conductance (:func:`~transient.models.journal.kernels.conductances`); the film closes at
-        ``e/C = 1 - 2 delta / C`` (the orbit stops there: "boundary layers touch"). Default: none.
+    rheology : the bulk: ``None`` or :class:`~transient.physics.layered.Newtonian` (default, viscosity mu), or
+        :class:`~transient.physics.layered.Gecim` (seed 004's shear-thinning bulk, low-shear viscosity mu =
+        ``viscosity``): its Poiseuille flux is the 2-D layered flow law at every face
+        (:mod:`transient.models.journal.gecim_film`, 9-point Jacobian), in every journal computation and
+        both films.
+    layers : :class:`~transient.physics.layered.BoundaryLayers` on journal and bearing (seed 004): the bulk is
+        ``h - 2 delta`` thick and the layers add their Darcy flow (Newtonian bulk: a Poiseuille conductance,
+        :func:`~transient.models.journal.kernels.conductances`); the film closes at ``e/C = 1 - 2 delta / C``
+        (the orbit stops there: "boundary layers touch"). Default: none.
     """
 
     def __init__(self, diameter, length, clearance, viscosity, bulk_modulus=1e9, supply_pressure=101325.0,
@@ -180,10 +183,11 @@ class JournalBearing:
         self.viscosity = check_range("viscosity", viscosity, "Pa s", 1e-6, 1e4)
         self.bulk_modulus = check_range("bulk_modulus", bulk_modulus, "Pa", 1e6, 1e15,
                                         why="(oils ~1e9; 1e12 and above is the incompressible limit)")
-        if rheology is not None and not isinstance(rheology, Newtonian):
-            raise ValueError(f"rheology = {rheology!r}: the journal film takes a Newtonian bulk (with or without "
-                             f"boundary layers); the shear-thinning Gecim bulk's flow law is "
-                             f"transient.physics.layered.LayeredFilm but is not in the journal film yet")
+        if rheology is not None and not isinstance(rheology, (Newtonian, Gecim)):
+            raise TypeError(f"rheology must be None, Newtonian() or Gecim(kappa=..., viscosity_ratio=...), got "
+                            f"{type(rheology).__name__}")
+        self.rheology = Newtonian() if rheology is None else rheology
+        self.shear_thinning = isinstance(self.rheology, Gecim)
         if layers is not None and not isinstance(layers, BoundaryLayers):
             raise TypeError(f"layers must be a BoundaryLayers or None, got {type(layers).__name__}")
         if layers is not None:
@@ -251,7 +255,9 @@ class JournalBearing:
                     symmetric=self.symmetric, cavitation=self.cavitation,
                     layers=None if self.layers is None else dict(thickness=self.layers.thickness,
                                                                  viscosity=list(self.layers.viscosity),
-                                                                 alpha=self.layers.alpha))
+                                                                 alpha=self.layers.alpha),
+                    rheology=None if not self.shear_thinning else dict(
+                        kappa=self.rheology.kappa, viscosity_ratio=self.rheology.viscosity_ratio))
 
     def layer_groups(self) -> tuple[float, float]:
         """The boundary layers in the film's scales: ``(2 delta / C, 3 alpha^2 mu (1/mu_a + 1/mu_b) / C^2)``

@@ -13,6 +13,7 @@ import numpy as np
 import scipy.sparse.linalg as spla
 
 from transient.fv.reynolds import ReynoldsOperator
+from transient.models.journal.gecim_film import bulk_end_flow, bulk_tables, no_bulk
 from transient.models.journal.kernels import N_ROTOR, content_universal, film_force, film_jacobian, film_residual
 from transient.solvers.newton import NewtonError, newton
 
@@ -45,7 +46,7 @@ class Film:
         # prescribed pressures sit on the sharp Elrod curve, not on the rounded switch (physics.cavitation:
         # P(0) = w ln 2 at an end held at p_c biased the load linearly in w): P = u, theta = 1 + u / beta_bar
         self.op = ReynoldsOperator(b.grid, n_extra=n_extra, upwind=True, boundary_P=u_amb,
-                                   boundary_C=1.0 + u_amb / self.beta_bar)
+                                   boundary_C=1.0 + u_amb / self.beta_bar, diagonals=b.shear_thinning)
         self.op.u_fixed[~self.op.free] = u_supply  # groove cells at the supply pressure
         self.n = n = self.op.n_cells
         self.u_supply = u_supply
@@ -71,7 +72,8 @@ class Film:
         self.fields = (self.H, self.P, self.dP, self.C, self.D, self.dD, self.k, self.c, self.zero, self.R)
         self.extras = (self.dk_dq[:ne], self.dc_dq[:ne], self.no_dq[:ne], self.pos_row, self.pos_col, self.indices,
                        self.scale)
-        self.fv = op.face_tuples + (op.no_face_k,)
+        self.bulk = bulk_tables(op, b, speed_rpm) if b.shear_thinning else no_bulk()
+        self.fv = op.face_tuples + (op.no_face_k, self.bulk)
         # content formulation (kernels.content_*): u, theta, du/dm, du/dX, du/dY, CSC column pointers
         self.work = (np.zeros(n), np.zeros(n), np.zeros(n), np.zeros(n), np.zeros(n),
                      np.ascontiguousarray(op.stencil.indptr, dtype=np.int64))
@@ -171,7 +173,10 @@ class Film:
         ok = free[b]
         if np.any(op.bdir[ok] != 1):
             raise NotImplementedError("mass_flows assumes Dirichlet faces only at the bearing ends")
-        ends = w.sym * float(np.sum((-w.k[b] * (op.bP - w.P[b]) / op.bd * op.bs)[ok]))
+        if w.bearing.shear_thinning:
+            ends = w.sym * bulk_end_flow(w.P, w.H, free, op.fL.size, w.bulk)
+        else:
+            ends = w.sym * float(np.sum((-w.k[b] * (op.bP - w.P[b]) / op.bd * op.bs)[ok]))
         return M, ends, total - ends
 
     def state(self, u, X, Y, iterations=0):

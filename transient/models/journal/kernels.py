@@ -35,6 +35,7 @@ from numba import njit
 
 from transient.physics.cavitation import elrod_content, elrod_inverse, sharp_fixed_cells, softplus_pressure
 from transient.fv.reynolds import jacobian_kernel, residual_kernel, scale_rows
+from transient.models.journal.gecim_film import bulk_jacobian, bulk_residual
 
 N_ROTOR = 4  # X, Y, VX, VY appended after the cells
 
@@ -103,17 +104,24 @@ def rotor_accelerations(tau, fx, fy, kappa, wbar, ebar):
 #   geo    = (cosp, sinp, area)                     per cell
 #   fields = (H, P, dP, C, D, dD, k, c, zero, R)    scratch arrays, filled by film_fields
 #   extras = (dk_dq, dc_dq, no_dq, pos_row, pos_col, indices, scale)   the rotor columns and rows
-#   fv     = (faces, boundary, cells, face_k)       the operator's face tuples (fv.reynolds.FACE_TUPLES)
+#   fv     = (faces, boundary, cells, face_k, bulk) the operator's face tuples (fv.reynolds.FACE_TUPLES) and the
+#                                                   Gecim bulk's faces (gecim_film.bulk_tables; empty arrays,
+#                                                   gecim_film.no_bulk, for a Newtonian bulk)
 
 @njit(cache=True)
 def _stencil_residual(u, X, Y, switch, geo, fields, fv, R):
     beta_bar, width, content_scale, layer_gap, darcy = switch
     cosp, sinp, area = geo
     H, P, dP, C, D, dD, k, c, zero, _ = fields
-    faces, boundary, cells, face_k = fv
+    faces, boundary, cells, face_k, bulk = fv
     film_fields(u, X, Y, cosp, sinp, beta_bar, width, content_scale, layer_gap, darcy, H, P, dP, C, D, dD, k, c)
     sharp_fixed_cells(cells[0], cells[1], beta_bar, P, dP, C, D, dD)
+    gecim = bulk[0].shape[0] > 0
+    if gecim:  # the Poiseuille flux is the Gecim bulk's (gecim_film), not k grad P
+        k[:] = 0.0
     residual_kernel(u, P, C, k, k, c, zero, True, faces, boundary, cells, face_k, R)
+    if gecim:
+        bulk_residual(P, H, cells[0], bulk, R)
 
 
 @njit(cache=True)
@@ -122,13 +130,19 @@ def _stencil_jacobian(u, X, Y, switch, geo, fields, extras, fv, data):
     cosp, sinp, area = geo
     H, P, dP, C, D, dD, k, c, zero, _ = fields
     dk_dq, dc_dq, no_dq, pos_row, pos_col, indices, scale = extras
-    faces, boundary, cells, face_k = fv
+    faces, boundary, cells, face_k, bulk = fv
     film_fields(u, X, Y, cosp, sinp, beta_bar, width, content_scale, layer_gap, darcy, H, P, dP, C, D, dD, k, c)
     sharp_fixed_cells(cells[0], cells[1], beta_bar, P, dP, C, D, dD)
     if dk_dq.shape[0] > 0:
         position_derivatives(H, cosp, sinp, layer_gap, darcy, dk_dq, dc_dq)
+    gecim = bulk[0].shape[0] > 0
+    if gecim:
+        k[:] = 0.0
+        dk_dq[:] = 0.0
     jacobian_kernel(P, dP, C, D, k, zero, k, zero, c, zero, dk_dq, dk_dq, dc_dq, no_dq, True,
                     faces, boundary, cells, face_k, pos_col, data)
+    if gecim:
+        bulk_jacobian(P, dP, H, cosp, sinp, cells[0], bulk, pos_col, dk_dq.shape[0], data)
 
 
 @njit(cache=True)

@@ -29,6 +29,11 @@ damping). Moving the rupture boundary adds nothing to first order because ``p = 
 The kernels are those of :mod:`transient.fv.reynolds` (numba) with ``P = u``, ``C = 1``,
 ``k = H^3 / 2`` (boundary layers: :func:`~transient.models.journal.kernels.conductances`), ``c = H / 2``;
 the Jacobian (cells and the four journal columns) is analytic and sparse.
+
+**Shear-thinning bulk** (``JournalBearing(rheology=Gecim(...))``, seed 004): the Poiseuille flux is the layered
+Gecim law at every face (:mod:`transient.models.journal.gecim_film`), so ``G`` is no longer affine in ``P``;
+the same active-set iteration then is a semismooth Newton method on ``min(P_i, G_i(P) / J_ii(P)) = 0`` with
+``G`` and ``J = dG/dP`` re-evaluated at every iterate (no finite termination; it stops on the residual).
 """
 
 from __future__ import annotations
@@ -39,6 +44,7 @@ import scipy.sparse.linalg as spla
 
 from transient.fv.reynolds import ReynoldsOperator, jacobian_kernel, residual_kernel
 from transient.models.journal.film import film_state
+from transient.models.journal.gecim_film import bulk_jacobian, bulk_residual, bulk_tables
 from transient.models.journal.kernels import N_ROTOR, conductances, film_force, position_derivatives
 
 
@@ -63,7 +69,8 @@ class ReynoldsFilm:
         self.force_scale = self.p0 * b.radius ** 2
         self.u_supply = (b.supply_pressure - b.cavitation_pressure) / self.p0
         u_amb = (b.ambient_pressure - b.cavitation_pressure) / self.p0
-        self.op = op = ReynoldsOperator(b.grid, n_extra=n_extra, upwind=False, boundary_P=u_amb, boundary_C=1.0)
+        self.op = op = ReynoldsOperator(b.grid, n_extra=n_extra, upwind=False, boundary_P=u_amb, boundary_C=1.0,
+                                        diagonals=b.shear_thinning)
         op.u_fixed[~op.free] = self.u_supply
         self.n = n = op.n_cells
         self.free = op.free
@@ -80,6 +87,7 @@ class ReynoldsFilm:
         self.no_dq = np.zeros((ne, n))
         self.fv = op.face_tuples + (op.no_face_k,)
         self.layers = b.layer_groups()
+        self.bulk = bulk_tables(op, b, speed_rpm) if b.shear_thinning else None
 
     # fields, residual and Jacobian --------------------------------------------------------------
     def _fields(self, X, Y):
@@ -89,6 +97,9 @@ class ReynoldsFilm:
         conductances(X, Y, self.cosp, self.sinp, gap, darcy, self.H, self.k, self.c)
         if self.op.n_extra >= 2:
             position_derivatives(self.H, self.cosp, self.sinp, gap, darcy, self.dk_dq, self.dc_dq)
+        if self.bulk is not None:  # the Poiseuille flux is the Gecim bulk's (gecim_film)
+            self.k[:] = 0.0
+            self.dk_dq[:] = 0.0
 
     def residual(self, u, X, Y, VX=0.0, VY=0.0, out=None):
         """``G(P)`` of the module docstring (free cells; ``P - P_supply`` on the groove cells)."""
@@ -96,13 +107,15 @@ class ReynoldsFilm:
         u = np.ascontiguousarray(u, dtype=float)
         self._fields(X, Y)
         residual_kernel(u, u, self.ones, self.k, self.k, self.c, self.zero, False, *self.fv, out)
+        if self.bulk is not None:
+            bulk_residual(u, self.H, self.free, self.bulk, out)
         out += np.where(self.free, self.area * (VX * self.cosp + VY * self.sinp), 0.0)
         return out
 
     def jacobian_data(self, u, X, Y, VX=0.0, VY=0.0, data=None):
         """CSC data (operator pattern order) of ``dG/dP`` and, with 4 extra unknowns, of the journal
         columns ``dG/dX, dG/dY`` (through ``k`` and ``c``) and ``dG/dVX, dG/dVY = A (cos, sin)``.
-        ``G`` is affine in ``P``: the matrix does not depend on ``u`` (kept for the Film interface)."""
+        ``G`` is affine in ``P`` for a Newtonian bulk (the matrix does not depend on ``u``), not for a Gecim bulk."""
         op = self.op
         data = np.empty(op.nnz) if data is None else data
         u = np.ascontiguousarray(u, dtype=float)
@@ -110,6 +123,9 @@ class ReynoldsFilm:
         jacobian_kernel(u, self.ones, self.ones, self.zero, self.k, self.zero, self.k, self.zero, self.c,
                         self.zero, self.dk_dq, self.dk_dq, self.dc_dq, self.no_dq, False, *self.fv,
                         op.pos_col_extra, data)
+        if self.bulk is not None:
+            bulk_jacobian(u, self.ones, self.H, self.cosp, self.sinp, self.free, self.bulk, op.pos_col_extra,
+                          op.n_extra, data)
         if op.n_extra >= 4:
             f = self.free
             pc = op.pos_col_extra[:self.n]
@@ -117,15 +133,15 @@ class ReynoldsFilm:
             data[pc[f, 3]] = (self.area * self.sinp)[f]
         return data
 
-    def matrix(self, X, Y):
-        """``dG/dP`` as a CSC matrix (cells only)."""
-        return self.op.matrix(self.jacobian_data(self.zero, X, Y))[:self.n, :self.n].tocsc()
+    def matrix(self, X, Y, u=None):
+        """``dG/dP`` at ``u`` (default 0; only a Gecim bulk depends on it) as a CSC matrix (cells only)."""
+        return self.op.matrix(self.jacobian_data(self.zero if u is None else u, X, Y))[:self.n, :self.n].tocsc()
 
     # the complementarity solve -----------------------------------------------------------------
     def complementarity(self, u, X, Y, VX=0.0, VY=0.0):
         """``min(P_i, G_i / J_ii)`` on the free cells, ``P - P_supply`` on the groove cells: zero exactly at
         the solution of the complementarity problem."""
-        J = self.matrix(X, Y)
+        J = self.matrix(X, Y, u)
         g = self.residual(u, X, Y, VX, VY)
         return np.where(self.free, np.minimum(u, g / J.diagonal()), g)
 
@@ -133,23 +149,27 @@ class ReynoldsFilm:
         """Pressure of the complementarity problem for a prescribed journal state; returns (P, iterations).
 
         Primal-dual active set: the cells with ``P_i <= G_i / J_ii`` are held at ``P = 0``, the others
-        solve ``G = 0``; repeat until the set does not change (finite for the M-matrix ``J``). The start
-        is ``u0`` if given, else the full (Sommerfeld) film with negative pressures kept. Converged when
-        the active set is unchanged and ``max |min(P, G/J_ii)| <= tol max(1, |P|)``.
+        solve ``G = 0`` (one Newton step on them); repeat until the set does not change (finite for the affine
+        ``G`` with the M-matrix ``J`` of a Newtonian bulk; a semismooth Newton iteration for a Gecim bulk). The
+        start is ``u0`` if given, else the full (Sommerfeld) film with negative pressures kept (linearised at
+        ``P = 0`` for a Gecim bulk). Converged when the active set is unchanged and
+        ``max |min(P, G/J_ii)| <= tol max(1, |P|)``.
         """
         n, free = self.n, self.free
+        nonlinear = self.bulk is not None
         J = self.matrix(X, Y).tocsr()
-        d = J.diagonal()
-        g0 = self.residual(self.zero, X, Y, VX, VY)  # G(P) = g0 + J P (affine)
         if u0 is None:
-            u = -spla.splu(J.tocsc()).solve(g0)
+            u = -spla.splu(J.tocsc()).solve(self.residual(self.zero, X, Y, VX, VY))
         else:
             u = np.array(u0, dtype=float)
             u[~free] = self.u_supply
         active_prev = None
         I_n = sp.identity(n, format="csr")
         for it in range(1, max_iter + 1):
-            g = g0 + J @ u
+            if nonlinear:
+                J = self.matrix(X, Y, u).tocsr()
+            g = self.residual(u, X, Y, VX, VY)
+            d = J.diagonal()
             active = free & (u <= g / d)
             phi = np.where(active, u, g)
             scale = max(1.0, float(np.max(np.abs(u))))

@@ -1,0 +1,153 @@
+"""The Poiseuille flux of a shear-thinning (Gecim) bulk in the journal film (seed 004, Jang; issue 13).
+
+In the journal's scales (``p0 = 6 mu_1 omega (R/C)^2``, ``H = h/C``, lengths ``/R``, flux ``/(C omega R)``)
+the flux across a face is the classical film's content-upwinded Couette part plus the pressure part of the
+layered Gecim flow law (:func:`transient.physics.layered.gecim_face_2d`, reference length ``C``, speed
+``omega R``; the journal is the lower wall, moving at 1 along ``phi``, the bearing is at rest)::
+
+    F = theta_up H_f / 2 e_phi . n  +  q_p(H_f, 6 grad P) . n,        H_f = (H_L + H_R) / 2
+
+(``6 grad P`` is the pressure gradient in the law's units, ``mu_1 omega R / C^2``). The law couples the two
+directions through the magnitude of the shear rate, so every face needs the full gradient vector
+(:mod:`transient.fv.face_gradient`: the normal two-point difference and the mean of the two cells'
+transverse gradients) and its Jacobian row has up to six cells (the 9-point pattern). The derivatives are
+the law's exact ``dq_p/dG`` (2 x 2) and ``dq_p/dh``; no lagged viscosity.
+
+In the cavitated zone ``grad P = 0`` and ``q_p = 0``: only the Couette part moves content there, as for the
+Newtonian film (docs/layered.md, section 3), so the film stays mass-conserving.
+
+The face values are computed in parallel (numba ``prange``), the scatter into the residual and the CSC data
+serially.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numba import njit, prange
+
+from transient.fv.face_gradient import WIDTH, face_gradients
+from transient.physics.layered import LayeredFilm, gecim_face_2d
+
+GRAD_SCALE = 6.0  # p0 / R in units of mu_1 omega R / C^2: the law's G = 6 grad P
+
+
+def bulk_tables(op, bearing, speed_rpm):
+    """The kernels' tuple for a Gecim bulk: the face-gradient tables of ``op`` (9-point pattern), the law's
+    dimensionless parameters ``(delta, lam_a, lam_b, kappa, ratio)`` at this speed, the Gauss rule and the
+    per-face scratch arrays ``(q, dq/dG_n, dq/dG_t, dq/dh)``."""
+    from transient.models.journal.film import omega
+    from transient.physics.layered import NO_LAYERS
+
+    law = LayeredFilm(bearing.viscosity, bearing.rheology, bearing.layers or NO_LAYERS)
+    params = np.array(law._parameters(bearing.clearance, omega(speed_rpm) * bearing.radius))
+    xg, wg = law._gauss()
+    tables = face_gradients(op)
+    nf = tables[0].shape[0]
+    return tables + (params, xg, wg, np.zeros((nf, 4)))
+
+
+def no_bulk():
+    """The empty tuple of the same types (Newtonian bulk: the kernels skip the Gecim flux)."""
+    i1, i2, i3 = np.zeros(0, np.int64), np.zeros((0, 2), np.int64), np.zeros((0, 2, WIDTH), np.int64)
+    f1, f2, f6 = np.zeros(0), np.zeros((0, 2)), np.zeros((0, WIDTH))
+    return (i2, i1, f1, np.zeros((0, WIDTH), np.int64), f6, f6.copy(), f2, i3, np.zeros(5), f1, f1.copy(),
+            np.zeros((0, 4)))
+
+
+@njit(cache=True, parallel=True)
+def face_values(P, H, bulk):
+    """Fill ``bulk``'s scratch with ``(q_p . n, dq/dG_n, dq/dG_t, dq/dh)`` of every face (journal units)."""
+    cells, dirn, length, cols, an, at, const, pos, params, xg, wg, out = bulk
+    delta, lam_a, lam_b, kappa, ratio = params[0], params[1], params[2], params[3], params[4]
+    for f in prange(cells.shape[0]):
+        gn = const[f, 0]
+        gt = const[f, 1]
+        for m in range(WIDTH):
+            c = cols[f, m]
+            if c >= 0:
+                gn += an[f, m] * P[c]
+                gt += at[f, m] * P[c]
+        L = cells[f, 0]
+        R = cells[f, 1]
+        h = 0.5 * (H[L] + H[R]) if (L >= 0 and R >= 0) else H[L if L >= 0 else R]
+        if dirn[f] == 0:
+            o = gecim_face_2d(h, GRAD_SCALE * gn, GRAD_SCALE * gt, 1.0, 0.0, 0.0, 0.0, delta, lam_a, lam_b,
+                              kappa, ratio, xg, wg)
+            out[f, 0], out[f, 1], out[f, 2], out[f, 3] = o[0], GRAD_SCALE * o[2], GRAD_SCALE * o[3], o[6]
+        else:
+            o = gecim_face_2d(h, GRAD_SCALE * gt, GRAD_SCALE * gn, 1.0, 0.0, 0.0, 0.0, delta, lam_a, lam_b,
+                              kappa, ratio, xg, wg)
+            out[f, 0], out[f, 1], out[f, 2], out[f, 3] = o[1], GRAD_SCALE * o[5], GRAD_SCALE * o[4], o[7]
+
+
+@njit(cache=True)
+def bulk_residual(P, H, free, bulk, R):
+    """Add the Gecim pressure flux of every face to the net outflow ``R`` of its free cells."""
+    cells, length, out = bulk[0], bulk[2], bulk[11]
+    face_values(P, H, bulk)
+    for f in range(cells.shape[0]):
+        q = out[f, 0] * length[f]
+        L = cells[f, 0]
+        R_ = cells[f, 1]
+        if L >= 0 and free[L]:
+            R[L] += q
+        if R_ >= 0 and free[R_]:
+            R[R_] -= q
+
+
+@njit(cache=True)
+def bulk_jacobian(P, dP, H, cosp, sinp, free, bulk, pos_col, n_extra, data):
+    """Add the Gecim flux's derivatives to the CSC ``data``: ``dR/du`` over the face's gradient cells (``dP``
+    = dP/du per cell) and, with ``n_extra >= 2``, ``dR/dX, dR/dY`` through ``H_f`` (``pos_col`` the positions
+    of the extra columns)."""
+    cells, dirn, length, cols, an, at, const, pos, params, xg, wg, out = bulk
+    face_values(P, H, bulk)
+    for f in range(cells.shape[0]):
+        s = length[f]
+        dn = out[f, 1] * s
+        dt = out[f, 2] * s
+        L = cells[f, 0]
+        R_ = cells[f, 1]
+        okL = L >= 0 and free[L]
+        okR = R_ >= 0 and free[R_]
+        for m in range(WIDTH):
+            c = cols[f, m]
+            if c < 0:
+                continue
+            d = (dn * an[f, m] + dt * at[f, m]) * dP[c]
+            if okL:
+                data[pos[f, 0, m]] += d
+            if okR:
+                data[pos[f, 1, m]] -= d
+        if n_extra >= 2:
+            if L >= 0 and R_ >= 0:
+                hx = 0.5 * (cosp[L] + cosp[R_])
+                hy = 0.5 * (sinp[L] + sinp[R_])
+            else:
+                i = L if L >= 0 else R_
+                hx = cosp[i]
+                hy = sinp[i]
+            dh = out[f, 3] * s
+            if okL:
+                data[pos_col[L, 0]] += dh * hx
+                data[pos_col[L, 1]] += dh * hy
+            if okR:
+                data[pos_col[R_, 0]] -= dh * hx
+                data[pos_col[R_, 1]] -= dh * hy
+
+
+@njit(cache=True)
+def bulk_end_flow(P, H, free, n_interior, bulk):
+    """Net outflow through the Dirichlet faces (``bulk`` lists them after the ``n_interior`` interior faces)
+    of the Gecim pressure flux, from the free cells."""
+    cells, length, out = bulk[0], bulk[2], bulk[11]
+    face_values(P, H, bulk)
+    total = 0.0
+    for f in range(n_interior, cells.shape[0]):
+        L = cells[f, 0]
+        R_ = cells[f, 1]
+        if L >= 0 and free[L]:
+            total += out[f, 0] * length[f]
+        elif R_ >= 0 and free[R_]:
+            total -= out[f, 0] * length[f]
+    return total
