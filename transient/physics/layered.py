@@ -405,6 +405,30 @@ def gecim_flow_2d(h, G, U1, U2, delta, lam_a, lam_b, kappa, ratio, xg, wg, qp, d
         tau0[i, 0], tau0[i, 1] = o[8], o[9]
 
 
+@njit(cache=True)
+def gecim_velocity_2d(z, h, Gx, Gy, U1x, U1y, U2x, U2y, delta, lam_a, lam_b, kappa, ratio, xg, wg, u):
+    """Velocity vector ``u(z)`` (rows of ``u``, shape (n, 2)) across one film of the 2-D law: Darcy plugs in the
+    layers, ``u_a + int_0^zeta gdot`` in the bulk (the sums of :func:`_moments_2d` up to ``zeta``)."""
+    uax, uay = U1x - lam_a * Gx, U1y - lam_a * Gy
+    ubx, uby = U2x - lam_b * Gx, U2y - lam_b * Gy
+    H = h - 2.0 * delta
+    acc = np.empty(16)
+    tx = ty = 0.0
+    if H > 0.0:
+        tx, ty = _solve_tau0_2d(ubx - uax, uby - uay, Gx, Gy, H, kappa, ratio, xg, wg, acc)
+    for i in range(z.size):
+        if H <= 0.0:
+            lower = z[i] < 0.5 * h
+            u[i, 0], u[i, 1] = (uax, uay) if lower else (ubx, uby)
+        elif z[i] <= delta:
+            u[i, 0], u[i, 1] = uax, uay
+        elif z[i] >= h - delta:
+            u[i, 0], u[i, 1] = ubx, uby
+        else:
+            _moments_2d(tx, ty, Gx, Gy, z[i] - delta, kappa, ratio, xg, wg, acc)
+            u[i, 0], u[i, 1] = uax + acc[0], uay + acc[1]
+
+
 # --------------------------------------------------------------------------------------------------
 # rheology and layers (SI)
 # --------------------------------------------------------------------------------------------------
@@ -607,6 +631,36 @@ class LayeredFilm:
         t1 = t0 + Gs * (hs - 2.0 * delta)
         st = self.viscosity * V / L
         return ShearStresses(*((v * st).reshape(shape) for v in (t0 - Gs * delta, t0, t1, t1 + Gs * delta)))
+
+    def stresses_2d(self, h, G, U1, U2):
+        """:class:`ShearStresses` of a 2-D film [Pa]: each entry of shape ``S + (2,)`` (the stress vector), for
+        ``h`` [m] of shape ``S`` and ``G`` [Pa/m], ``U1, U2`` [m/s] of shape ``S + (2,)``."""
+        G, U1, U2 = (np.asarray(v, dtype=float) for v in (G, U1, U2))
+        h = np.asarray(h, dtype=float)
+        hv, G, U1, U2 = np.broadcast_arrays(h[..., None], G, U1, U2)
+        shape = hv.shape[:-1]
+        G, U1, U2 = (np.ascontiguousarray(v).reshape(-1, 2) for v in (G, U1, U2))
+        hs, Gs, U1s, U2s, L, V = self._scaled(np.ascontiguousarray(hv[..., 0]).ravel(), G, U1, U2, None)
+        delta, lam_a, lam_b, kappa, ratio = self._parameters(L, V)
+        qp, dh, t0 = np.empty_like(Gs), np.empty_like(Gs), np.empty_like(Gs)
+        gecim_flow_2d(hs, Gs, U1s, U2s, delta, lam_a, lam_b, kappa, ratio, *self._gauss(), qp,
+                      np.empty((hs.size, 2, 2)), dh, t0)
+        t1 = t0 + Gs * (hs - 2.0 * delta)[:, None]
+        st = self.viscosity * V / L
+        return ShearStresses(*((v * st).reshape(shape + (2,)) for v in (t0 - Gs * delta, t0, t1, t1 + Gs * delta)))
+
+    def velocity_2d(self, h, G, U1, U2, z):
+        """Velocity vectors [m/s], shape ``(len(z), 2)``, at heights ``z`` [m] across one 2-D film (``h`` scalar,
+        ``G, U1, U2`` 2-vectors)."""
+        h = float(h)
+        G, U1, U2 = (np.asarray(v, dtype=float).reshape(1, 2) for v in (G, U1, U2))
+        hs, Gs, U1s, U2s, L, V = self._scaled(np.array([h]), G, U1, U2, None)
+        delta, lam_a, lam_b, kappa, ratio = self._parameters(L, V)
+        zs = np.asarray(z, dtype=float).ravel()
+        u = np.empty((zs.size, 2))
+        gecim_velocity_2d(zs / L, hs[0], Gs[0, 0], Gs[0, 1], U1s[0, 0], U1s[0, 1], U2s[0, 0], U2s[0, 1], delta,
+                          lam_a, lam_b, kappa, ratio, *self._gauss(), u)
+        return u * V
 
     def velocity(self, h, G, U1, U2, z):
         """Velocity [m/s] at heights ``z`` [m] (``0 <= z <= h``) across one film (scalars ``h, G, U1, U2``)."""

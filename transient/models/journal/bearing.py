@@ -102,9 +102,11 @@ class FilmState(Result):
     friction_force: float = quantity("N", float("nan"))
     film_thickness: np.ndarray = quantity("m", None, repr=False)
     pressure_gradient: np.ndarray = quantity("Pa/m", None, repr=False)
+    axial_pressure_gradient: np.ndarray = quantity("Pa/m", None, repr=False)
     viscosity: float = quantity("Pa s", float("nan"))
     sliding_speed: float = quantity("m/s", float("nan"))
     layers: tuple | None = None  # (delta [m], mu_a [Pa s], mu_b [Pa s], alpha [m]) or None
+    gecim: tuple | None = None  # the shear-thinning bulk (kappa [Pa], mu_2/mu_1) or None (Newtonian)
     success: bool = True
     message: str = "converged"
 
@@ -116,7 +118,8 @@ class FilmState(Result):
         """Circumferential velocity across the film at the cell nearest ``angle_deg`` in axial row
         ``axial_index`` (0: next to the mid-plane): (heights z [m] from the journal surface, velocity [m/s]),
         from the film's flow law (seed 004: the journal moves at ``sliding_speed``, the bearing is at rest;
-        boundary layers, if any, move with their walls plus their Darcy slip)."""
+        boundary layers, if any, move with their walls plus their Darcy slip; a Gecim bulk through the 2-D law
+        at the cell's circumferential and axial pressure gradients)."""
         ang = check_range("angle_deg", angle_deg, "deg", -360.0, 720.0)
         row = check_int("axial_index", axial_index, "-", 0, self.pressure.shape[0] - 1)
         n = check_int("points", points, "-", 2, 100000)
@@ -125,7 +128,11 @@ class FilmState(Result):
         ly = NO_LAYERS if self.layers is None else BoundaryLayers(self.layers[0], (self.layers[1], self.layers[2]),
                                                                   self.layers[3])
         z = np.linspace(0.0, h, n)
-        return z, LayeredFilm(self.viscosity, Newtonian(), ly).velocity(h, G, self.sliding_speed, 0.0, z)
+        if self.gecim is None:
+            return z, LayeredFilm(self.viscosity, Newtonian(), ly).velocity(h, G, self.sliding_speed, 0.0, z)
+        law = LayeredFilm(self.viscosity, Gecim(*self.gecim), ly)
+        Gz = float(self.axial_pressure_gradient[row, col])
+        return z, law.velocity_2d(h, (G, Gz), (self.sliding_speed, 0.0), (0.0, 0.0), z)[:, 0]
 
 
 class JournalBearing:

@@ -200,39 +200,54 @@ def film_state(film, u, X, Y, F, P, content, iterations=0):
     grid = b.grid
     pressure = grid.to_2d(b.cavitation_pressure + film.p0 * np.asarray(P)).copy()
     theta = grid.to_2d(np.asarray(content, dtype=float)).copy()
-    h, G = film_geometry(film, X, Y, pressure)
+    h, G, Gz = film_geometry(film, X, Y, pressure)
     ly = b.layers
+    rh = b.rheology
     return FilmState(
         eccentricity_ratio=eps, attitude_angle_deg=float(att), position=(X * b.clearance, Y * b.clearance),
         force=(Fx, Fy), load=float(np.hypot(Fx, Fy)), min_film=b.clearance * (1.0 - eps),
         speed_rpm=film.speed_rpm, pressure=pressure, film_content=theta, angle_deg=np.degrees(grid.x.centres),
         z=grid.z.centres * b.radius, u=np.array(u, dtype=float), newton_iterations=iterations,
-        friction_force=journal_friction(film, h, G, theta), film_thickness=h, pressure_gradient=G,
-        viscosity=b.viscosity, sliding_speed=omega(film.speed_rpm) * b.radius,
-        layers=None if ly is None else (ly.thickness, ly.viscosity[0], ly.viscosity[1], ly.alpha))
+        friction_force=journal_friction(film, h, G, Gz, theta), film_thickness=h, pressure_gradient=G,
+        axial_pressure_gradient=Gz, viscosity=b.viscosity, sliding_speed=omega(film.speed_rpm) * b.radius,
+        layers=None if ly is None else (ly.thickness, ly.viscosity[0], ly.viscosity[1], ly.alpha),
+        gecim=(rh.kappa, rh.viscosity_ratio) if b.shear_thinning else None)
 
 
 def film_geometry(film, X, Y, pressure):
-    """Film thickness ``h`` [m] and circumferential pressure gradient ``dp/ds`` [Pa/m] (central, periodic;
-    ``s = R phi`` along the rotation) per cell, as (n_axial, n_theta) arrays."""
+    """Film thickness ``h`` [m], circumferential pressure gradient ``dp/ds`` (``s = R phi`` along the rotation) and
+    axial gradient ``dp/dz`` [Pa/m] per cell, as (n_axial, n_theta) arrays: central differences (periodic around;
+    axially the face values are the neighbours' means, the ambient pressure at an end and the cell's own value at
+    the symmetry plane)."""
     b = film.bearing
     grid = b.grid
     h = b.clearance * grid.to_2d(1.0 + X * film.cosp + Y * film.sinp)
     dphi = np.gradient(np.unwrap(grid.x.centres))
     G = (np.roll(pressure, -1, axis=1) - np.roll(pressure, 1, axis=1)) / (b.radius * (np.roll(dphi, -1) + dphi))
-    return h, G
+    faces = 0.5 * (pressure[1:] + pressure[:-1])
+    end = np.full((1, pressure.shape[1]), b.ambient_pressure)
+    lower = pressure[:1] if b.symmetric else end
+    faces = np.vstack([lower, faces, end])
+    Gz = (faces[1:] - faces[:-1]) / (b.radius * grid.z.widths[:, None])
+    return h, G, Gz
 
 
-def journal_friction(film, h, G, theta) -> float:
+def journal_friction(film, h, G, Gz, theta) -> float:
     """Friction force [N] on the journal: ``-sum tau_wall min(theta, 1) dA`` over the bearing, with the wall shear
-    stress of the film's flow law (seed 004's layered film; ``mu U / h - (h/2) dp/ds`` without layers) at each
-    cell's film ``h`` and pressure gradient ``G`` (:func:`film_geometry`) and the journal speed ``U = omega R``;
-    a cavitated cell shears only its content fraction theta (Elrod's striated film)."""
-    from transient.physics.layered import NO_LAYERS, LayeredFilm, Newtonian
+    stress of the film's flow law (seed 004's layered film; ``mu U / h - (h/2) dp/ds`` for a Newtonian bulk without
+    layers) at each cell's film ``h`` and pressure gradients ``G = dp/ds``, ``Gz = dp/dz`` (:func:`film_geometry`)
+    and the journal speed ``U = omega R``; a cavitated cell shears only its content fraction theta (Elrod's
+    striated film). A Gecim bulk couples the directions: its circumferential wall stress is that of the 2-D law
+    at ``(G, Gz)``; the Newtonian law is linear and uses ``G`` alone."""
+    from transient.physics.layered import NO_LAYERS, LayeredFilm
 
     b = film.bearing
-    law = LayeredFilm(b.viscosity, Newtonian(), b.layers or NO_LAYERS)
-    tau = law.stresses(h, G, omega(film.speed_rpm) * b.radius, 0.0).lower_wall
+    law = LayeredFilm(b.viscosity, b.rheology, b.layers or NO_LAYERS)
+    U = omega(film.speed_rpm) * b.radius
+    if b.shear_thinning:
+        tau = law.stresses_2d(h, np.stack([G, Gz], axis=-1), (U, 0.0), (0.0, 0.0)).lower_wall[..., 0]
+    else:
+        tau = law.stresses(h, G, U, 0.0).lower_wall
     area = b.grid.to_2d(film.area) * b.radius ** 2
     sym = 2.0 if b.symmetric else 1.0
     return float(-sym * np.sum(tau * np.minimum(theta, 1.0) * area))
