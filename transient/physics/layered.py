@@ -257,10 +257,10 @@ def _rate_2d(tx, ty, kappa, r):
 
 
 @njit(cache=True)
-def _panel_2d(a, b, zs, sgn, t0x, t0y, Gx, Gy, H, kappa, r, xg, wg, acc):
+def _panel_2d(a, b, zs, sgn, t0x, t0y, Gx, Gy, H, kappa, r, xg, wg, acc, full):
     """Add the Gauss sums over ``zeta = zs + sgn d``, ``a <= d <= b``, to ``acc``: int gdot (0, 1), int J
-    (2-4: xx, xy, yy), int zeta J (5-7), int (H/2 - zeta) gdot (8, 9), int (H/2 - zeta) J (10-12),
-    int (H/2 - zeta) zeta J (13-15)."""
+    (2-4: xx, xy, yy) and, if ``full``, int zeta J (5-7), int (H/2 - zeta) gdot (8, 9), int (H/2 - zeta) J
+    (10-12), int (H/2 - zeta) zeta J (13-15) (the continuity Newton needs only the first five)."""
     half = 0.5 * (b - a)
     mid = 0.5 * (a + b)
     for j in range(xg.size):
@@ -276,6 +276,8 @@ def _panel_2d(a, b, zs, sgn, t0x, t0y, Gx, Gy, H, kappa, r, xg, wg, acc):
         acc[2] += w * jxx
         acc[3] += w * jxy
         acc[4] += w * jyy
+        if not full:
+            continue
         acc[5] += wz * jxx
         acc[6] += wz * jxy
         acc[7] += wz * jyy
@@ -290,7 +292,7 @@ def _panel_2d(a, b, zs, sgn, t0x, t0y, Gx, Gy, H, kappa, r, xg, wg, acc):
 
 
 @njit(cache=True)
-def _side_2d(a, b, zs, sgn, mmin, Gn, d0, t0x, t0y, Gx, Gy, H, kappa, r, xg, wg, acc):
+def _side_2d(a, b, zs, sgn, mmin, Gn, d0, t0x, t0y, Gx, Gy, H, kappa, r, xg, wg, acc, full):
     """Panels over ``a <= d <= b`` on one side of the point ``zs`` of least ``|tau|``: they end where
     ``|tau| = kappa 2^k`` and, if ``d0 > 0``, are no longer than ``max(d, d0)`` (the branch points of
     ``|tau|`` lie at ``d = +-i d0``, ``d0 = |tau|_min / |G|``)."""
@@ -303,12 +305,12 @@ def _side_2d(a, b, zs, sgn, mmin, Gn, d0, t0x, t0y, Gx, Gy, H, kappa, r, xg, wg,
         if nxt >= dk:
             tk = mk / kappa
         nxt = min(nxt, b)
-        _panel_2d(cur, nxt, zs, sgn, t0x, t0y, Gx, Gy, H, kappa, r, xg, wg, acc)
+        _panel_2d(cur, nxt, zs, sgn, t0x, t0y, Gx, Gy, H, kappa, r, xg, wg, acc, full)
         cur = nxt
 
 
 @njit(cache=True)
-def _moments_2d(t0x, t0y, Gx, Gy, H, kappa, r, xg, wg, acc):
+def _moments_2d(t0x, t0y, Gx, Gy, H, kappa, r, xg, wg, acc, full=True):
     """The sums of :func:`_panel_2d` over the bulk ``0 <= zeta <= H`` (overwrites ``acc``)."""
     acc[:] = 0.0
     g2 = Gx * Gx + Gy * Gy
@@ -317,52 +319,62 @@ def _moments_2d(t0x, t0y, Gx, Gy, H, kappa, r, xg, wg, acc):
     if Gn * H <= 1e-3 * math.hypot(t0x, t0y) or not math.isfinite(t0x + t0y + Gx + Gy):
         # |tau| varies by at most 1e-3 of itself: no kink, singularities far away, one panel is exact to
         # rounding (and the panel ends measured from a far-away zs would cancel); NaN/inf input: one panel
-        _panel_2d(0.0, H, 0.0, 1.0, t0x, t0y, Gx, Gy, H, kappa, r, xg, wg, acc)
+        _panel_2d(0.0, H, 0.0, 1.0, t0x, t0y, Gx, Gy, H, kappa, r, xg, wg, acc, full)
         return
     mmin = abs(t0x * Gy - t0y * Gx) / Gn
     d0 = mmin / Gn if mmin >= 1e-9 * Gn * H else 0.0  # below: a kink to 1e-17 relative
     if zs <= 0.0:
-        _side_2d(-zs, H - zs, zs, 1.0, mmin, Gn, d0, t0x, t0y, Gx, Gy, H, kappa, r, xg, wg, acc)
+        _side_2d(-zs, H - zs, zs, 1.0, mmin, Gn, d0, t0x, t0y, Gx, Gy, H, kappa, r, xg, wg, acc, full)
     elif zs >= H:
-        _side_2d(zs - H, zs, zs, -1.0, mmin, Gn, d0, t0x, t0y, Gx, Gy, H, kappa, r, xg, wg, acc)
+        _side_2d(zs - H, zs, zs, -1.0, mmin, Gn, d0, t0x, t0y, Gx, Gy, H, kappa, r, xg, wg, acc, full)
     else:
-        _side_2d(0.0, zs, zs, -1.0, mmin, Gn, d0, t0x, t0y, Gx, Gy, H, kappa, r, xg, wg, acc)
-        _side_2d(0.0, H - zs, zs, 1.0, mmin, Gn, d0, t0x, t0y, Gx, Gy, H, kappa, r, xg, wg, acc)
+        _side_2d(0.0, zs, zs, -1.0, mmin, Gn, d0, t0x, t0y, Gx, Gy, H, kappa, r, xg, wg, acc, full)
+        _side_2d(0.0, H - zs, zs, 1.0, mmin, Gn, d0, t0x, t0y, Gx, Gy, H, kappa, r, xg, wg, acc, full)
 
 
 @njit(cache=True)
-def _solve_tau0_2d(dux, duy, Gx, Gy, H, kappa, r, xg, wg, acc):
-    """Bulk stress vector at ``zeta = 0`` with ``int_0^H gdot = du``: Newton from the Newtonian solution
-    (NaN if 50 iterations do not converge); leaves the moments at the solution in ``acc`` (the flow moments
-    8, 9 corrected to the last step)."""
+def _newton_tau0_2d(dux, duy, Gx, Gy, H, kappa, r, xg, wg, acc, tx, ty, max_iter):
+    """Newton on velocity continuity from ``(tx, ty)`` with the five sums it needs; the root, or NaN."""
     scale = math.hypot(dux, duy) / H + math.hypot(Gx, Gy) * H
-    tx = dux / H - 0.5 * Gx * H
-    ty = duy / H - 0.5 * Gy * H
     last = math.inf
-    for _ in range(50):
-        _moments_2d(tx, ty, Gx, Gy, H, kappa, r, xg, wg, acc)
+    for _ in range(max_iter):
+        _moments_2d(tx, ty, Gx, Gy, H, kappa, r, xg, wg, acc, False)
         fx = acc[0] - dux
         fy = acc[1] - duy
         det = acc[2] * acc[4] - acc[3] * acc[3]
         sx = (acc[4] * fx - acc[3] * fy) / det
         sy = (acc[2] * fy - acc[3] * fx) / det
-        step = math.hypot(sx, sy)
-        if _converged(step, last, scale):
-            # take the last (rounding-level) step and carry the flow moments along to first order, so the
-            # flow has no jump where the iteration count changes (only the derivative sums stay one step away)
-            acc[8] -= acc[10] * sx + acc[11] * sy
-            acc[9] -= acc[11] * sx + acc[12] * sy
-            return tx - sx, ty - sy
         tx -= sx
         ty -= sy
+        step = math.hypot(sx, sy)
+        if _converged(step, last, scale):
+            return tx, ty
         last = step
     return math.nan, math.nan
 
 
 @njit(cache=True)
-def gecim_face_2d(h, Gx, Gy, U1x, U1y, U2x, U2y, delta, lam_a, lam_b, kappa, ratio, xg, wg):
+def _solve_tau0_2d(dux, duy, Gx, Gy, H, kappa, r, xg, wg, acc, sx0=math.nan, sy0=math.nan):
+    """Bulk stress vector at ``zeta = 0`` with ``int_0^H gdot = du``: Newton from ``(sx0, sy0)`` if given (a warm
+    start, at most 12 iterations), else -- or if that fails -- from the Newtonian solution (50 iterations; NaN
+    if they do not converge); leaves all sixteen sums at the root in ``acc``."""
+    tx = ty = math.nan
+    if math.isfinite(sx0) and math.isfinite(sy0):
+        tx, ty = _newton_tau0_2d(dux, duy, Gx, Gy, H, kappa, r, xg, wg, acc, sx0, sy0, 12)
+    if not math.isfinite(tx):
+        tx, ty = _newton_tau0_2d(dux, duy, Gx, Gy, H, kappa, r, xg, wg, acc, dux / H - 0.5 * Gx * H,
+                                 duy / H - 0.5 * Gy * H, 50)
+    if math.isfinite(tx):
+        _moments_2d(tx, ty, Gx, Gy, H, kappa, r, xg, wg, acc, True)
+    return tx, ty
+
+
+@njit(cache=True)
+def gecim_face_2d(h, Gx, Gy, U1x, U1y, U2x, U2y, delta, lam_a, lam_b, kappa, ratio, xg, wg, t0x=math.nan,
+                  t0y=math.nan):
     """One point of a 2-D film: ``(qx, qy, dqx/dGx, dqx/dGy, dqy/dGx, dqy/dGy, dqx/dh, dqy/dh, tau0x, tau0y)``
-    of the pressure part ``q_p`` (dimensionless as :func:`gecim_face`; ``tau_0`` NaN if ``h <= 2 delta``)."""
+    of the pressure part ``q_p`` (dimensionless as :func:`gecim_face`; ``tau_0`` NaN if ``h <= 2 delta``).
+    ``(t0x, t0y)``: a start for ``tau_0`` (e.g. the same face's at the previous state), else the Newtonian one."""
     A = lam_a + lam_b
     H = h - 2.0 * delta
     if H <= 0.0:
@@ -372,7 +384,7 @@ def gecim_face_2d(h, Gx, Gy, U1x, U1y, U2x, U2y, delta, lam_a, lam_b, kappa, rat
     dux = (U2x - U1x) - dl * Gx
     duy = (U2y - U1y) - dl * Gy
     acc = np.empty(16)
-    tx, ty = _solve_tau0_2d(dux, duy, Gx, Gy, H, kappa, ratio, xg, wg, acc)
+    tx, ty = _solve_tau0_2d(dux, duy, Gx, Gy, H, kappa, ratio, xg, wg, acc, t0x, t0y)
     if math.isnan(tx):
         n = math.nan
         return n, n, n, n, n, n, n, n, n, n

@@ -33,8 +33,9 @@ GRAD_SCALE = 6.0  # p0 / R in units of mu_1 omega R / C^2: the law's G = 6 grad 
 
 def bulk_tables(op, bearing, speed_rpm):
     """The kernels' tuple for a Gecim bulk: the face-gradient tables of ``op`` (9-point pattern), the law's
-    dimensionless parameters ``(delta, lam_a, lam_b, kappa, ratio)`` at this speed, the Gauss rule and the
-    per-face scratch arrays ``(q, dq/dG_n, dq/dG_t, dq/dh)``."""
+    dimensionless parameters ``(delta, lam_a, lam_b, kappa, ratio)`` at this speed, the Gauss rule, the
+    per-face scratch ``(q, dq/dG_n, dq/dG_t, dq/dh, tau_0)`` (``tau_0``: the warm start of the next evaluation)
+    and the cell pressure and film of the last evaluation (:func:`face_values` skips a repeat)."""
     from transient.models.journal.film import omega
     from transient.physics.layered import NO_LAYERS
 
@@ -42,8 +43,10 @@ def bulk_tables(op, bearing, speed_rpm):
     params = np.array(law._parameters(bearing.clearance, omega(speed_rpm) * bearing.radius))
     xg, wg = law._gauss()
     tables = face_gradients(op)
-    nf = tables[0].shape[0]
-    return tables + (params, xg, wg, np.zeros((nf, 4)))
+    nf, n = tables[0].shape[0], op.n_cells
+    out = np.zeros((nf, 6))
+    out[:, 4:] = np.nan
+    return tables + (params, xg, wg, out, np.full(n, np.nan), np.full(n, np.nan))
 
 
 def no_bulk():
@@ -51,13 +54,35 @@ def no_bulk():
     i1, i2, i3 = np.zeros(0, np.int64), np.zeros((0, 2), np.int64), np.zeros((0, 2, WIDTH), np.int64)
     f1, f2, f6 = np.zeros(0), np.zeros((0, 2)), np.zeros((0, WIDTH))
     return (i2, i1, f1, np.zeros((0, WIDTH), np.int64), f6, f6.copy(), f2, i3, np.zeros(5), f1, f1.copy(),
-            np.zeros((0, 4)))
+            np.zeros((0, 6)), f1.copy(), f1.copy())
+
+
+@njit(cache=True)
+def _same(a, b):
+    for i in range(a.size):
+        if a[i] != b[i]:
+            return False
+    return True
+
+
+@njit(cache=True)
+def evaluate(P, H, bulk):
+    """:func:`face_values` unless ``P`` and ``H`` are those of the last call (a residual and a Jacobian at the same
+    state); remembers them."""
+    last_P, last_H = bulk[12], bulk[13]
+    if _same(P, last_P) and _same(H, last_H):
+        return
+    face_values(P, H, bulk)
+    for i in range(P.size):
+        last_P[i] = P[i]
+        last_H[i] = H[i]
 
 
 @njit(cache=True, parallel=True)
 def face_values(P, H, bulk):
-    """Fill ``bulk``'s scratch with ``(q_p . n, dq/dG_n, dq/dG_t, dq/dh)`` of every face (journal units)."""
-    cells, dirn, length, cols, an, at, const, pos, params, xg, wg, out = bulk
+    """Fill ``bulk``'s scratch with ``(q_p . n, dq/dG_n, dq/dG_t, dq/dh, tau_0)`` of every face (journal units);
+    each face's continuity Newton starts from its ``tau_0`` of the last call."""
+    cells, dirn, length, cols, an, at, const, pos, params, xg, wg, out = bulk[:12]
     delta, lam_a, lam_b, kappa, ratio = params[0], params[1], params[2], params[3], params[4]
     for f in prange(cells.shape[0]):
         gn = const[f, 0]
@@ -72,19 +97,20 @@ def face_values(P, H, bulk):
         h = 0.5 * (H[L] + H[R]) if (L >= 0 and R >= 0) else H[L if L >= 0 else R]
         if dirn[f] == 0:
             o = gecim_face_2d(h, GRAD_SCALE * gn, GRAD_SCALE * gt, 1.0, 0.0, 0.0, 0.0, delta, lam_a, lam_b,
-                              kappa, ratio, xg, wg)
+                              kappa, ratio, xg, wg, out[f, 4], out[f, 5])
             out[f, 0], out[f, 1], out[f, 2], out[f, 3] = o[0], GRAD_SCALE * o[2], GRAD_SCALE * o[3], o[6]
         else:
             o = gecim_face_2d(h, GRAD_SCALE * gt, GRAD_SCALE * gn, 1.0, 0.0, 0.0, 0.0, delta, lam_a, lam_b,
-                              kappa, ratio, xg, wg)
+                              kappa, ratio, xg, wg, out[f, 4], out[f, 5])
             out[f, 0], out[f, 1], out[f, 2], out[f, 3] = o[1], GRAD_SCALE * o[5], GRAD_SCALE * o[4], o[7]
+        out[f, 4], out[f, 5] = o[8], o[9]
 
 
 @njit(cache=True)
 def bulk_residual(P, H, free, bulk, R):
     """Add the Gecim pressure flux of every face to the net outflow ``R`` of its free cells."""
     cells, length, out = bulk[0], bulk[2], bulk[11]
-    face_values(P, H, bulk)
+    evaluate(P, H, bulk)
     for f in range(cells.shape[0]):
         q = out[f, 0] * length[f]
         L = cells[f, 0]
@@ -100,8 +126,8 @@ def bulk_jacobian(P, dP, H, cosp, sinp, free, bulk, pos_col, n_extra, data):
     """Add the Gecim flux's derivatives to the CSC ``data``: ``dR/du`` over the face's gradient cells (``dP``
     = dP/du per cell) and, with ``n_extra >= 2``, ``dR/dX, dR/dY`` through ``H_f`` (``pos_col`` the positions
     of the extra columns)."""
-    cells, dirn, length, cols, an, at, const, pos, params, xg, wg, out = bulk
-    face_values(P, H, bulk)
+    cells, dirn, length, cols, an, at, const, pos, params, xg, wg, out = bulk[:12]
+    evaluate(P, H, bulk)
     for f in range(cells.shape[0]):
         s = length[f]
         dn = out[f, 1] * s
@@ -141,7 +167,7 @@ def bulk_end_flow(P, H, free, n_interior, bulk):
     """Net outflow through the Dirichlet faces (``bulk`` lists them after the ``n_interior`` interior faces)
     of the Gecim pressure flux, from the free cells."""
     cells, length, out = bulk[0], bulk[2], bulk[11]
-    face_values(P, H, bulk)
+    evaluate(P, H, bulk)
     total = 0.0
     for f in range(n_interior, cells.shape[0]):
         L = cells[f, 0]
