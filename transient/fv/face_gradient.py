@@ -28,34 +28,37 @@ WIDTH = 6  # cells per face gradient: L, R and their two neighbours across the f
 
 
 def _cell_gradients(op, direction):
-    """Per cell: Green-Gauss gradient along ``direction`` as (cols (n, 3), weights (n, 3), constant (n,)),
-    cols -1 where unused; the constant holds the prescribed P of Dirichlet faces."""
+    """Per cell: Green-Gauss gradient along ``direction`` as (cols (n, 3), weights (n, 3), constant (n,)): the
+    lower neighbour, the cell, the upper neighbour (-1 where there is none); the constant holds the prescribed P
+    of Dirichlet faces."""
     grid = op.grid
     n, nx = grid.n, grid.nx
     k = np.arange(n)
     axis = grid.x if direction == 0 else grid.z
-    idx = k % nx if direction == 0 else k // nx
-    w = axis.widths[idx]
-    lower_nb, upper_nb = op.stencil.nb[:, 2 * direction], op.stencil.nb[:, 2 * direction + 1]
-    bvalue = {}
-    for b in range(op.bcell.size):
-        if op.bdir[b] == direction:
-            bvalue[(int(op.bcell[b]), int(op.bside[b]))] = op.bP[b]
+    index = (lambda c: c % nx) if direction == 0 else (lambda c: c // nx)
+    w = axis.widths[index(k)]
     cols = np.full((n, 3), -1, dtype=np.int64)
     wts = np.zeros((n, 3))
     const = np.zeros(n)
     cols[:, 1] = k
-    for i in range(n):
-        for slot, nbr, sign in ((0, lower_nb[i], -1), (2, upper_nb[i], 1)):
-            if nbr >= 0:  # interior face: linear interpolation between the centres
-                wn = axis.widths[nbr % nx if direction == 0 else nbr // nx]
-                cols[i, slot] = nbr
-                wts[i, slot] += sign * w[i] / (w[i] + wn) / w[i]
-                wts[i, 1] += sign * wn / (w[i] + wn) / w[i]
-            elif (i, sign) in bvalue:  # Dirichlet face: the prescribed value
-                const[i] += sign * bvalue[(i, sign)] / w[i]
-            else:  # symmetry face: the cell's own value
-                wts[i, 1] += sign / w[i]
+    dirichlet = {sign: np.zeros(n, dtype=bool) for sign in (-1, 1)}
+    value = np.zeros(n)
+    for sign in (-1, 1):
+        sel = (op.bdir == direction) & (op.bside == sign)
+        dirichlet[sign][op.bcell[sel]] = True
+        value[:] = 0.0
+        value[op.bcell[sel]] = op.bP[sel]
+        nbr = op.stencil.nb[:, 2 * direction + (sign > 0)]
+        inner = nbr >= 0
+        wn = np.where(inner, axis.widths[index(np.maximum(nbr, 0))], 0.0)
+        slot = 0 if sign < 0 else 2
+        cols[inner, slot] = nbr[inner]
+        wts[inner, slot] = sign * w[inner] / (w[inner] + wn[inner]) / w[inner]  # linear interpolation
+        wts[inner, 1] += sign * wn[inner] / (w[inner] + wn[inner]) / w[inner]
+        given = ~inner & dirichlet[sign]  # Dirichlet face: the prescribed value
+        const[given] += sign * value[given] / w[given]
+        mirror = ~inner & ~dirichlet[sign]  # symmetry face: the cell's own value
+        wts[mirror, 1] += sign / w[mirror]
     return cols, wts, const
 
 
@@ -68,48 +71,45 @@ def face_gradients(op):
         const (nf, 2)  constant parts of (G_n, G_t) (prescribed boundary pressures)
         pos (nf, 2, 6) CSC positions of (cells[f, r], cols[f, m]) in the operator's pattern (-1: none)
 
-    ``op`` must have the 9-point pattern (``diagonals=True``)."""
+    Slots of an interior face: L, R, then L's and R's lower and upper neighbours across the face direction (a
+    cell may appear twice on a tiny periodic grid: the kernels add both). ``op`` must have the 9-point pattern
+    (``diagonals=True``)."""
     grads = [_cell_gradients(op, 0), _cell_gradients(op, 1)]
-    nf_int, nb = op.fL.size, op.bcell.size
+    fL, fR, fdir = op.fL, op.fR, op.fdir
+    nf_int, nb = fL.size, op.bcell.size
     nf = nf_int + nb
     cells = np.full((nf, 2), -1, dtype=np.int64)
-    dirn = np.concatenate([op.fdir, op.bdir]).astype(np.int64)
+    dirn = np.concatenate([fdir, op.bdir]).astype(np.int64)
     length = np.concatenate([op.fs, op.bs])
     cols = np.full((nf, WIDTH), -1, dtype=np.int64)
     an = np.zeros((nf, WIDTH))
     at = np.zeros((nf, WIDTH))
     const = np.zeros((nf, 2))
-
-    def add(f, cell, cn, ct):
-        row = cols[f]
-        hit = np.flatnonzero(row == cell)
-        m = int(hit[0]) if hit.size else int(np.flatnonzero(row < 0)[0])
-        row[m] = cell
-        an[f, m] += cn
-        at[f, m] += ct
-
-    for f in range(nf_int):
-        L, R, a = int(op.fL[f]), int(op.fR[f]), int(op.fdir[f])
-        cells[f] = L, R
-        add(f, L, -1.0 / op.fd[f], 0.0)
-        add(f, R, 1.0 / op.fd[f], 0.0)
+    fi = np.arange(nf_int)
+    cells[fi, 0], cells[fi, 1] = fL, fR
+    cols[fi, 0], cols[fi, 1] = fL, fR
+    an[fi, 0], an[fi, 1] = -1.0 / op.fd, 1.0 / op.fd
+    bi = nf_int + np.arange(nb)
+    side = op.bside
+    cells[bi, 0] = np.where(side > 0, op.bcell, -1)
+    cells[bi, 1] = np.where(side > 0, -1, op.bcell)
+    cols[bi, 0] = op.bcell
+    an[bi, 0] = -side / op.bd
+    const[bi, 0] = side * op.bP / op.bd
+    for a in (0, 1):  # faces along a take the cells' gradients along the other direction
         gc, gw, g0 = grads[1 - a]
-        for c in (L, R):
-            for m in range(3):
-                if gc[c, m] >= 0:
-                    add(f, int(gc[c, m]), 0.0, 0.5 * gw[c, m])
+        f = fi[fdir == a]
+        for c, half, lo, up in ((fL[f], 0, 2, 3), (fR[f], 1, 4, 5)):
+            at[f, half] += 0.5 * gw[c, 1]
+            cols[f, lo], at[f, lo] = gc[c, 0], np.where(gc[c, 0] >= 0, 0.5 * gw[c, 0], 0.0)
+            cols[f, up], at[f, up] = gc[c, 2], np.where(gc[c, 2] >= 0, 0.5 * gw[c, 2], 0.0)
             const[f, 1] += 0.5 * g0[c]
-    for b in range(nb):
-        f = nf_int + b
-        i, a, side = int(op.bcell[b]), int(op.bdir[b]), int(op.bside[b])
-        cells[f] = (i, -1) if side > 0 else (-1, i)
-        add(f, i, -side / op.bd[b], 0.0)
-        const[f, 0] = side * op.bP[b] / op.bd[b]
-        gc, gw, g0 = grads[1 - a]
-        for m in range(3):
-            if gc[i, m] >= 0:
-                add(f, int(gc[i, m]), 0.0, gw[i, m])
-        const[f, 1] = g0[i]
+        sel = op.bdir == a
+        f, c = bi[sel], op.bcell[sel]
+        at[f, 0] = gw[c, 1]
+        cols[f, 2], at[f, 2] = gc[c, 0], np.where(gc[c, 0] >= 0, gw[c, 0], 0.0)
+        cols[f, 3], at[f, 3] = gc[c, 2], np.where(gc[c, 2] >= 0, gw[c, 2], 0.0)
+        const[f, 1] = g0[c]
     pos = np.full((nf, 2, WIDTH), -1, dtype=np.int64)
     for r in range(2):
         for m in range(WIDTH):

@@ -34,8 +34,8 @@ GRAD_SCALE = 6.0  # p0 / R in units of mu_1 omega R / C^2: the law's G = 6 grad 
 def bulk_tables(op, bearing, speed_rpm):
     """The kernels' tuple for a Gecim bulk: the face-gradient tables of ``op`` (9-point pattern), the law's
     dimensionless parameters ``(delta, lam_a, lam_b, kappa, ratio)`` at this speed, the Gauss rule, the
-    per-face scratch ``(q, dq/dG_n, dq/dG_t, dq/dh, tau_0)`` (``tau_0``: the warm start of the next evaluation)
-    and the cell pressure and film of the last evaluation (:func:`face_values` skips a repeat)."""
+    per-face scratch ``(q, dq/dG_n, dq/dG_t, dq/dh)`` and the cell pressure and film of the last evaluation
+    (:func:`evaluate` skips a repeat)."""
     from transient.models.journal.film import omega
     from transient.physics.layered import NO_LAYERS
 
@@ -44,9 +44,7 @@ def bulk_tables(op, bearing, speed_rpm):
     xg, wg = law._gauss()
     tables = face_gradients(op)
     nf, n = tables[0].shape[0], op.n_cells
-    out = np.zeros((nf, 6))
-    out[:, 4:] = np.nan
-    return tables + (params, xg, wg, out, np.full(n, np.nan), np.full(n, np.nan))
+    return tables + (params, xg, wg, np.zeros((nf, 4)), np.full(n, np.nan), np.full(n, np.nan))
 
 
 def no_bulk():
@@ -54,7 +52,7 @@ def no_bulk():
     i1, i2, i3 = np.zeros(0, np.int64), np.zeros((0, 2), np.int64), np.zeros((0, 2, WIDTH), np.int64)
     f1, f2, f6 = np.zeros(0), np.zeros((0, 2)), np.zeros((0, WIDTH))
     return (i2, i1, f1, np.zeros((0, WIDTH), np.int64), f6, f6.copy(), f2, i3, np.zeros(5), f1, f1.copy(),
-            np.zeros((0, 6)), f1.copy(), f1.copy())
+            np.zeros((0, 4)), f1.copy(), f1.copy())
 
 
 @njit(cache=True)
@@ -80,8 +78,8 @@ def evaluate(P, H, bulk):
 
 @njit(cache=True, parallel=True)
 def face_values(P, H, bulk):
-    """Fill ``bulk``'s scratch with ``(q_p . n, dq/dG_n, dq/dG_t, dq/dh, tau_0)`` of every face (journal units);
-    each face's continuity Newton starts from its ``tau_0`` of the last call."""
+    """Fill ``bulk``'s scratch with ``(q_p . n, dq/dG_n, dq/dG_t, dq/dh)`` of every face (journal units). A pure
+    function of ``(P, H)``: every face's continuity Newton starts from the same closed-form guess."""
     cells, dirn, length, cols, an, at, const, pos, params, xg, wg, out = bulk[:12]
     delta, lam_a, lam_b, kappa, ratio = params[0], params[1], params[2], params[3], params[4]
     for f in prange(cells.shape[0]):
@@ -97,13 +95,12 @@ def face_values(P, H, bulk):
         h = 0.5 * (H[L] + H[R]) if (L >= 0 and R >= 0) else H[L if L >= 0 else R]
         if dirn[f] == 0:
             o = gecim_face_2d(h, GRAD_SCALE * gn, GRAD_SCALE * gt, 1.0, 0.0, 0.0, 0.0, delta, lam_a, lam_b,
-                              kappa, ratio, xg, wg, out[f, 4], out[f, 5])
+                              kappa, ratio, xg, wg)
             out[f, 0], out[f, 1], out[f, 2], out[f, 3] = o[0], GRAD_SCALE * o[2], GRAD_SCALE * o[3], o[6]
         else:
             o = gecim_face_2d(h, GRAD_SCALE * gt, GRAD_SCALE * gn, 1.0, 0.0, 0.0, 0.0, delta, lam_a, lam_b,
-                              kappa, ratio, xg, wg, out[f, 4], out[f, 5])
+                              kappa, ratio, xg, wg)
             out[f, 0], out[f, 1], out[f, 2], out[f, 3] = o[1], GRAD_SCALE * o[5], GRAD_SCALE * o[4], o[7]
-        out[f, 4], out[f, 5] = o[8], o[9]
 
 
 @njit(cache=True)
