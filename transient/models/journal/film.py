@@ -13,8 +13,9 @@ import numpy as np
 import scipy.sparse.linalg as spla
 
 from transient.fv.reynolds import ReynoldsOperator
-from transient.models.journal.gecim_film import bulk_end_flow, bulk_tables, no_bulk
-from transient.models.journal.kernels import N_ROTOR, content_universal, film_force, film_jacobian, film_residual
+from transient.models.journal.gecim_film import bulk_end_flow, bulk_tables, no_bulk, prefetch
+from transient.models.journal.kernels import (N_ROTOR, content_universal, film_force, film_jacobian, film_residual,
+                                              state_fields)
 from transient.solvers.newton import NewtonError, newton
 
 #: Default pressure width of the Elrod switch as a fraction of p0 = 6 mu omega (R/C)^2 (docs/journal.md).
@@ -79,10 +80,25 @@ class Film:
                      np.ascontiguousarray(op.stencil.indptr, dtype=np.int64))
 
     # residual / Jacobian of the prescribed-motion film equations G(u) = 0 --------------------------
+    def prefetch(self, u, X, Y):
+        """A Gecim bulk's face values at ``(u, X, Y)`` on all cores (:func:`~transient.models.journal.gecim_film.prefetch`),
+        so the kernel called next at the same state finds them; nothing for a Newtonian bulk."""
+        if self.bearing.shear_thinning:
+            state_fields(u, X, Y, self.switch, self.geo, self.fields, self.fv)
+            prefetch(self.P, self.H, self.bulk)
+
+    def prefetch_content(self, y):
+        """:meth:`prefetch` at the content state ``y = [m, X, Y, ...]`` of the content formulation."""
+        if self.bearing.shear_thinning:
+            u = self.work[0]
+            content_universal(y, self.switch, self.geo, self.op.free, self.op.u_fixed, self.work[1], u)
+            self.prefetch(u, y[self.n], y[self.n + 1])
+
     def residual(self, u, X, Y, VX=0.0, VY=0.0, rate=0.0, C_ref=None, out=None):
         """G(u) of :func:`~transient.models.journal.kernels.film_residual`; also leaves the fields (P, theta,
         ...) of ``u`` in the film's scratch arrays."""
         out = np.empty(self.n) if out is None else out
+        self.prefetch(u, X, Y)
         film_residual(u, X, Y, VX, VY, rate, self.zero if C_ref is None else C_ref, out, self.switch, self.geo,
                       self.fields, self.fv)
         return out
@@ -90,6 +106,7 @@ class Film:
     def jacobian_data(self, u, X, Y, VX=0.0, VY=0.0, rate=0.0, data=None):
         """CSC data of dG/du (+ the rotor columns if the operator has them), pattern order."""
         data = np.empty(self.op.nnz) if data is None else data
+        self.prefetch(u, X, Y)
         film_jacobian(u, X, Y, VX, VY, rate, data, self.switch, self.geo, self.fields, self.extras, self.fv)
         return data
 

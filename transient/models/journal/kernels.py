@@ -109,13 +109,20 @@ def rotor_accelerations(tau, fx, fy, kappa, wbar, ebar):
 #                                                   gecim_film.no_bulk, for a Newtonian bulk)
 
 @njit(cache=True)
-def _stencil_residual(u, X, Y, switch, geo, fields, fv, R):
+def state_fields(u, X, Y, switch, geo, fields, fv):
+    """:func:`film_fields` of the state, with the prescribed (groove) cells on the sharp Elrod curve."""
     beta_bar, width, content_scale, layer_gap, darcy = switch
     cosp, sinp, area = geo
     H, P, dP, C, D, dD, k, c, zero, _ = fields
-    faces, boundary, cells, face_k, bulk = fv
     film_fields(u, X, Y, cosp, sinp, beta_bar, width, content_scale, layer_gap, darcy, H, P, dP, C, D, dD, k, c)
-    sharp_fixed_cells(cells[0], cells[1], beta_bar, P, dP, C, D, dD)
+    sharp_fixed_cells(fv[2][0], fv[2][1], beta_bar, P, dP, C, D, dD)
+
+
+@njit(cache=True)
+def _stencil_residual(u, X, Y, switch, geo, fields, fv, R):
+    H, P, dP, C, D, dD, k, c, zero, _ = fields
+    faces, boundary, cells, face_k, bulk = fv
+    state_fields(u, X, Y, switch, geo, fields, fv)
     gecim = bulk[0].shape[0] > 0
     if gecim:  # the Poiseuille flux is the Gecim bulk's (gecim_film), not k grad P
         k[:] = 0.0
@@ -126,13 +133,12 @@ def _stencil_residual(u, X, Y, switch, geo, fields, fv, R):
 
 @njit(cache=True)
 def _stencil_jacobian(u, X, Y, switch, geo, fields, extras, fv, data):
-    beta_bar, width, content_scale, layer_gap, darcy = switch
+    layer_gap, darcy = switch[3], switch[4]
     cosp, sinp, area = geo
     H, P, dP, C, D, dD, k, c, zero, _ = fields
     dk_dq, dc_dq, no_dq, pos_row, pos_col, indices, scale = extras
     faces, boundary, cells, face_k, bulk = fv
-    film_fields(u, X, Y, cosp, sinp, beta_bar, width, content_scale, layer_gap, darcy, H, P, dP, C, D, dD, k, c)
-    sharp_fixed_cells(cells[0], cells[1], beta_bar, P, dP, C, D, dD)
+    state_fields(u, X, Y, switch, geo, fields, fv)
     if dk_dq.shape[0] > 0:
         position_derivatives(H, cosp, sinp, layer_gap, darcy, dk_dq, dc_dq)
     gecim = bulk[0].shape[0] > 0

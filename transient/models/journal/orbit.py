@@ -243,6 +243,9 @@ class JournalOrbit:
             def jac_residual(t, y, yp, cj, data):
                 dae_jacobian(t, y, yp, cj, data, switch, rotor, geo, fields, extras, fv)
 
+        if self.bearing.shear_thinning:  # the Gecim faces on all cores first (film.prefetch)
+            rhs, jac_rhs, residual, jac_residual = (_prefetching(f, cb, formulation) for cb in
+                                                    (rhs, jac_rhs, residual, jac_residual))
         yp0 = np.empty(self.n)
         rhs(tau0, y0, yp0)
         events = None
@@ -548,3 +551,17 @@ def _state_array(y) -> np.ndarray:
         return np.array(y, dtype=float)
     except (TypeError, ValueError):
         raise ValueError(f"the initial state y0 must be an array of numbers, got {type(y).__name__}") from None
+
+
+def _prefetching(film, callback, formulation):
+    """``callback(t, y, ...)`` preceded by the film's :meth:`~transient.models.journal.film.Film.prefetch` at ``y``."""
+    n = film.n
+    if formulation == "content":
+        def wrapped(t, y, *args):
+            film.prefetch_content(y)
+            callback(t, y, *args)
+    else:
+        def wrapped(t, y, *args):
+            film.prefetch(y[:n], y[n], y[n + 1])
+            callback(t, y, *args)
+    return wrapped

@@ -44,7 +44,7 @@ import scipy.sparse.linalg as spla
 
 from transient.fv.reynolds import ReynoldsOperator, jacobian_kernel, residual_kernel
 from transient.models.journal.film import film_state
-from transient.models.journal.gecim_film import bulk_jacobian, bulk_residual, bulk_tables
+from transient.models.journal.gecim_film import bulk_jacobian, bulk_residual, bulk_tables, prefetch
 from transient.models.journal.kernels import N_ROTOR, conductances, film_force, position_derivatives
 
 
@@ -108,6 +108,7 @@ class ReynoldsFilm:
         self._fields(X, Y)
         residual_kernel(u, u, self.ones, self.k, self.k, self.c, self.zero, False, *self.fv, out)
         if self.bulk is not None:
+            prefetch(u, self.H, self.bulk)
             bulk_residual(u, self.H, self.free, self.bulk, out)
         out += np.where(self.free, self.area * (VX * self.cosp + VY * self.sinp), 0.0)
         return out
@@ -124,6 +125,7 @@ class ReynoldsFilm:
                         self.zero, self.dk_dq, self.dk_dq, self.dc_dq, self.no_dq, False, *self.fv,
                         op.pos_col_extra, data)
         if self.bulk is not None:
+            prefetch(u, self.H, self.bulk)
             bulk_jacobian(u, self.ones, self.H, self.cosp, self.sinp, self.free, self.bulk, op.pos_col_extra,
                           op.n_extra, data)
         if op.n_extra >= 4:
