@@ -1,12 +1,13 @@
-"""Seed 004: boundary layers in Jang's journal bearing (eps = 0.9, R/B = 1), Newtonian bulk.
+"""Seed 004: boundary layers in Jang's journal bearing (eps = 0.9, R/B = 1), Newtonian and shear-thinning bulk.
 
     transient run scenarios/journal_layers.py [--quick] [--out DIR]
 
 Layers of 0.1, 0.2, 0.3 h_min on both walls (layer viscosity 10 mu; 2 and 100 mu at 0.1 h_min), immobile
 (alpha = 0) and mobile (alpha = 0.1 h_min): the load and the peak pressure against the layer-free film, the
-rise split into the thinner bulk and the Darcy flow, and the mid-plane pressure profiles (DIR/layers.png).
-The shear-thinning Gecim bulk of the paper is not in the journal film yet (docs/layered.md).
-Numbers in DIR/layers.json.
+rise split into the thinner bulk and the Darcy flow, and the mid-plane pressure profiles (DIR/layers.png), with
+a Newtonian bulk; the same with the paper's Gecim bulk (kappa* = 0.65, mu_2/mu_1 = 0.57) with the friction
+(DIR/gecim.png); and from mobile to immobile layers the velocity across the film and the interface shear
+(DIR/immobility.png, Figs. 9-11). Numbers in DIR/layers.json.
 """
 
 from __future__ import annotations
@@ -16,7 +17,7 @@ import time
 from pathlib import Path
 
 from transient.plots import layers as plots, save
-from transient.study.layers import layered_cases
+from transient.study.layers import gecim_cases, layered_cases
 from transient.study.scenario import JsonRecord, log, parser
 
 OUT = Path(__file__).resolve().parent / "out" / "journal_layers"
@@ -42,6 +43,26 @@ def main(argv=None):
         log(f"  mu_ab {row['mu_ab_over_mu']:g} mu (delta 0.1 h_min, mobile): load {row['load_N']:.1f} N, "
             f"peak {row['peak']:.3f}")
     log(f"written: {save(plots.layered_profiles(res), out / 'layers.png')}")
+    g = gecim_cases(grid)
+    rec.put("gecim", {k: v for k, v in g.items() if k != "angle_deg"})
+    b = g["base"]
+    log(f"[gecim bulk] kappa {g['kappa_Pa']:.4g} Pa: no layers: load {b['gecim']['load_N']:.1f} N "
+        f"({b['gecim']['load_N'] / b['newtonian']['load_N']:.3f} of the Newtonian bulk), friction "
+        f"{b['gecim']['friction_N']:.3f} N (Newtonian {b['newtonian']['friction_N']:.3f} N)")
+    for row in g["thickness"]:
+        ge = row["gecim"]
+        log(f"  delta {row['delta_over_hmin']:.1f} h_min: load {ge['load_N']:.1f} N ({row['thinning_load_ratio']:.3f} "
+            f"of Newtonian), peak {ge['peak']:.3f}; thinner bulk +{100 * row['rise_thinner_bulk']:.1f} %, Darcy "
+            f"{100 * row['darcy_share']:+.1f} %; friction {ge['friction_N']:.3f} N (f = {ge['friction_coefficient']:.4f})")
+    for row in g["viscosity"]:
+        log(f"  mu_ab {row['mu_ab_over_mu']:g} mu (delta 0.1 h_min): load {row['load_N']:.1f} N")
+    for row in g["immobility"]:
+        log(f"  alpha {row['alpha_over_hmin']:g} h_min, mu_ab {row['mu_ab_over_mu']:g} mu: load {row['load_N']:.1f} N, "
+            f"max interface shear {abs(row['interface_lower_Pa']).max() / 1e3:.3f} kPa (journal side), "
+            f"{abs(row['interface_upper_Pa']).max() / 1e3:.3f} kPa (bearing side); layer slip u_a/U "
+            f"{row['u_over_U'][0]:.5f}")
+    log(f"written: {save(plots.gecim_profiles(g), out / 'gecim.png')}")
+    log(f"written: {save(plots.immobility(g), out / 'immobility.png')}")
     rec.put("wall_s", time.perf_counter() - t0)
     log(f"[layers] done in {time.perf_counter() - t0:.1f} s; numbers in {out / 'layers.json'}")
     return rec.data

@@ -105,9 +105,11 @@ def test_bad_layers_are_named():
         b.steady_state(0.65, RPM)
 
 
-def test_seed_004_findings_with_a_newtonian_bulk(tmp_path):
-    """The scenario (quick grid): thicker layers raise the pressure strongly, more for thicker layers; the layer
-    viscosity matters less than the thickness (2 -> 100 mu moves the load less than 0.1 -> 0.2 h_min does)."""
+def test_seed_004_findings(tmp_path):
+    """The scenario (quick grid), with the Newtonian and with the Gecim bulk: thicker layers raise the pressure
+    strongly, more for thicker layers; the layer viscosity matters less than the thickness (2 -> 100 mu moves the
+    load less than 0.1 -> 0.2 h_min does); the Gecim bulk carries 0.57..1 of the Newtonian load and less friction;
+    the interface shear grows as the layers become immobile (Figs. 9-11: mu_ab up, alpha down)."""
     import importlib.util
     import pathlib
 
@@ -123,7 +125,18 @@ def test_seed_004_findings_with_a_newtonian_bulk(tmp_path):
     thick = [r["mobile"]["load_N"] for r in c["thickness"]]
     assert loads_mu[-1] - loads_mu[0] < 0.5 * (thick[1] - thick[0])
     assert all(r["darcy_share"] < 0 for r in c["thickness"])  # the Darcy flow relieves the film
-    assert (tmp_path / "layers.png").exists()
+    g = data["gecim"]
+    peaks = [g["base"]["gecim"]["peak"]] + [r["gecim"]["peak"] for r in g["thickness"]]
+    assert all(b > 1.3 * a for a, b in zip(peaks[:-1], peaks[1:])), peaks
+    loads_mu = [r["load_N"] for r in g["viscosity"]]
+    thick = [r["gecim"]["load_N"] for r in g["thickness"]]
+    assert loads_mu[-1] - loads_mu[0] < 0.5 * (thick[1] - thick[0])
+    assert all(0.57 < r["thinning_load_ratio"] < 1.0 for r in g["thickness"])
+    assert g["base"]["gecim"]["friction_N"] < g["base"]["newtonian"]["friction_N"]
+    shear = [np.abs(r["interface_lower_Pa"]).max() for r in g["immobility"]]
+    assert shear[0] < shear[1] < shear[2] and shear[3] < shear[4], shear  # mu_ab 2 < 10 < 100; alpha 0.05 > 0
+    for name in ("layers.png", "gecim.png", "immobility.png"):
+        assert (tmp_path / name).exists()
 
 
 @pytest.mark.parametrize("layers", [None, BoundaryLayers(0.2 * CL, 10 * MU, 0.0), BoundaryLayers(0.2 * CL, 10 * MU, 0.05 * CL)])

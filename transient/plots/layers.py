@@ -26,3 +26,43 @@ def layered_profiles(res):
            xlim=(90, 270))
     bx.legend(fontsize=8)
     return fig
+
+
+def gecim_profiles(res):
+    """Two panels with the Gecim bulk (:func:`transient.study.layers.gecim_cases`): p*(angle) at the mid-plane per
+    layer thickness (solid: Gecim bulk, dashed: Newtonian bulk; mobile layers), and per layer viscosity."""
+    a = res["angle_deg"]
+    fig, (ax, bx) = figure(1, 2, size=(11.5, 4.3))
+    ax.plot(a, res["base"]["gecim"]["profile"], "k-", lw=1.2, label="no layers")
+    ax.plot(a, res["base"]["newtonian"]["profile"], "k--", lw=0.8)
+    for row, col in zip(res["thickness"], ("tab:blue", "tab:orange", "tab:red")):
+        ax.plot(a, row["gecim"]["profile"], "-", color=col, label=f"delta = {row['delta_over_hmin']:g} h_min")
+        ax.plot(a, row["newtonian"]["profile"], "--", color=col, lw=0.8)
+    ax.set(xlabel="angle from the top, with the rotation [deg]", ylabel="p / p0 at the mid-plane",
+           title="Gecim bulk, layer thickness (dashed: Newtonian bulk)", xlim=(90, 270))
+    ax.legend(fontsize=8)
+    bx.plot(a, res["base"]["gecim"]["profile"], "k-", lw=1.2, label="no layers")
+    for row in res["viscosity"]:
+        bx.plot(a, row["profile"], label=f"mu_ab = {row['mu_ab_over_mu']:g} mu")
+    bx.set(xlabel="angle [deg]", ylabel="p / p0 at the mid-plane", title="Gecim bulk, layer viscosity "
+           "(delta = 0.1 h_min)", xlim=(90, 270))
+    bx.legend(fontsize=8)
+    return fig
+
+
+def immobility(res):
+    """Figs. 9-11's question with the Gecim bulk: the velocity across the film at the mid-plane pressure peak, and
+    the shear stress at the journal-side interface along the angle, from mobile to immobile layers."""
+    a = res["angle_deg"]
+    fig, (ax, bx) = figure(1, 2, size=(11.5, 4.3))
+    for row in res["immobility"]:
+        lab = f"alpha = {row['alpha_over_hmin']:g} h_min, mu_ab = {row['mu_ab_over_mu']:g} mu"
+        ax.plot(row["u_over_U"], row["z_over_h"], label=lab)
+        bx.plot(a, row["interface_lower_Pa"] / 1e3, label=lab)
+    row = res["immobility"][0]
+    ax.set(xlabel="u / U (journal speed U)", ylabel="z / h (0: journal)",
+           title=f"velocity across the film at {row['peak_angle_deg']:.0f} deg (peak pressure)")
+    ax.legend(fontsize=7)
+    bx.set(xlabel="angle [deg]", ylabel="shear stress at the journal-side interface [kPa]",
+           title="interface shear at the mid-plane", xlim=(90, 270))
+    return fig

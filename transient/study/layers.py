@@ -1,23 +1,31 @@
-"""Seed 004's journal case with boundary layers and a Newtonian bulk: how much the layers raise the film and why.
+"""Seed 004's journal case with boundary layers: how much the layers raise the film and why, with a Newtonian and
+with the paper's shear-thinning (Gecim) bulk.
 
 Jang's bearing (R/B = 1, eps = 0.9, h_min = 0.1 C; the paper's example D = 25 mm, C = 10 um) with layers of
 thickness delta = 0, 0.1, 0.2, 0.3 h_min on both walls, layer viscosity mu_ab = 10 mu (2 ... 100 explored)
-and permeability length alpha = 0.1 h_min, on the classical Reynolds-condition film (the Gecim bulk is not in
-the journal film yet: :class:`~transient.models.journal.bearing.JournalBearing` refuses it by name). For each
-case the steady film at the fixed position; the rise of the load over the layer-free film splits exactly into
+and permeability length alpha = 0.1 h_min, on the classical Reynolds-condition film (the paper's cavitation
+condition is likely p >= 0). For each case the steady film at the fixed position; the rise of the load over the
+layer-free film splits exactly into
 
 * the thinner bulk: the immobile layers (alpha = 0) are a bearing of clearance C - 2 delta
   (tests/test_journal_layers.py), and
 * the Darcy flow through mobile layers (alpha > 0), which gives part of it back.
 
 Pressures are reported as p* = p / p0, p0 = 6 mu omega (R/C)^2 (the layer-free bearing's scale).
+
+:func:`gecim_cases` repeats the thickness and viscosity cases with the Gecim bulk (kappa* = kappa C / (mu_1 omega R)
+= 0.65, mu_2/mu_1 = 0.57), adds the friction, and for the layers' immobility (Figs. 9-11: alpha from 0.1 h_min to 0,
+mu_ab from 2 to 100 mu) the velocity profile across the film at the peak pressure and the interface shear stress
+along the mid-plane.
 """
 
 from __future__ import annotations
 
 
-from transient.models.journal.bearing import JournalBearing
-from transient.physics.layered import BoundaryLayers
+import numpy as np
+
+from transient.models.journal.bearing import JournalBearing, omega
+from transient.physics.layered import BoundaryLayers, Gecim
 
 #: Jang's example bearing (seed 004: D = 25 mm, c = 10 um, R/B = 1); viscosity and speed set only the scale
 BEARING = dict(diameter=0.025, length=0.0125, clearance=10e-6, viscosity=0.01, groove=None,
@@ -28,13 +36,24 @@ H_MIN = 1.0 - ECCENTRICITY  # h_min / C
 THICKNESS = (0.0, 0.1, 0.2, 0.3)  # delta / h_min
 LAYER_VISCOSITY = (2.0, 10.0, 100.0)  # mu_ab / mu
 ALPHA = 0.1  # alpha / h_min
+KAPPA_STAR = 0.65  # kappa C / (mu_1 omega R)
+RATIO = 0.57  # mu_2 / mu_1
+#: (alpha / h_min, mu_ab / mu) from mobile to immobile layers at delta = 0.2 h_min (Figs. 9-11)
+IMMOBILITY = ((0.1, 2.0), (0.1, 10.0), (0.1, 100.0), (0.05, 10.0), (0.0, 10.0))
+IMMOBILITY_DELTA = 0.2
 
 
-def _state(grid, thickness, viscosity_ratio, alpha):
+def gecim_bulk():
+    """The paper's Gecim bulk at the scenario's speed (kappa [Pa] from kappa*)."""
+    C, mu, R = BEARING["clearance"], BEARING["viscosity"], 0.5 * BEARING["diameter"]
+    return Gecim(kappa=KAPPA_STAR * mu * omega(SPEED_RPM) * R / C, viscosity_ratio=RATIO)
+
+
+def _state(grid, thickness, viscosity_ratio, alpha, rheology=None):
     C = BEARING["clearance"]
     layers = None if thickness == 0 else BoundaryLayers(thickness * H_MIN * C, viscosity_ratio * BEARING["viscosity"],
                                                         alpha * H_MIN * C)
-    b = JournalBearing(**BEARING, grid=grid, layers=layers)
+    b = JournalBearing(**BEARING, grid=grid, layers=layers, rheology=rheology)
     return b, b.steady_state(ECCENTRICITY, SPEED_RPM)
 
 
@@ -57,4 +76,42 @@ def layered_cases(grid=(121, 20)) -> dict:
         _, s = _state(grid, 0.1, v, ALPHA)
         out["viscosity"].append(dict(mu_ab_over_mu=v, load_N=s.load, peak=s.max_pressure / p0,
                                      profile=s.pressure[0] / p0))
+    return out
+
+
+def _summary(s, p0):
+    return dict(load_N=s.load, peak=s.max_pressure / p0, profile=s.pressure[0] / p0, friction_N=s.friction_force,
+                friction_coefficient=s.friction_force / s.load)
+
+
+def gecim_cases(grid=(121, 20)) -> dict:
+    """The thickness and viscosity cases with the Gecim bulk next to the Newtonian one, and the immobility cases
+    (:data:`IMMOBILITY`): load [N], peak p*, mid-plane profile, friction [N] and coefficient; per immobility case
+    the velocity across the film at the mid-plane peak (z/h, u/U) and the interface shear [Pa] along the angle."""
+    rh = gecim_bulk()
+    b0, n0 = _state(grid, 0.0, 1.0, 0.0)
+    p0 = b0.pressure_scale(SPEED_RPM)
+    _, g0 = _state(grid, 0.0, 1.0, 0.0, rh)
+    out = dict(grid=list(grid), p0_Pa=p0, angle_deg=g0.angle_deg, kappa_Pa=rh.kappa,
+               base=dict(newtonian=_summary(n0, p0), gecim=_summary(g0, p0)), thickness=[], viscosity=[],
+               immobility=[])
+    for d in THICKNESS[1:]:
+        row = dict(delta_over_hmin=d)
+        for tag, a, law in (("newtonian", ALPHA, None), ("gecim", ALPHA, rh), ("gecim_immobile", 0.0, rh)):
+            row[tag] = _summary(_state(grid, d, 10.0, a, law)[1], p0)
+        row["thinning_load_ratio"] = row["gecim"]["load_N"] / row["newtonian"]["load_N"]
+        row["rise_thinner_bulk"] = row["gecim_immobile"]["load_N"] / g0.load - 1.0
+        row["darcy_share"] = (row["gecim"]["load_N"] - row["gecim_immobile"]["load_N"]) / g0.load
+        out["thickness"].append(row)
+    for v in LAYER_VISCOSITY:
+        out["viscosity"].append(dict(mu_ab_over_mu=v, **_summary(_state(grid, 0.1, v, ALPHA, rh)[1], p0)))
+    U = omega(SPEED_RPM) * 0.5 * BEARING["diameter"]
+    for a, v in IMMOBILITY:
+        s = _state(grid, IMMOBILITY_DELTA, v, a, rh)[1]
+        peak = float(s.angle_deg[int(np.argmax(s.pressure[0]))])
+        z, u = s.velocity_profile(peak, 0, 101)
+        lower, upper = s.interface_shear(0)
+        out["immobility"].append(dict(alpha_over_hmin=a, mu_ab_over_mu=v, peak_angle_deg=peak, load_N=s.load,
+                                      z_over_h=z / z[-1], u_over_U=u / U, interface_lower_Pa=lower,
+                                      interface_upper_Pa=upper, friction_N=s.friction_force))
     return out

@@ -114,6 +114,12 @@ class FilmState(Result):
     def max_pressure(self) -> float:
         return float(self.pressure.max())
 
+    def _law(self):
+        """The film's flow law (:class:`~transient.physics.layered.LayeredFilm`, SI)."""
+        ly = NO_LAYERS if self.layers is None else BoundaryLayers(self.layers[0], (self.layers[1], self.layers[2]),
+                                                                  self.layers[3])
+        return LayeredFilm(self.viscosity, Newtonian() if self.gecim is None else Gecim(*self.gecim), ly)
+
     def velocity_profile(self, angle_deg: float, axial_index: int = 0, points: int = 41):
         """Circumferential velocity across the film at the cell nearest ``angle_deg`` in axial row
         ``axial_index`` (0: next to the mid-plane): (heights z [m] from the journal surface, velocity [m/s]),
@@ -125,14 +131,20 @@ class FilmState(Result):
         n = check_int("points", points, "-", 2, 100000)
         col = int(np.argmin(np.abs(np.angle(np.exp(1j * np.radians(self.angle_deg - ang))))))
         h, G = float(self.film_thickness[row, col]), float(self.pressure_gradient[row, col])
-        ly = NO_LAYERS if self.layers is None else BoundaryLayers(self.layers[0], (self.layers[1], self.layers[2]),
-                                                                  self.layers[3])
         z = np.linspace(0.0, h, n)
         if self.gecim is None:
-            return z, LayeredFilm(self.viscosity, Newtonian(), ly).velocity(h, G, self.sliding_speed, 0.0, z)
-        law = LayeredFilm(self.viscosity, Gecim(*self.gecim), ly)
+            return z, self._law().velocity(h, G, self.sliding_speed, 0.0, z)
         Gz = float(self.axial_pressure_gradient[row, col])
-        return z, law.velocity_2d(h, (G, Gz), (self.sliding_speed, 0.0), (0.0, 0.0), z)[:, 0]
+        return z, self._law().velocity_2d(h, (G, Gz), (self.sliding_speed, 0.0), (0.0, 0.0), z)[:, 0]
+
+    def interface_shear(self, axial_index: int = 0):
+        """Circumferential shear stress [Pa] at the journal-side and the bearing-side interface of the boundary
+        layers (seed 004 eq. 28; the walls themselves without layers) along the angle in axial row
+        ``axial_index``: (lower, upper) arrays over ``angle_deg``, from the film's flow law at each cell."""
+        row = check_int("axial_index", axial_index, "-", 0, self.pressure.shape[0] - 1)
+        h, G, Gz = self.film_thickness[row], self.pressure_gradient[row], self.axial_pressure_gradient[row]
+        s = self._law().stresses_2d(h, np.stack([G, Gz], axis=-1), (self.sliding_speed, 0.0), (0.0, 0.0))
+        return s.lower_interface[:, 0], s.upper_interface[:, 0]
 
 
 class JournalBearing:
