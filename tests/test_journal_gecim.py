@@ -119,3 +119,25 @@ def test_bad_rheology_is_named():
         Gecim(kappa=1e4, viscosity_ratio=1.5)
     assert bearing(rheology=GECIM).parameters()["rheology"] == dict(kappa=KAPPA, viscosity_ratio=0.57)
     assert bearing(groove=Groove()).parameters()["rheology"] is None
+
+
+def test_velocity_profile_2d_integrates_to_the_flow_and_interface_shear_is_the_law():
+    """The 2-D velocity across a layered Gecim film integrates to the 2-D flow; FilmState's interface shear is the
+    law's interface stress at the cell's gradients; its velocity profile starts at the journal speed plus the slip."""
+    from transient import LayeredFilm
+
+    law = LayeredFilm(MU, GECIM, BoundaryLayers(0.1 * CL, 0.3, 0.05 * CL))
+    h, G, U = 0.6 * CL, np.array([-3e9, 1e9]), np.array([omega(RPM) * R, 0.0])
+    z = np.linspace(0.0, h, 40001)
+    u = law.velocity_2d(h, G, U, (0.0, 0.0), z)
+    fl = law.flow_2d(h, G, U, (0.0, 0.0))
+    np.testing.assert_allclose(np.trapezoid(u, z, axis=0), fl.q_couette + fl.q_pressure, rtol=1e-8)
+    s = bearing(layers=BoundaryLayers(0.1 * CL, 10 * MU, 0.05 * CL), rheology=GECIM).steady_state(0.6, RPM)
+    lower, upper = s.interface_shear(0)
+    k = int(np.argmax(s.pressure[0]))
+    ref = law.__class__(MU, GECIM, BoundaryLayers(0.1 * CL, 10 * MU, 0.05 * CL)).stresses_2d(
+        s.film_thickness[0, k], (s.pressure_gradient[0, k], s.axial_pressure_gradient[0, k]), U, (0.0, 0.0))
+    assert lower[k] == pytest.approx(ref.lower_interface[0], rel=1e-12)
+    assert upper[k] == pytest.approx(ref.upper_interface[0], rel=1e-12)
+    zz, uu = s.velocity_profile(float(s.angle_deg[k]), 0, 11)
+    assert uu[0] == pytest.approx(U[0], rel=1e-2) and abs(uu[-1]) < 1e-2 * U[0]
