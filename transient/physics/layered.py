@@ -244,16 +244,16 @@ def _rate_2d(tx, ty, kappa, r):
     """Shear-rate vector ``phi tau`` and its stress Jacobian ``J = phi I + (x' - phi) t t^T`` at the stress
     ``(tx, ty)`` (``phi`` the secant fluidity ``x/s``, ``x'`` the tangent one, ``t`` the stress direction):
     ``gx, gy, Jxx, Jxy, Jyy``."""
-    m = math.hypot(tx, ty)
+    m2 = tx * tx + ty * ty
+    m = math.sqrt(m2)
     s = m / kappa
     b = s - 1.0
     d = math.sqrt(b * b + 4.0 * r * s)
     phi = (b + d) / (2.0 * r * s) if b >= 0.0 else 2.0 / (d - b)
-    x = phi * s
-    c = 1.0 / (r + (1.0 - r) / ((1.0 + x) * (1.0 + x))) - phi
-    ux = tx / m if m > 0.0 else 0.0
-    uy = ty / m if m > 0.0 else 0.0
-    return phi * tx, phi * ty, phi + c * ux * ux, c * ux * uy, phi + c * uy * uy
+    q = (1.0 + phi * s) ** 2
+    c = q / (r * q + 1.0 - r) - phi  # x' - phi, x' = 1 / (r + (1 - r)/(1 + x)^2)
+    cm = c / m2 if m2 > 0.0 else 0.0
+    return phi * tx, phi * ty, phi + cm * tx * tx, cm * tx * ty, phi + cm * ty * ty
 
 
 @njit(cache=True)
@@ -301,7 +301,7 @@ def _side_2d(a, b, zs, sgn, mmin, Gn, d0, t0x, t0y, Gx, Gy, H, kappa, r, xg, wg,
     while cur < b:
         mk = _next_break(tk) * kappa
         dk = math.sqrt(max(mk * mk - mmin * mmin, 0.0)) / Gn
-        nxt = min(dk, cur + max(cur, d0)) if d0 > 0.0 else dk
+        nxt = min(dk, cur + max(3.0 * cur, d0)) if d0 > 0.0 else dk
         if nxt >= dk:
             tk = mk / kappa
         nxt = min(nxt, b)
