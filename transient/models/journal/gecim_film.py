@@ -31,26 +31,28 @@ from transient.physics.layered import LayeredFilm, gecim_face_2d
 GRAD_SCALE = 6.0  # p0 / R in units of mu_1 omega R / C^2: the law's G = 6 grad P
 
 
-def gauss_points(ratio):
-    """Gauss points per quadrature panel of the face law for the viscosity ratio mu_2/mu_1: 6 from 0.2 up, else 8
-    (the law is smoother for larger ratios). Against 20 points on the 19280 faces of seed 004's case (241 x 40,
-    kappa* 0.65, r 0.57), 6 points give the flow to 2.6e-10 of the Couette flow, dq/dG to 2.2e-8 and dq/dh to
-    1.1e-9; 8 points give 1.4e-12, 1.6e-10 and 3.2e-12. Over 4000 random states at r = 0.05, 8 points give dq/dG to
-    1.3e-8, 6 points only to 1.2e-6."""
-    return 6 if ratio >= 0.2 else 8
+def face_accuracy(ratio):
+    """Gauss points per quadrature panel and the continuity Newton's stop of the face law for the viscosity ratio
+    mu_2/mu_1: (6, 1e-4) from 0.2 up, else (8, 1e-5); the law is smoother for larger ratios. Against 20 points and a
+    1e-7 stop on the 19280 faces of seed 004's case (241 x 40, kappa* 0.65, r 0.57), (6, 1e-4) gives the flow to
+    2.6e-10 of the Couette flow, dq/dG to 2.2e-8 and dq/dh to 1.1e-9 (the stop adds nothing: 1.97 -> 1.64 us per
+    face); over 4000 random states (|G| H up to 1e2 kappa) the worst dq/dG is 7.4e-8 at r = 0.2 and, with (8, 1e-5),
+    4.6e-8 at r = 0.05 (a 1e-4 stop would give 2.7e-7 there)."""
+    return (6, 1e-4) if ratio >= 0.2 else (8, 1e-5)
 
 
 def bulk_tables(op, bearing, speed_rpm):
     """The kernels' tuple for a Gecim bulk: the face-gradient tables of ``op`` (9-point pattern), the law's
-    dimensionless parameters ``(delta, lam_a, lam_b, kappa, ratio)`` at this speed, the Gauss rule, the
+    dimensionless parameters ``(delta, lam_a, lam_b, kappa, ratio)`` at this speed and the Newton stop
+    (:func:`face_accuracy`), the Gauss rule, the
     per-face scratch ``(q, dq/dG_n, dq/dG_t, dq/dh)`` and the cell pressure and film of the last evaluation
     (:func:`evaluate` skips a repeat)."""
     from transient.models.journal.film import omega
     from transient.physics.layered import NO_LAYERS
 
-    law = LayeredFilm(bearing.viscosity, bearing.rheology, bearing.layers or NO_LAYERS,
-                      gauss_points=gauss_points(bearing.rheology.viscosity_ratio))
-    params = np.array(law._parameters(bearing.clearance, omega(speed_rpm) * bearing.radius))
+    points, tol = face_accuracy(bearing.rheology.viscosity_ratio)
+    law = LayeredFilm(bearing.viscosity, bearing.rheology, bearing.layers or NO_LAYERS, gauss_points=points)
+    params = np.array(law._parameters(bearing.clearance, omega(speed_rpm) * bearing.radius) + (tol,))
     xg, wg = law._gauss()
     tables = face_gradients(op)
     nf, n = tables[0].shape[0], op.n_cells
@@ -61,7 +63,7 @@ def no_bulk():
     """The empty tuple of the same types (Newtonian bulk: the kernels skip the Gecim flux)."""
     i1, i2, i3 = np.zeros(0, np.int64), np.zeros((0, 2), np.int64), np.zeros((0, 2, WIDTH), np.int64)
     f1, f2, f6 = np.zeros(0), np.zeros((0, 2)), np.zeros((0, WIDTH))
-    return (i2, i1, f1, np.zeros((0, WIDTH), np.int64), f6, f6.copy(), f2, i3, np.zeros(5), f1, f1.copy(),
+    return (i2, i1, f1, np.zeros((0, WIDTH), np.int64), f6, f6.copy(), f2, i3, np.zeros(6), f1, f1.copy(),
             np.zeros((0, 4)), f1.copy(), f1.copy())
 
 
@@ -119,7 +121,7 @@ def _face(f, P, H, bulk):
     """``(q_p . n, dq/dG_n, dq/dG_t, dq/dh)`` of face ``f`` (journal units) into ``bulk``'s scratch. A pure function
     of ``(P, H)``: the face's continuity Newton always starts from the same closed-form guess."""
     cells, dirn, length, cols, an, at, const, pos, params, xg, wg, out = bulk[:12]
-    delta, lam_a, lam_b, kappa, ratio = params[0], params[1], params[2], params[3], params[4]
+    delta, lam_a, lam_b, kappa, ratio, tol = params[0], params[1], params[2], params[3], params[4], params[5]
     gn = const[f, 0]
     gt = const[f, 1]
     for m in range(WIDTH):
@@ -132,11 +134,11 @@ def _face(f, P, H, bulk):
     h = 0.5 * (H[L] + H[R]) if (L >= 0 and R >= 0) else H[L if L >= 0 else R]
     if dirn[f] == 0:
         o = gecim_face_2d(h, GRAD_SCALE * gn, GRAD_SCALE * gt, 1.0, 0.0, 0.0, 0.0, delta, lam_a, lam_b,
-                          kappa, ratio, xg, wg)
+                          kappa, ratio, xg, wg, tol)
         out[f, 0], out[f, 1], out[f, 2], out[f, 3] = o[0], GRAD_SCALE * o[2], GRAD_SCALE * o[3], o[6]
     else:
         o = gecim_face_2d(h, GRAD_SCALE * gt, GRAD_SCALE * gn, 1.0, 0.0, 0.0, 0.0, delta, lam_a, lam_b,
-                          kappa, ratio, xg, wg)
+                          kappa, ratio, xg, wg, tol)
         out[f, 0], out[f, 1], out[f, 2], out[f, 3] = o[1], GRAD_SCALE * o[5], GRAD_SCALE * o[4], o[7]
 
 
