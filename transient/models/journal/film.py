@@ -13,7 +13,7 @@ import numpy as np
 import scipy.sparse.linalg as spla
 
 from transient.fv.reynolds import ReynoldsOperator
-from transient.models.journal.gecim_film import bulk_end_flow, bulk_tables, no_bulk, prefetch
+from transient.models.journal.gecim_film import bulk_end_flow, bulk_tables, face_accuracy, no_bulk, prefetch
 from transient.models.journal.kernels import (N_ROTOR, content_universal, film_force, film_jacobian, film_residual,
                                               state_fields)
 from transient.solvers.newton import NewtonError, newton
@@ -256,10 +256,11 @@ def journal_friction(film, h, G, Gz, theta) -> float:
     and the journal speed ``U = omega R``; a cavitated cell shears only its content fraction theta (Elrod's
     striated film). A Gecim bulk couples the directions: its circumferential wall stress is that of the 2-D law
     at ``(G, Gz)``; the Newtonian law is linear and uses ``G`` alone."""
-    from transient.physics.layered import NO_LAYERS, LayeredFilm
+    from transient.physics.layered import GAUSS_POINTS, NO_LAYERS, LayeredFilm
 
     b = film.bearing
-    law = LayeredFilm(b.viscosity, b.rheology, b.layers or NO_LAYERS)
+    points = face_accuracy(b.rheology.viscosity_ratio)[0] if b.shear_thinning else GAUSS_POINTS
+    law = LayeredFilm(b.viscosity, b.rheology, b.layers or NO_LAYERS, gauss_points=points)
     U = omega(film.speed_rpm) * b.radius
     if b.shear_thinning:
         tau = law.stresses_2d(h, np.stack([G, Gz], axis=-1), (U, 0.0), (0.0, 0.0)).lower_wall[..., 0]
