@@ -16,11 +16,11 @@ The target of issue 13 is a ratio within 3 for the steady solve and the orbit.
 from __future__ import annotations
 
 import json
-import time
 from pathlib import Path
 
 import numpy as np
 
+from transient.bench import best_of
 from transient.models.journal.bearing import JournalBearing, omega
 from transient.models.journal.orbit import JournalOrbit
 from transient.params import rho_kim
@@ -30,15 +30,6 @@ from transient.study import layers as paper
 TITLE = "Gecim bulk: steady solve, orbit and kernel cost against the Newtonian bulk (seed 004)"
 FULL = dict(steady_grid=(241, 40), orbit_grid=(151, 21), revolutions=1.0, rtol=1e-4, repeats=3)
 QUICK = dict(steady_grid=(61, 10), orbit_grid=(48, 8), revolutions=0.25, rtol=1e-4, repeats=2)
-
-
-def _best(fn, repeats):
-    best, out = np.inf, None
-    for _ in range(repeats):
-        t = time.perf_counter()
-        out = fn()
-        best = min(best, time.perf_counter() - t)
-    return best, out
 
 
 def _paper_bearing(grid, rheology):
@@ -69,7 +60,7 @@ def run(quick=False, log=print) -> dict:
         b.steady_state(paper.ECCENTRICITY, paper.SPEED_RPM)
     for k in range(reps):
         for name in (("newtonian", "gecim") if k % 2 == 0 else ("gecim", "newtonian")):
-            w, s = _best(lambda: bearings[name].steady_state(paper.ECCENTRICITY, paper.SPEED_RPM), 1)
+            w, s = best_of(lambda: bearings[name].steady_state(paper.ECCENTRICITY, paper.SPEED_RPM), 1)
             prev = out["steady"].get(name)
             if prev is None or w < prev["wall"]:
                 out["steady"][name] = dict(wall=w, iterations=s.newton_iterations, load_N=s.load)
@@ -89,7 +80,7 @@ def run(quick=False, log=print) -> dict:
     revs, rtol = cfg["revolutions"], cfg["rtol"]
     for k in range(reps):
         for name in (("newtonian", "gecim") if k % 2 == 0 else ("gecim", "newtonian")):
-            w, r = _best(lambda: orbits[name].run(revs, rtol=rtol, y0=starts[name], progress=False), 1)
+            w, r = best_of(lambda: orbits[name].run(revs, rtol=rtol, y0=starts[name], progress=False), 1)
             prev = out["orbit"].get(name)
             if prev is None or w < prev["wall"] / revs:
                 out["orbit"][name] = dict(wall=w / revs, steps=r.stats.n_steps / revs, residuals=r.stats.n_rhs / revs,
@@ -114,8 +105,8 @@ def run(quick=False, log=print) -> dict:
             f.jacobian_data(u, X, Y, data=data)
 
         n_calls = 20
-        wr, _ = _best(lambda: [residual() for _ in range(n_calls)], reps)
-        wj, _ = _best(lambda: [jacobian() for _ in range(n_calls)], reps)
+        wr, _ = best_of(lambda: [residual() for _ in range(n_calls)], reps)
+        wj, _ = best_of(lambda: [jacobian() for _ in range(n_calls)], reps)
         out["kernels"][name] = dict(residual_ms=1e3 * wr / n_calls, jacobian_ms=1e3 * wj / n_calls,
                                     faces=int(f.bulk[0].shape[0]) if name == "gecim" else 0)
     kg = out["kernels"]["gecim"]

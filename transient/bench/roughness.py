@@ -9,22 +9,13 @@ from __future__ import annotations
 
 import platform
 import sys
-import time
 
 import numpy as np
 
+from transient.bench import best_of
 from transient.surfaces.roughness import RoughSurface
 
 UM = 1e-6
-
-
-def _best(fun, repeat):
-    best, out = np.inf, None
-    for _ in range(repeat):
-        t = time.perf_counter()
-        out = fun()
-        best = min(best, time.perf_counter() - t)
-    return best, out
 
 
 def bench_surface(repeat: int = 3) -> str:
@@ -45,7 +36,7 @@ def bench_surface(repeat: int = 3) -> str:
         def run():
             return RoughSurface.generate(shape, 1 * UM, 1 * UM, correlation_lengths=cl, acf=acf, seed=1,
                                          method=method, **extra)
-        t, s = _best(run, repeat)
+        t, s = best_of(run, repeat)
         lx, ly = s.correlation_lengths
         heights = s.meta["heights"]
         rows.append(f"| {method} | {shape[0]}x{shape[1]} | {acf} | {cl[0] / UM:g} | {heights} | "
