@@ -6,7 +6,7 @@ Layers of 0.1, 0.2, 0.3 h_min on both walls (layer viscosity 10 mu; 2 and 100 mu
 (alpha = 0) and mobile (alpha = 0.1 h_min): the load and the peak pressure against the layer-free film, the
 rise split into the thinner bulk and the Darcy flow, and the mid-plane pressure profiles (DIR/layers.png), with
 a Newtonian bulk; the same with the paper's Gecim bulk (kappa* = 0.65, mu_2/mu_1 = 0.57) with the friction
-(DIR/gecim.png); and from mobile to immobile layers the velocity across the film and the interface shear
+(DIR/gecim.png, the pressure fields DIR/gecim_fields.png); and from mobile to immobile layers the velocity across the film and the interface shear
 (DIR/immobility.png, Figs. 9-11). Numbers in DIR/layers.json.
 """
 
@@ -44,7 +44,7 @@ def main(argv=None):
             f"peak {row['peak']:.3f}")
     log(f"written: {save(plots.layered_profiles(res), out / 'layers.png')}")
     g = gecim_cases(grid)
-    rec.put("gecim", {k: v for k, v in g.items() if k != "angle_deg"})
+    rec.put("gecim", {k: v for k, v in g.items() if k not in ("angle_deg", "z_over_B")})
     b = g["base"]
     log(f"[gecim bulk] kappa {g['kappa_Pa']:.4g} Pa: no layers: load {b['gecim']['load_N']:.1f} N "
         f"({b['gecim']['load_N'] / b['newtonian']['load_N']:.3f} of the Newtonian bulk), friction "
@@ -53,7 +53,8 @@ def main(argv=None):
         ge = row["gecim"]
         log(f"  delta {row['delta_over_hmin']:.1f} h_min: load {ge['load_N']:.1f} N ({row['thinning_load_ratio']:.3f} "
             f"of Newtonian), peak {ge['peak']:.3f}; thinner bulk +{100 * row['rise_thinner_bulk']:.1f} %, Darcy "
-            f"{100 * row['darcy_share']:+.1f} %; friction {ge['friction_N']:.3f} N (f = {ge['friction_coefficient']:.4f})")
+            f"{100 * row['darcy_share']:+.1f} %; friction {ge['friction_N']:.3f} N on the journal (f = "
+            f"{ge['friction_coefficient']:.4f}), {ge['bearing_friction_N']:.3f} N on the bearing")
     for row in g["viscosity"]:
         log(f"  mu_ab {row['mu_ab_over_mu']:g} mu (delta 0.1 h_min): load {row['load_N']:.1f} N")
     for row in g["immobility"]:
@@ -62,6 +63,7 @@ def main(argv=None):
             f"{abs(row['interface_upper_Pa']).max() / 1e3:.3f} kPa (bearing side); layer slip u_a/U "
             f"{row['u_over_U'][0]:.5f}")
     log(f"written: {save(plots.gecim_profiles(g), out / 'gecim.png')}")
+    log(f"written: {save(plots.pressure_fields(g), out / 'gecim_fields.png')}")
     log(f"written: {save(plots.immobility(g), out / 'immobility.png')}")
     rec.put("wall_s", time.perf_counter() - t0)
     log(f"[layers] done in {time.perf_counter() - t0:.1f} s; numbers in {out / 'layers.json'}")

@@ -66,3 +66,19 @@ def immobility(res):
     bx.set(xlabel="angle [deg]", ylabel="shear stress at the journal-side interface [kPa]",
            title="interface shear at the mid-plane", xlim=(90, 270))
     return fig
+
+
+def pressure_fields(res):
+    """Figs. 3-6's view with the Gecim bulk: p/p0 over the angle and the half length (mid-plane at 0) for each
+    layer thickness, on one colour scale."""
+    a, z = res["angle_deg"], res["z_over_B"]
+    cases = [("no layers", res["base"]["gecim"]["field"])] + [
+        (f"delta = {r['delta_over_hmin']:g} h_min", r["gecim"]["field"]) for r in res["thickness"]]
+    top = max(float(f.max()) for _, f in cases)
+    fig, axes = figure(1, len(cases), size=(3.3 * len(cases), 3.6))
+    for ax, (title, f) in zip(axes, cases):
+        im = ax.pcolormesh(a, z, f, vmin=0.0, vmax=top, shading="nearest", cmap="viridis")
+        ax.set(xlabel="angle [deg]", title=f"{title}: peak {float(f.max()):.2f}", xlim=(90, 270))
+    axes[0].set_ylabel("z / (L/2) (0: mid-plane)")
+    fig.colorbar(im, ax=list(axes), label="p / p0 (Gecim bulk)", shrink=0.85)
+    return fig

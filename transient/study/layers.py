@@ -79,26 +79,30 @@ def layered_cases(grid=(121, 20)) -> dict:
     return out
 
 
-def _summary(s, p0):
-    return dict(load_N=s.load, peak=s.max_pressure / p0, profile=s.pressure[0] / p0, friction_N=s.friction_force,
-                friction_coefficient=s.friction_force / s.load)
+def _summary(s, p0, field=False):
+    out = dict(load_N=s.load, peak=s.max_pressure / p0, profile=s.pressure[0] / p0, friction_N=s.friction_force,
+               bearing_friction_N=s.bearing_friction_force, friction_coefficient=s.friction_force / s.load)
+    if field:
+        out["field"] = s.pressure / p0
+    return out
 
 
 def gecim_cases(grid=(121, 20)) -> dict:
     """The thickness and viscosity cases with the Gecim bulk next to the Newtonian one, and the immobility cases
-    (:data:`IMMOBILITY`): load [N], peak p*, mid-plane profile, friction [N] and coefficient; per immobility case
+    (:data:`IMMOBILITY`): load [N], peak p*, mid-plane profile, friction on journal and bearing [N] and the
+    coefficient (the Gecim cases with the pressure field p/p0 over (axial row, angle)); per immobility case
     the velocity across the film at the mid-plane peak (z/h, u/U) and the interface shear [Pa] along the angle."""
     rh = gecim_bulk()
     b0, n0 = _state(grid, 0.0, 1.0, 0.0)
     p0 = b0.pressure_scale(SPEED_RPM)
     _, g0 = _state(grid, 0.0, 1.0, 0.0, rh)
-    out = dict(grid=list(grid), p0_Pa=p0, angle_deg=g0.angle_deg, kappa_Pa=rh.kappa,
-               base=dict(newtonian=_summary(n0, p0), gecim=_summary(g0, p0)), thickness=[], viscosity=[],
-               immobility=[])
+    out = dict(grid=list(grid), p0_Pa=p0, angle_deg=g0.angle_deg, z_over_B=g0.z / (0.5 * BEARING["length"]),
+               kappa_Pa=rh.kappa, base=dict(newtonian=_summary(n0, p0), gecim=_summary(g0, p0, field=True)),
+               thickness=[], viscosity=[], immobility=[])
     for d in THICKNESS[1:]:
         row = dict(delta_over_hmin=d)
         for tag, a, law in (("newtonian", ALPHA, None), ("gecim", ALPHA, rh), ("gecim_immobile", 0.0, rh)):
-            row[tag] = _summary(_state(grid, d, 10.0, a, law)[1], p0)
+            row[tag] = _summary(_state(grid, d, 10.0, a, law)[1], p0, field=tag == "gecim")
         row["thinning_load_ratio"] = row["gecim"]["load_N"] / row["newtonian"]["load_N"]
         row["rise_thinner_bulk"] = row["gecim_immobile"]["load_N"] / g0.load - 1.0
         row["darcy_share"] = (row["gecim"]["load_N"] - row["gecim_immobile"]["load_N"]) / g0.load

@@ -81,8 +81,9 @@ class FilmState(Result):
     ``z`` [m] are the cell-centre coordinates. ``force`` [N] is the film force on the journal
     (x towards the load, y at +90 deg in the direction of rotation), ``load`` [N] its magnitude (the
     external load it carries) and ``attitude_angle_deg`` the angle from the load line to the line of
-    centres, in the direction of rotation. ``friction_force`` [N]: the film's drag on the journal surface
-    (:func:`~transient.models.journal.film.journal_friction`; boundary layers included).
+    centres, in the direction of rotation. ``friction_force`` [N]: the film's drag on the journal surface;
+    ``bearing_friction_force`` [N]: its drag on the bearing surface, along the rotation
+    (:func:`~transient.models.journal.film.wall_friction`; boundary layers and the Gecim bulk included).
     """
 
     time_axis = None
@@ -100,6 +101,7 @@ class FilmState(Result):
     u: np.ndarray = quantity("-", repr=False)
     newton_iterations: int = 0
     friction_force: float = quantity("N", float("nan"))
+    bearing_friction_force: float = quantity("N", float("nan"))
     film_thickness: np.ndarray = quantity("m", None, repr=False)
     pressure_gradient: np.ndarray = quantity("Pa/m", None, repr=False)
     axial_pressure_gradient: np.ndarray = quantity("Pa/m", None, repr=False)

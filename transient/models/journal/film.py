@@ -218,6 +218,7 @@ def film_state(film, u, X, Y, F, P, content, iterations=0):
     pressure = grid.to_2d(b.cavitation_pressure + film.p0 * np.asarray(P)).copy()
     theta = grid.to_2d(np.asarray(content, dtype=float)).copy()
     h, G, Gz = film_geometry(film, X, Y, pressure)
+    friction = wall_friction(film, h, G, Gz, theta)
     ly = b.layers
     rh = b.rheology
     return FilmState(
@@ -225,7 +226,7 @@ def film_state(film, u, X, Y, F, P, content, iterations=0):
         force=(Fx, Fy), load=float(np.hypot(Fx, Fy)), min_film=b.clearance * (1.0 - eps),
         speed_rpm=film.speed_rpm, pressure=pressure, film_content=theta, angle_deg=np.degrees(grid.x.centres),
         z=grid.z.centres * b.radius, u=np.array(u, dtype=float), newton_iterations=iterations,
-        friction_force=journal_friction(film, h, G, Gz, theta), film_thickness=h, pressure_gradient=G,
+        friction_force=friction[0], bearing_friction_force=friction[1], film_thickness=h, pressure_gradient=G,
         axial_pressure_gradient=Gz, viscosity=b.viscosity, sliding_speed=omega(film.speed_rpm) * b.radius,
         layers=None if ly is None else (ly.thickness, ly.viscosity[0], ly.viscosity[1], ly.alpha),
         gecim=(rh.kappa, rh.viscosity_ratio) if b.shear_thinning else None)
@@ -249,13 +250,16 @@ def film_geometry(film, X, Y, pressure):
     return h, G, Gz
 
 
-def journal_friction(film, h, G, Gz, theta) -> float:
-    """Friction force [N] on the journal: ``-sum tau_wall min(theta, 1) dA`` over the bearing, with the wall shear
-    stress of the film's flow law (seed 004's layered film; ``mu U / h - (h/2) dp/ds`` for a Newtonian bulk without
-    layers) at each cell's film ``h`` and pressure gradients ``G = dp/ds``, ``Gz = dp/dz`` (:func:`film_geometry`)
-    and the journal speed ``U = omega R``; a cavitated cell shears only its content fraction theta (Elrod's
-    striated film). A Gecim bulk couples the directions: its circumferential wall stress is that of the 2-D law
-    at ``(G, Gz)``; the Newtonian law is linear and uses ``G`` alone."""
+def wall_friction(film, h, G, Gz, theta) -> tuple[float, float]:
+    """Friction forces [N] of the film on the journal (its drag, against the rotation) and on the bearing (along the
+    rotation): ``-sum tau(0) min(theta, 1) dA`` and ``-sum tau(h) min(theta, 1) dA`` over the bearing, with the
+    wall shear stresses ``tau(0)``, ``tau(h) = tau(0) + G h`` of the film's flow law (seed 004's layered film;
+    ``tau(0) = -mu U / h - (h/2) dp/ds`` for a Newtonian bulk without layers) at each cell's film ``h`` and pressure
+    gradients ``G = dp/ds``, ``Gz = dp/dz`` (:func:`film_geometry`), the journal speed ``U = omega R``; a cavitated
+    cell shears only its content fraction theta (Elrod's striated film). A Gecim bulk couples the directions: its
+    circumferential wall stresses are those of the 2-D law at ``(G, Gz)``; the Newtonian law is linear and uses
+    ``G`` alone. The two differ by ``sum G h theta dA``: the moment of the pressure force about the journal centre
+    over R (test)."""
     from transient.physics.layered import GAUSS_POINTS, NO_LAYERS, LayeredFilm
 
     b = film.bearing
@@ -263,9 +267,10 @@ def journal_friction(film, h, G, Gz, theta) -> float:
     law = LayeredFilm(b.viscosity, b.rheology, b.layers or NO_LAYERS, gauss_points=points)
     U = omega(film.speed_rpm) * b.radius
     if b.shear_thinning:
-        tau = law.stresses_2d(h, np.stack([G, Gz], axis=-1), (U, 0.0), (0.0, 0.0)).lower_wall[..., 0]
+        s = law.stresses_2d(h, np.stack([G, Gz], axis=-1), (U, 0.0), (0.0, 0.0))
+        lower, upper = s.lower_wall[..., 0], s.upper_wall[..., 0]
     else:
-        tau = law.stresses(h, G, U, 0.0).lower_wall
-    area = b.grid.to_2d(film.area) * b.radius ** 2
-    sym = 2.0 if b.symmetric else 1.0
-    return float(-sym * np.sum(tau * np.minimum(theta, 1.0) * area))
+        s = law.stresses(h, G, U, 0.0)
+        lower, upper = s.lower_wall, s.upper_wall
+    weight = (2.0 if b.symmetric else 1.0) * np.minimum(theta, 1.0) * b.grid.to_2d(film.area) * b.radius ** 2
+    return float(-np.sum(lower * weight)), float(-np.sum(upper * weight))
