@@ -160,6 +160,19 @@ def test_journal_bearing(key, value):
 
 
 @SETTINGS
+@given(key=st.sampled_from(["kappa", "viscosity_ratio", "rheology"]), value=hostile)
+def test_journal_with_a_gecim_bulk(key, value):
+    """The Gecim bulk inside the journal film: a hostile kappa or ratio, or a hostile ``rheology`` argument."""
+    def run():
+        rh = value if key == "rheology" else Gecim(**dict(dict(kappa=1e3, viscosity_ratio=0.57), **{key: value}))
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            return JournalBearing(**dict(JOURNAL, grid=(16, 3)), rheology=rh).steady_state(0.6, 6000.0)
+
+    _outcome(key, run, lambda st_: _finite(st_.pressure, st_.force, st_.friction_force, st_.bearing_friction_force))
+
+
+@SETTINGS
 @given(key=st.sampled_from(["angle_deg", "width_deg"]), value=hostile)
 def test_groove(key, value):
     _outcome(key, lambda: Groove(**{key: value}), lambda g: _finite(JournalBearing(**dict(JOURNAL, groove=g))

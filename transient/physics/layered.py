@@ -481,7 +481,7 @@ class Newtonian:
 class Gecim:
     """Gecim (1990) shear thinning: ``mu = mu_1 (kappa + mu_2 gdot)/(kappa + mu_1 gdot)``.
 
-    ``kappa`` [Pa] the stress scale of the transition (finite, > 0: the limits are Newtonian ``mu_1`` as
+    ``kappa`` [Pa] the stress scale of the transition (1e-9 ... 1e12 Pa: the limits are Newtonian ``mu_1`` as
     ``kappa -> inf`` and ``mu_2`` as ``kappa -> 0``); ``viscosity_ratio = mu_2/mu_1`` in
     ``[RATIO_MIN, 1]`` (1 is Newtonian; the stress is strictly increasing in the shear rate for any
     ratio > 0, but the law is a shear-thinning fit and the quadrature accuracy is stated down to 0.05).
@@ -491,7 +491,10 @@ class Gecim:
     viscosity_ratio: float
 
     def __post_init__(self):
-        object.__setattr__(self, "kappa", check_range("kappa", self.kappa, "Pa", 0.0, 1e12, low_open=True))
+        object.__setattr__(self, "kappa", check_range(
+            "kappa", self.kappa, "Pa", 1e-9, 1e12,
+            why="(the transition stress; below 1e-9 Pa the law is the Newtonian mu_2 fluid to kappa/tau, and the "
+            "dimensionless kernels would overflow)"))
         object.__setattr__(self, "viscosity_ratio", check_range(
             "viscosity_ratio mu_2/mu_1", self.viscosity_ratio, "-", RATIO_MIN, 1.0,
             why="(shear thinning: mu_2 <= mu_1; below 0.05 the law approaches a kink at tau = kappa)"))
