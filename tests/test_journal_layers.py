@@ -135,7 +135,7 @@ def test_seed_004_findings(tmp_path):
     assert g["base"]["gecim"]["friction_N"] < g["base"]["newtonian"]["friction_N"]
     shear = [np.abs(r["interface_lower_Pa"]).max() for r in g["immobility"]]
     assert shear[0] < shear[1] < shear[2] and shear[3] < shear[4], shear  # mu_ab 2 < 10 < 100; alpha 0.05 > 0
-    for name in ("layers.png", "gecim.png", "gecim_fields.png", "immobility.png"):
+    for name in ("layers.png", "gecim.png", "gecim_fields.png", "immobility.png", "dynamics.png"):
         assert (tmp_path / name).exists()
 
 

@@ -82,3 +82,18 @@ def pressure_fields(res):
     axes[0].set_ylabel("z / (L/2) (0: mid-plane)")
     fig.colorbar(im, ax=list(axes), label="p / p0 (Gecim bulk)", shrink=0.85)
     return fig
+
+
+def dynamics(res):
+    """The unbalance orbit's last revolution (x, y in C, centred on its mean) with the Newtonian and the Gecim bulk
+    (:func:`transient.study.layers.shear_thinning_dynamics`), the Lund thresholds in the legend."""
+    fig, ax = figure(1, 1, size=(5.4, 4.8))
+    for name, colour in (("newtonian", "black"), ("gecim", "tab:red")):
+        r = res[name]
+        x, y = r["x_C"] - r["x_C"].mean(), r["y_C"] - r["y_C"].mean()
+        ax.plot(x, y, "-", color=colour,
+                label=f"{name}: e/C {r['eccentricity']:.3f}, threshold {r['threshold_rpm']:.0f} rpm")
+    ax.set(xlabel="x - mean [C] (load direction)", ylabel="y - mean [C]", aspect="equal",
+           title=f"unbalance orbit at {res['speed_rpm']:.0f} rpm, last of {res['revolutions']:g} revolutions")
+    ax.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.14))
+    return fig

@@ -25,6 +25,8 @@ from __future__ import annotations
 import numpy as np
 
 from transient.models.journal.bearing import JournalBearing, omega
+from transient.models.journal.orbit import JournalOrbit
+from transient.params import rho_kim
 from transient.physics.layered import BoundaryLayers, Gecim
 
 #: Jang's example bearing (seed 004: D = 25 mm, c = 10 um, R/B = 1); viscosity and speed set only the scale
@@ -118,4 +120,27 @@ def gecim_cases(grid=(121, 20)) -> dict:
         out["immobility"].append(dict(alpha_over_hmin=a, mu_ab_over_mu=v, peak_angle_deg=peak, load_N=s.load,
                                       z_over_h=z / z[-1], u_over_U=u / U, interface_lower_Pa=lower,
                                       interface_upper_Pa=upper, friction_N=s.friction_force))
+    return out
+
+
+def shear_thinning_dynamics(grid=(151, 21), revolutions=4.0, speed_rpm=6000.0) -> dict:
+    """The Gecim bulk in the rotor computations (seed 003's Rho & Kim bearing and rotor, Elrod film): with the
+    Newtonian bulk and with a Gecim bulk of kappa* = 0.65 at ``speed_rpm`` (kappa fixed in Pa), mu_2/mu_1 = 0.57:
+    the static equilibrium, K and C, the Lund threshold, and the unbalance orbit (0.01 C) over ``revolutions`` from
+    the equilibrium (the last revolution's x, y in units of C)."""
+    B, rotor = rho_kim.BEARING, rho_kim.ROTOR
+    kappa = KAPPA_STAR * B["viscosity"] * omega(speed_rpm) * 0.5 * B["diameter"] / B["clearance"]
+    out = dict(grid=list(grid), speed_rpm=speed_rpm, kappa_Pa=kappa, revolutions=revolutions)
+    for name, rh in (("newtonian", None), ("gecim", Gecim(kappa=kappa, viscosity_ratio=RATIO))):
+        b = JournalBearing(**B, grid=tuple(grid), rheology=rh)
+        eq = b.equilibrium(rotor["load"], speed_rpm)
+        K, C = b.coefficients(rotor["load"], speed_rpm)
+        o = JournalOrbit(b, rotor["rotor_mass"], 0.01 * B["clearance"], rotor["load"], speed_rpm)
+        r = o.run(revolutions, rtol=1e-5, outputs_per_revolution=100, progress=False)
+        last = r.t >= r.t[-1] - 60.0 / speed_rpm * (1 + 1e-6)  # the last revolution, closed
+        x, y = r.x[last] / B["clearance"], r.y[last] / B["clearance"]
+        out[name] = dict(eccentricity=eq.eccentricity_ratio, attitude_deg=eq.attitude_angle_deg,
+                         friction_N=eq.friction_force, K=K, C=C,
+                         threshold_rpm=b.stability_threshold(rotor["rotor_mass"], rotor["load"]), x_C=x, y_C=y,
+                         orbit_span_C=(float(np.ptp(x)), float(np.ptp(y))))
     return out
