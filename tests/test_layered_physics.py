@@ -327,7 +327,7 @@ def test_velocity_profile():
 # --------------------------------------------------------------------------------------------------
 
 @pytest.mark.parametrize("make, match", [
-    (lambda: Gecim(-1.0, 0.5), r"kappa = -1\.0 \[Pa\].*\(0, 1e\+12\] Pa"),
+    (lambda: Gecim(-1.0, 0.5), r"kappa = -1\.0 \[Pa\].*\[1e-09, 1e\+12\] Pa"),
     (lambda: Gecim(float("inf"), 0.5), r"kappa = inf \[Pa\]"),
     (lambda: Gecim(1.0, 1.5), r"viscosity_ratio mu_2/mu_1 = 1\.5 \[-\].*\[0\.05, 1\]"),
     (lambda: Gecim(1.0, 0.0), r"viscosity_ratio mu_2/mu_1 = 0\.0"),
