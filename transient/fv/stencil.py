@@ -128,3 +128,12 @@ class Stencil:
         if data.shape != (self.nnz,):
             raise ValueError(f"data must have shape ({self.nnz},), got {data.shape}")
         return sp.csc_matrix((data.copy(), self.indices.copy(), self.indptr.copy()), shape=(self.n, self.n))
+
+
+def five_point_mask(stencil: Stencil) -> sp.csc_matrix:
+    """Ones on the 5-point pattern of the cells (no extras), e.g. to keep the 5-point part of a 9-point Jacobian
+    by ``J.multiply(mask)``."""
+    nb, k = stencil.nb, np.arange(stencil.n_cells)
+    rows = np.concatenate([k] + [k[nb[:, d] >= 0] for d in range(4)])
+    cols = np.concatenate([k] + [nb[nb[:, d] >= 0, d] for d in range(4)])
+    return sp.csc_matrix((np.ones(rows.size), (rows, cols)), shape=(stencil.n_cells, stencil.n_cells))

@@ -43,6 +43,7 @@ import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
 from transient.fv.reynolds import ReynoldsOperator, jacobian_kernel, residual_kernel
+from transient.fv.stencil import five_point_mask
 from transient.models.journal.film import film_state
 from transient.models.journal.gecim_film import bulk_jacobian, bulk_residual, bulk_tables, prefetch
 from transient.models.journal.kernels import N_ROTOR, conductances, film_force, position_derivatives
@@ -89,12 +90,7 @@ class ReynoldsFilm:
         self.layers = b.layer_groups()
         self.bulk = bulk_tables(op, b, speed_rpm) if b.shear_thinning else None
         # the solve's iteration matrix for a Gecim bulk keeps the 5-point part of dG/dP (see solve)
-        self.five_point = None
-        if self.bulk is not None:
-            nb, k = op.stencil.nb, np.arange(n)
-            rows = np.concatenate([k] + [k[nb[:, d] >= 0] for d in range(4)])
-            cols = np.concatenate([k] + [nb[nb[:, d] >= 0, d] for d in range(4)])
-            self.five_point = sp.csc_matrix((np.ones(rows.size), (rows, cols)), shape=(n, n))
+        self.five_point = None if self.bulk is None else five_point_mask(op.stencil)
 
     # fields, residual and Jacobian --------------------------------------------------------------
     def _fields(self, X, Y):
