@@ -21,10 +21,10 @@ from pathlib import Path
 import numpy as np
 
 from transient.bench import best_of
-from transient.models.journal.bearing import JournalBearing, omega
+from transient.models.journal.bearing import JournalBearing
 from transient.models.journal.orbit import JournalOrbit
 from transient.params import rho_kim
-from transient.physics.layered import BoundaryLayers, Gecim
+from transient.physics.layered import BoundaryLayers
 from transient.study import layers as paper
 
 TITLE = "Gecim bulk: steady solve, orbit and kernel cost against the Newtonian bulk (seed 004)"
@@ -41,12 +41,6 @@ def _paper_bearing(grid, rheology):
 
 def _orbit_bearing(grid, rheology):
     return JournalBearing(**rho_kim.BEARING, grid=grid, rheology=rheology)
-
-
-def _rho_kim_gecim(speed_rpm):
-    b = rho_kim.BEARING
-    kappa = paper.KAPPA_STAR * b["viscosity"] * omega(speed_rpm) * 0.5 * b["diameter"] / b["clearance"]
-    return Gecim(kappa=kappa, viscosity_ratio=paper.RATIO)
 
 
 def run(quick=False, log=print) -> dict:
@@ -73,7 +67,7 @@ def run(quick=False, log=print) -> dict:
     rpm, CL = 6000.0, rho_kim.BEARING["clearance"]
     orbits = {name: JournalOrbit(_orbit_bearing(cfg["orbit_grid"], rh), rho_kim.ROTOR["rotor_mass"], 0.01 * CL,
                                  rho_kim.ROTOR["load"], rpm)
-              for name, rh in (("newtonian", None), ("gecim", _rho_kim_gecim(rpm)))}
+              for name, rh in (("newtonian", None), ("gecim", paper.gecim_bulk(rho_kim.BEARING, rpm)))}
     starts = {name: o.initial_state() for name, o in orbits.items()}
     for name, o in orbits.items():
         o.run(0.02, y0=starts[name], progress=False)

@@ -45,10 +45,11 @@ IMMOBILITY = ((0.1, 2.0), (0.1, 10.0), (0.1, 100.0), (0.05, 10.0), (0.0, 10.0))
 IMMOBILITY_DELTA = 0.2
 
 
-def gecim_bulk():
-    """The paper's Gecim bulk at the scenario's speed (kappa [Pa] from kappa*)."""
-    C, mu, R = BEARING["clearance"], BEARING["viscosity"], 0.5 * BEARING["diameter"]
-    return Gecim(kappa=KAPPA_STAR * mu * omega(SPEED_RPM) * R / C, viscosity_ratio=RATIO)
+def gecim_bulk(bearing=BEARING, speed_rpm=SPEED_RPM):
+    """The paper's Gecim bulk for a bearing (a dict of :class:`JournalBearing` arguments, SI) at ``speed_rpm``:
+    kappa [Pa] = kappa* mu_1 omega R / C, mu_2/mu_1 = :data:`RATIO`."""
+    C, mu, R = bearing["clearance"], bearing["viscosity"], 0.5 * bearing["diameter"]
+    return Gecim(kappa=KAPPA_STAR * mu * omega(speed_rpm) * R / C, viscosity_ratio=RATIO)
 
 
 def _state(grid, thickness, viscosity_ratio, alpha, rheology=None):
@@ -129,9 +130,9 @@ def shear_thinning_dynamics(grid=(151, 21), revolutions=4.0, speed_rpm=6000.0) -
     the static equilibrium, K and C, the Lund threshold, and the unbalance orbit (0.01 C) over ``revolutions`` from
     the equilibrium (the last revolution's x, y in units of C)."""
     B, rotor = rho_kim.BEARING, rho_kim.ROTOR
-    kappa = KAPPA_STAR * B["viscosity"] * omega(speed_rpm) * 0.5 * B["diameter"] / B["clearance"]
-    out = dict(grid=list(grid), speed_rpm=speed_rpm, kappa_Pa=kappa, revolutions=revolutions)
-    for name, rh in (("newtonian", None), ("gecim", Gecim(kappa=kappa, viscosity_ratio=RATIO))):
+    gecim = gecim_bulk(B, speed_rpm)
+    out = dict(grid=list(grid), speed_rpm=speed_rpm, kappa_Pa=gecim.kappa, revolutions=revolutions)
+    for name, rh in (("newtonian", None), ("gecim", gecim)):
         b = JournalBearing(**B, grid=tuple(grid), rheology=rh)
         eq = b.equilibrium(rotor["load"], speed_rpm)
         K, C = b.coefficients(rotor["load"], speed_rpm)
