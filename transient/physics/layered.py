@@ -598,6 +598,15 @@ class LayeredFilm:
         arrays = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in (h, G, U1, U2)))
         return arrays[0].shape, [np.ascontiguousarray(a).ravel() for a in arrays]
 
+    @staticmethod
+    def _faces_2d(h, G, U1, U2):
+        """Broadcast 2-D face data (``h`` of shape ``S``; ``G, U1, U2`` of shape ``S + (2,)``) to a flat ``h`` and
+        ``(n, 2)`` arrays; also return ``S``."""
+        G, U1, U2 = (np.asarray(v, dtype=float) for v in (G, U1, U2))
+        hv, G, U1, U2 = np.broadcast_arrays(np.asarray(h, dtype=float)[..., None], G, U1, U2)
+        return hv.shape[:-1], [np.ascontiguousarray(hv[..., 0]).ravel()] + [
+            np.ascontiguousarray(v).reshape(-1, 2) for v in (G, U1, U2)]
+
     def _parameters(self, L, V):
         """Dimensionless ``delta, lam_a, lam_b, kappa, ratio`` (Newtonian: ``kappa = 1, ratio = 1``)."""
         ly, mu = self.layers, self.viscosity
@@ -632,13 +641,8 @@ class LayeredFilm:
         the wall velocities ``U1, U2`` [m/s] of shape ``S + (2,)``. Returns ``q_couette, q_pressure,
         dqp_dh`` of shape ``S + (2,)`` and ``dqp_dG`` of shape ``S + (2, 2)`` (``[..., a, b] = dq_a/dG_b``).
         For a Gecim bulk the two directions are coupled through ``|gdot|`` (eq. 12)."""
-        G, U1, U2 = (np.asarray(v, dtype=float) for v in (G, U1, U2))
-        h = np.asarray(h, dtype=float)
-        hv, G, U1, U2 = np.broadcast_arrays(h[..., None], G, U1, U2)
-        shape = hv.shape[:-1]
-        h_flat = np.ascontiguousarray(hv[..., 0]).ravel()
-        G, U1, U2 = (np.ascontiguousarray(v).reshape(-1, 2) for v in (G, U1, U2))
-        hs, Gs, U1s, U2s, L, V = self._scaled(h_flat, G, U1, U2, scales)
+        shape, faces = self._faces_2d(h, G, U1, U2)
+        hs, Gs, U1s, U2s, L, V = self._scaled(*faces, scales)
         delta, lam_a, lam_b, kappa, ratio = self._parameters(L, V)
         qp, dh = np.empty_like(Gs), np.empty_like(Gs)
         dG = np.zeros((hs.size, 2, 2))
@@ -669,12 +673,8 @@ class LayeredFilm:
     def stresses_2d(self, h, G, U1, U2):
         """:class:`ShearStresses` of a 2-D film [Pa]: each entry of shape ``S + (2,)`` (the stress vector), for
         ``h`` [m] of shape ``S`` and ``G`` [Pa/m], ``U1, U2`` [m/s] of shape ``S + (2,)``."""
-        G, U1, U2 = (np.asarray(v, dtype=float) for v in (G, U1, U2))
-        h = np.asarray(h, dtype=float)
-        hv, G, U1, U2 = np.broadcast_arrays(h[..., None], G, U1, U2)
-        shape = hv.shape[:-1]
-        G, U1, U2 = (np.ascontiguousarray(v).reshape(-1, 2) for v in (G, U1, U2))
-        hs, Gs, U1s, U2s, L, V = self._scaled(np.ascontiguousarray(hv[..., 0]).ravel(), G, U1, U2, None)
+        shape, faces = self._faces_2d(h, G, U1, U2)
+        hs, Gs, U1s, U2s, L, V = self._scaled(*faces, None)
         delta, lam_a, lam_b, kappa, ratio = self._parameters(L, V)
         qp, dh, t0 = np.empty_like(Gs), np.empty_like(Gs), np.empty_like(Gs)
         gecim_flow_2d(hs, Gs, U1s, U2s, delta, lam_a, lam_b, kappa, ratio, *self._gauss(), qp,
@@ -686,9 +686,7 @@ class LayeredFilm:
     def velocity_2d(self, h, G, U1, U2, z):
         """Velocity vectors [m/s], shape ``(len(z), 2)``, at heights ``z`` [m] across one 2-D film (``h`` scalar,
         ``G, U1, U2`` 2-vectors)."""
-        h = float(h)
-        G, U1, U2 = (np.asarray(v, dtype=float).reshape(1, 2) for v in (G, U1, U2))
-        hs, Gs, U1s, U2s, L, V = self._scaled(np.array([h]), G, U1, U2, None)
+        hs, Gs, U1s, U2s, L, V = self._scaled(*self._faces_2d(float(h), G, U1, U2)[1], None)
         delta, lam_a, lam_b, kappa, ratio = self._parameters(L, V)
         zs = np.asarray(z, dtype=float).ravel()
         u = np.empty((zs.size, 2))
