@@ -44,13 +44,9 @@ import scipy.sparse.linalg as spla
 
 from transient.fv.reynolds import ReynoldsOperator, jacobian_kernel, residual_kernel
 from transient.fv.stencil import five_point_mask
-from transient.models.journal.film import film_state
+from transient.models.journal.film import film_state, omega
 from transient.models.journal.gecim_film import bulk_jacobian, bulk_residual, bulk_tables, prefetch
 from transient.models.journal.kernels import N_ROTOR, conductances, film_force, position_derivatives
-
-
-def _omega(speed_rpm) -> float:
-    return 2.0 * np.pi * float(speed_rpm) / 60.0
 
 
 class ReynoldsFilm:
@@ -65,7 +61,7 @@ class ReynoldsFilm:
         b = bearing
         self.bearing = b
         self.speed_rpm = float(speed_rpm)
-        self.omega = _omega(speed_rpm)
+        self.omega = omega(speed_rpm)
         self.p0 = b.pressure_scale(speed_rpm)
         self.force_scale = self.p0 * b.radius ** 2
         self.u_supply = (b.supply_pressure - b.cavitation_pressure) / self.p0
