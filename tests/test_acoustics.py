@@ -162,15 +162,11 @@ def test_no_field_when_not_asked():
 
 
 def test_noise_scenario_tiny(tmp_path):
-    import importlib.util
     import json
-    from pathlib import Path
 
-    path = Path(__file__).resolve().parents[1] / "scenarios" / "journal_noise.py"
-    spec = importlib.util.spec_from_file_location("journal_noise_scenario", path)
-    mod = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(mod)
-    mod.main(["--grid", "24", "4", "--speeds", "4000", "6000", "--revolutions", "2", "--out", str(tmp_path)])
+    from scenario_loader import load_scenario
+
+    load_scenario("journal_noise").main(["--grid", "24", "4", "--speeds", "4000", "6000", "--revolutions", "2", "--out", str(tmp_path)])
     for name in ("fig5_fig6_pfluct.png", "fig4_fig7_spectra.png", "fig9_to_fig12_levels.png", "journal_noise.json"):
         assert (tmp_path / name).stat().st_size > 1000, name
     d = json.loads((tmp_path / "journal_noise.json").read_text())

@@ -110,14 +110,9 @@ def test_seed_004_findings(tmp_path):
     strongly, more for thicker layers; the layer viscosity matters less than the thickness (2 -> 100 mu moves the
     load less than 0.1 -> 0.2 h_min does); the Gecim bulk carries 0.57..1 of the Newtonian load and less friction;
     the interface shear grows as the layers become immobile (Figs. 9-11: mu_ab up, alpha down)."""
-    import importlib.util
-    import pathlib
+    from scenario_loader import load_scenario
 
-    path = pathlib.Path(__file__).resolve().parents[1] / "scenarios" / "journal_layers.py"
-    spec = importlib.util.spec_from_file_location("journal_layers", path)
-    mod = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(mod)
-    data = mod.main(["--quick", "--out", str(tmp_path)])
+    data = load_scenario("journal_layers").main(["--quick", "--out", str(tmp_path)])
     c = data["cases"]
     peaks = [c["base"]["peak"]] + [r["mobile"]["peak"] for r in c["thickness"]]
     assert all(b > 1.3 * a for a, b in zip(peaks[:-1], peaks[1:])), peaks

@@ -1,25 +1,15 @@
 """Oil whip (seed 003): the whip scenario end to end on a tiny grid, the run-up's state hand-over between
 speeds, and the whirl numbers on a synthetic orbit."""
 
-import importlib.util
 import json
-from pathlib import Path
 
 import numpy as np
 import pytest
 
+from scenario_loader import load_scenario
 from transient.models.journal import JournalBearing, JournalOrbit, OrbitResult
 from transient.params.rho_kim import BEARING, ROTOR
 from transient.study.whip import carry_state, whirl_numbers
-
-SCENARIO = Path(__file__).resolve().parents[1] / "scenarios" / "journal_whip.py"
-
-
-def _load():
-    spec = importlib.util.spec_from_file_location("journal_whip_scenario", SCENARIO)
-    mod = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(mod)
-    return mod
 
 
 def test_whip_scenario_quick_and_resumed(tmp_path):
@@ -27,7 +17,7 @@ def test_whip_scenario_quick_and_resumed(tmp_path):
     synchronous (whirl ratio ~1), above it the whirl is at about half the shaft speed and grows (measured
     0.96, 0.51, 0.45, 0.47, 0.50 over the run-up; 1.5x: e/C up to 0.93 within 16 revolutions). A second
     call with the same settings resumes from the checkpoints and gives the same numbers."""
-    mod = _load()
+    mod = load_scenario("journal_whip")
     args = ["--quick", "--grid", "32", "4", "--revolutions", "16", "--out", str(tmp_path)]
     data = mod.main(args)
     for name in ("run_up.png", "whirl_1.2x.png", "whirl_1.5x.png", "whip.json", "run_up.npz", "whirl_1.5x.npz"):

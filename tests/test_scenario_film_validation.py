@@ -2,22 +2,17 @@
 second-order convergence; it writes its figure and numbers."""
 
 import csv
-import importlib.util
 import json
-from pathlib import Path
 
 import numpy as np
 import pytest
 
-SCENARIO = Path(__file__).resolve().parents[1] / "scenarios" / "film_validation.py"
+from scenario_loader import load_scenario
 
 
 @pytest.fixture(scope="module")
 def scenario():
-    spec = importlib.util.spec_from_file_location("film_validation", SCENARIO)
-    mod = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(mod)
-    return mod
+    return load_scenario("film_validation")
 
 
 def test_quick_run_writes_files_and_second_order(scenario, tmp_path, capsys):

@@ -1,21 +1,12 @@
 """The seed-003 journal orbit scenario runs end to end (quick settings, tiny grid)."""
 
-import importlib.util
 import json
-from pathlib import Path
 
-SCENARIO = Path(__file__).resolve().parents[1] / "scenarios" / "journal_orbit.py"
-
-
-def _load():
-    spec = importlib.util.spec_from_file_location("journal_orbit_scenario", SCENARIO)
-    mod = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(mod)
-    return mod
+from scenario_loader import load_scenario
 
 
 def test_journal_scenario_quick(tmp_path):
-    data = _load().main(["--quick", "--grid", "24", "4", "--out", str(tmp_path)])
+    data = load_scenario("journal_orbit").main(["--quick", "--grid", "24", "4", "--out", str(tmp_path)])
     for name in ("journal_fig3_orbit.png", "journal_fig4_spectrum.png", "journal_fig8_response.png",
                  "journal_stability.png", "journal_orbit.json", "orbit_6000rpm.npz"):
         assert (tmp_path / name).stat().st_size > 1000, name
