@@ -76,22 +76,53 @@ def _orbit_state(switch_width, film="classical"):
     return o, prob, y
 
 
-@pytest.mark.parametrize("switch_width, film", CASES)
-def test_ode_jacobian_matches_finite_differences(switch_width, film):
-    o, prob, y = _orbit_state(switch_width, film)
-    n = o.n
+TAU = 0.3  # the time at which the Jacobians are checked
+
+
+def _rhs_jacobians(prob, y, step):
+    """The analytic ``df/dy`` of an ODE problem at ``y`` (dense) and its central differences."""
+    n = y.size
     pat = prob.jac_pattern.tocsc()
     data = np.empty(pat.nnz)
-    prob.jac_rhs(0.3, y, data)
-    J_an = sp.csc_matrix((data, pat.indices, pat.indptr), shape=(n, n)).toarray()
+    prob.jac_rhs(TAU, y, data)
 
     def f(v):
         out = np.empty(n)
-        prob.rhs(0.3, v, out)
+        prob.rhs(TAU, v, out)
         return out
 
-    J_fd = central_jacobian(f, y, n, step=5e-4 * o.film.width)
-    rel, outside = _compare(J_an, J_fd, pat.toarray() != 0)
+    return sp.csc_matrix((data, pat.indices, pat.indptr), shape=(n, n)).toarray(), central_jacobian(f, y, n, step=step)
+
+
+def _residual_jacobians(prob, y, yp, cj, step):
+    """The analytic ``dF/dy + cj dF/dy'`` of an IDA problem at ``(y, y')`` (dense) and its central differences."""
+    n = y.size
+    pat = prob.jac_pattern.tocsc()
+    data = np.empty(pat.nnz)
+    prob.jac_residual(TAU, y, yp, cj, data)
+
+    def F(v, vp):
+        out = np.empty(n)
+        prob.residual(TAU, v, vp, out)
+        return out
+
+    J_fd = central_jacobian(lambda v: F(v, yp), y, n, step=step) + cj * central_jacobian(lambda v: F(y, v), yp, n,
+                                                                                          step=step)
+    return sp.csc_matrix((data, pat.indices, pat.indptr), shape=(n, n)).toarray(), J_fd
+
+
+def _inconsistent_yp(prob, y):
+    """``y'`` off the solution on purpose (1.3 times the rhs): the residual Jacobian must hold anywhere."""
+    yp = np.empty(y.size)
+    prob.rhs(TAU, y, yp)
+    return 1.3 * yp
+
+
+@pytest.mark.parametrize("switch_width, film", CASES)
+def test_ode_jacobian_matches_finite_differences(switch_width, film):
+    o, prob, y = _orbit_state(switch_width, film)
+    J_an, J_fd = _rhs_jacobians(prob, y, 5e-4 * o.film.width)
+    rel, outside = _compare(J_an, J_fd, prob.jac_pattern.toarray() != 0)
     assert rel < 1e-6, rel
     assert outside == 0.0
     # the rotor columns / rows are really there (not trivially zero)
@@ -102,30 +133,8 @@ def test_ode_jacobian_matches_finite_differences(switch_width, film):
 @pytest.mark.parametrize("switch_width, film", CASES)
 def test_dae_jacobian_matches_finite_differences(switch_width, film):
     o, prob, y = _orbit_state(switch_width, film)
-    n = o.n
-    yp = np.empty(n)
-    prob.rhs(0.3, y, yp)
-    yp *= 1.3  # not consistent on purpose: the residual Jacobian must hold anywhere
-    cj = 7.5
-    pat = prob.jac_pattern.tocsc()
-    data = np.empty(pat.nnz)
-    prob.jac_residual(0.3, y, yp, cj, data)
-    J_an = sp.csc_matrix((data, pat.indices, pat.indptr), shape=(n, n)).toarray()
-
-    def F_y(v):
-        out = np.empty(n)
-        prob.residual(0.3, v, yp, out)
-        return out
-
-    def F_yp(v):
-        out = np.empty(n)
-        prob.residual(0.3, y, v, out)
-        return out
-
-    h = 5e-4 * o.film.width
-    J_fd = central_jacobian(F_y, y, n, step=h) + cj * central_jacobian(F_yp, yp, n, step=h)
-    mask = pat.toarray() != 0
-    mask |= np.eye(n, dtype=bool)  # IDA's pattern always includes the diagonal
+    J_an, J_fd = _residual_jacobians(prob, y, _inconsistent_yp(prob, y), 7.5, 5e-4 * o.film.width)
+    mask = (prob.jac_pattern.toarray() != 0) | np.eye(o.n, dtype=bool)  # IDA's pattern always has the diagonal
     rel, outside = _compare(J_an, J_fd, mask)
     assert rel < 1e-6, rel
     assert outside == 0.0
@@ -137,41 +146,18 @@ def test_content_jacobians_match_finite_differences(switch_width, film):
     Jacobian, with the chain rule through u = C^-1(m / H) (du/dm and du/dX at fixed m) in the film rows and
     in the rotor rows (the force depends on X through u at fixed content)."""
     o, _, y_u = _orbit_state(switch_width, film)
-    n = o.n
     prob = o.problem(y_u, formulation="content")
     y = prob.y0.copy()
     np.testing.assert_allclose(o.universal_state(y), y_u, rtol=1e-9, atol=1e-12)  # the layouts map back
-    pat = prob.jac_pattern.tocsc()
-    mask = (pat.toarray() != 0) | np.eye(n, dtype=bool)
+    mask = (prob.jac_pattern.toarray() != 0) | np.eye(o.n, dtype=bool)
     h = 5e-5 * o.film.width  # the content bends on the scale w_theta + w / beta_bar: a finer step than in u
-    yp = np.empty(n)
-    prob.rhs(0.3, y, yp)
-    yp *= 1.3
-    cj = 7.5
-    data = np.empty(pat.nnz)
-    prob.jac_residual(0.3, y, yp, cj, data)
-    J_an = sp.csc_matrix((data, pat.indices, pat.indptr), shape=(n, n)).toarray()
-
-    def F(v, vp):
-        out = np.empty(n)
-        prob.residual(0.3, v, vp, out)
-        return out
-
-    J_fd = central_jacobian(lambda v: F(v, yp), y, n, step=h) + cj * central_jacobian(lambda v: F(y, v), yp, n, step=h)
+    J_an, J_fd = _residual_jacobians(prob, y, _inconsistent_yp(prob, y), 7.5, h)
     rel, outside = _compare(J_an, J_fd, mask)
     assert rel < 1e-6, rel
     assert outside == 0.0
     nf = o.film.n
     assert np.abs(J_an[nf + 2:, nf:nf + 2]).max() > 0  # dF_V/dX through u(m, X): really there
-    prob.jac_rhs(0.3, y, data)
-    J_an = sp.csc_matrix((data, pat.indices, pat.indptr), shape=(n, n)).toarray()
-
-    def f(v):
-        out = np.empty(n)
-        prob.rhs(0.3, v, out)
-        return out
-
-    rel, outside = _compare(J_an, central_jacobian(f, y, n, step=h), mask)
+    rel, outside = _compare(*_rhs_jacobians(prob, y, h), mask)
     assert rel < 1e-6, rel
     assert outside == 0.0
 
