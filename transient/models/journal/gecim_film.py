@@ -26,7 +26,7 @@ import numpy as np
 from numba import njit, prange
 
 from transient.fv.face_gradient import WIDTH, face_gradients
-from transient.physics.layered import LayeredFilm, gecim_face_2d
+from transient.physics.layered import NO_LAYERS, LayeredFilm, gecim_face_2d
 
 GRAD_SCALE = 6.0  # p0 / R in units of mu_1 omega R / C^2: the law's G = 6 grad P
 
@@ -47,8 +47,7 @@ def bulk_tables(op, bearing, speed_rpm):
     (:func:`face_accuracy`), the Gauss rule, the
     per-face scratch ``(q, dq/dG_n, dq/dG_t, dq/dh)`` and the cell pressure and film of the last evaluation
     (:func:`evaluate` skips a repeat)."""
-    from transient.models.journal.film import omega
-    from transient.physics.layered import NO_LAYERS
+    from transient.models.journal.film import omega  # (film.py imports this module)
 
     points, tol = face_accuracy(bearing.rheology.viscosity_ratio)
     law = LayeredFilm(bearing.viscosity, bearing.rheology, bearing.layers or NO_LAYERS, gauss_points=points)
