@@ -22,6 +22,8 @@ methods, the orbit's callbacks) first :func:`prefetch` them on all cores at the 
 
 from __future__ import annotations
 
+from typing import NamedTuple
+
 import numpy as np
 from numba import njit, prange
 
@@ -41,12 +43,29 @@ def face_accuracy(ratio):
     return (6, 1e-4) if ratio >= 0.2 else (8, 1e-5)
 
 
-def bulk_tables(op, bearing, speed_rpm):
-    """The kernels' tuple for a Gecim bulk: the face-gradient tables of ``op`` (9-point pattern), the law's
-    dimensionless parameters ``(delta, lam_a, lam_b, kappa, ratio)`` at this speed and the Newton stop
-    (:func:`face_accuracy`), the Gauss rule, the
-    per-face scratch ``(q, dq/dG_n, dq/dG_t, dq/dh)`` and the cell pressure and film of the last evaluation
-    (:func:`evaluate` skips a repeat)."""
+class BulkFaces(NamedTuple):
+    """What the kernels know of a Gecim bulk (numba takes it as a named tuple of arrays)."""
+
+    cells: np.ndarray    # (nf, 2) L and R cell of every face (-1 on the boundary side): fv.face_gradient
+    dirn: np.ndarray     # (nf,) face direction
+    length: np.ndarray   # (nf,) face length
+    cols: np.ndarray     # (nf, 6) cells of the face gradient
+    an: np.ndarray       # (nf, 6) their coefficients in the normal gradient
+    at: np.ndarray       # (nf, 6) ... and in the transverse gradient
+    const: np.ndarray    # (nf, 2) constant parts of both
+    pos: np.ndarray      # (nf, 2, 6) CSC positions of (face cell, gradient cell)
+    params: np.ndarray   # (delta, lam_a, lam_b, kappa, ratio, Newton stop): the law at this speed
+    xg: np.ndarray       # Gauss nodes per panel
+    wg: np.ndarray       # Gauss weights
+    out: np.ndarray      # (nf, 4) scratch: q_p . n, dq/dG_n, dq/dG_t, dq/dh of every face
+    last_P: np.ndarray   # (n_cells,) the cell pressure ...
+    last_H: np.ndarray   # ... and film of the last evaluation (:func:`evaluate` skips a repeat)
+
+
+def bulk_tables(op, bearing, speed_rpm) -> BulkFaces:
+    """The :class:`BulkFaces` of a Gecim bulk on ``op`` (9-point pattern) at ``speed_rpm``: the face-gradient
+    tables, the law's dimensionless parameters and Newton stop (:func:`face_accuracy`), the Gauss rule and
+    the scratch arrays."""
     from transient.models.journal.film import omega  # (film.py imports this module)
 
     points, tol = face_accuracy(bearing.rheology.viscosity_ratio)
@@ -55,15 +74,15 @@ def bulk_tables(op, bearing, speed_rpm):
     xg, wg = law._gauss()
     tables = face_gradients(op)
     nf, n = tables[0].shape[0], op.n_cells
-    return tables + (params, xg, wg, np.zeros((nf, 4)), np.full(n, np.nan), np.full(n, np.nan))
+    return BulkFaces(*tables, params, xg, wg, np.zeros((nf, 4)), np.full(n, np.nan), np.full(n, np.nan))
 
 
-def no_bulk():
-    """The empty tuple of the same types (Newtonian bulk: the kernels skip the Gecim flux)."""
+def no_bulk() -> BulkFaces:
+    """Empty :class:`BulkFaces` of the same types (Newtonian bulk: the kernels skip the Gecim flux)."""
     i1, i2, i3 = np.zeros(0, np.int64), np.zeros((0, 2), np.int64), np.zeros((0, 2, WIDTH), np.int64)
     f1, f2, f6 = np.zeros(0), np.zeros((0, 2)), np.zeros((0, WIDTH))
-    return (i2, i1, f1, np.zeros((0, WIDTH), np.int64), f6, f6.copy(), f2, i3, np.zeros(6), f1, f1.copy(),
-            np.zeros((0, 4)), f1.copy(), f1.copy())
+    return BulkFaces(i2, i1, f1, np.zeros((0, WIDTH), np.int64), f6, f6.copy(), f2, i3, np.zeros(6), f1, f1.copy(),
+                     np.zeros((0, 4)), f1.copy(), f1.copy())
 
 
 @njit(cache=True)
@@ -77,13 +96,13 @@ def _same(a, b):
 @njit(cache=True)
 def is_current(P, H, bulk):
     """Whether ``bulk``'s face values are those of ``(P, H)``."""
-    return _same(P, bulk[12]) and _same(H, bulk[13])
+    return _same(P, bulk.last_P) and _same(H, bulk.last_H)
 
 
 @njit(cache=True)
 def remember(P, H, bulk):
     """Mark ``bulk``'s face values as those of ``(P, H)``."""
-    last_P, last_H = bulk[12], bulk[13]
+    last_P, last_H = bulk.last_P, bulk.last_H
     for i in range(P.size):
         last_P[i] = P[i]
         last_H[i] = H[i]
@@ -95,14 +114,14 @@ def evaluate(P, H, bulk):
     same state, or a :func:`prefetch`)."""
     if is_current(P, H, bulk):
         return
-    for f in range(bulk[0].shape[0]):
+    for f in range(bulk.cells.shape[0]):
         _face(f, P, H, bulk)
     remember(P, H, bulk)
 
 
 @njit(cache=True, parallel=True)
 def _faces_parallel(P, H, bulk):
-    for f in prange(bulk[0].shape[0]):
+    for f in prange(bulk.cells.shape[0]):
         _face(f, P, H, bulk)
 
 
@@ -119,7 +138,8 @@ def prefetch(P, H, bulk):
 def _face(f, P, H, bulk):
     """``(q_p . n, dq/dG_n, dq/dG_t, dq/dh)`` of face ``f`` (journal units) into ``bulk``'s scratch. A pure function
     of ``(P, H)``: the face's continuity Newton always starts from the same closed-form guess."""
-    cells, dirn, length, cols, an, at, const, pos, params, xg, wg, out = bulk[:12]
+    cells, dirn, cols, an, at, const, params, xg, wg, out = (bulk.cells, bulk.dirn, bulk.cols, bulk.an, bulk.at,
+                                                             bulk.const, bulk.params, bulk.xg, bulk.wg, bulk.out)
     delta, lam_a, lam_b, kappa, ratio, tol = params[0], params[1], params[2], params[3], params[4], params[5]
     gn = const[f, 0]
     gt = const[f, 1]
@@ -144,7 +164,7 @@ def _face(f, P, H, bulk):
 @njit(cache=True)
 def bulk_residual(P, H, free, bulk, R):
     """Add the Gecim pressure flux of every face to the net outflow ``R`` of its free cells."""
-    cells, length, out = bulk[0], bulk[2], bulk[11]
+    cells, length, out = bulk.cells, bulk.length, bulk.out
     evaluate(P, H, bulk)
     for f in range(cells.shape[0]):
         q = out[f, 0] * length[f]
@@ -161,7 +181,7 @@ def bulk_jacobian(P, dP, H, cosp, sinp, free, bulk, pos_col, n_extra, data):
     """Add the Gecim flux's derivatives to the CSC ``data``: ``dR/du`` over the face's gradient cells (``dP``
     = dP/du per cell) and, with ``n_extra >= 2``, ``dR/dX, dR/dY`` through ``H_f`` (``pos_col`` the positions
     of the extra columns)."""
-    cells, dirn, length, cols, an, at, const, pos, params, xg, wg, out = bulk[:12]
+    cells, length, cols, an, at, pos, out = bulk.cells, bulk.length, bulk.cols, bulk.an, bulk.at, bulk.pos, bulk.out
     evaluate(P, H, bulk)
     for f in range(cells.shape[0]):
         s = length[f]
@@ -201,7 +221,7 @@ def bulk_jacobian(P, dP, H, cosp, sinp, free, bulk, pos_col, n_extra, data):
 def bulk_end_flow(P, H, free, n_interior, bulk):
     """Net outflow through the Dirichlet faces (``bulk`` lists them after the ``n_interior`` interior faces)
     of the Gecim pressure flux, from the free cells."""
-    cells, length, out = bulk[0], bulk[2], bulk[11]
+    cells, length, out = bulk.cells, bulk.length, bulk.out
     evaluate(P, H, bulk)
     total = 0.0
     for f in range(n_interior, cells.shape[0]):

@@ -123,7 +123,7 @@ def _stencil_residual(u, X, Y, switch, geo, fields, fv, R):
     H, P, dP, C, D, dD, k, c, zero, _ = fields
     faces, boundary, cells, face_k, bulk = fv
     state_fields(u, X, Y, switch, geo, fields, fv)
-    gecim = bulk[0].shape[0] > 0
+    gecim = bulk.cells.shape[0] > 0
     if gecim:  # the Poiseuille flux is the Gecim bulk's (gecim_film), not k grad P
         k[:] = 0.0
     residual_kernel(u, P, C, k, k, c, zero, True, faces, boundary, cells, face_k, R)
@@ -141,7 +141,7 @@ def _stencil_jacobian(u, X, Y, switch, geo, fields, extras, fv, data):
     state_fields(u, X, Y, switch, geo, fields, fv)
     if dk_dq.shape[0] > 0:
         position_derivatives(H, cosp, sinp, layer_gap, darcy, dk_dq, dc_dq)
-    gecim = bulk[0].shape[0] > 0
+    gecim = bulk.cells.shape[0] > 0
     if gecim:
         k[:] = 0.0
         dk_dq[:] = 0.0
