@@ -27,7 +27,7 @@ import numpy as np
 WIDTH = 6  # cells per face gradient: L, R and their two neighbours across the face direction
 
 
-def _cell_gradients(op, direction):
+def cell_gradients(op, direction):
     """Per cell: Green-Gauss gradient along ``direction`` as (cols (n, 3), weights (n, 3), constant (n,)): the
     lower neighbour, the cell, the upper neighbour (-1 where there is none); the constant holds the prescribed P
     of Dirichlet faces."""
@@ -62,6 +62,16 @@ def _cell_gradients(op, direction):
     return cols, wts, const
 
 
+def cell_gradient_values(op, P):
+    """The Green-Gauss gradient of the cell field ``P`` along x and z, shape ``(n_cells, 2)`` (per unit of the grid's
+    coordinates; the prescribed boundary values are ``op``'s)."""
+    out = np.empty((op.n_cells, 2))
+    for d in (0, 1):
+        cols, wts, const = cell_gradients(op, d)
+        out[:, d] = np.sum(np.where(cols >= 0, wts * P[np.maximum(cols, 0)], 0.0), axis=1) + const
+    return out
+
+
 def face_gradients(op):
     """Tables of the face gradients of ``op`` (module docstring), interior faces first, then Dirichlet faces::
 
@@ -74,7 +84,7 @@ def face_gradients(op):
     Slots of an interior face: L, R, then L's and R's lower and upper neighbours across the face direction (a
     cell may appear twice on a tiny periodic grid: the kernels add both). ``op`` must have the 9-point pattern
     (``diagonals=True``)."""
-    grads = [_cell_gradients(op, 0), _cell_gradients(op, 1)]
+    grads = [cell_gradients(op, 0), cell_gradients(op, 1)]
     fL, fR, fdir = op.fL, op.fR, op.fdir
     nf_int, nb = fL.size, op.bcell.size
     nf = nf_int + nb

@@ -12,6 +12,7 @@ from __future__ import annotations
 import numpy as np
 import scipy.sparse.linalg as spla
 
+from transient.fv.face_gradient import cell_gradient_values
 from transient.fv.reynolds import ReynoldsOperator
 from transient.models.journal.gecim_film import bulk_end_flow, bulk_tables, face_accuracy, no_bulk, prefetch
 from transient.models.journal.kernels import (N_ROTOR, content_universal, film_force, film_jacobian, film_residual,
@@ -217,7 +218,7 @@ def film_state(film, u, X, Y, F, P, content, iterations=0):
     grid = b.grid
     pressure = grid.to_2d(b.cavitation_pressure + film.p0 * np.asarray(P)).copy()
     theta = grid.to_2d(np.asarray(content, dtype=float)).copy()
-    h, G, Gz = film_geometry(film, X, Y, pressure)
+    h, G, Gz = film_geometry(film, X, Y, P)
     friction = wall_friction(film, h, G, Gz, theta)
     ly = b.layers
     rh = b.rheology
@@ -232,22 +233,17 @@ def film_state(film, u, X, Y, F, P, content, iterations=0):
         gecim=(rh.kappa, rh.viscosity_ratio) if b.shear_thinning else None)
 
 
-def film_geometry(film, X, Y, pressure):
+def film_geometry(film, X, Y, P):
     """Film thickness ``h`` [m], circumferential pressure gradient ``dp/ds`` (``s = R phi`` along the rotation) and
-    axial gradient ``dp/dz`` [Pa/m] per cell, as (n_axial, n_theta) arrays: central differences (periodic around;
-    axially the face values are the neighbours' means, the ambient pressure at an end and the cell's own value at
-    the symmetry plane)."""
+    axial gradient ``dp/dz`` [Pa/m] per cell, as (n_axial, n_theta) arrays, from the dimensionless pressure ``P``:
+    the cells' Green-Gauss gradients of the operator (:func:`~transient.fv.face_gradient.cell_gradient_values`:
+    central differences on this uniform grid; the prescribed pressure at an end, the cell's own at the symmetry
+    plane)."""
     b = film.bearing
     grid = b.grid
     h = b.clearance * grid.to_2d(1.0 + X * film.cosp + Y * film.sinp)
-    dphi = np.gradient(np.unwrap(grid.x.centres))
-    G = (np.roll(pressure, -1, axis=1) - np.roll(pressure, 1, axis=1)) / (b.radius * (np.roll(dphi, -1) + dphi))
-    faces = 0.5 * (pressure[1:] + pressure[:-1])
-    end = np.full((1, pressure.shape[1]), b.ambient_pressure)
-    lower = pressure[:1] if b.symmetric else end
-    faces = np.vstack([lower, faces, end])
-    Gz = (faces[1:] - faces[:-1]) / (b.radius * grid.z.widths[:, None])
-    return h, G, Gz
+    g = cell_gradient_values(film.op, np.asarray(P, dtype=float)) * (film.p0 / b.radius)
+    return h, grid.to_2d(g[:, 0]), grid.to_2d(g[:, 1])
 
 
 def wall_friction(film, h, G, Gz, theta) -> tuple[float, float]:
