@@ -14,6 +14,8 @@ import scipy.sparse.linalg as spla
 
 from transient.fv.face_gradient import cell_gradient_values
 from transient.fv.reynolds import ReynoldsOperator
+from transient.models.journal.feeds import apply_feeds
+from transient.models.journal.flows import flow_fields
 from transient.models.journal.gecim_film import bulk_end_flow, bulk_tables, face_accuracy, no_bulk, prefetch
 from transient.models.journal.kernels import (N_ROTOR, content_universal, film_force, film_jacobian, film_residual,
                                               state_fields)
@@ -43,15 +45,13 @@ class Film:
         self.width = SWITCH_WIDTH_P0 if b.switch_width is None else b.switch_width / self.p0
         self.content_scale = b.switch_content_width / self.width  # r: content width / pressure width
         self.force_scale = self.p0 * b.radius ** 2  # N per unit of Fbar
-        u_supply = (b.supply_pressure - b.cavitation_pressure) / self.p0
         u_amb = (b.ambient_pressure - b.cavitation_pressure) / self.p0
         # prescribed pressures sit on the sharp Elrod curve, not on the rounded switch (physics.cavitation:
         # P(0) = w ln 2 at an end held at p_c biased the load linearly in w): P = u, theta = 1 + u / beta_bar
         self.op = ReynoldsOperator(b.grid, n_extra=n_extra, upwind=True, boundary_P=u_amb,
                                    boundary_C=1.0 + u_amb / self.beta_bar, diagonals=b.shear_thinning)
-        self.op.u_fixed[~self.op.free] = u_supply  # groove cells at the supply pressure
+        self.u_supply = apply_feeds(self.op, b, self.p0)  # each feed's cells at its pressure (one value per cell)
         self.n = n = self.op.n_cells
-        self.u_supply = u_supply
         op = self.op
         # constant geometry and scratch arrays shared by the kernels (allocated once)
         self.cosp = np.ascontiguousarray(np.cos(b.phi))
@@ -121,7 +121,7 @@ class Film:
         residual are below ``tol`` and 1e-8 of ``max(1, |u|)``.
         """
         n = self.n
-        u = np.where(self.op.free, 0.0, self.u_supply) if u0 is None else np.array(u0, dtype=float)
+        u = np.zeros(n) if u0 is None else np.array(u0, dtype=float)
         u[~self.op.free] = self.u_supply
         data = np.empty(self.op.nnz)
         G = lambda v: self.residual(v, X, Y, VX, VY)  # noqa: E731
@@ -230,7 +230,7 @@ def film_state(film, u, X, Y, F, P, content, iterations=0):
         friction_force=friction[0], bearing_friction_force=friction[1], film_thickness=h, pressure_gradient=G,
         axial_pressure_gradient=Gz, viscosity=b.viscosity, sliding_speed=omega(film.speed_rpm) * b.radius,
         layers=None if ly is None else (ly.thickness, ly.viscosity[0], ly.viscosity[1], ly.alpha),
-        gecim=(rh.kappa, rh.viscosity_ratio) if b.shear_thinning else None)
+        gecim=(rh.kappa, rh.viscosity_ratio) if b.shear_thinning else None, **flow_fields(film, u, X, Y))
 
 
 def film_geometry(film, X, Y, P):

@@ -26,6 +26,7 @@ import numpy as np
 
 from transient.checks import check_positive, check_range
 from transient.models.journal.bearing import JournalBearing, check_speed
+from transient.models.journal.flows import film_flows
 from transient.models.journal.kernels import (N_ROTOR, content_jacobian, content_ode_jacobian, content_residual,
                                               content_rhs, dae_jacobian, dae_residual, ode_jacobian, ode_rhs)
 from transient.models.journal.rk4 import FilmStageSolver
@@ -38,9 +39,9 @@ FORMULATIONS = ("content", "universal")
 #: part, so ``run`` hands the integrator ``rtol * CONTENT_RTOL_FACTOR`` there: a user's rtol then buys about
 #: the orbit accuracy of the universal form (docs/journal.md, section 5).
 CONTENT_RTOL_FACTOR = 0.1
-RECORDABLE = ("force", "pressure", "film_content", "min_film", "mass", "outflow")
+RECORDABLE = ("force", "pressure", "film_content", "min_film", "mass", "outflow", "supply_flow", "side_leakage")
 FIELD_SERIES = ("pressure", "film_content")
-RECORDED_FIELDS = ("force", "min_film", "mass", "outflow", "pressure", "pressure_t", "film_content", "film_content_t")
+RECORDED_FIELDS = ("force", "min_film", "mass", "outflow", "supply_flow", "side_leakage", "pressure", "pressure_t", "film_content", "film_content_t")
 
 
 @result_type
@@ -49,7 +50,9 @@ class OrbitResult(Result):
 
     ``t`` [s], ``x``, ``y`` [m] (journal centre; x towards the load); the recorded series (None if not
     asked): ``force`` [N] (film force on the journal, (n, 2)), ``min_film`` [m], ``mass`` [m^3],
-    ``outflow`` [m^3/s] ((n, 2): ends, groove), ``pressure`` [Pa] ((k, nz, ntheta) at ``pressure_t``
+    ``outflow`` [m^3/s] ((n, 2): ends, groove), ``supply_flow`` [m^3/s] ((n, feeds): the net flow out of each
+    feed), ``side_leakage`` [m^3/s] ((n, 2): out of the ends z = -L/2, +L/2; :mod:`~transient.models.journal.flows`),
+    ``pressure`` [Pa] ((k, nz, ntheta) at ``pressure_t``
     [s], only over the recorded window), ``film_content`` (at ``film_content_t``). ``stats`` sums the
     integrator statistics over chunks; ``touched_at`` [s] if the journal reached the wall (the run stopped
     there); ``final_state`` (film + rotor, dimensionless) at ``final_time`` [s]: ``run(..., start=result)``
@@ -73,6 +76,8 @@ class OrbitResult(Result):
     min_film: np.ndarray | None = quantity("m", None)
     mass: np.ndarray | None = quantity("m^3", None)
     outflow: np.ndarray | None = quantity("m^3/s", None)
+    supply_flow: np.ndarray | None = quantity("m^3/s", None)
+    side_leakage: np.ndarray | None = quantity("m^3/s", None)
     pressure: np.ndarray | None = quantity("Pa", None)
     pressure_t: np.ndarray | None = quantity("s", None)
     film_content: np.ndarray | None = None
@@ -285,7 +290,9 @@ class JournalOrbit:
         record : extra series to keep at the outputs: any of ``"force"`` [N], ``"min_film"`` [m],
             ``"mass"`` [m^3] (film content as liquid volume at the cavitation density, whole bearing),
             ``"outflow"`` [m^3/s] ((n, 2): through the ends, into the groove -- negative: the supply;
-            see :meth:`mass_balance`), ``"pressure"`` [Pa] and ``"film_content"`` (fields: stored only from
+            see :meth:`mass_balance`), ``"supply_flow"`` [m^3/s] ((n, feeds): each feed's net supply) and
+            ``"side_leakage"`` [m^3/s] ((n, 2): the ends z = -L/2, +L/2; :mod:`~transient.models.journal.flows`),
+            ``"pressure"`` [Pa] and ``"film_content"`` (fields: stored only from
             ``record_from_revolution`` (counted from t = 0) on, so a long run keeps only the window it needs).
         chunk_revolutions : integrate in chunks of this many revolutions (progress and checkpoints
             between chunks); default: the whole run in one chunk unless a checkpoint is asked for (10).
@@ -497,6 +504,12 @@ class _Recorder:
                 self.series["mass"].append(M * vol)
             if "outflow" in self.record:
                 self.series["outflow"].append((q_ends * vol * f.omega, q_groove * vol * f.omega))
+        if "supply_flow" in self.record or "side_leakage" in self.record:
+            supply, _, leak = film_flows(f, y[:n], y[n], y[n + 1])
+            unit = C * o.bearing.radius ** 2 * f.omega
+            for k, v in (("supply_flow", supply), ("side_leakage", leak)):
+                if k in self.record:
+                    self.series[k].append(v * unit)
         if tau >= self.tau0_fields - 1e-12 and self.field_t:
             f.residual(y[:n], y[n], y[n + 1])  # fills P and theta = C(u) (u is not theta - 1 in cavitation)
             grid = o.bearing.grid

@@ -44,6 +44,7 @@ import scipy.sparse.linalg as spla
 
 from transient.fv.reynolds import ReynoldsOperator, jacobian_kernel, residual_kernel
 from transient.fv.stencil import five_point_mask
+from transient.models.journal.feeds import apply_feeds
 from transient.models.journal.film import film_state, omega
 from transient.models.journal.gecim_film import bulk_jacobian, bulk_residual, bulk_tables, prefetch
 from transient.models.journal.kernels import N_ROTOR, conductances, film_force, position_derivatives
@@ -64,11 +65,10 @@ class ReynoldsFilm:
         self.omega = omega(speed_rpm)
         self.p0 = b.pressure_scale(speed_rpm)
         self.force_scale = self.p0 * b.radius ** 2
-        self.u_supply = (b.supply_pressure - b.cavitation_pressure) / self.p0
         u_amb = (b.ambient_pressure - b.cavitation_pressure) / self.p0
         self.op = op = ReynoldsOperator(b.grid, n_extra=n_extra, upwind=False, boundary_P=u_amb, boundary_C=1.0,
                                         diagonals=b.shear_thinning)
-        op.u_fixed[~op.free] = self.u_supply
+        self.u_supply = apply_feeds(op, b, self.p0)  # each feed's cells at its pressure (one value per cell)
         self.n = n = op.n_cells
         self.free = op.free
         self.cosp = np.ascontiguousarray(np.cos(b.phi))
