@@ -9,12 +9,17 @@ The flow through a face of the finite-volume grid is the film's own flux (:mod:`
 (the Gecim bulk's Poiseuille flux from its face tables instead of ``k grad P``), in units of ``C R^2 omega``.
 From the flows of the faces around each feed:
 
-* ``supply_flow`` -- the net flow out of the feed (into the film, and straight out of the ends for a groove
-  open at the ends): what the oil supply delivers;
+* ``supply_flow`` -- the net flow out of the feed into the film: what the oil supply delivers to the film;
 * ``feed_inflow`` -- the flow leaving the feed into the film (faces with outflow only): with a groove at the
   maximum film, Raimondi & Boyd's ``Q`` (the flow into the film at its leading edge);
 * ``side_leakage`` -- the outflow through the bearing ends ``z = -L/2`` and ``z = +L/2`` (Raimondi & Boyd's
   ``Q_s`` when the cavitated film is at the ambient pressure).
+
+A groove open at the bearing ends also discharges straight out of its ends; that flow is set by the groove's depth,
+not by the film, and is not counted. Where such a groove is held above the ambient pressure the film pressure jumps
+at the corner where groove and end meet, and the film's flow near that corner grows like ``log(1 / cell size)``:
+the flows of a full-length pressurised groove depend on the grid (docs/validation.md); those of a partial groove,
+a hole or a circumferential groove converge.
 
 In a steady Elrod film every film cell's net outflow is zero, so the supplies add up to the leakage (mass balance,
 to the solver's tolerance). The Reynolds-condition film is not mass-conserving: its cavitated cells discard Couette
@@ -75,14 +80,11 @@ def film_flows(film, u, X, Y):
     la = labels[a]
     lc = np.where(c >= 0, labels[np.maximum(c, 0)], -1)
     n = len(b.feeds)
-    crossing = la != lc  # faces out of a feed (or into one): flows between two cells of one feed cancel
-    out_a = crossing & (la >= 0)  # q leaves feed la
-    into_c = crossing & (lc >= 0)  # q enters feed lc
+    out_a = (la >= 0) & (c >= 0) & (lc < 0)  # q leaves feed la into the film
+    into_c = (lc >= 0) & (la < 0)  # q enters feed lc from the film
     supply = np.bincount(la[out_a], q[out_a], n) - np.bincount(lc[into_c], q[into_c], n)
-    film_side = crossing & ((la < 0) | (lc < 0))  # between a feed and the film, not through an end
-    film_side &= c >= 0
-    inflow = (np.bincount(la[film_side & out_a], np.maximum(q, 0.0)[film_side & out_a], n)
-              + np.bincount(lc[film_side & into_c], np.maximum(-q, 0.0)[film_side & into_c], n))
+    inflow = np.bincount(la[out_a], np.maximum(q[out_a], 0.0), n) + np.bincount(lc[into_c], np.maximum(-q[into_c], 0.0), n)
+    end = np.where(la < 0, end, 0)  # the film's ends (a groove open at the ends discharges there too: not the film's)
     ends = np.array([q[end == -1].sum(), q[end == 1].sum()])
     if b.symmetric:
         return 2.0 * supply, 2.0 * inflow, np.array([ends[1], ends[1]])
