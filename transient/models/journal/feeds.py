@@ -15,6 +15,7 @@ Angles are from the top of the bearing (opposite the load) in the direction of r
 
 from __future__ import annotations
 
+import warnings
 from dataclasses import dataclass
 
 import numpy as np
@@ -52,7 +53,7 @@ class Groove:
             check_range(f"{name}.length", self.length, "m", 0.0, length, low_open=True,
                         why=f"(at most the bearing length {length:g} m; None: the whole length)")
 
-    def cells(self, phi, z, radius):
+    def cells(self, phi, z, radius, name="groove"):
         """Mask of the cells (centres phi [rad], z [m], flat) of the groove: the column nearest its angle if it is
         narrower than a cell, the row nearest the mid-plane if it is shorter than a cell."""
         dphi = np.abs(np.angle(np.exp(1j * (phi - np.radians(self.angle_deg)))))
@@ -96,12 +97,17 @@ class OilHole:
         check_range(f"{name}.axial_position", self.axial_position, "m", -room, room,
                     why=f"(the hole of diameter {self.diameter:g} m inside the bearing of length {length:g} m)")
 
-    def cells(self, phi, z, radius):
+    def cells(self, phi, z, radius, name="groove"):
         """Mask of the cells whose centres lie in the hole (the nearest cell if none does)."""
         s = radius * np.angle(np.exp(1j * (phi - np.radians(self.angle_deg))))
         r = np.hypot(s, z - self.axial_position)
         inside = r <= 0.5 * self.diameter * (1.0 + 1e-12)
-        return inside if inside.any() else np.arange(r.size) == np.argmin(r)
+        if inside.any():
+            return inside
+        warnings.warn(f"{name}.diameter = {self.diameter:g} m covers no cell centre: the hole is smaller than a cell "
+                      "of this grid and is modelled as the nearest cell (refine the grid to resolve it)", UserWarning,
+                      stacklevel=5)
+        return np.arange(r.size) == np.argmin(r)
 
     def area(self, length, radius):
         return 0.25 * np.pi * self.diameter ** 2
@@ -133,7 +139,7 @@ class CircumferentialGroove:
         check_range(f"{name}.axial_position", self.axial_position, "m", -room, room, low_open=True, high_open=True,
                     why=f"(the groove of width {self.width:g} m inside the bearing of length {length:g} m)")
 
-    def cells(self, phi, z, radius):
+    def cells(self, phi, z, radius, name="groove"):
         """Mask of the rows whose centres lie in the groove (the nearest row if none does)."""
         d = np.abs(z - self.axial_position)
         inside = d <= 0.5 * self.width * (1.0 + 1e-12)
@@ -184,7 +190,7 @@ def feed_labels(feeds, phi, z, radius) -> np.ndarray:
     Two feeds sharing a cell are an error."""
     labels = np.full(phi.size, -1, dtype=np.int64)
     for k, f in enumerate(feeds):
-        inside = f.cells(phi, z, radius)
+        inside = f.cells(phi, z, radius, feed_name(feeds, k))
         clash = inside & (labels >= 0)
         if clash.any():
             j = int(labels[clash][0])
