@@ -22,8 +22,9 @@ the flows of a full-length pressurised groove depend on the grid (docs/validatio
 a hole or a circumferential groove converge.
 
 In a steady Elrod film every film cell's net outflow is zero, so the supplies add up to the leakage (mass balance,
-to the solver's tolerance). The Reynolds-condition film is not mass-conserving: its cavitated cells discard Couette
-flow, so there the supply exceeds the leakage.
+to the solver's tolerance). The Reynolds-condition film is not mass-conserving: its cavitated cells, held at the
+cavitation pressure with a full film, pass on more Couette flow than they receive, so there the leakage exceeds the
+supply.
 """
 
 from __future__ import annotations
