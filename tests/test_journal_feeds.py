@@ -6,6 +6,7 @@ set-ups of the same physics -- never the code's own output. Numbers measured on 
 """
 
 import hashlib
+import warnings
 
 import numpy as np
 import pytest
@@ -263,3 +264,29 @@ def test_bad_feeds_are_one_line_errors(feed, match):
 def test_not_a_feed_is_a_type_error():
     with pytest.raises(TypeError, match=r"groove\[1\] must be a Groove, OilHole or CircumferentialGroove"):
         bearing([Groove(), "hole"])
+
+
+HOSTILE = [float("nan"), float("inf"), -float("inf"), 0.0, -1.0, 1e300, -1e-300, "1", True, None, [1.0], 1e-9]
+FIELDS = [(Groove, "angle_deg"), (Groove, "width_deg"), (Groove, "length"), (Groove, "pressure"),
+          (OilHole, "angle_deg"), (OilHole, "diameter"), (OilHole, "axial_position"), (OilHole, "pressure"),
+          (CircumferentialGroove, "width"), (CircumferentialGroove, "axial_position"), (CircumferentialGroove, "pressure")]
+
+
+@pytest.mark.parametrize("kind, key", FIELDS, ids=[f"{k.__name__}.{f}" for k, f in FIELDS])
+def test_hostile_feed_fields_give_a_named_error_or_a_finite_film(kind, key):
+    """NaN, infinities, zero, negatives, huge and tiny numbers, strings, booleans, None, containers in every field of
+    every feed: a one-line ValueError/TypeError naming the field, or a film with finite force and flows."""
+    named = finite = 0
+    for value in HOSTILE:
+        try:
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore")  # a hole smaller than a cell warns
+                s = bearing(kind(**{key: value}), grid=(24, 4)).steady_state(0.5, RPM)
+        except (ValueError, TypeError) as e:
+            msg = str(e)
+            assert "\n" not in msg and (key in msg or "groove" in msg), msg
+            named += 1
+            continue
+        assert np.all(np.isfinite(s.force)) and np.all(np.isfinite(s.supply_flow)), (key, value)
+        finite += 1
+    assert named + finite == len(HOSTILE)
