@@ -59,7 +59,7 @@ class Groove:
         dphi = np.abs(np.angle(np.exp(1j * (phi - np.radians(self.angle_deg)))))
         across = dphi <= 0.5 * np.radians(self.width_deg) + 1e-12
         if not across.any():
-            across = dphi == dphi[np.argmin(dphi)]
+            across = phi == phi[np.argmin(dphi)]  # the first nearest column
         if self.length is None:
             return across
         along = np.abs(z) <= 0.5 * self.length * (1.0 + 1e-12)
@@ -195,7 +195,7 @@ def feed_labels(feeds, phi, z, radius) -> np.ndarray:
         if clash.any():
             j = int(labels[clash][0])
             raise ValueError(f"{feed_name(feeds, k)} = {f!r} overlaps {feed_name(feeds, j)} = {feeds[j]!r} on the "
-                             f"grid ({int(clash.sum())} shared cells); allowed: feeds apart by at least one cell")
+                             f"grid ({int(clash.sum())} shared cells); allowed: feeds on distinct cells")
         labels[inside] = k
     return labels
 
