@@ -24,7 +24,7 @@ from dataclasses import field
 
 import numpy as np
 
-from transient.checks import check_positive, check_range
+from transient.checks import ATOL_FLOOR, ATOL_WHY, check_positive, check_range, check_rtol
 from transient.models.journal.bearing import JournalBearing, check_speed
 from transient.models.journal.kernels import (N_ROTOR, content_jacobian, content_ode_jacobian, content_residual,
                                               content_rhs, dae_jacobian, dae_residual, ode_jacobian, ode_rhs)
@@ -307,7 +307,7 @@ class JournalOrbit:
         """
         revolutions = check_positive("revolutions", revolutions, "rev")
         if method != "rk4":
-            rtol = check_range("rtol", rtol, "-", 1e-14, 1.0)
+            rtol = check_rtol(rtol)
         if isinstance(record, str):
             record = (record,)
         bad = [r for r in record if r not in RECORDABLE]
@@ -409,7 +409,7 @@ class JournalOrbit:
         switch), so the cells get ``atol min(1, 1 / r)``: neither the content nor the pressure is held more
         loosely than ``atol``. Content layout: the cells' unknown is the content ``H theta`` itself and gets
         ``atol``."""
-        atol = check_range("atol", atol, "-", 1e-25, 1.0, why="(absolute on the dimensionless states; below 1e-25 the integrators' error weights overflow)")
+        atol = check_range("atol", atol, "-", ATOL_FLOOR, 1.0, why=ATOL_WHY)
         out = np.full(self.n, atol)
         if formulation == "universal":
             out[: self.film.n] = atol * min(1.0, 1.0 / self.film.content_scale)
