@@ -70,7 +70,7 @@ def check_bool(name, value):
 def check_choice(name, value, choices):
     """One of ``choices`` (strings)."""
     if not isinstance(value, str) or value not in choices:
-        raise ValueError(f"{name} must be one of {', '.join(map(repr, choices))}; got {value!r}")
+        raise ValueError(f"{name} must be one of {tuple(choices)!r}, got {name} = {value!r}")
     return value
 
 

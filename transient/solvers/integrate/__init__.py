@@ -112,8 +112,7 @@ def solve(problem: Problem, t_eval, method: str = "cvode", rtol: float = 1e-6, a
     stalled time (steps collapsing to the roundoff of t), ``max_steps``, or the backend's own
     failure. ``success=True`` guarantees every returned state is finite.
     """
-    check_choice("method", method, METHODS)
-    backend = BACKENDS[method]
+    backend = BACKENDS[check_choice("method", method, tuple(BACKENDS))]
     if not isinstance(problem, Problem):
         raise TypeError(f"problem must be a transient.Problem, got {type(problem).__name__}")
     rtol = check_rtol(rtol)
