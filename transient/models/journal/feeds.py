@@ -200,19 +200,17 @@ def feed_labels(feeds, phi, z, radius) -> np.ndarray:
     return labels
 
 
-def edge_faces(op, labels, feeds) -> np.ndarray:
-    """Interior faces between a circumferential-groove cell and a film cell (their centre distance is halved:
-    the groove's edge is the face)."""
-    circ = np.array([isinstance(f, CircumferentialGroove) for f in feeds] + [False])  # label -1 -> False
-    gl, gr = circ[labels[op.fL]], circ[labels[op.fR]]
-    return np.flatnonzero((op.fdir == 1) & (gl != gr) & ((labels[op.fL] < 0) | (labels[op.fR] < 0)))
+def feed_edges(feeds) -> np.ndarray:
+    """Per feed: True where its edges are cell faces (a circumferential groove), False where its pressure is held at
+    the centres of its cells (axial grooves, holes)."""
+    return np.array([isinstance(f, CircumferentialGroove) for f in feeds], dtype=bool)
 
 
-def apply_feeds(op, bearing, p0):
-    """Put the feeds on a film's operator: each feed's cells at its own dimensionless pressure
-    ``(p_feed - p_c) / p0`` (``u_fixed``) and a circumferential groove's edges on the faces (``fd``)."""
-    labels = bearing.feed_cells
-    fixed = labels >= 0
-    op.u_fixed[fixed] = ((bearing.feed_pressures - bearing.cavitation_pressure) / p0)[labels[fixed]]
-    op.fd[edge_faces(op, labels, bearing.feeds)] *= 0.5
-    return op.u_fixed[~op.free]
+def apply_feed_edges(op, scales):
+    """Halve the centre distance ``fd`` of the operator's interior faces between a film cell and a feed whose edges
+    are faces (:func:`feed_edges`): that feed's edge is the face, half a cell from the film cell's centre as at a
+    bearing end. Before the operator's face tables are read (a Gecim bulk's are built from ``fd``)."""
+    labels = scales.feed_cells
+    edged = np.append(scales.feed_edges, False)[labels]  # label -1 -> False
+    L, R = op.fL, op.fR
+    op.fd[(op.fdir == 1) & ((edged[L] & (labels[R] < 0)) | (edged[R] & (labels[L] < 0)))] *= 0.5

@@ -75,32 +75,33 @@ def film_flows(film, u, X, Y):
     the net supply and the inflow into the film of each feed (arrays over the bearing's feeds) and the outflow
     through the ends at ``z = -L/2`` and ``+L/2`` (module docstring). On a half grid both ends leak alike and each
     feed's flows are twice its half's."""
-    b = film.bearing
+    sc = film.scales
     a, c, q, end = face_flows(film, u, X, Y)
-    labels = b.feed_cells
+    labels = sc.feed_cells
     la = labels[a]
     lc = np.where(c >= 0, labels[np.maximum(c, 0)], -1)
-    n = len(b.feeds)
+    n = sc.feed_edges.size
     out_a = (la >= 0) & (c >= 0) & (lc < 0)  # q leaves feed la into the film
     into_c = (lc >= 0) & (la < 0)  # q enters feed lc from the film
     supply = np.bincount(la[out_a], q[out_a], n) - np.bincount(lc[into_c], q[into_c], n)
     inflow = np.bincount(la[out_a], np.maximum(q[out_a], 0.0), n) + np.bincount(lc[into_c], np.maximum(-q[into_c], 0.0), n)
     end = np.where(la < 0, end, 0)  # the film's ends (a groove open at the ends discharges there too: not the film's)
     ends = np.array([q[end == -1].sum(), q[end == 1].sum()])
-    if b.symmetric:
+    if sc.sym == 2.0:
         return 2.0 * supply, 2.0 * inflow, np.array([ends[1], ends[1]])
     return supply, inflow, ends
 
 
 def flow_fields(film, u, X, Y) -> dict:
-    """The flows of a :class:`~transient.models.journal.bearing.FilmState` [m^3/s] and the design-chart variables:
+    """The flows of a :class:`~transient.models.journal.results.FilmState` [m^3/s] and the design-chart variables:
     ``Q / (R C N L)`` with ``Q`` the total inflow of the feeds into the film (``N`` [rev/s]) and ``Q_s / Q`` with
     ``Q_s`` the side leakage of both ends (NaN without feeds)."""
-    b = film.bearing
-    unit = b.clearance * b.radius ** 2 * film.omega  # m^3/s per dimensionless flow
+    sc = film.scales
+    unit = sc.clearance * sc.radius ** 2 * sc.omega  # m^3/s per dimensionless flow
     supply, inflow, leak = film_flows(film, u, X, Y)
     Q = float(inflow.sum()) * unit
-    rcnl = b.radius * b.clearance * (film.omega / (2.0 * np.pi)) * b.length
+    length = sc.sym * sc.radius * float(film.grid.z.widths.sum())
+    rcnl = sc.radius * sc.clearance * (sc.omega / (2.0 * np.pi)) * length
     return dict(supply_flow=supply * unit, feed_inflow=inflow * unit, side_leakage=leak * unit,
                 flow_variable=Q / rcnl if Q > 0 else float("nan"),
                 side_flow_ratio=float(leak.sum()) * unit / Q if Q > 0 else float("nan"))
