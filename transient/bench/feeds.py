@@ -4,7 +4,7 @@ its static equilibrium) with the former single full-length groove and with other
 The feeds only change which cells are prescribed and at what pressure (and, for a circumferential groove, the centre
 distance of its edge faces), so the kernels do the same work per call; this measures it. Per feed: the ODE
 right-hand side and its Jacobian (best of interleaved repeats, microseconds per call), one shaft revolution of the
-orbit (IDA, rtol 1e-6) and the flows a :class:`~transient.models.journal.bearing.FilmState` adds
+orbit (IDA, rtol 1e-6) and the flows a :class:`~transient.models.journal.results.FilmState` adds
 (:func:`~transient.models.journal.flows.flow_fields`). ``transient bench feeds [--quick]``.
 """
 
@@ -22,6 +22,7 @@ from transient.models.journal.feeds import CircumferentialGroove, Groove, OilHol
 from transient.models.journal.flows import flow_fields
 from transient.models.journal.kernels import ode_jacobian, ode_rhs
 from transient.models.journal.orbit import JournalOrbit
+from transient.models.journal.scales import Rotor
 from transient.params.rho_kim import BEARING, ROTOR
 
 TITLE = "journal kernels with the oil-feed geometry: single full-length groove against partial, multiple and round feeds"
@@ -42,7 +43,7 @@ def _case(feed, grid):
     st = b.equilibrium(ROTOR["load"], RPM)
     y = np.concatenate([st.u, np.array(st.position) / b.clearance, [0.0, 0.0]])
     out, data = np.empty(y.size), np.empty(f.op.nnz)
-    rotor = (o.kappa, o.wbar, o.ebar, f.sym)
+    rotor = Rotor(o.kappa, o.wbar, o.ebar, f.sym)
     rhs = lambda: ode_rhs(0.0, y, out, f.switch, rotor, f.geo, f.fields, f.fv)  # noqa: E731
     jac = lambda: ode_jacobian(0.0, y, data, out, f.switch, rotor, f.geo, f.fields, f.extras, f.fv)  # noqa: E731
     flows = lambda: flow_fields(f, y[:f.n], y[f.n], y[f.n + 1])  # noqa: E731
