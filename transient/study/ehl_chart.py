@@ -64,3 +64,14 @@ def chart_point(M: float, L: float, **kw) -> dict:
 def run_chart(Ms, Ls, **kw) -> list[dict]:
     """:func:`chart_point` over the tensor product of ``Ms`` and ``Ls``."""
     return [chart_point(M, L, **kw) for M in Ms for L in Ls]
+
+
+def moes_curves(rows: list[dict], n: int = 200) -> dict:
+    """Moes' formula per L of ``rows`` and the four asymptotes (RP, EP at the largest L) on ``n``
+    loads spanning the rows' M, for :func:`transient.plots.roller.moes_chart`."""
+    Ms = np.geomspace(min(r["M"] for r in rows), max(r["M"] for r in rows), n)
+    Ls = sorted({r["L"] for r in rows})
+    top = max(Ls[-1], 1.0)
+    asym = [moes_asymptotes(m, top) for m in Ms]
+    return dict(M=Ms, formula={L: np.array([moes_central(m, L) for m in Ms]) for L in Ls},
+                asymptotes={k: np.array([a[k] for a in asym]) for k in ("RI", "EI", "RP", "EP")})
