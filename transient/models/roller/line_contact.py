@@ -38,6 +38,8 @@ from transient.solvers.newton import NewtonError
 SCHEMES = ("upwind2", "upwind1")
 #: the corner of the Moes chart solved directly from the Hertz pressure; beyond it, continuation from it
 M_EASY, L_EASY = 10.0, 5.0
+#: Newton iterations allowed per continuation step (a step needing more is too long: it is halved)
+PATH_MAX_ITER = 25
 
 
 class _DenseOperator:
@@ -222,14 +224,17 @@ class LineContact:
                     u0 = self.initial_guess(film)
                 else:
                     u0 = initial.state if initial is not None else interpolate_state(grid_prev, u, grid)
-                nr, its, norms = self._newton(film, u0, tol, max_iter, [None, 0.3, 0.03] if k == 0 else [None, 0.3])
+                if k == 0 and initial is None:
+                    nr, its, norms = self._newton(film, u0, tol, max_iter, [None, 0.3, 0.03])
+                else:  # from a nearby solution Newton converges fast or not at all: then the path
+                    nr, its, norms = self._newton(film, u0, tol, min(max_iter, PATH_MAX_ITER), [None])
                 iters += its
             if nr is None and easy:
                 ok, msg = False, f"level {k + 1}/{len(levels)} ({grid.x.size} nodes): Newton did not converge"
                 u = u0
                 break
             if nr is None:
-                path = self.continuation(grid, tol=tol, max_iter=max_iter, penalty=penalty)
+                path = self.continuation(grid, tol=tol, max_iter=min(max_iter, PATH_MAX_ITER), penalty=penalty)
                 iters += path.iterations
                 norms = path.residual_norms
                 notes.append(f"{grid.x.size} nodes: {path.message}")
@@ -282,7 +287,7 @@ class LineContact:
                 norms = exc.result.residual_norms
         return None, its, norms
 
-    def continuation(self, grid: TensorGrid | None = None, tol: float = 1e-9, max_iter: int = 30,
+    def continuation(self, grid: TensorGrid | None = None, tol: float = 1e-9, max_iter: int = PATH_MAX_ITER,
                      penalty: float | None = None):
         """Steady film on ``grid`` by continuation (:func:`transient.models.roller.continuation.follow`)
         from the easy corner of the Moes chart: the load scaled to ``M = min(M, 10)`` and ``alpha`` to
