@@ -87,3 +87,10 @@ def test_grid_too_coarse_for_the_load_raises_with_the_residual_history():
     assert "exceeds 4/M" in str(e.value) and "did not converge" in str(e.value)
     r = e.value.result
     assert r.success is False and len(r.residual_norms) >= 2
+
+
+def test_line_steady_exports_its_fields_as_a_node_table():
+    s = chart_contact(10.0, 2.0, nodes=129).steady()
+    df = s.to_dataframe()
+    assert len(df) == s.x.size and df.attrs["units"] == {"x": "m", "pressure": "Pa", "film": "m"}
+    assert np.array_equal(df["film"].to_numpy(), s.film)
