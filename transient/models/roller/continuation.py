@@ -54,7 +54,8 @@ def follow(solve, predict, central_film, u0, *, first_step: float = 0.25, max_ch
         s_new = min(1.0, s + ds)
         start = predict(s, u, s_new)
         try:
-            nr = solve(s_new, start)
+            with np.errstate(over="ignore", invalid="ignore"):  # a too long step may overflow exp(alpha p): rejected
+                nr = solve(s_new, start)
             hc_new = central_film(s_new, nr.x)
             ok = bool(np.isfinite(hc_new) and hc_new > 0 and abs(math.log(hc_new / hc)) <= max_change)
             out.iterations += nr.iterations
