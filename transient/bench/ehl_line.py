@@ -59,7 +59,8 @@ def newton_cost(n: int, repeat: int = 3) -> float:
 def main(out, quick: bool = False) -> str:
     out = Path(out)
     nodes = 513 if quick else 1025
-    points = [(10.0, 0.0), (100.0, 10.0)] if quick else [(M, L) for M in (10.0, 100.0, 1000.0) for L in (0.0, 10.0, 25.0)]
+    points = [(10.0, 0.0), (100.0, 10.0)] if quick else [(M, L) for M in (10.0, 100.0, 1000.0)
+                                                          for L in (0.0, 10.0, 25.0)]
     chart_point(10.0, 5.0, nodes=129)  # JIT warm-up
     rows = []
     for M, L in points:

@@ -297,8 +297,9 @@ class RollerContact:
                penalty: float | None = None) -> RollerSteady:
         """Steady EHL film (module docstring). The coarsest level starts from the dry pressure with
         pseudo-transient continuation (backward-Euler steps of the squeeze-film transient, first step
-        0.3 c/u) and is solved to ``sqrt(tol)``; finer levels start from the interpolated coarser
-        solution with plain Newton (pseudo-transient if that fails). ``penalty``: None for the exact
+        0.3 c/u) and is solved to ``sqrt(tol)`` -- above the paper case's mid-plane M (3.2) it is reached by
+        load continuation instead (:meth:`continuation`; ``solver_info["continuation"]``); finer levels
+        start from the interpolated coarser solution with plain Newton (pseudo-transient if that fails). ``penalty``: None for the exact
         complementarity (Fischer-Burmeister), or the penalty factor (the transient's ``GAMMA`` gives its limit). Raises
         :class:`EHLConvergenceError` with the non-converged result (``success=False``, residual history)
         unless ``raise_on_failure=False``."""
@@ -367,10 +368,10 @@ class RollerContact:
 
     def continuation(self, spec, tol: float = 1e-8, max_iter: int = 40, penalty: float | None = None):
         """Steady film on the grid ``spec`` by load continuation
-        (:func:`transient.models.roller.continuation.follow`) from the load whose mid-plane M is 3.2 (the paper case; solved
-        from its dry pressure by pseudo-transient Newton) up to this contact's. Each contact on the path
-        has its own dry footprint and scaled grid: a step carries the pressure in pascals and the
-        central film in metres to the next grid. Returns the
+        (:func:`transient.models.roller.continuation.follow`) from the load whose mid-plane M is 3.2
+        (the paper case; solved from its dry pressure by pseudo-transient Newton) up to this contact's.
+        Each contact on the path has its own dry footprint and scaled grid: a step carries the pressure
+        in pascals and the central film in metres to the next grid. Returns the
         :class:`~transient.models.roller.continuation.PathResult` (state on this contact's grid)."""
         w1 = self.load
         w0 = w1 * min(1.0, M_EASY_2D / self.mid_plane_M)

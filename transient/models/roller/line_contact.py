@@ -31,7 +31,8 @@ from transient.models.roller.dry import edge_positions, polonsky_keer
 from transient.models.roller.results import EHLConvergenceError, LineDry, LineSteady, LineTransient
 from transient.models.roller.transient import load_ratio, run_squeeze
 from transient.physics.elasticity import line_influence
-from transient.physics.line_formulas import dowson_toyoda_central, hertz_line, line_groups, martin_min, moes_central, moes_groups
+from transient.physics.line_formulas import (dowson_toyoda_central, hertz_line, line_groups, martin_min, moes_central,
+                                             moes_groups)
 from transient.physics.rheology import DOWSON_HIGGINSON_PARK, Rheology
 from transient.solvers.newton import NewtonError
 
@@ -222,11 +223,9 @@ class LineContact:
             if initial is not None or easy or k > k_path:
                 if k == 0 and initial is None:
                     u0 = self.initial_guess(film)
-                else:
-                    u0 = initial.state if initial is not None else interpolate_state(grid_prev, u, grid)
-                if k == 0 and initial is None:
                     nr, its, norms = self._newton(film, u0, tol, max_iter, [None, 0.3, 0.03])
                 else:  # from a nearby solution Newton converges fast or not at all: then the path
+                    u0 = initial.state if initial is not None else interpolate_state(grid_prev, u, grid)
                     nr, its, norms = self._newton(film, u0, tol, min(max_iter, PATH_MAX_ITER), [None])
                 iters += its
             if nr is None and easy:
@@ -241,9 +240,10 @@ class LineContact:
                 if not path.success:
                     ok = False
                     msg = f"level {k + 1}/{len(levels)} ({grid.x.size} nodes): Newton did not converge; {path.message}"
-                    if self._contact_spacing(grid) * self.M > 4.0:
-                        msg += (f"; the node spacing in the contact, {self._contact_spacing(grid):.3g} b, exceeds 4/M = "
-                                f"{4.0 / self.M:.3g} b: refine the grid (or cluster it in |x| < 1.5 b)")
+                    dx = self._contact_spacing(grid)
+                    if dx * self.M > 4.0:
+                        msg += (f"; the node spacing in the contact, {dx:.3g} b, exceeds 4/M = {4.0 / self.M:.3g} b: "
+                                "refine the grid (or cluster it in |x| < 1.5 b)")
                     u = path.state
                     film = path.film if path.film is not None else film
                     break
