@@ -1,4 +1,5 @@
-"""Figures of the rough parallel thrust pad (seed 000, Lee & Rhim Figs. 4-6)."""
+"""Figures of the rough parallel thrust pad (Lee & Rhim, "Mixed lubrication analysis of parallel thrust bearing by
+surface topography", Figs. 4-6)."""
 
 from __future__ import annotations
 

@@ -1,4 +1,5 @@
-"""Figures of rough surfaces and their flow factors (seed 000)."""
+"""Figures of rough surfaces and their flow factors (Lee & Rhim, "Mixed lubrication analysis of parallel thrust
+bearing by surface topography")."""
 
 from __future__ import annotations
 
