@@ -92,8 +92,8 @@ def pressure_fields(res):
     fig, axes = figure(1, len(cases), size=(3.3 * len(cases), 3.6))
     for ax, (title, f) in zip(axes, cases):
         im = ax.pcolormesh(a, z, f, vmin=0.0, vmax=top, shading="nearest", cmap="viridis")
-        ax.set(xlabel="angle [deg]", title=f"{title}: peak {float(f.max()):.2f}", xlim=(90, 270))
-    axes[0].set_ylabel("z / (L/2) (0: mid-plane) [-]")
+        ax.set(xlabel="angle [deg]", ylabel="z / (L/2) (0: mid-plane) [-]", title=f"{title}: peak {float(f.max()):.2f}",
+               xlim=(90, 270))
     fig.colorbar(im, ax=list(axes), label="p / p0 (Gecim bulk) [-]", shrink=0.85)
     return fig
 
