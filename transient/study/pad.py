@@ -82,13 +82,15 @@ def claim_verdicts(trends_: dict) -> list[str]:
     the reason."""
     lines = []
     for key, claim, why in CLAIMS:
-        fails = [H for H, row in trends_.items() if not row[key]]
-        where = ", ".join(trends_)
+        checked = [H.removeprefix("H=") for H in trends_]
+        fails = [H.removeprefix("H=") for H, row in trends_.items() if not row[key]]
+        where = f"h0/Rq = {', '.join(checked)}"
         if not fails:
             lines.append(f"paper's claim: {claim}: reproduced (at {where})")
         else:
-            lines.append(f"paper's claim: {claim}: NOT reproduced (fails at {', '.join(fails)} of {where}; see "
-                         f"docs/validation.md, section \"{VALIDATION_SECTION}\": {why})")
+            at = "all of " + where if len(fails) == len(checked) else f"h0/Rq = {', '.join(fails)} of {where}"
+            lines.append(f"paper's claim: {claim}: NOT reproduced (fails at {at}; see docs/validation.md, section "
+                         f"\"{VALIDATION_SECTION}\": {why})")
     return lines
 
 
