@@ -68,6 +68,75 @@ def test_solvers_and_results_know_no_model():
     assert _violations({"solvers", "results", "checks"}, {"models", "study", "plots", "analysis"}) == []
 
 
+def _module_imports():
+    """(importing module, imported module) for every ``transient.*`` import, as dotted module names; imports inside
+    functions count (``ast.walk`` sees them). ``from transient.a import b`` counts as an import of ``transient.a.b``
+    when that is a module, else of ``transient.a``."""
+    modules = {".".join(("transient",) + p.relative_to(PKG).with_suffix("").parts).removesuffix(".__init__")
+               for p in PKG.rglob("*.py")}
+    out = []
+    for path in PKG.rglob("*.py"):
+        me = ".".join(("transient",) + path.relative_to(PKG).with_suffix("").parts).removesuffix(".__init__")
+        for node in ast.walk(ast.parse(path.read_text())):
+            if isinstance(node, ast.ImportFrom) and node.module and node.module.startswith("transient"):
+                for a in node.names:
+                    sub = f"{node.module}.{a.name}"
+                    out.append((me, sub if sub in modules else node.module))
+            elif isinstance(node, ast.Import):
+                out.extend((me, a.name) for a in node.names if a.name.startswith("transient"))
+    return out, modules
+
+
+def _cycles_in(folder):
+    """The import circles among the modules of one package folder (its ``__init__`` re-exports left out)."""
+    edges, modules = _module_imports()
+    inside = {m for m in modules if m.startswith(folder + ".")}
+    graph = {m: {b for a, b in edges if a == m and b in inside and b != m} for m in inside}
+    cycles, state = [], {}
+
+    def visit(m, path):
+        state[m] = 1
+        for n in sorted(graph[m]):
+            if state.get(n) == 1:
+                cycles.append(path[path.index(n):] + [n])
+            elif n not in state:
+                visit(n, path + [n])
+        state[m] = 2
+
+    for m in sorted(graph):
+        if m not in state:
+            visit(m, [m])
+    return cycles
+
+
+def test_no_import_circle_inside_a_model_folder():
+    """A model folder is a set of blocks with arrows one way (imports inside functions count)."""
+    folders = sorted({p.parent for p in (PKG / "models").rglob("*.py") if p.parent != PKG / "models"})
+    assert len(folders) >= 4
+    for folder in folders:
+        name = ".".join(("transient",) + folder.relative_to(PKG).parts)
+        assert _cycles_in(name) == [], name
+
+
+def test_the_circle_finder_finds_a_circle(tmp_path, monkeypatch):
+    """The rule above can fail: two modules importing each other (one inside a function) are a circle."""
+    pkg = tmp_path / "transient" / "models" / "toy"
+    pkg.mkdir(parents=True)
+    (pkg / "a.py").write_text("from transient.models.toy.b import g\n")
+    (pkg / "b.py").write_text("def g():\n    from transient.models.toy import a\n")
+    monkeypatch.setitem(globals(), "PKG", tmp_path / "transient")
+    assert _cycles_in("transient.models.toy") != []
+
+
+def test_results_and_checks_import_nothing_above_them():
+    """``results.py`` and ``checks.py`` sit at the bottom: they import only ``_version`` (not the package root, not
+    a room)."""
+    edges, _ = _module_imports()
+    bad = sorted((a, b) for a, b in edges if a in ("transient.results", "transient.checks")
+                 and b not in ("transient._version",))
+    assert bad == []
+
+
 def test_every_scenario_answers_help_without_running(capsys):
     """--help prints the options and exits at once (argparse), for every scenario script."""
     import runpy

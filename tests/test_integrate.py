@@ -275,3 +275,36 @@ def test_time_budget_stops_a_long_run(method):
     wall = _time.perf_counter() - t0
     assert not r.success and "time budget of 0.2 s used up" in r.message
     assert wall < 5.0 and r.t.size < 11
+
+
+def test_a_back_end_is_one_entry_in_the_table(monkeypatch):
+    """A new integration method is one function and one entry in ``BACKENDS``: the facade validates, guards and
+    reports it like the others (here forward Euler on y' = -y, first order: error ~ dt / 2 * t e^-t)."""
+    from transient.solvers.integrate import BACKENDS, Backend
+
+    def euler(problem, t_eval, out, guard, settings):
+        rhs = guard.wrap(problem.rhs, "rhs", poison=False)
+        y, f, t = problem.y0.copy(), np.empty(problem.n), t_eval[0]
+        out.put(y)
+        for t_next in t_eval[1:]:
+            n = int(np.ceil((t_next - t) / settings.dt - 1e-9))
+            h = (t_next - t) / n
+            for _ in range(n):
+                rhs(t, y, f)
+                y, t = y + h * f, t + h
+                guard.n_steps += 1
+            out.put(y)
+        return True, "reached the final time"
+
+    def decay(t, y, out):
+        out[:] = -y
+
+    monkeypatch.setitem(BACKENDS, "euler", Backend(euler, fixed_step=True))
+    t = np.linspace(0.0, 1.0, 3)
+    r = solve(Problem(y0=np.ones(1), rhs=decay), t, method="euler", dt=1e-3)
+    assert r.success and r.method == "euler" and r.stats.n_steps == 1000 and r.stats.n_rhs == 1000
+    assert r.stats.n_error_test_failures == 0
+    err = np.abs(r.y[:, 0] - np.exp(-t))
+    assert np.all(err[1:] > 0.2 * 0.5e-3 * t[1:] * np.exp(-t[1:])) and np.all(err <= 0.5e-3 * t * np.exp(-t) * 1.2)
+    with pytest.raises(ValueError, match="dt > 0"):
+        solve(Problem(y0=np.ones(1), rhs=decay), t, method="euler")

@@ -28,7 +28,8 @@ _os.environ.setdefault("OMP_WAIT_POLICY", "PASSIVE")
 # 190 ms on two threads against 4.4 ms on one. Takes effect only if numpy is not loaded yet; a user's value wins.
 _os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 
-from transient.analysis.acoustics import a_weighting  # noqa: E402
+from transient._version import __version__  # noqa: E402,F401
+from transient.analysis.acoustics import a_weighting
 from transient.models.ball import ThrustBallBearing
 from transient.models.journal import Groove, JournalBearing, JournalOrbit, stability_onset
 from transient.models.pad import ThrustPad
@@ -47,4 +48,3 @@ __all__ = [
     "RoughSurface", "Solution", "Stats", "ThrustBallBearing", "ThrustPad", "a_weighting", "bearing_noise", "contact_factor",
     "greenwood_tripp", "load_result", "pressure_flow_factors", "stability_onset", "shear_flow_factor", "solve", "steel_asperity_contact",
 ]
-__version__ = "0.1.0"

@@ -4,12 +4,23 @@ allowed range, in one line.
 Numbers must be real and finite (no strings, no booleans, no NaN, no infinity: an infinite "upper bound" is
 never a value); integers must be whole (a grid of 41.5 cells is an error, not 41); flags must be booleans
 (the string ``'False'`` is not false).
+
+The integrator's arguments (tolerances, steps, output times) are checked here too, by :func:`check_rtol`,
+:func:`check_atol`, :func:`check_step`, :func:`check_count` and :func:`check_times`: they are unitless or in the
+problem's own time unit, so their messages say "must be ..., got ..." instead of naming a unit.
 """
 
 from __future__ import annotations
 
 import math
 import numbers
+
+import numpy as np
+
+#: The smallest absolute tolerance any integration accepts: the error weights ``1 / atol`` of states at zero
+#: overflow SUNDIALS' weighted norms below it (IDA then crashes the process).
+ATOL_FLOOR = 1e-30
+ATOL_WHY = f"(below {ATOL_FLOOR:g} the error weights 1/atol of states at zero overflow the integrators' norms)"
 
 
 def _real(name, value, unit):
@@ -57,7 +68,100 @@ def check_bool(name, value):
 
 
 def check_choice(name, value, choices):
-    """One of ``choices``."""
+    """One of ``choices`` (strings)."""
     if not isinstance(value, str) or value not in choices:
-        raise ValueError(f"{name} = {value!r}; allowed: {', '.join(map(repr, choices))}")
+        raise ValueError(f"{name} must be one of {tuple(choices)!r}, got {name} = {value!r}")
     return value
+
+
+# --------------------------------------------------------------------------------------------------
+# Integrator arguments (unitless, or in the problem's own time unit)
+# --------------------------------------------------------------------------------------------------
+
+def _short(x, limit=60) -> str:
+    r = repr(x)
+    return r if len(r) <= limit else r[:limit - 3] + "..."
+
+
+def _number(value):
+    """``value`` as a float if it is a real number (not a bool, a string or an array), else None."""
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (numbers.Real, np.floating, np.integer)):
+        return None
+    return float(value)
+
+
+def _show(value) -> str:
+    """A value for an error message: numbers plainly (0.5, nan; not np.float64(0.5))."""
+    x = _number(value)
+    return repr(x) if x is not None else _short(value)
+
+
+def check_step(name, value, *, free_zero=False) -> float:
+    """A finite number > 0 (a fixed step), or >= 0 with ``free_zero`` (a step limit where 0 means free)."""
+    x = _number(value)
+    if free_zero:
+        if x is None or not (0.0 <= x < math.inf):
+            raise ValueError(f"{name} must be a finite number >= 0 (0 = free), got {_show(value)}")
+        return x
+    if x is None or not (0.0 < x < math.inf):
+        raise ValueError(f"{name} must be a finite number in (0, inf), got {_show(value)}")
+    return x
+
+
+def check_rtol(value) -> float:
+    """A relative tolerance: a finite number in (0, 1)."""
+    x = _number(value)
+    if x is None or not (0.0 < x < 1.0):
+        raise ValueError(f"rtol must be a finite number in (0, 1), got {_show(value)}")
+    return x
+
+
+def check_atol(value, n=None):
+    """An absolute tolerance: a finite number >= :data:`ATOL_FLOOR`, or (given ``n``) one such value per state."""
+    what = "a finite number > 0" + (f" or an array of {n} such numbers (one per state)" if n is not None else "")
+    if isinstance(value, (bool, np.bool_)):
+        raise ValueError(f"atol must be {what}, got {value!r}")
+    try:
+        a = np.asarray(value, dtype=float)
+    except (TypeError, ValueError):
+        raise ValueError(f"atol must be {what}, got {_short(value)}") from None
+    if a.ndim == 0:
+        v = check_step("atol", value if _number(value) is not None else float(a))
+        if v < ATOL_FLOOR:
+            raise ValueError(f"atol = {v!r} is below {ATOL_FLOOR:g} {ATOL_WHY}")
+        return v
+    if n is None or a.shape != (n,):
+        raise ValueError(f"atol must be a scalar or an array of length n={n} (one per state), got shape {a.shape}")
+    bad = np.flatnonzero(~(np.isfinite(a) & (a >= ATOL_FLOOR)))
+    if bad.size:
+        raise ValueError(f"atol[{bad[0]}] must be a finite number > 0 (at least {ATOL_FLOOR:g}), got "
+                         f"{_show(a[bad[0]])} ({bad.size} bad of {n})")
+    return np.ascontiguousarray(a)
+
+
+def check_count(name, value, low=1) -> int:
+    """A whole number >= ``low`` given as an int (or a whole float); not a bool."""
+    if (isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, np.integer, float))
+            or not math.isfinite(value) or int(value) != value or value < low):
+        raise ValueError(f"{name} must be an integer >= {low}, got {value!r}")
+    return int(value)
+
+
+def check_times(name, value) -> np.ndarray:
+    """A 1-D array of at least 2 strictly increasing finite times."""
+    try:
+        t = np.asarray(value, dtype=float)
+    except (TypeError, ValueError):
+        raise ValueError(f"{name} must be a 1-D array of at least 2 increasing finite times, got "
+                         f"{_short(value)}") from None
+    if t.ndim != 1 or t.size < 2:
+        raise ValueError(f"{name} must be a 1-D array of at least 2 times [s], got shape {t.shape}")
+    bad = np.flatnonzero(~np.isfinite(t))
+    if bad.size:
+        raise ValueError(f"{name} must be finite, got {name}[{bad[0]}] = {_show(t[bad[0]])}")
+    d = np.flatnonzero(~(np.diff(t) > 0))
+    if d.size:
+        k = d[0]
+        raise ValueError(f"{name} must be strictly increasing [s], got {name}[{k + 1}] = {_show(t[k + 1])} <= "
+                         f"{name}[{k}] = {_show(t[k])}")
+    return t

@@ -24,6 +24,8 @@ from typing import Any, ClassVar
 
 import numpy as np
 
+from transient._version import __version__
+
 FORMAT = "transient-result/1"
 _REGISTRY: dict[str, type] = {}
 
@@ -161,9 +163,8 @@ def atomic_savez(path, arrays: dict) -> Path:
 
 
 def load_result(path) -> Result:
-    """Read a result written by :meth:`Result.save` (no pickle; only this package's result types)."""
-    import transient  # noqa: F401  (registers every model's result types)
-
+    """Read a result written by :meth:`Result.save` (no pickle; only this package's result types, registered when
+    ``transient`` is imported, which importing this module already did)."""
     path = Path(path)
     try:
         with np.load(path, allow_pickle=False) as z:
@@ -290,6 +291,4 @@ def _short(v):
 
 
 def _version() -> str:
-    from transient import __version__
-
     return __version__

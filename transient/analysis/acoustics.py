@@ -33,6 +33,7 @@ import numpy as np
 
 from transient.analysis.spectra import amplitude_spectrum, harmonic_amplitudes, mean_and_fluctuation
 from transient.results import Result, quantity, result_type
+from transient.units import rpm_to_hz
 
 P_REF = 20e-6  #: reference sound pressure in air [Pa] (eq. 15)
 P_REF_OIL = 1e-6  #: reference the paper uses for levels in the oil film (Figs. 6, 7) [Pa]
@@ -187,7 +188,7 @@ class BearingNoise(Result):
     @property
     def frequency_hz(self) -> float:
         """Shaft frequency f_1 [Hz]."""
-        return self.speed_rpm / 60.0
+        return rpm_to_hz(self.speed_rpm)
 
     @property
     def harmonic_frequencies_hz(self) -> np.ndarray:
@@ -263,7 +264,7 @@ def analyse_pressure(pressure, x, y, t, speed_rpm, revolutions, harmonics, trans
     T = transmission_coefficient(transmission)
     N_ij = spl(T * p_f)
     h_spl = spl(T * h_rms)
-    f1 = speed_rpm / 60.0
+    f1 = rpm_to_hz(speed_rpm)
     A = a_weighting(f1 * np.arange(1, harmonics + 1))
     h_levels = energy_average(h_spl.reshape(harmonics, -1), axis=1)
     h_levels_a = h_levels + A

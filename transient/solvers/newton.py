@@ -37,6 +37,7 @@ import scipy.linalg as sla
 import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
+from transient.checks import check_choice
 from transient.fv.reynolds import Fields, ReynoldsOperator
 from transient.results import Result, result_type
 
@@ -113,8 +114,7 @@ def newton(residual: Callable, jacobian: Callable, x0, *, xtol: float = 1e-10, f
         raise ValueError(f"xtol and ftol must be > 0, got xtol={xtol!r}, ftol={ftol!r}")
     if isinstance(max_iter, bool) or int(max_iter) != max_iter or max_iter < 1:
         raise ValueError(f"max_iter must be an integer >= 1, got {max_iter!r}")
-    if test not in ("either", "both"):
-        raise ValueError(f"test must be 'either' or 'both', got {test!r}")
+    check_choice("test", test, ("either", "both"))
     x = np.array(x0, dtype=float, copy=True)
     r = np.asarray(residual(x), dtype=float).copy()
     r_inf = float(np.max(np.abs(r)))

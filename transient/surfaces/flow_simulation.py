@@ -53,6 +53,7 @@ from dataclasses import field
 import numpy as np
 import scipy.sparse.linalg as spla
 
+from transient.checks import check_choice
 from transient.fv.grid import Axis, Grid2D
 from transient.fv.reynolds import ReynoldsOperator
 from transient.surfaces.roughness import RoughSurface
@@ -196,8 +197,7 @@ def patch_flow_factor(heights, spacing, H_values, direction: str = "x", sigma=No
     if not np.all(np.isfinite(z)):
         raise ValueError("heights must be finite [m]")
     dx, dy = _spacing(spacing)
-    if direction not in DIRECTIONS:
-        raise ValueError(f"direction must be one of {DIRECTIONS}, got {direction!r}")
+    check_choice("direction", direction, DIRECTIONS)
     H = _check_H(H_values)
     floor = check_range("contact_floor", contact_floor, "-", 0.0, 1.0, low_open=True, high_open=True)
     if isinstance(refine, bool) or int(refine) != refine or refine < 1:
@@ -270,8 +270,7 @@ def pressure_flow_factor_numerical(surface_or_params, H_values, direction: str =
     Returns a :class:`FlowFactorResult` (``H, phi_mean, phi_std = result``).
     """
     H = _check_H(H_values)
-    if direction not in DIRECTIONS:
-        raise ValueError(f"direction must be one of {DIRECTIONS}, got {direction!r}")
+    check_choice("direction", direction, DIRECTIONS)
     if isinstance(surface_or_params, RoughSurface):
         surfaces = [surface_or_params]
     elif isinstance(surface_or_params, dict):

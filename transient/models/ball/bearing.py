@@ -43,8 +43,9 @@ from transient.physics import film_formulas as hd
 from transient.physics.hertz import (HertzContact, gap_rolling_axis, gap_rolling_axis_slope, hertz_contact,
                                      meniscus_position, reduced_modulus)
 from transient.models.ball.track import FrontTrack, UniformTrack
-from transient.checks import check_int, check_range
+from transient.checks import check_choice, check_int, check_range
 from transient.results import Result, quantity, record_type, result_type
+from transient.units import rpm_to_rad_s
 
 FLOODED, STARVED, PARCHED = "fully flooded", "starved", "parched"
 REPLENISHMENT = ("thin_film", "chiu", "chiu_thin")
@@ -210,12 +211,12 @@ class ThrustBallBearing:
     def entrainment_speed(self, speed_rpm: float) -> float:
         """Mean rolling speed [m/s] ``u = omega d_e / 4`` (each race moves at ``omega/2`` relative to the cage)."""
         check_range("speed_rpm", speed_rpm, "rpm", 0.0, 1e6, low_open=True, high_open=True)
-        return speed_rpm * 2.0 * math.pi / 60.0 * self.pitch_diameter / 4.0
+        return rpm_to_rad_s(speed_rpm) * self.pitch_diameter / 4.0
 
     def pass_interval(self, speed_rpm: float) -> float:
         """Time between two balls over a point of either race [s]: ``4 pi / (Z omega)``."""
         check_range("speed_rpm", speed_rpm, "rpm", 0.0, 1e6, low_open=True, high_open=True)
-        return 4.0 * math.pi / (self.n_balls * speed_rpm * 2.0 * math.pi / 60.0)
+        return 4.0 * math.pi / rpm_to_rad_s(self.n_balls * speed_rpm)  # 4 pi / (Z omega)
 
     # contact --------------------------------------------------------------------------------------
     def contact(self, load: float, exact: bool = True) -> HertzContact:
@@ -277,10 +278,8 @@ class ThrustBallBearing:
             time ``front_tau`` (scaled).
         periodic_tol : relative change of ``h_inf`` over 3 passes that counts as periodic.
         """
-        if replenishment not in REPLENISHMENT:
-            raise ValueError(f"replenishment = {replenishment!r} must be one of {REPLENISHMENT}")
-        if grid not in GRIDS:
-            raise ValueError(f"grid = {grid!r} must be one of {GRIDS}")
+        check_choice("replenishment", replenishment, REPLENISHMENT)
+        check_choice("grid", grid, GRIDS)
         if int(n_passes) != n_passes or n_passes < 1:
             raise ValueError(f"n_passes = {n_passes!r} [-] must be an integer >= 1")
         check_range("ridge_fraction", ridge_fraction, "-", 0.0, 1.0, low_open=False, high_open=False)

@@ -59,6 +59,7 @@ import numba as nb
 import numpy as np
 import scipy.sparse as sp
 
+from transient.checks import check_choice
 from transient.solvers.integrate import Problem, solve
 
 RESERVOIR, CLOSED = 0, 1
@@ -504,8 +505,7 @@ class FrontLevelling:
 
     def __init__(self, mesh: FrontMesh, bc: str = "reservoir", h_res: float = 1.0, mobility_film: float = 0.0,
                  hstar: float = 1e-3, tau: float = 1e-3, delta: float | None = None):
-        if bc not in ("reservoir", "closed"):
-            raise ValueError(f"bc = {bc!r} must be 'reservoir' or 'closed'")
+        check_choice("bc", bc, ("reservoir", "closed"))
         if not (hstar > 0 and tau > 0):
             raise ValueError(f"hstar = {hstar!r}, tau = {tau!r} [scaled] must be > 0")
         self.mesh = mesh

@@ -49,6 +49,7 @@ import scipy.fft as sfft
 import scipy.sparse as sp
 from scipy.integrate import quad
 
+from transient.checks import check_choice
 from transient.solvers.integrate import Problem
 
 BCS = ("reservoir", "closed", "periodic")
@@ -155,8 +156,7 @@ class LevellingGrid:
             raise ValueError(f"n_cells = {n_cells!r} [-] must be an integer >= 5")
         if not (np.isfinite(length) and length > 0):
             raise ValueError(f"length = {length!r} [x_ref] must be finite and > 0")
-        if bc not in BCS:
-            raise ValueError(f"bc = {bc!r} must be one of {BCS}")
+        check_choice("bc", bc, BCS)
         if bc == "reservoir" and not h_res > 0:
             raise ValueError(f"h_res = {h_res!r} [h_ref] must be > 0")
         if not (np.isfinite(mobility_film) and mobility_film >= 0):

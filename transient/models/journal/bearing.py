@@ -17,14 +17,17 @@ from scipy.optimize import brentq
 
 from transient.checks import check_bool, check_int, check_positive, check_range
 from transient.fv.grid import Axis, Grid2D
-from transient.models.journal.film import Film, omega
+from transient.models.journal.film import Film
+from transient.models.journal.gecim_film import flow_law
 from transient.physics.layered import NO_LAYERS, BoundaryLayers, Gecim, LayeredFilm, Newtonian
 from transient.models.journal.kernels import N_ROTOR
 from transient.models.journal.reynolds_film import ReynoldsFilm
+from transient.models.journal.scales import film_scales
+from transient.units import rpm_to_rad_s as omega  # the journal's name for it (public: models.journal.omega)
 
 #: The cavitation models of :class:`JournalBearing` (``cavitation=``).
 CAVITATION_MODES = ("elrod", "reynolds")
-from transient.results import Result, quantity, result_type
+from transient.models.journal.results import FilmState  # noqa: F401 (its home was here)
 
 
 
@@ -70,83 +73,6 @@ class Groove:
     def __post_init__(self):
         check_range("groove.angle_deg", self.angle_deg, "deg", -360.0, 360.0)
         check_range("groove.width_deg", self.width_deg, "deg", 0.0, 90.0, low_open=True)
-
-
-@result_type
-class FilmState(Result):
-    """A film solution with the journal at a fixed position (and, optionally, moving).
-
-    ``pressure`` [Pa, absolute] and ``film_content`` (theta = rho/rho_c) are (n_axial, n_theta) arrays on
-    the modelled grid (half bearing when symmetric; row 0 next to the mid-plane); ``angle_deg`` and
-    ``z`` [m] are the cell-centre coordinates. ``force`` [N] is the film force on the journal
-    (x towards the load, y at +90 deg in the direction of rotation), ``load`` [N] its magnitude (the
-    external load it carries) and ``attitude_angle_deg`` the angle from the load line to the line of
-    centres, in the direction of rotation. ``friction_force`` [N]: the film's drag on the journal surface;
-    ``bearing_friction_force`` [N]: its drag on the bearing surface, along the rotation
-    (:func:`~transient.models.journal.film.wall_friction`; boundary layers and the Gecim bulk included).
-    """
-
-    time_axis = None
-    eccentricity_ratio: float = quantity("-")
-    attitude_angle_deg: float = quantity("deg")
-    position: tuple[float, float] = quantity("m")
-    force: tuple[float, float] = quantity("N")
-    load: float = quantity("N")
-    min_film: float = quantity("m")
-    speed_rpm: float = quantity("rpm")
-    pressure: np.ndarray = quantity("Pa")
-    film_content: np.ndarray = quantity("-")
-    angle_deg: np.ndarray = quantity("deg")
-    z: np.ndarray = quantity("m")
-    u: np.ndarray = quantity("-", repr=False)
-    newton_iterations: int = 0
-    friction_force: float = quantity("N", float("nan"))
-    bearing_friction_force: float = quantity("N", float("nan"))
-    film_thickness: np.ndarray = quantity("m", None, repr=False)
-    pressure_gradient: np.ndarray = quantity("Pa/m", None, repr=False)
-    axial_pressure_gradient: np.ndarray = quantity("Pa/m", None, repr=False)
-    viscosity: float = quantity("Pa s", float("nan"))
-    sliding_speed: float = quantity("m/s", float("nan"))
-    layers: tuple | None = None  # (delta [m], mu_a [Pa s], mu_b [Pa s], alpha [m]) or None
-    gecim: tuple | None = None  # the shear-thinning bulk (kappa [Pa], mu_2/mu_1) or None (Newtonian)
-    success: bool = True
-    message: str = "converged"
-
-    @property
-    def max_pressure(self) -> float:
-        return float(self.pressure.max())
-
-    def _law(self):
-        """The film's flow law (:class:`~transient.physics.layered.LayeredFilm`, SI)."""
-        ly = NO_LAYERS if self.layers is None else BoundaryLayers(self.layers[0], (self.layers[1], self.layers[2]),
-                                                                  self.layers[3])
-        return LayeredFilm(self.viscosity, Newtonian() if self.gecim is None else Gecim(*self.gecim), ly)
-
-    def velocity_profile(self, angle_deg: float, axial_index: int = 0, points: int = 41):
-        """Circumferential velocity across the film at the cell nearest ``angle_deg`` in axial row
-        ``axial_index`` (0: next to the mid-plane): (heights z [m] from the journal surface, velocity [m/s]),
-        from the film's flow law (seed 004: the journal moves at ``sliding_speed``, the bearing is at rest;
-        boundary layers, if any, move with their walls plus their Darcy slip; a Gecim bulk through the 2-D law
-        at the cell's circumferential and axial pressure gradients)."""
-        ang = check_range("angle_deg", angle_deg, "deg", -360.0, 720.0)
-        row = check_int("axial_index", axial_index, "-", 0, self.pressure.shape[0] - 1)
-        n = check_int("points", points, "-", 2, 100000)
-        col = int(np.argmin(np.abs(np.angle(np.exp(1j * np.radians(self.angle_deg - ang))))))
-        h, G = float(self.film_thickness[row, col]), float(self.pressure_gradient[row, col])
-        z = np.linspace(0.0, h, n)
-        if self.gecim is None:
-            return z, self._law().velocity(h, G, self.sliding_speed, 0.0, z)
-        Gz = float(self.axial_pressure_gradient[row, col])
-        return z, self._law().velocity_2d(h, (G, Gz), (self.sliding_speed, 0.0), (0.0, 0.0), z)[:, 0]
-
-    def interface_shear(self, axial_index: int = 0):
-        """Circumferential shear stress [Pa] at the journal-side and the bearing-side interface of the boundary
-        layers (seed 004 eq. 28; the walls themselves without layers) along the angle in axial row
-        ``axial_index``: (lower, upper) arrays over ``angle_deg``, from the film's flow law at each cell."""
-        row = check_int("axial_index", axial_index, "-", 0, self.pressure.shape[0] - 1)
-        h, G, Gz = self.film_thickness[row], self.pressure_gradient[row], self.axial_pressure_gradient[row]
-        s = self._law().stresses_2d(h, np.stack([G, Gz], axis=-1), (self.sliding_speed, 0.0), (0.0, 0.0))
-        return s.lower_interface[:, 0], s.upper_interface[:, 0]
 
 
 class JournalBearing:
@@ -215,6 +141,7 @@ class JournalBearing:
             check_range("layers.thickness", layers.thickness, "m", 0.0, 0.5 * self.clearance, high_open=True,
                         why="(two layers thinner than the clearance: the bulk must not vanish)")
         self.layers = layers
+        self.flow_law = flow_law(self.viscosity, self.rheology, layers)  # the one LayeredFilm of this bearing
         self.cavitation_pressure = check_range("cavitation_pressure", cavitation_pressure, "Pa", 0.0, 1e9,
                                                why="(absolute pressure)")
         self.ambient_pressure = check_range("ambient_pressure", ambient_pressure, "Pa", cavitation_pressure, 1e9,
@@ -307,9 +234,8 @@ class JournalBearing:
     def film(self, speed_rpm, n_extra=N_ROTOR) -> "Film | ReynoldsFilm":
         """The discretised film at a shaft speed (scales, operator, scratch arrays): a :class:`Film`
         (Elrod) or a :class:`~transient.models.journal.reynolds_film.ReynoldsFilm` (``cavitation="reynolds"``)."""
-        if self.cavitation == "reynolds":
-            return ReynoldsFilm(self, speed_rpm, n_extra)
-        return Film(self, speed_rpm, n_extra)
+        kind = ReynoldsFilm if self.cavitation == "reynolds" else Film
+        return kind(self.grid, film_scales(self, speed_rpm), self.flow_law, n_extra)
 
     def _check_supplied(self):
         """A steady Elrod film needs a supply: without one every starved content field is a steady state."""

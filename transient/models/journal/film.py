@@ -4,7 +4,7 @@ Scales (``p0 = 6 mu omega (R/C)^2``, the switch widths), the finite-volume opera
 trailing unknowns, the scratch arrays of :mod:`transient.models.journal.kernels`, and the evaluations
 every journal computation needs: the film equations and their Jacobian for a prescribed journal
 motion, the steady film (pseudo-transient Newton), the film force and its exact sensitivities, the
-global mass balance, and the SI :class:`~transient.models.journal.bearing.FilmState`.
+global mass balance, and the SI :class:`~transient.models.journal.results.FilmState`.
 """
 
 from __future__ import annotations
@@ -14,85 +14,82 @@ import scipy.sparse.linalg as spla
 
 from transient.fv.face_gradient import cell_gradient_values
 from transient.fv.reynolds import ReynoldsOperator
-from transient.models.journal.gecim_film import bulk_end_flow, bulk_tables, face_accuracy, no_bulk, prefetch
+from transient.models.journal.gecim_film import bulk_end_flow, bulk_tables, no_bulk, prefetch
 from transient.models.journal.kernels import (N_ROTOR, content_universal, film_force, film_jacobian, film_residual,
                                               state_fields)
+from transient.models.journal.results import FilmState
+from transient.models.journal.scales import (ContentScratch, FilmScales, RotorColumns, Scratch, cell_geometry,
+                                             operator_tables)
+from transient.physics.layered import NO_LAYERS, Gecim, LayeredFilm
 from transient.solvers.newton import NewtonError, newton
 
-#: Default pressure width of the Elrod switch as a fraction of p0 = 6 mu omega (R/C)^2 (docs/journal.md).
-SWITCH_WIDTH_P0 = 1e-4
+class FilmBlock:
+    """What both films are made of: the ``grid``, the :class:`~.scales.FilmScales` at one speed and the flow law
+    (:class:`~transient.physics.layered.LayeredFilm`). A film knows no bearing: it is a block a rotor on several
+    bearings can hold."""
+
+    def __init__(self, grid, scales: FilmScales, law: LayeredFilm):
+        self.grid = grid
+        self.scales = scales
+        self.law = law
+        self.shear_thinning = isinstance(law.rheology, Gecim)
+        self.speed_rpm = scales.speed_rpm
+        self.omega = scales.omega
+        self.p0 = scales.p0
+        self.force_scale = scales.force_scale  # N per unit of Fbar
+        self.u_supply = scales.u_supply
+        self.sym = scales.sym
+        self.cosp, self.sinp, self.area = self.geo = cell_geometry(grid)
 
 
-def omega(speed_rpm) -> float:
-    """Shaft angular speed [rad/s] from [rpm]."""
-    return 2.0 * np.pi * float(speed_rpm) / 60.0
+class Film(FilmBlock):
+    """The discretised Elrod film of a bearing at one shaft speed (:class:`FilmBlock`): the operator with ``n_extra``
+    trailing unknowns (the rotor), the kernels' named data (:mod:`~transient.models.journal.scales`: ``switch``,
+    ``geo``, ``fields`` = the scratch arrays its kernels fill (H, P, theta = C, ... of the last state evaluated),
+    ``extras`` = the rotor columns, ``fv`` = the operator, ``work`` = the content formulation's scratch), and the
+    steady, sensitivity and mass-balance evaluations."""
 
-
-class Film:
-    """The discretised film of a bearing at one shaft speed: scales, the operator with ``n_extra``
-    trailing unknowns (the rotor), the scratch arrays its kernels fill (H, P, theta = C, ... of the last
-    state evaluated), and the steady, sensitivity and mass-balance evaluations."""
-
-    def __init__(self, bearing, speed_rpm, n_extra=N_ROTOR):
-        b = bearing
-        self.bearing = b
-        self.speed_rpm = float(speed_rpm)
-        self.omega = omega(speed_rpm)
-        self.p0 = b.pressure_scale(speed_rpm)
-        self.beta_bar = b.bulk_modulus / self.p0
-        self.width = SWITCH_WIDTH_P0 if b.switch_width is None else b.switch_width / self.p0
-        self.content_scale = b.switch_content_width / self.width  # r: content width / pressure width
-        self.force_scale = self.p0 * b.radius ** 2  # N per unit of Fbar
-        u_supply = (b.supply_pressure - b.cavitation_pressure) / self.p0
-        u_amb = (b.ambient_pressure - b.cavitation_pressure) / self.p0
+    def __init__(self, grid, scales: FilmScales, law: LayeredFilm, n_extra=N_ROTOR):
+        super().__init__(grid, scales, law)
+        s = scales
+        self.beta_bar = s.beta_bar
+        self.width = s.width
+        self.content_scale = s.content_scale  # r: content width / pressure width
+        u_amb = s.u_ambient
         # prescribed pressures sit on the sharp Elrod curve, not on the rounded switch (physics.cavitation:
         # P(0) = w ln 2 at an end held at p_c biased the load linearly in w): P = u, theta = 1 + u / beta_bar
-        self.op = ReynoldsOperator(b.grid, n_extra=n_extra, upwind=True, boundary_P=u_amb,
-                                   boundary_C=1.0 + u_amb / self.beta_bar, diagonals=b.shear_thinning)
-        self.op.u_fixed[~self.op.free] = u_supply  # groove cells at the supply pressure
+        self.op = ReynoldsOperator(grid, n_extra=n_extra, upwind=True, boundary_P=u_amb,
+                                   boundary_C=1.0 + u_amb / self.beta_bar, diagonals=self.shear_thinning)
+        self.op.u_fixed[~self.op.free] = s.u_supply  # groove cells at the supply pressure
         self.n = n = self.op.n_cells
-        self.u_supply = u_supply
         op = self.op
-        # constant geometry and scratch arrays shared by the kernels (allocated once)
-        self.cosp = np.ascontiguousarray(np.cos(b.phi))
-        self.sinp = np.ascontiguousarray(np.sin(b.phi))
-        self.area = np.ascontiguousarray(op.grid.area)
-        self.sym = 2.0 if b.symmetric else 1.0
-        self.H, self.P, self.dP, self.C, self.D, self.dD, self.k, self.c, self.R = (np.empty(n) for _ in range(9))
-        self.zero = np.zeros(n)
+        # scratch arrays shared by the kernels (allocated once)
+        self.fields = Scratch(*(np.empty(n) for _ in range(8)), np.zeros(n), np.empty(n))
+        self.H, self.P, self.dP, self.C, self.D, self.dD, self.k, self.c, self.zero, self.R = self.fields
         self.scale = np.ones(op.n)  # row scaling of the ODE Jacobian; the rotor rows keep 1
-        self.dk_dq = np.zeros((N_ROTOR, n))
-        self.dc_dq = np.zeros((N_ROTOR, n))
-        self.no_dq = np.zeros((N_ROTOR, n))
-        self.pos_row = np.ascontiguousarray(op.stencil.pos_row_extra)
-        self.pos_col = np.ascontiguousarray(op.stencil.pos_col_extra)
-        self.indices = op.stencil.indices
-        # the kernels' tuple arguments (models/journal/kernels.py)
         ne = op.n_extra
-        self.switch = (self.beta_bar, self.width, self.content_scale) + b.layer_groups()
-        self.geo = (self.cosp, self.sinp, self.area)
-        self.fields = (self.H, self.P, self.dP, self.C, self.D, self.dD, self.k, self.c, self.zero, self.R)
-        self.extras = (self.dk_dq[:ne], self.dc_dq[:ne], self.no_dq[:ne], self.pos_row, self.pos_col, self.indices,
-                       self.scale)
-        self.bulk = bulk_tables(op, b, speed_rpm) if b.shear_thinning else no_bulk()
-        self.fv = op.face_tuples + (op.no_face_k, self.bulk)
-        # content formulation (kernels.content_*): u, theta, du/dm, du/dX, du/dY, CSC column pointers
-        self.work = (np.zeros(n), np.zeros(n), np.zeros(n), np.zeros(n), np.zeros(n),
-                     np.ascontiguousarray(op.stencil.indptr, dtype=np.int64))
+        self.extras = RotorColumns(np.zeros((ne, n)), np.zeros((ne, n)), np.zeros((ne, n)),
+                                   np.ascontiguousarray(op.stencil.pos_row_extra),
+                                   np.ascontiguousarray(op.stencil.pos_col_extra), op.stencil.indices, self.scale)
+        self.switch = s.switch
+        self.bulk = bulk_tables(op, law, s.clearance, s.omega * s.radius) if self.shear_thinning else no_bulk()
+        self.fv = operator_tables(op, self.bulk)
+        self.work = ContentScratch(np.zeros(n), np.zeros(n), np.zeros(n), np.zeros(n), np.zeros(n),
+                                   np.ascontiguousarray(op.stencil.indptr, dtype=np.int64))
 
     # residual / Jacobian of the prescribed-motion film equations G(u) = 0 --------------------------
     def prefetch(self, u, X, Y):
         """A Gecim bulk's face values at ``(u, X, Y)`` on all cores (:func:`~transient.models.journal.gecim_film.prefetch`),
         so the kernel called next at the same state finds them; nothing for a Newtonian bulk."""
-        if self.bearing.shear_thinning:
+        if self.shear_thinning:
             state_fields(u, X, Y, self.switch, self.geo, self.fields, self.fv)
             prefetch(self.P, self.H, self.bulk)
 
     def prefetch_content(self, y):
         """:meth:`prefetch` at the content state ``y = [m, X, Y, ...]`` of the content formulation."""
-        if self.bearing.shear_thinning:
-            u = self.work[0]
-            content_universal(y, self.switch, self.geo, self.op.free, self.op.u_fixed, self.work[1], u)
+        if self.shear_thinning:
+            u = self.work.u
+            content_universal(y, self.switch, self.geo, self.op.free, self.op.u_fixed, self.work.theta, u)
             self.prefetch(u, y[self.n], y[self.n + 1])
 
     def residual(self, u, X, Y, VX=0.0, VY=0.0, rate=0.0, C_ref=None, out=None):
@@ -191,46 +188,44 @@ class Film:
         ok = free[b]
         if np.any(op.bdir[ok] != 1):
             raise NotImplementedError("mass_flows assumes Dirichlet faces only at the bearing ends")
-        if w.bearing.shear_thinning:
+        if w.shear_thinning:
             ends = w.sym * bulk_end_flow(w.P, w.H, free, op.fL.size, w.bulk)
         else:
             ends = w.sym * float(np.sum((-w.k[b] * (op.bP - w.P[b]) / op.bd * op.bs)[ok]))
         return M, ends, total - ends
 
     def state(self, u, X, Y, iterations=0):
-        """The SI :class:`~transient.models.journal.bearing.FilmState` of the film ``u`` at (X, Y)."""
+        """The SI :class:`~transient.models.journal.results.FilmState` of the film ``u`` at (X, Y)."""
         F = self.force(u, X, Y)  # fills P and C
         return film_state(self, u, X, Y, F, self.P, self.C, iterations)
 
 
 def film_state(film, u, X, Y, F, P, content, iterations=0):
-    """The SI :class:`~transient.models.journal.bearing.FilmState` of a film (:class:`Film` or
+    """The SI :class:`~transient.models.journal.results.FilmState` of a film (:class:`Film` or
     :class:`~transient.models.journal.reynolds_film.ReynoldsFilm`) at journal position (X, Y): its dimensionless
     force ``F``, pressure ``P`` (p0 units above p_c) and film content per cell. The attitude is measured from
     the load line (the load balances -F) to the line of centres."""
-    from transient.models.journal.bearing import FilmState
-
-    b = film.bearing
+    s, law, grid = film.scales, film.law, film.grid
+    C, R = s.clearance, s.radius
     Fx, Fy = F[0] * film.force_scale, F[1] * film.force_scale
     eps = float(np.hypot(X, Y))
     load_dir = np.arctan2(-Fy, -Fx)
     att = np.degrees(np.angle(np.exp(1j * (np.arctan2(Y, X) - load_dir)))) if eps > 0 else 0.0
-    grid = b.grid
-    pressure = grid.to_2d(b.cavitation_pressure + film.p0 * np.asarray(P)).copy()
+    pressure = grid.to_2d(s.cavitation_pressure + film.p0 * np.asarray(P)).copy()
     theta = grid.to_2d(np.asarray(content, dtype=float)).copy()
     h, G, Gz = film_geometry(film, X, Y, P)
     friction = wall_friction(film, h, G, Gz, theta)
-    ly = b.layers
-    rh = b.rheology
+    ly = None if law.layers is NO_LAYERS else law.layers
+    rh = law.rheology
     return FilmState(
-        eccentricity_ratio=eps, attitude_angle_deg=float(att), position=(X * b.clearance, Y * b.clearance),
-        force=(Fx, Fy), load=float(np.hypot(Fx, Fy)), min_film=b.clearance * (1.0 - eps),
+        eccentricity_ratio=eps, attitude_angle_deg=float(att), position=(X * C, Y * C),
+        force=(Fx, Fy), load=float(np.hypot(Fx, Fy)), min_film=C * (1.0 - eps),
         speed_rpm=film.speed_rpm, pressure=pressure, film_content=theta, angle_deg=np.degrees(grid.x.centres),
-        z=grid.z.centres * b.radius, u=np.array(u, dtype=float), newton_iterations=iterations,
+        z=grid.z.centres * R, u=np.array(u, dtype=float), newton_iterations=iterations,
         friction_force=friction[0], bearing_friction_force=friction[1], film_thickness=h, pressure_gradient=G,
-        axial_pressure_gradient=Gz, viscosity=b.viscosity, sliding_speed=omega(film.speed_rpm) * b.radius,
+        axial_pressure_gradient=Gz, viscosity=law.viscosity, sliding_speed=s.omega * R,
         layers=None if ly is None else (ly.thickness, ly.viscosity[0], ly.viscosity[1], ly.alpha),
-        gecim=(rh.kappa, rh.viscosity_ratio) if b.shear_thinning else None)
+        gecim=(rh.kappa, rh.viscosity_ratio) if film.shear_thinning else None)
 
 
 def film_geometry(film, X, Y, P):
@@ -239,10 +234,9 @@ def film_geometry(film, X, Y, P):
     the cells' Green-Gauss gradients of the operator (:func:`~transient.fv.face_gradient.cell_gradient_values`:
     central differences on this uniform grid; the prescribed pressure at an end, the cell's own at the symmetry
     plane)."""
-    b = film.bearing
-    grid = b.grid
-    h = b.clearance * grid.to_2d(1.0 + X * film.cosp + Y * film.sinp)
-    g = cell_gradient_values(film.op, np.asarray(P, dtype=float)) * (film.p0 / b.radius)
+    s, grid = film.scales, film.grid
+    h = s.clearance * grid.to_2d(1.0 + X * film.cosp + Y * film.sinp)
+    g = cell_gradient_values(film.op, np.asarray(P, dtype=float)) * (film.p0 / s.radius)
     return h, grid.to_2d(g[:, 0]), grid.to_2d(g[:, 1])
 
 
@@ -256,17 +250,13 @@ def wall_friction(film, h, G, Gz, theta) -> tuple[float, float]:
     circumferential wall stresses are those of the 2-D law at ``(G, Gz)``; the Newtonian law is linear and uses
     ``G`` alone. The two differ by ``sum G h theta dA``: the moment of the pressure force about the journal centre
     over R (test)."""
-    from transient.physics.layered import GAUSS_POINTS, NO_LAYERS, LayeredFilm
-
-    b = film.bearing
-    points = face_accuracy(b.rheology.viscosity_ratio)[0] if b.shear_thinning else GAUSS_POINTS
-    law = LayeredFilm(b.viscosity, b.rheology, b.layers or NO_LAYERS, gauss_points=points)
-    U = omega(film.speed_rpm) * b.radius
-    if b.shear_thinning:
+    sc, law = film.scales, film.law
+    U = sc.omega * sc.radius
+    if film.shear_thinning:
         s = law.stresses_2d(h, np.stack([G, Gz], axis=-1), (U, 0.0), (0.0, 0.0))
         lower, upper = s.lower_wall[..., 0], s.upper_wall[..., 0]
     else:
         s = law.stresses(h, G, U, 0.0)
         lower, upper = s.lower_wall, s.upper_wall
-    weight = (2.0 if b.symmetric else 1.0) * np.minimum(theta, 1.0) * b.grid.to_2d(film.area) * b.radius ** 2
+    weight = sc.sym * np.minimum(theta, 1.0) * film.grid.to_2d(film.area) * sc.radius ** 2
     return float(-np.sum(lower * weight)), float(-np.sum(upper * weight))

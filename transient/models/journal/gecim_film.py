@@ -28,7 +28,7 @@ import numpy as np
 from numba import njit, prange
 
 from transient.fv.face_gradient import WIDTH, face_gradients
-from transient.physics.layered import NO_LAYERS, LayeredFilm, gecim_face_2d
+from transient.physics.layered import GAUSS_POINTS, NO_LAYERS, Gecim, LayeredFilm, gecim_face_2d
 
 GRAD_SCALE = 6.0  # p0 / R in units of mu_1 omega R / C^2: the law's G = 6 grad P
 
@@ -62,15 +62,22 @@ class BulkFaces(NamedTuple):
     last_H: np.ndarray   # ... and film of the last evaluation (:func:`evaluate` skips a repeat)
 
 
-def bulk_tables(op, bearing, speed_rpm) -> BulkFaces:
-    """The :class:`BulkFaces` of a Gecim bulk on ``op`` (9-point pattern) at ``speed_rpm``: the face-gradient
-    tables, the law's dimensionless parameters and Newton stop (:func:`face_accuracy`), the Gauss rule and
-    the scratch arrays."""
-    from transient.models.journal.film import omega  # (film.py imports this module)
+def flow_law(viscosity, rheology, layers) -> LayeredFilm:
+    """The film's flow law (:class:`~transient.physics.layered.LayeredFilm`) with the quadrature the kernels use: a
+    Gecim bulk's :func:`face_accuracy` Gauss points per panel, the law's default otherwise. A bearing builds it once;
+    the film's faces (:func:`bulk_tables`) and its wall friction both use it."""
+    shear_thinning = isinstance(rheology, Gecim)
+    points = face_accuracy(rheology.viscosity_ratio)[0] if shear_thinning else GAUSS_POINTS
+    return LayeredFilm(viscosity, rheology, layers or NO_LAYERS, gauss_points=points)
 
-    points, tol = face_accuracy(bearing.rheology.viscosity_ratio)
-    law = LayeredFilm(bearing.viscosity, bearing.rheology, bearing.layers or NO_LAYERS, gauss_points=points)
-    params = np.array(law._parameters(bearing.clearance, omega(speed_rpm) * bearing.radius) + (tol,))
+
+def bulk_tables(op, law: LayeredFilm, clearance, sliding_speed) -> BulkFaces:
+    """The :class:`BulkFaces` of the Gecim bulk ``law`` (:func:`flow_law`) on ``op`` (9-point pattern), with the
+    reference length ``clearance`` [m] and speed ``sliding_speed`` [m/s] (``omega R``): the face-gradient tables,
+    the law's dimensionless parameters and Newton stop (:func:`face_accuracy`), the Gauss rule and the scratch
+    arrays."""
+    tol = face_accuracy(law.rheology.viscosity_ratio)[1]
+    params = np.array(law._parameters(clearance, sliding_speed) + (tol,))
     xg, wg = law._gauss()
     tables = face_gradients(op)
     nf, n = tables[0].shape[0], op.n_cells

@@ -97,16 +97,10 @@ def rotor_accelerations(tau, fx, fy, kappa, wbar, ebar):
     return kappa * fx + wbar + ebar * np.cos(tau), kappa * fy + ebar * np.sin(tau)
 
 
-# Kernel arguments travel as tuples (built once by :class:`~transient.models.journal.film.Film`):
-#   switch = (beta_bar, width, content_scale, layer_gap, darcy)   the Elrod switch (physics.cavitation) and the
-#                                                   boundary layers' Poiseuille law (film_fields)
-#   rotor  = (kappa, wbar, ebar, sym)               the rotor groups (module docstring)
-#   geo    = (cosp, sinp, area)                     per cell
-#   fields = (H, P, dP, C, D, dD, k, c, zero, R)    scratch arrays, filled by film_fields
-#   extras = (dk_dq, dc_dq, no_dq, pos_row, pos_col, indices, scale)   the rotor columns and rows
-#   fv     = (faces, boundary, cells, face_k, bulk) the operator's face tuples (fv.reynolds.FACE_TUPLES) and the
-#                                                   Gecim bulk's faces (gecim_film.bulk_tables; empty arrays,
-#                                                   gecim_film.no_bulk, for a Newtonian bulk)
+# Kernel arguments travel as named tuples grouped by lifetime (models/journal/scales.py; built once by
+# :class:`~transient.models.journal.film.Film` and the orbit): ``switch`` (Switch, per speed), ``rotor`` (Rotor,
+# per orbit), ``geo`` (CellGeometry, per grid), ``fields`` (Scratch), ``extras`` (RotorColumns), ``fv`` (Operator:
+# the operator's face tables and the Gecim bulk's faces, empty for a Newtonian bulk), ``work`` (ContentScratch).
 
 @njit(cache=True)
 def state_fields(u, X, Y, switch, geo, fields, fv):
@@ -115,7 +109,7 @@ def state_fields(u, X, Y, switch, geo, fields, fv):
     cosp, sinp, area = geo
     H, P, dP, C, D, dD, k, c, zero, _ = fields
     film_fields(u, X, Y, cosp, sinp, beta_bar, width, content_scale, layer_gap, darcy, H, P, dP, C, D, dD, k, c)
-    sharp_fixed_cells(fv[2][0], fv[2][1], beta_bar, P, dP, C, D, dD)
+    sharp_fixed_cells(fv.cells.free, fv.cells.u_fixed, beta_bar, P, dP, C, D, dD)
 
 
 @njit(cache=True)
@@ -128,12 +122,12 @@ def _stencil_residual(u, X, Y, switch, geo, fields, fv, R):
         k[:] = 0.0
     residual_kernel(u, P, C, k, k, c, zero, True, faces, boundary, cells, face_k, R)
     if gecim:
-        bulk_residual(P, H, cells[0], bulk, R)
+        bulk_residual(P, H, cells.free, bulk, R)
 
 
 @njit(cache=True)
 def _stencil_jacobian(u, X, Y, switch, geo, fields, extras, fv, data):
-    layer_gap, darcy = switch[3], switch[4]
+    layer_gap, darcy = switch.layer_gap, switch.darcy
     cosp, sinp, area = geo
     H, P, dP, C, D, dD, k, c, zero, _ = fields
     dk_dq, dc_dq, no_dq, pos_row, pos_col, indices, scale = extras
@@ -148,7 +142,7 @@ def _stencil_jacobian(u, X, Y, switch, geo, fields, extras, fv, data):
     jacobian_kernel(P, dP, C, D, k, zero, k, zero, c, zero, dk_dq, dk_dq, dc_dq, no_dq, True,
                     faces, boundary, cells, face_k, pos_col, data)
     if gecim:
-        bulk_jacobian(P, dP, H, cosp, sinp, cells[0], bulk, pos_col, dk_dq.shape[0], data)
+        bulk_jacobian(P, dP, H, cosp, sinp, cells.free, bulk, pos_col, dk_dq.shape[0], data)
 
 
 @njit(cache=True)
@@ -157,7 +151,7 @@ def ode_rhs(tau, y, out, switch, rotor, geo, fields, fv):
     kappa, wbar, ebar, sym = rotor
     cosp, sinp, area = geo
     H, P, dP, C, D, dD, k, c, zero, R = fields
-    free = fv[2][0]
+    free = fv.cells.free
     n = free.size
     X, Y, VX, VY = y[n], y[n + 1], y[n + 2], y[n + 3]
     _stencil_residual(y[:n], X, Y, switch, geo, fields, fv, R)
@@ -185,7 +179,7 @@ def ode_jacobian(tau, y, data, f, switch, rotor, geo, fields, extras, fv):
     cosp, sinp, area = geo
     H, P, dP, C, D, dD, k, c, zero, R = fields
     dk_dq, dc_dq, no_dq, pos_row, pos_col, indices, scale = extras
-    free, u_fixed, pos_c = fv[2]
+    free, u_fixed, pos_c = fv.cells
     n = free.size
     X, Y, VX, VY = y[n], y[n + 1], y[n + 2], y[n + 3]
     _stencil_jacobian(y[:n], X, Y, switch, geo, fields, extras, fv, data)
@@ -214,7 +208,7 @@ def dae_residual(tau, y, yp, out, switch, rotor, geo, fields, fv):
     kappa, wbar, ebar, sym = rotor
     cosp, sinp, area = geo
     H, P, dP, C, D, dD, k, c, zero, R = fields
-    free = fv[2][0]
+    free = fv.cells.free
     n = free.size
     X, Y, VX, VY = y[n], y[n + 1], y[n + 2], y[n + 3]
     Xd, Yd = yp[n], yp[n + 1]
@@ -243,7 +237,7 @@ def dae_jacobian(tau, y, yp, cj, data, switch, rotor, geo, fields, extras, fv):
     cosp, sinp, area = geo
     H, P, dP, C, D, dD, k, c, zero, R = fields
     dk_dq, dc_dq, no_dq, pos_row, pos_col, indices, scale = extras
-    free, u_fixed, pos_c = fv[2]
+    free, u_fixed, pos_c = fv.cells
     n = free.size
     X, Y = y[n], y[n + 1]
     Xd, Yd = yp[n], yp[n + 1]
@@ -279,7 +273,7 @@ def film_residual(u, X, Y, VX, VY, rate, C_ref, out, switch, geo, fields, fv):
     """
     cosp, sinp, area = geo
     H, P, dP, C, D, dD, k, c, zero, R = fields
-    free = fv[2][0]
+    free = fv.cells.free
     _stencil_residual(u, X, Y, switch, geo, fields, fv, out)
     for i in range(u.size):
         if free[i]:
@@ -293,7 +287,7 @@ def film_jacobian(u, X, Y, VX, VY, rate, data, switch, geo, fields, extras, fv):
     cosp, sinp, area = geo
     H, P, dP, C, D, dD, k, c, zero, R = fields
     dk_dq, dc_dq, no_dq, pos_row, pos_col, indices, scale = extras
-    free, u_fixed, pos_c = fv[2]
+    free, u_fixed, pos_c = fv.cells
     _stencil_jacobian(u, X, Y, switch, geo, fields, extras, fv, data)
     ne = dk_dq.shape[0]
     for i in range(u.size):
@@ -344,9 +338,9 @@ def content_universal(y, switch, geo, free, u_fixed, theta, u):
 def _content_film(y, switch, geo, fields, fv, work, sym):
     """The film of a content state: u = C^-1(m / H), the stencil residual R (in ``fields``) and the force."""
     cosp, sinp, area = geo
-    P, R = fields[1], fields[9]
-    free, u_fixed = fv[2][0], fv[2][1]
-    u, theta = work[0], work[1]
+    P, R = fields.P, fields.R
+    free, u_fixed = fv.cells.free, fv.cells.u_fixed
+    u, theta = work.u, work.theta
     n = free.size
     content_universal(y, switch, geo, free, u_fixed, theta, u)
     _stencil_residual(u, y[n], y[n + 1], switch, geo, fields, fv, R)
@@ -357,9 +351,9 @@ def _content_film(y, switch, geo, fields, fv, work, sym):
 def content_residual(tau, y, yp, out, switch, rotor, geo, fields, fv, work):
     """IDA residual of the content formulation (block comment above); groove cells: ``m' = 0``."""
     kappa, wbar, ebar, sym = rotor
-    area = geo[2]
-    R = fields[9]
-    free = fv[2][0]
+    area = geo.area
+    R = fields.R
+    free = fv.cells.free
     n = free.size
     fx, fy = _content_film(y, switch, geo, fields, fv, work, sym)
     for i in range(n):
@@ -375,9 +369,9 @@ def content_residual(tau, y, yp, out, switch, rotor, geo, fields, fv, work):
 def content_rhs(tau, y, out, switch, rotor, geo, fields, fv, work):
     """ODE right-hand side of the content formulation: ``m' = -R / A`` (free cells), 0 (groove), rotor."""
     kappa, wbar, ebar, sym = rotor
-    area = geo[2]
-    R = fields[9]
-    free = fv[2][0]
+    area = geo.area
+    R = fields.R
+    free = fv.cells.free
     n = free.size
     fx, fy = _content_film(y, switch, geo, fields, fv, work, sym)
     for i in range(n):
@@ -399,7 +393,7 @@ def content_jacobian(tau, y, yp, cj, data, switch, rotor, geo, fields, extras, f
     cosp, sinp, area = geo
     H, P, dP, C, D, dD, k, c, zero, R = fields
     dk_dq, dc_dq, no_dq, pos_row, pos_col, indices, scale = extras
-    free, u_fixed, pos_c = fv[2]
+    free, u_fixed, pos_c = fv.cells
     u, theta, E, ux, uy, indptr = work
     n = free.size
     content_universal(y, switch, geo, free, u_fixed, theta, u)
@@ -468,11 +462,11 @@ def content_jacobian(tau, y, yp, cj, data, switch, rotor, geo, fields, extras, f
 def content_ode_jacobian(tau, y, data, switch, rotor, geo, fields, extras, fv, work):
     """CSC data of ``df/dy`` for :func:`content_rhs`: ``-diag(1/A, 1, 1, 1, 1)`` times the residual Jacobian
     at ``cj = 0`` (groove rows zero)."""
-    free = fv[2][0]
-    indices, scale = extras[5], extras[6]
+    free = fv.cells.free
+    indices, scale = extras.indices, extras.scale
     n = free.size
     content_jacobian(tau, y, y, 0.0, data, switch, rotor, geo, fields, extras, fv, work)
-    area = geo[2]
+    area = geo.area
     for i in range(n):
         scale[i] = -1.0 / area[i] if free[i] else 0.0
     for i in range(n, scale.size):

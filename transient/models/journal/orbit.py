@@ -20,18 +20,18 @@ from which ``run(..., resume=True)`` continues after a crash with nothing lost.
 from __future__ import annotations
 
 import hashlib
-from dataclasses import field
-
 import numpy as np
 
-from transient.checks import check_positive, check_range
+from transient.checks import ATOL_FLOOR, ATOL_WHY, check_choice, check_positive, check_range, check_rtol
 from transient.models.journal.bearing import JournalBearing, check_speed
 from transient.models.journal.kernels import (N_ROTOR, content_jacobian, content_ode_jacobian, content_residual,
                                               content_rhs, dae_jacobian, dae_residual, ode_jacobian, ode_rhs)
+from transient.models.journal.results import OrbitResult
+from transient.models.journal.scales import Rotor
 from transient.models.journal.rk4 import FilmStageSolver
-from transient.results import Result, quantity, result_type
 from transient.solvers.integrate import METHODS, Problem, Stats
 from transient.solvers.longrun import run_long
+from transient.units import rpm_to_hz
 
 FORMULATIONS = ("content", "universal")
 #: The content formulation's film state is O(1) in the full film, where the pressure is only its 1/beta_bar
@@ -40,56 +40,6 @@ FORMULATIONS = ("content", "universal")
 CONTENT_RTOL_FACTOR = 0.1
 RECORDABLE = ("force", "pressure", "film_content", "min_film", "mass", "outflow")
 FIELD_SERIES = ("pressure", "film_content")
-RECORDED_FIELDS = ("force", "min_film", "mass", "outflow", "pressure", "pressure_t", "film_content", "film_content_t")
-
-
-@result_type
-class OrbitResult(Result):
-    """Time series of one orbit run (outputs at ``outputs_per_revolution`` per revolution).
-
-    ``t`` [s], ``x``, ``y`` [m] (journal centre; x towards the load); the recorded series (None if not
-    asked): ``force`` [N] (film force on the journal, (n, 2)), ``min_film`` [m], ``mass`` [m^3],
-    ``outflow`` [m^3/s] ((n, 2): ends, groove), ``pressure`` [Pa] ((k, nz, ntheta) at ``pressure_t``
-    [s], only over the recorded window), ``film_content`` (at ``film_content_t``). ``stats`` sums the
-    integrator statistics over chunks; ``touched_at`` [s] if the journal reached the wall (the run stopped
-    there); ``final_state`` (film + rotor, dimensionless) at ``final_time`` [s]: ``run(..., start=result)``
-    continues from it with the unbalance phase where it was. ``success`` is False (and ``message`` says
-    why) if the integrator failed; the outputs up to the failure are kept.
-    """
-
-    t: np.ndarray = quantity("s")
-    x: np.ndarray = quantity("m")
-    y: np.ndarray = quantity("m")
-    method: str = "ida"
-    stats: Stats = field(default_factory=Stats)
-    speed_rpm: float = quantity("rpm", 0.0)
-    clearance: float = quantity("m", 0.0)
-    success: bool = True
-    message: str = ""
-    touched_at: float | None = quantity("s", None)
-    final_state: np.ndarray | None = None
-    final_time: float = quantity("s", 0.0)
-    force: np.ndarray | None = quantity("N", None)
-    min_film: np.ndarray | None = quantity("m", None)
-    mass: np.ndarray | None = quantity("m^3", None)
-    outflow: np.ndarray | None = quantity("m^3/s", None)
-    pressure: np.ndarray | None = quantity("Pa", None)
-    pressure_t: np.ndarray | None = quantity("s", None)
-    film_content: np.ndarray | None = None
-    film_content_t: np.ndarray | None = quantity("s", None)
-
-    @property
-    def eccentricity_ratio(self) -> np.ndarray:
-        return np.hypot(self.x, self.y) / self.clearance
-
-    @property
-    def revolutions(self) -> np.ndarray:
-        return self.t * self.speed_rpm / 60.0
-
-    @property
-    def fields(self) -> dict:
-        """The recorded series by name (only those recorded)."""
-        return {k: getattr(self, k) for k in RECORDED_FIELDS if getattr(self, k) is not None}
 
 
 class JournalOrbit:
@@ -200,8 +150,7 @@ class JournalOrbit:
 
         ``touch_gap`` > 0 adds a terminal event when the eccentricity ratio reaches ``1 - touch_gap``
         (the journal touches the bearing)."""
-        if formulation not in FORMULATIONS:
-            raise ValueError(f"formulation = {formulation!r}; allowed: {', '.join(FORMULATIONS)}")
+        check_choice("formulation", formulation, FORMULATIONS)
         y0 = self.initial_state() if y0 is None else np.asarray(y0, dtype=float)
         if y0.shape != (self.n,):
             raise ValueError(f"the initial state has shape {y0.shape}; this orbit has {self.n} states")
@@ -214,7 +163,7 @@ class JournalOrbit:
         f = self.film
         n = f.n
         switch, geo, fields, extras, fv, work = f.switch, f.geo, f.fields, f.extras, f.fv, f.work
-        rotor = (self.kappa, self.wbar, self.ebar, f.sym)
+        rotor = Rotor(self.kappa, self.wbar, self.ebar, f.sym)
         fbuf = np.empty(self.n)
 
         if formulation == "content":
@@ -307,16 +256,14 @@ class JournalOrbit:
         """
         revolutions = check_positive("revolutions", revolutions, "rev")
         if method != "rk4":
-            rtol = check_range("rtol", rtol, "-", 1e-14, 1.0)
+            rtol = check_rtol(rtol)
         if isinstance(record, str):
             record = (record,)
         bad = [r for r in record if r not in RECORDABLE]
         if bad:
             raise ValueError(f"record: unknown series {bad}; allowed: {RECORDABLE}")
-        if method not in METHODS:
-            raise ValueError(f"method = {method!r} is not a method; allowed: {', '.join(METHODS)}")
-        if formulation not in FORMULATIONS:
-            raise ValueError(f"formulation = {formulation!r}; allowed: {', '.join(FORMULATIONS)}")
+        check_choice("method", method, METHODS)
+        check_choice("formulation", formulation, FORMULATIONS)
         if method == "rk4" and formulation != "universal":
             raise ValueError('method "rk4" solves the film in the universal variable; formulation must be "universal"')
         opr = check_range("outputs_per_revolution", outputs_per_revolution, "1/rev", 1, 1e6)
@@ -382,10 +329,14 @@ class JournalOrbit:
             touched = out.event[0] / self.film.omega
             what = "journal touches the bearing" if self.bearing.layers is None else "boundary layers touch"
             message = (f"{what} (eccentricity ratio {self.bearing.max_eccentricity_ratio - touch_gap:.4f}) at t = "
-                       f"{touched:.6g} s ({touched * self.speed_rpm / 60:.2f} revolutions)")
+                       f"{touched:.6g} s ({touched * rpm_to_hz(self.speed_rpm):.2f} revolutions)")
         r = rec.result(method, out.stats, touched, message, out.t)
         r.success = out.success
         return r
+
+    def at_speed(self, speed_rpm) -> "JournalOrbit":
+        """The same rotor on the same bearing at another shaft speed [rpm]."""
+        return JournalOrbit(self.bearing, self.rotor_mass, self.unbalance, self.load, speed_rpm)
 
     def periodic_response(self, **kwargs):
         """The periodic orbit of this rotor at its speed by shooting, with its Floquet multipliers:
@@ -409,7 +360,7 @@ class JournalOrbit:
         switch), so the cells get ``atol min(1, 1 / r)``: neither the content nor the pressure is held more
         loosely than ``atol``. Content layout: the cells' unknown is the content ``H theta`` itself and gets
         ``atol``."""
-        atol = check_range("atol", atol, "-", 1e-25, 1.0, why="(absolute on the dimensionless states; below 1e-25 the integrators' error weights overflow)")
+        atol = check_range("atol", atol, "-", ATOL_FLOOR, 1.0, why=ATOL_WHY)
         out = np.full(self.n, atol)
         if formulation == "universal":
             out[: self.film.n] = atol * min(1.0, 1.0 / self.film.content_scale)

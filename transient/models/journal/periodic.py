@@ -36,9 +36,8 @@ import numpy as np
 import scipy.linalg as sla
 import scipy.sparse.linalg as spla
 
-from transient.checks import check_positive, check_range
+from transient.checks import check_choice, check_positive, check_range
 from transient.models.journal.kernels import N_ROTOR
-from transient.models.journal.orbit import JournalOrbit
 from transient.results import Result, quantity, result_type
 from transient.solvers.integrate import solve
 from transient.solvers.shooting import floquet_multipliers, newton_krylov, newton_picard
@@ -47,6 +46,13 @@ METHODS = ("shooting", "newton-krylov")
 #: below this dominant multiplier the derivatives' noise (~rtol / fd_step) swamps the whirl pair: a continuation
 #: then takes the whirl basis afresh at the next speed instead of following the noisy subspace
 REFINE_FLOOR = 0.05
+
+
+def _check_orbit(orbit):
+    """Shooting and continuation take an orbit object: a :class:`~transient.models.journal.JournalOrbit` (this
+    module never imports orbit.py, which offers these functions as its methods)."""
+    if not all(callable(getattr(orbit, a, None)) for a in ("run", "linear_start", "at_speed")):
+        raise TypeError(f"orbit must be a JournalOrbit, got {type(orbit).__name__}")
 
 
 @result_type
@@ -252,10 +258,8 @@ def periodic_response(orbit: JournalOrbit, rtol: float = 1e-6, tol: float | None
         linearised response's quasi-steady film, an extrapolation in speed -- is not the periodic one, and its
         error would spoil the first step (docs/periodic.md).
     """
-    if not isinstance(orbit, JournalOrbit):
-        raise TypeError(f"orbit must be a JournalOrbit, got {type(orbit).__name__}")
-    if method not in METHODS:
-        raise ValueError(f"method = {method!r}; allowed: {', '.join(METHODS)}")
+    _check_orbit(orbit)
+    check_choice("method", method, METHODS)
     rtol = check_range("rtol", rtol, "-", 1e-13, 1e-2)
     tol = rtol if tol is None else check_positive("tol", tol, "C")
     opr = int(check_range("outputs_per_revolution", outputs_per_revolution, "1/rev", 4, 1e5))
@@ -337,22 +341,19 @@ def response_curve(orbit: JournalOrbit, speeds_rpm, rtol: float = 1e-5, tol: flo
     start the path). Speeds past the onset give the unstable
     periodic orbit (flagged ``unstable``); with ``whirl_revolutions`` > 0 the quasi-periodic response there is
     also integrated (:func:`quasi_periodic_response`)."""
-    if not isinstance(orbit, JournalOrbit):
-        raise TypeError(f"orbit must be a JournalOrbit, got {type(orbit).__name__}")
+    _check_orbit(orbit)
     speeds = np.asarray(speeds_rpm, dtype=float).ravel()
     if speeds.size == 0 or np.any(speeds <= 0):
         raise ValueError(f"speeds_rpm must be positive speeds [rpm], got {speeds_rpm!r}")
     if speeds.size > 1 and not (np.all(np.diff(speeds) > 0) or np.all(np.diff(speeds) < 0)):
         raise ValueError("speeds_rpm must be strictly monotone (a continuation path) [rpm]")
-    if predictor not in ("secant", "quadratic"):
-        raise ValueError(f"predictor = {predictor!r}; allowed: secant, quadratic")
+    check_choice("predictor", predictor, ("secant", "quadratic"))
     done = [p for p in getattr(previous, "orbits", previous or []) if p.converged][-3:]
     path = [p.speed_rpm for p in done]
     orbits, whirls = [], []
     basis = done[-1].basis if done and done[-1].max_multiplier > REFINE_FLOOR else None
     for s in speeds:
-        o = orbit if s == orbit.speed_rpm else JournalOrbit(orbit.bearing, orbit.rotor_mass, orbit.unbalance,
-                                                             orbit.load, s)
+        o = orbit if s == orbit.speed_rpm else orbit.at_speed(s)
         start = _extrapolate(np.array(path), [p.state for p in done], s, 3 if predictor == "quadratic" else 2)
         p = periodic_response(o, rtol=rtol, tol=tol, start=start, basis=basis, fd_step=fd_step,
                               outputs_per_revolution=outputs_per_revolution)
@@ -439,7 +440,7 @@ def stability_onset(orbit: JournalOrbit, below: PeriodicOrbit, above: PeriodicOr
         s = float(np.clip(onset, lo + 0.05 * (hi - lo), hi - 0.05 * (hi - lo)))
         a, b = pts[lo], pts[hi]
         start = a.state + (s - lo) / (hi - lo) * (b.state - a.state)
-        o = JournalOrbit(orbit.bearing, orbit.rotor_mass, orbit.unbalance, orbit.load, s)
+        o = orbit.at_speed(s)
         p = periodic_response(o, rtol=rtol, start=start, basis=(a if s - lo < hi - s else b).basis)
         if not p.converged:
             break

@@ -44,12 +44,14 @@ import scipy.sparse.linalg as spla
 
 from transient.fv.reynolds import ReynoldsOperator, jacobian_kernel, residual_kernel
 from transient.fv.stencil import five_point_mask
-from transient.models.journal.film import film_state, omega
+from transient.models.journal.film import FilmBlock, film_state
 from transient.models.journal.gecim_film import bulk_jacobian, bulk_residual, bulk_tables, prefetch
 from transient.models.journal.kernels import N_ROTOR, conductances, film_force, position_derivatives
+from transient.models.journal.scales import FilmScales
+from transient.physics.layered import LayeredFilm
 
 
-class ReynoldsFilm:
+class ReynoldsFilm(FilmBlock):
     """The incompressible Reynolds-condition film of a bearing at one shaft speed (module docstring).
 
     Same interface as :class:`~transient.models.journal.film.Film` for the steady computations
@@ -57,24 +59,14 @@ class ReynoldsFilm:
     ``u`` is the dimensionless pressure ``P = (p - p_c) / p0`` of every cell.
     """
 
-    def __init__(self, bearing, speed_rpm, n_extra=N_ROTOR):
-        b = bearing
-        self.bearing = b
-        self.speed_rpm = float(speed_rpm)
-        self.omega = omega(speed_rpm)
-        self.p0 = b.pressure_scale(speed_rpm)
-        self.force_scale = self.p0 * b.radius ** 2
-        self.u_supply = (b.supply_pressure - b.cavitation_pressure) / self.p0
-        u_amb = (b.ambient_pressure - b.cavitation_pressure) / self.p0
-        self.op = op = ReynoldsOperator(b.grid, n_extra=n_extra, upwind=False, boundary_P=u_amb, boundary_C=1.0,
-                                        diagonals=b.shear_thinning)
+    def __init__(self, grid, scales: FilmScales, law: LayeredFilm, n_extra=N_ROTOR):
+        super().__init__(grid, scales, law)
+        s = scales
+        self.op = op = ReynoldsOperator(grid, n_extra=n_extra, upwind=False, boundary_P=s.u_ambient, boundary_C=1.0,
+                                        diagonals=self.shear_thinning)
         op.u_fixed[~op.free] = self.u_supply
         self.n = n = op.n_cells
         self.free = op.free
-        self.cosp = np.ascontiguousarray(np.cos(b.phi))
-        self.sinp = np.ascontiguousarray(np.sin(b.phi))
-        self.area = np.ascontiguousarray(op.grid.area)
-        self.sym = 2.0 if b.symmetric else 1.0
         self.ones = np.ones(n)
         self.zero = np.zeros(n)
         self.H, self.k, self.c = np.empty(n), np.empty(n), np.empty(n)
@@ -83,8 +75,8 @@ class ReynoldsFilm:
         self.dc_dq = np.zeros((ne, n))
         self.no_dq = np.zeros((ne, n))
         self.fv = op.face_tuples + (op.no_face_k,)
-        self.layers = b.layer_groups()
-        self.bulk = bulk_tables(op, b, speed_rpm) if b.shear_thinning else None
+        self.layers = (s.layer_gap, s.darcy)
+        self.bulk = bulk_tables(op, law, s.clearance, s.omega * s.radius) if self.shear_thinning else None
         # the solve's iteration matrix for a Gecim bulk keeps the 5-point part of dG/dP (see solve)
         self.five_point = None if self.bulk is None else five_point_mask(op.stencil)
 
@@ -220,6 +212,6 @@ class ReynoldsFilm:
                                   "(use cavitation='elrod')")
 
     def state(self, u, X, Y, iterations=0):
-        """The SI :class:`~transient.models.journal.bearing.FilmState`. ``film_content`` is 1 everywhere:
+        """The SI :class:`~transient.models.journal.results.FilmState`. ``film_content`` is 1 everywhere:
         the incompressible film has no content variable (its cavitated cells are those at p = p_c)."""
         return film_state(self, u, X, Y, self.force(u, X, Y), u, self.ones, iterations)

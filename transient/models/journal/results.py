@@ -1,0 +1,143 @@
+"""Results of the journal bearing models (Rho & Kim, seed 003; the layered film of seed 004): SI fields with
+units. :class:`FilmState` is a film solution with the journal held at a position, :class:`OrbitResult` the
+time series of an orbit run."""
+
+from __future__ import annotations
+
+from dataclasses import field
+
+import numpy as np
+
+from transient.checks import check_int, check_range
+from transient.physics.layered import NO_LAYERS, BoundaryLayers, Gecim, LayeredFilm, Newtonian
+from transient.results import Result, quantity, result_type
+from transient.solvers.integrate import Stats
+from transient.units import rpm_to_hz
+
+RECORDED_FIELDS = ("force", "min_film", "mass", "outflow", "pressure", "pressure_t", "film_content", "film_content_t")
+
+
+@result_type
+class FilmState(Result):
+    """A film solution with the journal at a fixed position (and, optionally, moving).
+
+    ``pressure`` [Pa, absolute] and ``film_content`` (theta = rho/rho_c) are (n_axial, n_theta) arrays on
+    the modelled grid (half bearing when symmetric; row 0 next to the mid-plane); ``angle_deg`` and
+    ``z`` [m] are the cell-centre coordinates. ``force`` [N] is the film force on the journal
+    (x towards the load, y at +90 deg in the direction of rotation), ``load`` [N] its magnitude (the
+    external load it carries) and ``attitude_angle_deg`` the angle from the load line to the line of
+    centres, in the direction of rotation. ``friction_force`` [N]: the film's drag on the journal surface;
+    ``bearing_friction_force`` [N]: its drag on the bearing surface, along the rotation
+    (:func:`~transient.models.journal.film.wall_friction`; boundary layers and the Gecim bulk included).
+    """
+
+    time_axis = None
+    eccentricity_ratio: float = quantity("-")
+    attitude_angle_deg: float = quantity("deg")
+    position: tuple[float, float] = quantity("m")
+    force: tuple[float, float] = quantity("N")
+    load: float = quantity("N")
+    min_film: float = quantity("m")
+    speed_rpm: float = quantity("rpm")
+    pressure: np.ndarray = quantity("Pa")
+    film_content: np.ndarray = quantity("-")
+    angle_deg: np.ndarray = quantity("deg")
+    z: np.ndarray = quantity("m")
+    u: np.ndarray = quantity("-", repr=False)
+    newton_iterations: int = 0
+    friction_force: float = quantity("N", float("nan"))
+    bearing_friction_force: float = quantity("N", float("nan"))
+    film_thickness: np.ndarray = quantity("m", None, repr=False)
+    pressure_gradient: np.ndarray = quantity("Pa/m", None, repr=False)
+    axial_pressure_gradient: np.ndarray = quantity("Pa/m", None, repr=False)
+    viscosity: float = quantity("Pa s", float("nan"))
+    sliding_speed: float = quantity("m/s", float("nan"))
+    layers: tuple | None = None  # (delta [m], mu_a [Pa s], mu_b [Pa s], alpha [m]) or None
+    gecim: tuple | None = None  # the shear-thinning bulk (kappa [Pa], mu_2/mu_1) or None (Newtonian)
+    success: bool = True
+    message: str = "converged"
+
+    @property
+    def max_pressure(self) -> float:
+        return float(self.pressure.max())
+
+    def _law(self):
+        """The film's flow law (:class:`~transient.physics.layered.LayeredFilm`, SI)."""
+        ly = NO_LAYERS if self.layers is None else BoundaryLayers(self.layers[0], (self.layers[1], self.layers[2]),
+                                                                  self.layers[3])
+        return LayeredFilm(self.viscosity, Newtonian() if self.gecim is None else Gecim(*self.gecim), ly)
+
+    def velocity_profile(self, angle_deg: float, axial_index: int = 0, points: int = 41):
+        """Circumferential velocity across the film at the cell nearest ``angle_deg`` in axial row
+        ``axial_index`` (0: next to the mid-plane): (heights z [m] from the journal surface, velocity [m/s]),
+        from the film's flow law (seed 004: the journal moves at ``sliding_speed``, the bearing is at rest;
+        boundary layers, if any, move with their walls plus their Darcy slip; a Gecim bulk through the 2-D law
+        at the cell's circumferential and axial pressure gradients)."""
+        ang = check_range("angle_deg", angle_deg, "deg", -360.0, 720.0)
+        row = check_int("axial_index", axial_index, "-", 0, self.pressure.shape[0] - 1)
+        n = check_int("points", points, "-", 2, 100000)
+        col = int(np.argmin(np.abs(np.angle(np.exp(1j * np.radians(self.angle_deg - ang))))))
+        h, G = float(self.film_thickness[row, col]), float(self.pressure_gradient[row, col])
+        z = np.linspace(0.0, h, n)
+        if self.gecim is None:
+            return z, self._law().velocity(h, G, self.sliding_speed, 0.0, z)
+        Gz = float(self.axial_pressure_gradient[row, col])
+        return z, self._law().velocity_2d(h, (G, Gz), (self.sliding_speed, 0.0), (0.0, 0.0), z)[:, 0]
+
+    def interface_shear(self, axial_index: int = 0):
+        """Circumferential shear stress [Pa] at the journal-side and the bearing-side interface of the boundary
+        layers (seed 004 eq. 28; the walls themselves without layers) along the angle in axial row
+        ``axial_index``: (lower, upper) arrays over ``angle_deg``, from the film's flow law at each cell."""
+        row = check_int("axial_index", axial_index, "-", 0, self.pressure.shape[0] - 1)
+        h, G, Gz = self.film_thickness[row], self.pressure_gradient[row], self.axial_pressure_gradient[row]
+        s = self._law().stresses_2d(h, np.stack([G, Gz], axis=-1), (self.sliding_speed, 0.0), (0.0, 0.0))
+        return s.lower_interface[:, 0], s.upper_interface[:, 0]
+
+
+@result_type
+class OrbitResult(Result):
+    """Time series of one orbit run (outputs at ``outputs_per_revolution`` per revolution).
+
+    ``t`` [s], ``x``, ``y`` [m] (journal centre; x towards the load); the recorded series (None if not
+    asked): ``force`` [N] (film force on the journal, (n, 2)), ``min_film`` [m], ``mass`` [m^3],
+    ``outflow`` [m^3/s] ((n, 2): ends, groove), ``pressure`` [Pa] ((k, nz, ntheta) at ``pressure_t``
+    [s], only over the recorded window), ``film_content`` (at ``film_content_t``). ``stats`` sums the
+    integrator statistics over chunks; ``touched_at`` [s] if the journal reached the wall (the run stopped
+    there); ``final_state`` (film + rotor, dimensionless) at ``final_time`` [s]: ``run(..., start=result)``
+    continues from it with the unbalance phase where it was. ``success`` is False (and ``message`` says
+    why) if the integrator failed; the outputs up to the failure are kept.
+    """
+
+    t: np.ndarray = quantity("s")
+    x: np.ndarray = quantity("m")
+    y: np.ndarray = quantity("m")
+    method: str = "ida"
+    stats: Stats = field(default_factory=Stats)
+    speed_rpm: float = quantity("rpm", 0.0)
+    clearance: float = quantity("m", 0.0)
+    success: bool = True
+    message: str = ""
+    touched_at: float | None = quantity("s", None)
+    final_state: np.ndarray | None = None
+    final_time: float = quantity("s", 0.0)
+    force: np.ndarray | None = quantity("N", None)
+    min_film: np.ndarray | None = quantity("m", None)
+    mass: np.ndarray | None = quantity("m^3", None)
+    outflow: np.ndarray | None = quantity("m^3/s", None)
+    pressure: np.ndarray | None = quantity("Pa", None)
+    pressure_t: np.ndarray | None = quantity("s", None)
+    film_content: np.ndarray | None = None
+    film_content_t: np.ndarray | None = quantity("s", None)
+
+    @property
+    def eccentricity_ratio(self) -> np.ndarray:
+        return np.hypot(self.x, self.y) / self.clearance
+
+    @property
+    def revolutions(self) -> np.ndarray:
+        return self.t * rpm_to_hz(self.speed_rpm)
+
+    @property
+    def fields(self) -> dict:
+        """The recorded series by name (only those recorded)."""
+        return {k: getattr(self, k) for k in RECORDED_FIELDS if getattr(self, k) is not None}
