@@ -13,7 +13,7 @@ front), beside the paper's boundaries.
 Along each axis the map's regimes at the reference point are compared with the paper's boundaries
 ("reproduced" / "NOT reproduced", with the points that differ).
 --quick: 1, 6, 11 balls x 80, 90 rpm x 30, 60 N, 12 passes per sequence, the critical film against the ball
-count only (1 and 11 balls), bisections to 15 %.
+count only (1 and 11 balls), bisections to 25 %.
 Figures ball_*.png and ball_starvation.json (+ the map as ball_map.npz) into scenarios/out/ball/.
 """
 
@@ -41,7 +41,7 @@ FULL = dict(n_balls=np.arange(1, 12), speed_rpm=np.arange(70.0, 91.0, 5.0), load
             passes=30, map_passes=60, chiu_passes=100, rel_tol=0.02,
             films=(100e-6, 125e-6, 150e-6, 250e-6, 300e-6), critical_axes=("n_balls", "speed_rpm", "load"))
 QUICK = dict(n_balls=np.array([1, 6, 11]), speed_rpm=np.array([80.0, 90.0]), load=np.array([30.0, 60.0]),
-             passes=12, map_passes=12, chiu_passes=30, rel_tol=0.15, films=(100e-6, 300e-6),
+             passes=12, map_passes=12, chiu_passes=30, rel_tol=0.25, films=(100e-6, 300e-6),
              critical_axes=("n_balls",))
 
 
