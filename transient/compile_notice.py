@@ -15,7 +15,7 @@ import sys
 #: with a fresh cache on 2 cores busy with other jobs (load average ~12; an idle machine is several times faster))
 FAMILIES = {
     "journal": ("transient.models.journal.kernels", "dae_residual", 375),
-    "ball": ("transient.models.ball.front", "front_kernel", 65),
+    "ball": ("transient.models.ball.front", "front_kernel", 30),
     "roller": ("transient.models.roller.kernels", "reynolds_kernel", 35),
     "layered": ("transient.physics.layered", "gecim_face_2d", 200),
 }
