@@ -1,6 +1,7 @@
 """Figures of the tapered-roller EHL (Park, seed 001, Figs. 3-10), drawn from
 :class:`~transient.models.roller.results.RollerSteady` results only, in the paper's dimensionless units
-(X, Y by R_m; P = p/E' x 10^3; H = h/R_m x 10^5).
+(X, Y by R_m; P = p/E' x 10^3; H = h/R_m x 10^5), or for the maps in engineering units
+(``units="SI"``: x, y in mm, pressure in GPa, film in um).
 
 * :func:`maps` -- contours of pressure or film: the whole contact and zooms on the small and large end
   (Figs. 3-6);
@@ -28,16 +29,21 @@ def _zoom(s, end: str) -> tuple[float, float]:
     return (-hi, -lo) if end == "small" else (lo, hi)
 
 
-def maps(s, quantity: str = "pressure", title: str = ""):
+def maps(s, quantity: str = "pressure", title: str = "", units: str = "paper"):
     """Contour maps of ``quantity`` (``"pressure"`` or ``"film"``): (a) complete, (b) small end,
-    (c) large end. The film is drawn where it is below three times the central film."""
-    X, Y = s.X, s.Y
+    (c) large end. The film is drawn where it is below three times the central film. ``units``:
+    ``"paper"`` (X, Y, P x 10^3, H x 10^5) or ``"SI"`` (mm, GPa, um)."""
+    if units not in ("paper", "SI"):
+        raise ValueError(f"units = {units!r}: use 'paper' or 'SI'")
+    si = units == "SI"
+    length = 1e3 * s.mean_radius if si else 1.0  # axis values per unit of X, Y
+    X, Y = s.X * length, s.Y * length
     if quantity == "pressure":
-        Z, label = s.P * P_UNIT, r"$P \times 10^3$"
+        Z, label = (s.pressure * 1e-9, "p [GPa]") if si else (s.P * P_UNIT, r"$P \times 10^3$")
         levels = np.linspace(0.0, Z.max(), 16)[1:]
     else:
-        Z, label = s.H * H_UNIT, r"$H \times 10^5$"
-        hc = s.h_central / s.mean_radius * H_UNIT
+        Z, label = (s.film * 1e6, r"h [$\mu$m]") if si else (s.H * H_UNIT, r"$H \times 10^5$")
+        hc = s.h_central * (1e6 if si else H_UNIT / s.mean_radius)
         levels = np.linspace(Z[1:-1, 1:-1].min(), 3.0 * hc, 16)
     fig = Figure(figsize=(12, 8), layout="constrained")
     gs = fig.add_gridspec(2, 2, height_ratios=(1.0, 1.1))
@@ -48,10 +54,10 @@ def maps(s, quantity: str = "pressure", title: str = ""):
         cs = ax.contourf(Y, X, Z.T, levels=levels, cmap="viridis", extend="max")
         ax.contour(Y, X, Z.T, levels=levels[::3], colors="k", linewidths=0.5)
         if end is not None:
-            ax.set_xlim(*_zoom(s, end))
-        ax.set_ylim(-1.6 * s.half_width / s.mean_radius, 1.6 * s.half_width / s.mean_radius)
-        ax.set_xlabel("Y (along the roller; small end < 0)")
-        ax.set_ylabel("X (rolling)")
+            ax.set_xlim(*(length * v for v in _zoom(s, end)))
+        ax.set_ylim(-1.6 * length * s.half_width / s.mean_radius, 1.6 * length * s.half_width / s.mean_radius)
+        ax.set_xlabel("y [mm] (along the roller; small end < 0)" if si else "Y (along the roller; small end < 0)")
+        ax.set_ylabel("x [mm] (rolling)" if si else "X (rolling)")
         ax.set_title(name, fontsize=10)
     fig.colorbar(cs, ax=[p[0] for p in panels], label=label, shrink=0.8)
     fig.suptitle(title)
@@ -92,5 +98,40 @@ def _sections_frame(fig, ap, ah, s0, film_top, xlim, xlabel, title):
     ap.legend()
     for a in (ap, ah):
         a.grid(alpha=0.3)
+    fig.suptitle(title)
+    return fig
+
+
+def moes_chart(rows: list[dict], curves: dict, title: str = ""):
+    """The Moes chart of the line contact from :func:`transient.study.ehl_chart.run_chart` rows and
+    :func:`transient.study.ehl_chart.moes_curves`: (a) the central film ``H_c = (h_c/R)(2U)^-1/2``
+    against M for each L (markers: solved; lines: Moes' formula; dotted: the four asymptotes, the
+    piezoviscous ones at the largest L; x: not converged), (b) the minimum film."""
+    Ls = sorted({r["L"] for r in rows})
+    Mf = curves["M"]
+    fig = Figure(figsize=(12, 5.5), layout="constrained")
+    ax_c, ax_m = fig.add_subplot(1, 2, 1), fig.add_subplot(1, 2, 2)
+    for k, L in enumerate(Ls):
+        col = f"C{k}"
+        pts = sorted((r for r in rows if r["L"] == L and r["success"]), key=lambda r: r["M"])
+        ax_c.loglog([r["M"] for r in pts], [r["H_c"] for r in pts], "o", color=col, label=f"L = {L:g}")
+        ax_c.loglog(Mf, curves["formula"][L], "-", color=col, lw=1)
+        ax_m.loglog([r["M"] for r in pts], [r["H_min"] for r in pts], "s-", color=col, label=f"L = {L:g}")
+        failed = [r for r in rows if r["L"] == L and not r["success"]]
+        ax_c.loglog([r["M"] for r in failed], [r["moes"] for r in failed], "x", color="k", ms=9)
+    for name, values in curves["asymptotes"].items():
+        ax_c.loglog(Mf, values, ":", color="0.5", lw=0.8)
+        at = -1 if name in ("EI", "EP") else 0
+        ax_c.annotate(name, (Mf[at], values[at]), fontsize=8, color="0.4")
+    ok = [r["H_c"] for r in rows if r["success"]] or [1.0]
+    ax_c.set_ylim(0.5 * min(ok), 2.0 * max(ok))
+    for ax, name in ((ax_c, r"central film $H_c = (h_c/R)(2U)^{-1/2}$"),
+                     (ax_m, r"minimum film $H_{min} = (h_{min}/R)(2U)^{-1/2}$")):
+        ax.set_xlabel(r"load $M = W (2U)^{-1/2}$ [-]")
+        ax.set_ylabel(name + " [-]")
+        ax.grid(True, which="both", alpha=0.3)
+        ax.legend(fontsize=8)
+    ax_c.set_title("(a) markers: this solver; lines: Moes' formula; dotted: asymptotes", fontsize=9)
+    ax_m.set_title("(b) minimum film (outlet constriction)", fontsize=9)
     fig.suptitle(title)
     return fig

@@ -1,13 +1,14 @@
 """Journal bearing with a mass-conserving Elrod film (or the classical Reynolds-condition film, issue 17) and the
 unbalanced rotor on it (seed 003, Rho & Kim)."""
 
-from transient.models.journal.bearing import Groove, JournalBearing, omega
+from transient.models.journal.bearing import JournalBearing, omega
+from transient.models.journal.feeds import CircumferentialGroove, Groove, OilHole
 from transient.models.journal.orbit import JournalOrbit
 from transient.models.journal.periodic import (PeriodicOrbit, ResponseCurve, WhirlResponse, periodic_response,
                                                response_curve, stability_onset)
 from transient.models.journal.results import FilmState, OrbitResult
 from transient.models.journal.reynolds_film import ReynoldsFilm
 
-__all__ = ["FilmState", "Groove", "JournalBearing", "JournalOrbit", "OrbitResult", "PeriodicOrbit", "ResponseCurve",
-           "ReynoldsFilm",
-           "WhirlResponse", "omega", "periodic_response", "response_curve", "stability_onset"]
+__all__ = ["CircumferentialGroove", "FilmState", "Groove", "JournalBearing", "JournalOrbit", "OilHole", "OrbitResult",
+           "PeriodicOrbit", "ResponseCurve", "ReynoldsFilm", "WhirlResponse", "omega", "periodic_response",
+           "response_curve", "stability_onset"]

@@ -9,7 +9,7 @@ dimensionless groups are in :mod:`transient.models.journal.kernels`.
 from __future__ import annotations
 
 import warnings
-from dataclasses import dataclass
+from dataclasses import asdict
 
 import numpy as np
 import scipy.linalg as sla
@@ -17,6 +17,7 @@ from scipy.optimize import brentq
 
 from transient.checks import check_bool, check_int, check_positive, check_range
 from transient.fv.grid import Axis, Grid2D
+from transient.models.journal.feeds import Groove, as_feeds, check_feeds, feed_labels
 from transient.models.journal.film import Film
 from transient.models.journal.gecim_film import flow_law
 from transient.physics.layered import NO_LAYERS, BoundaryLayers, Gecim, LayeredFilm, Newtonian
@@ -61,20 +62,6 @@ def _warn_validity(state: "FilmState") -> "FilmState":
     return state
 
 
-@dataclass(frozen=True)
-class Groove:
-    """Axial oil-supply groove: centre angle from the top of the bearing (opposite the load) in the
-    direction of rotation [deg], angular width [deg]. It spans the whole length; its cells are held
-    at the bearing's supply pressure."""
-
-    angle_deg: float = 0.0
-    width_deg: float = 6.0
-
-    def __post_init__(self):
-        check_range("groove.angle_deg", self.angle_deg, "deg", -360.0, 360.0)
-        check_range("groove.width_deg", self.width_deg, "deg", 0.0, 90.0, low_open=True)
-
-
 class JournalBearing:
     """Plain journal bearing, Elrod (JFO) mass-conserving film or classical Reynolds-condition film,
     rigid journal.
@@ -84,7 +71,10 @@ class JournalBearing:
     diameter, length, clearance [m] : journal diameter D, bearing length L, radial clearance C.
     viscosity [Pa s], bulk_modulus [Pa] : mu and beta (paper: 1e9; 1e12 is the incompressible limit).
     supply_pressure [Pa, absolute] : pressure in the groove (paper: 1 atm).
-    groove : :class:`Groove` or None (no groove: the film is fed only through its ends).
+    groove : the oil feeds (:mod:`transient.models.journal.feeds`): a :class:`Groove` (axial, full or partial
+        length), an :class:`~transient.models.journal.feeds.OilHole`, a
+        :class:`~transient.models.journal.feeds.CircumferentialGroove`, a sequence of them, or None (no feed: the
+        film is fed only through its ends). Each feed is held at its own pressure (default ``supply_pressure``).
     grid : (n_theta, n_axial) cells; n_axial covers the half length when ``symmetric`` (paper 151 x 21).
     cavitation_pressure, ambient_pressure [Pa, absolute] : p_c and the pressure at the bearing ends
         (paper: both 0).
@@ -95,7 +85,9 @@ class JournalBearing:
     switch_content_width [-] : content width of the switch (the film-content deficit over which a cell
         fills or empties); it hardly biases the film but sets how abruptly a cell turns at rupture and
         reformation, so a wider one saves the orbit integrator time steps (docs/journal.md, section 3).
-    symmetric : model half the length with a symmetry plane at the mid-plane (exact for this model).
+    symmetric : model half the length with a symmetry plane at the mid-plane (exact for this model) -- only when
+        every feed is symmetric about the mid-plane; otherwise the whole length is modelled with ``2 n_axial``
+        cells (``self.symmetric`` is then False).
     cavitation : ``"elrod"`` (default) -- the mass-conserving, compressible Elrod film above; or
         ``"reynolds"`` -- the classical incompressible film with the Reynolds (Swift-Stieber) condition,
         ``p >= p_c`` solved as a complementarity problem on the same finite-volume stencil
@@ -152,10 +144,11 @@ class JournalBearing:
         self.switch_content_width = check_range("switch_content_width", switch_content_width, "-", 0.0, 0.1,
                                                 low_open=True, why="(a content deficit; above 0.1 the switch "
                                                 "smears the cavitated zone)")
-        if groove is not None and not isinstance(groove, Groove):
-            raise TypeError(f"groove must be a Groove or None, got {type(groove).__name__}")
         self.groove = groove
-        self.unsupplied = cavitation == "elrod" and groove is None and self.ambient_pressure <= self.cavitation_pressure
+        self.feeds = as_feeds(groove)
+        self.feed_pressures = check_feeds(self.feeds, self.length, 0.5 * self.diameter, self.supply_pressure,
+                                          self.cavitation_pressure)
+        self.unsupplied = cavitation == "elrod" and not self.feeds and self.ambient_pressure <= self.cavitation_pressure
         if self.unsupplied:
             warnings.warn("JournalBearing: the Elrod film has no oil supply (groove=None and ambient_pressure <= "
                           "cavitation_pressure: nothing drives oil into the film, which starves); add a Groove, "
@@ -165,8 +158,10 @@ class JournalBearing:
             raise ValueError(f"grid must be (n_theta, n_axial) cells, got {grid!r}")
         n_theta = check_int("grid[0] (n_theta)", grid[0], "cells", 8, 20000)
         n_axial = check_int("grid[1] (n_axial)", grid[1], "cells", 1, 5000)
+        self.symmetric = check_bool("symmetric", symmetric) and all(f.symmetric for f in self.feeds)
+        if check_bool("symmetric", symmetric) and not self.symmetric:
+            n_axial *= 2  # feeds off the mid-plane: the whole length, at the same resolution
         self.grid_shape = (n_theta, n_axial)
-        self.symmetric = check_bool("symmetric", symmetric)
         self.radius = 0.5 * self.diameter
         self._build_grid()
 
@@ -186,24 +181,23 @@ class JournalBearing:
             z = Axis.uniform(n_axial, half, start=0.0, lower="symmetry", upper="dirichlet", name="z")
         else:
             z = Axis.uniform(n_axial, 2 * half, start=-half, lower="dirichlet", upper="dirichlet", name="z")
-        fixed = None
-        if self.groove is not None:
-            phi = x.centres
-            dphi = np.angle(np.exp(1j * (phi - np.radians(self.groove.angle_deg))))
-            in_groove = np.abs(dphi) <= 0.5 * np.radians(self.groove.width_deg) + 1e-12
-            if not in_groove.any():
-                in_groove[np.argmin(np.abs(dphi))] = True  # a groove narrower than a cell takes the nearest cell
-            fixed = np.tile(in_groove, z.n)
-        self.grid = Grid2D(x, z, fixed=fixed, fixed_values=0.0)
+        phi, zc = np.tile(x.centres, z.n), np.repeat(z.centres, x.n) * R
+        self.feed_cells = feed_labels(self.feeds, phi, zc, R)  # feed index per cell, -1 in the film
+        self.grid = Grid2D(x, z, fixed=self.feed_cells >= 0 if self.feeds else None, fixed_values=0.0)
         self.phi = self.grid.xc.copy()
         self.n_cells = self.grid.n
 
     def parameters(self) -> dict:
-        """Every parameter that changes the film (SI; the groove as its angle and width [deg])."""
+        """Every parameter that changes the film (SI; a single full-length groove at the supply pressure as its angle
+        and width [deg], other feeds as a list of their fields with their type)."""
         g = self.groove
+        if g is not None and not (isinstance(g, Groove) and g.length is None and g.pressure is None):
+            g = [dict(type=type(f).__name__, **asdict(f)) for f in self.feeds]
+        elif g is not None:
+            g = [g.angle_deg, g.width_deg]
         return dict(diameter=self.diameter, length=self.length, clearance=self.clearance, viscosity=self.viscosity,
                     bulk_modulus=self.bulk_modulus, supply_pressure=self.supply_pressure,
-                    groove=None if g is None else [g.angle_deg, g.width_deg], grid=list(self.grid_shape),
+                    groove=g, grid=list(self.grid_shape),
                     cavitation_pressure=self.cavitation_pressure, ambient_pressure=self.ambient_pressure,
                     switch_width=self.switch_width, switch_content_width=self.switch_content_width,
                     symmetric=self.symmetric, cavitation=self.cavitation,

@@ -14,6 +14,8 @@ import scipy.sparse.linalg as spla
 
 from transient.fv.face_gradient import cell_gradient_values
 from transient.fv.reynolds import ReynoldsOperator
+from transient.models.journal.feeds import apply_feed_edges
+from transient.models.journal.flows import flow_fields
 from transient.models.journal.gecim_film import bulk_end_flow, bulk_tables, no_bulk, prefetch
 from transient.models.journal.kernels import (N_ROTOR, content_universal, film_force, film_jacobian, film_residual,
                                               state_fields)
@@ -60,7 +62,8 @@ class Film(FilmBlock):
         # P(0) = w ln 2 at an end held at p_c biased the load linearly in w): P = u, theta = 1 + u / beta_bar
         self.op = ReynoldsOperator(grid, n_extra=n_extra, upwind=True, boundary_P=u_amb,
                                    boundary_C=1.0 + u_amb / self.beta_bar, diagonals=self.shear_thinning)
-        self.op.u_fixed[~self.op.free] = s.u_supply  # groove cells at the supply pressure
+        self.op.u_fixed[~self.op.free] = s.u_supply  # each feed's cells at its pressure
+        apply_feed_edges(self.op, s)
         self.n = n = self.op.n_cells
         op = self.op
         # scratch arrays shared by the kernels (allocated once)
@@ -118,7 +121,7 @@ class Film(FilmBlock):
         residual are below ``tol`` and 1e-8 of ``max(1, |u|)``.
         """
         n = self.n
-        u = np.where(self.op.free, 0.0, self.u_supply) if u0 is None else np.array(u0, dtype=float)
+        u = np.zeros(n) if u0 is None else np.array(u0, dtype=float)
         u[~self.op.free] = self.u_supply
         data = np.empty(self.op.nnz)
         G = lambda v: self.residual(v, X, Y, VX, VY)  # noqa: E731
@@ -225,7 +228,7 @@ def film_state(film, u, X, Y, F, P, content, iterations=0):
         friction_force=friction[0], bearing_friction_force=friction[1], film_thickness=h, pressure_gradient=G,
         axial_pressure_gradient=Gz, viscosity=law.viscosity, sliding_speed=s.omega * R,
         layers=None if ly is None else (ly.thickness, ly.viscosity[0], ly.viscosity[1], ly.alpha),
-        gecim=(rh.kappa, rh.viscosity_ratio) if film.shear_thinning else None)
+        gecim=(rh.kappa, rh.viscosity_ratio) if film.shear_thinning else None, **flow_fields(film, u, X, Y))
 
 
 def film_geometry(film, X, Y, P):

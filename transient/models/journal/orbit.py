@@ -24,6 +24,7 @@ import numpy as np
 
 from transient.checks import ATOL_FLOOR, ATOL_WHY, check_choice, check_positive, check_range, check_rtol
 from transient.models.journal.bearing import JournalBearing, check_speed
+from transient.models.journal.flows import film_flows
 from transient.models.journal.kernels import (N_ROTOR, content_jacobian, content_ode_jacobian, content_residual,
                                               content_rhs, dae_jacobian, dae_residual, ode_jacobian, ode_rhs)
 from transient.models.journal.results import OrbitResult
@@ -38,7 +39,7 @@ FORMULATIONS = ("content", "universal")
 #: part, so ``run`` hands the integrator ``rtol * CONTENT_RTOL_FACTOR`` there: a user's rtol then buys about
 #: the orbit accuracy of the universal form (docs/journal.md, section 5).
 CONTENT_RTOL_FACTOR = 0.1
-RECORDABLE = ("force", "pressure", "film_content", "min_film", "mass", "outflow")
+RECORDABLE = ("force", "pressure", "film_content", "min_film", "mass", "outflow", "supply_flow", "side_leakage")
 FIELD_SERIES = ("pressure", "film_content")
 
 
@@ -234,7 +235,9 @@ class JournalOrbit:
         record : extra series to keep at the outputs: any of ``"force"`` [N], ``"min_film"`` [m],
             ``"mass"`` [m^3] (film content as liquid volume at the cavitation density, whole bearing),
             ``"outflow"`` [m^3/s] ((n, 2): through the ends, into the groove -- negative: the supply;
-            see :meth:`mass_balance`), ``"pressure"`` [Pa] and ``"film_content"`` (fields: stored only from
+            see :meth:`mass_balance`), ``"supply_flow"`` [m^3/s] ((n, feeds): each feed's net supply) and
+            ``"side_leakage"`` [m^3/s] ((n, 2): the ends z = -L/2, +L/2; :mod:`~transient.models.journal.flows`),
+            ``"pressure"`` [Pa] and ``"film_content"`` (fields: stored only from
             ``record_from_revolution`` (counted from t = 0) on, so a long run keeps only the window it needs).
         chunk_revolutions : integrate in chunks of this many revolutions (progress and checkpoints
             between chunks); default: the whole run in one chunk unless a checkpoint is asked for (10).
@@ -448,6 +451,12 @@ class _Recorder:
                 self.series["mass"].append(M * vol)
             if "outflow" in self.record:
                 self.series["outflow"].append((q_ends * vol * f.omega, q_groove * vol * f.omega))
+        if "supply_flow" in self.record or "side_leakage" in self.record:
+            supply, _, leak = film_flows(f, y[:n], y[n], y[n + 1])
+            unit = C * o.bearing.radius ** 2 * f.omega
+            for k, v in (("supply_flow", supply), ("side_leakage", leak)):
+                if k in self.record:
+                    self.series[k].append(v * unit)
         if tau >= self.tau0_fields - 1e-12 and self.field_t:
             f.residual(y[:n], y[n], y[n + 1])  # fills P and theta = C(u) (u is not theta - 1 in cavitation)
             grid = o.bearing.grid

@@ -14,7 +14,7 @@ from transient.results import Result, quantity, result_type
 from transient.solvers.integrate import Stats
 from transient.units import rpm_to_hz
 
-RECORDED_FIELDS = ("force", "min_film", "mass", "outflow", "pressure", "pressure_t", "film_content", "film_content_t")
+RECORDED_FIELDS = ("force", "min_film", "mass", "outflow", "supply_flow", "side_leakage", "pressure", "pressure_t", "film_content", "film_content_t")
 
 
 @result_type
@@ -29,6 +29,11 @@ class FilmState(Result):
     centres, in the direction of rotation. ``friction_force`` [N]: the film's drag on the journal surface;
     ``bearing_friction_force`` [N]: its drag on the bearing surface, along the rotation
     (:func:`~transient.models.journal.film.wall_friction`; boundary layers and the Gecim bulk included).
+
+    Flows (:mod:`transient.models.journal.flows`), whole bearing: ``supply_flow`` [m^3/s] the net flow each feed
+    delivers, ``feed_inflow`` [m^3/s] the flow each feed sends into the film, ``side_leakage`` [m^3/s] the outflow
+    at the ends z = -L/2 and +L/2; the design-chart variables ``flow_variable`` = Q / (R C N L) (Q the feeds' total
+    inflow, N [rev/s]) and ``side_flow_ratio`` = Q_s / Q (Q_s the leakage of both ends).
     """
 
     time_axis = None
@@ -52,6 +57,11 @@ class FilmState(Result):
     axial_pressure_gradient: np.ndarray = quantity("Pa/m", None, repr=False)
     viscosity: float = quantity("Pa s", float("nan"))
     sliding_speed: float = quantity("m/s", float("nan"))
+    supply_flow: np.ndarray = quantity("m^3/s", None)
+    feed_inflow: np.ndarray = quantity("m^3/s", None)
+    side_leakage: np.ndarray = quantity("m^3/s", None)
+    flow_variable: float = quantity("-", float("nan"))
+    side_flow_ratio: float = quantity("-", float("nan"))
     layers: tuple | None = None  # (delta [m], mu_a [Pa s], mu_b [Pa s], alpha [m]) or None
     gecim: tuple | None = None  # the shear-thinning bulk (kappa [Pa], mu_2/mu_1) or None (Newtonian)
     success: bool = True
@@ -100,7 +110,9 @@ class OrbitResult(Result):
 
     ``t`` [s], ``x``, ``y`` [m] (journal centre; x towards the load); the recorded series (None if not
     asked): ``force`` [N] (film force on the journal, (n, 2)), ``min_film`` [m], ``mass`` [m^3],
-    ``outflow`` [m^3/s] ((n, 2): ends, groove), ``pressure`` [Pa] ((k, nz, ntheta) at ``pressure_t``
+    ``outflow`` [m^3/s] ((n, 2): ends, groove), ``supply_flow`` [m^3/s] ((n, feeds): the net flow out of each
+    feed), ``side_leakage`` [m^3/s] ((n, 2): out of the ends z = -L/2, +L/2; :mod:`~transient.models.journal.flows`),
+    ``pressure`` [Pa] ((k, nz, ntheta) at ``pressure_t``
     [s], only over the recorded window), ``film_content`` (at ``film_content_t``). ``stats`` sums the
     integrator statistics over chunks; ``touched_at`` [s] if the journal reached the wall (the run stopped
     there); ``final_state`` (film + rotor, dimensionless) at ``final_time`` [s]: ``run(..., start=result)``
@@ -124,6 +136,8 @@ class OrbitResult(Result):
     min_film: np.ndarray | None = quantity("m", None)
     mass: np.ndarray | None = quantity("m^3", None)
     outflow: np.ndarray | None = quantity("m^3/s", None)
+    supply_flow: np.ndarray | None = quantity("m^3/s", None)
+    side_leakage: np.ndarray | None = quantity("m^3/s", None)
     pressure: np.ndarray | None = quantity("Pa", None)
     pressure_t: np.ndarray | None = quantity("s", None)
     film_content: np.ndarray | None = None

@@ -44,6 +44,7 @@ import scipy.sparse.linalg as spla
 
 from transient.fv.reynolds import ReynoldsOperator, jacobian_kernel, residual_kernel
 from transient.fv.stencil import five_point_mask
+from transient.models.journal.feeds import apply_feed_edges
 from transient.models.journal.film import FilmBlock, film_state
 from transient.models.journal.gecim_film import bulk_jacobian, bulk_residual, bulk_tables, prefetch
 from transient.models.journal.kernels import N_ROTOR, conductances, film_force, position_derivatives
@@ -64,7 +65,8 @@ class ReynoldsFilm(FilmBlock):
         s = scales
         self.op = op = ReynoldsOperator(grid, n_extra=n_extra, upwind=False, boundary_P=s.u_ambient, boundary_C=1.0,
                                         diagonals=self.shear_thinning)
-        op.u_fixed[~op.free] = self.u_supply
+        op.u_fixed[~op.free] = self.u_supply  # each feed's cells at its pressure
+        apply_feed_edges(op, s)
         self.n = n = op.n_cells
         self.free = op.free
         self.ones = np.ones(n)

@@ -16,6 +16,7 @@ from typing import NamedTuple
 
 import numpy as np
 
+from transient.models.journal.feeds import feed_edges
 from transient.models.journal.gecim_film import BulkFaces
 from transient.units import rpm_to_rad_s
 
@@ -34,7 +35,7 @@ class FilmScales(NamedTuple):
     clearance: float            # [m]
     cavitation_pressure: float  # [Pa] p_c (p = p_c + p0 P)
     force_scale: float          # [N] p0 R^2 per unit of Fbar
-    u_supply: float             # groove pressure (p_s - p_c) / p0
+    u_supply: np.ndarray        # each prescribed (feed) cell's pressure (p_feed - p_c) / p0, in cell order
     u_ambient: float            # end pressure (p_a - p_c) / p0
     beta_bar: float             # bulk modulus / p0
     width: float                # pressure width of the Elrod switch / p0
@@ -42,6 +43,8 @@ class FilmScales(NamedTuple):
     layer_gap: float            # 2 delta / C of the boundary layers
     darcy: float                # 3 alpha^2 mu (1/mu_a + 1/mu_b) / C^2
     sym: float                  # 2 on a half bearing (symmetry plane), else 1
+    feed_cells: np.ndarray      # feed index of every cell, -1 in the film (models.journal.feeds)
+    feed_edges: np.ndarray      # per feed: True if its edges are cell faces (a circumferential groove)
 
     @property
     def switch(self) -> "Switch":
@@ -58,10 +61,10 @@ def film_scales(bearing, speed_rpm) -> FilmScales:
     return FilmScales(
         speed_rpm=float(speed_rpm), omega=rpm_to_rad_s(speed_rpm), p0=p0, radius=b.radius, clearance=b.clearance,
         cavitation_pressure=b.cavitation_pressure, force_scale=p0 * b.radius ** 2,
-        u_supply=(b.supply_pressure - b.cavitation_pressure) / p0,
+        u_supply=(b.feed_pressures[b.feed_cells[b.feed_cells >= 0]] - b.cavitation_pressure) / p0,
         u_ambient=(b.ambient_pressure - b.cavitation_pressure) / p0, beta_bar=b.bulk_modulus / p0, width=width,
         content_scale=b.switch_content_width / width, layer_gap=layer_gap, darcy=darcy,
-        sym=2.0 if b.symmetric else 1.0)
+        sym=2.0 if b.symmetric else 1.0, feed_cells=b.feed_cells, feed_edges=feed_edges(b.feeds))
 
 
 class Switch(NamedTuple):

@@ -32,11 +32,13 @@ from __future__ import annotations
 import math
 import time
 from functools import cached_property, partial
+from types import SimpleNamespace
 
 import numpy as np
 from scipy.interpolate import RegularGridInterpolator
 
 from transient.checks import check_positive, check_range
+from transient.models.roller.continuation import PathResult, follow
 from transient.models.roller.dry import DryContact, DrySolver, dry_contact
 from transient.models.roller.film import EHLFilm, interpolate_state, solve_steady
 from transient.models.roller.geometry import TaperedRoller
@@ -49,6 +51,8 @@ from transient.physics.rheology import DOWSON_HIGGINSON_PARK, Rheology
 from transient.solvers.newton import NewtonError
 
 PAPER_GRID = (94, 45)
+#: above this mid-plane Moes load the coarsest level is reached by load continuation
+M_EASY_2D = 3.2
 
 
 def _dense_lu(film, u, shift):
@@ -99,6 +103,14 @@ class RollerContact:
             raise ValueError(f"scheme = {scheme!r} is not one of ('upwind2', 'upwind1')")
         self.scheme = scheme
         self.grid_spec = self._parse_grid(grid)
+        self._options = dict(speed=speed, viscosity=viscosity, pressure_viscosity=pressure_viscosity, modulus=modulus,
+                             density=density, viscosity_law=viscosity_law, grid=grid, domain=domain, scheme=scheme,
+                             dh_constants=tuple(dh_constants))
+
+    def with_load(self, load: float) -> "RollerContact":
+        """The same roller, lubricant and grid specification at another total load [N] (its own dry
+        footprint and scaled grid): the steps of the load continuation."""
+        return RollerContact(self.roller, load, **self._options)
 
     @classmethod
     def from_dimensionless(cls, U: float, G: float, W: float, modulus: float, roller: TaperedRoller,
@@ -285,8 +297,9 @@ class RollerContact:
                penalty: float | None = None) -> RollerSteady:
         """Steady EHL film (module docstring). The coarsest level starts from the dry pressure with
         pseudo-transient continuation (backward-Euler steps of the squeeze-film transient, first step
-        0.3 c/u) and is solved to ``sqrt(tol)``; finer levels start from the interpolated coarser
-        solution with plain Newton (pseudo-transient if that fails). ``penalty``: None for the exact
+        0.3 c/u) and is solved to ``sqrt(tol)`` -- above the paper case's mid-plane M (3.2) it is reached by
+        load continuation instead (:meth:`continuation`; ``solver_info["continuation"]``); finer levels
+        start from the interpolated coarser solution with plain Newton (pseudo-transient if that fails). ``penalty``: None for the exact
         complementarity (Fischer-Burmeister), or the penalty factor (the transient's ``GAMMA`` gives its limit). Raises
         :class:`EHLConvergenceError` with the non-converged result (``success=False``, residual history)
         unless ``raise_on_failure=False``."""
@@ -303,6 +316,20 @@ class RollerContact:
                 coarse = film
             u0 = self.initial_guess(film) if k == 0 else interpolate_state(g_prev, u, g)
             attempts = [0.3] if k == 0 else [None, 0.3]
+            if k == 0 and self.mid_plane_M > M_EASY_2D:
+                attempts = []
+                path = self.continuation(spec, tol=math.sqrt(tol) if not last else tol, max_iter=max_iter,
+                                         penalty=penalty)
+                info["continuation"] = dict(message=path.message, steps=path.steps, rejected=path.rejected,
+                                            loads=[p[0] for p in path.path])
+                iters += path.iterations
+                jac = None
+                nr = SimpleNamespace(x=path.state, iterations=0, residual_norms=path.residual_norms)
+                ok, pseudo = path.success, None
+                if not ok:
+                    msg = (f"level 1/{len(specs)} ({g.x.size} x {g.y.size} nodes): Newton did not converge; "
+                           f"{path.message}")
+                    film = path.film
             for pseudo in attempts:
                 if spec[0] == "uniform":
                     jac = NewtonKrylov(film, partial(_two_level, coarse), restart=80, max_iter=400, refresh_after=60)
@@ -332,6 +359,69 @@ class RollerContact:
         if not ok and raise_on_failure:
             raise EHLConvergenceError(msg, res)
         return res
+
+    @property
+    def mid_plane_M(self) -> float:
+        """Moes' load group of the mid-plane as a line contact carrying W/d per unit length:
+        ``M = (W R_m / d) (2U)^-1/2``."""
+        return self.W * self.roller.mean_radius / (self.dry().footprint_length) / math.sqrt(2.0 * self.U)
+
+    def continuation(self, spec, tol: float = 1e-8, max_iter: int = 40, penalty: float | None = None):
+        """Steady film on the grid ``spec`` by load continuation
+        (:func:`transient.models.roller.continuation.follow`) from the load whose mid-plane M is 3.2
+        (the paper case; solved from its dry pressure by pseudo-transient Newton) up to this contact's.
+        Each contact on the path has its own dry footprint and scaled grid: a step carries the pressure
+        in pascals and the central film in metres to the next grid. Returns the
+        :class:`~transient.models.roller.continuation.PathResult` (state on this contact's grid)."""
+        w1 = self.load
+        w0 = w1 * min(1.0, M_EASY_2D / self.mid_plane_M)
+        cache = {}
+
+        def at(s):
+            if s not in cache:
+                c = self if s >= 1.0 else self.with_load(w0 * (w1 / w0) ** s)
+                g = c.make_grid(*spec)
+                f = c.film_problem(g, "fft" if spec[0] == "uniform" else "dense")
+                f.penalty = penalty
+                cache[s] = (c, f)
+            return cache[s]
+
+        def centre_value(f, u):
+            h = f.film(u[:-1], u[-1]).reshape(f.grid.shape_full)
+            return h, h[int(np.argmin(np.abs(f.grid.y))), int(np.argmin(np.abs(f.grid.x)))]
+
+        def central(s, u):
+            c, f = at(s)
+            h, hc = centre_value(f, u)
+            return float(hc * c.scales["film"]) if np.all(np.isfinite(h)) and h[1:-1, 1:-1].min() > 0 else float("nan")
+
+        def predict(s_from, u, s_to):
+            (c0, f0), (c1, f1) = at(s_from), at(s_to)
+            k = c0.scales["B"] / c1.scales["B"]
+            g0 = TensorGrid(f0.grid.x * k, f0.grid.y * k)
+            v = interpolate_state(g0, np.append(u[:-1] * c0.scales["p_scale"] / c1.scales["p_scale"], 0.0), f1.grid)
+            hc = central(s_from, u)
+            return np.append(v[:-1], hc / c1.scales["film"] - centre_value(f1, np.append(v[:-1], 0.0))[1])
+
+        def solve(s, u0):
+            f = at(s)[1]
+            jac = NewtonKrylov(f, _dense_lu) if f.n > KRYLOV_ABOVE else None
+            return solve_steady(f, u0, tol=tol, max_iter=max_iter, jacobian=jac, name="RollerContact continuation")
+
+        c0, f0 = at(0.0)
+        try:
+            nr = solve_steady(f0, c0.initial_guess(f0), tol=tol, max_iter=max_iter, pseudo_time=0.3,
+                              jacobian=NewtonKrylov(f0, _dense_lu) if f0.n > KRYLOV_ABOVE else None,
+                              name="RollerContact continuation start")
+        except NewtonError as exc:
+            return PathResult(state=exc.result.x, s=0.0, success=False, iterations=exc.result.iterations,
+                              residual_norms=list(exc.result.residual_norms), film=f0,
+                              message=f"Newton failed at the start of the path (load {w0:.4g} N)")
+        path = follow(solve, predict, central, nr.x)
+        path.iterations += nr.iterations
+        path.film = at(path.s)[1]
+        path.path = [(at(s)[0].load, hc) for s, hc in path.path]
+        return path
 
     # -- transient --------------------------------------------------------------------------------------
     @property

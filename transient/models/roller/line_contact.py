@@ -24,17 +24,23 @@ import time
 import numpy as np
 
 from transient.checks import check_positive, check_range
+from transient.models.roller.continuation import PathResult, follow
 from transient.models.roller.film import EHLFilm, interpolate_state, solve_steady
 from transient.models.roller.grid import TensorGrid
 from transient.models.roller.dry import edge_positions, polonsky_keer
 from transient.models.roller.results import EHLConvergenceError, LineDry, LineSteady, LineTransient
 from transient.models.roller.transient import load_ratio, run_squeeze
 from transient.physics.elasticity import line_influence
-from transient.physics.line_formulas import dowson_toyoda_central, hertz_line, line_groups, martin_min
+from transient.physics.line_formulas import (dowson_toyoda_central, hertz_line, line_groups, martin_min, moes_central,
+                                             moes_groups)
 from transient.physics.rheology import DOWSON_HIGGINSON_PARK, Rheology
 from transient.solvers.newton import NewtonError
 
 SCHEMES = ("upwind2", "upwind1")
+#: the corner of the Moes chart solved directly from the Hertz pressure; beyond it, continuation from it
+M_EASY, L_EASY = 10.0, 5.0
+#: Newton iterations allowed per continuation step (a step needing more is too long: it is halved)
+PATH_MAX_ITER = 25
 
 
 class _DenseOperator:
@@ -90,8 +96,8 @@ class LineContact:
             raise ValueError(f"scheme = {scheme!r} is not one of {SCHEMES}")
         self.scheme = scheme
         self.elastic = bool(elastic)
-        lo = check_range("domain[0] (inlet)", domain[0], "b", -1e3, -1.0)
-        hi = check_range("domain[1] (outlet)", domain[1], "b", 1.0, 1e3)
+        lo = check_range("domain[0] (inlet)", domain[0], "b", -1e5, -1.0)
+        hi = check_range("domain[1] (outlet)", domain[1], "b", 1.0, 1e5)
         self.domain = (lo, hi)
         self.b, self.p_h = hertz_line(self.load_per_length, self.radius, self.modulus)
         if np.ndim(grid) == 0:
@@ -102,12 +108,27 @@ class LineContact:
             if nodes[0] != lo or nodes[-1] != hi:
                 raise ValueError(f"grid nodes must start at the inlet {lo} and end at the outlet {hi} (units of b)")
         self.grid = TensorGrid(nodes)
-        inside = np.count_nonzero(np.abs(nodes) < 1.0)
-        if inside < 8:
-            raise ValueError(f"grid = {nodes.size} nodes puts {inside} nodes inside the Hertz contact |x| < b; "
-                             "allowed: at least 8 (use more nodes)")
         self.U, self.G, self.W = line_groups(self.rheology.viscosity, self.speed, self.rheology.pressure_viscosity,
                                              self.load_per_length, self.modulus, self.radius)
+        self.M, self.L = moes_groups(self.U, self.G, self.W)
+        # the loaded zone: the Hertz contact, or below M = 2.5 the hydrodynamic length ~ sqrt(2 R h) ~ 2.5 b / M
+        zone = max(1.0, 2.5 / self.M)
+        inside = np.count_nonzero(np.abs(nodes) < zone)
+        if inside < 8:
+            raise ValueError(f"grid = {nodes.size} nodes puts {inside} nodes inside the Hertz contact (below M = 2.5: "
+                             f"the hydrodynamic zone 2.5 b/M) |x| < {zone:.3g} b; allowed: at least 8 (use more nodes)")
+        self._options = dict(viscosity=viscosity, modulus=modulus, density=density, viscosity_law=viscosity_law,
+                             scheme=scheme, elastic=elastic, dh_constants=tuple(dh_constants))
+
+    def with_load(self, load_per_length: float, pressure_viscosity: float | None = None, nodes=None) -> "LineContact":
+        """The same contact (same nodes in units of its own b, or ``nodes``) at another load [N/m] and,
+        optionally, another pressure-viscosity coefficient [1/Pa]: the steps of the load continuation."""
+        o = self._options
+        alpha = self.rheology.pressure_viscosity if pressure_viscosity is None else pressure_viscosity
+        return LineContact(self.radius, load_per_length, self.speed, o["viscosity"], alpha, o["modulus"],
+                           density=o["density"], viscosity_law=o["viscosity_law"],
+                           grid=self.grid.x if nodes is None else nodes,
+                           domain=self.domain, scheme=o["scheme"], elastic=o["elastic"], dh_constants=o["dh_constants"])
 
     # -- scaled problem ------------------------------------------------------------------------------
     @property
@@ -120,23 +141,24 @@ class LineContact:
         """Film unit ``b^2 / R`` [m]."""
         return self.b * self.b / self.radius
 
-    def film_problem(self, grid: TensorGrid | None = None, rheology: Rheology | None = None) -> EHLFilm:
+    def film_problem(self, grid: TensorGrid | None = None, rheology: Rheology | None = None, kernel=None) -> EHLFilm:
         """The scaled discrete problem (:class:`~transient.models.roller.film.EHLFilm`) on ``grid``
-        (default: the contact's grid)."""
+        (default: the contact's grid); ``kernel``: its influence matrix if already computed."""
         grid = self.grid if grid is None else grid
         x = grid.x
         return EHLFilm(grid, 0.5 * x * x, np.ones(1), self.lam, self.load_per_length / (self.b * self.p_h),
                        rheology or self.rheology, self.p_h, elastic="dense" if self.elastic else "rigid",
-                       elastic_factor=-1.0 / math.pi, order2=(self.scheme == "upwind2"))
+                       elastic_factor=-1.0 / math.pi, order2=(self.scheme == "upwind2"), kernel=kernel)
 
     def initial_guess(self, film: EHLFilm) -> np.ndarray:
-        """Hertz pressure plus a small inlet ramp and the Dowson-Toyoda central film (elastic), or an
-        inlet ramp and Martin's film (rigid)."""
+        """Hertz pressure plus a small inlet ramp and Moes' central film (elastic, M >= 1; Moes covers
+        the whole chart, also L = 0 where Dowson-Toyoda gives no film), or an inlet ramp and Martin's
+        film (rigid, and elastic below M = 1, where the film is nearly rigid-hydrodynamic)."""
         xi = film.grid.x[1:-1]
         ramp = np.where(xi < -1.0, 0.1 * (xi - xi[0]) / (-1.0 - xi[0]), 0.0)
-        if self.elastic:
+        if self.elastic and self.M >= 1.0:
             p = np.sqrt(np.clip(1.0 - xi * xi, 0.0, None)) + ramp
-            hc = dowson_toyoda_central(self.U, self.G, self.W) * self.radius / self.film_scale
+            hc = moes_central(self.M, self.L) * math.sqrt(2.0 * self.U) * self.radius / self.film_scale
             h0 = hc - float(np.interp(0.0, film.grid.x, film.deformation(p)))
         else:
             p = ramp
@@ -175,46 +197,145 @@ class LineContact:
     # -- solves --------------------------------------------------------------------------------------
     def steady(self, initial=None, tol: float = 1e-9, max_iter: int = 60, raise_on_failure: bool = True,
                penalty: float | None = None) -> LineSteady:
-        """Steady film by nested iteration: Newton on the complementarity system on :meth:`levels`,
-        each level started from the coarser solution, the coarsest from :meth:`initial_guess`; where
-        Newton with line search fails, the level is redone with pseudo-transient continuation
-        (backward-Euler steps of the squeeze-film transient, first step 0.3 b/u, then 0.03 b/u on the
-        coarsest level): line search is the more robust at high speed, pseudo-time at high load.
-        ``initial``: a previous :class:`LineSteady` on the same grid to start from instead. ``penalty``:
-        None for the exact complementarity (Fischer-Burmeister), or the penalty factor of the penalty
-        form (the transient's ``GAMMA`` gives its limit). Raises
+        """Steady film by nested iteration: semismooth Newton on the complementarity system on
+        :meth:`levels`, each level started from the coarser solution. The coarsest level starts from
+        :meth:`initial_guess` where the contact lies in the easy corner of the Moes chart (M <= 10,
+        L <= 5); elsewhere, and wherever Newton from the interpolated coarser solution fails, the level
+        is solved by load (and pressure-viscosity) continuation from that corner
+        (:meth:`continuation`). ``initial``: a previous :class:`LineSteady` on the same grid to start
+        from instead. ``penalty``: None for the exact complementarity (Fischer-Burmeister), or the
+        penalty factor of the penalty form (the transient's ``GAMMA`` gives its limit). Raises
         :class:`EHLConvergenceError` (its ``result`` flagged ``success=False`` with the residual
-        history) if Newton fails, unless ``raise_on_failure=False``."""
+        history) if no path reaches the contact, unless ``raise_on_failure=False``."""
         t0 = time.perf_counter()
+        if penalty is not None:
+            penalty = check_range("penalty", penalty, "-", 1.0, 1e12)
         levels = [self.grid] if initial is not None else self.levels()
-        u, grid_prev, iters, norms, ok, msg = None, None, 0, [], True, ""
-        for k, grid in enumerate(levels):
+        easy = self.easy
+        # the path runs on the coarsest level fine enough for this load (spacing in the contact <= 4/M)
+        k_path = 0 if (easy or initial is not None) else next(
+            (k for k, g in enumerate(levels) if self._contact_spacing(g) * self.M <= 4.0), len(levels) - 1)
+        u, grid_prev, iters, norms, ok, msg, notes = None, None, 0, [], True, "", []
+        for k, grid in enumerate(levels[k_path:], start=k_path):
             film = self.film_problem(grid)
-            film.penalty = None if penalty is None else check_range("penalty", penalty, "-", 1.0, 1e12)
-            if k == 0:
-                u0 = initial.state if initial is not None else self.initial_guess(film)
-            else:
-                u0 = interpolate_state(grid_prev, u, grid)
-            attempts = [None, 0.3, 0.03] if (k == 0 and initial is None) else [None, 0.3]
-            for pseudo in attempts:
-                try:
-                    nr = solve_steady(film, u0, tol=tol, max_iter=max_iter, pseudo_time=pseudo,
-                                      name="LineContact.steady Newton")
-                    ok = True
-                    break
-                except NewtonError as exc:
-                    nr, ok, msg = exc.result, False, f"level {k + 1}/{len(levels)} ({grid.x.size} nodes): {exc}"
-            u, grid_prev = nr.x, grid
-            iters += nr.iterations
-            norms = nr.residual_norms
-            if not ok:
+            film.penalty = penalty
+            nr = None
+            if initial is not None or easy or k > k_path:
+                if k == 0 and initial is None:
+                    u0 = self.initial_guess(film)
+                    nr, its, norms = self._newton(film, u0, tol, max_iter, [None, 0.3, 0.03])
+                else:  # from a nearby solution Newton converges fast or not at all: then the path
+                    u0 = initial.state if initial is not None else interpolate_state(grid_prev, u, grid)
+                    nr, its, norms = self._newton(film, u0, tol, min(max_iter, PATH_MAX_ITER), [None])
+                iters += its
+            if nr is None and easy:
+                ok, msg = False, f"level {k + 1}/{len(levels)} ({grid.x.size} nodes): Newton did not converge"
+                u = u0
                 break
+            if nr is None:
+                path = self.continuation(grid, tol=tol, max_iter=min(max_iter, PATH_MAX_ITER), penalty=penalty)
+                iters += path.iterations
+                norms = path.residual_norms
+                notes.append(f"{grid.x.size} nodes: {path.message}")
+                if not path.success:
+                    ok = False
+                    msg = f"level {k + 1}/{len(levels)} ({grid.x.size} nodes): Newton did not converge; {path.message}"
+                    dx = self._contact_spacing(grid)
+                    if dx * self.M > 4.0:
+                        msg += (f"; the node spacing in the contact, {dx:.3g} b, exceeds 4/M = {4.0 / self.M:.3g} b: "
+                                "refine the grid (or cluster it in |x| < 1.5 b)")
+                    u = path.state
+                    film = path.film if path.film is not None else film
+                    break
+                u = path.state
+            else:
+                u = nr.x
+            grid_prev = grid
         if ok:
-            msg = f"converged: {iters} Newton iterations over {len(levels)} grid level(s)"
+            msg = f"converged: {iters} Newton iterations over {len(levels) - k_path} grid level(s)"
+            if notes:
+                msg += "; " + "; ".join(notes)
         res = self._result(film, u, ok, msg, iters, norms, time.perf_counter() - t0)
         if not ok and raise_on_failure:
             raise EHLConvergenceError(msg, res)
         return res
+
+    @property
+    def easy(self) -> bool:
+        """In the corner of the Moes chart solved from the Hertz pressure directly (M <= 10, L <= 5)."""
+        return self.M <= M_EASY * (1.0 + 1e-9) and self.L <= L_EASY * (1.0 + 1e-9)
+
+    @staticmethod
+    def _contact_spacing(grid: TensorGrid) -> float:
+        """Largest node spacing within 1.5 b of the centre (units of b)."""
+        x = grid.x
+        near = (x[1:] > -1.5) & (x[:-1] < 1.5)
+        return float(np.max(np.diff(x)[near]))
+
+    @staticmethod
+    def _newton(film, u0, tol, max_iter, attempts):
+        """Newton with line search, then with pseudo-transient continuation from each first step in
+        ``attempts`` (None: line search): ``(result or None, iterations, residual history)``."""
+        its, norms = 0, []
+        for pseudo in attempts:
+            try:
+                nr = solve_steady(film, u0, tol=tol, max_iter=max_iter, pseudo_time=pseudo,
+                                  name="LineContact.steady Newton")
+                return nr, its + nr.iterations, nr.residual_norms
+            except NewtonError as exc:
+                its += exc.result.iterations
+                norms = exc.result.residual_norms
+        return None, its, norms
+
+    def continuation(self, grid: TensorGrid | None = None, tol: float = 1e-9, max_iter: int = PATH_MAX_ITER,
+                     penalty: float | None = None):
+        """Steady film on ``grid`` by continuation (:func:`transient.models.roller.continuation.follow`)
+        from the easy corner of the Moes chart: the load scaled to ``M = min(M, 10)`` and ``alpha`` to
+        ``L = min(L, 5)``, solved from the Hertz pressure, then load (geometrically) and ``alpha``
+        (linearly) raised together to this contact's. Each step starts Newton from the previous pressure
+        (in units of its own p_h) with ``h0`` shifted so that the central film in metres is unchanged.
+        Returns the :class:`~transient.models.roller.continuation.PathResult` (state in this contact's
+        scaled units at ``s = 1``)."""
+        grid = self.grid if grid is None else grid
+        w1, a1 = self.load_per_length, self.rheology.pressure_viscosity
+        w0 = w1 * min(1.0, M_EASY / self.M)
+        a0 = a1 * min(1.0, L_EASY / self.L) if self.L > 0 else 0.0
+        kernel = self.film_problem(grid).K
+        cache = {}
+
+        def at(s):
+            if s not in cache:
+                c = self if s >= 1.0 else self.with_load(w0 * (w1 / w0) ** s, a0 + s * (a1 - a0))
+                f = c.film_problem(grid, kernel=kernel)
+                f.penalty = penalty
+                cache[s] = (c, f)
+            return cache[s]
+
+        def central(s, u):
+            c, f = at(s)
+            h = f.film(u[:-1], u[-1])
+            if not np.all(np.isfinite(h)) or h.min() <= 0.0:
+                return float("nan")
+            return float(np.interp(0.0, grid.x, h)) * c.film_scale
+
+        def predict(s_from, u, s_to):
+            hc = central(s_from, u)
+            return np.append(u[:-1], u[-1] + hc / at(s_to)[0].film_scale - hc / at(s_from)[0].film_scale)
+
+        def solve(s, u0):
+            return solve_steady(at(s)[1], u0, tol=tol, max_iter=max_iter, name="LineContact.continuation Newton")
+
+        c0, f0 = at(0.0)
+        start = c0.with_load(c0.load_per_length, nodes=grid.x).steady(tol=tol, max_iter=60, raise_on_failure=False,
+                                                                      penalty=penalty)
+        if not start.success:
+            return PathResult(state=start.state, s=0.0, success=False, iterations=start.iterations,
+                              residual_norms=start.residual_norms, film=f0,
+                              message=f"Newton failed at the start of the path (M = {c0.M:.3g}, L = {c0.L:.3g})")
+        path = follow(solve, predict, central, start.state)
+        path.iterations += start.iterations
+        path.film = at(path.s)[1]
+        return path
 
     # -- transient -----------------------------------------------------------------------------------
     @property

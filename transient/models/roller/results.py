@@ -50,6 +50,11 @@ class LineSteady(Result):
     residual_norms: list = field(default_factory=list)
     state: np.ndarray = quantity("-", default_factory=lambda: np.zeros(0))
 
+    def to_dataframe(self):
+        """The steady fields as a ``pandas.DataFrame``, one row per node: ``x, pressure, film`` with their
+        units in ``df.attrs["units"]``."""
+        return _node_table(dict(x=self.x, pressure=self.pressure, film=self.film), self.units())
+
     @property
     def X(self):
         return self.x / self.radius
@@ -166,6 +171,12 @@ class RollerSteady(Result):
     def H(self):
         return self.film / self.mean_radius
 
+    def to_dataframe(self):
+        """The steady fields as a ``pandas.DataFrame``, one row per node (x fastest): ``x, y, pressure,
+        film`` with their units in ``df.attrs["units"]`` (a steady result has no time axis)."""
+        yy, xx = np.meshgrid(self.y, self.x, indexing="ij")
+        return _node_table(dict(x=xx, y=yy, pressure=self.pressure, film=self.film), self.units())
+
     def section_x(self, y: float):
         """``(x, pressure, film)`` along the rolling direction at ``y`` [m] (linear in y between rows)."""
         p, h = _row(self.y, self.pressure, y), _row(self.y, self.film, y)
@@ -175,6 +186,14 @@ class RollerSteady(Result):
         """``(y, pressure, film)`` along the roller at ``x`` [m] (linear in x between columns)."""
         p, h = _row(self.x, self.pressure.T, x), _row(self.x, self.film.T, x)
         return self.y, p, h
+
+
+def _node_table(fields: dict, units: dict):
+    import pandas as pd
+
+    df = pd.DataFrame({k: np.asarray(v).ravel() for k, v in fields.items()})
+    df.attrs["units"] = {k: units.get(k, "") for k in fields}
+    return df
 
 
 def _row(coord, field2d, at):

@@ -45,11 +45,16 @@ from typing import Callable
 
 from transient.checks import check_atol, check_choice, check_count, check_rtol, check_step, check_times
 from transient.solvers.integrate import rk4, scipy_backend, sundials
-from transient.solvers.integrate.guard import SIGINT, Guard, Stop, first_nonfinite
+from transient.solvers.integrate.guard import SIGINT, Guard, Stall, Stop, all_finite, first_nonfinite
 from transient.solvers.integrate.guard import nonfinite_probe as _nonfinite_probe  # noqa: F401 (tests probe it)
-from transient.solvers.integrate.outputs import Output
+from transient.solvers.integrate.outputs import Events, Output, step_events
 from transient.solvers.integrate.problem import Problem, Settings, Solution, Stats, short_repr
 from transient.solvers.integrate.sundials import LINEAR_SOLVERS
+
+# The names of the single-module facade's internals, for back ends written against it (their home is the modules
+# above); a back end's solve(problem, t_eval, out, guard, settings) uses them through BACKENDS.
+_Guard, _Output, _Events, _Stop, _Stall, _SIGINT = Guard, Output, Events, Stop, Stall, SIGINT
+_step_events, _all_finite, _first_nonfinite, _short = step_events, all_finite, first_nonfinite, short_repr
 
 __all__ = ["BACKENDS", "LINEAR_SOLVERS", "METHODS", "Backend", "Problem", "Settings", "Solution", "Stats", "solve"]
 
