@@ -15,6 +15,7 @@ from pathlib import Path
 
 import numpy as np
 
+from transient.compile_notice import announce
 from transient.params import rho_kim
 from transient.plots import journal as plots, save
 from transient.study.cavitation_modes import coefficients_by_mode
@@ -25,6 +26,7 @@ OUT = Path(__file__).resolve().parent / "out" / "journal_cavitation_modes"
 
 def main(argv=None):
     a = parser(__doc__, OUT).parse_args(argv)
+    announce("journal")
     grid = (48, 8) if a.quick else (151, 21)
     loads = np.geomspace(50.0, 8000.0, 4 if a.quick else 7)
     out = Path(a.out)

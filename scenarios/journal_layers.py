@@ -1,4 +1,5 @@
-"""Seed 004: boundary layers in Jang's journal bearing (eps = 0.9, R/B = 1), Newtonian and shear-thinning bulk.
+"""Boundary layers in the journal bearing of Jang, "Study on boundary lubrication in the sliding bearing system
+under high load and speed" (eps = 0.9, R/B = 1), Newtonian and shear-thinning bulk.
 
     transient run scenarios/journal_layers.py [--quick] [--out DIR]
 
@@ -7,8 +8,9 @@ Layers of 0.1, 0.2, 0.3 h_min on both walls (layer viscosity 10 mu; 2 and 100 mu
 rise split into the thinner bulk and the Darcy flow, and the mid-plane pressure profiles (DIR/layers.png), with
 a Newtonian bulk; the same with the paper's Gecim bulk (kappa* = 0.65, mu_2/mu_1 = 0.57) with the friction
 (DIR/gecim.png, the pressure fields DIR/gecim_fields.png); and from mobile to immobile layers the velocity across the film and the interface shear
-(DIR/immobility.png, Figs. 9-11); and the Gecim bulk in the rotor computations of seed 003's bearing: equilibrium,
-K and C, Lund threshold and the unbalance orbit (DIR/dynamics.png). Numbers in DIR/layers.json.
+(DIR/immobility.png, Figs. 9-11); and the Gecim bulk in the rotor computations of the bearing of Rho & Kim, "Noise
+estimation of oil lubricated journal bearings": equilibrium, K and C, Lund threshold and the periodic unbalance
+orbit by shooting (DIR/dynamics.png). Numbers in DIR/layers.json.
 """
 
 from __future__ import annotations
@@ -17,6 +19,7 @@ import sys
 import time
 from pathlib import Path
 
+from transient.compile_notice import announce
 from transient.plots import layers as plots, save
 from transient.study.layers import gecim_cases, layered_cases, shear_thinning_dynamics
 from transient.study.scenario import JsonRecord, log, parser
@@ -26,6 +29,7 @@ OUT = Path(__file__).resolve().parent / "out" / "journal_layers"
 
 def main(argv=None):
     a = parser(__doc__, OUT).parse_args(argv)
+    announce("journal", "layered")
     grid = (61, 10) if a.quick else (241, 40)
     out = Path(a.out)
     out.mkdir(parents=True, exist_ok=True)
@@ -66,14 +70,16 @@ def main(argv=None):
     log(f"written: {save(plots.gecim_profiles(g), out / 'gecim.png')}")
     log(f"written: {save(plots.pressure_fields(g), out / 'gecim_fields.png')}")
     log(f"written: {save(plots.immobility(g), out / 'immobility.png')}")
-    d = shear_thinning_dynamics((48, 8) if a.quick else (151, 21), 2.0 if a.quick else 12.0)
+    d = shear_thinning_dynamics((48, 8) if a.quick else (151, 21))
     rec.put("dynamics", d)
     for name in ("newtonian", "gecim"):
         r = d[name]
+        orbit = (f"periodic orbit span {r['orbit_span_C'][0]:.4f} x {r['orbit_span_C'][1]:.4f} C (shooting converged, "
+                 f"error {r['error_estimate_C']:.1e} C, |mu| {r['max_multiplier']:.3f}, {r['periods']} periods)"
+                 if r["converged"] else f"periodic orbit NOT converged: {r['message']}")
         log(f"[rotor, {name} bulk] Rho & Kim at {d['speed_rpm']:.0f} rpm: e/C {r['eccentricity']:.4f}, attitude "
             f"{r['attitude_deg']:.2f} deg, friction {r['friction_N']:.2f} N, Kxx {r['K'][0][0]:.4g} N/m, Cxx "
-            f"{r['C'][0][0]:.4g} N s/m, threshold {r['threshold_rpm']:.0f} rpm, orbit span {r['orbit_span_C'][0]:.4f} x "
-            f"{r['orbit_span_C'][1]:.4f} C")
+            f"{r['C'][0][0]:.4g} N s/m, threshold {r['threshold_rpm']:.0f} rpm, {orbit}")
     log(f"written: {save(plots.dynamics(d), out / 'dynamics.png')}")
     rec.put("wall_s", time.perf_counter() - t0)
     log(f"[layers] done in {time.perf_counter() - t0:.1f} s; numbers in {out / 'layers.json'}")

@@ -1,4 +1,5 @@
-"""Long orbit study (seed 003): many revolutions of the Rho & Kim rotor, crash-safe.
+"""Long orbit study: many revolutions of the rotor of Rho & Kim, "Noise estimation of oil lubricated journal
+bearings", crash-safe.
 
     transient run scenarios/journal_long_run.py [--quick] [--out DIR] [--revolutions 10000] [--grid 151 21]
                                                 [--rpm 6000] [--method ida] [--rtol 1e-5] [--fresh]
@@ -17,6 +18,7 @@ import time
 from pathlib import Path
 
 from transient import JournalBearing, JournalOrbit
+from transient.compile_notice import announce
 from transient.params import rho_kim
 from transient.plots import journal as plots, save
 from transient.study.scenario import log, parser
@@ -35,6 +37,7 @@ def main(argv=None):
     ap.add_argument("--chunk", type=float, default=20.0, help="revolutions between checkpoints")
     ap.add_argument("--fresh", action="store_true", help="ignore an existing checkpoint")
     a = ap.parse_args(argv)
+    announce("journal")
     revolutions = a.revolutions or (40.0 if a.quick else 10000.0)
     grid = tuple(a.grid) if a.grid else ((41, 6) if a.quick else (151, 21))
     out = Path(a.out)
@@ -48,7 +51,7 @@ def main(argv=None):
     t0 = time.perf_counter()
     r = o.run(revolutions, method=a.method, rtol=a.rtol, atol=1e-3 * a.rtol, outputs_per_revolution=a.outputs,
               record=("force",), chunk_revolutions=a.chunk, checkpoint=ckpt, resume=True, progress=True)
-    log(f"[long run] {r.message}; {time.perf_counter() - t0:.1f} s this session, {r.t.size} samples kept")
+    log(f"[long run] {r.message}; {time.perf_counter() - t0:.1f} s this run, {r.t.size} samples kept")
     r.save(out / "long_run.npz")
     log(f"written: {save(plots.long_run(r, a.outputs), out / 'long_run.png')} and {out / 'long_run.npz'}")
     return 0

@@ -1,4 +1,5 @@
-"""Seed 003 (Rho & Kim) sections 2.3-2.4: bearing noise from the film pressure fluctuation against speed.
+"""Rho & Kim, "Noise estimation of oil lubricated journal bearings", sections 2.3-2.4: bearing noise from the film
+pressure fluctuation against speed.
 
     transient run scenarios/journal_noise.py [--quick] [--out DIR] [--grid NT NZ] [--speeds ...] [--settle]
 
@@ -23,6 +24,7 @@ import numpy as np
 
 from transient import JournalBearing, JournalOrbit, bearing_noise
 from transient.analysis import NotPeriodicError, film_transitions
+from transient.compile_notice import announce
 from transient.params import rho_kim
 from transient.plots import journal as plots, save
 from transient.study.scenario import JsonRecord, log, parser
@@ -67,6 +69,7 @@ def main(argv=None):
     ap.add_argument("--max-settle", type=int, default=60, help="max settling revolutions (default 60)")
     ap.add_argument("--settle", action="store_true", help="settling runs instead of the periodic orbit by shooting")
     a = ap.parse_args(argv)
+    announce("journal")
     cfg = dict(QUICK if a.quick else FULL)
     grid = tuple(a.grid) if a.grid else cfg["grid"]
     speeds = a.speeds or cfg["speeds"]

@@ -1,5 +1,5 @@
-"""Seed 003 (Rho & Kim): unbalance orbit of a rigid rotor on the Elrod journal bearing, Figs. 3, 4, 8 and the
-stability threshold.
+"""Rho & Kim, "Noise estimation of oil lubricated journal bearings": unbalance orbit of a rigid rotor on the Elrod
+journal bearing, Figs. 3, 4, 8 and the stability threshold.
 
     transient run scenarios/journal_orbit.py [--quick] [--out DIR] [--grid NT NZ] [--rtol R] [--resume]
                                              [--only fig3 fig8 stability] [--settle]
@@ -27,6 +27,7 @@ import numpy as np
 
 from transient import JournalBearing, JournalOrbit
 from transient.analysis.orbits import peak_abscissa
+from transient.compile_notice import announce
 from transient.params import rho_kim
 from transient.plots import journal as plots, save
 from transient.study.journal import (continuation_response, linear_response_curve, orbit_from_equilibrium,
@@ -127,6 +128,7 @@ def main(argv=None):
     ap.add_argument("--only", choices=("fig3", "fig8", "stability"), nargs="+", help="run only these stages")
     ap.add_argument("--settle", action="store_true", help="Fig. 8 by settling runs instead of continuation")
     a = ap.parse_args(argv)
+    announce("journal")
     cfg = dict(QUICK if a.quick else FULL)
     if a.grid:
         cfg["grid"] = tuple(a.grid)

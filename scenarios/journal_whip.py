@@ -1,4 +1,5 @@
-"""Oil whip of the Rho & Kim rotor (seed 003): run-up through the Lund threshold, long runs above it.
+"""Oil whip of the rotor of Rho & Kim, "Noise estimation of oil lubricated journal bearings": run-up through
+the Lund threshold, long runs above it.
 
     transient run scenarios/journal_whip.py [--quick] [--out DIR] [--grid 151 21] [--revolutions 300]
                                             [--rtol 1e-4] [--fresh]
@@ -6,11 +7,15 @@
 1. The Lund threshold of the bearing (linearised K, C from the discrete film).
 2. A quasi-static run-up from 0.8 to 1.6 times the threshold: constant-speed segments, each continuing the
    previous state (film content and journal velocity carried over, unbalance phase kept); per speed the
-   eccentricity range of the limit cycle and the whirl frequency ratio (~0.5 above the threshold).
+   eccentricity range over the last revolutions, whether it settled (a limit cycle) and the whirl frequency
+   ratio (~0.5 above the threshold).
 3. Long runs at 1.2x and 1.5x the threshold from the static equilibrium, checkpointed (killed or
-   interrupted, the same command resumes; --fresh starts over): the limit-cycle amplitude, the whirl
-   frequency ratio, the Poincare section (centre once per revolution), the smallest film and the touch
+   interrupted, the same command resumes; --fresh starts over): the whirl amplitude, whether it is a limit
+   cycle, the whirl frequency ratio, the Poincare section (centre once per revolution), the smallest film and the touch
    event (the run stops with a message if the journal reaches e/C = 1 - 1e-3).
+"Limit cycle" is printed only when the eccentricity envelope (max and min over a block of 4 revolutions)
+moved by less than 1e-3 C per revolution between the last two blocks; otherwise "NOT settled" with the
+measured growth.
 
 Writes DIR/run_up.png, DIR/whirl_1.2x.png, DIR/whirl_1.5x.png, DIR/whip.json (every number) and the saved
 results DIR/run_up.npz, DIR/whirl_*.npz (transient.load_result reads them).
@@ -25,25 +30,28 @@ from pathlib import Path
 import numpy as np
 
 from transient import JournalBearing, JournalOrbit
+from transient.compile_notice import announce
 from transient.params import rho_kim
 from transient.plots import save, whip as plots
 from transient.study.scenario import JsonRecord, log, parser
-from transient.study.whip import long_whip, run_up
+from transient.study.whip import ENVELOPE_TOL, long_whip, run_up, settled_text
 
 OUT = Path(__file__).resolve().parent / "out" / "journal_whip"
 OPR = 64  # outputs per revolution
+QUICK_REVOLUTIONS = 10.0  # of each long run with --quick: the whirl is still growing (reported as not settled)
 
 
 def main(argv=None):
     ap = parser(__doc__, OUT)
-    ap.add_argument("--grid", type=int, nargs=2, metavar=("NT", "NZ"), help="film grid (default 151 21; quick 48 8)")
-    ap.add_argument("--revolutions", type=float, help="revolutions of each long run (default 300; quick 30)")
+    ap.add_argument("--grid", type=int, nargs=2, metavar=("NT", "NZ"), help="film grid (default 151 21; quick 32 6)")
+    ap.add_argument("--revolutions", type=float, help="revolutions of each long run (default 300; quick 10)")
     ap.add_argument("--rtol", type=float, default=1e-4)
     ap.add_argument("--fresh", action="store_true", help="ignore existing checkpoints")
     a = ap.parse_args(argv)
-    grid = tuple(a.grid) if a.grid else ((48, 8) if a.quick else (151, 21))
-    revs = a.revolutions or (30.0 if a.quick else 300.0)
-    steps, per_step = (5, 5) if a.quick else (9, 20)
+    announce("journal")
+    grid = tuple(a.grid) if a.grid else ((32, 6) if a.quick else (151, 21))
+    revs = a.revolutions or (QUICK_REVOLUTIONS if a.quick else 300.0)
+    steps, per_step = (5, 3) if a.quick else (9, 20)
     out = Path(a.out)
     out.mkdir(parents=True, exist_ok=True)
     rec = JsonRecord(out / "whip.json", dict(grid=grid, revolutions=revs, rtol=a.rtol, quick=a.quick))
@@ -59,10 +67,12 @@ def main(argv=None):
     ru = run_up(make, speeds, per_step, rtol=a.rtol, outputs_per_revolution=OPR, threshold_rpm=th)
     ru.save(out / "run_up.npz")
     rec.put("run_up", dict(speeds_rpm=ru.speeds, speed_over_threshold=ru.speeds / th, eps_min=ru.eps_min,
-                           eps_max=ru.eps_max, whirl_ratio=ru.whirl_ratio, steps_per_revolution=ru.steps_per_revolution,
-                           message=ru.message))
-    for s, lo, hi, wr in zip(ru.speeds, ru.eps_min, ru.eps_max, ru.whirl_ratio):
-        log(f"  {s:7.0f} rpm ({s / th:.2f}x): e/C {lo:.3f} - {hi:.3f}, whirl ratio {wr:.3f}")
+                           eps_max=ru.eps_max, whirl_ratio=ru.whirl_ratio, envelope_growth=ru.envelope_growth,
+                           settled=ru.settled, steps_per_revolution=ru.steps_per_revolution, message=ru.message))
+    for s, lo, hi, wr, g, ok in zip(ru.speeds, ru.eps_min, ru.eps_max, ru.whirl_ratio, ru.envelope_growth, ru.settled):
+        verdict = "settled" if ok else "NOT settled"
+        log(f"  {s:7.0f} rpm ({s / th:.2f}x): e/C {lo:.3f} - {hi:.3f} over the last revolutions, {verdict} "
+            f"(envelope {g:+.1e} C/rev, tolerance {ENVELOPE_TOL:g}), whirl ratio {wr:.3f}")
     log(f"written: {save(plots.run_up(ru), out / 'run_up.png')}")
 
     for factor in (1.2, 1.5):
@@ -76,7 +86,8 @@ def main(argv=None):
         r.save(out / f"whirl_{tag}.npz")
         rec.put(f"whirl_{tag}", w)
         touch = "no touch" if w["touched_at_s"] is None else f"touches at t = {w['touched_at_s']:.4f} s"
-        log(f"  {r.message}; limit cycle e/C {w['eps_min']:.4f} - {w['eps_max']:.4f}, whirl ratio "
+        log(f"  {r.message}; e/C {w['eps_min']:.4f} - {w['eps_max']:.4f} over the last {w['last_revolutions']} rev: "
+            f"{settled_text(w)}; whirl ratio "
             f"{w['whirl_ratio']:.3f}, min film {w['min_film_m'] * 1e6:.2f} um, {touch}; "
             f"{w['steps'] / max(w['revolutions'], 1):.0f} steps per revolution, {w['wall_s']:.0f} s")
         log(f"written: {save(plots.whirl(r, w, OPR, label=f'{tag} threshold, '), out / f'whirl_{tag}.png')}")

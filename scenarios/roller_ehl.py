@@ -1,6 +1,7 @@
-"""Seed 001 scenario: EHL of a tilted tapered roller (Park 2015), the paper's Figs. 3-10.
+"""EHL of a tilted tapered roller: Park, "Elastohydrodynamic lubrication analysis of a tilted tapered roller", the
+paper's Figs. 3-10.
 
-Run: ``python scenarios/roller_ehl.py [--quick] [--out DIR]`` (PNGs and ``roller_ehl.json`` into
+Run: ``transient run scenarios/roller_ehl.py [--quick] [--out DIR]`` (PNGs and ``roller_ehl.json`` into
 ``scenarios/out/roller_ehl/`` by default). The paper's case (:mod:`transient.params.park`): U_m = 1e-11,
 G = 2500, W = 2e-5, E' = 220 GPa, theta = 10 deg, R_d* = 0.5, Y_d = 0.7, tilt +0.002, -0.002 and 0 deg,
 on the paper's 94 x 45 non-uniform grid (``--quick``: 62 x 45). Prints the paper's statements checked.
@@ -13,6 +14,7 @@ import os
 import time
 
 from transient.analysis.ehl import end_features, midplane_features, tilt_effects, transverse_features
+from transient.compile_notice import announce
 from transient.models.roller import RollerContact, TaperedRoller
 from transient.params import park
 from transient.plots import roller as plots
@@ -73,6 +75,7 @@ def save(fig, out, name):
 
 def main(argv=None):
     args = parser(__doc__, os.path.join(HERE, "out", "roller_ehl")).parse_args(argv)
+    announce("roller")
     os.makedirs(args.out, exist_ok=True)
     grid = ("clustered", 62, 45) if args.quick else "paper"
     res = solve_all(grid)

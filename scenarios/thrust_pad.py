@@ -1,4 +1,5 @@
-"""Seed 000 (Lee & Rhim): parallel thrust pad in mixed lubrication with generated rough surfaces, Figs. 4-6.
+"""Lee & Rhim, "Mixed lubrication analysis of parallel thrust bearing by surface topography": a parallel thrust
+pad in mixed lubrication with generated rough surfaces, Figs. 4-6.
 
     transient run scenarios/thrust_pad.py [--quick] [--out DIR]
 
@@ -69,10 +70,8 @@ def main(argv=None):
         log(f"gamma {g}: h_eq/Rq = {d['h_eq_over_rq']:.4f}, h(t_end)/Rq = {d['h_end_over_rq']:.4f}, "
             f"t(h0 = 2 Rq) = {d['t_to_2rq_ms']:.2f} ms")
     log(f"full 2-D DAE vs separable (gamma 1, 40x40): max |dh0/h0| = {rel:.2e}")
-    for key, row in trends.items():
-        log(f"{key}: isotropic has the largest A_re {row['iso_largest_A_re']}, largest W_asp {row['iso_largest_W_asp']}, "
-            f"smallest film load (descent {row['iso_smallest_W_hyd_descent']}, fixed rate "
-            f"{row['iso_smallest_W_hyd_fixed_rate']})")
+    for line in study.claim_verdicts(trends):
+        log(line)
     log(f"Fig. 6: W_asp against A_re over all gammas: R^2 = {fit['all']['R2']:.5f}, mean contact pressure "
         f"{fit['all']['slope'] / 1e6:.1f} MPa")
     rec.put("wall_s", time.perf_counter() - t0)

@@ -154,3 +154,13 @@ def test_an_isoviscous_oil_is_outside_the_flooded_film_fit():
         ThrustBallBearing(pressure_viscosity=0.0)
     with pytest.raises(ValueError, match="n_balls"):
         ThrustBallBearing(n_balls="6")
+
+
+def test_the_papers_boundaries_as_a_verdict():
+    """The paper: flooded to 5 balls, starved at 6, parched beyond; the verdict names the points that differ."""
+    from transient.study.ball import paper_regime, paper_verdict
+
+    assert [paper_regime("n_balls", z) for z in (5, 6, 7)] == ["fully flooded", "starved", "parched"]
+    assert paper_verdict("n_balls", [1, 6, 11], ["fully flooded", "starved", "parched"]).startswith("reproduced")
+    v = paper_verdict("n_balls", [1, 6, 11], ["parched", "parched", "parched"])
+    assert v.startswith("NOT reproduced at 2 of 3") and "1: parched (paper fully flooded)" in v

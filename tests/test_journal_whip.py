@@ -69,3 +69,24 @@ def test_whirl_numbers_of_a_synthetic_whirl():
     assert len(w["poincare_x"]) == revs and w["revolutions"] == revs
     with pytest.raises(ValueError, match="revolution"):
         whirl_numbers(OrbitResult(t=t[:10], x=x[:10], y=y[:10], speed_rpm=rpm, clearance=C), opr)
+
+
+def _whirl(radius_of_revolution, revs=24, opr=64, rpm=6000.0, C=1e-4):
+    t = np.arange(revs * opr + 1) / opr * 60.0 / rpm
+    ph = 2 * np.pi * rpm / 60.0 * t
+    rad = radius_of_revolution(ph / (2 * np.pi))
+    return OrbitResult(t=t, x=C * rad * np.cos(0.47 * ph), y=C * rad * np.sin(0.47 * ph), speed_rpm=rpm, clearance=C)
+
+
+def test_a_whirl_is_a_limit_cycle_only_when_its_envelope_stops_moving():
+    """A whirl of constant radius 0.6 C is a limit cycle (envelope growth 0); one whose radius still grows by
+    0.01 C per revolution is not settled, and the measured growth is that rate."""
+    from transient.study.whip import ENVELOPE_TOL, settled_text
+
+    steady = whirl_numbers(_whirl(lambda rev: 0.6 + 0 * rev), 64, last_revolutions=10)
+    assert steady["settled"] and abs(steady["envelope_growth_per_rev"]) < 1e-6
+    assert settled_text(steady).startswith("limit cycle")
+    growing = whirl_numbers(_whirl(lambda rev: 0.3 + 0.01 * rev), 64, last_revolutions=10)
+    assert not growing["settled"] and growing["envelope_growth_per_rev"] == pytest.approx(0.01, rel=0.05)
+    assert growing["envelope_growth_per_rev"] > ENVELOPE_TOL
+    assert settled_text(growing).startswith("NOT settled")

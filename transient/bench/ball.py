@@ -1,4 +1,4 @@
-"""Cost of the ball-pass sequence (seed 002): the physical front-following levelling side by side with the earlier
+"""Cost of the ball-pass sequence (Jeong et al.): the physical front-following levelling side by side with the earlier
 uniform-grid formulation (mobility floor ``b = h_inf/10``), in one run, and the serial regime map.
 
 ``run(out_dir)`` integrates the 200-ball-pass sequence of the paper's reference point (30 N, 80 rpm, 6 balls,
@@ -131,5 +131,5 @@ TITLE = "ball-pass sequence: the physical front-following levelling against the 
 def main(out, quick: bool = False) -> str:
     """``transient bench ball``."""
     res = run(out_dir=str(out), quick=quick)
-    return ("## Thrust ball bearing: 200-ball-pass sequence, physical model vs earlier formulation (seed 002)\n"
+    return ("## Thrust ball bearing: 200-ball-pass sequence, physical model vs earlier formulation (Jeong et al.)\n"
             + res["markdown"] + "\n\n![work-precision](bench_ball.png)")

@@ -1,4 +1,4 @@
-"""EHL of the tapered roller (seed 001): cost of the steady and transient solves, measured side by side.
+"""EHL of the tapered roller (Park): cost of the steady and transient solves, measured side by side.
 
 1. The paper's case on the paper's 94 x 45 non-uniform grid: this package's solver (nested iteration
    47 x 45 -> 94 x 45, pseudo-transient continuation on the coarse level, GMRES with a reused
@@ -27,7 +27,7 @@ from transient.models.roller.film import solve_steady
 from transient.models.roller.transient import GAMMA
 from transient.params import park
 
-TITLE = "tapered-roller EHL (seed 001): paper grid vs the paper's dense Newton, uniform FFT grids, transients"
+TITLE = "tapered-roller EHL (Park): paper grid vs the paper's dense Newton, uniform FFT grids, transients"
 
 
 def _paper_contact(grid):
@@ -143,7 +143,7 @@ def main(out, quick: bool = False) -> str:
     levels = p["ours_levels"]
     ours_its = f"{sum(v['iterations'] for v in levels)} ({' + '.join(str(v['iterations']) for v in levels)})"
     lines = [
-        "## Tapered-roller EHL (seed 001)", "",
+        "## Tapered-roller EHL (Park)", "",
         f"`transient bench ehl`{' --quick' if quick else ''}; 2 cores, possibly shared with other work (absolute "
         "seconds then vary by up to 2x; the ratios measured in one run are the numbers); "
         f"OPENBLAS_NUM_THREADS={data['openblas_threads']}.", "",

@@ -1,4 +1,4 @@
-"""Work-precision benchmark of the journal orbit (seed 003, Rho & Kim Table 1 at 6000 rpm).
+"""Work-precision benchmark of the journal orbit (Rho & Kim Table 1 at 6000 rpm).
 
 Unbalanced rigid rotor (m = 100 kg, e = 0.01 C, W = 981 N) on the 151 x 21 half-grid Elrod journal
 bearing, started from the static equilibrium. Every method integrates the same ``revolutions`` shaft
@@ -379,4 +379,4 @@ def main(out, quick: bool = False) -> str:
     """``transient bench journal``: the work-precision run, its figure and raw numbers in ``out``."""
     result = run(quick=quick)
     write(result, out)
-    return "## Journal orbit (seed 003): work-precision at 6000 rpm\n\n" + markdown(result)
+    return "## Journal orbit (Rho & Kim): work-precision at 6000 rpm\n\n" + markdown(result)

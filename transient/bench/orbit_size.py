@@ -1,4 +1,4 @@
-"""Orbit size benchmark (seed 003, issue 18): integrator cost from small orbits to oil whip, side by side.
+"""Orbit size benchmark (Rho & Kim's rotor): integrator cost from small orbits to oil whip, side by side.
 
 The Rho & Kim bearing and rotor (m = 100 kg, W = 981 N) on the paper grid, three cases:
 
@@ -9,7 +9,7 @@ The Rho & Kim bearing and rotor (m = 100 kg, W = 981 N) on the paper grid, three
 * **small**: unbalance 0.01 C at 6000 rpm (the paper's case), one revolution from the equilibrium, and 100
   revolutions timed.
 
-Each case runs the candidates of issue 18 side by side at the same user tolerances: IDA on the default
+Each case runs the candidate integrators side by side at the same user tolerances: IDA on the default
 ``universal`` film (state u, ``A H D(u) u' + R = 0``), IDA on the ``content`` film (state H theta, ``A m' + R = 0``:
 the cavity crossing conserves mass exactly), and IDA on the universal film with a 10x wider switch
 (``WIDE``: 2e-2 p0 and content width 5e-3, whose bias is second order in the widths since the prescribed

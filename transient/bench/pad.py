@@ -1,4 +1,4 @@
-"""Thrust-pad descent benchmark (seed 000): ``run(quick=False) -> markdown``.
+"""Thrust-pad descent benchmark (Lee & Rhim): ``run(quick=False) -> markdown``.
 
 Work-precision of the rough-pad squeeze descent (massless force balance, Gaussian roughness, steel
 contact) on the separable path -- SUNDIALS CVODE and IDA vs scipy BDF / LSODA vs fixed-step RK4 --
@@ -47,7 +47,7 @@ def run(quick: bool = False) -> str:
         rows.append(("rk4", f"dt {dt * 1e3:g} ms", r.stats.wall_time, r.stats.n_steps, r.stats.n_rhs, _err(r, ref, SIG)))
     base = {rt: w for (m, t, w, *_), rt in zip(rows, list(tols) * 4) if m == "cvode"}
     lines = [
-        "## Thrust pad squeeze descent (seed 000)",
+        "## Thrust pad squeeze descent (Lee & Rhim)",
         "",
         f"Machine: {platform.processor() or platform.machine()}, Python {sys.version.split()[0]}; "
         f"`transient bench pad`. Pad 20 x 20 mm, mu = 0.03 Pa s, Gaussian Rq = 2 um, steel contact, "

@@ -1,4 +1,4 @@
-"""Periodic orbits of the journal orbit by shooting against brute-force settling (seed 003, Rho & Kim; issue 14).
+"""Periodic orbits of the journal orbit by shooting against brute-force settling (Rho & Kim).
 
 Paper case (Table 1, m = 100 kg, e = 0.01 C, W = 981 N) on the paper's 151 x 21 half grid (quick: 41 x 6). The
 methods of each comparison run one after the other in one process from the same start; on the project's 2
@@ -212,4 +212,4 @@ def main(out, quick: bool = False) -> str:
     out = Path(out)
     out.mkdir(parents=True, exist_ok=True)
     (out / "bench_periodic.json").write_text(json.dumps(result, indent=1, default=float))
-    return "## Journal periodic orbits (seed 003): shooting and continuation vs settling\n\n" + markdown(result)
+    return "## Journal periodic orbits (Rho & Kim): shooting and continuation vs settling\n\n" + markdown(result)

@@ -68,4 +68,4 @@ TITLE = "rough-surface generation time (FFT synthesis, Patir's linear transform)
 
 def main(out, quick: bool = False) -> str:
     """``transient bench roughness``."""
-    return "## Rough-surface generation (seed 000)\n" + bench_surface(repeat=1 if quick else 3)
+    return "## Rough-surface generation (Lee & Rhim)\n" + bench_surface(repeat=1 if quick else 3)

@@ -72,7 +72,7 @@ def main(out, quick: bool = False) -> str:
             tracemalloc.stop()
             mem.append((m, wall, peak / 1e6, res.failed))
             shutil.rmtree(Path(tmp) / f"cheap{m}")
-    lines = ["## Sweeps: local pool and Dask (seed 003 orbits as the work)", "",
+    lines = ["## Sweeps: local pool and Dask (Rho & Kim orbits as the work)", "",
              f"{n} points: journal orbit on 41 x 6 cells, 20 revolutions, speeds 1000-7500 rpm; all three tables "
              f"identical: {same}. Per-point overhead = (wall x workers - sum of point times) / points.", "",
              "| executor | wall [s] | speed-up vs 1 worker | mean point [s] | overhead per point [s] | overhead / point |",

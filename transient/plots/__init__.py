@@ -1,15 +1,28 @@
 """matplotlib figures drawn from Results (and the tables studies make of them) only: every paper figure is
-drawable from the installed package, e.g. ``transient.plots.journal.orbit_settling(result, record)``.
+drawable from the installed package.
 
-Figures are built on :class:`matplotlib.figure.Figure` directly (no pyplot state, no GUI backend), so they
-work headless and in worker processes; :func:`save` writes one and returns its path.
+The figures are grouped by model family, each a module reachable from here without a separate import::
+
+    import transient.plots as tp
+    fig = tp.journal.orbit_settling(result, record, 64, bearing.grid_shape)
+    tp.save(fig, "out/orbit.png")
+
+``ball``, ``feeds``, ``film``, ``journal``, ``layers``, ``pad``, ``roller``, ``surfaces``, ``sweep``, ``whip`` (imported on
+first use). Figures are built on :class:`matplotlib.figure.Figure` directly (no pyplot state, no GUI backend),
+so they work headless and in worker processes; :func:`save` writes one and returns its path.
 """
 
 from __future__ import annotations
 
+import importlib
+import sys
 from pathlib import Path
 
 from matplotlib.figure import Figure
+
+#: the figure modules, one per model family (imported lazily by attribute access)
+FAMILIES = ("ball", "feeds", "film", "journal", "layers", "pad", "roller", "surfaces", "sweep", "whip")
+__all__ = ["figure", "save", *FAMILIES]
 
 
 def figure(nrows=1, ncols=1, size=(7.0, 4.5), **kw):
@@ -18,9 +31,24 @@ def figure(nrows=1, ncols=1, size=(7.0, 4.5), **kw):
     return fig, fig.subplots(nrows, ncols, **kw)
 
 
-def save(fig: Figure, path, dpi=120) -> Path:
-    """Write ``fig`` to ``path`` (folders created) and return the path."""
+def save(fig: Figure, path, dpi=120, make_folders: bool = True) -> Path:
+    """Write ``fig`` to ``path`` and return the path. A missing folder is created with a one-line note on
+    stderr (``make_folders=True``, the default) or is an error naming it (``make_folders=False``)."""
     path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
+    if not path.parent.is_dir():
+        if not make_folders:
+            raise FileNotFoundError(f"save: folder {path.parent} does not exist (make_folders=False)")
+        path.parent.mkdir(parents=True, exist_ok=True)
+        print(f"save: created folder {path.parent}", file=sys.stderr)
     fig.savefig(path, dpi=dpi)
     return path
+
+
+def __getattr__(name):
+    if name in FAMILIES:
+        return importlib.import_module(f"{__name__}.{name}")
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}; figure modules: {', '.join(FAMILIES)}")
+
+
+def __dir__():
+    return sorted(set(globals()) | set(FAMILIES))

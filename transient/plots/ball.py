@@ -1,4 +1,4 @@
-"""Figures of the thrust ball bearing's starvation sequences (seed 002, Jeong et al. Figs. 7-11).
+"""Figures of the thrust ball bearing's starvation sequences (Jeong, Lee, Yoo & Cho, Figs. 7-11).
 
 Readability rules: one colour per regime (the marker of each point), one line style and marker shape per
 series (in the legend), the swept value on the x axis, the fixed values in the title, the paper's regime
@@ -7,12 +7,19 @@ boundaries drawn as labelled vertical lines."""
 from __future__ import annotations
 
 import numpy as np
+from matplotlib.lines import Line2D
+from matplotlib.patches import Patch, Rectangle
 
 from transient.plots import figure
 
 REGIME_COLOURS = {"fully flooded": "tab:green", "starved": "tab:orange", "parched": "tab:red"}
 LABELS = {"n_balls": "number of balls", "speed_rpm": "shaft speed [rpm]", "load": "axial load [N]",
           "ambient_film": "ambient film [um]"}
+def _name(axis: str) -> str:
+    """The label of ``axis`` without its unit."""
+    return LABELS[axis].split(" [")[0]
+
+
 _STYLES = [("o", "-"), ("s", "--"), ("^", ":"), ("D", "-."), ("v", (0, (5, 1))), ("P", (0, (1, 1)))]
 
 
@@ -52,12 +59,12 @@ def regime_sweep(swept: str, values, series: dict, fixed: dict, paper: dict | No
             ax.axvline(v, color=REGIME_COLOURS["fully flooded" if k == "flooded" else "starved"], ls="--", lw=1)
             ax.annotate(f"paper: {k} to {v:g}", (v, 0.02), xycoords=("data", "axes fraction"), rotation=90,
                         fontsize=7, ha="right", va="bottom")
-    ax.set(xlabel=LABELS[swept], ylabel="H_c = h_c / r_b (periodic state or last pass)")
+    ax.set(xlabel=LABELS[swept], ylabel="H_c = h_c / r_b, periodic state or last pass [-]")
     hc = np.concatenate(all_hc)
     if hc.min() > 0 and hc.max() / hc.min() > 10:
         ax.set_yscale("log")
     ax.legend(handles=handles, fontsize=7, loc="best")
-    ax.set_title(title or f"Central film against {LABELS[swept]} ({fixed_title(fixed, swept)})", fontsize=9)
+    ax.set_title(title or f"Central film against {_name(swept)} ({fixed_title(fixed, swept)})", fontsize=9)
     ax.grid(True, which="both", lw=0.3)
     return fig
 
@@ -71,8 +78,8 @@ def meniscus(values, series: dict, fixed: dict, swept: str = "load"):
         first = first or seqs
     ax.plot(values, [s.m_c for s in first], "k-", lw=2, label="critical meniscus m_c")
     ax.set_yscale("log")
-    ax.set(xlabel=LABELS[swept], ylabel="meniscus position m = x_in / b")
-    ax.set_title(f"Inlet meniscus against {LABELS[swept]} ({fixed_title(fixed, swept)})", fontsize=9)
+    ax.set(xlabel=LABELS[swept], ylabel="meniscus position m = x_in / b [-]")
+    ax.set_title(f"Inlet meniscus against {_name(swept)} ({fixed_title(fixed, swept)})", fontsize=9)
     ax.legend(fontsize=7)
     ax.grid(True, which="both", lw=0.3)
     return fig
@@ -83,7 +90,7 @@ def inlet_sequence(series: dict, fixed: dict):
     fig, ax = figure(size=(6.4, 4.4))
     for (label, s), (mk, ls) in zip(series.items(), _STYLES):
         ax.semilogy(np.arange(1, s.n_run + 1), np.maximum(s.h_inlet, 1e-10) * 1e6, ls=ls, label=label)
-    ax.set(xlabel="ball pass n", ylabel="inlet film h_in [um]")
+    ax.set(xlabel="ball pass n [-]", ylabel="inlet film h_in [um]")
     ax.set_title(f"Inlet film ball after ball ({fixed_title(fixed, '')})", fontsize=9)
     ax.legend(fontsize=7)
     ax.grid(True, which="both", lw=0.3)
@@ -96,10 +103,12 @@ _PAPER_EDGE = {"flooded": "fully flooded", "starved": "starved"}
 
 def regime_map(rmap, x: str = "n_balls", y: str = "speed_rpm", at: dict | None = None, paper: dict | None = None,
                title: str = ""):
-    """Regime map over two swept values (a :class:`transient.study.ball.RegimeMap`), the third fixed at ``at``
-    (nearest map value; default the middle one): one colour per regime (cells), the value of ``H_c = h_c/r_b``
-    written in each cell, the paper's boundaries (``paper[axis] = {"flooded": last flooded, "starved": last
-    starved}``) drawn as dashed lines between the regimes they separate."""
+    """Regime map of the sampled points over two swept values (a :class:`transient.study.ball.RegimeMap`), the
+    third fixed at ``at`` (nearest map value; default the middle one), drawn as a categorical map: one square
+    per sampled point, equally spaced whatever the values (the axes show the sampled values only), coloured by
+    its regime with ``H_c = h_c/r_b`` written in it. The paper's boundaries (``paper[axis] = {"flooded": last
+    flooded, "starved": last starved}``) are drawn between the sampled values they fall between, and listed as
+    outside the sampled range otherwise."""
     third = [a for a in _AXES if a not in (x, y)][0]
     vals3 = np.asarray(getattr(rmap, third), float)
     v3 = vals3[len(vals3) // 2] if not at or third not in at else float(at[third])
@@ -114,31 +123,32 @@ def regime_map(rmap, x: str = "n_balls", y: str = "speed_rpm", at: dict | None =
         reg, hc = reg.T, hc.T
     xs, ys = np.asarray(getattr(rmap, x), float), np.asarray(getattr(rmap, y), float)
     fig, ax = figure(size=(7.0, 4.6))
-
-    def edges(v):
-        mid = 0.5 * (v[1:] + v[:-1])
-        return np.concatenate([[v[0] - (mid[0] - v[0]) if v.size > 1 else v[0] - 0.5], mid,
-                               [v[-1] + (v[-1] - mid[-1]) if v.size > 1 else v[-1] + 0.5]])
-
-    ex, ey = edges(xs), edges(ys)
     for i in range(xs.size):
         for j in range(ys.size):
-            ax.fill_between([ex[i], ex[i + 1]], ey[j], ey[j + 1], color=REGIME_COLOURS[reg[i, j]], alpha=0.75, lw=0)
-            ax.text(xs[i], ys[j], f"{hc[i, j] * 1e6:.1f}", ha="center", va="center", fontsize=6)
-    handles = [ax.fill_between([], [], [], color=c, alpha=0.75, label=r) for r, c in REGIME_COLOURS.items()]
-    for axis, line, ls in ((x, ax.axvline, "--"), (y, ax.axhline, ":")):
+            ax.add_patch(Rectangle((i - 0.45, j - 0.45), 0.9, 0.9, color=REGIME_COLOURS[reg[i, j]], alpha=0.8, lw=0))
+            ax.text(i, j, f"{hc[i, j] * 1e6:.1f}", ha="center", va="center", fontsize=7)
+    present = [r for r in REGIME_COLOURS if r in set(reg.ravel())]
+    handles = [Patch(color=REGIME_COLOURS[r], alpha=0.8, label=r) for r in present]
+    for axis, vals, line, ls in ((x, xs, ax.axvline, "--"), (y, ys, ax.axhline, ":")):
         for k, v in (paper or {}).get(axis, {}).items():
             pos = v + 0.5 if axis == "n_balls" else v   # between the last ball count of a regime and the next
             col = REGIME_COLOURS[_PAPER_EDGE[k]]
-            line(pos, color=col, ls=ls, lw=2.0)
-            what = LABELS[axis].split(" [")[0]
+            what = _name(axis)
             unit = {"n_balls": " balls", "speed_rpm": " rpm", "load": " N"}[axis]
-            handles.append(ax.plot([], [], color=col, ls=ls, lw=2.0,
-                                   label=f"paper, {what}: {k} up to {v:g}{unit}")[0])
-    ax.set(xlabel=LABELS[x], ylabel=LABELS[y], xlim=(ex[0], ex[-1]), ylim=(ey[0], ey[-1]))
+            inside = vals.size > 1 and vals[0] <= pos <= vals[-1]
+            if inside:
+                line(float(np.interp(pos, vals, np.arange(vals.size))), color=col, ls=ls, lw=2.0)
+            handles.append(Line2D([], [], color=col, ls=ls if inside else "none", lw=2.0,
+                                  label=f"paper, {what}: {k} up to {v:g}{unit}"
+                                        + ("" if inside else " (outside the sampled values)")))
+    ax.set_xticks(range(xs.size), [f"{v:g}" for v in xs])
+    ax.set_yticks(range(ys.size), [f"{v:g}" for v in ys])
+    ax.set(xlabel=LABELS[x], ylabel=LABELS[y],
+           xlim=(-0.5, xs.size - 0.5), ylim=(-0.5, ys.size - 0.5))
     ax.legend(handles=handles, fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0))
     fixed = {third: float(getattr(rmap, third)[k3]), "ambient_film": rmap.ambient_film}
-    ax.set_title(title or f"Final regime (cell colour) and H_c x 1e6 (number), {fixed_title(fixed, '')}", fontsize=9)
+    ax.set_title(title or f"Final regime of each sampled point (colour), H_c x 1e6 (number); {fixed_title(fixed, '')}",
+                 fontsize=9)
     return fig
 
 
@@ -175,7 +185,7 @@ def convergence(rows: list, key: str, label: str, title: str = ""):
     xs = [r[key] for r in rows]
     ax.plot(range(len(xs)), [r["h_inlet"][1] * 1e6 for r in rows], "ko-")
     ax.set_xticks(range(len(xs)), [("physical" if x is None else f"{x:g}") for x in xs], fontsize=7)
-    ax.set(xlabel=label, ylabel="inlet film of ball 2 [um]")
+    ax.set(xlabel=label if "[" in label else f"{label} [-]", ylabel="inlet film of ball 2 [um]")
     ax.set_title(title, fontsize=9)
     ax.grid(True, lw=0.3)
     return fig

@@ -44,7 +44,7 @@ def validation(res):
     n = np.array(somm["uniform"]["n"], dtype=float)
     e0 = somm["uniform"]["p_err"][0]
     a.loglog(n, 1.5 * e0 * (n / n[0]) ** -2, "k--", lw=1, label="slope 2")
-    a.set(xlabel=r"cells around the circumference", ylabel="max |p - p_exact| / max |p_exact|",
+    a.set(xlabel="cells around the circumference [-]", ylabel="max |p - p_exact| / max |p_exact| [-]",
           title="(b) Sommerfeld grid convergence")
     _plain_ticks(a.xaxis, somm["uniform"]["n"])
     a.legend(fontsize=8)
@@ -54,7 +54,7 @@ def validation(res):
     ld = np.array(short["L_over_D"])
     a.loglog(ld, short["fy_err"], "o-", label=f"finite bearing, {short['grid'][0]} x {short['grid'][1]} cells")
     a.loglog(ld, short["fy_err"][0] * (ld / ld[0]) ** 2, "k--", lw=1, label="slope 2")
-    a.set(xlabel="L/D", ylabel="|Fy / Fy_Ocvirk - 1|", title="(c) full-film bearing -> short-bearing limit")
+    a.set(xlabel="L/D [-]", ylabel="|Fy / Fy_Ocvirk - 1| [-]", title="(c) full-film bearing -> short-bearing limit")
     _plain_ticks(a.xaxis, ld)
     a.legend(fontsize=8)
     a.grid(alpha=0.3, which="both")
@@ -66,7 +66,7 @@ def validation(res):
     first = next(iter(sq.values()))
     n = np.array(first["n"], dtype=float)
     a.loglog(n, 1.5 * max(s["err"][0] for s in sq.values()) * (n / n[0]) ** -2, "k--", lw=1, label="slope 2")
-    a.set(xlabel="cells across the short side a", ylabel="|W / W_exact - 1|",
+    a.set(xlabel="cells across the short side a [-]", ylabel="|W / W_exact - 1| [-]",
           title="(d) squeeze film between rectangular plates")
     _plain_ticks(a.xaxis, first["n"])
     a.legend(fontsize=8)

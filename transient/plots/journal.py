@@ -1,4 +1,5 @@
-"""Figures of the journal orbit and its noise (seed 003, Rho & Kim): Figs. 3-12, stability runs, long runs."""
+"""Figures of the journal orbit and its noise (Rho & Kim, "Noise estimation of oil lubricated journal bearings"):
+Figs. 3-12, stability runs, long runs."""
 
 from __future__ import annotations
 
@@ -22,14 +23,14 @@ def orbit_settling(result, record, outputs_per_revolution, grid):
             label=f"settled orbit (rev {len(dist)})")
     eq = record["equilibrium"]
     ax.plot(eq[1], eq[0], "k+", ms=10, label="static equilibrium")
-    ax.set(xlabel="y / C  (90 deg ahead of the load in the direction of rotation)", ylabel="x / C  (towards the load)",
+    ax.set(xlabel="y / C (90 deg ahead of the load, with the rotation) [-]", ylabel="x / C (towards the load) [-]",
            title=f"Fig. 3: journal orbit, {record['speed_rpm']:g} rpm, {grid[0]}x{grid[1]}")
     ax.invert_yaxis()
     ax.set_aspect("equal", adjustable="datalim")
     ax.legend(fontsize=8)
     bx.semilogy(np.arange(1, len(dist)), dist[:-1], "o-", ms=3)  # the last revolution is the reference
     bx.axhline(0.01 * amp, color="0.5", ls=":", lw=0.8)
-    bx.set(xlabel="revolution", ylabel="max distance from the last revolution [C]",
+    bx.set(xlabel="revolution [-]", ylabel="max distance from the last revolution [C]",
            title=f"settling (1 % of the amplitude: dotted): within 1 % after "
                  f"{record['settled_within_1pct_after_revs']} rev")
     bx.title.set_fontsize(10)
@@ -42,13 +43,14 @@ def x_spectrum(record):
     order = np.asarray(record["spectrum_order"])
     spec = np.asarray(record["spectrum_amplitude_C"])
     fig, ax = figure(size=(7, 4.2))
-    ax.semilogy(order, np.maximum(spec, 1e-12), lw=1.0)
+    ac = order > 0.05  # without the DC bin (the orbit's mean position), which would set the axis range
+    ax.semilogy(order[ac], np.maximum(spec[ac], 1e-12), lw=1.0)
     for h, v in record["harmonics_C"].items():
         if h != "0.5x":
             ax.annotate(h, (float(h[:-1]), v), textcoords="offset points", xytext=(3, 4), fontsize=8)
     ax.set_xlim(0, 8)
-    ax.set_ylim(max(spec[1:].max() * 1e-8, 1e-12), spec.max() * 3)
-    ax.set(xlabel="frequency / shaft speed", ylabel="amplitude of x [C]",
+    ax.set_ylim(max(spec[ac].max() * 1e-6, 1e-12), spec[ac].max() * 3)
+    ax.set(xlabel="frequency / shaft speed [-]", ylabel="amplitude of x [C]",
            title=f"Fig. 4: spectrum of x, {record['speed_rpm']:g} rpm, last {record['fft_revolutions']} revolutions "
                  f"(largest peak at {record['spectrum_peak_order']:g}x)")
     ax.title.set_fontsize(10)
@@ -56,16 +58,28 @@ def x_spectrum(record):
     return fig
 
 
+def settled_point(point: dict, settle_fraction: float = 1e-2) -> bool:
+    """Whether a Fig. 8 point is a settled orbit: the shooting converged (``converged``) or the settling run's
+    distance estimate (``settle_estimate``, relative to the amplitude) is within ``settle_fraction``."""
+    return bool(point.get("converged", True)) and point.get("settle_estimate", 0.0) <= settle_fraction
+
+
 def unbalance_response(points, linear, peaks, paper_peak_rpm=None):
-    """Fig. 8: unbalance response amplitude [C] against speed: markers = nonlinear (settled) orbits,
-    lines = the linearised K, C response; ``peaks`` the peak speed of each curve."""
+    """Fig. 8: unbalance response amplitude [C] against speed: filled markers = nonlinear periodic (settled)
+    orbits, open markers = points that did not converge or settle (:func:`settled_point`), lines = the
+    linearised K, C response; ``peaks`` the peak speed of each curve."""
     fig, ax = figure(size=(7, 4.5))
     sp = [p["speed_rpm"] for p in points]
     ls = [p["speed_rpm"] for p in linear]
     for k, c, lab in (("semi_major", "k", "orbit semi-major axis"), ("amp_x", "tab:blue", "x amplitude"),
                       ("amp_y", "tab:orange", "y amplitude")):
         ax.plot(ls, [p[k] for p in linear], "-", color=c, lw=0.8, alpha=0.7)
-        ax.plot(sp, [p[k] for p in points], "o", color=c, ms=5, label=f"{lab} (peak {peaks[k]:.0f} rpm)")
+        good = [settled_point(p) for p in points]
+        ax.plot([v for v, g in zip(sp, good) if g], [p[k] for p, g in zip(points, good) if g], "o", color=c, ms=5,
+                label=f"{lab} (peak {peaks[k]:.0f} rpm)")
+        if not all(good):
+            ax.plot([v for v, g in zip(sp, good) if not g], [p[k] for p, g in zip(points, good) if not g], "o",
+                    mfc="white", color=c, ms=7, label=f"{lab}: NOT converged / settled")
     if paper_peak_rpm:
         ax.axvline(paper_peak_rpm, color="0.5", ls=":", lw=0.8)
         ax.text(paper_peak_rpm, ax.get_ylim()[1] * 0.98, " paper peak", va="top", fontsize=8, color="0.4")
@@ -85,7 +99,7 @@ def stability_runs(runs, threshold_rpm, paper_rpm=None):
         ax.semilogy(r["revolutions_axis"], np.maximum(r["distance_C"], 1e-12), lw=0.6,
                     label=f"{r['speed_rpm']:.0f} rpm ({r['speed_rpm'] / threshold_rpm:.2f} x): "
                           f"{r['growth_per_rev']:+.3f}/rev (linear {r['linear_growth_per_rev']:+.3f})")
-    ax.set(xlabel="revolutions", ylabel="distance from the equilibrium [C]",
+    ax.set(xlabel="revolutions [-]", ylabel="distance from the equilibrium [C]",
            title=f"Stability: linear threshold {threshold_rpm:.0f} rpm"
                  + (f" (paper ~{paper_rpm:g})" if paper_rpm else "") + ", nonlinear runs")
     ax.title.set_fontsize(10)
@@ -103,10 +117,10 @@ def long_run(result, outputs_per_revolution):
     rev = np.arange(1, eps.shape[0] + 1)
     ax.fill_between(rev, eps.min(axis=1), eps.max(axis=1), color="tab:blue", alpha=0.4, lw=0)
     ax.plot(rev, eps.max(axis=1), lw=0.6, color="tab:blue")
-    ax.set(xlabel="revolution", ylabel="eccentricity ratio e/C (min-max per revolution)",
+    ax.set(xlabel="revolution [-]", ylabel="eccentricity ratio e/C, min-max per revolution [-]",
            title=f"{eps.shape[0]} revolutions at {result.speed_rpm:g} rpm")
     bx.plot(np.append(Y[-1], Y[-1][0]), np.append(X[-1], X[-1][0]), "-", color="tab:red")
-    bx.set(xlabel="y / C", ylabel="x / C (towards the load)", title="last revolution")
+    bx.set(xlabel="y / C [-]", ylabel="x / C (towards the load) [-]", title="last revolution")
     bx.invert_yaxis()
     bx.set_aspect("equal", adjustable="datalim")
     for a in (ax, bx):
@@ -125,7 +139,7 @@ def noise_maps(noise, equilibrium, transitions):
                                  (axs[1], noise.p_fluct / 1e3, "(b) pressure fluctuation p_f", "kPa"),
                                  (axs[2], spl, "Fig. 6: level of p_f in the oil (floor: max - 100 dB)", "dB re 1 uPa")):
         m = a.pcolormesh(ang, zz, data, shading="nearest")
-        fig.colorbar(m, ax=a, label=unit)
+        fig.colorbar(m, ax=a, label=f"[{unit}]")
         a.set(xlabel="angle [deg]", ylabel="z from mid-plane [mm]", title=title)
         for key, c in (("rupture_deg", "r"), ("reformation_deg", "w")):
             if key in transitions:
@@ -139,9 +153,12 @@ def noise_spectra(noise, transitions):
     """Fig. 4 (journal x spectrum) and Fig. 7 (nodal pressure spectra on the mid-plane, in the oil)."""
     fig, axs = figure(1, 2, size=(12, 4))
     f, a = noise.x_spectrum
-    axs[0].semilogy(f[1:] / noise.frequency_hz, a[1:] * 1e6, "o-", ms=3)
-    axs[0].set(xlabel="frequency / shaft frequency", ylabel="x amplitude [um]", title="Fig. 4: journal x spectrum",
+    ac = f > 0.05 * noise.frequency_hz  # without the DC bin
+    axs[0].semilogy(f[ac] / noise.frequency_hz, a[ac] * 1e6, "o-", ms=3)
+    axs[0].set(xlabel="frequency / shaft frequency [-]", ylabel="x amplitude [um]", title="Fig. 4: journal x spectrum",
                xlim=(0, noise.samples_per_revolution / 2))
+    if ac.any() and a[ac].max() > 0:
+        axs[0].set_ylim(max(a[ac].max() * 1e6 * 1e-6, 1e-12), a[ac].max() * 1e6 * 3)
     nodes = [("max p_f", int(np.argmax(noise.p_fluct[0])))]
     if transitions:
         nodes += [(f"rupture {transitions['rupture_deg']:.0f} deg", transitions["rupture_index"]),
@@ -150,7 +167,7 @@ def noise_spectra(noise, transitions):
     for lab, col in nodes:
         f, L = noise.spectrum("pressure", node=(0, col), db=True)
         axs[1].plot(f[1:] / noise.frequency_hz, L[1:], "o-", ms=3, label=f"{lab} (node {col})")
-    axs[1].set(xlabel="frequency / shaft frequency", ylabel="dB re 1 uPa (oil)", title="Fig. 7: nodal spectra, mid-plane",
+    axs[1].set(xlabel="frequency / shaft frequency [-]", ylabel="pressure level in the oil [dB re 1 uPa]", title="Fig. 7: nodal spectra, mid-plane",
                xlim=(0, noise.samples_per_revolution / 2))
     axs[1].legend(fontsize=8)
     return fig
@@ -163,15 +180,15 @@ def noise_levels(points, grid):
     fig, axs = figure(1, 3, size=(15, 4))
     axs[0].plot(sp, [p["level_db"] for p in ok], "o-", label="N_b (eq. 16)")
     axs[0].plot(sp, [p["level_dba"] for p in ok], "s-", label="N_b, A-weighted")
-    axs[0].set(xlabel="speed [rpm]", ylabel="dB re 20 uPa (printed eq. 14)", title="Fig. 9/10: bearing noise")
+    axs[0].set(xlabel="speed [rpm]", ylabel="noise level [dB re 20 uPa] (printed eq. 14)", title="Fig. 9/10: bearing noise")
     axs[0].legend()
     H = np.array([p["harmonic_levels_db"] for p in ok])
     HA = np.array([p["harmonic_levels_dba"] for p in ok])
     for k in range(H.shape[1]):
         axs[1].plot(sp, H[:, k], "o-", label=f"{k + 1}x")
         axs[2].plot(sp, HA[:, k], "o-", label=f"{k + 1}x")
-    axs[1].set(xlabel="speed [rpm]", ylabel="dB", title="Fig. 11: harmonic levels")
-    axs[2].set(xlabel="speed [rpm]", ylabel="dB(A)", title="Fig. 12: A-weighted harmonic levels")
+    axs[1].set(xlabel="speed [rpm]", ylabel="level [dB]", title="Fig. 11: harmonic levels")
+    axs[2].set(xlabel="speed [rpm]", ylabel="A-weighted level [dB(A)]", title="Fig. 12: A-weighted harmonic levels")
     axs[1].legend(fontsize=8)
     fig.suptitle(f"grid {grid[0]} x {grid[1]}")
     return fig
@@ -196,7 +213,7 @@ def cavitation_modes(res):
         for ax, q in zip(axes, ("K", "C")):
             ax.plot(r["eps_reynolds"], 100 * r[f"d{q}_max"], "o-", label=f"groove at {ang:g} deg")
     for ax, q in zip(axes, ("stiffness K", "damping C")):
-        ax.set(xlabel="equilibrium e/C (Reynolds film)", ylabel="largest |Elrod - Reynolds| / max |Reynolds| [%]",
+        ax.set(xlabel="equilibrium e/C (Reynolds film) [-]", ylabel="largest |Elrod - Reynolds| / max |Reynolds| [%]",
                title=f"{q}: mass-conserving vs Reynolds-condition film")
         ax.grid(True, lw=0.3)
         ax.legend(fontsize=8)

@@ -1,4 +1,5 @@
-"""Figures of the rough parallel thrust pad (seed 000, Lee & Rhim Figs. 4-6)."""
+"""Figures of the rough parallel thrust pad (Lee & Rhim, "Mixed lubrication analysis of parallel thrust bearing by
+surface topography", Figs. 4-6)."""
 
 from __future__ import annotations
 
@@ -49,7 +50,7 @@ def descent_vs_time(runs: dict, rq, load):
         ax[0, 1].plot(t, r.w_hyd[1:], **kw)
         ax[1, 0].plot(t, r.w_asp[1:], **kw)
         ax[1, 1].plot(t, r.contact_area[1:] * 1e6, **kw)
-    for a, yl in zip(ax.ravel(), ("h0/Rq", "W_hyd [N]", "W_asp [N]", "A_re [mm²]")):
+    for a, yl in zip(ax.ravel(), ("h0/Rq [-]", "W_hyd [N]", "W_asp [N]", "A_re [mm²]")):
         a.set(xlabel="t [ms]", ylabel=yl, xscale="log")
         a.legend(fontsize=8)
         a.grid(True, which="both", lw=0.3)
@@ -71,7 +72,7 @@ def vs_h0(curves: dict, runs: dict, v_ref=1e-3):
                              f"W_hyd [N] at dh0/dt = -{v_ref * 1e3:g} mm/s"),
                         ("(a) real contact area", "(b) asperity load", "(c) film load in the descent",
                          "(c') film load at a fixed closing rate")):
-        a.set(xlabel="h0/Rq", ylabel=yl, title=t)
+        a.set(xlabel="h0/Rq [-]", ylabel=yl, title=t)
         a.legend(fontsize=8)
         a.grid(True, which="both", lw=0.3)
     return fig

@@ -1,4 +1,5 @@
-"""Figures of rough surfaces and their flow factors (seed 000)."""
+"""Figures of rough surfaces and their flow factors (Lee & Rhim, "Mixed lubrication analysis of parallel thrust
+bearing by surface topography")."""
 
 from __future__ import annotations
 
@@ -17,7 +18,7 @@ def flow_factors(results: dict, fits: dict, names: dict):
         ax.errorbar(res.H, res.phi_mean, yerr=res.phi_std, fmt="o", color=c, capsize=3, ms=5,
                     label=f"flow simulation, γ = {names[g]} (mean ± std, {res.phi.shape[0]} patches)")
     ax.axhline(1.0, color="0.6", lw=0.8, ls=":")
-    ax.set(xlabel="H = h / σ", ylabel="pressure flow factor φx",
+    ax.set(xlabel="H = h / σ [-]", ylabel="pressure flow factor φx [-]",
            title="Pressure flow factor: numerical flow simulation vs Patir–Cheng (1978) fits")
     ax.title.set_fontsize(10)
     ax.legend(fontsize=7.5)

@@ -1,7 +1,8 @@
-"""Studies of the thrust ball bearing (seed 002): ball-pass sequences swept over one parameter, the regime map
-over three (ball count x speed x load), the regime boundaries they give (the paper's way: "flooded up to
-X, starved up to Y, parched beyond"), the critical ambient film / surface tension at which a bearing stops
-re-wetting its track, and the convergence tables of the front-following levelling (grid, precursor)."""
+"""Studies of the thrust ball bearing (Jeong, Lee, Yoo & Cho, thrust ball bearing starvation with film replenishment):
+ball-pass sequences swept over one parameter, the regime map over three (ball count x speed x load), the regime
+boundaries they give (the paper's way: "flooded up to X, starved up to Y, parched beyond"), the critical ambient
+film / surface tension at which a bearing stops re-wetting its track, and the convergence tables of the front-
+following levelling (grid, precursor)."""
 
 from __future__ import annotations
 
@@ -200,3 +201,20 @@ def convergence(bearing, *, refines=(0.5, 1.0, 2.0, 4.0), precursors=None, n_pas
     for pf in precursors or ():
         out["precursor"].append(dict(precursor=pf, **row(precursor_film=pf)))
     return out
+
+
+def paper_regime(axis: str, value: float, reported: dict = jeong.REPORTED) -> str:
+    """The regime the paper reports at ``value`` of ``axis`` (n_balls, speed_rpm, load) at the reference
+    point: fully flooded up to its flooded boundary, starved up to its starved boundary, parched beyond."""
+    b = reported[axis]
+    return FLOODED if value <= b["flooded"] else STARVED if value <= b["starved"] else PARCHED
+
+
+def paper_verdict(axis: str, values, regimes, reported: dict = jeong.REPORTED) -> str:
+    """"reproduced" when the model's regimes at ``values`` of ``axis`` are the paper's (:func:`paper_regime`)
+    at every sampled value, else "NOT reproduced" with the number of points that differ."""
+    paper = [paper_regime(axis, float(v), reported) for v in values]
+    bad = [f"{float(v):g}: {r} (paper {p})" for v, r, p in zip(values, regimes, paper) if r != p]
+    if not bad:
+        return f"reproduced at all {len(paper)} sampled values"
+    return f"NOT reproduced at {len(bad)} of {len(paper)} sampled values ({'; '.join(bad[:4])}{' ...' if len(bad) > 4 else ''})"

@@ -1,5 +1,6 @@
-"""Studies of the journal orbit (seed 003, Rho & Kim): the orbit from the equilibrium (Figs. 3-4), the
-unbalance response over speed (Fig. 8) and the stability runs around the linear threshold.
+"""Studies of the journal orbit (Rho & Kim, "Noise estimation of oil lubricated journal bearings"): the orbit from the
+equilibrium (Figs. 3-4), the unbalance response over speed (Fig. 8) and the stability runs around the linear
+threshold.
 
 Fig. 8 by continuation (:func:`continuation_response`, the default): the periodic orbit at every speed by
 shooting (:mod:`transient.models.journal.periodic`), each warm-started from the previous ones, continued past
@@ -48,6 +49,19 @@ def orbit_from_equilibrium(orbit, revolutions, rtol, outputs_per_revolution=64, 
     return res, rec
 
 
+def settle_estimate(X, Y) -> float:
+    """Distance of the last revolution from the settled orbit, relative to the orbit's largest radius: the
+    change from one revolution to the next ``d`` (largest over the revolution) extrapolated with its decay
+    ratio ``q = d_n / d_(n-1)`` (capped at 0.99) as ``d q / (1 - q)``. ``X``, ``Y``: (revolutions, samples)
+    of :func:`~transient.analysis.orbits.per_revolution`; inf with fewer than 3 revolutions."""
+    if X.shape[0] < 3:
+        return float("inf")
+    amp = orbit_shape(X[-1], Y[-1])["radius_max"]
+    d = np.max(np.hypot(X[1:] - X[:-1], Y[1:] - Y[:-1]), axis=1)  # change from one revolution to the next
+    q = min(d[-1] / d[-2], 0.99) if d[-2] > 0 else 0.99
+    return float(d[-1] * q / (1.0 - q) / max(amp, 1e-300))  # remaining distance if the decay is geometric
+
+
 def settled_unbalance_orbit(orbit, rtol, outputs_per_revolution=64, min_revolutions=4, max_revolutions=40,
                             settle_fraction=1e-2):
     """Settle from the linear start by the extrapolated-distance estimate (module docstring). Returns (the
@@ -60,11 +74,8 @@ def settled_unbalance_orbit(orbit, rtol, outputs_per_revolution=64, min_revoluti
     n = min_revolutions
     while True:
         X, Y = per_revolution(np.concatenate(xs), np.concatenate(ys), opr, res.clearance)
-        amp = orbit_shape(X[-1], Y[-1])["radius_max"]
-        d = np.max(np.hypot(X[1:] - X[:-1], Y[1:] - Y[:-1]), axis=1)  # change from one revolution to the next
-        q = min(d[-1] / d[-2], 0.99) if d.size > 1 and d[-2] > 0 else 0.99
-        change = float(d[-1] * q / (1.0 - q))  # remaining distance if the decay is geometric
-        if change <= settle_fraction * amp or n >= max_revolutions or res.touched_at is not None:
+        change = settle_estimate(X, Y)
+        if change <= settle_fraction or n >= max_revolutions or res.touched_at is not None:
             break
         extra = min(2, max_revolutions - n)
         res = orbit.run(extra, method="ida", rtol=rtol, atol=1e-9, outputs_per_revolution=opr, start=res,
@@ -74,7 +85,7 @@ def settled_unbalance_orbit(orbit, rtol, outputs_per_revolution=64, min_revoluti
         steps += res.stats.n_steps
         wall += res.stats.wall_time
         n += extra
-    return orbit_shape(X[-1], Y[-1]), n, change / max(amp, 1e-300), steps, wall
+    return orbit_shape(X[-1], Y[-1]), n, change, steps, wall
 
 
 def continuation_response(bearing, rotor, speeds, rtol, outputs_per_revolution=64, step_beyond=250.0,

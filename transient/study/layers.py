@@ -1,5 +1,6 @@
-"""Seed 004's journal case with boundary layers: how much the layers raise the film and why, with a Newtonian and
-with the paper's shear-thinning (Gecim) bulk.
+"""The journal case of Jang, "Study on boundary lubrication in the sliding bearing system under high load and speed"
+with boundary layers: how much the layers raise the film and why, with a Newtonian and with the paper's shear-
+thinning (Gecim) bulk.
 
 Jang's bearing (R/B = 1, eps = 0.9, h_min = 0.1 C; the paper's example D = 25 mm, C = 10 um) with layers of
 thickness delta = 0, 0.1, 0.2, 0.3 h_min on both walls, layer viscosity mu_ab = 10 mu (2 ... 100 explored)
@@ -29,7 +30,7 @@ from transient.models.journal.orbit import JournalOrbit
 from transient.params import rho_kim
 from transient.physics.layered import BoundaryLayers, Gecim
 
-#: Jang's example bearing (seed 004: D = 25 mm, c = 10 um, R/B = 1); viscosity and speed set only the scale
+#: Jang's example bearing (D = 25 mm, c = 10 um, R/B = 1); viscosity and speed set only the scale
 BEARING = dict(diameter=0.025, length=0.0125, clearance=10e-6, viscosity=0.01, groove=None,
                cavitation="reynolds")
 SPEED_RPM = 300.0  # keeps the thickest layers' peak (~19 p0) below the 100 MPa validity warning
@@ -124,24 +125,27 @@ def gecim_cases(grid=(121, 20)) -> dict:
     return out
 
 
-def shear_thinning_dynamics(grid=(151, 21), revolutions=4.0, speed_rpm=6000.0) -> dict:
-    """The Gecim bulk in the rotor computations (seed 003's Rho & Kim bearing and rotor, Elrod film): with the
+def shear_thinning_dynamics(grid=(151, 21), rtol=1e-5, speed_rpm=6000.0) -> dict:
+    """The Gecim bulk in the rotor computations (the bearing and rotor of Rho & Kim, Elrod film): with the
     Newtonian bulk and with a Gecim bulk of kappa* = 0.65 at ``speed_rpm`` (kappa fixed in Pa), mu_2/mu_1 = 0.57:
-    the static equilibrium, K and C, the Lund threshold, and the unbalance orbit (0.01 C) over ``revolutions`` from
-    the equilibrium (the last revolution's x, y in units of C)."""
+    the static equilibrium, K and C, the Lund threshold, and the periodic unbalance orbit (0.01 C) by shooting
+    (:meth:`~transient.models.journal.JournalOrbit.periodic_response`: one closed revolution, x, y in units of C,
+    with its convergence, error estimate and dominant Floquet multiplier)."""
     B, rotor = rho_kim.BEARING, rho_kim.ROTOR
     gecim = gecim_bulk(B, speed_rpm)
-    out = dict(grid=list(grid), speed_rpm=speed_rpm, kappa_Pa=gecim.kappa, revolutions=revolutions)
+    out = dict(grid=list(grid), speed_rpm=speed_rpm, kappa_Pa=gecim.kappa, rtol=rtol)
     for name, rh in (("newtonian", None), ("gecim", gecim)):
         b = JournalBearing(**B, grid=tuple(grid), rheology=rh)
         eq = b.equilibrium(rotor["load"], speed_rpm)
         K, C = b.coefficients(rotor["load"], speed_rpm)
         o = JournalOrbit(b, rotor["rotor_mass"], 0.01 * B["clearance"], rotor["load"], speed_rpm)
-        r = o.run(revolutions, rtol=1e-5, outputs_per_revolution=100, progress=False)
-        last = r.t >= r.t[-1] - 60.0 / speed_rpm * (1 + 1e-6)  # the last revolution, closed
-        x, y = r.x[last] / B["clearance"], r.y[last] / B["clearance"]
+        p = o.periodic_response(rtol=rtol, outputs_per_revolution=100)
+        x, y = p.x / B["clearance"], p.y / B["clearance"]
         out[name] = dict(eccentricity=eq.eccentricity_ratio, attitude_deg=eq.attitude_angle_deg,
                          friction_N=eq.friction_force, K=K, C=C,
                          threshold_rpm=b.stability_threshold(rotor["rotor_mass"], rotor["load"]), x_C=x, y_C=y,
-                         orbit_span_C=(float(np.ptp(x)), float(np.ptp(y))))
+                         equilibrium_C=(float(eq.position[0] / B["clearance"]), float(eq.position[1] / B["clearance"])),
+                         orbit_span_C=(float(np.ptp(x)), float(np.ptp(y))), converged=bool(p.converged),
+                         error_estimate_C=float(p.error_estimate / B["clearance"]),
+                         max_multiplier=p.max_multiplier, periods=int(p.revolutions_integrated), message=p.message)
     return out

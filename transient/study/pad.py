@@ -1,5 +1,6 @@
-"""Studies of the rough parallel thrust pad (seed 000, Lee & Rhim): surfaces per gamma, descents, the
-contact and film loads against h0/Rq, the isotropic-surface trends and the W_asp-A_re line (Fig. 6)."""
+"""Studies of the rough parallel thrust pad (Lee & Rhim, "Mixed lubrication analysis of parallel thrust bearing by
+surface topography"): surfaces per gamma, descents, the contact and film loads against h0/Rq, the isotropic-surface
+trends and the W_asp-A_re line (Fig. 6)."""
 
 from __future__ import annotations
 
@@ -57,6 +58,40 @@ def trends(pads: dict, load, H_values=(1.0, 1.5, 2.0, 3.0), v_ref=1e-3):
         row["A_re_spread_rel"] = float((max(a) - min(a)) / np.mean(a))
         out[f"H={H:g}"] = row
     return out
+
+
+#: the paper's claims checked by :func:`trends` (key, wording, why it does not hold in this model where it
+#: does not: docs/validation.md, section "Parallel thrust pad in mixed lubrication -- validation")
+CLAIMS = (
+    ("iso_largest_A_re", "the isotropic surface (gamma = 1) has the largest real contact area A_re",
+     "A_re (eq. 16) depends only on the height density, not on gamma; the differences are sampling noise"),
+    ("iso_largest_W_asp", "the isotropic surface has the largest asperity load W_asp",
+     "W_asp (eq. 15) depends only on the height density, not on gamma; the differences are sampling noise"),
+    ("iso_smallest_W_hyd_descent", "the isotropic surface has the smallest film load in the descent",
+     "in the massless descent W_hyd = W - W_asp only mirrors W_asp"),
+    ("iso_smallest_W_hyd_fixed_rate", "the isotropic surface has the smallest film load at a fixed closing rate",
+     "the flow factors make the isotropic film load the largest: the film drains through the direction "
+     "with phi > 1"),
+)
+VALIDATION_SECTION = "Parallel thrust pad in mixed lubrication — validation"
+
+
+def claim_verdicts(trends_: dict) -> list[str]:
+    """One line per paper's claim (``CLAIMS``) from :func:`trends`: "reproduced" when it holds at every
+    h0/Rq checked, else "NOT reproduced" with the h0/Rq where it fails, the section of docs/validation.md and
+    the reason."""
+    lines = []
+    for key, claim, why in CLAIMS:
+        checked = [H.removeprefix("H=") for H in trends_]
+        fails = [H.removeprefix("H=") for H, row in trends_.items() if not row[key]]
+        where = f"h0/Rq = {', '.join(checked)}"
+        if not fails:
+            lines.append(f"paper's claim: {claim}: reproduced (at {where})")
+        else:
+            at = "all of " + where if len(fails) == len(checked) else f"h0/Rq = {', '.join(fails)} of {where}"
+            lines.append(f"paper's claim: {claim}: NOT reproduced (fails at {at}; see docs/validation.md, section "
+                         f"\"{VALIDATION_SECTION}\": {why})")
+    return lines
 
 
 def line_fit(x, y) -> dict:

@@ -200,6 +200,7 @@ def _journal_build(p):
 
 def _journal_orbit_point(p, run):
     from transient.analysis.orbits import orbit_shape, per_revolution
+    from transient.study.journal import settle_estimate
 
     o = _journal_build(p)
     r = o.run(run["revolutions"], method=run["method"], rtol=run["rtol"], atol=1e-3 * run["rtol"],
@@ -207,9 +208,11 @@ def _journal_orbit_point(p, run):
     X, Y = per_revolution(r.x, r.y, run["outputs_per_revolution"], r.clearance)
     shape = orbit_shape(X[-1], Y[-1]) if X.shape[0] else {}
     eps = r.eccentricity_ratio
+    settle = settle_estimate(X, Y)
     return r, dict(success=r.success, touched=r.touched_at is not None, eps_max=float(eps.max()),
                    eps_min_last_rev=float(np.hypot(X[-1], Y[-1]).min()) if X.shape[0] else math.nan,
                    semi_major_C=shape.get("semi_major", math.nan), semi_minor_C=shape.get("semi_minor", math.nan),
+                   settle_estimate=settle, settled=bool(settle <= run["settle_tol"]),
                    n_steps=r.stats.n_steps, wall_s=r.stats.wall_time)
 
 
@@ -305,7 +308,8 @@ KINDS = {
     "journal_orbit": Kind(
         "journal_orbit", {"rho_kim": _RHO_KIM}, _JOURNAL_UNITS,
         dict(revolutions=Option("rev", 20.0, 1e-3, 1e6), method=Option("", "ida", choices=("ida", "cvode", "bdf")),
-             rtol=Option("-", 1e-5, 1e-12, 1e-2), outputs_per_revolution=Option("1/rev", 64, 1, 1e5, integer=True)),
+             rtol=Option("-", 1e-5, 1e-12, 1e-2), outputs_per_revolution=Option("1/rev", 64, 1, 1e5, integer=True),
+             settle_tol=Option("-", 0.01, 1e-9, 1.0)),
         _journal_orbit_point, _journal_build, _figures(dict(curves=("semi_major_C", "eps_max"))),
         lambda r, run: _plots("journal").long_run(r, run["outputs_per_revolution"]),
         "unbalanced rotor on the Elrod journal bearing (seed 003), run from the static equilibrium"),

@@ -428,6 +428,11 @@ class RoughSurface:
             raise ValueError(f"spacing must be a number or (dx, dy) [m], got {self.spacing!r}")
         self.spacing = (check_positive("spacing dx", sp[0], "m"), check_positive("spacing dy", sp[1], "m"))
 
+    def __repr__(self):
+        ny, nx = self.heights.shape
+        return (f"RoughSurface(shape=({ny}, {nx}), spacing=({self.spacing[0]:g}, {self.spacing[1]:g}) m, "
+                f"rq={self.rq:.4g} m, acf_kind={self.acf_kind!r}, periodic={self.periodic})")
+
     # ---- generation ---------------------------------------------------------------------
     @classmethod
     def generate(cls, shape, spacing, rq, skewness: float = 0.0, kurtosis: float | None = None,
@@ -437,8 +442,9 @@ class RoughSurface:
 
         Parameters (SI): shape (ny, nx); spacing dx or (dx, dy) [m]; rq [m] > 0; skewness [-];
         kurtosis [-] (default 3; implied and not allowed for ``heights="gamma"``);
-        correlation_lengths (lx, ly) [m] (> 0; need shape >= 2 l/d (fft) so the periodic ACF does
-        not overlap itself); acf in ``ACF_MODELS``; seed for numpy's default_rng; method "fft"
+        correlation_lengths (lx, ly) or l [m] (> 0; need shape >= 2 l/d (fft) so the periodic ACF does
+        not overlap itself; default ``None``: isotropic, one eighth of the shorter side of the sampled
+        area, which fits both ACF models); acf in ``ACF_MODELS``; seed for numpy's default_rng; method "fft"
         (periodic, any size) or "linear" (Patir, non-periodic); heights in ``HEIGHT_MODELS``
         ("auto": Gaussian when Sk = 0 and Ku = 3, Johnson otherwise); cutoff: ACF truncation level
         of the linear method with the exponential ACF.
@@ -455,7 +461,7 @@ class RoughSurface:
         dx, dy = _pair("spacing", spacing, "m", 1e-9, 1e-2)
         rq = check_range("rq", rq, "m", 1e-10, 1e-3, why="(0.1 nm to 1 mm)")
         if correlation_lengths is None:
-            raise ValueError("correlation_lengths = None [m]; allowed: lx or (lx, ly), each in [1e-09, 1] m")
+            correlation_lengths = min(nx * dx, ny * dy) / 8.0
         lx, ly = _pair("correlation_lengths", correlation_lengths, "m", 1e-9, 1.0)
         sk = check_range("skewness", skewness, "-", -10.0, 10.0)
         if heights == "gamma":

@@ -165,6 +165,12 @@ class JournalBearing:
         self.radius = 0.5 * self.diameter
         self._build_grid()
 
+    def __repr__(self):
+        return (f"JournalBearing(diameter={self.diameter:g} m, length={self.length:g} m, clearance={self.clearance:g} m, "
+                f"viscosity={self.viscosity:g} Pa s, bulk_modulus={self.bulk_modulus:g} Pa, grid={self.grid_shape}, "
+                f"cavitation={self.cavitation!r}, rheology={type(self.rheology).__name__}"
+                f"{'' if self.layers is None else ', layers'})")
+
     # ---------------------------------------------------------------------------------------------
     def _build_grid(self):
         n_theta, n_axial = self.grid_shape
