@@ -29,14 +29,8 @@ def recorded(monkeypatch):
     return figs
 
 
-#: figures of another family's work in progress: their axes get units with it (strict: the mark must go then)
-PENDING = {"roller_ehl": "some roller figures' axes are dimensionless X, Y, P, H without a unit mark",
-           "journal_feeds": "the feed study's axes e/C and Q_s/Q have no [-] unit mark"}
-
-
 @pytest.mark.slow
-@pytest.mark.parametrize("name", [pytest.param(n, marks=pytest.mark.xfail(reason=PENDING[n], strict=True))
-                                  if n in PENDING else n for n in sorted(QUICK_ARGS)])
+@pytest.mark.parametrize("name", sorted(QUICK_ARGS))
 def test_scenario_figures(name, tmp_path, recorded):
     load_scenario(name).main([*QUICK_ARGS[name], "--out", str(tmp_path)])
     pngs = sorted(p.name for p in tmp_path.rglob("*.png"))

@@ -19,12 +19,12 @@ def feed_study(res: dict, title: str):
     for ax, (q, scale, label, yscale) in zip(axes, PANELS):
         for name, r in res.items():
             ax.plot(r["eccentricity_ratio"], scale * np.asarray(r[q]), "o-", ms=3, label=name)
-        ax.set(xlabel="eccentricity ratio e/C", ylabel=label, yscale=yscale)
+        ax.set(xlabel="eccentricity ratio e/C [-]", ylabel=label, yscale=yscale)
         ax.grid(True, which="both", lw=0.3)
     ax = axes[5]
     for name, r in res.items():
         ax.plot(r["eccentricity_ratio"], r["side_flow_ratio"], "o-", ms=3, label=name)
-    ax.set(xlabel="eccentricity ratio e/C", ylabel="side leakage / flow into the film  Q_s / Q")
+    ax.set(xlabel="eccentricity ratio e/C [-]", ylabel="side leakage / flow into the film  Q_s / Q [-]")
     ax.grid(True, lw=0.3)
     axes[0].legend(fontsize=8)
     fig.suptitle(title, fontsize=11)

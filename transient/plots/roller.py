@@ -39,10 +39,10 @@ def maps(s, quantity: str = "pressure", title: str = "", units: str = "paper"):
     length = 1e3 * s.mean_radius if si else 1.0  # axis values per unit of X, Y
     X, Y = s.X * length, s.Y * length
     if quantity == "pressure":
-        Z, label = (s.pressure * 1e-9, "p [GPa]") if si else (s.P * P_UNIT, r"$P \times 10^3$")
+        Z, label = (s.pressure * 1e-9, "p [GPa]") if si else (s.P * P_UNIT, r"$P \times 10^3$ [-]")
         levels = np.linspace(0.0, Z.max(), 16)[1:]
     else:
-        Z, label = (s.film * 1e6, r"h [$\mu$m]") if si else (s.H * H_UNIT, r"$H \times 10^5$")
+        Z, label = (s.film * 1e6, r"h [$\mu$m]") if si else (s.H * H_UNIT, r"$H \times 10^5$ [-]")
         hc = s.h_central * (1e6 if si else H_UNIT / s.mean_radius)
         levels = np.linspace(Z[1:-1, 1:-1].min(), 3.0 * hc, 16)
     fig = Figure(figsize=(12, 8), layout="constrained")
@@ -56,8 +56,8 @@ def maps(s, quantity: str = "pressure", title: str = "", units: str = "paper"):
         if end is not None:
             ax.set_xlim(*(length * v for v in _zoom(s, end)))
         ax.set_ylim(-1.6 * length * s.half_width / s.mean_radius, 1.6 * length * s.half_width / s.mean_radius)
-        ax.set_xlabel("y [mm] (along the roller; small end < 0)" if si else "Y (along the roller; small end < 0)")
-        ax.set_ylabel("x [mm] (rolling)" if si else "X (rolling)")
+        ax.set_xlabel("y [mm] (along the roller; small end < 0)" if si else "Y = y / R_m [-] (along the roller; small end < 0)")
+        ax.set_ylabel("x [mm] (rolling)" if si else "X = x / R_m [-] (rolling)")
         ax.set_title(name, fontsize=10)
     fig.colorbar(cs, ax=[p[0] for p in panels], label=label, shrink=0.8)
     fig.suptitle(title)
@@ -73,7 +73,7 @@ def rolling_sections(results: dict, y: float, title: str = ""):
         ah.plot(x / s.mean_radius, h / s.mean_radius * H_UNIT, STYLES[k % 4], label=label)
     s0 = next(iter(results.values()))
     c = s0.half_width / s0.mean_radius
-    return _sections_frame(fig, ap, ah, s0, 4.0, (-2.5 * c, 2.0 * c), "X", title)
+    return _sections_frame(fig, ap, ah, s0, 4.0, (-2.5 * c, 2.0 * c), "X = x / R_m [-]", title)
 
 
 def transverse_sections(results: dict, end: str, x: float = 0.0, title: str = ""):
@@ -84,7 +84,7 @@ def transverse_sections(results: dict, end: str, x: float = 0.0, title: str = ""
         y, p, h = s.section_y(x)
         ap.plot(y / s.mean_radius, p / s.modulus * P_UNIT, STYLES[k % 4], marker=".", ms=3, label=label)
         ah.plot(y / s.mean_radius, h / s.mean_radius * H_UNIT, STYLES[k % 4], marker=".", ms=3, label=label)
-    return _sections_frame(fig, ap, ah, s0, 3.0, _zoom(s0, end), "Y", title)
+    return _sections_frame(fig, ap, ah, s0, 3.0, _zoom(s0, end), "Y = y / R_m [-]", title)
 
 
 def _sections_frame(fig, ap, ah, s0, film_top, xlim, xlabel, title):
@@ -92,8 +92,8 @@ def _sections_frame(fig, ap, ah, s0, film_top, xlim, xlabel, title):
     ``s0``, the abscissa window ``xlim``, labels in the paper's units, legend, grid, title."""
     ah.set_ylim(0.0, film_top * s0.h_central / s0.mean_radius * H_UNIT)
     ah.set_xlim(*xlim)
-    ap.set_ylabel(r"$P \times 10^3$")
-    ah.set_ylabel(r"$H \times 10^5$")
+    ap.set_ylabel(r"$P = p / E' \times 10^3$ [-]")
+    ah.set_ylabel(r"$H = h / R_m \times 10^5$ [-]")
     ah.set_xlabel(xlabel)
     ap.legend()
     for a in (ap, ah):
