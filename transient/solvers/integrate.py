@@ -53,7 +53,7 @@ from scipy.optimize import brentq
 
 from transient.results import Result, record_type, result_type
 
-METHODS = ("cvode", "ida", "bdf", "radau", "lsoda", "rk4")
+METHODS = ("cvode", "ida", "bdf", "radau", "lsoda", "rk4", "bdf2")
 LINEAR_SOLVERS = ("auto", "sparse", "band", "dense")
 _EPS = np.finfo(float).eps
 
@@ -721,6 +721,12 @@ def solve(problem: Problem, t_eval, method: str = "cvode", rtol: float = 1e-6, a
                                                    first_step, max_steps, linear_solver, options or {})
             elif method == "rk4":
                 success, message = _solve_rk4(problem, t_eval, out, guard, dt, max_steps)
+            elif method == "bdf2":  # variable-step BDF2 on a bordered band LU (solvers/bdf2.py)
+                from transient.solvers.bdf2 import integrate_bdf2
+
+                out.events = _Events(problem, guard, poison=False) if problem.n_events else None
+                success, message = integrate_bdf2(problem, t_eval, out, guard, rtol, atol, max_step, first_step,
+                                                  max_steps, options or {}, _step_events, _SIGINT.check)
             else:
                 success, message = _solve_scipy(problem, method, t_eval, out, guard, rtol, atol, max_step,
                                                  first_step, max_steps)
@@ -742,6 +748,9 @@ def solve(problem: Problem, t_eval, method: str = "cvode", rtol: float = 1e-6, a
     if method == "rk4":
         stats.n_error_test_failures = 0
         stats.n_nonlinear_failures = 0
+    elif method == "bdf2":
+        stats.n_error_test_failures = getattr(guard, "n_error_test_failures", None)
+        stats.n_nonlinear_failures = getattr(guard, "n_nonlinear_failures", None)
     res = out.result(success=success, message=message, method=method, stats=stats)
     if out.events is not None:
         out.events.fill(res)

@@ -6,6 +6,10 @@
 * ``"cvode"``, ``"bdf"``, ``"radau"``, ``"lsoda"`` -- the ODE form ``y' = f(tau, y)`` with the analytic
   sparse arrow Jacobian (LSODA gets it dense: scipy's limitation);
 * ``"ida"`` -- the residual form ``F(tau, y, y') = 0`` with its analytic Jacobian ``dF/dy + cj dF/dy'``;
+* ``"bdf2"`` -- the content formulation by :mod:`transient.solvers.bdf2`: variable-step BDF2 whose steps follow the
+  rotor (error test on X, Y, VX, VY; at least ``steps_per_revolution`` per revolution), the film solved by Newton in
+  the universal variable to a tight pressure/content tolerance every step, mass conserved through every cavity
+  crossing;
 * ``"rk4"`` -- the users' hand-coded scheme (the paper's): classical RK4 on the rotor with N steps per
   revolution, the film solved at every stage for the stage's rotor state, its time derivative by a
   backward-Euler step from the film of the last completed step (Elrod 1981), Newton iterations to the
@@ -23,13 +27,16 @@ import hashlib
 from dataclasses import field
 
 import numpy as np
+from numba import njit
 
 from transient.checks import check_positive, check_range
 from transient.models.journal.bearing import JournalBearing, check_speed
 from transient.models.journal.kernels import (N_ROTOR, content_jacobian, content_ode_jacobian, content_residual,
-                                              content_rhs, dae_jacobian, dae_residual, ode_jacobian, ode_rhs)
+                                              content_rhs, content_universal, dae_jacobian, dae_residual, ode_jacobian,
+                                              ode_rhs, state_fields)
 from transient.models.journal.rk4 import FilmStageSolver
 from transient.results import Result, quantity, result_type
+from transient.solvers.bdf2 import Bdf2Model, newton_step
 from transient.solvers.integrate import METHODS, Problem, Stats
 from transient.solvers.longrun import run_long
 
@@ -38,6 +45,11 @@ FORMULATIONS = ("content", "universal")
 #: part, so ``run`` hands the integrator ``rtol * CONTENT_RTOL_FACTOR`` there: a user's rtol then buys about
 #: the orbit accuracy of the universal form (docs/journal.md, section 5).
 CONTENT_RTOL_FACTOR = 0.1
+#: ``method="bdf2"``: at least this many steps per revolution by default (the step cap: the rotor's local error
+#: does not see the film's fronts, whose error the cap bounds; 48 x 8, 0.3 C: 1.1e-4 C at 500), and the film's
+#: Newton tolerance on the pressure (p0) and the content H theta of every cell.
+BDF2_MIN_STEPS = 500
+BDF2_FILM_TOL = 1e-8
 RECORDABLE = ("force", "pressure", "film_content", "min_film", "mass", "outflow")
 FIELD_SERIES = ("pressure", "film_content")
 RECORDED_FIELDS = ("force", "min_film", "mass", "outflow", "pressure", "pressure_t", "film_content", "film_content_t")
@@ -259,27 +271,42 @@ class JournalOrbit:
                        jac_residual=jac_residual, events=events, n_events=1 if events else 0,
                        event_terminal=[True], event_direction=[-1], name=f"journal orbit ({formulation})")
 
+    def bdf2_model(self) -> Bdf2Model:
+        """The compiled kernels of the content formulation for ``method="bdf2"``
+        (:class:`~transient.solvers.bdf2.Bdf2Model`): error test on the rotor, the film solved by Newton to
+        ``BDF2_FILM_TOL`` in pressure (p0) and content per cell."""
+        f = self.film
+        args = (f.switch, (self.kappa, self.wbar, self.ebar, f.sym), f.geo, f.fields, f.extras, f.fv, f.work,
+                (BDF2_FILM_TOL, BDF2_FILM_TOL), np.zeros(f.n, dtype=np.int8))
+        return Bdf2Model(newton=_bdf2_newton, args=args,
+                         error_components=np.arange(f.n, self.n), n_border=N_ROTOR)
+
     def parameters(self) -> dict:
         """Every parameter of the bearing and the rotor that changes an orbit (SI), e.g. to key a checkpoint."""
         return dict(**self.bearing.parameters(), rotor_mass=self.rotor_mass, unbalance=self.unbalance,
                     load=self.load, speed_rpm=self.speed_rpm)
 
     # ---------------------------------------------------------------------------------------------
-    def run(self, revolutions, method="ida", rtol=1e-6, atol=1e-9, steps_per_revolution=3000,
+    def run(self, revolutions, method="ida", rtol=1e-6, atol=1e-9, steps_per_revolution=None,
             outputs_per_revolution=100, record=(), record_from_revolution=0.0, chunk_revolutions=None,
             checkpoint=None, resume=False, progress=None, touch_gap=1e-3, y0=None,
-            inner_tolerance=1e-6, start=None, stop=None, time_budget=None, formulation="universal") -> OrbitResult:
+            inner_tolerance=1e-6, start=None, stop=None, time_budget=None, formulation=None) -> OrbitResult:
         """Integrate ``revolutions`` shaft revolutions from the static equilibrium, from ``y0`` (a state at
         t = 0) or from ``start`` (a previous :class:`OrbitResult`, or ``(time [s], state)``: the run goes on
         from its final state and time, so the unbalance keeps its phase). The first output is the start.
 
         Parameters
         ----------
-        method : ``"cvode"``, ``"ida"``, ``"bdf"``, ``"radau"``, ``"lsoda"`` or ``"rk4"``.
+        method : ``"cvode"``, ``"ida"``, ``"bdf"``, ``"radau"``, ``"lsoda"``, ``"rk4"`` or ``"bdf2"`` (variable-step
+            BDF2 on the content film with its own Newton and a bordered band LU, error test on the rotor only:
+            :mod:`transient.solvers.bdf2`; rtol and atol act on the rotor states, the film is solved every step to
+            ``BDF2_FILM_TOL``).
         rtol, atol : tolerances of the adaptive methods; atol is absolute on the dimensionless quantities:
             the journal position and velocity (units of C and C omega) and, per cell, the film content
             theta and the pressure p / p0 (see :meth:`absolute_tolerance`).
-        steps_per_revolution : fixed steps of ``"rk4"`` (paper: 3000).
+        steps_per_revolution : fixed steps of ``"rk4"`` (default 3000, the paper's); for ``"bdf2"`` the least
+            number of steps per revolution (its step cap; default ``BDF2_MIN_STEPS`` = 500), rtol refining further
+            where the rotor's local error asks for it.
         inner_tolerance : ``"rk4"`` only: the per-stage film criterion sum|d theta| / sum theta (paper: 1e-6).
         outputs_per_revolution : output (sampling) rate.
         record : extra series to keep at the outputs: any of ``"force"`` [N], ``"min_film"`` [m],
@@ -306,6 +333,8 @@ class JournalOrbit:
             ``y0``, ``start`` and ``final_state`` are in the universal layout either way.
         """
         revolutions = check_positive("revolutions", revolutions, "rev")
+        if formulation is None:
+            formulation = "content" if method == "bdf2" else "universal"
         if method != "rk4":
             rtol = check_range("rtol", rtol, "-", 1e-14, 1.0)
         if isinstance(record, str):
@@ -317,6 +346,9 @@ class JournalOrbit:
             raise ValueError(f"method = {method!r} is not a method; allowed: {', '.join(METHODS)}")
         if formulation not in FORMULATIONS:
             raise ValueError(f"formulation = {formulation!r}; allowed: {', '.join(FORMULATIONS)}")
+        if method == "bdf2" and formulation != "content":
+            raise ValueError('method "bdf2" integrates the content formulation (conservative across a cavity crossing); '
+                             'formulation must be "content" (the default for "bdf2")')
         if method == "rk4" and formulation != "universal":
             raise ValueError('method "rk4" solves the film in the universal variable; formulation must be "universal"')
         opr = check_range("outputs_per_revolution", outputs_per_revolution, "1/rev", 1, 1e6)
@@ -349,7 +381,8 @@ class JournalOrbit:
         rec.last_y = y
         n_out = max(1, int(round(revolutions * opr)))
         if method == "rk4":
-            dtau = two_pi / check_range("steps_per_revolution", steps_per_revolution, "1/rev", 4, 1e7)
+            dtau = two_pi / check_range("steps_per_revolution", 3000 if steps_per_revolution is None else
+                                        steps_per_revolution, "1/rev", 4, 1e7)
             steppers = []
 
             def problem_at(y_, t_):
@@ -361,9 +394,14 @@ class JournalOrbit:
             problem_at = lambda y_, t_: self._problem(y_, t_, touch_gap, formulation)  # noqa: E731
             kw = dict(rtol=rtol * (CONTENT_RTOL_FACTOR if formulation == "content" else 1.0),
                       atol=self.absolute_tolerance(atol, formulation))
+            if method == "bdf2":
+                spr = check_range("steps_per_revolution", BDF2_MIN_STEPS if steps_per_revolution is None else
+                                  steps_per_revolution, "1/rev", 4, 1e7)
+                kw = dict(rtol=rtol, atol=self.absolute_tolerance(atol, formulation), max_step=two_pi / spr,
+                          first_step=two_pi * 1e-4, options={"bdf2": self.bdf2_model()})
         key = dict(self.parameters(), method=method, rtol=rtol if method != "rk4" else None,
                    atol=atol if method != "rk4" else None,
-                   steps_per_revolution=steps_per_revolution if method == "rk4" else None,
+                   steps_per_revolution=steps_per_revolution if method in ("rk4", "bdf2") else None,
                    inner_tolerance=inner_tolerance if method == "rk4" else None, outputs_per_revolution=opr,
                    record=sorted(record), record_from_revolution=float(record_from_revolution), touch_gap=touch_gap,
                    chunk_revolutions=chunk_revolutions, start_time=tau0 / self.film.omega, formulation=formulation,
@@ -551,6 +589,107 @@ def _state_array(y) -> np.ndarray:
         return np.array(y, dtype=float)
     except (TypeError, ValueError):
         raise ValueError(f"the initial state y0 must be an array of numbers, got {type(y).__name__}") from None
+
+
+@njit(cache=True)
+def _bdf2_newton(args, t, cj, b, y, yp, F, dz, data, lu, y_pred, err_idx, err_w, state, counts):
+    """:func:`~transient.solvers.bdf2.newton_step` on the content film + rotor, iterating on ``[u, X, Y, VX, VY]``."""
+    return newton_step(_bdf2_residual, _bdf2_jacobian, _film_newton_norm, _bdf2_to_state, _bdf2_from_state, args, t,
+                       cj, b, y, yp, F, dz, data, lu, y_pred, err_idx, err_w, state, counts)
+
+
+@njit(cache=True)
+def _bdf2_residual(t, y, yp, out, args):
+    """:func:`~transient.models.journal.kernels.content_residual` with the arguments of :meth:`JournalOrbit.bdf2_model`."""
+    switch, rotor, geo, fields, extras, fv, work, tol, regime = args
+    content_residual(t, y, yp, out, switch, rotor, geo, fields, fv, work)
+
+
+@njit(cache=True)
+def _bdf2_jacobian(t, y, yp, cj, data, args):
+    """CSC data of ``(dF/dy + cj dF/dy') dy/dz`` for the content residual in the Newton variables ``z = [u, X, Y, VX,
+    VY]`` (:func:`_bdf2_to_state`): :func:`~transient.models.journal.kernels.content_jacobian` (columns d/dm at fixed
+    X, Y), then with ``m_j = H_j C(u_j)``: ``d/du_j = H_j D_j d/dm_j`` and ``d/dX|u = d/dX|m + sum_j C_j cos(phi_j)
+    d/dm_j`` (free cells; the groove cells keep m). Keeps the cells' regimes (:func:`_cell_regime`) at this
+    Jacobian."""
+    switch, rotor, geo, fields, extras, fv, work, tol, regime = args
+    content_jacobian(t, y, yp, cj, data, switch, rotor, geo, fields, extras, fv, work)
+    cosp, sinp = geo[0], geo[1]
+    H, C, D = fields[0], fields[3], fields[4]
+    pos_col, indices = extras[4], extras[5]
+    free = fv[2][0]
+    u, indptr = work[0], work[5]
+    width = switch[1]
+    for j in range(free.size):
+        if free[j]:
+            s = H[j] * D[j]
+            cx, cy = C[j] * cosp[j], C[j] * sinp[j]
+            for p in range(indptr[j], indptr[j + 1]):
+                i = indices[p]
+                data[pos_col[i, 0]] += data[p] * cx
+                data[pos_col[i, 1]] += data[p] * cy
+                data[p] *= s
+        regime[j] = _cell_regime(u[j], width)
+
+
+@njit(cache=True)
+def _bdf2_to_state(z, y, args):
+    """The content state ``y = [m, X, Y, VX, VY]`` of the Newton variables ``z = [u, X, Y, VX, VY]``: ``m = H C(u)``
+    on the free cells (groove cells: ``z`` holds m)."""
+    switch, rotor, geo, fields, extras, fv, work, tol, regime = args
+    free = fv[2][0]
+    n = free.size
+    state_fields(z[:n], z[n], z[n + 1], switch, geo, fields, fv)
+    H, C = fields[0], fields[3]
+    for i in range(n):
+        y[i] = H[i] * C[i] if free[i] else z[i]
+    for i in range(n, y.size):
+        y[i] = z[i]
+
+
+@njit(cache=True)
+def _bdf2_from_state(y, z, args):
+    """The inverse of :func:`_bdf2_to_state` (:func:`~transient.models.journal.kernels.content_universal`)."""
+    switch, rotor, geo, fields, extras, fv, work, tol, regime = args
+    free, u_fixed = fv[2][0], fv[2][1]
+    n = free.size
+    content_universal(y, switch, geo, free, u_fixed, work[1], work[0])
+    for i in range(n):
+        z[i] = work[0][i] if free[i] else y[i]
+    for i in range(n, y.size):
+        z[i] = y[i]
+
+
+@njit(cache=True)
+def _cell_regime(u, width):
+    """1 full film, -1 cavitated, 0 inside the switch (|u| <= its pressure width)."""
+    return 1 if u > width else (-1 if u < -width else 0)
+
+
+@njit(cache=True)
+def _film_newton_norm(z, dz, args):
+    """A Newton update ``du`` of the film in units of its tolerances ``(p_tol, m_tol)``: the largest over the free
+    cells of ``|P'(u) du| / p_tol`` (pressure) and ``|H D du| / m_tol`` (content), at the fields of the last
+    residual evaluation; and the number of cells whose regime (:func:`_cell_regime`) differs from the one at the
+    last Jacobian. Limits the update first: a cell outside the switch whose update would carry it across stops at
+    u = 0 (the next iteration, on a fresh Jacobian, goes on from there)."""
+    fields, free, (p_tol, m_tol), regime = args[3], args[5][2][0], args[7], args[8]
+    H, dP, D = fields[0], fields[2], fields[4]
+    width = args[0][1]
+    size = 0.0
+    switched = 0
+    for i in range(free.size):
+        if free[i]:
+            if _cell_regime(z[i], width) != regime[i]:
+                switched += 1
+            new = z[i] - dz[i]
+            if (z[i] > width and new < 0.0) or (z[i] < -width and new > 0.0):
+                dz[i] = z[i]  # a cell jumping across the switch stops at its centre (Newton cycles over the kink)
+            a = abs(dz[i])
+            v = max(a * dP[i] / p_tol, a * H[i] * D[i] / m_tol)
+            if v > size:
+                size = v
+    return size, switched
 
 
 def _prefetching(film, callback, formulation):
