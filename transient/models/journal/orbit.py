@@ -591,7 +591,7 @@ def _state_array(y) -> np.ndarray:
         raise ValueError(f"the initial state y0 must be an array of numbers, got {type(y).__name__}") from None
 
 
-@njit(cache=True)
+@njit  # not cacheable: numba counts the kernels handed to newton_step as dynamic globals (compiled once per process)
 def _bdf2_newton(args, t, cj, b, y, yp, F, dz, data, lu, y_pred, err_idx, err_w, state, counts):
     """:func:`~transient.solvers.bdf2.newton_step` on the content film + rotor, iterating on ``[u, X, Y, VX, VY]``."""
     return newton_step(_bdf2_residual, _bdf2_jacobian, _film_newton_norm, _bdf2_to_state, _bdf2_from_state, args, t,
