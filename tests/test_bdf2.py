@@ -180,15 +180,32 @@ def test_checkpoint_resume_is_bitwise(tmp_path):
 
 @pytest.mark.slow
 def test_touch_event():
-    """A journal thrown outwards reaches the wall: the run stops at e/C = 1 - touch_gap with the named message."""
+    """A journal thrown outwards reaches the touch limit (here a wide gap, e/C = 0.7): the run stops there, the
+    event located on the step's interpolant, with the named message."""
     o = orbit(grid=(24, 6), unbalance=0.01)
     y = o.perturbed_start(0.3)
     y[o.film.n + 2] = 10.0
-    r = o.run(0.5, method="bdf2", rtol=1e-5, y0=y, progress=False)
+    r = o.run(0.5, method="bdf2", rtol=1e-5, y0=y, touch_gap=0.3, progress=False)
     assert r.touched_at is not None and "journal touches the bearing" in r.message, r.message
-    assert np.hypot(r.x[-1], r.y[-1]) / CL == pytest.approx(1 - 1e-3, abs=1e-6)
+    assert np.hypot(r.x[-1], r.y[-1]) / CL == pytest.approx(0.7, abs=1e-9)
+    assert r.t[-1] == pytest.approx(r.touched_at, rel=1e-12)
 
 
 def test_bdf2_needs_the_content_formulation():
     with pytest.raises(ValueError, match="content"):
         orbit(grid=(16, 4)).run(0.1, method="bdf2", formulation="universal")
+
+
+@pytest.mark.slow
+def test_layers_and_gecim_bulk():
+    """Boundary layers with a Gecim shear-thinning bulk (the kernels evaluate its faces themselves): the fixed-step
+    orbit over 0.2 revolution agrees with IDA (rtol 1e-8)."""
+    from transient.physics.layered import BoundaryLayers, Gecim
+
+    o = orbit(grid=(24, 6), layers=BoundaryLayers(0.1 * CL, 10 * BEARING["viscosity"], 0.05 * CL),
+              rheology=Gecim(kappa=0.65 * BEARING["viscosity"] * RPM * np.pi / 30 * BEARING["diameter"] / 2 / CL,
+                             viscosity_ratio=0.57))  # Gecim's kappa* = kappa C / (mu omega R) = 0.65
+    ref = o.run(0.2, rtol=1e-8, atol=1e-11, outputs_per_revolution=20, progress=False)
+    s = fixed_step_run(o, 500, np.linspace(0, 0.2 * TWO_PI, 5))
+    assert s.success, s.message
+    assert journal_error(o, s, ref) < 2e-4

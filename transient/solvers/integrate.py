@@ -12,6 +12,8 @@ routines, algebraic indices, events) and gets back one :class:`Solution` whateve
 * ``"rk4"`` -- the classical fixed-step 4th-order Runge-Kutta scheme the users' hand-coded codes
   use, with a hook (:attr:`Problem.algebraic_solve`) for the inner algebraic solve per stage (how the
   papers treat the film: the film is solved to convergence for the rotor state of every stage).
+* ``"bdf2"`` -- variable-step BDF2 with its own compiled Newton on a bordered band LU
+  (:mod:`transient.solvers.bdf2`), for a model that hands its kernels as ``options={"bdf2": Bdf2Model}``.
 
 Output is produced only at the requested times ``t_eval``; an ``observer(t, y)`` receives each
 output so long runs need not store anything (``store=False``).
@@ -653,7 +655,7 @@ def solve(problem: Problem, t_eval, method: str = "cvode", rtol: float = 1e-6, a
 
     Parameters
     ----------
-    method : one of ``"cvode"``, ``"ida"``, ``"bdf"``, ``"radau"``, ``"lsoda"``, ``"rk4"``.
+    method : one of ``"cvode"``, ``"ida"``, ``"bdf"``, ``"radau"``, ``"lsoda"``, ``"rk4"``, ``"bdf2"``.
     rtol, atol : tolerances of the adaptive methods (ignored by ``rk4``): ``rtol`` in (0, 1); ``atol``
         a finite number > 0 or an array of such numbers, one per state.
     dt : the fixed step of ``rk4`` [same unit as t], finite and > 0; required for ``rk4``.
@@ -663,7 +665,8 @@ def solve(problem: Problem, t_eval, method: str = "cvode", rtol: float = 1e-6, a
         band, dense otherwise), ``"sparse"``, ``"band"`` or ``"dense"`` (SUNDIALS methods).
     store : keep the outputs in ``Solution.y`` (False: only pass them to ``observer``).
     observer : ``observer(t, y)`` called at every output time, in order.
-    options : extra keyword options for the SUNDIALS solver (e.g. ``max_nonlin_iters``, ``max_order``).
+    options : extra keyword options for the SUNDIALS solver (e.g. ``max_nonlin_iters``, ``max_order``); for
+        ``"bdf2"`` the model's ``{"bdf2": Bdf2Model}`` (and ``"fixed_step"``).
     time_budget : wall-clock seconds the run may take (None: no limit); checked once per step, so a run
         stops at most one step after it (``success=False``, the message says where it stopped).
 
