@@ -209,3 +209,11 @@ def test_layers_and_gecim_bulk():
     s = fixed_step_run(o, 500, np.linspace(0, 0.2 * TWO_PI, 5))
     assert s.success, s.message
     assert journal_error(o, s, ref) < 2e-4
+
+
+def test_bdf2_without_a_model_is_refused():
+    from transient.solvers.integrate import Problem
+
+    p = Problem(y0=np.ones(2), residual=lambda t, y, yp, out: None, name="two states")
+    with pytest.raises(ValueError, match="Bdf2Model"):
+        solve(p, [0.0, 1.0], method="bdf2")
