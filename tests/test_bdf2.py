@@ -10,8 +10,8 @@ import numpy as np
 import pytest
 
 from transient.models.journal.bearing import JournalBearing
-from transient.models.journal.orbit import (BDF2_FILM_TOL, JournalOrbit, _bdf2_jacobian, _bdf2_residual,
-                                            _bdf2_to_state)
+from transient.models.journal.content_newton import bdf2_jacobian, bdf2_residual, bdf2_to_state
+from transient.models.journal.orbit import BDF2_FILM_TOL, JournalOrbit
 from transient.params.rho_kim import BEARING, ROTOR
 from transient.solvers.integrate import solve
 
@@ -51,14 +51,14 @@ def test_newton_jacobian_matches_finite_differences():
     b = -cj * o.content_state(yu) + 0.01 * rng.standard_normal(z.size)
 
     def F(zz):
-        _bdf2_to_state(zz, y, args)
+        bdf2_to_state(zz, y, args)
         out = np.empty_like(zz)
-        _bdf2_residual(0.3, y, cj * y + b, out, args)
+        bdf2_residual(0.3, y, cj * y + b, out, args)
         return out
 
-    _bdf2_to_state(z, y, args)
+    bdf2_to_state(z, y, args)
     data = np.zeros(o.film.op.nnz)
-    _bdf2_jacobian(0.3, y, cj * y + b, cj, data, args)
+    bdf2_jacobian(0.3, y, cj * y + b, cj, data, args)
     J = o.film.op.matrix(data).toarray()
     free = np.concatenate([o.film.op.free, np.ones(4, bool)])
     Jfd = np.zeros_like(J)
@@ -92,7 +92,7 @@ def test_every_step_conserves_mass_to_the_newton_tolerance():
         ym, y0, y1 = s.y[k - 1], s.y[k], s.y[k + 1]
         yp = (3 * y1 - 4 * y0 + ym) / (2 * h)
         out = np.empty(o.n)
-        _bdf2_residual(tau[k + 1], y1, yp, out, args)
+        bdf2_residual(tau[k + 1], y1, yp, out, args)
         R = o.film.R
         worst = max(worst, float(np.max(np.abs(out[:n][free]) / (area[free] * 1.5 / h))))
         flux = max(flux, float(np.max(np.abs(R[free]))))

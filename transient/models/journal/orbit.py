@@ -27,16 +27,15 @@ import hashlib
 from dataclasses import field
 
 import numpy as np
-from numba import njit
 
 from transient.checks import check_positive, check_range
 from transient.models.journal.bearing import JournalBearing, check_speed
 from transient.models.journal.kernels import (N_ROTOR, content_jacobian, content_ode_jacobian, content_residual,
-                                              content_rhs, content_universal, dae_jacobian, dae_residual, ode_jacobian,
-                                              ode_rhs, state_fields)
+                                              content_rhs, dae_jacobian, dae_residual, ode_jacobian, ode_rhs)
 from transient.models.journal.rk4 import FilmStageSolver
 from transient.results import Result, quantity, result_type
-from transient.solvers.bdf2 import Bdf2Model, newton_step
+from transient.models.journal.content_newton import bdf2_newton
+from transient.solvers.bdf2 import Bdf2Model
 from transient.solvers.integrate import METHODS, Problem, Stats
 from transient.solvers.longrun import run_long
 
@@ -273,12 +272,13 @@ class JournalOrbit:
 
     def bdf2_model(self) -> Bdf2Model:
         """The compiled kernels of the content formulation for ``method="bdf2"``
-        (:class:`~transient.solvers.bdf2.Bdf2Model`): error test on the rotor, the film solved by Newton to
-        ``BDF2_FILM_TOL`` in pressure (p0) and content per cell."""
+        (:class:`~transient.solvers.bdf2.Bdf2Model`, kernels in :mod:`~transient.models.journal.content_newton`):
+        error test on the rotor, the film solved by Newton to ``BDF2_FILM_TOL`` in pressure (p0) and content per
+        cell."""
         f = self.film
         args = (f.switch, (self.kappa, self.wbar, self.ebar, f.sym), f.geo, f.fields, f.extras, f.fv, f.work,
                 (BDF2_FILM_TOL, BDF2_FILM_TOL), np.zeros(f.n, dtype=np.int8))
-        return Bdf2Model(newton=_bdf2_newton, args=args,
+        return Bdf2Model(newton=bdf2_newton, args=args,
                          error_components=np.arange(f.n, self.n), n_border=N_ROTOR)
 
     def parameters(self) -> dict:
@@ -589,107 +589,6 @@ def _state_array(y) -> np.ndarray:
         return np.array(y, dtype=float)
     except (TypeError, ValueError):
         raise ValueError(f"the initial state y0 must be an array of numbers, got {type(y).__name__}") from None
-
-
-@njit  # not cacheable: numba counts the kernels handed to newton_step as dynamic globals (compiled once per process)
-def _bdf2_newton(args, t, cj, b, y, yp, F, dz, data, lu, y_pred, err_idx, err_w, state, counts):
-    """:func:`~transient.solvers.bdf2.newton_step` on the content film + rotor, iterating on ``[u, X, Y, VX, VY]``."""
-    return newton_step(_bdf2_residual, _bdf2_jacobian, _film_newton_norm, _bdf2_to_state, _bdf2_from_state, args, t,
-                       cj, b, y, yp, F, dz, data, lu, y_pred, err_idx, err_w, state, counts)
-
-
-@njit(cache=True)
-def _bdf2_residual(t, y, yp, out, args):
-    """:func:`~transient.models.journal.kernels.content_residual` with the arguments of :meth:`JournalOrbit.bdf2_model`."""
-    switch, rotor, geo, fields, extras, fv, work, tol, regime = args
-    content_residual(t, y, yp, out, switch, rotor, geo, fields, fv, work)
-
-
-@njit(cache=True)
-def _bdf2_jacobian(t, y, yp, cj, data, args):
-    """CSC data of ``(dF/dy + cj dF/dy') dy/dz`` for the content residual in the Newton variables ``z = [u, X, Y, VX,
-    VY]`` (:func:`_bdf2_to_state`): :func:`~transient.models.journal.kernels.content_jacobian` (columns d/dm at fixed
-    X, Y), then with ``m_j = H_j C(u_j)``: ``d/du_j = H_j D_j d/dm_j`` and ``d/dX|u = d/dX|m + sum_j C_j cos(phi_j)
-    d/dm_j`` (free cells; the groove cells keep m). Keeps the cells' regimes (:func:`_cell_regime`) at this
-    Jacobian."""
-    switch, rotor, geo, fields, extras, fv, work, tol, regime = args
-    content_jacobian(t, y, yp, cj, data, switch, rotor, geo, fields, extras, fv, work)
-    cosp, sinp = geo[0], geo[1]
-    H, C, D = fields[0], fields[3], fields[4]
-    pos_col, indices = extras[4], extras[5]
-    free = fv[2][0]
-    u, indptr = work[0], work[5]
-    width = switch[1]
-    for j in range(free.size):
-        if free[j]:
-            s = H[j] * D[j]
-            cx, cy = C[j] * cosp[j], C[j] * sinp[j]
-            for p in range(indptr[j], indptr[j + 1]):
-                i = indices[p]
-                data[pos_col[i, 0]] += data[p] * cx
-                data[pos_col[i, 1]] += data[p] * cy
-                data[p] *= s
-        regime[j] = _cell_regime(u[j], width)
-
-
-@njit(cache=True)
-def _bdf2_to_state(z, y, args):
-    """The content state ``y = [m, X, Y, VX, VY]`` of the Newton variables ``z = [u, X, Y, VX, VY]``: ``m = H C(u)``
-    on the free cells (groove cells: ``z`` holds m)."""
-    switch, rotor, geo, fields, extras, fv, work, tol, regime = args
-    free = fv[2][0]
-    n = free.size
-    state_fields(z[:n], z[n], z[n + 1], switch, geo, fields, fv)
-    H, C = fields[0], fields[3]
-    for i in range(n):
-        y[i] = H[i] * C[i] if free[i] else z[i]
-    for i in range(n, y.size):
-        y[i] = z[i]
-
-
-@njit(cache=True)
-def _bdf2_from_state(y, z, args):
-    """The inverse of :func:`_bdf2_to_state` (:func:`~transient.models.journal.kernels.content_universal`)."""
-    switch, rotor, geo, fields, extras, fv, work, tol, regime = args
-    free, u_fixed = fv[2][0], fv[2][1]
-    n = free.size
-    content_universal(y, switch, geo, free, u_fixed, work[1], work[0])
-    for i in range(n):
-        z[i] = work[0][i] if free[i] else y[i]
-    for i in range(n, y.size):
-        z[i] = y[i]
-
-
-@njit(cache=True)
-def _cell_regime(u, width):
-    """1 full film, -1 cavitated, 0 inside the switch (|u| <= its pressure width)."""
-    return 1 if u > width else (-1 if u < -width else 0)
-
-
-@njit(cache=True)
-def _film_newton_norm(z, dz, args):
-    """A Newton update ``du`` of the film in units of its tolerances ``(p_tol, m_tol)``: the largest over the free
-    cells of ``|P'(u) du| / p_tol`` (pressure) and ``|H D du| / m_tol`` (content), at the fields of the last
-    residual evaluation; and the number of cells whose regime (:func:`_cell_regime`) differs from the one at the
-    last Jacobian. Limits the update first: a cell outside the switch whose update would carry it across stops at
-    u = 0 (the next iteration, on a fresh Jacobian, goes on from there)."""
-    fields, free, (p_tol, m_tol), regime = args[3], args[5][2][0], args[7], args[8]
-    H, dP, D = fields[0], fields[2], fields[4]
-    width = args[0][1]
-    size = 0.0
-    switched = 0
-    for i in range(free.size):
-        if free[i]:
-            if _cell_regime(z[i], width) != regime[i]:
-                switched += 1
-            new = z[i] - dz[i]
-            if (z[i] > width and new < 0.0) or (z[i] < -width and new > 0.0):
-                dz[i] = z[i]  # a cell jumping across the switch stops at its centre (Newton cycles over the kink)
-            a = abs(dz[i])
-            v = max(a * dP[i] / p_tol, a * H[i] * D[i] / m_tol)
-            if v > size:
-                size = v
-    return size, switched
 
 
 def _prefetching(film, callback, formulation):
