@@ -12,13 +12,16 @@ on the declared ``error_components`` only, in the weighted RMS norm of ``rtol |y
 PI controller (Gustafsson; Hairer & Wanner, Solving ODEs II, IV.2: exponents 0.7/3 and 0.4/3), its ratio kept
 in [0.2, 2] (BDF2 is zero-stable for ratios below 1 + sqrt 2) and the step below ``max_step``.
 
-Newton: predictor = the quadratic extrapolation; a chord iteration on the last factorisation (the Jacobian
-``dF/dy + cj dF/dy'`` of the model, factored by :class:`~transient.solvers.bandlu.BorderedBandLU`), its update
-scaled by ``2 / (1 + cj / cj_J)`` when cj changed since the factorisation (as SUNDIALS IDA does), a fresh
-Jacobian when the contraction rate exceeds ``0.9`` or the iteration fails, and before a step whose cj moved by
-more than 30 % or whose last Newton contracted slowly (rate > 0.3). Convergence is judged on the update in the
-model's own units: the error components against ``0.1 (rtol |y| + atol)``, the others by the model's ``norm``
-kernel (e.g. the film's pressure and content updates). A Newton failure with a fresh Jacobian cuts the step by 4.
+Newton: predictor = the quadratic extrapolation, iterated on the model's Newton variables ``z`` (``y =
+to_state(z)``); chord iterations on the last factorisation (the model's Jacobian ``(dF/dy + cj dF/dy') dy/dz``,
+factored by :class:`~transient.solvers.bandlu.BorderedBandLU`), the update scaled by ``2 / (1 + cj / cj_J)`` when
+cj changed since the factorisation (as SUNDIALS IDA does). A fresh Jacobian at the current iterate when the model
+reports components that switched regime since the last one or the contraction rate exceeds 0.3 (at most 10 per
+solve), and before a step whose cj moved by more than 30 % or whose last Newton contracted slowly; an update
+larger than the previous one halves the previous update instead (damping down to 1/16). Convergence is judged on
+the update in the model's own units: the error components against ``0.1 (rtol |y| + atol)``, the others by the
+model's ``norm`` kernel (e.g. the film's pressure and content updates). A Newton failure (25 iterations, no
+convergence) cuts the step by 4.
 
 The Newton iteration (residual, solves, Jacobian, factorisation, norm) is one numba kernel; Python runs once per
 step (predictor, error test, step control, dense output, events). Outputs at ``t_eval`` come from the step's
