@@ -1,4 +1,4 @@
-"""Orbit size benchmark (Rho & Kim's rotor): integrator cost from small orbits to oil whip, side by side.
+"""Orbit size benchmark (Rho & Kim's rotor): integrator cost from small orbits to oil whip, IDA, BDF2 and RK4 side by side.
 
 The Rho & Kim bearing and rotor (m = 100 kg, W = 981 N) on the paper grid, three cases:
 
@@ -9,15 +9,15 @@ The Rho & Kim bearing and rotor (m = 100 kg, W = 981 N) on the paper grid, three
 * **small**: unbalance 0.01 C at 6000 rpm (the paper's case), one revolution from the equilibrium, and 100
   revolutions timed.
 
-Each case runs the candidate integrators side by side at the same user tolerances: IDA on the default
-``universal`` film (state u, ``A H D(u) u' + R = 0``), IDA on the ``content`` film (state H theta, ``A m' + R = 0``:
-the cavity crossing conserves mass exactly), and IDA on the universal film with a 10x wider switch
-(``WIDE``: 2e-2 p0 and content width 5e-3, whose bias is second order in the widths since the prescribed
-pressures sit on the sharp curve); the large case also runs the paper's RK4 (3000 steps per revolution). Error =
-the largest journal-centre distance over the run's outputs from a reference (universal, rtol ``REF_RTOL``) in
-units of C -- the wide switch's error includes its bias. Step, Jacobian (= factorisation) and residual counts
-are exact; times are wall and CPU seconds on a shared 2-core machine (compare ratios within one run). "IDA at
-RK4's error" interpolates each candidate's curve log-log.
+Candidates, in one run at the same settings: IDA on the universal film (state u, ``A H D(u) u' + R = 0``) at the
+rtols of the config; the variable-step BDF2 of :mod:`transient.solvers.integrate.bdf2` on the content film (``A m' + R = 0``,
+its own Newton on a bordered band LU, error test on the rotor at ``BDF2_RTOL``) at the step caps of the config
+(least steps per revolution); in the large case the paper's RK4 (3000 steps per revolution). IDA on the content
+film and on a 10x wider switch are compared in docs/journal.md (section 5). Error = the largest journal-centre
+distance over the run's outputs from a reference (IDA universal, rtol ``REF_RTOL``) in units of C. Step, Jacobian
+(= factorisation) and residual counts are exact; times are wall and CPU seconds on a shared 2-core machine
+(compare ratios within one run; the BDF2 and IDA long runs alternate, twice, and keep the faster of each).
+"Cost at RK4's error" interpolates each candidate's curve log-log.
 """
 
 from __future__ import annotations
@@ -33,27 +33,23 @@ from transient.models.journal.bearing import JournalBearing
 from transient.models.journal.orbit import JournalOrbit
 from transient.params.rho_kim import BEARING, ROTOR
 
-TITLE = "Orbit size: IDA cost from small orbits to oil whip, universal vs content film formulation, RK4"
+TITLE = "Orbit size: IDA, BDF2 on the content film and RK4 from small orbits to oil whip"
 CLEARANCE = BEARING["clearance"]
-FORMS = ("universal", "content", "wide")
-WIDE = dict(switch_width_p0=2e-2, switch_content_width=5e-3)
+FORMS = ("universal", "bdf2")
 REF_RTOL = 1e-8
-FULL = dict(grid=(151, 21), rtols=(1e-3, 1e-4), rk4_steps=3000, whip_offset=0.4, spin_up=6, whip_timed=3,
-            small_revs=100, opr=20)
-QUICK = dict(grid=(48, 8), rtols=(1e-3, 1e-4), rk4_steps=600, whip_offset=0.4, spin_up=3, whip_timed=2, small_revs=10,
-             opr=20)
+BDF2_RTOL = 1e-4
+FULL = dict(grid=(151, 21), rtols=(1e-3, 1e-4), caps=(300, 500), small_caps=(100, 200), rk4_steps=3000, whip_offset=0.4,
+            spin_up=6, whip_timed=3, small_revs=100, opr=20)
+QUICK = dict(grid=(48, 8), rtols=(1e-3, 1e-4), caps=(300, 500), small_caps=(100, 200), rk4_steps=600, whip_offset=0.4,
+             spin_up=3, whip_timed=2, small_revs=10, opr=20)
 
 
 def atol_for(rtol):
     return min(1e-9, 1e-3 * rtol)
 
 
-def _orbit(grid, unbalance_C, speed_rpm, wide=False):
-    kw = {}
-    if wide:
-        p0 = JournalBearing(**BEARING, grid=tuple(grid)).pressure_scale(speed_rpm)
-        kw = dict(switch_width=WIDE["switch_width_p0"] * p0, switch_content_width=WIDE["switch_content_width"])
-    b = JournalBearing(**BEARING, grid=tuple(grid), **kw)
+def _orbit(grid, unbalance_C, speed_rpm):
+    b = JournalBearing(**BEARING, grid=tuple(grid))
     return JournalOrbit(b, ROTOR["rotor_mass"], unbalance_C * CLEARANCE, ROTOR["load"], speed_rpm)
 
 
@@ -71,26 +67,36 @@ def _row(case, label, r, wall, cpu, ref, revs):
                 ok=bool(r.success), message=r.message)
 
 
-def _side_by_side(case, orbits, rtols, revs, ref, start=None, opr=20, log=print):
-    """Every candidate at every rtol, the order alternating between tolerances. ``orbits``: form -> orbit
-    (``wide`` is a universal run of its own wide-switch orbit); ``start``: form -> start state or None."""
+def _run(o, form, setting, revs, opr, start=None):
+    """One candidate: IDA universal at rtol ``setting`` or BDF2 with ``setting`` steps per revolution at least."""
+    if form == "bdf2":
+        return o.run(revs, method="bdf2", rtol=BDF2_RTOL, steps_per_revolution=setting, outputs_per_revolution=opr,
+                     start=start, progress=False)
+    return o.run(revs, rtol=setting, atol=atol_for(setting), outputs_per_revolution=opr, start=start, progress=False)
+
+
+def _label(form, setting):
+    return f"IDA universal rtol {setting:.0e}" if form == "ida" else f"BDF2 >= {setting} steps/rev"
+
+
+def _side_by_side(case, o, rtols, caps, revs, ref, start=None, opr=20, log=print):
+    """IDA at every rtol and BDF2 at every step cap, alternating (IDA, BDF2, BDF2, IDA, ...)."""
     rows = []
-    for k, rt in enumerate(rtols):
-        for form in (FORMS if k % 2 == 0 else FORMS[::-1]):
-            o = orbits[form]
-            st = None if start is None else start[form]
-            r, w, c = _timed(lambda: o.run(revs, rtol=rt, atol=atol_for(rt), outputs_per_revolution=opr, start=st,
-                                           formulation="content" if form == "content" else "universal",
-                                           progress=False))
-            rows.append(_row(case, f"IDA {form} rtol {rt:.0e}", r, w, c, ref, revs) | dict(form=form, rtol=rt))
+    pairs = list(zip(rtols, caps))
+    for k, (rt, cap) in enumerate(pairs):
+        order = (("ida", rt), ("bdf2", cap)) if k % 2 == 0 else (("bdf2", cap), ("ida", rt))
+        for form, setting in order:
+            r, w, c = _timed(lambda: _run(o, form, setting, revs, opr, start))
+            rows.append(_row(case, _label(form, setting), r, w, c, ref, revs)
+                        | dict(form="universal" if form == "ida" else "bdf2", setting=setting))
             log(f"  {rows[-1]['label']}: {rows[-1]['steps_per_rev']:.0f} steps/rev, {rows[-1]['jac_per_rev']:.0f} "
                 f"jac/rev, {w / revs:.2f} s/rev, error {rows[-1]['error']:.2e} C")
     return rows
 
 
-def _warm(orbits):
-    for form, o in orbits.items():  # JIT warm-up, not timed
-        o.run(0.01, rtol=1e-3, formulation="content" if form == "content" else "universal", progress=False)
+def _warm(o):
+    for form in ("ida", "bdf2"):  # JIT warm-up (the BDF2 driver compiles once per process), not timed
+        _run(o, form, 1e-3 if form == "ida" else 500, 0.05, 20)
 
 
 def cost_at(rows, form, target):
@@ -105,32 +111,39 @@ def cost_at(rows, form, target):
     return pts[-1][1]  # even the loosest run is more accurate: an upper bound
 
 
-def _candidates(grid, unbalance_C, speed_rpm):
-    o = _orbit(grid, unbalance_C, speed_rpm)
-    orbits = dict(universal=o, content=o, wide=_orbit(grid, unbalance_C, speed_rpm, wide=True))
-    _warm(orbits)
-    return orbits
-
-
 def _reference(o, revs, opr, start=None):
     return o.run(revs, rtol=REF_RTOL, atol=atol_for(REF_RTOL), outputs_per_revolution=opr, start=start,
                  progress=False)
 
 
+def _long(o, revs, opr, cap, rtol, start=None):
+    """IDA (rtol) and BDF2 (cap) over ``revs`` revolutions, alternating twice; the faster run of each."""
+    out = {}
+    for form in ("bdf2", "ida", "ida", "bdf2"):
+        setting = cap if form == "bdf2" else rtol
+        r, w, c = _timed(lambda: _run(o, form, setting, revs, opr, start))
+        prev = out.get(form)
+        if prev is None or w < prev["wall"]:
+            out[form] = dict(revolutions=revs, wall=w, cpu=c, steps_per_rev=r.stats.n_steps / revs,
+                             jac_per_rev=r.stats.n_jac / revs, setting=setting, ok=bool(r.success),
+                             minutes_per_1000_rev=w / revs * 1000 / 60)
+    return out
+
+
 def run(quick=False, log=print) -> dict:
     cfg = dict(QUICK if quick else FULL)
-    grid, rtols, opr = cfg["grid"], cfg["rtols"], cfg["opr"]
-    out = dict(config=dict(cfg, quick=quick, ref_rtol=REF_RTOL, wide=WIDE), rows=[])
+    grid, rtols, caps, opr = cfg["grid"], cfg["rtols"], cfg["caps"], cfg["opr"]
+    out = dict(config=dict(cfg, quick=quick, ref_rtol=REF_RTOL, bdf2_rtol=BDF2_RTOL), rows=[])
     rows = out["rows"]
 
     # ---- large orbit: 0.3 C from equilibrium --------------------------------------------------------------
-    orbits = _candidates(grid, 0.3, 6000.0)
-    o = orbits["universal"]
-    log(f"[orbit_size] large: 0.3 C, 6000 rpm, {grid[0]} x {grid[1]}; reference universal rtol {REF_RTOL:g} ...")
+    o = _orbit(grid, 0.3, 6000.0)
+    _warm(o)
+    log(f"[orbit_size] large: 0.3 C, 6000 rpm, {grid[0]} x {grid[1]}; reference IDA rtol {REF_RTOL:g} ...")
     ref, w, _ = _timed(lambda: _reference(o, 1, opr))
     out["large_reference"] = dict(wall=w, steps=ref.stats.n_steps, excursion_C=float(np.max(np.hypot(
         ref.x - ref.x[0], ref.y - ref.y[0])) / CLEARANCE))
-    rows += _side_by_side("large", orbits, rtols, 1.0, ref, opr=opr, log=log)
+    rows += _side_by_side("large", o, rtols, caps, 1.0, ref, opr=opr, log=log)
     n_rk4 = cfg["rk4_steps"]
     o.run(0.01, method="rk4", steps_per_revolution=n_rk4, progress=False)
     r, w, c = _timed(lambda: o.run(1, method="rk4", steps_per_revolution=n_rk4, outputs_per_revolution=opr,
@@ -144,51 +157,33 @@ def run(quick=False, log=print) -> dict:
 
     # ---- oil whip at 1.5x the threshold --------------------------------------------------------------------
     th = o.bearing.stability_threshold(ROTOR["rotor_mass"], ROTOR["load"])
-    orbits = _candidates(grid, 0.01, 1.5 * th)
-    ow = orbits["universal"]
+    ow = _orbit(grid, 0.01, 1.5 * th)
+    _warm(ow)
     log(f"[orbit_size] whip: 1.5 x threshold ({th:.0f} rpm) = {ow.speed_rpm:.0f} rpm; {cfg['spin_up']} revolutions "
-        f"from {cfg['whip_offset']} C off the equilibrium ...")
-    starts = {}
-    for form in ("universal", "wide"):
-        y0 = orbits[form].perturbed_start(cfg["whip_offset"])
-        sp, w, _ = _timed(lambda: orbits[form].run(cfg["spin_up"], rtol=1e-4, atol=atol_for(1e-4), y0=y0,
-                                                   outputs_per_revolution=opr, progress=False))
-        starts[form] = sp
-        if form == "universal":
-            eps = sp.eccentricity_ratio
-            out["whip_spin_up"] = dict(threshold_rpm=th, speed_rpm=ow.speed_rpm, revolutions=cfg["spin_up"], wall=w,
-                                       steps=sp.stats.n_steps, eps_last_rev=(float(eps[-opr:].min()),
-                                                                             float(eps[-opr:].max())),
-                                       message=sp.message)
-    starts["content"] = starts["universal"]
-    wref = _reference(ow, 1, opr, start=starts["universal"])
-    rows += _side_by_side("whip", orbits, rtols, 1.0, wref, start=starts, opr=opr, log=log)
-    nt = cfg["whip_timed"]
-    r, w, c = _timed(lambda: ow.run(nt, rtol=1e-4, atol=atol_for(1e-4), outputs_per_revolution=opr,
-                                    start=starts["universal"], progress=False))
-    out["whip_long"] = dict(revolutions=nt, wall=w, cpu=c, steps_per_rev=r.stats.n_steps / nt,
-                            jac_per_rev=r.stats.n_jac / nt, minutes_per_1000_rev=w / nt * 1000 / 60,
-                            cpu_minutes_per_1000_rev=c / nt * 1000 / 60, message=r.message)
-    log(f"  {nt} revolutions universal rtol 1e-4: {w:.0f} s -> {out['whip_long']['minutes_per_1000_rev']:.0f} min "
-        f"per 1000 revolutions")
+        f"from {cfg['whip_offset']} C off the equilibrium (BDF2) ...")
+    y0 = ow.perturbed_start(cfg["whip_offset"])
+    sp, w, _ = _timed(lambda: ow.run(cfg["spin_up"], method="bdf2", rtol=BDF2_RTOL, y0=y0, outputs_per_revolution=opr,
+                                     progress=False))
+    eps = sp.eccentricity_ratio
+    out["whip_spin_up"] = dict(threshold_rpm=th, speed_rpm=ow.speed_rpm, revolutions=cfg["spin_up"], wall=w,
+                               steps=sp.stats.n_steps, eps_last_rev=(float(eps[-opr:].min()), float(eps[-opr:].max())),
+                               message=sp.message)
+    wref = _reference(ow, 1, opr, start=sp)
+    rows += _side_by_side("whip", ow, rtols, caps, 1.0, wref, start=sp, opr=opr, log=log)
+    out["whip_long"] = _long(ow, cfg["whip_timed"], opr, max(caps), max(rtols), start=sp)
+    for form, v in out["whip_long"].items():
+        log(f"  whip {v['revolutions']} revolutions {form}: {v['wall']:.0f} s -> {v['minutes_per_1000_rev']:.0f} min "
+            f"per 1000 revolutions")
 
     # ---- small orbit: the paper's 0.01 C --------------------------------------------------------------------
-    orbits = _candidates(grid, 0.01, 6000.0)
+    os_ = _orbit(grid, 0.01, 6000.0)
+    _warm(os_)
     log("[orbit_size] small: 0.01 C, 6000 rpm ...")
-    sref = _reference(orbits["universal"], 1, opr)
-    rows += _side_by_side("small", orbits, rtols, 1.0, sref, opr=opr, log=log)
-    nl = cfg["small_revs"]
-    out["small_long"] = {}
-    for form in ("universal", "content", "content", "universal"):  # alternate, twice: keep the faster of each
-        r, w, c = _timed(lambda: orbits[form].run(nl, rtol=1e-3, atol=1e-9, outputs_per_revolution=opr,
-                                                  formulation=form, progress=False))
-        prev = out["small_long"].get(form)
-        if prev is None or w < prev["wall"]:
-            out["small_long"][form] = dict(revolutions=nl, wall=w, cpu=c, steps_per_rev=r.stats.n_steps / nl,
-                                           jac_per_rev=r.stats.n_jac / nl)
-    for form in ("universal", "content"):
-        s_ = out["small_long"][form]
-        log(f"  {nl} revolutions IDA {form} rtol 1e-3: {s_['wall']:.1f} s, {s_['steps_per_rev']:.0f} steps/rev")
+    sref = _reference(os_, 1, opr)
+    rows += _side_by_side("small", os_, rtols, cfg["small_caps"], 1.0, sref, opr=opr, log=log)
+    out["small_long"] = _long(os_, cfg["small_revs"], opr, min(cfg["small_caps"]), max(rtols))
+    for form, v in out["small_long"].items():
+        log(f"  small {v['revolutions']} revolutions {form}: {v['wall']:.1f} s, {v['steps_per_rev']:.0f} steps/rev")
     return out
 
 
@@ -196,17 +191,24 @@ def _fmt(v, f="{:.2e}"):
     return "-" if v is None or (isinstance(v, float) and math.isnan(v)) else f.format(v)
 
 
+def _long_text(d):
+    names = dict(ida="IDA universal rtol {:.0e}", bdf2="BDF2 >= {} steps/rev")
+    return ", ".join(f"{names[f].format(v['setting'])} {v['wall']:.1f} s ({v['steps_per_rev']:.0f} steps and "
+                     f"{v['jac_per_rev']:.0f} Jacobians per revolution; {v['minutes_per_1000_rev']:.0f} min per 1000 "
+                     f"revolutions)" for f, v in d.items())
+
+
 def markdown(res) -> str:
     c = res["config"]
-    lr, sp, wl = res["large_reference"], res["whip_spin_up"], res["whip_long"]
-    L = [f"Rho & Kim bearing and rotor, {c['grid'][0]} x {c['grid'][1]} half grid, IDA (atol = min(1e-9, 1e-3 rtol)), "
-         f"user rtol as given (the content formulation hands IDA rtol / 10); wide switch "
-         f"{c['wide']['switch_width_p0']:g} p0 / {c['wide']['switch_content_width']:g} (default 1e-4 p0 / 1e-2)"
+    lr, sp = res["large_reference"], res["whip_spin_up"]
+    L = [f"Rho & Kim bearing and rotor, {c['grid'][0]} x {c['grid'][1]} half grid. IDA on the universal film "
+         f"(atol = min(1e-9, 1e-3 rtol)); BDF2 on the content film (rtol {c['bdf2_rtol']:g} on the rotor, film Newton "
+         f"tolerance 1e-8 in p0 and content, at least the given steps per revolution); RK4 with the film per stage"
          + (" — **quick smoke run, not the benchmark**" if c["quick"] else "") + ".", "",
-         f"References: universal rtol {c['ref_rtol']:g} (large case: {lr['steps']} steps, excursion "
+         f"References: IDA universal rtol {c['ref_rtol']:g} (large case: {lr['steps']} steps, excursion "
          f"{lr['excursion_C']:.3f} C). Whip: {sp['speed_rpm']:.0f} rpm = 1.5 x the Lund threshold "
-         f"{sp['threshold_rpm']:.0f} rpm, after {sp['revolutions']} revolutions from {c['whip_offset']} C off the "
-         f"equilibrium (e/C {sp['eps_last_rev'][0]:.3f} - {sp['eps_last_rev'][1]:.3f} over the last one).", "",
+         f"{sp['threshold_rpm']:.0f} rpm, after {sp['revolutions']} revolutions (BDF2) from {c['whip_offset']} C off "
+         f"the equilibrium (e/C {sp['eps_last_rev'][0]:.3f} - {sp['eps_last_rev'][1]:.3f} over the last one).", "",
          "| case | run | steps/rev | Jacobians/rev | residuals/rev | wall s/rev | CPU s/rev | error [C] |",
          "|---|---|---|---|---|---|---|---|"]
     for r in res["rows"]:
@@ -215,16 +217,14 @@ def markdown(res) -> str:
     m = res["large_matched"]
     rk4 = next(r for r in res["rows"] if r.get("form") == "rk4")
     L += ["", f"**Large orbit at RK4's error** ({_fmt(rk4['error'])} C, {rk4['wall_per_rev']:.1f} s): "
-          + ", ".join(f"IDA {f} {m[f]['wall_per_rev']:.2f} s ({m[f]['speedup_vs_rk4']:.1f}x RK4)"
-                      if math.isfinite(m[f]["wall_per_rev"]) else f"IDA {f}: RK4's error not reached at the rtols run"
-                      for f in FORMS) + " (a candidate whose loosest run is already more accurate is charged that run).",
-          f"**Whip, {wl['revolutions']} revolutions** (universal, rtol 1e-4): {wl['steps_per_rev']:.0f} steps and "
-          f"{wl['jac_per_rev']:.0f} Jacobians per revolution, {wl['wall']:.0f} s -> "
-          f"{wl['minutes_per_1000_rev']:.0f} min per 1000 revolutions ({wl['cpu_minutes_per_1000_rev']:.0f} CPU min).",
-          "**Small orbit, {} revolutions** (rtol 1e-3, the faster of two alternating runs): ".format(
-              res["small_long"]["universal"]["revolutions"])
-          + ", ".join(f"{f} {v['wall']:.1f} s ({v['steps_per_rev']:.0f} steps/rev)" for f, v in res["small_long"].items())
-          + "."]
+          + ", ".join(f"{'IDA universal' if f == 'universal' else 'BDF2'} {m[f]['wall_per_rev']:.2f} s "
+                      f"({m[f]['speedup_vs_rk4']:.1f}x RK4)" if math.isfinite(m[f]["wall_per_rev"])
+                      else f"{f}: RK4's error not reached at the settings run" for f in FORMS)
+          + " (a candidate whose loosest run is already more accurate is charged that run).",
+          f"**Whip, {c['whip_timed']} revolutions** (the faster of two alternating runs): "
+          + _long_text(res["whip_long"]) + ".",
+          f"**Small orbit, {c['small_revs']} revolutions** (the faster of two alternating runs): "
+          + _long_text(res["small_long"]) + "."]
     return "\n".join(L)
 
 
@@ -233,10 +233,11 @@ def plot(res, path):
 
     fig, axes = figure(1, 3, size=(15, 4.2))
     for ax, case in zip(axes, ("large", "whip", "small")):
-        for form, mk in (("universal", "o-"), ("content", "s-"), ("wide", "^-")):
-            pts = [(r["wall_per_rev"], r["error"]) for r in res["rows"] if r["case"] == case and r.get("form") == form]
+        for form, mk, name in (("universal", "o-", "IDA universal"), ("bdf2", "s-", "BDF2 content")):
+            pts = sorted((r["wall_per_rev"], r["error"]) for r in res["rows"] if r["case"] == case
+                         and r.get("form") == form)
             if pts:
-                ax.loglog(*zip(*pts), mk, label=f"IDA {form}")
+                ax.loglog(*zip(*pts), mk, label=name)
         for r in res["rows"]:
             if r["case"] == case and r.get("form") == "rk4":
                 ax.loglog(r["wall_per_rev"], r["error"], "k*", ms=10, label=r["label"])

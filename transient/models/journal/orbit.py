@@ -6,6 +6,10 @@
 * ``"cvode"``, ``"bdf"``, ``"radau"``, ``"lsoda"`` -- the ODE form ``y' = f(tau, y)`` with the analytic
   sparse arrow Jacobian (LSODA gets it dense: scipy's limitation);
 * ``"ida"`` -- the residual form ``F(tau, y, y') = 0`` with its analytic Jacobian ``dF/dy + cj dF/dy'``;
+* ``"bdf2"`` -- the content formulation by :mod:`transient.solvers.integrate.bdf2`: variable-step BDF2 whose steps follow the
+  rotor (error test on X, Y, VX, VY; at least ``steps_per_revolution`` per revolution), the film solved by Newton in
+  the universal variable to a tight pressure/content tolerance every step, mass conserved through every cavity
+  crossing;
 * ``"rk4"`` -- the users' hand-coded scheme (the paper's): classical RK4 on the rotor with N steps per
   revolution, the film solved at every stage for the stage's rotor state, its time derivative by a
   backward-Euler step from the film of the last completed step (Elrod 1981), Newton iterations to the
@@ -30,6 +34,8 @@ from transient.models.journal.kernels import (N_ROTOR, content_jacobian, content
 from transient.models.journal.results import OrbitResult
 from transient.models.journal.scales import Rotor
 from transient.models.journal.rk4 import FilmStageSolver
+from transient.models.journal.content_newton import bdf2_newton
+from transient.solvers.integrate.bdf2 import Bdf2Model
 from transient.solvers.integrate import METHODS, Problem, Stats
 from transient.solvers.longrun import run_long
 from transient.units import rpm_to_hz
@@ -39,6 +45,11 @@ FORMULATIONS = ("content", "universal")
 #: part, so ``run`` hands the integrator ``rtol * CONTENT_RTOL_FACTOR`` there: a user's rtol then buys about
 #: the orbit accuracy of the universal form (docs/journal.md, section 5).
 CONTENT_RTOL_FACTOR = 0.1
+#: ``method="bdf2"``: at least this many steps per revolution by default (the step cap: the rotor's local error
+#: does not see the film's fronts, whose error the cap bounds; 48 x 8, 0.3 C: 1.1e-4 C at 500), and the film's
+#: Newton tolerance on the pressure (p0) and the content H theta of every cell.
+BDF2_MIN_STEPS = 500
+BDF2_FILM_TOL = 1e-8
 RECORDABLE = ("force", "pressure", "film_content", "min_film", "mass", "outflow", "supply_flow", "side_leakage")
 FIELD_SERIES = ("pressure", "film_content")
 
@@ -209,27 +220,43 @@ class JournalOrbit:
                        jac_residual=jac_residual, events=events, n_events=1 if events else 0,
                        event_terminal=[True], event_direction=[-1], name=f"journal orbit ({formulation})")
 
+    def bdf2_model(self) -> Bdf2Model:
+        """The compiled kernels of the content formulation for ``method="bdf2"``
+        (:class:`~transient.solvers.integrate.bdf2.Bdf2Model`, kernels in :mod:`~transient.models.journal.content_newton`):
+        error test on the rotor, the film solved by Newton to ``BDF2_FILM_TOL`` in pressure (p0) and content per
+        cell."""
+        f = self.film
+        args = (f.switch, Rotor(self.kappa, self.wbar, self.ebar, f.sym), f.geo, f.fields, f.extras, f.fv, f.work,
+                (BDF2_FILM_TOL, BDF2_FILM_TOL), np.zeros(f.n, dtype=np.int8))
+        return Bdf2Model(newton=bdf2_newton, args=args,
+                         error_components=np.arange(f.n, self.n), n_border=N_ROTOR)
+
     def parameters(self) -> dict:
         """Every parameter of the bearing and the rotor that changes an orbit (SI), e.g. to key a checkpoint."""
         return dict(**self.bearing.parameters(), rotor_mass=self.rotor_mass, unbalance=self.unbalance,
                     load=self.load, speed_rpm=self.speed_rpm)
 
     # ---------------------------------------------------------------------------------------------
-    def run(self, revolutions, method="ida", rtol=1e-6, atol=1e-9, steps_per_revolution=3000,
+    def run(self, revolutions, method="ida", rtol=1e-6, atol=1e-9, steps_per_revolution=None,
             outputs_per_revolution=100, record=(), record_from_revolution=0.0, chunk_revolutions=None,
             checkpoint=None, resume=False, progress=None, touch_gap=1e-3, y0=None,
-            inner_tolerance=1e-6, start=None, stop=None, time_budget=None, formulation="universal") -> OrbitResult:
+            inner_tolerance=1e-6, start=None, stop=None, time_budget=None, formulation=None) -> OrbitResult:
         """Integrate ``revolutions`` shaft revolutions from the static equilibrium, from ``y0`` (a state at
         t = 0) or from ``start`` (a previous :class:`OrbitResult`, or ``(time [s], state)``: the run goes on
         from its final state and time, so the unbalance keeps its phase). The first output is the start.
 
         Parameters
         ----------
-        method : ``"cvode"``, ``"ida"``, ``"bdf"``, ``"radau"``, ``"lsoda"`` or ``"rk4"``.
+        method : ``"cvode"``, ``"ida"``, ``"bdf"``, ``"radau"``, ``"lsoda"``, ``"rk4"`` or ``"bdf2"`` (variable-step
+            BDF2 on the content film with its own Newton and a bordered band LU, error test on the rotor only:
+            :mod:`transient.solvers.integrate.bdf2`; rtol and atol act on the rotor states, the film is solved every step to
+            ``BDF2_FILM_TOL``).
         rtol, atol : tolerances of the adaptive methods; atol is absolute on the dimensionless quantities:
             the journal position and velocity (units of C and C omega) and, per cell, the film content
             theta and the pressure p / p0 (see :meth:`absolute_tolerance`).
-        steps_per_revolution : fixed steps of ``"rk4"`` (paper: 3000).
+        steps_per_revolution : fixed steps of ``"rk4"`` (default 3000, the paper's); for ``"bdf2"`` the least
+            number of steps per revolution (its step cap; default ``BDF2_MIN_STEPS`` = 500), rtol refining further
+            where the rotor's local error asks for it.
         inner_tolerance : ``"rk4"`` only: the per-stage film criterion sum|d theta| / sum theta (paper: 1e-6).
         outputs_per_revolution : output (sampling) rate.
         record : extra series to keep at the outputs: any of ``"force"`` [N], ``"min_film"`` [m],
@@ -258,6 +285,8 @@ class JournalOrbit:
             ``y0``, ``start`` and ``final_state`` are in the universal layout either way.
         """
         revolutions = check_positive("revolutions", revolutions, "rev")
+        if formulation is None:
+            formulation = "content" if method == "bdf2" else "universal"
         if method != "rk4":
             rtol = check_rtol(rtol)
         if isinstance(record, str):
@@ -267,6 +296,9 @@ class JournalOrbit:
             raise ValueError(f"record: unknown series {bad}; allowed: {RECORDABLE}")
         check_choice("method", method, METHODS)
         check_choice("formulation", formulation, FORMULATIONS)
+        if method == "bdf2" and formulation != "content":
+            raise ValueError('method "bdf2" integrates the content formulation (conservative across a cavity crossing); '
+                             'formulation must be "content" (the default for "bdf2")')
         if method == "rk4" and formulation != "universal":
             raise ValueError('method "rk4" solves the film in the universal variable; formulation must be "universal"')
         opr = check_range("outputs_per_revolution", outputs_per_revolution, "1/rev", 1, 1e6)
@@ -299,7 +331,8 @@ class JournalOrbit:
         rec.last_y = y
         n_out = max(1, int(round(revolutions * opr)))
         if method == "rk4":
-            dtau = two_pi / check_range("steps_per_revolution", steps_per_revolution, "1/rev", 4, 1e7)
+            dtau = two_pi / check_range("steps_per_revolution", 3000 if steps_per_revolution is None else
+                                        steps_per_revolution, "1/rev", 4, 1e7)
             steppers = []
 
             def problem_at(y_, t_):
@@ -311,9 +344,14 @@ class JournalOrbit:
             problem_at = lambda y_, t_: self._problem(y_, t_, touch_gap, formulation)  # noqa: E731
             kw = dict(rtol=rtol * (CONTENT_RTOL_FACTOR if formulation == "content" else 1.0),
                       atol=self.absolute_tolerance(atol, formulation))
+            if method == "bdf2":
+                spr = check_range("steps_per_revolution", BDF2_MIN_STEPS if steps_per_revolution is None else
+                                  steps_per_revolution, "1/rev", 4, 1e7)
+                kw = dict(rtol=rtol, atol=self.absolute_tolerance(atol, formulation), max_step=two_pi / spr,
+                          first_step=two_pi * 1e-4, options={"bdf2": self.bdf2_model()})
         key = dict(self.parameters(), method=method, rtol=rtol if method != "rk4" else None,
                    atol=atol if method != "rk4" else None,
-                   steps_per_revolution=steps_per_revolution if method == "rk4" else None,
+                   steps_per_revolution=steps_per_revolution if method in ("rk4", "bdf2") else None,
                    inner_tolerance=inner_tolerance if method == "rk4" else None, outputs_per_revolution=opr,
                    record=sorted(record), record_from_revolution=float(record_from_revolution), touch_gap=touch_gap,
                    chunk_revolutions=chunk_revolutions, start_time=tau0 / self.film.omega, formulation=formulation,

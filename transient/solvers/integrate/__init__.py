@@ -14,6 +14,8 @@ routines, algebraic indices, events) and gets back one :class:`Solution` whateve
   SUNDIALS' own difference quotients when the problem says so.
 * ``"bdf"`` / ``"radau"`` / ``"lsoda"`` -- ``scipy.integrate`` given the same sparse Jacobian
   (LSODA only accepts a dense one; that is scipy's limitation, not ours).
+* ``"bdf2"`` -- variable-step BDF2 with its own compiled Newton on a bordered band LU (:mod:`.bdf2`), for a
+  model that hands its kernels as ``options={"bdf2": Bdf2Model}``.
 * ``"rk4"`` -- the classical fixed-step 4th-order Runge-Kutta scheme the users' hand-coded codes
   use, with a hook (:attr:`Problem.algebraic_solve`) for the inner algebraic solve per stage (how the
   papers treat the film: the film is solved to convergence for the rotor state of every stage).
@@ -44,7 +46,7 @@ from dataclasses import dataclass
 from typing import Callable
 
 from transient.checks import check_atol, check_choice, check_count, check_rtol, check_step, check_times
-from transient.solvers.integrate import rk4, scipy_backend, sundials
+from transient.solvers.integrate import bdf2, rk4, scipy_backend, sundials
 from transient.solvers.integrate.guard import SIGINT, Guard, Stall, Stop, all_finite, first_nonfinite
 from transient.solvers.integrate.guard import nonfinite_probe as _nonfinite_probe  # noqa: F401 (tests probe it)
 from transient.solvers.integrate.outputs import Events, Output, step_events
@@ -79,6 +81,7 @@ BACKENDS: dict[str, Backend] = {
     "radau": Backend(scipy_backend.solve),
     "lsoda": Backend(scipy_backend.solve),
     "rk4": Backend(rk4.solve, fixed_step=True),
+    "bdf2": Backend(bdf2.solve),
 }
 METHODS = tuple(BACKENDS)
 
@@ -92,7 +95,7 @@ def solve(problem: Problem, t_eval, method: str = "cvode", rtol: float = 1e-6, a
 
     Parameters
     ----------
-    method : one of ``"cvode"``, ``"ida"``, ``"bdf"``, ``"radau"``, ``"lsoda"``, ``"rk4"``.
+    method : one of ``"cvode"``, ``"ida"``, ``"bdf"``, ``"radau"``, ``"lsoda"``, ``"rk4"``, ``"bdf2"``.
     rtol, atol : tolerances of the adaptive methods (ignored by ``rk4``): ``rtol`` in (0, 1); ``atol``
         a finite number > 0 or an array of such numbers, one per state.
     dt : the fixed step of ``rk4`` [same unit as t], finite and > 0; required for ``rk4``.
@@ -102,7 +105,8 @@ def solve(problem: Problem, t_eval, method: str = "cvode", rtol: float = 1e-6, a
         band, dense otherwise), ``"sparse"``, ``"band"`` or ``"dense"`` (SUNDIALS methods).
     store : keep the outputs in ``Solution.y`` (False: only pass them to ``observer``).
     observer : ``observer(t, y)`` called at every output time, in order.
-    options : extra keyword options for the SUNDIALS solver (e.g. ``max_nonlin_iters``, ``max_order``).
+    options : extra keyword options for the SUNDIALS solver (e.g. ``max_nonlin_iters``, ``max_order``); for
+        ``"bdf2"`` the model's ``{"bdf2": Bdf2Model}`` (and ``"fixed_step"``).
     time_budget : wall-clock seconds the run may take (None: no limit); checked once per step, so a run
         stops at most one step after it (``success=False``, the message says where it stopped).
 
@@ -171,6 +175,9 @@ def solve(problem: Problem, t_eval, method: str = "cvode", rtol: float = 1e-6, a
     if backend.fixed_step:  # no error test, no nonlinear solve of its own
         stats.n_error_test_failures = 0
         stats.n_nonlinear_failures = 0
+    elif method == "bdf2":  # its own error test and Newton count their failures on the guard
+        stats.n_error_test_failures = getattr(guard, "n_error_test_failures", None)
+        stats.n_nonlinear_failures = getattr(guard, "n_nonlinear_failures", None)
     res = out.result(success=success, message=message, method=method, stats=stats)
     if out.events is not None:
         out.events.fill(res)

@@ -1,0 +1,256 @@
+"""Bordered band LU of an "arrow" matrix: a sparse block with a narrow band after reordering, plus a few dense
+border rows and columns (a film coupled to a rotor).
+
+With the unknowns split into the ``n`` block unknowns and the ``nb`` border unknowns (the trailing ones)::
+
+    [A  B] [x1]   [r1]        A x1' = r1,   Z = A^-1 B,   S = D - C Z   (nb x nb Schur complement)
+    [C  D] [x2] = [r2]   ->   x2 = S^-1 (r2 - C x1'),   x1 = x1' - Z x2
+
+``A`` is reordered once per pattern by reverse Cuthill-McKee (``scipy.sparse.csgraph.reverse_cuthill_mckee``)
+and factored by LAPACK's band LU with partial pivoting (``dgbtrf`` / ``dgbtrs``), called from numba through
+the addresses scipy exports in ``scipy.linalg.cython_lapack`` (an intrinsic that calls a function pointer
+passed as an integer, so the kernels stay cacheable). The CSC data of the whole matrix (fixed pattern order)
+is scattered into the band, border and corner arrays by a map built once (:class:`BorderedBandLU`).
+
+The kernels :func:`band_factor` and :func:`band_solve` take the :class:`BandLU` tuple, so a compiled Newton
+iteration factors and solves without returning to Python.
+"""
+
+from __future__ import annotations
+
+from typing import NamedTuple
+
+import numpy as np
+import scipy.sparse as sp
+from llvmlite import ir
+from numba import njit, types
+from numba.extending import get_cython_function_address, intrinsic
+from scipy.sparse.csgraph import reverse_cuthill_mckee
+
+_BAND, _BORDER_COL, _BORDER_ROW, _CORNER = range(4)
+
+
+_VOIDP = ir.IntType(8).as_pointer()
+
+
+def _codegen(n_args):
+    def codegen(context, builder, signature, args):
+        fn = builder.inttoptr(args[0], ir.FunctionType(ir.VoidType(), [_VOIDP] * n_args).as_pointer())
+        builder.call(fn, [builder.inttoptr(a, _VOIDP) for a in args[1:]])
+        return context.get_dummy_value()
+
+    return codegen
+
+
+@intrinsic
+def _call8(typingctx, address, a1, a2, a3, a4, a5, a6, a7, a8):
+    """Call the C function at ``address`` (an integer) with 8 pointer arguments (integers): dgbtrf."""
+    return types.void(address, a1, a2, a3, a4, a5, a6, a7, a8), _codegen(8)
+
+
+@intrinsic
+def _call11(typingctx, address, a1, a2, a3, a4, a5, a6, a7, a8, a9, a10, a11):
+    """Call the C function at ``address`` with 11 pointer arguments: dgbtrs."""
+    return types.void(address, a1, a2, a3, a4, a5, a6, a7, a8, a9, a10, a11), _codegen(11)
+
+
+class BandLU(NamedTuple):
+    """The arrays of a bordered band LU (filled by :func:`band_factor`, used by :func:`band_solve`).
+
+    ``ints`` = (n, n, kl, ku, ldab, info, nrhs=1, nrhs=nb, ldb=n) as LAPACK's int32 arguments; ``trans`` = b"N";
+    ``address`` = (dgbtrf, dgbtrs); ``perm[k]`` = original index of band row k; ``kind``/``target``: where each CSC
+    data entry goes (band: flat index into ``ab``; border column: flat index ``e * n + i'`` into ``B``; border row:
+    ``e * n + j'`` into ``C``; corner: ``e * nb + f`` into ``D``). ``ab`` (n, ldab), ``B`` and ``Z`` (nb, n) are
+    stored C-ordered, i.e. as LAPACK's column-major (ldab, n) band and (n, nb) right-hand sides."""
+
+    ints: np.ndarray
+    trans: np.ndarray
+    address: np.ndarray
+    perm: np.ndarray
+    kind: np.ndarray
+    target: np.ndarray
+    ab: np.ndarray
+    ipiv: np.ndarray
+    B: np.ndarray
+    C: np.ndarray
+    D: np.ndarray
+    Z: np.ndarray
+    S: np.ndarray
+    spiv: np.ndarray
+    x1: np.ndarray
+    x2: np.ndarray
+
+
+@njit(cache=True)
+def _small_lu(S, piv):
+    """In-place LU with partial pivoting of the small dense ``S`` (row-major); False if singular."""
+    m = S.shape[0]
+    for k in range(m):
+        p = k
+        for i in range(k + 1, m):
+            if abs(S[i, k]) > abs(S[p, k]):
+                p = i
+        piv[k] = p
+        if S[p, k] == 0.0:
+            return False
+        if p != k:
+            for j in range(m):
+                S[k, j], S[p, j] = S[p, j], S[k, j]
+        for i in range(k + 1, m):
+            S[i, k] /= S[k, k]
+            for j in range(k + 1, m):
+                S[i, j] -= S[i, k] * S[k, j]
+    return True
+
+
+@njit(cache=True)
+def _small_solve(S, piv, b):
+    m = S.shape[0]
+    for k in range(m):
+        p = piv[k]
+        if p != k:
+            b[k], b[p] = b[p], b[k]
+    for i in range(m):
+        for j in range(i):
+            b[i] -= S[i, j] * b[j]
+    for i in range(m - 1, -1, -1):
+        for j in range(i + 1, m):
+            b[i] -= S[i, j] * b[j]
+        b[i] /= S[i, i]
+
+
+@njit(cache=True)
+def _gbtrs(lu, b, nrhs_slot):
+    """b <- A^-1 b for the factored band (b C-ordered (nrhs, n); nrhs in ints[nrhs_slot])."""
+    ints = lu.ints
+    _call11(lu.address[1], lu.trans.ctypes.data, ints[0:].ctypes.data, ints[2:].ctypes.data, ints[3:].ctypes.data,
+            ints[nrhs_slot:].ctypes.data, lu.ab.ctypes.data, ints[4:].ctypes.data, lu.ipiv.ctypes.data,
+            b.ctypes.data, ints[8:].ctypes.data, ints[5:].ctypes.data)
+    return ints[5]
+
+
+@njit(cache=True)
+def band_factor(data, lu):
+    """Factor the matrix with CSC ``data`` (pattern order): band LU of A, Z = A^-1 B, LU of S = D - C Z.
+    Returns 0, or LAPACK's info > 0 (a zero pivot in A), or -1 (S singular)."""
+    ab, B, C, D = lu.ab, lu.B, lu.C, lu.D
+    flat = ab.reshape(-1)
+    flat[:] = 0.0
+    kind, target = lu.kind, lu.target
+    Bf = B.reshape(-1)
+    Cf = C.reshape(-1)
+    Df = D.reshape(-1)
+    for p in range(data.size):
+        k = kind[p]
+        if k == 0:
+            flat[target[p]] = data[p]
+        elif k == 1:
+            Bf[target[p]] = data[p]
+        elif k == 2:
+            Cf[target[p]] = data[p]
+        else:
+            Df[target[p]] = data[p]
+    ints = lu.ints
+    _call8(lu.address[0], ints[0:].ctypes.data, ints[1:].ctypes.data, ints[2:].ctypes.data, ints[3:].ctypes.data,
+           ab.ctypes.data, ints[4:].ctypes.data, lu.ipiv.ctypes.data, ints[5:].ctypes.data)
+    if ints[5] != 0:
+        return ints[5]
+    Z, S = lu.Z, lu.S
+    nb = D.shape[0]
+    if nb == 0:
+        return 0
+    Z[:, :] = B
+    _gbtrs(lu, Z, 7)
+    n = Z.shape[1]
+    for e in range(nb):
+        for f in range(nb):
+            s = D[e, f]
+            for i in range(n):
+                s -= C[e, i] * Z[f, i]
+            S[e, f] = s
+    return 0 if _small_lu(S, lu.spiv) else -1
+
+
+@njit(cache=True)
+def band_solve(lu, rhs, out):
+    """``out = M^-1 rhs`` for the matrix last factored by :func:`band_factor` (``out`` may be ``rhs``)."""
+    perm, x1, x2, Z, C = lu.perm, lu.x1, lu.x2, lu.Z, lu.C
+    n = perm.size
+    nb = x2.size
+    for k in range(n):
+        x1[k] = rhs[perm[k]]
+    for e in range(nb):
+        x2[e] = rhs[n + e]
+    _gbtrs(lu, x1, 6)
+    if nb > 0:
+        for e in range(nb):
+            s = x2[e]
+            for i in range(n):
+                s -= C[e, i] * x1[i]
+            x2[e] = s
+        _small_solve(lu.S, lu.spiv, x2)
+        for f in range(nb):
+            v = x2[f]
+            for i in range(n):
+                x1[i] -= Z[f, i] * v
+    for k in range(n):
+        out[perm[k]] = x1[k]
+    for e in range(nb):
+        out[n + e] = x2[e]
+
+
+class BorderedBandLU:
+    """Bordered band LU for the CSC ``pattern`` (sorted indices) of an ``N x N`` arrow matrix whose last ``n_border``
+    unknowns are dense border rows and columns. Built once per pattern: the reverse Cuthill-McKee order of the
+    block (``perm``), its band widths ``kl``, ``ku`` and the scatter map of the CSC data; ``arrays`` is the
+    :class:`BandLU` tuple the numba kernels take. ``factor(data)`` / ``solve(rhs)`` call them from Python."""
+
+    def __init__(self, pattern, n_border: int):
+        pat = sp.csc_matrix(pattern)
+        pat.sort_indices()
+        N = pat.shape[0]
+        if pat.shape != (N, N) or not 0 <= n_border < N:
+            raise ValueError(f"n_border = {n_border} [-] for a {pat.shape} pattern; allowed: 0 <= n_border < {N}")
+        n = N - n_border
+        block = pat[:n, :n]
+        sym = sp.csr_matrix((block + block.T) != 0)
+        perm = np.asarray(reverse_cuthill_mckee(sym, symmetric_mode=True), dtype=np.int64)
+        inv = np.empty(n, dtype=np.int64)
+        inv[perm] = np.arange(n)
+        cols = np.repeat(np.arange(N), np.diff(pat.indptr))
+        rows = pat.indices.astype(np.int64)
+        in_block = (rows < n) & (cols < n)
+        ri, ci = inv[rows[in_block]], inv[cols[in_block]]
+        kl = int(max(0, np.max(ri - ci))) if ri.size else 0
+        ku = int(max(0, np.max(ci - ri))) if ri.size else 0
+        ldab = 2 * kl + ku + 1
+        kind = np.empty(rows.size, dtype=np.int64)
+        target = np.empty(rows.size, dtype=np.int64)
+        kind[in_block] = _BAND
+        target[in_block] = ci * ldab + (kl + ku + ri - ci)
+        bc = (rows < n) & (cols >= n)
+        kind[bc], target[bc] = _BORDER_COL, (cols[bc] - n) * n + inv[rows[bc]]
+        br = (rows >= n) & (cols < n)
+        kind[br], target[br] = _BORDER_ROW, (rows[br] - n) * n + inv[cols[br]]
+        co = (rows >= n) & (cols >= n)
+        kind[co], target[co] = _CORNER, (rows[co] - n) * n_border + (cols[co] - n)
+        self.n, self.n_border, self.kl, self.ku, self.perm = n, n_border, kl, ku, perm
+        address = np.array([get_cython_function_address("scipy.linalg.cython_lapack", name)
+                            for name in ("dgbtrf", "dgbtrs")], dtype=np.int64)
+        self.arrays = BandLU(
+            ints=np.array([n, n, kl, ku, ldab, 0, 1, n_border, n], dtype=np.int32),
+            trans=np.frombuffer(b"N", dtype=np.uint8).copy(), address=address, perm=perm, kind=kind, target=target,
+            ab=np.zeros((n, ldab)), ipiv=np.zeros(n, dtype=np.int32),
+            B=np.zeros((n_border, n)), C=np.zeros((n_border, n)), D=np.zeros((n_border, n_border)),
+            Z=np.zeros((n_border, n)), S=np.zeros((n_border, n_border)),
+            spiv=np.zeros(n_border, dtype=np.int64), x1=np.zeros(n), x2=np.zeros(n_border))
+
+    def factor(self, data) -> int:
+        """Factor the matrix with these CSC data; 0 on success (:func:`band_factor`)."""
+        return int(band_factor(np.ascontiguousarray(data, dtype=float), self.arrays))
+
+    def solve(self, rhs) -> np.ndarray:
+        """The solution for ``rhs`` of the matrix last factored."""
+        out = np.empty(self.n + self.n_border)
+        band_solve(self.arrays, np.ascontiguousarray(rhs, dtype=float), out)
+        return out
