@@ -318,3 +318,17 @@ def test_hostile_feed_fields_give_a_named_error_or_a_finite_film(kind, key):
         assert np.all(np.isfinite(s.force)) and np.all(np.isfinite(s.supply_flow)), (key, value)
         finite += 1
     assert named + finite == len(HOSTILE)
+
+
+def test_feeds_off_the_mid_plane_in_the_bdf2_orbit_agree_with_ida():
+    """A partial groove and an off-centre hole (whole-length grid) in one revolution of the orbit: the BDF2 stepper on
+    the content film against a tight IDA run, positions and each feed's supply flow."""
+    b = JournalBearing(diameter=0.08, length=0.024, clearance=80e-6, viscosity=0.029, grid=(36, 6),
+                       groove=[Groove(0.0, 10.0, length=0.012), OilHole(180.0, 4e-3, axial_position=0.004)])
+    assert not b.symmetric
+    o = JournalOrbit(bearing=b, rotor_mass=100.0, unbalance=0.1 * 80e-6, load=981.0, speed_rpm=6000)
+    ida = o.run(revolutions=1, method="ida", rtol=1e-7, record=("supply_flow",))
+    bdf2 = o.run(revolutions=1, method="bdf2", rtol=1e-5, record=("supply_flow",))
+    assert ida.success and bdf2.success
+    assert np.max(np.hypot(bdf2.x - ida.x, bdf2.y - ida.y)) < 2e-4 * 80e-6
+    np.testing.assert_allclose(bdf2.supply_flow[-1], ida.supply_flow[-1], rtol=1e-3)
