@@ -155,3 +155,56 @@ def test_every_scenario_answers_help_without_running(capsys):
         assert e.value.code == 0, path.name
         text = capsys.readouterr().out
         assert "--quick" in text and "--out" in text, path.name
+
+
+# ---- no option grab-bags: at most 12 positional parameters ------------------------------------------------------
+MAX_POSITIONAL = 12
+#: numba kernels take their data as arguments (grouped in named tuples where they are many); ``intrinsic`` is
+#: numba's too. Keyword-only parameters (after ``*``) do not count.
+NUMBA_DECORATORS = {"njit", "jit", "intrinsic", "generated_jit", "vectorize", "guvectorize"}
+#: Constructors of physical parameter sets: each positional parameter is a physical quantity of the element.
+PARAMETER_SETS = {"JournalBearing", "LineContact", "RollerContact"}
+
+
+def _decorator_name(d):
+    d = d.func if isinstance(d, ast.Call) else d
+    return d.attr if isinstance(d, ast.Attribute) else getattr(d, "id", "")
+
+
+def _long_signatures(root):
+    """``(file, line, name, positional count)`` of every function over the limit, the exceptions aside (a method
+    is named ``Class.method``)."""
+    out = []
+    for path in sorted(root.rglob("*.py")):
+        tree = ast.parse(path.read_text())
+        owner = {f: c.name for c in ast.walk(tree) if isinstance(c, ast.ClassDef) for f in c.body}
+        for f in ast.walk(tree):
+            if not isinstance(f, (ast.FunctionDef, ast.AsyncFunctionDef)):
+                continue
+            n = len(f.args.posonlyargs) + len(f.args.args)
+            cls = owner.get(f)
+            if (n <= MAX_POSITIONAL or {_decorator_name(d) for d in f.decorator_list} & NUMBA_DECORATORS
+                    or (f.name == "__init__" and cls in PARAMETER_SETS)):
+                continue
+            out.append((str(path.relative_to(root)), f.lineno, f.name if cls is None else f"{cls}.{f.name}", n))
+    return out
+
+
+def test_no_function_takes_more_than_12_positional_parameters():
+    """Settings travel as objects (``transient.solvers.settings``) or keyword-only parameters; the exceptions
+    are numba kernels and constructors of physical parameter sets (``PARAMETER_SETS``)."""
+    assert _long_signatures(PKG) == []
+
+
+def test_the_positional_rule_can_fail(tmp_path):
+    """Thirteen positional parameters are caught in a function and a method; keyword-only ones, a numba kernel
+    and a parameter set's constructor are not."""
+    names = ", ".join(f"a{i}" for i in range(13))
+    (tmp_path / "m.py").write_text(
+        f"from numba import njit\n"
+        f"def bag({names}):\n    pass\n"
+        f"class Model:\n    def run(self, {names}):\n        pass\n"
+        f"def fine(a0, *, {names}):\n    pass\n"
+        f"@njit(cache=True)\ndef kernel({names}):\n    pass\n"
+        f"class JournalBearing:\n    def __init__(self, {names}):\n        pass\n")
+    assert [(name, n) for _, _, name, n in _long_signatures(tmp_path)] == [("bag", 13), ("Model.run", 14)]

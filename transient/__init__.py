@@ -4,7 +4,8 @@ SI units at the API. See docs/architecture.md for how the layers fit together.
 
 Public API (re-exported here):
 
-* integration: :func:`solve`, :class:`Problem`, :class:`Solution`, :class:`Stats`
+* integration: :func:`solve`, :class:`Problem`, :class:`Solution`, :class:`Stats`; run settings
+  :class:`Integration`, :class:`Recording`, :class:`LongRun` (``JournalOrbit.run``, ``ThrustBallBearing.sequence``)
 * results: :class:`Result` (the base of every result: units, save/load, summary), :func:`load_result`
 * journal bearing (seed 003): :class:`JournalBearing`, :class:`Groove`, :class:`JournalOrbit` (with
   ``periodic_response`` and ``response_curve``: periodic orbits by shooting), :func:`stability_onset`;
@@ -39,12 +40,13 @@ from transient.physics.flow_factors import contact_factor, pressure_flow_factors
 from transient.physics.layered import BoundaryLayers, Gecim, LayeredFilm, Newtonian
 from transient.results import Result, load_result
 from transient.solvers.integrate import Problem, Solution, Stats, solve
+from transient.solvers.settings import Integration, LongRun, Recording
 from transient.study.noise import bearing_noise  # the public API re-exports the noise protocol
 from transient.surfaces.roughness import RoughSurface
 
 __all__ = [
-    "AsperityContact", "BoundaryLayers", "DiscreteDensity", "Gecim", "Groove", "LayeredFilm", "Newtonian", "JournalBearing", "JournalOrbit", "LineContact", "Problem",
-    "Result", "RollerContact", "TaperedRoller",
+    "AsperityContact", "BoundaryLayers", "DiscreteDensity", "Gecim", "Groove", "Integration", "LayeredFilm", "LongRun", "Newtonian", "JournalBearing", "JournalOrbit", "LineContact", "Problem",
+    "Recording", "Result", "RollerContact", "TaperedRoller",
     "RoughSurface", "Solution", "Stats", "ThrustBallBearing", "ThrustPad", "a_weighting", "bearing_noise", "contact_factor",
     "greenwood_tripp", "load_result", "pressure_flow_factors", "stability_onset", "shear_flow_factor", "solve", "steel_asperity_contact",
 ]

@@ -461,7 +461,7 @@ class ReynoldsOperator:
                         self.no_face_k if face_k is None else face_k, out)
         return out
 
-    def jacobian(self, P, dP, C, dC, kx, dkx, kz, dkz, cx, cz, dq=None, data=None, face_k=None) -> np.ndarray:
+    def jacobian(self, P, dP, C, dC, kx, dkx, kz, dkz, cx, cz, *, dq=None, data=None, face_k=None) -> np.ndarray:
         """CSC data (pattern order) of ``dR/du`` and, if ``dq = (dkx_dq, dkz_dq, dcx_dq, dcz_dq)`` (each
         (n_extra, n_cells)) is given, the dense columns ``dR/dq``. Extra rows are left zero."""
         if data is None:
@@ -480,7 +480,7 @@ class ReynoldsOperator:
 
     def jacobian_of(self, f: Fields, dq=None, data=None) -> np.ndarray:
         """:meth:`jacobian` with the fields bundled in a :class:`Fields`."""
-        return self.jacobian(f.P, f.dP, f.C, f.dC, f.kx, f.dkx, f.kz, f.dkz, f.cx, f.cz, dq, data)
+        return self.jacobian(f.P, f.dP, f.C, f.dC, f.kx, f.dkx, f.kz, f.dkz, f.cx, f.cz, dq=dq, data=data)
 
     def matrix(self, data):
         """CSC matrix on the operator's pattern with this data."""

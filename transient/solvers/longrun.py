@@ -62,7 +62,8 @@ class Outcome:
 
 
 def run_long(problem_at: Callable, y0, t0: float, dt_out: float, n_outputs: int, recorder, *, method: str,
-             solve_kwargs: dict, chunk_outputs: int | None = None, checkpoint=None, resume: bool = False,
+             rtol: float = 1e-6, atol=1e-8, dt: float | None = None, max_step: float = 0.0, first_step: float = 0.0,
+             linear_solver: str = "auto", options: dict | None = None, chunk_outputs: int | None = None, checkpoint=None, resume: bool = False,
              key: dict | None = None, progress: bool | None = None, unit: tuple[str, float] = ("s", 1.0),
              label: str = "run", status: Callable | None = None, stop: Callable | None = None,
              time_budget: float | None = None) -> Outcome:
@@ -70,8 +71,9 @@ def run_long(problem_at: Callable, y0, t0: float, dt_out: float, n_outputs: int,
 
     ``unit = (name, length)``: the display unit of the progress bar and messages (e.g. ``("rev", 2 pi)``
     for a time in radians of shaft rotation). ``status()`` returns a short string for the bar (e.g. the
-    current eccentricity). ``solve_kwargs`` go to :func:`~transient.solvers.integrate.solve` (method
-    excluded); ``rk4`` needs ``dt``. ``time_budget`` [s of wall time] bounds the whole run (all chunks): past
+    current eccentricity). ``method``, ``rtol``, ``atol``, ``dt``, ``max_step``, ``first_step``,
+    ``linear_solver`` and ``options`` are :func:`~transient.solvers.integrate.solve`'s (its defaults); ``rk4``
+    needs ``dt``. ``time_budget`` [s of wall time] bounds the whole run (all chunks): past
     it the run ends with ``success=False`` and the outputs so far."""
     n_outputs = int(n_outputs)
     if n_outputs < 1:
@@ -104,9 +106,10 @@ def run_long(problem_at: Callable, y0, t0: float, dt_out: float, n_outputs: int,
             while k < n_outputs:
                 k_end = min(n_outputs, k + chunk_outputs)
                 tau = t0 + dt_out * np.arange(k, k_end + 1)
-                budget = {} if time_budget is None else dict(time_budget=max(deadline - time.perf_counter(), 1e-9))
-                res = solve(problem_at(y, tau[0]), tau, method=method, store=False, observer=_Last(recorder, out),
-                            **solve_kwargs, **budget)
+                remaining = None if time_budget is None else max(deadline - time.perf_counter(), 1e-9)
+                res = solve(problem_at(y, tau[0]), tau, method=method, rtol=rtol, atol=atol, dt=dt, max_step=max_step,
+                            first_step=first_step, linear_solver=linear_solver, options=options, store=False,
+                            observer=_Last(recorder, out), time_budget=remaining)
                 _accumulate(stats, res.stats)
                 if not res.success:
                     out.success = False

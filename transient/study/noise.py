@@ -30,7 +30,7 @@ def default_samples_per_revolution(harmonics) -> int:
     return s + (s % 2)
 
 
-def bearing_noise(orbit, revolutions=4, harmonics=5, settle_revolutions=None, max_settle_revolutions=60, tol=1e-4,
+def bearing_noise(orbit, revolutions=4, harmonics=5, *, settle_revolutions=None, max_settle_revolutions=60, tol=1e-4,
                   transmission="printed", method="ida", rtol=1e-6, samples_per_revolution=None,
                   chunk_revolutions=5, confirm=2, progress=False, periodic=True) -> BearingNoise:
     """Bearing noise of a :class:`~transient.models.journal.JournalOrbit` at its speed (module docstring).

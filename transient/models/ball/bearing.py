@@ -45,6 +45,7 @@ from transient.physics.hertz import (HertzContact, gap_rolling_axis, gap_rolling
 from transient.models.ball.track import FrontTrack, UniformTrack
 from transient.checks import check_choice, check_int, check_range
 from transient.results import Result, quantity, record_type, result_type
+from transient.solvers.settings import Integration, Recording, from_keywords
 from transient.units import rpm_to_rad_s
 
 FLOODED, STARVED, PARCHED = "fully flooded", "starved", "parched"
@@ -238,14 +239,15 @@ class ThrustBallBearing:
 
     # the sequence ---------------------------------------------------------------------------------
     def sequence(self, load: float, speed_rpm: float, ambient_film: float, n_passes: int = 200, *,
-                 replenishment: str = "thin_film", grid: str = "front", method: str = "cvode", rtol: float = 1e-6,
-                 atol: float = 1e-10, dt: float | None = None, n_cells: int = 200, refine: float = 1.0,
+                 replenishment: str = "thin_film", grid: str = "front", method: str | None = None,
+                 rtol: float | None = None, atol: float | None = None, dt: float | None = None, n_cells: int = 200, refine: float = 1.0,
                  reservoir_distance: float | None = None, bc: str = "reservoir",
                  ridge_fraction: float = 1.0, ridge_width: float | None = None,
                  precursor_film: float | None = None, mobility_film: float = 0.0,
                  front_level: float = 3.0, front_tau: float = 1e-3, edge_width: float | None = None, periodic_tol: float = 1e-4,
-                 stop_at_periodic: bool = True, record_profiles: bool = False,
-                 linear_solver: str = "auto") -> BallSequence:
+                 stop_at_periodic: bool = True, record_profiles: bool | None = None,
+                 linear_solver: str | None = None, integration: Integration | None = None,
+                 recording: Recording | None = None) -> BallSequence:
         """Inlet and central film ball after ball (module docstring).
 
         Parameters
@@ -259,7 +261,11 @@ class ThrustBallBearing:
             :mod:`transient.models.ball.front`) or ``"uniform"`` (``n_cells`` uniform cells: the earlier
             formulation, with the mobility floor ``mobility_film`` if given; Chiu always uses it).
         method, rtol, atol, dt, linear_solver : passed to :func:`transient.solvers.integrate.solve`
-            (atol in units of ``h_inf``; dt in units of the levelling time, for ``rk4``).
+            (atol in units of ``h_inf``; dt in units of the levelling time, for ``rk4``); defaults ``"cvode"``,
+            1e-6, 1e-10, None, ``"auto"``. Or ``integration`` (:class:`~transient.solvers.settings.Integration`),
+            which these keywords build (a keyword that contradicts it is an error naming both).
+        record_profiles : keep the film profile across the track before every pass (``BallSequence.profiles``);
+            or ``recording=Recording(record=("profiles",))``.
         n_cells : uniform cells across the half track ``[0, reservoir_distance]`` (``grid="uniform"``, Chiu).
         refine : refinement factor of the front mesh (cell sizes and growth rates divided by it).
         reservoir_distance : where the undisturbed ambient film is [m] (default: the ball radius).
@@ -278,6 +284,12 @@ class ThrustBallBearing:
             time ``front_tau`` (scaled).
         periodic_tol : relative change of ``h_inf`` over 3 passes that counts as periodic.
         """
+        ig = from_keywords(Integration, integration, "integration", dict(method="cvode", atol=1e-10), method=method,
+                           rtol=rtol, atol=atol, dt=dt, linear_solver=linear_solver)
+        rc = from_keywords(Recording, recording, "recording",
+                           record=None if record_profiles is None else (("profiles",) if record_profiles else ()))
+        rc.check_names(("profiles",))
+        record_profiles = "profiles" in rc.record
         check_choice("replenishment", replenishment, REPLENISHMENT)
         check_choice("grid", grid, GRIDS)
         if int(n_passes) != n_passes or n_passes < 1:
@@ -377,7 +389,8 @@ class ThrustBallBearing:
                 break
             t0 = time.perf_counter()
             try:
-                track.relax(tb_hat, st, method=method, rtol=rtol, atol=atol, linear_solver=linear_solver, dt=dt)
+                track.relax(tb_hat, st, method=ig.method, rtol=ig.rtol, atol=ig.atol, linear_solver=ig.linear_solver,
+                            dt=ig.dt)
             except RuntimeError as e:
                 raise RuntimeError(f"levelling after pass {n}: {e}") from None
             st["integrate_time"] += time.perf_counter() - t0

@@ -24,9 +24,12 @@ from which ``run(..., resume=True)`` continues after a crash with nothing lost.
 from __future__ import annotations
 
 import hashlib
+from dataclasses import dataclass, field
+from typing import Callable
+
 import numpy as np
 
-from transient.checks import ATOL_FLOOR, ATOL_WHY, check_choice, check_positive, check_range, check_rtol
+from transient.checks import ATOL_FLOOR, ATOL_WHY, check_choice, check_positive, check_range
 from transient.models.journal.bearing import JournalBearing, check_speed
 from transient.models.journal.flows import film_flows
 from transient.models.journal.kernels import (N_ROTOR, content_jacobian, content_ode_jacobian, content_residual,
@@ -36,11 +39,11 @@ from transient.models.journal.scales import Rotor
 from transient.models.journal.rk4 import FilmStageSolver
 from transient.models.journal.content_newton import bdf2_newton
 from transient.solvers.integrate.bdf2 import Bdf2Model
-from transient.solvers.integrate import METHODS, Problem, Stats
+from transient.solvers.integrate import Problem, Stats
 from transient.solvers.longrun import run_long
+from transient.solvers.settings import FORMULATIONS, Integration, LongRun, Recording, from_keywords
 from transient.units import rpm_to_hz
 
-FORMULATIONS = ("content", "universal")
 #: The content formulation's film state is O(1) in the full film, where the pressure is only its 1/beta_bar
 #: part, so ``run`` hands the integrator ``rtol * CONTENT_RTOL_FACTOR`` there: a user's rtol then buys about
 #: the orbit accuracy of the universal form (docs/journal.md, section 5).
@@ -237,13 +240,21 @@ class JournalOrbit:
                     load=self.load, speed_rpm=self.speed_rpm)
 
     # ---------------------------------------------------------------------------------------------
-    def run(self, revolutions, method="ida", rtol=1e-6, atol=1e-9, steps_per_revolution=None,
-            outputs_per_revolution=100, record=(), record_from_revolution=0.0, chunk_revolutions=None,
-            checkpoint=None, resume=False, progress=None, touch_gap=1e-3, y0=None,
-            inner_tolerance=1e-6, start=None, stop=None, time_budget=None, formulation=None) -> OrbitResult:
+    def run(self, revolutions, method=None, rtol=None, atol=None, steps_per_revolution=None,
+            outputs_per_revolution=None, *, record=None, record_from_revolution=None, chunk_revolutions=None,
+            checkpoint=None, resume=None, progress=None, touch_gap=1e-3, y0=None, inner_tolerance=None,
+            start=None, stop=None, time_budget=None, formulation=None, integration: Integration | None = None,
+            recording: Recording | None = None, long_run: LongRun | None = None) -> OrbitResult:
         """Integrate ``revolutions`` shaft revolutions from the static equilibrium, from ``y0`` (a state at
         t = 0) or from ``start`` (a previous :class:`OrbitResult`, or ``(time [s], state)``: the run goes on
         from its final state and time, so the unbalance keeps its phase). The first output is the start.
+
+        The integration, recording and long-run settings come either as objects -- ``integration``
+        (:class:`~transient.solvers.settings.Integration`), ``recording`` (:class:`~transient.solvers.settings.Recording`),
+        ``long_run`` (:class:`~transient.solvers.settings.LongRun`) -- or as the keywords below, which build them
+        (a keyword that contradicts a given object is an error naming both). Keywords left at ``None`` take the
+        defaults: ``method="ida"``, ``rtol=1e-6``, ``atol=1e-9``, ``inner_tolerance=1e-6``,
+        ``outputs_per_revolution=100``, ``record=()``, ``record_from_revolution=0``, ``resume=False``.
 
         Parameters
         ----------
@@ -285,33 +296,30 @@ class JournalOrbit:
             ``y0``, ``start`` and ``final_state`` are in the universal layout either way.
         """
         revolutions = check_positive("revolutions", revolutions, "rev")
-        if formulation is None:
-            formulation = "content" if method == "bdf2" else "universal"
-        if method != "rk4":
-            rtol = check_rtol(rtol)
-        if isinstance(record, str):
-            record = (record,)
-        bad = [r for r in record if r not in RECORDABLE]
-        if bad:
-            raise ValueError(f"record: unknown series {bad}; allowed: {RECORDABLE}")
-        check_choice("method", method, METHODS)
-        check_choice("formulation", formulation, FORMULATIONS)
+        ig = from_keywords(Integration, integration, "integration", dict(method="ida", atol=1e-9), method=method,
+                           rtol=rtol, atol=atol, steps_per_revolution=steps_per_revolution,
+                           inner_tolerance=inner_tolerance, formulation=formulation)
+        rc = from_keywords(Recording, recording, "recording", outputs_per_revolution=outputs_per_revolution,
+                           record=record, record_from_revolution=record_from_revolution)
+        lr = from_keywords(LongRun, long_run, "long_run", chunk_revolutions=chunk_revolutions, checkpoint=checkpoint,
+                           resume=resume, progress=progress, stop=stop, time_budget=time_budget)
+        method = ig.method
+        formulation = ig.formulation or ("content" if method == "bdf2" else "universal")
+        rc.check_names(RECORDABLE)
         if method == "bdf2" and formulation != "content":
             raise ValueError('method "bdf2" integrates the content formulation (conservative across a cavity crossing); '
                              'formulation must be "content" (the default for "bdf2")')
         if method == "rk4" and formulation != "universal":
             raise ValueError('method "rk4" solves the film in the universal variable; formulation must be "universal"')
-        opr = check_range("outputs_per_revolution", outputs_per_revolution, "1/rev", 1, 1e6)
-        if opr != int(opr):
-            raise ValueError(f"outputs_per_revolution = {outputs_per_revolution!r} [1/rev] must be an integer")
-        opr = int(opr)
+        opr = rc.outputs_per_revolution
         touch_gap = check_range("touch_gap", touch_gap, "-", 0.0, 1.0, high_open=True,
                                 why="(0 turns touch detection off)")
+        chunk_revolutions = lr.chunk_revolutions
         if chunk_revolutions is None:
-            chunk_revolutions = 10.0 if checkpoint else revolutions
+            chunk_revolutions = 10.0 if lr.checkpoint else revolutions
         chunk_revolutions = check_range("chunk_revolutions", chunk_revolutions, "rev", 1.0 / opr, np.inf,
                                         why="(at least one output interval)")
-        rec = _Recorder(self, record, record_from_revolution, formulation)
+        rec = _Recorder(self, rc.record, rc.record_from_revolution, formulation)
         two_pi = 2 * np.pi
         if start is not None:
             t_start, y = (start.final_time, start.final_state) if isinstance(start, OrbitResult) else start
@@ -330,41 +338,22 @@ class JournalOrbit:
                              f"[-]; allowed: [0, {self.bearing.max_eccentricity_ratio:.4g})")
         rec.last_y = y
         n_out = max(1, int(round(revolutions * opr)))
-        if method == "rk4":
-            dtau = two_pi / check_range("steps_per_revolution", 3000 if steps_per_revolution is None else
-                                        steps_per_revolution, "1/rev", 4, 1e7)
-            steppers = []
-
-            def problem_at(y_, t_):
-                steppers.append(FilmStageSolver(self, criterion=check_positive("inner_tolerance", inner_tolerance, "-")))
-                return steppers[-1].problem(y_, t_)
-
-            kw = dict(dt=dtau)
-        else:
-            problem_at = lambda y_, t_: self._problem(y_, t_, touch_gap, formulation)  # noqa: E731
-            kw = dict(rtol=rtol * (CONTENT_RTOL_FACTOR if formulation == "content" else 1.0),
-                      atol=self.absolute_tolerance(atol, formulation))
-            if method == "bdf2":
-                spr = check_range("steps_per_revolution", BDF2_MIN_STEPS if steps_per_revolution is None else
-                                  steps_per_revolution, "1/rev", 4, 1e7)
-                kw = dict(rtol=rtol, atol=self.absolute_tolerance(atol, formulation), max_step=two_pi / spr,
-                          first_step=two_pi * 1e-4, options={"bdf2": self.bdf2_model()})
-        key = dict(self.parameters(), method=method, rtol=rtol if method != "rk4" else None,
-                   atol=atol if method != "rk4" else None,
-                   steps_per_revolution=steps_per_revolution if method in ("rk4", "bdf2") else None,
-                   inner_tolerance=inner_tolerance if method == "rk4" else None, outputs_per_revolution=opr,
-                   record=sorted(record), record_from_revolution=float(record_from_revolution), touch_gap=touch_gap,
+        step = self._stepper(ig, formulation, touch_gap)
+        key = dict(self.parameters(), **ig.key(), outputs_per_revolution=opr, record=sorted(rc.record),
+                   record_from_revolution=rc.record_from_revolution, touch_gap=touch_gap,
                    chunk_revolutions=chunk_revolutions, start_time=tau0 / self.film.omega, formulation=formulation,
                    start_state=hashlib.sha256(np.ascontiguousarray(y).tobytes()).hexdigest()[:16])
-        user_stop = None if stop is None else (lambda r: stop(r.result(method, Stats(), None, "", tau0)))
+        user_stop = None if lr.stop is None else (lambda r: lr.stop(r.result(method, Stats(), None, "", tau0)))
         y_run = self.content_state(y) if formulation == "content" else y
-        out = run_long(problem_at, y_run, tau0, two_pi / opr, n_out, rec, method=method, solve_kwargs=kw,
-                       chunk_outputs=max(1, int(round(chunk_revolutions * opr))), checkpoint=checkpoint,
-                       resume=resume, key=key, progress=progress, unit=("rev", two_pi),
+        out = run_long(step.problem_at, y_run, tau0, two_pi / opr, n_out, rec, method=method, rtol=step.rtol,
+                       atol=step.atol, dt=step.dt, max_step=step.max_step, first_step=step.first_step,
+                       linear_solver=ig.linear_solver, options=step.options,
+                       chunk_outputs=max(1, int(round(chunk_revolutions * opr))), checkpoint=lr.checkpoint,
+                       resume=lr.resume, key=key, progress=lr.progress, unit=("rev", two_pi),
                        label=f"orbit {self.speed_rpm:g} rpm", status=lambda: f"e/C = {rec.last_eps:.4f}",
-                       stop=user_stop, time_budget=time_budget)
+                       stop=user_stop, time_budget=lr.time_budget)
         if method == "rk4":
-            out.stats.n_jac = sum(s.n_factorisations for s in steppers)
+            out.stats.n_jac = sum(s.n_factorisations for s in step.steppers)
         touched, message = None, out.message
         if out.event is not None:
             touched = out.event[0] / self.film.omega
@@ -374,6 +363,29 @@ class JournalOrbit:
         r = rec.result(method, out.stats, touched, message, out.t)
         r.success = out.success
         return r
+
+    def _stepper(self, ig: Integration, formulation: str, touch_gap: float) -> "_Step":
+        """The problem at a chunk's start and what :func:`~transient.solvers.integrate.solve` needs for ``ig``:
+        ``rk4`` a fixed step of 1 / ``steps_per_revolution`` revolution and a film solver per chunk; ``bdf2`` the
+        step cap and its Newton model; the adaptive methods the per-state atol (content form: rtol scaled)."""
+        two_pi = 2 * np.pi
+        if ig.method == "rk4":
+            step = _Step(problem_at=None, dt=two_pi / (3000 if ig.steps_per_revolution is None
+                                                       else ig.steps_per_revolution))
+
+            def problem_at(y_, t_):
+                step.steppers.append(FilmStageSolver(self, criterion=ig.inner_tolerance))
+                return step.steppers[-1].problem(y_, t_)
+
+            step.problem_at = problem_at
+            return step
+        problem_at = lambda y_, t_: self._problem(y_, t_, touch_gap, formulation)  # noqa: E731
+        atol = self.absolute_tolerance(ig.atol, formulation)
+        if ig.method == "bdf2":
+            spr = BDF2_MIN_STEPS if ig.steps_per_revolution is None else ig.steps_per_revolution
+            return _Step(problem_at, rtol=ig.rtol, atol=atol, max_step=two_pi / spr, first_step=two_pi * 1e-4,
+                         options={"bdf2": self.bdf2_model()})
+        return _Step(problem_at, rtol=ig.rtol * (CONTENT_RTOL_FACTOR if formulation == "content" else 1.0), atol=atol)
 
     def at_speed(self, speed_rpm) -> "JournalOrbit":
         """The same rotor on the same bearing at another shaft speed [rpm]."""
@@ -447,6 +459,22 @@ class JournalOrbit:
             out["relative"].append(abs(err) / thr)
             out["quadrature_relative"].append(abs(flow - trapezoid(net, x=t[s])) / thr)
         return {k: np.array(v) for k, v in out.items()}
+
+
+@dataclass
+class _Step:
+    """How one orbit run is integrated: the problem at a chunk's start and the arguments of
+    :func:`~transient.solvers.integrate.solve` (its defaults where the method takes none); ``rk4`` keeps its
+    film solvers in ``steppers`` (their factorisations count as Jacobians)."""
+
+    problem_at: Callable | None
+    rtol: float = 1e-6
+    atol: float | np.ndarray = 1e-8
+    dt: float | None = None
+    max_step: float = 0.0
+    first_step: float = 0.0
+    options: dict | None = None
+    steppers: list = field(default_factory=list)
 
 
 class _Recorder:

@@ -1,0 +1,152 @@
+"""Run settings as frozen objects: how to integrate, what to record, how to drive a long run.
+
+A model's time-domain run takes three groups of settings that have nothing to do with its physics:
+
+* :class:`Integration` -- the method and its tolerances (``method``, ``rtol``, ``atol``, ``formulation``,
+  the fixed-step and Newton settings of ``rk4`` / ``bdf2``, ``dt``, ``linear_solver``);
+* :class:`Recording` -- the output rate and the series kept (``outputs_per_revolution``, ``record``,
+  ``record_from_revolution``);
+* :class:`LongRun` -- chunks, checkpoint/resume, progress bar, early stop and wall-clock budget
+  (:func:`transient.solvers.longrun.run_long`).
+
+Each is validated on creation through :mod:`transient.checks` (one-line errors naming the parameter, its
+value, its unit and the allowed range) and is immutable, so one object can key a checkpoint
+(:meth:`Integration.key`) and be shared by many runs. A model's keyword API builds them
+(:func:`from_keywords`); passing an object and a keyword that says otherwise is an error naming both.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, fields, replace
+from pathlib import Path
+from typing import Callable
+
+from transient.checks import (ATOL_FLOOR, ATOL_WHY, check_bool, check_choice, check_int, check_positive, check_range,
+                              check_rtol)
+from transient.solvers.integrate import LINEAR_SOLVERS, METHODS
+
+#: Film formulations of the journal orbit: the universal variable (every method) or the content ``H theta``.
+FORMULATIONS = ("content", "universal")
+
+
+@dataclass(frozen=True)
+class Integration:
+    """How to integrate a run.
+
+    ``method`` one of :data:`~transient.solvers.integrate.METHODS`; ``rtol`` in (0, 1) [-]; ``atol`` [-] (on
+    the model's dimensionless states) in [1e-30, 1]; ``formulation`` ``None`` (the model's default),
+    ``"universal"`` or ``"content"``; ``steps_per_revolution`` [1/rev] ``None`` (the method's default) or in
+    [4, 1e7] (``rk4``: its fixed steps; ``bdf2``: its least number of steps); ``inner_tolerance`` [-] > 0
+    (``rk4``: the per-stage film criterion); ``dt`` [-] ``None`` or > 0 (a fixed step in the model's time
+    unit); ``linear_solver`` one of :data:`~transient.solvers.integrate.LINEAR_SOLVERS`."""
+
+    method: str = "ida"
+    rtol: float = 1e-6
+    atol: float = 1e-9
+    formulation: str | None = None
+    steps_per_revolution: float | None = None
+    inner_tolerance: float = 1e-6
+    dt: float | None = None
+    linear_solver: str = "auto"
+
+    def __post_init__(self):
+        check_choice("method", self.method, METHODS)
+        _set(self, "rtol", check_rtol(self.rtol))
+        _set(self, "atol", check_range("atol", self.atol, "-", ATOL_FLOOR, 1.0, why=ATOL_WHY))
+        if self.formulation is not None:
+            check_choice("formulation", self.formulation, FORMULATIONS)
+        if self.steps_per_revolution is not None:
+            _set(self, "steps_per_revolution", check_range("steps_per_revolution", self.steps_per_revolution,
+                                                           "1/rev", 4, 1e7))
+        _set(self, "inner_tolerance", check_positive("inner_tolerance", self.inner_tolerance, "-"))
+        if self.dt is not None:
+            _set(self, "dt", check_positive("dt", self.dt, "-"))
+        check_choice("linear_solver", self.linear_solver, LINEAR_SOLVERS)
+
+    def key(self) -> dict:
+        """The settings that change a run of this method (the others ``None``), to key a checkpoint."""
+        fixed = self.method == "rk4"
+        return dict(method=self.method, rtol=None if fixed else self.rtol, atol=None if fixed else self.atol,
+                    steps_per_revolution=self.steps_per_revolution if self.method in ("rk4", "bdf2") else None,
+                    inner_tolerance=self.inner_tolerance if fixed else None)
+
+
+@dataclass(frozen=True)
+class Recording:
+    """What a run keeps: ``outputs_per_revolution`` [1/rev] an integer in [1, 1e6]; ``record`` the extra
+    series (names the model knows; a single name is taken as a one-element tuple); ``record_from_revolution``
+    [rev] >= 0: field series are stored only from there on."""
+
+    outputs_per_revolution: int = 100
+    record: tuple = ()
+    record_from_revolution: float = 0.0
+
+    def __post_init__(self):
+        _set(self, "outputs_per_revolution", check_int("outputs_per_revolution", self.outputs_per_revolution,
+                                                       "1/rev", 1, 1e6))
+        record = (self.record,) if isinstance(self.record, str) else tuple(self.record)
+        bad = [r for r in record if not isinstance(r, str)]
+        if bad:
+            raise ValueError(f"record = {self.record!r}: series are named by strings, got {bad[0]!r}")
+        _set(self, "record", record)
+        _set(self, "record_from_revolution", check_range("record_from_revolution", self.record_from_revolution,
+                                                         "rev", 0.0, math.inf, high_open=True))
+
+    def check_names(self, allowed) -> None:
+        """Raise naming the first series this model cannot record."""
+        bad = [r for r in self.record if r not in allowed]
+        if bad:
+            raise ValueError(f"record: unknown series {bad}; allowed: {tuple(allowed)}")
+
+
+@dataclass(frozen=True)
+class LongRun:
+    """How a long run is driven (:func:`transient.solvers.longrun.run_long`).
+
+    ``chunk_revolutions`` [rev] ``None`` (the whole run, or 10 with a checkpoint) or > 0; ``checkpoint`` a path
+    ending in ``.npz`` or ``None``; ``resume`` a flag; ``progress`` ``None`` (a bar when there is more than one
+    chunk) or a flag; ``stop`` ``None`` or ``stop(result_so_far) -> str | None``; ``time_budget`` [s of wall
+    time] ``None`` or > 0."""
+
+    chunk_revolutions: float | None = None
+    checkpoint: str | Path | None = None
+    resume: bool = False
+    progress: bool | None = None
+    stop: Callable | None = None
+    time_budget: float | None = None
+
+    def __post_init__(self):
+        if self.chunk_revolutions is not None:
+            _set(self, "chunk_revolutions", check_positive("chunk_revolutions", self.chunk_revolutions, "rev"))
+        if self.checkpoint is not None and not str(self.checkpoint).endswith(".npz"):
+            raise ValueError(f"checkpoint = {str(self.checkpoint)!r}: the file name must end in .npz")
+        check_bool("resume", self.resume)
+        if self.progress is not None:
+            check_bool("progress", self.progress)
+        if self.stop is not None and not callable(self.stop):
+            raise ValueError(f"stop = {self.stop!r} is not callable; allowed: None or stop(result) -> str | None")
+        if self.time_budget is not None:
+            _set(self, "time_budget", check_positive("time_budget", self.time_budget, "s"))
+
+
+def from_keywords(cls, given, name: str, defaults: dict | None = None, **keywords):
+    """The settings object of a run: ``given`` if the caller passed one, else ``cls`` built from the
+    keywords that are not ``None`` over ``defaults`` (the model's own defaults).
+
+    A keyword that is not ``None`` and differs from the given object's field is an error naming both."""
+    passed = {k: v for k, v in keywords.items() if v is not None}
+    if given is None:
+        return cls(**dict(defaults or {}, **passed))
+    if not isinstance(given, cls):
+        raise ValueError(f"{name} = {given!r} is not a {cls.__name__}; allowed: None or {cls.__name__}(...)")
+    probe = replace(given, **passed)  # validates the keywords, normalises them as the object does
+    for f in fields(cls):
+        if f.name in passed and getattr(probe, f.name) != getattr(given, f.name):
+            raise ValueError(f"{name}={cls.__name__}({f.name}={getattr(given, f.name)!r}, ...) and "
+                             f"{f.name}={passed[f.name]!r} both given; pass the setting once")
+    return given
+
+
+def _set(obj, name, value):
+    object.__setattr__(obj, name, value)
