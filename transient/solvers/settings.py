@@ -139,7 +139,7 @@ def from_keywords(cls, given, name: str, defaults: dict | None = None, **keyword
     if given is None:
         return cls(**dict(defaults or {}, **passed))
     if not isinstance(given, cls):
-        raise ValueError(f"{name} = {given!r} is not a {cls.__name__}; allowed: None or {cls.__name__}(...)")
+        raise ValueError(f"{name} = {given!r}; allowed: None or {cls.__name__}(...)")
     probe = replace(given, **passed)  # validates the keywords, normalises them as the object does
     for f in fields(cls):
         if f.name in passed and getattr(probe, f.name) != getattr(given, f.name):
