@@ -240,7 +240,8 @@ class ThrustBallBearing:
     # the sequence ---------------------------------------------------------------------------------
     def sequence(self, load: float, speed_rpm: float, ambient_film: float, n_passes: int = 200, *,
                  replenishment: str = "thin_film", grid: str = "front", method: str | None = None,
-                 rtol: float | None = None, atol: float | None = None, dt: float | None = None, n_cells: int = 200, refine: float = 1.0,
+                 rtol: float | None = None, atol: float | None = None, dt: float | None = None, n_cells: int = 200,
+                 refine: float = 1.0,
                  reservoir_distance: float | None = None, bc: str = "reservoir",
                  ridge_fraction: float = 1.0, ridge_width: float | None = None,
                  precursor_film: float | None = None, mobility_film: float = 0.0,
