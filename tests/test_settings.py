@@ -109,3 +109,12 @@ def test_the_checkpoint_key_comes_from_the_objects(tmp_path):
     assert r.success and r.t.size == 9
     with pytest.raises(CheckpointError, match="written with rtol = 1e-06, this run has rtol = 1e-07"):
         o.run(1.0, integration=Integration(rtol=1e-7), recording=Recording(outputs_per_revolution=8), long_run=lr)
+
+
+def test_a_keyword_given_as_none_is_checked_not_taken_as_left_out():
+    with pytest.raises(ValueError, match="record_from_revolution = None"):
+        _orbit().run(0.1, record_from_revolution=None)
+    with pytest.raises(ValueError, match=r"record = 1\.0; allowed: a series name or a tuple of them"):
+        _orbit().run(0.1, record=1.0)
+    with pytest.raises(ValueError, match="rtol"):
+        ThrustBallBearing().sequence(load=30, speed_rpm=80, ambient_film=50e-6, n_passes=2, rtol=None)

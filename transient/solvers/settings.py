@@ -26,6 +26,16 @@ from transient.checks import (ATOL_FLOOR, ATOL_WHY, check_bool, check_choice, ch
                               check_rtol)
 from transient.solvers.integrate import LINEAR_SOLVERS, METHODS
 
+class _Default:
+    """The value of a settings keyword the caller left out (``None`` is a value: ``chunk_revolutions=None``)."""
+
+    def __repr__(self):
+        return "DEFAULT"
+
+
+#: Default of every settings keyword of a model's run: "not given", so the object or the model's default decides.
+DEFAULT = _Default()
+
 #: Film formulations of the journal orbit: the universal variable (every method) or the content ``H theta``.
 FORMULATIONS = ("content", "universal")
 
@@ -85,6 +95,8 @@ class Recording:
     def __post_init__(self):
         _set(self, "outputs_per_revolution", check_int("outputs_per_revolution", self.outputs_per_revolution,
                                                        "1/rev", 1, 1e6))
+        if not isinstance(self.record, (str, tuple, list)):
+            raise ValueError(f"record = {self.record!r}; allowed: a series name or a tuple of them")
         record = (self.record,) if isinstance(self.record, str) else tuple(self.record)
         bad = [r for r in record if not isinstance(r, str)]
         if bad:
@@ -132,10 +144,10 @@ class LongRun:
 
 def from_keywords(cls, given, name: str, defaults: dict | None = None, **keywords):
     """The settings object of a run: ``given`` if the caller passed one, else ``cls`` built from the
-    keywords that are not ``None`` over ``defaults`` (the model's own defaults).
+    keywords the caller gave (not :data:`DEFAULT`) over ``defaults`` (the model's own defaults).
 
-    A keyword that is not ``None`` and differs from the given object's field is an error naming both."""
-    passed = {k: v for k, v in keywords.items() if v is not None}
+    A keyword given beside an object that differs from the object's field is an error naming both."""
+    passed = {k: v for k, v in keywords.items() if v is not DEFAULT}
     if given is None:
         return cls(**dict(defaults or {}, **passed))
     if not isinstance(given, cls):

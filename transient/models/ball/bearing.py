@@ -45,7 +45,7 @@ from transient.physics.hertz import (HertzContact, gap_rolling_axis, gap_rolling
 from transient.models.ball.track import FrontTrack, UniformTrack
 from transient.checks import check_choice, check_int, check_range
 from transient.results import Result, quantity, record_type, result_type
-from transient.solvers.settings import Integration, Recording, from_keywords
+from transient.solvers.settings import DEFAULT, Integration, Recording, from_keywords
 from transient.units import rpm_to_rad_s
 
 FLOODED, STARVED, PARCHED = "fully flooded", "starved", "parched"
@@ -239,15 +239,15 @@ class ThrustBallBearing:
 
     # the sequence ---------------------------------------------------------------------------------
     def sequence(self, load: float, speed_rpm: float, ambient_film: float, n_passes: int = 200, *,
-                 replenishment: str = "thin_film", grid: str = "front", method: str | None = None,
-                 rtol: float | None = None, atol: float | None = None, dt: float | None = None, n_cells: int = 200,
+                 replenishment: str = "thin_film", grid: str = "front", method: str = DEFAULT,
+                 rtol: float = DEFAULT, atol: float = DEFAULT, dt: float | None = DEFAULT, n_cells: int = 200,
                  refine: float = 1.0,
                  reservoir_distance: float | None = None, bc: str = "reservoir",
                  ridge_fraction: float = 1.0, ridge_width: float | None = None,
                  precursor_film: float | None = None, mobility_film: float = 0.0,
                  front_level: float = 3.0, front_tau: float = 1e-3, edge_width: float | None = None, periodic_tol: float = 1e-4,
-                 stop_at_periodic: bool = True, record_profiles: bool | None = None,
-                 linear_solver: str | None = None, integration: Integration | None = None,
+                 stop_at_periodic: bool = True, record_profiles: bool = DEFAULT,
+                 linear_solver: str = DEFAULT, integration: Integration | None = None,
                  recording: Recording | None = None) -> BallSequence:
         """Inlet and central film ball after ball (module docstring).
 
@@ -263,7 +263,8 @@ class ThrustBallBearing:
             formulation, with the mobility floor ``mobility_film`` if given; Chiu always uses it).
         method, rtol, atol, dt, linear_solver : passed to :func:`transient.solvers.integrate.solve`
             (atol in units of ``h_inf``; dt in units of the levelling time, for ``rk4``); defaults ``"cvode"``,
-            1e-6, 1e-10, None, ``"auto"``. Or ``integration`` (:class:`~transient.solvers.settings.Integration`),
+            1e-6, 1e-10, None, ``"auto"`` (when left out). Or ``integration``
+            (:class:`~transient.solvers.settings.Integration`),
             which these keywords build (a keyword that contradicts it is an error naming both).
         record_profiles : keep the film profile across the track before every pass (``BallSequence.profiles``);
             or ``recording=Recording(record=("profiles",))``.
@@ -288,7 +289,7 @@ class ThrustBallBearing:
         ig = from_keywords(Integration, integration, "integration", dict(method="cvode", atol=1e-10), method=method,
                            rtol=rtol, atol=atol, dt=dt, linear_solver=linear_solver)
         rc = from_keywords(Recording, recording, "recording",
-                           record=None if record_profiles is None else (("profiles",) if record_profiles else ()))
+                           record=DEFAULT if record_profiles is DEFAULT else (("profiles",) if record_profiles else ()))
         rc.check_names(("profiles",))
         record_profiles = "profiles" in rc.record
         check_choice("replenishment", replenishment, REPLENISHMENT)

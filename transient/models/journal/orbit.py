@@ -41,7 +41,7 @@ from transient.models.journal.content_newton import bdf2_newton
 from transient.solvers.integrate.bdf2 import Bdf2Model
 from transient.solvers.integrate import Problem, Stats
 from transient.solvers.longrun import run_long
-from transient.solvers.settings import FORMULATIONS, Integration, LongRun, Recording, from_keywords
+from transient.solvers.settings import DEFAULT, FORMULATIONS, Integration, LongRun, Recording, from_keywords
 from transient.units import rpm_to_hz
 
 #: The content formulation's film state is O(1) in the full film, where the pressure is only its 1/beta_bar
@@ -240,11 +240,12 @@ class JournalOrbit:
                     load=self.load, speed_rpm=self.speed_rpm)
 
     # ---------------------------------------------------------------------------------------------
-    def run(self, revolutions, method=None, rtol=None, atol=None, steps_per_revolution=None,
-            outputs_per_revolution=None, *, record=None, record_from_revolution=None, chunk_revolutions=None,
-            checkpoint=None, resume=None, progress=None, touch_gap=1e-3, y0=None, inner_tolerance=None,
-            start=None, stop=None, time_budget=None, formulation=None, integration: Integration | None = None,
-            recording: Recording | None = None, long_run: LongRun | None = None) -> OrbitResult:
+    def run(self, revolutions, method=DEFAULT, rtol=DEFAULT, atol=DEFAULT, steps_per_revolution=DEFAULT,
+            outputs_per_revolution=DEFAULT, *, record=DEFAULT, record_from_revolution=DEFAULT,
+            chunk_revolutions=DEFAULT, checkpoint=DEFAULT, resume=DEFAULT, progress=DEFAULT, touch_gap=1e-3, y0=None,
+            inner_tolerance=DEFAULT, start=None, stop=DEFAULT, time_budget=DEFAULT, formulation=DEFAULT,
+            integration: Integration | None = None, recording: Recording | None = None,
+            long_run: LongRun | None = None) -> OrbitResult:
         """Integrate ``revolutions`` shaft revolutions from the static equilibrium, from ``y0`` (a state at
         t = 0) or from ``start`` (a previous :class:`OrbitResult`, or ``(time [s], state)``: the run goes on
         from its final state and time, so the unbalance keeps its phase). The first output is the start.
@@ -252,9 +253,10 @@ class JournalOrbit:
         The integration, recording and long-run settings come either as objects -- ``integration``
         (:class:`~transient.solvers.settings.Integration`), ``recording`` (:class:`~transient.solvers.settings.Recording`),
         ``long_run`` (:class:`~transient.solvers.settings.LongRun`) -- or as the keywords below, which build them
-        (a keyword that contradicts a given object is an error naming both). Keywords left at ``None`` take the
-        defaults: ``method="ida"``, ``rtol=1e-6``, ``atol=1e-9``, ``inner_tolerance=1e-6``,
-        ``outputs_per_revolution=100``, ``record=()``, ``record_from_revolution=0``, ``resume=False``.
+        (a keyword that contradicts a given object is an error naming both). Keywords left out take the object's
+        or these defaults: ``method="ida"``, ``rtol=1e-6``, ``atol=1e-9``, ``inner_tolerance=1e-6``,
+        ``outputs_per_revolution=100``, ``record=()``, ``record_from_revolution=0``, ``resume=False``, the
+        others ``None``.
 
         Parameters
         ----------
