@@ -142,7 +142,7 @@ def _add_bulk_jacobian(P, dP, H, cosp, sinp, free, bulk, pos_col, n_extra, data)
 # Kernel arguments travel as named tuples grouped by lifetime (models/journal/scales.py; built once by
 # :class:`~transient.models.journal.film.Film` and the orbit): ``switch`` (Switch, per speed), ``rotor`` (Rotor,
 # per orbit), ``geo`` (CellGeometry, per grid), ``fields`` (Scratch), ``extras`` (RotorColumns), ``fv`` (Operator:
-# the operator's face tables and the Gecim bulk's faces, empty for a Newtonian bulk), ``work`` (ContentScratch).
+# the operator's face tables and the Gecim bulk's faces, None for a Newtonian bulk), ``work`` (ContentScratch).
 
 @njit(cache=True)
 def state_fields(u, X, Y, switch, geo, fields, fv):
