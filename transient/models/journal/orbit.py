@@ -24,7 +24,7 @@ from dataclasses import field
 
 import numpy as np
 
-from transient.checks import check_positive, check_range
+from transient.checks import check_memory, check_positive, check_range
 from transient.models.journal.bearing import JournalBearing, check_speed
 from transient.models.journal.kernels import (N_ROTOR, content_jacobian, content_ode_jacobian, content_residual,
                                               content_rhs, dae_jacobian, dae_residual, ode_jacobian, ode_rhs)
@@ -265,6 +265,30 @@ class JournalOrbit:
                     load=self.load, speed_rpm=self.speed_rpm)
 
     # ---------------------------------------------------------------------------------------------
+    def memory_estimate(self, revolutions, outputs_per_revolution=100, record=(), record_from_revolution=0.0) -> dict:
+        """Bytes a :meth:`run` will need, by part: ``states`` (the integrator's ~40 vectors of the n states),
+        ``jacobian`` (the sparse arrow pattern, ~13 entries per cell, and its LU factors, whose fill on a 2-D
+        grid is taken as nested dissection's ~31/8 n log2 n entries, 12 bytes each) and ``recordings`` (per
+        output: 40 bytes per recorded number while running, then the arrays; fields 8 bytes per cell from
+        ``record_from_revolution`` on)."""
+        n, cells = self.n, self.film.n
+        outputs = revolutions * outputs_per_revolution + 1
+        scalars = 3 + sum(dict(force=2, min_film=1, mass=1, outflow=2).get(k, 0) for k in record)
+        fields = sum(k in FIELD_SERIES for k in record)
+        field_outputs = max(0.0, revolutions - record_from_revolution) * outputs_per_revolution + 1
+        return dict(states=40.0 * 8 * n,
+                    jacobian=12.0 * (13 * cells + 31 / 8 * n * np.log2(max(n, 2))),
+                    recordings=40.0 * scalars * outputs + 8.0 * cells * fields * field_outputs * (fields > 0))
+
+    def check_memory(self, revolutions, outputs_per_revolution=100, record=(), record_from_revolution=0.0):
+        """Refuse (one line, :class:`~transient.checks.MemoryLimitError`) a run whose :meth:`memory_estimate`
+        exceeds half the machine's memory, naming the parameters to change."""
+        check_memory(f"this orbit run ({revolutions:g} rev x {outputs_per_revolution} outputs/rev on "
+                     f"{self.film.n} cells)",
+                     self.memory_estimate(revolutions, outputs_per_revolution, record, record_from_revolution),
+                     "lower revolutions or outputs_per_revolution, record fewer series (record=, "
+                     "record_from_revolution=), or use a coarser grid (continue a long run in parts with start=)")
+
     def run(self, revolutions, method="ida", rtol=1e-6, atol=1e-9, steps_per_revolution=3000,
             outputs_per_revolution=100, record=(), record_from_revolution=0.0, chunk_revolutions=None,
             checkpoint=None, resume=False, progress=None, touch_gap=1e-3, y0=None,
@@ -306,10 +330,13 @@ class JournalOrbit:
             ``y0``, ``start`` and ``final_state`` are in the universal layout either way.
         """
         revolutions = check_positive("revolutions", revolutions, "rev")
-        if method != "rk4":
-            rtol = check_range("rtol", rtol, "-", 1e-14, 1.0)
         if isinstance(record, str):
             record = (record,)
+        if not isinstance(record, (tuple, list)):
+            raise ValueError(f"record = {record!r}; allowed: a tuple of names out of {', '.join(RECORDABLE)}")
+        record_from_revolution = check_range("record_from_revolution", record_from_revolution, "rev", 0.0, 1e12)
+        if method != "rk4":
+            rtol = check_range("rtol", rtol, "-", 1e-14, 1.0)
         bad = [r for r in record if r not in RECORDABLE]
         if bad:
             raise ValueError(f"record: unknown series {bad}; allowed: {RECORDABLE}")
@@ -323,6 +350,10 @@ class JournalOrbit:
         if opr != int(opr):
             raise ValueError(f"outputs_per_revolution = {outputs_per_revolution!r} [1/rev] must be an integer")
         opr = int(opr)
+        if revolutions * opr < 0.5:
+            raise ValueError(f"revolutions = {revolutions!r} [rev] is less than one output interval; allowed: >= "
+                             f"{1 / opr:g} rev at outputs_per_revolution = {opr}")
+        self.check_memory(revolutions, opr, record, record_from_revolution)
         touch_gap = check_range("touch_gap", touch_gap, "-", 0.0, 1.0, high_open=True,
                                 why="(0 turns touch detection off)")
         if chunk_revolutions is None:
@@ -383,6 +414,7 @@ class JournalOrbit:
             what = "journal touches the bearing" if self.bearing.layers is None else "boundary layers touch"
             message = (f"{what} (eccentricity ratio {self.bearing.max_eccentricity_ratio - touch_gap:.4f}) at t = "
                        f"{touched:.6g} s ({touched * self.speed_rpm / 60:.2f} revolutions)")
+        rec.last_y = self.universal_state(out.y) if formulation == "content" else np.array(out.y)  # also when resumed at the end
         r = rec.result(method, out.stats, touched, message, out.t)
         r.success = out.success
         return r
@@ -512,6 +544,10 @@ class _Recorder:
         n = self.o.film.n
         return float(np.hypot(self.last_y[n], self.last_y[n + 1]))
 
+    def times(self) -> np.ndarray:
+        """The output times held, in the run's time tau = omega t (checked against a checkpoint's count)."""
+        return np.array(self.t) * self.o.film.omega
+
     def arrays(self) -> dict:
         """Everything recorded, as plain arrays (checkpoints)."""
         out = dict(t=np.array(self.t), x=np.array(self.x), y=np.array(self.y), last_tau=np.array(self.last_tau))
@@ -522,6 +558,16 @@ class _Recorder:
         return out
 
     def restore(self, a: dict):
+        """Take the arrays of a checkpoint; ``ValueError`` if they do not fit each other."""
+        rows = len(a["t"])
+        if np.ndim(a["t"]) != 1 or not np.all(np.isfinite(a["t"])) or np.any(np.diff(a["t"]) <= 0):
+            raise ValueError("its times are not finite and increasing")
+        for k in ("x", "y", *self.series):
+            if len(a[k]) != rows if k not in FIELD_SERIES else len(a[k]) != len(a[k + "_t"]):
+                raise ValueError(f"{k} has {len(a[k])} rows, t has {rows}")
+        if rows and float(a["last_tau"]) != float(a["t"][-1]) * self.o.film.omega:
+            if not np.isclose(float(a["last_tau"]), float(a["t"][-1]) * self.o.film.omega, rtol=1e-12):
+                raise ValueError("its last output time does not match its last row")
         self.t, self.x, self.y = list(a["t"]), list(a["x"]), list(a["y"])
         self.last_tau = float(a["last_tau"])
         for k in self.series:
