@@ -43,7 +43,7 @@ from transient.physics import film_formulas as hd
 from transient.physics.hertz import (HertzContact, gap_rolling_axis, gap_rolling_axis_slope, hertz_contact,
                                      meniscus_position, reduced_modulus)
 from transient.models.ball.track import FrontTrack, UniformTrack
-from transient.checks import check_int, check_range
+from transient.checks import check_int, check_memory, check_range
 from transient.results import Result, quantity, record_type, result_type
 
 FLOODED, STARVED, PARCHED = "fully flooded", "starved", "parched"
@@ -180,7 +180,7 @@ class ThrustBallBearing:
         check_int("n_balls", self.n_balls, "-", 1, z_max)
         check_range("conformity", self.conformity, "-", 0.5, 1.0, low_open=True, high_open=False,
                     why="(conformity = groove radius / ball diameter)")
-        check_range("youngs_modulus", self.youngs_modulus, "Pa", 0.0, 1e13, low_open=True, high_open=True)
+        check_range("youngs_modulus", self.youngs_modulus, "Pa", 1e6, 1e13, high_open=True, why="(1 MPa to 10 TPa)")
         check_range("poisson_ratio", self.poisson_ratio, "-", 0.0, 0.5, low_open=False, high_open=True)
         check_range("viscosity", self.viscosity, "Pa s", 0.0, 1e4, low_open=True, high_open=True)
         check_range("pressure_viscosity", self.pressure_viscosity, "1/Pa", 1e-9, 1e-6, high_open=True,
@@ -281,8 +281,13 @@ class ThrustBallBearing:
             raise ValueError(f"replenishment = {replenishment!r} must be one of {REPLENISHMENT}")
         if grid not in GRIDS:
             raise ValueError(f"grid = {grid!r} must be one of {GRIDS}")
-        if int(n_passes) != n_passes or n_passes < 1:
-            raise ValueError(f"n_passes = {n_passes!r} [-] must be an integer >= 1")
+        n_passes = check_int("n_passes", n_passes, "-", 1, 1e9)
+        n_cells = check_int("n_cells", n_cells, "-", 8, 1e7)
+        nodes = 401 if grid == "front" else n_cells
+        check_memory(f"this sequence ({n_passes} passes on {nodes} nodes)",
+                     dict(series=8.0 * 8 * n_passes + 60.0 * n_passes,
+                          profiles=8.0 * nodes * n_passes * bool(record_profiles), track=200.0 * 8 * nodes),
+                     "lower n_passes, n_cells or record_profiles=False")
         check_range("ridge_fraction", ridge_fraction, "-", 0.0, 1.0, low_open=False, high_open=False)
         c = self.contact(load)
         ff = self.flooded_film(load, speed_rpm)

@@ -266,28 +266,8 @@ class JournalOrbit:
 
     # ---------------------------------------------------------------------------------------------
     def memory_estimate(self, revolutions, outputs_per_revolution=100, record=(), record_from_revolution=0.0) -> dict:
-        """Bytes a :meth:`run` will need, by part: ``states`` (the integrator's ~40 vectors of the n states),
-        ``jacobian`` (the sparse arrow pattern, ~13 entries per cell, and its LU factors, whose fill on a 2-D
-        grid is taken as nested dissection's ~31/8 n log2 n entries, 12 bytes each) and ``recordings`` (per
-        output: 40 bytes per recorded number while running, then the arrays; fields 8 bytes per cell from
-        ``record_from_revolution`` on)."""
-        n, cells = self.n, self.film.n
-        outputs = revolutions * outputs_per_revolution + 1
-        scalars = 3 + sum(dict(force=2, min_film=1, mass=1, outflow=2).get(k, 0) for k in record)
-        fields = sum(k in FIELD_SERIES for k in record)
-        field_outputs = max(0.0, revolutions - record_from_revolution) * outputs_per_revolution + 1
-        return dict(states=40.0 * 8 * n,
-                    jacobian=12.0 * (13 * cells + 31 / 8 * n * np.log2(max(n, 2))),
-                    recordings=40.0 * scalars * outputs + 8.0 * cells * fields * field_outputs * (fields > 0))
-
-    def check_memory(self, revolutions, outputs_per_revolution=100, record=(), record_from_revolution=0.0):
-        """Refuse (one line, :class:`~transient.checks.MemoryLimitError`) a run whose :meth:`memory_estimate`
-        exceeds half the machine's memory, naming the parameters to change."""
-        check_memory(f"this orbit run ({revolutions:g} rev x {outputs_per_revolution} outputs/rev on "
-                     f"{self.film.n} cells)",
-                     self.memory_estimate(revolutions, outputs_per_revolution, record, record_from_revolution),
-                     "lower revolutions or outputs_per_revolution, record fewer series (record=, "
-                     "record_from_revolution=), or use a coarser grid (continue a long run in parts with start=)")
+        """Bytes a :meth:`run` will need, by part (:func:`orbit_memory`)."""
+        return orbit_memory(self.film.n, revolutions, outputs_per_revolution, record, record_from_revolution)
 
     def run(self, revolutions, method="ida", rtol=1e-6, atol=1e-9, steps_per_revolution=3000,
             outputs_per_revolution=100, record=(), record_from_revolution=0.0, chunk_revolutions=None,
@@ -350,10 +330,10 @@ class JournalOrbit:
         if opr != int(opr):
             raise ValueError(f"outputs_per_revolution = {outputs_per_revolution!r} [1/rev] must be an integer")
         opr = int(opr)
-        if revolutions * opr < 0.5:
+        if revolutions * opr < 1.0 - 1e-9:
             raise ValueError(f"revolutions = {revolutions!r} [rev] is less than one output interval; allowed: >= "
                              f"{1 / opr:g} rev at outputs_per_revolution = {opr}")
-        self.check_memory(revolutions, opr, record, record_from_revolution)
+        check_orbit_memory(self.film.n, revolutions, opr, record, record_from_revolution)
         touch_gap = check_range("touch_gap", touch_gap, "-", 0.0, 1.0, high_open=True,
                                 why="(0 turns touch detection off)")
         if chunk_revolutions is None:
@@ -487,6 +467,30 @@ class JournalOrbit:
             out["relative"].append(abs(err) / thr)
             out["quadrature_relative"].append(abs(flow - trapezoid(net, x=t[s])) / thr)
         return {k: np.array(v) for k, v in out.items()}
+
+
+def orbit_memory(cells, revolutions, outputs_per_revolution=100, record=(), record_from_revolution=0.0) -> dict:
+    """Bytes an orbit run on ``cells`` film cells will need, by part: ``states`` (the integrator's ~40
+    vectors of the n = cells + 4 states), ``jacobian`` (the sparse arrow pattern, ~13 entries per cell, and its
+    LU factors, whose fill on a 2-D grid is taken as nested dissection's ~31/8 n log2 n entries, 12 bytes each)
+    and ``recordings`` (per output: 40 bytes per recorded number while running, then the arrays; fields 8
+    bytes per cell from ``record_from_revolution`` on)."""
+    n = cells + N_ROTOR
+    outputs = revolutions * outputs_per_revolution + 1
+    scalars = 3 + sum(dict(force=2, min_film=1, mass=1, outflow=2).get(k, 0) for k in record)
+    fields = sum(k in FIELD_SERIES for k in record)
+    field_outputs = max(0.0, revolutions - record_from_revolution) * outputs_per_revolution + 1
+    return dict(states=40.0 * 8 * n, jacobian=12.0 * (13 * cells + 31 / 8 * n * np.log2(max(n, 2))),
+                recordings=40.0 * scalars * outputs + 8.0 * cells * fields * field_outputs)
+
+
+def check_orbit_memory(cells, revolutions, outputs_per_revolution=100, record=(), record_from_revolution=0.0):
+    """Refuse (one line, :class:`~transient.checks.MemoryLimitError`) an orbit run whose :func:`orbit_memory`
+    exceeds the stated share of the machine's memory, naming the parameters to change."""
+    check_memory(f"this orbit run ({revolutions:g} rev x {outputs_per_revolution} outputs/rev on {cells} cells)",
+                 orbit_memory(cells, revolutions, outputs_per_revolution, record, record_from_revolution),
+                 "lower revolutions or outputs_per_revolution, record fewer series (record=, record_from_revolution=), "
+                 "or use a coarser grid (a long run can go on in parts with start=)")
 
 
 class _Recorder:

@@ -36,7 +36,7 @@ from functools import cached_property, partial
 import numpy as np
 from scipy.interpolate import RegularGridInterpolator
 
-from transient.checks import check_positive, check_range
+from transient.checks import check_memory, check_positive, check_range
 from transient.models.roller.dry import DryContact, DrySolver, dry_contact
 from transient.models.roller.film import EHLFilm, interpolate_state, solve_steady
 from transient.models.roller.geometry import TaperedRoller
@@ -120,6 +120,8 @@ class RollerContact:
             if grid != "paper":
                 raise ValueError(f"grid = {grid!r}: use 'paper', ('clustered', nx, ny) or (nx, ny)")
             return ("clustered",) + PAPER_GRID
+        if not isinstance(grid, (tuple, list)):
+            raise ValueError(f"grid = {grid!r}: use 'paper', ('clustered', nx, ny) or (nx, ny)")
         grid = tuple(grid)
         if len(grid) == 3 and grid[0] == "clustered":
             kind, nx, ny = grid
@@ -353,6 +355,13 @@ class RollerContact:
         t_end = check_positive("t_end", t_end, "s")
         if self.grid_spec[0] == "uniform":
             raise ValueError("transient needs a clustered grid (dense elasticity for IDA's dense Jacobian)")
+        n_out = int(check_range("n_out", n_out, "-", 2, 1e6))
+        nodes = self.grid.nx * self.grid.ny
+        n = nodes + 1
+        check_memory(f"this transient ({n_out} outputs on {nodes} nodes)",
+                     dict(jacobian=3 * 8.0 * n * n, elasticity=8.0 * nodes * nodes, outputs=3 * 8.0 * n_out * n),
+                     "use a coarser clustered grid (dense elasticity and Jacobian grow as the nodes squared) or "
+                     "lower n_out")
         film = self.film_problem(self.grid)
         s = self.scales
         w_start = self.load

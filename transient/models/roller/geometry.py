@@ -44,7 +44,7 @@ class TaperedRoller:
         check_positive("length", length, "m")
         object.__setattr__(self, "length", float(length))
         if self.dub_off_radius != math.inf:  # math.inf: no dub-off (a straight roller)
-            check_range("dub_off_radius", self.dub_off_radius, "m", 0.0, math.inf, low_open=True, high_open=True,
+            check_range("dub_off_radius", self.dub_off_radius, "m", 1e-6, math.inf, high_open=True,
                         why="(or math.inf: no dub-off)")
         start = 0.5 * length if self.profile_start is None else self.profile_start
         check_range("profile_start", start, "m", 0.0, 0.5 * length)
