@@ -718,6 +718,8 @@ def _numbers(name, v) -> np.ndarray:
         a = np.asarray(v, dtype=float)
     except (TypeError, ValueError):
         raise ValueError(f"{name} = {v!r} is not a number or an array of numbers") from None
+    if a.size == 0:
+        raise ValueError(f"{name} = {v!r} is empty; allowed: a number or a non-empty array of numbers")
     return a
 
 

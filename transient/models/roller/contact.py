@@ -109,7 +109,8 @@ class RollerContact:
         U = check_positive("U", U, "-")
         G = check_range("G", G, "-", 0.0, 1e5)
         W = check_positive("W", W, "-")
-        modulus = check_positive("modulus", modulus, "Pa")
+        modulus = check_range("modulus", modulus, "Pa", 1e6, 1e13, why="(1 MPa to 10 TPa)")
+        speed = check_positive("speed", speed, "m/s")
         rm = roller.mean_radius
         return cls(roller, load=W * modulus * rm * rm, speed=speed, viscosity=U * modulus * rm / speed,
                    pressure_viscosity=G / modulus, modulus=modulus, **kw)

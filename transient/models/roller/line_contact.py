@@ -98,7 +98,12 @@ class LineContact:
             n = int(check_range("grid", grid, "nodes", 11, 100001))
             nodes = np.linspace(lo, hi, n)
         else:
-            nodes = np.asarray(grid, dtype=float)
+            try:
+                nodes = np.asarray(grid, dtype=float)
+            except (TypeError, ValueError):
+                raise ValueError(f"grid = {grid!r}: a number of nodes or the node positions (units of b)") from None
+            if nodes.ndim != 1 or nodes.size < 11 or not np.all(np.diff(nodes) > 0):
+                raise ValueError(f"grid: {nodes.size} node positions; allowed: at least 11, increasing (units of b)")
             if nodes[0] != lo or nodes[-1] != hi:
                 raise ValueError(f"grid nodes must start at the inlet {lo} and end at the outlet {hi} (units of b)")
         self.grid = TensorGrid(nodes)
