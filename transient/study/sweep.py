@@ -82,7 +82,7 @@ def parse_values(spec: str, name: str = "") -> list:
     A list-valued parameter (``grid``) takes lists: ``NAME=[151,21];[301,41]``. Finite numbers only; at
     most :data:`MAX_POINTS` values. ``name`` (the parameter) goes into the error messages."""
     s = spec.strip() if isinstance(spec, str) else spec
-    what = f"--param {name}={spec}" if name else f"values {spec!r}"
+    what = f"--param {name}={spec!r}" if name else f"values {spec!r}"
     if not isinstance(s, str) or not s:
         raise ValueError(f"{what}: no values; expected a:b:n (n values from a to b), a:b (integers), or a,b,c")
     try:

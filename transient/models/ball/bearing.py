@@ -220,7 +220,7 @@ class ThrustBallBearing:
     # contact --------------------------------------------------------------------------------------
     def contact(self, load: float, exact: bool = True) -> HertzContact:
         """Per-ball Hertz contact for the bearing's TOTAL axial load [N] (per ball: load / n_balls)."""
-        check_range("load", load, "N", 0.0, 1e7, low_open=True, high_open=True)
+        check_range("load", load, "N", 1e-6, 1e7, high_open=True)
         return hertz_contact(load / self.n_balls, self.rx, self.ry, self.e_prime, exact=exact)
 
     def flooded_film(self, load: float, speed_rpm: float) -> FloodedFilm:

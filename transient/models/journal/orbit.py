@@ -470,17 +470,17 @@ class JournalOrbit:
 
 
 def orbit_memory(cells, revolutions, outputs_per_revolution=100, record=(), record_from_revolution=0.0) -> dict:
-    """Bytes an orbit run on ``cells`` film cells will need, by part: ``states`` (the integrator's ~40
-    vectors of the n = cells + 4 states), ``jacobian`` (the sparse arrow pattern, ~13 entries per cell, and its
-    LU factors, whose fill on a 2-D grid is taken as nested dissection's ~31/8 n log2 n entries, 12 bytes each)
-    and ``recordings`` (per output: 40 bytes per recorded number while running, then the arrays; fields 8
-    bytes per cell from ``record_from_revolution`` on)."""
-    n = cells + N_ROTOR
+    """Bytes an orbit run on ``cells`` film cells will need, by part: ``model`` (the film's arrays and operator
+    tables, 1.1 kB per cell) and ``solver`` (sparse Jacobian, LU factors, integrator workspace, 5.5 kB per
+    cell) -- both measured (peak resident memory of a 0.02-revolution IDA run on the 151 x 21, 300 x 42 and
+    600 x 84 grids: 4.8, 6.6 and 6.4 kB per cell in all, docs/validation.md) -- and ``recordings`` (per output:
+    40 bytes per recorded number while running, then the arrays; fields 8 bytes per cell from
+    ``record_from_revolution`` on)."""
     outputs = revolutions * outputs_per_revolution + 1
     scalars = 3 + sum(dict(force=2, min_film=1, mass=1, outflow=2).get(k, 0) for k in record)
     fields = sum(k in FIELD_SERIES for k in record)
     field_outputs = max(0.0, revolutions - record_from_revolution) * outputs_per_revolution + 1
-    return dict(states=40.0 * 8 * n, jacobian=12.0 * (13 * cells + 31 / 8 * n * np.log2(max(n, 2))),
+    return dict(model=1100.0 * cells, solver=5500.0 * (cells + N_ROTOR),
                 recordings=40.0 * scalars * outputs + 8.0 * cells * fields * field_outputs)
 
 
