@@ -153,11 +153,16 @@ class Result:
 
 
 def atomic_savez(path, arrays: dict) -> Path:
-    """``np.savez`` to a unique temporary file in the same folder, then rename: a reader (or a crash) never
-    sees a half-written file, and two writers never share a temporary file. The temporary file carries the
-    writer's process id; temporary files of this ``path`` left by processes that no longer run (killed during a
-    write) are removed first. An OS fault (full disk, read-only folder) raises :class:`OSError` naming
-    ``path`` and what to do, and leaves the previous file as it was."""
+    """``np.savez`` of ``arrays`` to ``path`` by :func:`atomic_write`."""
+    return atomic_write(path, lambda fh: np.savez(fh, **arrays))
+
+
+def atomic_write(path, write) -> Path:
+    """``write(fh)`` into a unique temporary file (binary) in the same folder, then rename: a reader (or a
+    crash) never sees a half-written file, and two writers never share a temporary file. The temporary file
+    carries the writer's process id; temporary files of this ``path`` left by processes that no longer run
+    (killed during a write) are removed first. An OS fault (full disk, read-only folder) raises
+    :class:`FileFault` naming ``path`` and what to do, and leaves the previous file as it was."""
     path = Path(path)
     remove_stale_temporaries(path)
     try:
@@ -166,7 +171,7 @@ def atomic_savez(path, arrays: dict) -> Path:
         raise file_error(e, path, "write") from None
     try:
         with os.fdopen(fd, "wb") as fh:
-            np.savez(fh, **arrays)
+            write(fh)
         os.replace(tmp, path)
     except BaseException as e:
         if os.path.exists(tmp):

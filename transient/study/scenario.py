@@ -12,7 +12,6 @@ from __future__ import annotations
 import argparse
 import json
 import os
-import tempfile
 from pathlib import Path
 
 import numpy as np
@@ -97,16 +96,7 @@ class JsonRecord:
         self.save()
 
     def save(self):
-        from transient.results import file_error, remove_stale_temporaries
+        from transient.results import atomic_write
 
-        remove_stale_temporaries(self.path)
-        tmp = None
-        try:
-            fd, tmp = tempfile.mkstemp(prefix=f".{self.path.name}.{os.getpid()}.", suffix=".tmp", dir=self.path.parent)
-            with os.fdopen(fd, "w") as fh:
-                json.dump(self.data, fh, indent=1)
-            os.replace(tmp, self.path)
-        except OSError as e:
-            if tmp is not None and os.path.exists(tmp):
-                os.remove(tmp)
-            raise file_error(e, self.path) from None
+        text = json.dumps(self.data, indent=1).encode()
+        atomic_write(self.path, lambda fh: fh.write(text))

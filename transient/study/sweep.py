@@ -32,7 +32,6 @@ import itertools
 import json
 import os
 import sys
-import tempfile
 import time
 import traceback
 from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
@@ -40,7 +39,7 @@ from pathlib import Path
 
 import numpy as np
 
-from transient.results import Result, code_version, file_error, quantity, read_npz, remove_stale_temporaries, result_type
+from transient.results import Result, atomic_write, code_version, file_error, quantity, read_npz, result_type
 from transient.study.scenario import default_root
 from transient.study.scene import KINDS, Scene
 
@@ -172,21 +171,8 @@ def _write_row(path: Path, row: dict):
     import pyarrow as pa
     import pyarrow.parquet as pq
 
-    remove_stale_temporaries(path)
-    try:
-        fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.{os.getpid()}.", suffix=".tmp", dir=path.parent)
-    except OSError as e:
-        raise file_error(e, path) from None
-    os.close(fd)
-    try:
-        pq.write_table(pa.Table.from_pylist([{k: _plain(v) for k, v in row.items()}]), tmp)
-        os.replace(tmp, path)
-    except BaseException as e:
-        if os.path.exists(tmp):
-            os.remove(tmp)
-        if isinstance(e, OSError):
-            raise file_error(e, path) from None
-        raise
+    table = pa.Table.from_pylist([{k: _plain(v) for k, v in row.items()}])
+    atomic_write(path, lambda fh: pq.write_table(table, fh))
 
 
 def _make_store(store: Path):
@@ -457,18 +443,8 @@ def _write_table(store: Path, rows):
     import pandas as pd
 
     df = pd.DataFrame([{k: _plain(v) for k, v in r.items() if k != "traceback"} for r in rows])
-    for name, write in (("results.parquet", lambda f: df.to_parquet(f, index=False)),
-                        ("results.csv", lambda f: df.to_csv(f, index=False))):
-        path = store / name
-        remove_stale_temporaries(path)
-        tmp = store / f".{name}.{os.getpid()}.tmp"
-        try:
-            write(tmp)
-            os.replace(tmp, path)
-        except OSError as e:
-            if tmp.exists():
-                tmp.unlink()
-            raise file_error(e, path) from None
+    atomic_write(store / "results.parquet", lambda fh: df.to_parquet(fh, index=False))
+    atomic_write(store / "results.csv", lambda fh: fh.write(df.to_csv(index=False).encode()))
 
 
 def _figures(scene, res, store):
