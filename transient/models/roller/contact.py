@@ -106,7 +106,7 @@ class RollerContact:
         """The paper's dimensionless case: ``U = eta0 u/(E' R_m)``, ``G = alpha E'``, ``W = w/(E' R_m^2)``
         (total load) with ``E' = modulus`` [Pa] and R_m from ``roller``; ``speed`` [m/s] fixes the SI
         viscosity ``eta0 = U E' R_m / speed`` (only the product matters with Barus)."""
-        U = check_positive("U", U, "-")
+        U = check_range("U", U, "-", 0.0, 1e-4, low_open=True)
         G = check_range("G", G, "-", 0.0, 1e5)
         W = check_positive("W", W, "-")
         modulus = check_range("modulus", modulus, "Pa", 1e6, 1e13, why="(1 MPa to 10 TPa)")
