@@ -306,7 +306,8 @@ class ThrustBallBearing:
         t_b = self.pass_interval(speed_rpm)
         a_p = c.a
         X = 0.5 * self.ball_diameter if reservoir_distance is None else reservoir_distance
-        check_range("reservoir_distance", X, "m", 2.0 * a_p, 1.0, low_open=True, high_open=True)
+        check_range("reservoir_distance", X, "m", 2.0 * a_p, 1.0, low_open=True, high_open=True,
+                    why=f"(more than twice the contact half-width a = {a_p:.4g} m at load = {load!r} N)")
         w_r = a_p if ridge_width is None else ridge_width
         check_range("ridge_width", w_r, "m", 0.0, X - a_p, high_open=False, low_open=True)
         ew = 0.02 * a_p if edge_width is None else edge_width
