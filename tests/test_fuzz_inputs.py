@@ -305,10 +305,21 @@ def test_ball_sequence(key, value):
     kw = dict(load=30.0, speed_rpm=80.0, ambient_film=100e-6, n_passes=2) | {key: value}
     assume(not (key == "n_passes" and isinstance(value, int) and not isinstance(value, bool) and value > 3))  # valid, long
 
-    def check(s):
-        _finite(s.H_central, s.h_inlet)
+    def run():
+        try:
+            return b.sequence(**kw)
+        except RuntimeError as e:  # a valid bearing whose levelling the solver cannot finish: named, counted apart
+            assert "levelling failed" in str(e), str(e)
+            COUNTS["named non-convergence"] += 1
+            return None
 
-    _outcome(key, lambda: b.sequence(**kw), check)
+    def check(s):
+        if s is None:
+            COUNTS["finite result"] -= 1
+        else:
+            _finite(s.H_central, s.h_inlet)
+
+    _outcome(key, run, check)
 
 
 SCENE_KEYS = [("overrides", "load"), ("overrides", "n_balls"), ("overrides", "speed_rpm"), ("run", "n_passes"),

@@ -209,12 +209,12 @@ class ThrustBallBearing:
     # kinematics -----------------------------------------------------------------------------------
     def entrainment_speed(self, speed_rpm: float) -> float:
         """Mean rolling speed [m/s] ``u = omega d_e / 4`` (each race moves at ``omega/2`` relative to the cage)."""
-        check_range("speed_rpm", speed_rpm, "rpm", 0.0, 1e6, low_open=True, high_open=True)
+        check_range("speed_rpm", speed_rpm, "rpm", 1e-3, 1e6, high_open=True)
         return speed_rpm * 2.0 * math.pi / 60.0 * self.pitch_diameter / 4.0
 
     def pass_interval(self, speed_rpm: float) -> float:
         """Time between two balls over a point of either race [s]: ``4 pi / (Z omega)``."""
-        check_range("speed_rpm", speed_rpm, "rpm", 0.0, 1e6, low_open=True, high_open=True)
+        check_range("speed_rpm", speed_rpm, "rpm", 1e-3, 1e6, high_open=True)
         return 4.0 * math.pi / (self.n_balls * speed_rpm * 2.0 * math.pi / 60.0)
 
     # contact --------------------------------------------------------------------------------------

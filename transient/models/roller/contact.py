@@ -108,9 +108,12 @@ class RollerContact:
         viscosity ``eta0 = U E' R_m / speed`` (only the product matters with Barus)."""
         U = check_range("U", U, "-", 0.0, 1e-4, low_open=True)
         G = check_range("G", G, "-", 0.0, 1e5)
-        W = check_positive("W", W, "-")
+        W = check_range("W", W, "-", 0.0, 1e-2, low_open=True)
         modulus = check_range("modulus", modulus, "Pa", 1e6, 1e13, why="(1 MPa to 10 TPa)")
         speed = check_positive("speed", speed, "m/s")
+        if G / modulus > 1e-6:
+            raise ValueError(f"G = {G!r} [-] with modulus = {modulus!r} [Pa] gives a pressure-viscosity coefficient "
+                             f"G / modulus = {G / modulus:.4g} 1/Pa; allowed: at most 1e-06 1/Pa")
         rm = roller.mean_radius
         return cls(roller, load=W * modulus * rm * rm, speed=speed, viscosity=U * modulus * rm / speed,
                    pressure_viscosity=G / modulus, modulus=modulus, **kw)
