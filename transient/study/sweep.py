@@ -36,7 +36,7 @@ from pathlib import Path
 
 import numpy as np
 
-from transient.results import Result, quantity, result_type
+from transient.results import StatusResult, quantity, result_type
 from transient.study.scene import KINDS, Scene
 
 #: Environment that pins every worker process to one thread
@@ -45,7 +45,7 @@ ONE_THREAD = dict(OMP_NUM_THREADS="1", OPENBLAS_NUM_THREADS="1", MKL_NUM_THREADS
 
 
 @result_type
-class SweepResult(Result):
+class SweepResult(StatusResult):
     """A finished sweep: ``table`` (column -> values, one row per point in grid order), the swept
     parameters, the store folder, how many points were computed, reused from the store and failed (with their
     errors in ``failures``), and the wall time [s]."""
@@ -59,8 +59,6 @@ class SweepResult(Result):
     failed: int = 0
     failures: list = None
     wall_time: float = quantity("s", 0.0)
-    success: bool = True
-    message: str = ""
 
     def to_dataframe(self):
         import pandas as pd

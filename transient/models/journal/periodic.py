@@ -38,7 +38,7 @@ import scipy.sparse.linalg as spla
 
 from transient.checks import check_choice, check_positive, check_range
 from transient.models.journal.kernels import N_ROTOR
-from transient.results import Result, quantity, result_type
+from transient.results import StatusResult, quantity, result_type
 from transient.solvers.integrate import solve
 from transient.solvers.shooting import floquet_multipliers, newton_krylov, newton_picard
 
@@ -56,7 +56,7 @@ def _check_orbit(orbit):
 
 
 @result_type
-class PeriodicOrbit(Result):
+class PeriodicOrbit(StatusResult):
     """One revolution of the periodic unbalance response at ``speed_rpm``.
 
     ``t`` [s] (``outputs_per_revolution + 1`` samples over one period, the unbalance at angle 0 at t = 0),
@@ -86,8 +86,7 @@ class PeriodicOrbit(Result):
     method: str = "shooting"
     wall_time: float = quantity("s", 0.0)
     basis: np.ndarray | None = quantity("-", None, repr=False)
-    success: bool = False
-    message: str = ""
+    success: bool = field(default=False, kw_only=True)
 
     @property
     def harmonic(self) -> np.ndarray:
@@ -110,7 +109,7 @@ class PeriodicOrbit(Result):
 
 
 @result_type
-class ResponseCurve(Result):
+class ResponseCurve(StatusResult):
     """Periodic orbits along a path of speeds (continuation), one row per speed.
 
     ``semi_major`` [m] of the 1x ellipse, ``amplitude_x``, ``amplitude_y`` [m] (half peak-to-peak over the
@@ -141,12 +140,10 @@ class ResponseCurve(Result):
     whirl_amplitude: np.ndarray = quantity("m")
     onset_rpm: float = quantity("rpm", float("nan"))
     orbits: list = field(default_factory=list, repr=False)
-    success: bool = True
-    message: str = ""
 
 
 @result_type
-class WhirlResponse(Result):
+class WhirlResponse(StatusResult):
     """Time-integrated response past the onset (quasi-periodic: oil whirl).
 
     ``t`` [s], ``x``, ``y`` [m] at ``outputs_per_revolution``; ``poincare_x``, ``poincare_y`` [m]: once per
@@ -166,8 +163,6 @@ class WhirlResponse(Result):
     whirl_amplitude: float = quantity("m", float("nan"))
     synchronous_amplitude: float = quantity("m", float("nan"))
     poincare_spread: float = quantity("m", float("nan"))
-    success: bool = True
-    message: str = ""
 
 
 class _Flow:
