@@ -40,6 +40,7 @@ from transient.checks import check_choice, check_positive, check_range
 from transient.models.journal.kernels import N_ROTOR
 from transient.results import StatusResult, quantity, result_type
 from transient.solvers.integrate import solve
+from transient.solvers.settling import settled_stop, settles
 from transient.solvers.shooting import floquet_multipliers, newton_krylov, newton_picard
 
 METHODS = ("shooting", "newton-krylov")
@@ -309,17 +310,14 @@ def _embed_basis(F: _Flow, V) -> np.ndarray:
 
 def _settle(orbit: JournalOrbit, state, rtol, tol, max_revolutions):
     """Time integration from ``state`` until two consecutive once-per-revolution steps of the rotor are below
-    ``tol``; returns (state at the last revolution, revolutions, message, settled)."""
+    ``tol`` (largest component, in C: :func:`~transient.solvers.settling.settles`, checked every two
+    revolutions); returns (state at the last revolution, revolutions, message, settled)."""
     C = orbit.bearing.clearance
-
-    def settled(r):
-        z = np.column_stack([r.x, r.y]) / C
-        d = np.max(np.abs(np.diff(z, axis=0)), axis=1) if len(z) > 1 else np.zeros(0)
-        return "settled" if d.size >= 2 and np.all(d[-2:] <= tol) else None
-
+    criterion = settles(tol, confirm=2, norm="max")
+    rotor = lambda r: np.column_stack([r.x, r.y]) / C  # noqa: E731
     r = orbit.run(int(max_revolutions), y0=state, rtol=rtol, atol=1e-3 * rtol, outputs_per_revolution=1,
-                  chunk_revolutions=2, stop=settled, progress=False)
-    ok = r.success and r.message == "settled"
+                  chunk_revolutions=2, stop=settled_stop(rotor, criterion), progress=False)
+    ok = r.success and criterion(rotor(r)) is not None
     msg = (f"shooting did not converge; settled by time integration in {len(r.t) - 1} revolutions" if ok else
            f"shooting did not converge and time integration did not settle in {len(r.t) - 1} revolutions: {r.message}")
     y = r.final_state.copy()
