@@ -138,7 +138,8 @@ def settled_unbalance_orbit(orbit, rtol, outputs_per_revolution=64, min_revoluti
     change = settle_estimate(X, Y)
     ok = res.success and res.touched_at is None and change <= settle_fraction
     msg = (f"settled: distance from the settled orbit ~{change:.1e} of the amplitude after {X.shape[0]} revolutions"
-           if ok else f"NOT settled to {settle_fraction:g} in {X.shape[0]} revolutions ({s.message or res.message})")
+           if ok else f"NOT settled to {settle_fraction:g} in {X.shape[0]} revolutions (estimate {change:.1e})"
+           + ("" if res.success and res.touched_at is None else f": {res.message}"))
     return UnbalanceOrbit(orbit=res, shape=orbit_shape(X[-1], Y[-1]), revolutions=X.shape[0], settle_estimate=change,
                           n_steps=res.stats.n_steps, wall_s=res.stats.wall_time, success=ok, message=msg)
 
