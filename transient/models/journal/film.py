@@ -25,6 +25,14 @@ from transient.models.journal.scales import (ContentScratch, FilmScales, RotorCo
 from transient.physics.layered import NO_LAYERS, Gecim, LayeredFilm
 from transient.solvers.newton import NewtonError, newton
 
+
+def read_only(u):
+    """A read-only view of the state ``u``: SUNDIALS hands its callbacks read-only arrays, so the steady solves
+    pass the same array type and the kernels compile one signature, not two."""
+    v = np.asarray(u).view()
+    v.setflags(write=False)
+    return v
+
 class FilmBlock:
     """What both films are made of: the ``grid``, the :class:`~.scales.FilmScales` at one speed and the flow law
     (:class:`~transient.physics.layered.LayeredFilm`). A film knows no bearing: it is a block a rotor on several
@@ -76,7 +84,7 @@ class Film(FilmBlock):
                                    np.ascontiguousarray(op.stencil.pos_col_extra), op.stencil.indices, self.scale)
         self.switch = s.switch
         self.bulk = bulk_tables(op, law, s.clearance, s.omega * s.radius) if self.shear_thinning else no_bulk()
-        self.fv = operator_tables(op, self.bulk)
+        self.fv = operator_tables(op, self.bulk if self.shear_thinning else None)  # None: no Gecim code compiled
         self.work = ContentScratch(np.zeros(n), np.zeros(n), np.zeros(n), np.zeros(n), np.zeros(n),
                                    np.ascontiguousarray(op.stencil.indptr, dtype=np.int64))
 
@@ -85,7 +93,7 @@ class Film(FilmBlock):
         """A Gecim bulk's face values at ``(u, X, Y)`` on all cores (:func:`~transient.models.journal.gecim_film.prefetch`),
         so the kernel called next at the same state finds them; nothing for a Newtonian bulk."""
         if self.shear_thinning:
-            state_fields(u, X, Y, self.switch, self.geo, self.fields, self.fv)
+            state_fields(read_only(u), X, Y, self.switch, self.geo, self.fields, self.fv)
             prefetch(self.P, self.H, self.bulk)
 
     def prefetch_content(self, y):
@@ -100,7 +108,7 @@ class Film(FilmBlock):
         ...) of ``u`` in the film's scratch arrays."""
         out = np.empty(self.n) if out is None else out
         self.prefetch(u, X, Y)
-        film_residual(u, X, Y, VX, VY, rate, self.zero if C_ref is None else C_ref, out, self.switch, self.geo,
+        film_residual(read_only(u), X, Y, VX, VY, rate, self.zero if C_ref is None else C_ref, out, self.switch, self.geo,
                       self.fields, self.fv)
         return out
 
@@ -108,7 +116,7 @@ class Film(FilmBlock):
         """CSC data of dG/du (+ the rotor columns if the operator has them), pattern order."""
         data = np.empty(self.op.nnz) if data is None else data
         self.prefetch(u, X, Y)
-        film_jacobian(u, X, Y, VX, VY, rate, data, self.switch, self.geo, self.fields, self.extras, self.fv)
+        film_jacobian(read_only(u), X, Y, VX, VY, rate, data, self.switch, self.geo, self.fields, self.extras, self.fv)
         return data
 
     def solve(self, X, Y, VX=0.0, VY=0.0, u0=None, tol=1e-10, max_iter=400):

@@ -31,7 +31,8 @@ Groove cells are held at the supply pressure (``u' = 0``).
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
+from numba import njit, types
+from numba.extending import overload
 
 from transient.physics.cavitation import elrod_content, elrod_inverse, sharp_fixed_cells, softplus_pressure
 from transient.fv.reynolds import jacobian_kernel, residual_kernel, scale_rows
@@ -97,10 +98,51 @@ def rotor_accelerations(tau, fx, fy, kappa, wbar, ebar):
     return kappa * fx + wbar + ebar * np.cos(tau), kappa * fy + ebar * np.sin(tau)
 
 
+# A Newtonian film's ``fv.bulk`` is None: the three helpers below are typed on it, so numba compiles the Gecim
+# flux (gecim_film, physics.layered) only into the kernels of a Gecim film.
+
+def gecim_bulk(bulk):
+    """True for the faces of a Gecim bulk (``fv.bulk``); False, at compile time, for None (Newtonian bulk)."""
+    return bulk is not None and bulk.cells.shape[0] > 0
+
+
+def add_bulk_residual(P, H, free, bulk, R):
+    """:func:`~transient.models.journal.gecim_film.bulk_residual` of a Gecim bulk; nothing for None."""
+    if gecim_bulk(bulk):
+        bulk_residual(P, H, free, bulk, R)
+
+
+def add_bulk_jacobian(P, dP, H, cosp, sinp, free, bulk, pos_col, n_extra, data):
+    """:func:`~transient.models.journal.gecim_film.bulk_jacobian` of a Gecim bulk; nothing for None."""
+    if gecim_bulk(bulk):
+        bulk_jacobian(P, dP, H, cosp, sinp, free, bulk, pos_col, n_extra, data)
+
+
+@overload(gecim_bulk, jit_options={"cache": True})
+def _gecim_bulk(bulk):
+    if isinstance(bulk, types.NoneType):
+        return lambda bulk: False
+    return lambda bulk: bulk.cells.shape[0] > 0
+
+
+@overload(add_bulk_residual, jit_options={"cache": True})
+def _add_bulk_residual(P, H, free, bulk, R):
+    if isinstance(bulk, types.NoneType):
+        return lambda P, H, free, bulk, R: None
+    return add_bulk_residual
+
+
+@overload(add_bulk_jacobian, jit_options={"cache": True})
+def _add_bulk_jacobian(P, dP, H, cosp, sinp, free, bulk, pos_col, n_extra, data):
+    if isinstance(bulk, types.NoneType):
+        return lambda P, dP, H, cosp, sinp, free, bulk, pos_col, n_extra, data: None
+    return add_bulk_jacobian
+
+
 # Kernel arguments travel as named tuples grouped by lifetime (models/journal/scales.py; built once by
 # :class:`~transient.models.journal.film.Film` and the orbit): ``switch`` (Switch, per speed), ``rotor`` (Rotor,
 # per orbit), ``geo`` (CellGeometry, per grid), ``fields`` (Scratch), ``extras`` (RotorColumns), ``fv`` (Operator:
-# the operator's face tables and the Gecim bulk's faces, empty for a Newtonian bulk), ``work`` (ContentScratch).
+# the operator's face tables and the Gecim bulk's faces, None for a Newtonian bulk), ``work`` (ContentScratch).
 
 @njit(cache=True)
 def state_fields(u, X, Y, switch, geo, fields, fv):
@@ -117,12 +159,10 @@ def _stencil_residual(u, X, Y, switch, geo, fields, fv, R):
     H, P, dP, C, D, dD, k, c, zero, _ = fields
     faces, boundary, cells, face_k, bulk = fv
     state_fields(u, X, Y, switch, geo, fields, fv)
-    gecim = bulk.cells.shape[0] > 0
-    if gecim:  # the Poiseuille flux is the Gecim bulk's (gecim_film), not k grad P
+    if gecim_bulk(bulk):  # the Poiseuille flux is the Gecim bulk's (gecim_film), not k grad P
         k[:] = 0.0
     residual_kernel(u, P, C, k, k, c, zero, True, faces, boundary, cells, face_k, R)
-    if gecim:
-        bulk_residual(P, H, cells.free, bulk, R)
+    add_bulk_residual(P, H, cells.free, bulk, R)
 
 
 @njit(cache=True)
@@ -135,14 +175,12 @@ def _stencil_jacobian(u, X, Y, switch, geo, fields, extras, fv, data):
     state_fields(u, X, Y, switch, geo, fields, fv)
     if dk_dq.shape[0] > 0:
         position_derivatives(H, cosp, sinp, layer_gap, darcy, dk_dq, dc_dq)
-    gecim = bulk.cells.shape[0] > 0
-    if gecim:
+    if gecim_bulk(bulk):
         k[:] = 0.0
         dk_dq[:] = 0.0
     jacobian_kernel(P, dP, C, D, k, zero, k, zero, c, zero, dk_dq, dk_dq, dc_dq, no_dq, True,
                     faces, boundary, cells, face_k, pos_col, data)
-    if gecim:
-        bulk_jacobian(P, dP, H, cosp, sinp, cells.free, bulk, pos_col, dk_dq.shape[0], data)
+    add_bulk_jacobian(P, dP, H, cosp, sinp, cells.free, bulk, pos_col, dk_dq.shape[0], data)
 
 
 @njit(cache=True)

@@ -28,6 +28,7 @@ import numpy as np
 
 from transient.checks import ATOL_FLOOR, ATOL_WHY, check_choice, check_positive, check_range, check_rtol
 from transient.models.journal.bearing import JournalBearing, check_speed
+from transient.models.journal.film import read_only
 from transient.models.journal.flows import film_flows
 from transient.models.journal.kernels import (N_ROTOR, content_jacobian, content_ode_jacobian, content_residual,
                                               content_rhs, dae_jacobian, dae_residual, ode_jacobian, ode_rhs)
@@ -208,7 +209,7 @@ class JournalOrbit:
             rhs, jac_rhs, residual, jac_residual = (_prefetching(f, cb, formulation) for cb in
                                                     (rhs, jac_rhs, residual, jac_residual))
         yp0 = np.empty(self.n)
-        rhs(tau0, y0, yp0)
+        rhs(tau0, read_only(y0), yp0)  # the array type SUNDIALS passes: one compiled signature
         events = None
         if touch_gap > 0:
             limit = (self.bearing.max_eccentricity_ratio - touch_gap) ** 2

@@ -98,13 +98,13 @@ class Cells(NamedTuple):
 class Operator(NamedTuple):
     """The finite-volume operator as the kernels take it: face, boundary-face and cell tables
     (:data:`transient.fv.reynolds.FACE_TUPLES`), per-face conductances (empty: the cells' mean) and the Gecim
-    bulk's faces (empty for a Newtonian bulk)."""
+    bulk's faces (None for a Newtonian bulk: the kernels then compile without the Gecim flux)."""
 
     faces: tuple
     boundary: tuple
     cells: Cells
     face_k: tuple
-    bulk: BulkFaces
+    bulk: BulkFaces | None
 
 
 class Scratch(NamedTuple):
@@ -165,6 +165,6 @@ def cell_geometry(grid) -> CellGeometry:
                         np.ascontiguousarray(grid.area))
 
 
-def operator_tables(op, bulk: BulkFaces) -> Operator:
+def operator_tables(op, bulk: BulkFaces | None) -> Operator:
     """The :class:`Operator` of a :class:`~transient.fv.reynolds.ReynoldsOperator` and a Gecim bulk's faces."""
     return Operator(op.faces, op.boundary, Cells(*op.cells), op.no_face_k, bulk)
