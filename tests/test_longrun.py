@@ -131,4 +131,4 @@ def test_orbit_checkpoint_names_a_changed_run_setting(tmp_path):
     with pytest.raises(CheckpointError, match="unbalance"):
         other.run(1.0, outputs_per_revolution=8, chunk_revolutions=0.5, checkpoint=path, resume=True)
     assert not any(f.name.endswith(".tmp") for f in tmp_path.iterdir())
-    assert os.path.exists(str(path) + ".lock")
+    assert not os.path.exists(str(path) + ".lock")  # a finished run removes its lock file

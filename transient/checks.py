@@ -165,3 +165,50 @@ def check_times(name, value) -> np.ndarray:
         raise ValueError(f"{name} must be strictly increasing [s], got {name}[{k + 1}] = {_show(t[k + 1])} <= "
                          f"{name}[{k}] = {_show(t[k])}")
     return t
+
+
+# --------------------------------------------------------------------------------------------------
+# memory: estimated before a run, refused beyond a stated share of the machine
+# --------------------------------------------------------------------------------------------------
+
+#: share of the machine's physical memory a run may plan to use (and a loaded file may expand to)
+MEMORY_SHARE = 0.5
+
+
+class MemoryLimitError(ValueError):
+    """A run (or a file) that would need more than :data:`MEMORY_SHARE` of the machine's memory."""
+
+
+def machine_memory() -> int:
+    """Physical memory of this machine [bytes] (the environment variable ``TRANSIENT_MEMORY_BYTES``
+    overrides it, e.g. to plan for a smaller machine)."""
+    import os
+
+    if os.environ.get("TRANSIENT_MEMORY_BYTES"):
+        return int(float(os.environ["TRANSIENT_MEMORY_BYTES"]))
+    try:
+        return os.sysconf("SC_PHYS_PAGES") * os.sysconf("SC_PAGE_SIZE")
+    except (ValueError, OSError, AttributeError):
+        return 8 * 1024 ** 3
+
+
+def memory_limit() -> int:
+    """The most bytes a run may plan for: :data:`MEMORY_SHARE` of :func:`machine_memory`."""
+    return int(MEMORY_SHARE * machine_memory())
+
+
+def _gb(n) -> str:
+    return f"{n / 1e9:.3g} GB" if n >= 1e8 else f"{n / 1e6:.3g} MB"
+
+
+def check_memory(what: str, parts: dict, advice: str) -> float:
+    """Refuse, before anything is allocated, a run whose estimated memory (``parts``: name -> bytes, e.g.
+    states, Jacobian, recordings) exceeds :data:`MEMORY_SHARE` of this machine's memory: one line naming the
+    estimate by part and ``advice`` (the parameters to change). Returns the estimate [bytes]."""
+    total = float(sum(parts.values()))
+    limit = memory_limit()
+    if not math.isfinite(total) or total > limit:
+        shown = ", ".join(f"{name} {_gb(v)}" for name, v in parts.items())
+        raise MemoryLimitError(f"{what} would need about {_gb(total)} of memory ({shown}), more than "
+                               f"{MEMORY_SHARE:.0%} of this machine's {_gb(machine_memory())}; {advice}")
+    return total

@@ -6,14 +6,18 @@
     transient sweep SCENE.toml --param NAME=a:b:n [--param ...] [--workers N | --scheduler ADDRESS]
                                            [--store DIR]
                                            sweep it (grid of the values; resumable; table + figures in DIR)
+
+Outputs go under one root, ./transient_out (or $TRANSIENT_OUT), never beside the sources: a scenario into
+ROOT/NAME/ (its --quick run into ROOT/NAME/quick/), a scene into ROOT/SCENE/, a sweep into ROOT/sweep_KIND/.
     transient bench NAME [--out DIR] [--quick]
                                            run a benchmark; its section, figures and raw numbers go to DIR
                                            (default ./bench_results; ``--out docs`` updates the committed tables)
     transient bench --list                 the benchmarks and what each measures
     transient --version
 
-Mistakes (a missing file, an unknown benchmark, an out-of-range parameter) print one line naming what is
-wrong; Ctrl-C stops with one line (long runs say where their checkpoint is).
+Mistakes (a missing file, an unknown benchmark, an out-of-range parameter, a full or read-only disk) print
+one line naming what is wrong; Ctrl-C stops with one line (long runs say where their checkpoint is: run the
+same command again to continue).
 """
 
 from __future__ import annotations
@@ -40,8 +44,9 @@ def _parser() -> argparse.ArgumentParser:
     p_sweep.add_argument("--param", action="append", default=[], metavar="NAME=VALUES",
                          help="swept parameter: NAME=a:b:n (n values), NAME=a:b (integers), NAME=a,b,c")
     p_sweep.add_argument("--workers", type=int, help="local worker processes (default: the cores)")
-    p_sweep.add_argument("--scheduler", help="address of a Dask scheduler (instead of the local pool)")
-    p_sweep.add_argument("--store", help="folder of the results (default: sweep_KIND)")
+    p_sweep.add_argument("--scheduler", help="address of a Dask scheduler (instead of the local pool); Dask "
+                                             "exchanges pickled tasks, so use only a scheduler you trust")
+    p_sweep.add_argument("--store", help="folder of the results (default: ./transient_out/sweep_KIND)")
     p_bench = sub.add_parser("bench", help="run a benchmark and write its section, figures and numbers")
     p_bench.add_argument("name", nargs="?", help="benchmark name (see --list)")
     p_bench.add_argument("--list", action="store_true", help="list the benchmarks")
@@ -56,8 +61,11 @@ def _run_scenario(path: Path, args: list[str]) -> int:
     if path.suffix == ".toml":
         from transient.study.scene import load_scene, run_scene
 
+        from transient.study.scenario import default_root
+
+        where = default_root() / path.stem
         ap = argparse.ArgumentParser(prog=f"transient run {path}")
-        ap.add_argument("--out", default=str(path.with_suffix("")) + "_out", help="output folder")
+        ap.add_argument("--out", default=str(where), help=f"output folder (default: {where})")
         a = ap.parse_args(args)
         _, scalars = run_scene(load_scene(path), a.out)
         for k, v in scalars.items():
@@ -71,14 +79,9 @@ def _run_scenario(path: Path, args: list[str]) -> int:
 
 def _sweep(a) -> int:
     from transient.study.scene import load_scene
-    from transient.study.sweep import parse_values, sweep
+    from transient.study.sweep import parse_params, sweep
 
-    values = {}
-    for spec in a.param:
-        name, sep, vals = spec.partition("=")
-        if not sep:
-            raise ValueError(f"--param {spec!r}: expected NAME=VALUES")
-        values[name.strip()] = parse_values(vals)
+    values = parse_params(a.param)
     res = sweep(load_scene(a.scene), values, store=a.store, workers=a.workers, scheduler=a.scheduler)
     print(res.message)
     for f in res.failures:
@@ -112,13 +115,27 @@ def main(argv: list[str] | None = None) -> int:
             return _sweep(a)
         return _bench(a, parser)
     except KeyboardInterrupt as e:  # a long run's Interrupted says where its checkpoint is
-        print(f"transient: {e}" if str(e) else "transient: interrupted", file=sys.stderr)
+        text = getattr(e, "command_line", "") or str(e)
+        print(f"transient: {text}" if text else "transient: interrupted", file=sys.stderr)
         return 130
-    except (ValueError, TypeError, FileNotFoundError, RuntimeError, ImportError) as e:
+    except (ValueError, TypeError, OSError, RuntimeError, ImportError, MemoryError) as e:
         if a.traceback:
             raise
-        print(f"transient: error: {e}", file=sys.stderr)
+        print(f"transient: error: {_one_line(e)}", file=sys.stderr)
         return 2
+
+
+def _one_line(e: BaseException) -> str:
+    """The error as one line; an OS error without our wording gets its path and errno's reason."""
+    if isinstance(e, MemoryError) and not str(e):
+        return "out of memory; use a coarser grid or fewer outputs"
+    if isinstance(e, OSError) and e.filename is not None:
+        from transient.results import file_error
+
+        text = str(file_error(e, e.filename, "use"))
+    else:
+        text = str(e) or type(e).__name__
+    return " ".join(text.split())
 
 
 if __name__ == "__main__":

@@ -15,16 +15,20 @@ crafted file cannot run code, and rebuilds only classes registered here (subclas
 from __future__ import annotations
 
 import dataclasses
+import errno
+import hashlib
 import json
 import math
 import os
 import tempfile
+import zipfile
 from pathlib import Path
 from typing import Any, ClassVar
 
 import numpy as np
 
 from transient._version import __version__
+from transient.checks import MEMORY_SHARE, memory_limit
 
 FORMAT = "transient-result/1"
 _REGISTRY: dict[str, type] = {}
@@ -142,58 +146,311 @@ class Result:
         for f in dataclasses.fields(self):
             meta["fields"][f.name] = _encode(getattr(self, f.name), f.name, arrays)
         arrays["__meta__"] = np.array(json.dumps(meta, allow_nan=True))
-        path.parent.mkdir(parents=True, exist_ok=True)
+        try:
+            path.parent.mkdir(parents=True, exist_ok=True)
+        except OSError as e:
+            raise file_error(e, path.parent, "create the folder") from None
         return atomic_savez(path, arrays)
 
 
 def atomic_savez(path, arrays: dict) -> Path:
-    """``np.savez`` to a unique temporary file in the same folder, then rename: a reader (or a crash) never
-    sees a half-written file, and two writers never share a temporary file."""
+    """``np.savez`` of ``arrays`` to ``path`` by :func:`atomic_write`."""
+    return atomic_write(path, lambda fh: np.savez(fh, **arrays))
+
+
+def atomic_write(path, write) -> Path:
+    """``write(fh)`` into a unique temporary file (binary) in the same folder, then rename: a reader (or a
+    crash) never sees a half-written file, and two writers never share a temporary file. The temporary file
+    carries the writer's process id; temporary files of this ``path`` left by processes that no longer run
+    (killed during a write) are removed first. An OS fault (full disk, read-only folder) raises
+    :class:`FileFault` naming ``path`` and what to do, and leaves the previous file as it was."""
     path = Path(path)
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
+    remove_stale_temporaries(path)
+    try:
+        fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.{os.getpid()}.", suffix=".tmp", dir=path.parent)
+    except OSError as e:
+        raise file_error(e, path, "write") from None
     try:
         with os.fdopen(fd, "wb") as fh:
-            np.savez(fh, **arrays)
+            write(fh)
         os.replace(tmp, path)
-    except BaseException:
+    except BaseException as e:
         if os.path.exists(tmp):
             os.remove(tmp)
+        if isinstance(e, OSError):
+            raise file_error(e, path, "write") from None
         raise
     return path
 
 
-def load_result(path) -> Result:
-    """Read a result written by :meth:`Result.save` (no pickle; only this package's result types, registered when
-    ``transient`` is imported, which importing this module already did)."""
+def remove_stale_temporaries(path) -> int:
+    """Remove the temporary files ``.NAME.PID.*.tmp`` of ``path`` whose writing process no longer runs (on
+    this machine); returns how many were removed. In-flight files of live writers are left alone."""
     path = Path(path)
+    removed = 0
     try:
-        with np.load(path, allow_pickle=False) as z:
-            data = {k: z[k] for k in z.files}
-    except FileNotFoundError:
+        candidates = list(path.parent.glob(f".{path.name}.*.tmp"))
+    except OSError:
+        return 0
+    for f in candidates:
+        pid = f.name[len(path.name) + 2:].split(".", 1)[0]
+        if not pid.isdigit() or _alive(int(pid)):
+            continue
+        try:
+            f.unlink()
+            removed += 1
+        except OSError:
+            pass
+    return removed
+
+
+def _alive(pid: int) -> bool:
+    if pid == os.getpid():
+        return True
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except PermissionError:
+        return True
+    return True
+
+
+_ADVICE = {errno.ENOSPC: "the disk is full: free space or choose a folder on another disk",
+           errno.EDQUOT: "the disk quota is exceeded: free space or choose a folder on another disk",
+           errno.EROFS: "the file system is read-only: choose a writable folder",
+           errno.EACCES: "permission denied: choose a folder you can write to",
+           errno.EPERM: "permission denied: choose a folder you can write to",
+           errno.ENOTDIR: "a part of the path is a file, not a folder: choose another path",
+           errno.EEXIST: "a file of that name is in the way: choose another path or remove the file",
+           errno.EISDIR: "it is a folder: choose a file name",
+           errno.ENOENT: "the folder does not exist: create it or choose another path"}
+
+
+class FileFault(OSError):
+    """An OS fault on a file, in one line: the path, the OS's reason and what to do (``errno`` kept)."""
+
+    def __str__(self):
+        return str(self.strerror)
+
+
+def file_error(e: OSError, path, action: str = "write") -> FileFault:
+    """A one-line :class:`FileFault` of the same errno naming ``path``, the OS's reason and what to do."""
+    if isinstance(e, FileFault):
+        return e
+    reason = e.strerror or str(e)
+    advice = _ADVICE.get(e.errno, "check the path and the disk")
+    return FileFault(e.errno, f"cannot {action} {path}: {reason}; {advice}")
+
+
+# --------------------------------------------------------------------------------------------------
+# reading .npz files safely: declared shapes and dtypes, a size cap, no pickle
+# --------------------------------------------------------------------------------------------------
+
+def load_cap() -> int:
+    """The most bytes a loaded file may expand to: :data:`~transient.checks.MEMORY_SHARE` of the machine's
+    memory (:func:`~transient.checks.machine_memory`)."""
+    return memory_limit()
+
+
+def npz_headers(path) -> dict:
+    """``name -> (dtype, shape)`` of every array of an ``.npz`` file, read from the ``.npy`` headers only
+    (nothing is decompressed beyond the headers). Raises ``ValueError`` on a foreign or damaged file."""
+    out = {}
+    with zipfile.ZipFile(path) as zf:
+        for info in zf.infolist():
+            if not info.filename.endswith(".npy"):
+                raise ValueError(f"member {info.filename!r} is not an array")
+            with zf.open(info) as fh:
+                version = np.lib.format.read_magic(fh)
+                if version == (1, 0):
+                    shape, fortran, dtype = np.lib.format.read_array_header_1_0(fh)
+                elif version == (2, 0):
+                    shape, fortran, dtype = np.lib.format.read_array_header_2_0(fh)
+                else:
+                    raise ValueError(f"array {info.filename!r}: .npy version {version}")
+            out[info.filename[:-4]] = (dtype, tuple(shape))
+    return out
+
+
+def read_npz(path, *, wanted=None, declared: dict | None = None, cap: int | None = None, what: str = "file") -> dict:
+    """Read arrays of an ``.npz`` file after checking their headers: no object arrays, every ``declared``
+    name present with its declared ``(dtype, shape)``, and the arrays read (``wanted``: names, default all)
+    together at most ``cap`` bytes once expanded (default :func:`load_cap`). Raises ``ValueError`` (without
+    the path: callers name the file) saying what is wrong."""
+    cap = load_cap() if cap is None else int(cap)
+    heads = npz_headers(path)
+    names = list(heads) if wanted is None else [n for n in wanted]
+    for name in names:
+        if name not in heads:
+            raise ValueError(f"array {name!r} missing")
+    total = 0
+    for name in names:
+        dtype, shape = heads[name]
+        if dtype.hasobject:
+            raise ValueError(f"array {name!r} holds Python objects (refused: loading them would need pickle)")
+        if declared and declared.get(name) is not None:
+            d_dtype, d_shape = declared[name]
+            if np.dtype(d_dtype) != dtype or tuple(d_shape) != shape:
+                raise ValueError(f"array {name!r} is {dtype.str} {list(shape)} but declared {np.dtype(d_dtype).str} "
+                                 f"{list(d_shape)}")
+        total += int(np.prod(shape, dtype=np.float64)) * dtype.itemsize
+    if total > cap:
+        raise ValueError(f"its arrays expand to {total / 1e9:.3g} GB, more than the cap of {cap / 1e9:.3g} GB "
+                         f"({MEMORY_SHARE:.0%} of this machine's memory)")
+    with np.load(path, allow_pickle=False) as z:
+        return {name: z[name] for name in names}
+
+
+def _content_digest(arrays: dict) -> str:
+    """SHA-256 over the names, dtypes, shapes and bytes of ``arrays`` (in name order)."""
+    h = hashlib.sha256()
+    for name in sorted(arrays):
+        a = np.ascontiguousarray(arrays[name])
+        h.update(f"{name}|{a.dtype.str}|{a.shape}|".encode())
+        h.update(a.tobytes())
+    return h.hexdigest()
+
+
+_CODE_VERSION = None
+
+
+def code_version() -> str:
+    """The package version and a hash of its source files (any code change changes it)."""
+    global _CODE_VERSION
+    if _CODE_VERSION is None:
+        h = hashlib.sha256()
+        root = Path(__file__).parent  # the package's folder
+        for f in sorted(root.rglob("*.py")):
+            h.update(str(f.relative_to(root)).encode())
+            h.update(f.read_bytes())
+        _CODE_VERSION = f"{__version__}+{h.hexdigest()[:12]}"
+    return _CODE_VERSION
+
+
+def load_result(path, *, max_bytes: int | None = None) -> Result:
+    """Read a result written by :meth:`Result.save` (no pickle; only this package's result types).
+
+    Before any array is decompressed, the metadata is checked (a JSON object of this format naming a
+    registered class, with its ``fields``) and every array's dtype and shape read from its header are checked
+    against the metadata's declaration and, all together, against ``max_bytes`` (default: half the machine's
+    memory); arrays the metadata does not name are not read. Numeric fields (those with a unit) must hold
+    numbers and the time axis must be one-dimensional. Anything else raises :class:`ResultFileError` naming
+    the file (the result types are registered when ``transient`` is imported, which importing this module already
+    did)."""
+
+    path = Path(path)
+    if not path.exists():
+        raise FileNotFoundError(f"result file not found: {path}")
+    try:
+        heads = npz_headers(path)
+        if "__meta__" not in heads:
+            raise ResultFileError(f"{path}: not a transient result file (no __meta__ entry)")
+        dtype, shape = heads["__meta__"]
+        if dtype.kind != "U" or shape != () or dtype.itemsize > 64 * 1024 ** 2:
+            raise ResultFileError(f"{path}: not a transient result file (__meta__ is {dtype.str} {list(shape)})")
+        meta_text = str(read_npz(path, wanted=["__meta__"])["__meta__"])
+    except ResultFileError:
         raise
     except Exception as e:  # zipfile / numpy errors on a truncated or foreign file
-        raise ResultFileError(f"{path}: not a readable result file ({type(e).__name__}: {e})") from None
-    if "__meta__" not in data:
-        raise ResultFileError(f"{path}: not a transient result file (no __meta__ entry)")
+        raise ResultFileError(f"{path}: not a readable result file ({type(e).__name__}: {_one_line(e)})") from None
     try:
-        meta = json.loads(str(data.pop("__meta__")))
-    except ValueError as e:
-        raise ResultFileError(f"{path}: corrupted metadata ({e})") from None
+        meta = json.loads(meta_text)
+    except (ValueError, RecursionError) as e:
+        raise ResultFileError(f"{path}: corrupted metadata ({type(e).__name__}: {_one_line(e)})") from None
+    if not isinstance(meta, dict):
+        raise ResultFileError(f"{path}: corrupted metadata (a JSON {type(meta).__name__}, not an object)")
     if meta.get("format") != FORMAT:
-        raise ResultFileError(f"{path}: unknown format {meta.get('format')!r} (expected {FORMAT})")
-    cls = _REGISTRY.get(meta.get("class", ""))
+        raise ResultFileError(f"{path}: unknown format {_short_repr(meta.get('format'))} (expected {FORMAT})")
+    cls = _REGISTRY.get(meta.get("class")) if isinstance(meta.get("class"), str) else None
     if cls is None:
-        raise ResultFileError(f"{path}: unknown result type {meta.get('class')!r}")
-    kwargs = {}
-    names = {f.name for f in dataclasses.fields(cls) if f.init}
-    for name, enc in meta["fields"].items():
-        if name in names:
-            kwargs[name] = _decode(enc, data, path)
-    obj = cls(**kwargs)
-    for f in dataclasses.fields(cls):  # non-init fields (derived at construction) are set as saved
-        if not f.init and f.name in meta["fields"]:
-            setattr(obj, f.name, _decode(meta["fields"][f.name], data, path))
+        raise ResultFileError(f"{path}: unknown result type {_short_repr(meta.get('class'))}")
+    fields = meta.get("fields")
+    if not isinstance(fields, dict):
+        raise ResultFileError(f"{path}: corrupted metadata (no 'fields' object)")
+    try:
+        declared = {}
+        _declared_arrays(fields, declared, 0)
+        missing = [name for name in declared if name not in heads]
+        if missing:
+            raise ValueError(f"array {missing[0]!r} missing")
+        data = read_npz(path, wanted=list(declared), declared=declared, cap=max_bytes)
+        kwargs = {}
+        init = {f.name for f in dataclasses.fields(cls) if f.init}
+        for name, enc in fields.items():
+            if name in init:
+                kwargs[name] = _decode(enc, data, path)
+        _check_fields(cls, kwargs)
+        obj = cls(**kwargs)
+        for f in dataclasses.fields(cls):  # non-init fields (derived at construction) are set as saved
+            if not f.init and f.name in fields:
+                setattr(obj, f.name, _decode(fields[f.name], data, path))
+    except ResultFileError:
+        raise
+    except (ValueError, TypeError, KeyError, AttributeError, IndexError, RecursionError) as e:
+        raise ResultFileError(f"{path}: not a valid {cls.__name__} file ({type(e).__name__}: {_one_line(e)})") from None
     return obj
+
+
+def _one_line(e) -> str:
+    text = " ".join(str(e).split())
+    return text if len(text) <= 200 else text[:197] + "..."
+
+
+def _short_repr(v) -> str:
+    text = repr(v)
+    return text if len(text) <= 60 else text[:57] + "..."
+
+
+_MAX_DEPTH = 32
+
+
+def _declared_arrays(enc, out: dict, depth: int):
+    """Collect ``name -> (dtype, shape)`` of every array the encoded fields declare (``None`` if the file is
+    older and declares no dtype/shape); ``ValueError`` on a malformed encoding or nesting deeper than 32."""
+    if depth > _MAX_DEPTH:
+        raise ValueError(f"fields nested deeper than {_MAX_DEPTH} levels")
+    if isinstance(enc, dict) and "array" in enc:
+        name = enc["array"]
+        if not isinstance(name, str):
+            raise ValueError(f"array name {_short_repr(name)} is not a string")
+        if "dtype" in enc or "shape" in enc:
+            dtype, shape = enc.get("dtype"), enc.get("shape")
+            if not isinstance(dtype, str) or not isinstance(shape, list) or not all(
+                    isinstance(n, int) and not isinstance(n, bool) and n >= 0 for n in shape):
+                raise ValueError(f"array {name!r}: malformed declaration dtype={_short_repr(dtype)}, "
+                                 f"shape={_short_repr(shape)}")
+            out[name] = (np.dtype(dtype), tuple(shape))
+        else:
+            out[name] = None
+        return
+    if isinstance(enc, dict):
+        for v in enc.values():
+            if isinstance(v, (dict, list)):
+                _declared_arrays(v, out, depth + 1)
+    elif isinstance(enc, list):
+        for v in enc:
+            if isinstance(v, (dict, list)):
+                _declared_arrays(v, out, depth + 1)
+
+
+def _check_fields(cls, kwargs: dict):
+    """Array fields declared with a unit hold numbers; the time axis is one-dimensional; every required
+    field is present (``ValueError`` naming the field)."""
+    units = cls.units()
+    for f in dataclasses.fields(cls):
+        if not f.init:
+            continue
+        if f.name not in kwargs:
+            if f.default is dataclasses.MISSING and f.default_factory is dataclasses.MISSING:
+                raise ValueError(f"required field {f.name!r} missing")
+            continue
+        v = kwargs[f.name]
+        if f.name in units and isinstance(v, np.ndarray) and v.dtype.kind not in "biufc":
+            raise ValueError(f"field {f.name!r} [{units[f.name]}] holds {v.dtype.str}, not numbers")
+    axis = cls.time_axis
+    if axis is not None and isinstance(kwargs.get(axis), np.ndarray) and kwargs[axis].ndim != 1:
+        raise ValueError(f"time axis {axis!r} has shape {list(kwargs[axis].shape)}, not one dimension")
 
 
 # --------------------------------------------------------------------------------------------------
@@ -205,7 +462,7 @@ def _encode(v, key, arrays):
         if v.dtype == object:
             raise TypeError(f"field {key!r}: object arrays cannot be saved without pickle")
         arrays[key] = v
-        return {"array": key}
+        return {"array": key, "dtype": v.dtype.str, "shape": list(v.shape)}
     if isinstance(v, Result) and dataclasses.is_dataclass(v):
         return {"result": type(v).__name__,
                 "fields": {f.name: _encode(getattr(v, f.name), f"{key}.{f.name}", arrays)
@@ -229,6 +486,8 @@ def _encode(v, key, arrays):
 
 
 def _decode(enc, arrays, path):
+    if not isinstance(enc, dict):
+        raise ValueError(f"field encoding {_short_repr(enc)} is not an object")
     if "array" in enc:
         if enc["array"] not in arrays:
             raise ResultFileError(f"{path}: array {enc['array']!r} missing")

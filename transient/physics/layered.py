@@ -581,9 +581,14 @@ class LayeredFilm:
 
     def _scaled(self, h, G, U1, U2, scales):
         """Check and scale broadcast face data; return the dimensionless arrays and the reference (L, V)."""
-        if not np.all(h > 0.0) or not np.all(np.isfinite(h)):
-            bad = float(h[~((h > 0.0) & np.isfinite(h))][0])
-            raise ValueError(f"film thickness h = {bad!r} [m] is out of range; allowed: (0, inf) m")
+        if not np.all(h >= 1e-12) or not np.all(h <= 1.0):
+            bad = float(h[~((h >= 1e-12) & (h <= 1.0))][0])
+            raise ValueError(f"film thickness h = {bad!r} [m] is out of range; allowed: [1e-12, 1] m")
+        for name, v, unit, top in (("pressure gradient G", G, "Pa/m", 1e18), ("wall speed U1", U1, "m/s", 1e4),
+                                   ("wall speed U2", U2, "m/s", 1e4)):
+            if not np.all(np.abs(v) <= top):
+                bad = float(v[~(np.abs(v) <= top)][0])
+                raise ValueError(f"{name} = {bad!r} [{unit}] is out of range; allowed: [-{top:g}, {top:g}] {unit}")
         if scales is None:
             L = float(h.max())
             V = max(np.abs(U1).max(), np.abs(U2).max(), np.abs(G).max() * L * L / self.viscosity) or 1.0
@@ -595,15 +600,15 @@ class LayeredFilm:
     @staticmethod
     def _faces(h, G, U1, U2):
         """Broadcast 1-D face data to flat float arrays; also return the broadcast shape."""
-        arrays = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in (h, G, U1, U2)))
+        arrays = np.broadcast_arrays(*(_numbers(name, v) for name, v in (("h", h), ("G", G), ("U1", U1), ("U2", U2))))
         return arrays[0].shape, [np.ascontiguousarray(a).ravel() for a in arrays]
 
     @staticmethod
     def _faces_2d(h, G, U1, U2):
         """Broadcast 2-D face data (``h`` of shape ``S``; ``G, U1, U2`` of shape ``S + (2,)``) to a flat ``h`` and
         ``(n, 2)`` arrays; also return ``S``."""
-        G, U1, U2 = (np.asarray(v, dtype=float) for v in (G, U1, U2))
-        hv, G, U1, U2 = np.broadcast_arrays(np.asarray(h, dtype=float)[..., None], G, U1, U2)
+        G, U1, U2 = (_numbers(name, v) for name, v in (("G", G), ("U1", U1), ("U2", U2)))
+        hv, G, U1, U2 = np.broadcast_arrays(_numbers("h", h)[..., None], G, U1, U2)
         return hv.shape[:-1], [np.ascontiguousarray(hv[..., 0]).ravel()] + [
             np.ascontiguousarray(v).reshape(-1, 2) for v in (G, U1, U2)]
 
@@ -634,7 +639,7 @@ class LayeredFilm:
         else:
             newtonian_flow(hs, Gs, delta, lam_a + lam_b, qp, dG, dh)
         qc = 0.5 * hs * (U1s + U2s) * V * L
-        return FaceFlow(*(a.reshape(shape) for a in (qc, qp * V * L, dG * L**3 / self.viscosity, dh * V)))
+        return _finite_flow(FaceFlow(*(a.reshape(shape) for a in (qc, qp * V * L, dG * L**3 / self.viscosity, dh * V))))
 
     def flow_2d(self, h, G, U1, U2, scales=None):
         """:class:`FaceFlow` of a 2-D film: ``h`` [m] of shape ``S``, the pressure gradient ``G`` [Pa/m] and
@@ -703,3 +708,25 @@ class LayeredFilm:
         gecim_velocity(zs.ravel() / L, hs[0], Gs[0], U1s[0], U2s[0], delta, lam_a, lam_b, kappa, ratio,
                        *self._gauss(), u)
         return (u * V).reshape(zs.shape)
+
+
+def _numbers(name, v) -> np.ndarray:
+    """Face data as a float array: numbers only (``None``, strings and booleans are named errors)."""
+    if v is None or isinstance(v, (str, bytes, bool)):
+        raise ValueError(f"{name} = {v!r} is not a number or an array of numbers")
+    try:
+        a = np.asarray(v, dtype=float)
+    except (TypeError, ValueError):
+        raise ValueError(f"{name} = {v!r} is not a number or an array of numbers") from None
+    if a.size == 0:
+        raise ValueError(f"{name} = {v!r} is empty; allowed: a number or a non-empty array of numbers")
+    return a
+
+
+def _finite_flow(f):
+    """The flow if every entry is finite, else a named error (inputs beyond what the law is evaluated for)."""
+    for name in ("q_couette", "q_pressure", "dqp_dG", "dqp_dh"):
+        if not np.all(np.isfinite(getattr(f, name))):
+            raise ValueError(f"flow: {name} is not finite for these h, G, U1, U2 (film, pressure gradient or wall "
+                             "speeds beyond the range the layered law is evaluated for)")
+    return f

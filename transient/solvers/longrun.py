@@ -9,12 +9,22 @@ intervals. After every chunk it
   one ``.npz`` without pickle, keyed on ``key`` -- every parameter and setting that changes the result.
   ``resume=True`` continues from it; a checkpoint written with other parameters is refused with the name
   of the first parameter that differs, a truncated or corrupted one with the file name and how to start
-  afresh. An advisory lock (``PATH.lock``) keeps two runs off one checkpoint;
+  afresh. Before resuming, its contents are checked against each other and the code: the format and code
+  version (the package version and a hash of its sources: a state layout may change between versions), a
+  SHA-256 digest of every array, each array's declared dtype and shape (read from the headers before
+  anything is decompressed, under a size cap), a finite state of the run's size, the output count and the
+  state's time, and the recorder's own consistency (``restore`` raises ``ValueError`` on inconsistent
+  arrays; an optional ``times()`` must give the output times ``t0 + k dt_out``). An advisory lock
+  (``PATH.lock``, removed when the run ends) keeps two runs off one checkpoint. An OS fault while writing
+  (full disk, read-only folder) raises :class:`CheckpointWriteError` naming the file and where the last
+  complete checkpoint is;
 * asks ``stop(recorder)`` whether to end early (e.g. the response has settled).
 
 The model supplies ``problem_at(y, t) -> Problem`` and a recorder with ``observe(t, y)``, ``arrays()``
 and ``restore(arrays)``; the recorder keeps only what the user asked for, so memory stays bounded.
-Ctrl-C raises :class:`Interrupted`, whose message says where the checkpoint is and how to resume.
+Ctrl-C raises :class:`Interrupted`, whose message says where the checkpoint is and how to resume (in
+Python: ``resume=True``; its ``command_line`` attribute says the same for the shell: run the same command
+again, ``--fresh`` to start over).
 """
 
 from __future__ import annotations
@@ -30,19 +40,30 @@ from typing import Callable
 
 import numpy as np
 
-from transient.results import atomic_savez
+from transient.results import FileFault, _content_digest, atomic_savez, code_version, npz_headers, read_npz
 from transient.solvers.integrate import Stats, solve
 
-CHECKPOINT_FORMAT = "transient-checkpoint/1"
+CHECKPOINT_FORMAT = "transient-checkpoint/2"
 MAX_CHUNKS = 1_000_000
 
 
 class Interrupted(KeyboardInterrupt):
-    """Ctrl-C during a long run; the message says where the checkpoint is and how to resume."""
+    """Ctrl-C during a long run; the message says where the checkpoint is and how to resume from Python,
+    ``command_line`` the same for the shell (run the same command again; ``--fresh`` starts over)."""
+
+    def __init__(self, message: str, command_line: str = ""):
+        super().__init__(message)
+        self.command_line = command_line or message
 
 
 class CheckpointError(ValueError):
-    """A checkpoint that cannot be used: other parameters, unreadable, or in use by another process."""
+    """A checkpoint that cannot be used: other parameters or code, inconsistent, unreadable, or in use by
+    another process."""
+
+
+class CheckpointWriteError(FileFault):
+    """The OS refused to write a checkpoint (full disk, read-only folder); the message names the file and
+    what the last complete checkpoint holds."""
 
 
 @dataclass
@@ -91,7 +112,7 @@ def run_long(problem_at: Callable, y0, t0: float, dt_out: float, n_outputs: int,
         ckpt.acquire()
     try:
         if ckpt is not None and resume and ckpt.path.exists():
-            y, k, saved_stats = ckpt.load(recorder, n_outputs)
+            y, k, saved_stats = ckpt.load(recorder, n_outputs, y, t0, dt_out)
             stats = saved_stats
         resumed_from = k
         n_chunks = -(-(n_outputs - k) // chunk_outputs)
@@ -110,7 +131,7 @@ def run_long(problem_at: Callable, y0, t0: float, dt_out: float, n_outputs: int,
                 _accumulate(stats, res.stats)
                 if not res.success:
                     out.success = False
-                    out.message = (f"{method} failed after {tau[0] / ulen:.6g} {uname}: {res.message}")
+                    out.message = (f"{method} stopped at {out.t / ulen:.6g} {uname}: {res.message}")
                     break
                 y = out.y
                 if res.t_events.size:
@@ -124,7 +145,7 @@ def run_long(problem_at: Callable, y0, t0: float, dt_out: float, n_outputs: int,
                 k = k_end
                 out.t = tau[-1]
                 if ckpt is not None:
-                    ckpt.save(y, k, recorder, stats)
+                    ckpt.save(y, k, out.t, recorder, stats, dt_out, unit)
                 if bar is not None:
                     bar.update(chunk_outputs * dt_out / ulen if k < n_outputs else bar.total - bar.n)
                     if status is not None:
@@ -137,11 +158,12 @@ def run_long(problem_at: Callable, y0, t0: float, dt_out: float, n_outputs: int,
         except KeyboardInterrupt:
             where = f"at {out.t / ulen:.6g} {uname}"
             if ckpt is not None and ckpt.saved_outputs is not None:
-                raise Interrupted(f"{label} interrupted {where}; checkpoint {ckpt.path} holds "
-                                  f"{ckpt.saved_outputs * dt_out / ulen:.6g} {uname}: run again with resume=True "
-                                  f"(same parameters) to continue") from None
+                held = f"{label} interrupted {where}; checkpoint {ckpt.path} holds {ckpt.saved_outputs * dt_out / ulen:.6g} {uname}"
+                raise Interrupted(f"{held}: run again with resume=True (same parameters) to continue",
+                                  f"{held}: run the same command again to continue (--fresh starts over)") from None
             raise Interrupted(f"{label} interrupted {where}; no checkpoint was written (pass checkpoint=PATH "
-                              "to make a long run resumable)") from None
+                              "to make a long run resumable)",
+                              f"{label} interrupted {where}; no checkpoint was written") from None
         finally:
             if bar is not None:
                 bar.close()
@@ -161,6 +183,7 @@ class _Last:
 
     def __call__(self, t, y):
         self.out.y = np.array(y)
+        self.out.t = float(t)
         self.recorder.observe(t, y)
 
 
@@ -197,18 +220,38 @@ class _Checkpoint:
         self.lock_fd = None
         self.saved_outputs = None
 
+    @property
+    def lock_path(self) -> Path:
+        return self.path.with_name(self.path.name + ".lock")
+
     def acquire(self):
+        """Take the advisory lock ``PATH.lock`` (refused naming the holder's process id). The lock file is
+        removed on release; a lock taken on a file that another run has just removed is taken again."""
         import fcntl
 
-        lock = self.path.with_name(self.path.name + ".lock")
-        fd = os.open(lock, os.O_RDWR | os.O_CREAT, 0o644)
-        try:
-            fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
-        except OSError:
-            other = os.read(fd, 64).decode(errors="replace").strip() or "?"
-            os.close(fd)
-            raise CheckpointError(f"checkpoint {self.path} is in use by process {other}; wait for it or use another "
-                                  "checkpoint path") from None
+        for _ in range(20):
+            try:
+                fd = os.open(self.lock_path, os.O_RDWR | os.O_CREAT, 0o644)
+            except OSError as e:
+                raise CheckpointError(f"checkpoint lock {self.lock_path} cannot be created ({e.strerror}); choose "
+                                      "a writable folder for the checkpoint") from None
+            try:
+                fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
+            except OSError:
+                other = os.read(fd, 64).decode(errors="replace").strip() or "?"
+                os.close(fd)
+                raise CheckpointError(f"checkpoint {self.path} is in use by process {other}; wait for it or use "
+                                      "another checkpoint path") from None
+            try:
+                same = os.fstat(fd).st_ino == os.stat(self.lock_path).st_ino
+            except FileNotFoundError:
+                same = False
+            if same:
+                break
+            os.close(fd)  # the holder removed this lock file as we opened it: take the new one
+        else:
+            raise CheckpointError(f"checkpoint lock {self.lock_path} keeps changing; another process is "
+                                  "competing for it")
         os.ftruncate(fd, 0)
         os.write(fd, str(os.getpid()).encode())
         self.lock_fd = fd
@@ -217,45 +260,113 @@ class _Checkpoint:
         if self.lock_fd is not None:
             import fcntl
 
+            try:
+                os.unlink(self.lock_path)  # while still held: nobody can take the old file afterwards
+            except OSError:
+                pass
             fcntl.flock(self.lock_fd, fcntl.LOCK_UN)
             os.close(self.lock_fd)
             self.lock_fd = None
 
-    def save(self, y, k, recorder, stats: Stats):
+    def save(self, y, k, t, recorder, stats: Stats, dt_out, unit):
         arrays = {f"rec.{name}": np.asarray(v) for name, v in recorder.arrays().items()}
-        meta = dict(format=CHECKPOINT_FORMAT, key=self.key, outputs_done=int(k),
+        arrays["state"] = np.asarray(y, dtype=float)
+        meta = dict(format=CHECKPOINT_FORMAT, code_version=code_version(), key=self.key, outputs_done=int(k),
+                    time=float(t), digest=_content_digest(arrays),
+                    arrays={name: [a.dtype.str, list(a.shape)] for name, a in arrays.items()},
                     stats=dict(n_steps=stats.n_steps, n_rhs=stats.n_rhs, n_jac=stats.n_jac,
                                callback_time=stats.callback_time, wall_time=stats.wall_time))
-        arrays["state"] = np.asarray(y, dtype=float)
         arrays["__meta__"] = np.array(json.dumps(meta))
-        atomic_savez(self.path, arrays)
+        try:
+            atomic_savez(self.path, arrays)
+        except OSError as e:
+            uname, ulen = unit
+            if self.saved_outputs is not None:
+                kept = (f"the last complete checkpoint {self.path} holds {self.saved_outputs * dt_out / ulen:.6g} "
+                        f"{uname}; once fixed, resume from it")
+            elif self.path.exists():
+                kept = f"the previous checkpoint {self.path} is unchanged"
+            else:
+                kept = "no checkpoint was written"
+            raise CheckpointWriteError(e.errno, f"{e.strerror}; {kept}") from None
         self.saved_outputs = int(k)
 
-    def load(self, recorder, n_outputs):
+    def load(self, recorder, n_outputs, y0, t0, dt_out):
         fresh = "delete it or run with resume=False to start afresh"
+
+        def refuse(why):
+            return CheckpointError(f"checkpoint {self.path} {why}; {fresh}")
+
         try:
-            with np.load(self.path, allow_pickle=False) as z:
-                data = {name: z[name] for name in z.files}
-            meta = json.loads(str(data.pop("__meta__")))
-            y = data.pop("state")
+            heads = npz_headers(self.path)
+            if "__meta__" not in heads or heads["__meta__"][0].kind != "U" or heads["__meta__"][1] != ():
+                raise ValueError("no metadata")
+            meta = json.loads(str(read_npz(self.path, wanted=["__meta__"])["__meta__"]))
+            if not isinstance(meta, dict):
+                raise ValueError("the metadata is not a JSON object")
         except Exception as e:
             raise CheckpointError(f"checkpoint {self.path} cannot be read ({type(e).__name__}: {e}); {fresh}") from None
         if meta.get("format") != CHECKPOINT_FORMAT:
-            raise CheckpointError(f"checkpoint {self.path} is not a {self.label} checkpoint of this version; {fresh}")
+            raise refuse(f"is not a {self.label} checkpoint of this version (format {meta.get('format')!r}, "
+                         f"expected {CHECKPOINT_FORMAT})")
+        if meta.get("code_version") != code_version():
+            raise refuse(f"was written by transient {meta.get('code_version')!r}, this is {code_version()} "
+                         "(the state's layout may differ)")
         old = meta.get("key", {})
+        if not isinstance(old, dict):
+            raise refuse("has no parameter key")
         for name in sorted(set(old) | set(self.key)):
             if old.get(name, "<absent>") != self.key.get(name, "<absent>"):
                 raise CheckpointError(
                     f"checkpoint {self.path} was written with {name} = {_show(old.get(name, '<absent>'))}, this "
                     f"run has {name} = {_show(self.key.get(name, '<absent>'))}; {fresh}")
-        k = int(meta["outputs_done"])
+        k = meta.get("outputs_done")
+        if not isinstance(k, int) or isinstance(k, bool) or k < 1:
+            raise refuse(f"holds outputs_done = {_show(k)}, not a positive count")
         if k > n_outputs:
             raise CheckpointError(f"checkpoint {self.path} already holds {k} output intervals, more than the "
                                   f"{n_outputs} asked for; ask for at least as many or {fresh}")
-        recorder.restore({name[4:]: v for name, v in data.items() if name.startswith("rec.")})
+        t_expected = t0 + k * dt_out
+        t = meta.get("time")
+        if not isinstance(t, (int, float)) or not abs(t - t_expected) <= 1e-9 * max(1.0, abs(t_expected)):
+            raise refuse(f"holds the state at time {_show(t)}, but {k} outputs end at {t_expected:.17g}")
+        declared = meta.get("arrays")
+        if not isinstance(declared, dict) or "state" not in declared:
+            raise refuse("declares no arrays")
+        try:
+            declared = {name: (np.dtype(d[0]), tuple(d[1])) for name, d in declared.items()}
+            extra = sorted(set(heads) - set(declared) - {"__meta__"})
+            if extra:
+                raise ValueError(f"array {extra[0]!r} is not declared")
+            data = read_npz(self.path, wanted=list(declared), declared=declared)
+        except Exception as e:
+            raise refuse(f"has inconsistent arrays ({type(e).__name__}: {e})") from None
+        if _content_digest(data) != meta.get("digest"):
+            raise refuse("does not match its digest (the file was altered or damaged)")
+        y = data.pop("state")
+        y0 = np.asarray(y0)
+        if y.shape != y0.shape or y.dtype.kind != "f":
+            raise refuse(f"holds a state of {y.dtype.str} {list(y.shape)}, this run has {list(y0.shape)} states")
+        if not np.all(np.isfinite(y)):
+            raise refuse(f"holds a non-finite state (index {int(np.argmin(np.isfinite(y)))})")
+        try:
+            recorder.restore({name[4:]: v for name, v in data.items() if name.startswith("rec.")})
+            times = getattr(recorder, "times", None)
+            if times is not None:
+                held = np.asarray(times(), dtype=float)
+                want = t0 + dt_out * np.arange(k + 1)
+                if held.shape != want.shape or not np.allclose(held, want, rtol=1e-12, atol=1e-9 * dt_out):
+                    raise ValueError(f"its recorded outputs ({held.size}) are not the {k + 1} output times of "
+                                     f"{k} intervals")
+        except (ValueError, KeyError, IndexError, TypeError) as e:
+            raise refuse(f"has inconsistent recordings ({type(e).__name__}: {e})") from None
         st = meta.get("stats", {})
-        stats = Stats(n_steps=st.get("n_steps", 0), n_rhs=st.get("n_rhs", 0), n_jac=st.get("n_jac", 0),
-                      callback_time=st.get("callback_time", 0.0), wall_time=st.get("wall_time", 0.0))
+        try:
+            stats = Stats(n_steps=int(st.get("n_steps", 0)), n_rhs=int(st.get("n_rhs", 0)),
+                          n_jac=int(st.get("n_jac", 0)), callback_time=float(st.get("callback_time", 0.0)),
+                          wall_time=float(st.get("wall_time", 0.0)))
+        except (TypeError, ValueError, AttributeError):
+            raise refuse("holds malformed statistics") from None
         self.saved_outputs = k
         return y, k, stats
 

@@ -31,7 +31,7 @@ from typing import Callable
 
 import numpy as np
 
-from transient.checks import check_range
+from transient.checks import check_int, check_range
 from transient.params import jeong, lee_rhim, park, rho_kim
 
 SECTIONS = ("kind", "parameters", "overrides", "run", "outputs", "title")
@@ -76,6 +76,7 @@ class Kind:
     figures: Callable | None = None
     figure: Callable | None = None
     doc: str = ""
+    memory: Callable | None = None
 
     def resolve(self, set_name, overrides: dict) -> dict:
         if set_name not in self.sets:
@@ -120,7 +121,10 @@ class Scene:
         return {**self.params, **changes}
 
     def check_point(self, params: dict):
-        """Build the point's model (no solve): a bad value raises the model's own named error."""
+        """Check the point's memory estimate and build its model (no solve): a bad value raises the model's
+        own named error, a run too large for this machine a :class:`~transient.checks.MemoryLimitError`."""
+        if self.kind.memory is not None:
+            self.kind.memory(params, self.run)
         self.kind.build(params)
 
 
@@ -149,22 +153,33 @@ def load_scene(path) -> Scene:
     if not path.is_file():
         raise FileNotFoundError(f"scene file not found: {path}")
     try:
-        doc = tomllib.loads(path.read_text())
-    except tomllib.TOMLDecodeError as e:
-        raise ValueError(f"{path}: not valid TOML ({e})") from None
+        doc = tomllib.loads(path.read_text(encoding="utf-8"))
+    except (tomllib.TOMLDecodeError, UnicodeDecodeError) as e:
+        raise ValueError(f"{path}: not a valid TOML text file ({type(e).__name__}: {' '.join(str(e).split())[:160]})") from None
+    except OSError as e:
+        raise ValueError(f"{path}: cannot be read ({e.strerror})") from None
     return scene_from_dict(doc, source=str(path))
 
 
 def scene_from_dict(doc: dict, source: str = "<dict>") -> Scene:
     """Validate a scene given as a dict (the TOML's structure)."""
+    if not isinstance(doc, dict):
+        raise ValueError(f"{source}: a scene is a table of keys, got {type(doc).__name__}")
     bad = [k for k in doc if k not in SECTIONS]
     if bad:
         raise ValueError(f"{source}: unknown key {bad[0]!r}; allowed: {', '.join(SECTIONS)}")
     name = doc.get("kind")
-    if name not in KINDS:
+    if not isinstance(name, str) or name not in KINDS:
         raise ValueError(f"{source}: kind = {name!r}; allowed: {', '.join(KINDS)}")
     kind = KINDS[name]
+    for section in ("overrides", "run", "outputs"):
+        if not isinstance(doc.get(section, {}), dict):
+            raise ValueError(f"{source}: {section} = {doc[section]!r} must be a table ([{section}] with NAME = value "
+                             "lines)")
     set_name = doc.get("parameters", next(iter(kind.sets)))
+    if not isinstance(set_name, str):
+        raise ValueError(f"{source}: parameters = {set_name!r} must be the name of a parameter set; allowed: "
+                         f"{', '.join(map(repr, kind.sets))} (change values under [overrides])")
     params = kind.resolve(set_name, doc.get("overrides", {}))
     run = kind.run_options(doc.get("run", {}))
     outputs = dict(save_result=True, figures=True)
@@ -187,8 +202,23 @@ def _journal_split(p):
     from transient import JournalBearing
 
     bearing = {k: p[k] for k in ("diameter", "length", "clearance", "viscosity", "bulk_modulus", "supply_pressure")}
-    b = JournalBearing(**bearing, grid=tuple(int(v) for v in p["grid"]))
+    b = JournalBearing(**bearing, grid=_grid(p["grid"]))
     return b, {k: p[k] for k in ("rotor_mass", "unbalance", "load")}
+
+
+def _grid(g, name="grid") -> tuple:
+    """A grid of two whole numbers of cells (``[151, 21]``): a named error otherwise (no truncation)."""
+    if not isinstance(g, (list, tuple)) or len(g) != 2:
+        raise ValueError(f"{name} = {g!r} [cells]; allowed: two whole numbers, e.g. [151, 21]")
+    return tuple(check_int(f"{name}[{i}]", v, "cells", 1, 1e6) for i, v in enumerate(g))
+
+
+def _journal_memory(p, run):
+    from transient.models.journal.orbit import check_orbit_memory
+
+    nx, nz = _grid(p["grid"])
+    revolutions = run["revolutions"] + run.get("max_settle_revolutions", 0)
+    check_orbit_memory(nx * nz, revolutions, run.get("outputs_per_revolution", 64), (), 0.0)
 
 
 def _journal_build(p):
@@ -230,7 +260,8 @@ def _journal_noise_point(p, run):
 def _ball_build(p):
     from transient import ThrustBallBearing
 
-    b = ThrustBallBearing(**{k: (int(p[k]) if k == "n_balls" else p[k]) for k in jeong.BEARING})
+    b = ThrustBallBearing(**{k: (check_int("n_balls", p[k], "-", 1, 1e4) if k == "n_balls" else p[k])
+                             for k in jeong.BEARING})
     b.flooded_film(p["load"], p["speed_rpm"])  # validates load and speed
     check_range("ambient_film", p["ambient_film"], "m", 0.0, 0.1, low_open=True)
     return b
@@ -248,8 +279,17 @@ def _pad_build(p):
     from transient import ThrustPad
     from transient.study.pad import surface
 
-    surf = surface(p["gamma"], int(p["samples"]), seed=int(p["seed"]), rq=p["rq"]) if p["gamma"] else p["rq"]
-    return ThrustPad(p["length"], p["width"], p["viscosity"], surface=surf, grid=tuple(int(v) for v in p["grid"]))
+    gamma = check_range("gamma", p["gamma"], "-", 0.0, 100.0)
+    surf = (surface(gamma, check_int("samples", p["samples"], "-", 16, 8192), seed=check_int("seed", p["seed"], "-", 0, 2**32 - 1),
+                    rq=p["rq"]) if gamma else p["rq"])
+    return ThrustPad(p["length"], p["width"], p["viscosity"], surface=surf, grid=_grid(p["grid"]))
+
+
+def _pad_memory(p, run):
+    from transient.models.pad.pad import check_descent_memory
+
+    nx, ny = _grid(p["grid"])
+    check_descent_memory(nx * ny, run["outputs"], "separable")
 
 
 def _pad_point(p, run):
@@ -268,7 +308,10 @@ def _roller_build(p):
     roller = TaperedRoller(**{k: p[k] for k in ("mean_radius", "half_angle_deg", "length", "dub_off_radius",
                                                   "profile_start", "tilt_deg")})
     g = p["grid"]  # "paper", (nx, ny) uniform, or ("clustered", nx, ny)
-    grid = g if isinstance(g, str) else tuple(v if isinstance(v, str) else int(v) for v in g)
+    if not isinstance(g, (str, list, tuple)):
+        raise ValueError(f"grid = {g!r}; allowed: \"paper\", [nx, ny] (uniform) or [\"clustered\", nx, ny]")
+    grid = g if isinstance(g, str) else tuple(v if isinstance(v, str) else check_int("grid", v, "nodes", 12, 4097)
+                                              for v in g)
     return RollerContact.from_dimensionless(U=p["U"], G=p["G"], W=p["W"], modulus=p["modulus"], roller=roller,
                                             grid=grid)
 
@@ -312,14 +355,14 @@ KINDS = {
              settle_tol=Option("-", 0.01, 1e-9, 1.0)),
         _journal_orbit_point, _journal_build, _figures(dict(curves=("semi_major_C", "eps_max"))),
         lambda r, run: _plots("journal").long_run(r, run["outputs_per_revolution"]),
-        "unbalanced rotor on the Elrod journal bearing (seed 003), run from the static equilibrium"),
+        "unbalanced rotor on the Elrod journal bearing (seed 003), run from the static equilibrium", _journal_memory),
     "journal_noise": Kind(
         "journal_noise", {"rho_kim": _RHO_KIM}, _JOURNAL_UNITS,
         dict(revolutions=Option("rev", 4, 1, 1000, integer=True), harmonics=Option("-", 5, 1, 100, integer=True),
              rtol=Option("-", 1e-6, 1e-12, 1e-2), max_settle_revolutions=Option("rev", 60, 1, 1e5, integer=True)),
         _journal_noise_point, _journal_build, _figures(dict(curves=("level_db", "level_dba", "whirl_amplitude_um"))),
         lambda r, run: _plots("journal").noise_spectra(r, {}),
-        "bearing noise of the settled orbit (seed 003)"),
+        "bearing noise of the settled orbit (seed 003)", _journal_memory),
     "ball_sequence": Kind(
         "ball_sequence", {"jeong": {**jeong.BEARING, **jeong.REFERENCE}},
         dict(pitch_diameter="m", ball_diameter="m", n_balls="-", conformity="-", youngs_modulus="Pa", poisson_ratio="-",
@@ -338,7 +381,8 @@ KINDS = {
              rtol=Option("-", 1e-8, 1e-12, 1e-2)),
         _pad_point, _pad_build, _figures(dict(curves=("h_eq_over_rq", "t_to_2rq_ms", "contact_area_end_mm2"))),
         lambda r, run: _plots("pad").descent_vs_time({1.0: r}, r.h0[0] / 5.0, r.load),
-        "squeeze descent of a rough parallel thrust pad (seed 000); gamma = 0: Gaussian heights, no generated surface"),
+        "squeeze descent of a rough parallel thrust pad (seed 000); gamma = 0: Gaussian heights, no generated surface",
+        _pad_memory),
     "roller_ehl": Kind(
         "roller_ehl", {"park": dict(**park.ROLLER, tilt_deg=0.0, **park.DIMENSIONLESS, grid="paper")},
         dict(mean_radius="m", half_angle_deg="deg", length="m", dub_off_radius="m", profile_start="m", tilt_deg="deg",

@@ -7,7 +7,11 @@ per point). ``transient sweep SCENE.toml --param speed_rpm=1000:7500:27`` is the
 * Where: a local process pool (``workers``, default the cores; one thread per process: OpenMP, BLAS and
   numba pinned to 1 thread, SuperLU_MT already runs single-threaded), or an existing Dask cluster
   (``scheduler`` = its address or a ``distributed.Client``): the same point function runs on a laptop and
-  on a cluster. numba kernels are compiled (or loaded from its cache) once per worker process.
+  on a cluster. numba kernels are compiled (or loaded from its cache) once per worker process. A Dask
+  scheduler and its workers exchange tasks and results as pickles, which run code when read: connect only
+  to a scheduler you trust, on a network you trust (the local pool and the store use no pickle). An
+  unreachable address is one line after :data:`CONNECT_TIMEOUT` seconds. Pool workers exit when the sweep's
+  process dies, even killed with -9 (parent-death signal and a watchdog thread).
 * Resumable: each point is written by the worker that computed it, as soon as it completes, under
   ``store/points/KEY``: ``KEY.parquet`` (one row: parameters, scalars, status, error, code version) and
   ``KEY.npz`` (the saved Result, if asked). ``KEY`` hashes the kind, every parameter, the run options and
@@ -28,7 +32,6 @@ import itertools
 import json
 import os
 import sys
-import tempfile
 import time
 import traceback
 from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
@@ -36,7 +39,8 @@ from pathlib import Path
 
 import numpy as np
 
-from transient.results import StatusResult, quantity, result_type
+from transient.results import StatusResult, atomic_write, code_version, file_error, quantity, read_npz, result_type
+from transient.study.scenario import default_root
 from transient.study.scene import KINDS, Scene
 
 #: Environment that pins every worker process to one thread
@@ -70,24 +74,64 @@ class SweepResult(StatusResult):
 # points and keys
 # --------------------------------------------------------------------------------------------------
 
-def parse_values(spec: str) -> list:
-    """``a:b:n`` -> n values from a to b; ``a:b`` -> the integers a..b; ``a,b,c`` -> the list; ``a`` -> [a]."""
-    s = spec.strip()
+def parse_values(spec: str, name: str = "") -> list:
+    """``a:b:n`` -> n values from a to b; ``a:b`` -> the integers a..b; ``a,b,c`` -> the list; ``a`` -> [a].
+    A list-valued parameter (``grid``) takes lists: ``NAME=[151,21];[301,41]``. Finite numbers only; at
+    most :data:`MAX_POINTS` values. ``name`` (the parameter) goes into the error messages."""
+    s = spec.strip() if isinstance(spec, str) else spec
+    what = f"--param {name}={spec!r}" if name else f"values {spec!r}"
+    if not isinstance(s, str) or not s:
+        raise ValueError(f"{what}: no values; expected a:b:n (n values from a to b), a:b (integers), or a,b,c")
     try:
-        if ":" in s:
+        if s.startswith("["):
+            out = [json.loads(part) for part in s.split(";")]
+            if not all(isinstance(v, list) and v and all(isinstance(x, (int, float)) and not isinstance(x, bool)
+                                                         for x in v) for v in out):
+                raise ValueError
+        elif ":" in s:
             parts = s.split(":")
             if len(parts) == 3:
                 a, b, n = float(parts[0]), float(parts[1]), int(parts[2])
-                if n < 1:
+                if not (1 <= n <= MAX_POINTS):
                     raise ValueError
-                return [float(v) for v in np.linspace(a, b, n)]
-            if len(parts) == 2:
+                out = [float(v) for v in np.linspace(a, b, n)]
+            elif len(parts) == 2:
                 a, b = int(parts[0]), int(parts[1])
-                return list(range(a, b + 1)) if b >= a else list(range(a, b - 1, -1))
-            raise ValueError
-        return [_number(v) for v in s.split(",")]
-    except ValueError:
-        raise ValueError(f"values {spec!r}: expected a:b:n (n values from a to b), a:b (integers), or a,b,c") from None
+                if abs(b - a) >= MAX_POINTS:
+                    raise ValueError
+                out = list(range(a, b + 1)) if b >= a else list(range(a, b - 1, -1))
+            else:
+                raise ValueError
+        else:
+            out = [_number(v) for v in s.split(",")]
+    except (ValueError, OverflowError):
+        raise ValueError(f"{what}: expected a:b:n (n values from a to b, n in [1, {MAX_POINTS}]), a:b (integers), "
+                         "a,b,c (numbers) or [..];[..] (lists)") from None
+    flat = [x for v in out for x in (v if isinstance(v, list) else [v])]
+    if not all(np.isfinite(flat)):
+        raise ValueError(f"{what}: values must be finite numbers")
+    if len(out) > MAX_POINTS:
+        raise ValueError(f"{what}: {len(out)} values, more than {MAX_POINTS}")
+    return out
+
+
+def parse_params(specs: list[str]) -> dict:
+    """``["NAME=VALUES", ...]`` (the command line's ``--param``) -> ``{NAME: values}``; a name given twice
+    is an error."""
+    values = {}
+    for spec in specs:
+        name, sep, vals = spec.partition("=")
+        name = name.strip()
+        if not sep or not name:
+            raise ValueError(f"--param {spec!r}: expected NAME=VALUES")
+        if name in values:
+            raise ValueError(f"--param {name} is given twice; give each swept parameter once (a,b,c lists values)")
+        values[name] = parse_values(vals, name)
+    return values
+
+
+#: the most values of one swept parameter, and of points in a sweep
+MAX_POINTS = 100_000
 
 
 def _number(v):
@@ -102,24 +146,6 @@ def grid(values: dict) -> list[dict]:
     """Cartesian product of the swept values, in order (the last name varies fastest)."""
     names = list(values)
     return [dict(zip(names, combo)) for combo in itertools.product(*(values[n] for n in names))]
-
-
-_CODE_VERSION = None
-
-
-def code_version() -> str:
-    """The package version and a hash of its source files (any code change changes it)."""
-    global _CODE_VERSION
-    if _CODE_VERSION is None:
-        import transient
-
-        h = hashlib.sha256()
-        root = Path(transient.__file__).parent
-        for f in sorted(root.rglob("*.py")):
-            h.update(str(f.relative_to(root)).encode())
-            h.update(f.read_bytes())
-        _CODE_VERSION = f"{transient.__version__}+{h.hexdigest()[:12]}"
-    return _CODE_VERSION
 
 
 def point_key(kind: str, params: dict, run: dict) -> str:
@@ -143,15 +169,18 @@ def _write_row(path: Path, row: dict):
     import pyarrow as pa
     import pyarrow.parquet as pq
 
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
-    os.close(fd)
+    table = pa.Table.from_pylist([{k: _plain(v) for k, v in row.items()}])
+    atomic_write(path, lambda fh: pq.write_table(table, fh))
+
+
+def _make_store(store: Path):
+    """Create the store's folders; an OS fault is one line naming the folder and what to do."""
     try:
-        pq.write_table(pa.Table.from_pylist([{k: _plain(v) for k, v in row.items()}]), tmp)
-        os.replace(tmp, path)
-    except BaseException:
-        if os.path.exists(tmp):
-            os.remove(tmp)
-        raise
+        (store / "points").mkdir(parents=True, exist_ok=True)
+    except OSError as e:
+        raise file_error(e, store, "create the store folder") from None
+    if not os.access(store / "points", os.W_OK):
+        raise file_error(OSError(13, "Permission denied"), store, "write into the store folder")
 
 
 def read_row(store: Path, key: str, need_result: bool) -> dict | None:
@@ -170,8 +199,7 @@ def read_row(store: Path, key: str, need_result: bool) -> dict | None:
         return None
     if need_result:
         try:
-            with np.load(store / "points" / f"{key}.npz", allow_pickle=False) as z:
-                meta = json.loads(str(z["__meta__"]))
+            meta = json.loads(str(read_npz(store / "points" / f"{key}.npz", wanted=["__meta__"])["__meta__"]))
             if meta.get("format", "").split("/")[0] != "transient-result":
                 return None
         except Exception:
@@ -197,8 +225,34 @@ def run_point(kind: str, params: dict, run: dict, key: str, store: str, save_res
     return row
 
 
-def _worker_init():
+def _worker_init(parent: int | None = None):
+    """Each pool worker: one thread, and exit as soon as the process that started it is gone (killed with
+    -9, it cannot shut its pool down): on Linux the kernel's parent-death signal, elsewhere (and as a
+    second guard) a daemon thread that checks the parent's id every half second."""
     os.environ.update(ONE_THREAD)
+    if parent is None:
+        return
+    if sys.platform.startswith("linux"):
+        try:
+            import ctypes
+            import signal
+
+            libc = ctypes.CDLL(None, use_errno=True)
+            libc.prctl(1, int(signal.SIGKILL), 0, 0, 0)  # PR_SET_PDEATHSIG = 1
+        except (OSError, AttributeError):
+            pass
+    if os.getppid() != parent:  # the parent died before the signal was armed
+        os._exit(1)
+
+    def watch():
+        while True:
+            time.sleep(0.5)
+            if os.getppid() != parent:
+                os._exit(1)
+
+    import threading
+
+    threading.Thread(target=watch, name="transient-parent-watchdog", daemon=True).start()
 
 
 # --------------------------------------------------------------------------------------------------
@@ -209,16 +263,19 @@ def sweep(scene: Scene, values: dict, *, store=None, workers: int | None = None,
           progress: bool = True, figures: bool | None = None) -> SweepResult:
     """Run ``scene`` over the grid of ``values`` (name -> list) and return the table (module docstring).
 
-    ``store``: the folder of the per-point files and the table (default ``sweep_<kind>`` in the working
-    folder). ``workers``: local processes (default: the cores; 1 runs in this process). ``scheduler``: a
+    ``store``: the folder of the per-point files and the table (default ``sweep_<kind>`` under the output
+    root, :func:`transient.study.scenario.default_root`). ``workers``: local processes (default: the cores; 1 runs in this process). ``scheduler``: a
     Dask scheduler address or ``distributed.Client`` (then ``workers`` is ignored)."""
     if not values:
         raise ValueError("a sweep needs at least one swept parameter (NAME=values)")
+    n_points = int(np.prod([len(v) for v in values.values()], dtype=float))
+    if n_points > MAX_POINTS:
+        raise ValueError(f"the sweep has {n_points} points, more than {MAX_POINTS}; sweep fewer values")
     points = grid(values)
     for p in points:  # every point's model is built (no solve) before anything is computed
         scene.check_point(scene.with_params(**p))
-    store = Path(store or f"sweep_{scene.kind.name}")
-    (store / "points").mkdir(parents=True, exist_ok=True)
+    store = Path(store or Path(default_root()) / f"sweep_{scene.kind.name}")
+    _make_store(store)
     kind, run = scene.kind.name, scene.run
     save_result = bool(scene.outputs.get("save_result", True))
     jobs = []
@@ -307,7 +364,8 @@ def _pool(workers: int) -> ProcessPoolExecutor:
     saved = {k: os.environ.get(k) for k in ONE_THREAD}
     os.environ.update(ONE_THREAD)  # spawned workers inherit it before they import numpy or numba
     try:
-        pool = ProcessPoolExecutor(max_workers=workers, mp_context=mp.get_context("spawn"), initializer=_worker_init)
+        pool = ProcessPoolExecutor(max_workers=workers, mp_context=mp.get_context("spawn"), initializer=_worker_init,
+                                   initargs=(os.getpid(),))
         # start the workers now, while the environment holds
         list(pool.map(_noop, range(workers)))
     finally:
@@ -331,7 +389,7 @@ def _execute_dask(jobs, scheduler):
         from distributed import Client, as_completed
     except ImportError:
         raise ImportError('a Dask scheduler needs the optional extra: pip install -e ".[distributed]"') from None
-    client = scheduler if isinstance(scheduler, Client) else Client(scheduler)
+    client = scheduler if isinstance(scheduler, Client) else _connect(Client, scheduler)
     try:
         n_workers = max(1, len(client.scheduler_info().get("workers", {})))
         queue = iter(jobs)
@@ -347,6 +405,31 @@ def _execute_dask(jobs, scheduler):
             client.close()
 
 
+#: seconds to wait for a Dask scheduler before giving up
+CONNECT_TIMEOUT = 10.0
+
+
+def _connect(Client, address):
+    """A ``distributed.Client`` of ``address``, or one line within :data:`CONNECT_TIMEOUT` seconds saying
+    it cannot be reached."""
+    import logging
+
+    if not isinstance(address, str) or not address.strip():
+        raise ValueError(f"scheduler = {address!r}; allowed: the address of a Dask scheduler, e.g. tcp://host:8786")
+    quiet = logging.getLogger("distributed")
+    level = quiet.level
+    quiet.setLevel(logging.CRITICAL)
+    try:
+        return Client(address, timeout=CONNECT_TIMEOUT)
+    except (OSError, TimeoutError, ValueError, TypeError) as e:
+        why = " ".join(str(e).split())[:160] or type(e).__name__
+        raise ConnectionError(f"cannot reach the Dask scheduler at {address} within {CONNECT_TIMEOUT:g} s ({why}); "
+                              "check the address and that the scheduler runs, or leave out --scheduler to use "
+                              "local processes") from None
+    finally:
+        quiet.setLevel(level)
+
+
 def _table(rows) -> dict:
     cols = []
     for r in rows:
@@ -358,10 +441,8 @@ def _write_table(store: Path, rows):
     import pandas as pd
 
     df = pd.DataFrame([{k: _plain(v) for k, v in r.items() if k != "traceback"} for r in rows])
-    tmp = store / ".results.parquet.tmp"
-    df.to_parquet(tmp, index=False)
-    os.replace(tmp, store / "results.parquet")
-    df.to_csv(store / "results.csv", index=False)
+    atomic_write(store / "results.parquet", lambda fh: df.to_parquet(fh, index=False))
+    atomic_write(store / "results.csv", lambda fh: fh.write(df.to_csv(index=False).encode()))
 
 
 def _figures(scene, res, store):

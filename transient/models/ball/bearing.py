@@ -43,7 +43,7 @@ from transient.physics import film_formulas as hd
 from transient.physics.hertz import (HertzContact, gap_rolling_axis, gap_rolling_axis_slope, hertz_contact,
                                      meniscus_position, reduced_modulus)
 from transient.models.ball.track import FrontTrack, UniformTrack
-from transient.checks import check_choice, check_int, check_range
+from transient.checks import check_choice, check_int, check_memory, check_range
 from transient.results import StatusResult, quantity, record_type, result_type
 from transient.units import rpm_to_rad_s
 
@@ -179,7 +179,7 @@ class ThrustBallBearing:
         check_int("n_balls", self.n_balls, "-", 1, z_max)
         check_range("conformity", self.conformity, "-", 0.5, 1.0, low_open=True, high_open=False,
                     why="(conformity = groove radius / ball diameter)")
-        check_range("youngs_modulus", self.youngs_modulus, "Pa", 0.0, 1e13, low_open=True, high_open=True)
+        check_range("youngs_modulus", self.youngs_modulus, "Pa", 1e6, 1e13, high_open=True, why="(1 MPa to 10 TPa)")
         check_range("poisson_ratio", self.poisson_ratio, "-", 0.0, 0.5, low_open=False, high_open=True)
         check_range("viscosity", self.viscosity, "Pa s", 0.0, 1e4, low_open=True, high_open=True)
         check_range("pressure_viscosity", self.pressure_viscosity, "1/Pa", 1e-9, 1e-6, high_open=True,
@@ -208,18 +208,18 @@ class ThrustBallBearing:
     # kinematics -----------------------------------------------------------------------------------
     def entrainment_speed(self, speed_rpm: float) -> float:
         """Mean rolling speed [m/s] ``u = omega d_e / 4`` (each race moves at ``omega/2`` relative to the cage)."""
-        check_range("speed_rpm", speed_rpm, "rpm", 0.0, 1e6, low_open=True, high_open=True)
+        check_range("speed_rpm", speed_rpm, "rpm", 1e-3, 1e6, high_open=True)
         return rpm_to_rad_s(speed_rpm) * self.pitch_diameter / 4.0
 
     def pass_interval(self, speed_rpm: float) -> float:
         """Time between two balls over a point of either race [s]: ``4 pi / (Z omega)``."""
-        check_range("speed_rpm", speed_rpm, "rpm", 0.0, 1e6, low_open=True, high_open=True)
+        check_range("speed_rpm", speed_rpm, "rpm", 1e-3, 1e6, high_open=True)
         return 4.0 * math.pi / rpm_to_rad_s(self.n_balls * speed_rpm)  # 4 pi / (Z omega)
 
     # contact --------------------------------------------------------------------------------------
     def contact(self, load: float, exact: bool = True) -> HertzContact:
         """Per-ball Hertz contact for the bearing's TOTAL axial load [N] (per ball: load / n_balls)."""
-        check_range("load", load, "N", 0.0, 1e7, low_open=True, high_open=True)
+        check_range("load", load, "N", 1e-6, 1e7, high_open=True)
         return hertz_contact(load / self.n_balls, self.rx, self.ry, self.e_prime, exact=exact)
 
     def flooded_film(self, load: float, speed_rpm: float) -> FloodedFilm:
@@ -278,8 +278,13 @@ class ThrustBallBearing:
         """
         check_choice("replenishment", replenishment, REPLENISHMENT)
         check_choice("grid", grid, GRIDS)
-        if int(n_passes) != n_passes or n_passes < 1:
-            raise ValueError(f"n_passes = {n_passes!r} [-] must be an integer >= 1")
+        n_passes = check_int("n_passes", n_passes, "-", 1, 1e9)
+        n_cells = check_int("n_cells", n_cells, "-", 8, 1e7)
+        nodes = 401 if grid == "front" else n_cells
+        check_memory(f"this sequence ({n_passes} passes on {nodes} nodes)",
+                     dict(series=8.0 * 8 * n_passes + 60.0 * n_passes,
+                          profiles=8.0 * nodes * n_passes * bool(record_profiles), track=200.0 * 8 * nodes),
+                     "lower n_passes, n_cells or record_profiles=False")
         check_range("ridge_fraction", ridge_fraction, "-", 0.0, 1.0, low_open=False, high_open=False)
         c = self.contact(load)
         ff = self.flooded_film(load, speed_rpm)
@@ -298,7 +303,8 @@ class ThrustBallBearing:
         t_b = self.pass_interval(speed_rpm)
         a_p = c.a
         X = 0.5 * self.ball_diameter if reservoir_distance is None else reservoir_distance
-        check_range("reservoir_distance", X, "m", 2.0 * a_p, 1.0, low_open=True, high_open=True)
+        check_range("reservoir_distance", X, "m", 2.0 * a_p, 1.0, low_open=True, high_open=True,
+                    why=f"(more than twice the contact half-width a = {a_p:.4g} m at load = {load!r} N)")
         w_r = a_p if ridge_width is None else ridge_width
         check_range("ridge_width", w_r, "m", 0.0, X - a_p, high_open=False, low_open=True)
         ew = 0.02 * a_p if edge_width is None else edge_width

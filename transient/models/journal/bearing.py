@@ -114,8 +114,8 @@ class JournalBearing:
             raise ValueError(f"cavitation must be one of {CAVITATION_MODES}, got cavitation={cavitation!r}")
         self.cavitation = cavitation
         self.diameter = check_range("diameter", diameter, "m", 0.0, 10.0, low_open=True)
-        self.length = check_range("length", length, "m", 0.0, 10.0 * self.diameter, low_open=True,
-                                  why=f"(L/D up to 10 with diameter = {self.diameter:g} m: longer is a long-bearing "
+        self.length = check_range("length", length, "m", 1e-3 * self.diameter, 10.0 * self.diameter,
+                                  why=f"(L/D 0.001 to 10 with diameter = {self.diameter:g} m: longer is a long-bearing "
                                   "limit, not a journal bearing)")
         self.clearance = check_range("clearance", clearance, "m", 1e-5 * self.diameter, 0.1 * self.diameter,
                                      why="(C/D from 1e-5 to 0.1: a journal bearing's radial clearance)")

@@ -26,7 +26,7 @@ from __future__ import annotations
 import hashlib
 import numpy as np
 
-from transient.checks import ATOL_FLOOR, ATOL_WHY, check_choice, check_positive, check_range, check_rtol
+from transient.checks import ATOL_FLOOR, ATOL_WHY, check_choice, check_memory, check_positive, check_range, check_rtol
 from transient.models.journal.bearing import JournalBearing, check_speed
 from transient.models.journal.film import read_only
 from transient.models.journal.flows import film_flows
@@ -238,6 +238,10 @@ class JournalOrbit:
                     load=self.load, speed_rpm=self.speed_rpm)
 
     # ---------------------------------------------------------------------------------------------
+    def memory_estimate(self, revolutions, outputs_per_revolution=100, record=(), record_from_revolution=0.0) -> dict:
+        """Bytes a :meth:`run` will need, by part (:func:`orbit_memory`)."""
+        return orbit_memory(self.film.n, revolutions, outputs_per_revolution, record, record_from_revolution)
+
     def run(self, revolutions, method="ida", rtol=1e-6, atol=1e-9, steps_per_revolution=None,
             outputs_per_revolution=100, record=(), record_from_revolution=0.0, chunk_revolutions=None,
             checkpoint=None, resume=False, progress=None, touch_gap=1e-3, y0=None,
@@ -288,10 +292,13 @@ class JournalOrbit:
         revolutions = check_positive("revolutions", revolutions, "rev")
         if formulation is None:
             formulation = "content" if method == "bdf2" else "universal"
-        if method != "rk4":
-            rtol = check_rtol(rtol)
         if isinstance(record, str):
             record = (record,)
+        if not isinstance(record, (tuple, list)):
+            raise ValueError(f"record = {record!r}; allowed: a tuple of names out of {', '.join(RECORDABLE)}")
+        record_from_revolution = check_range("record_from_revolution", record_from_revolution, "rev", 0.0, 1e12)
+        if method != "rk4":
+            rtol = check_rtol(rtol)
         bad = [r for r in record if r not in RECORDABLE]
         if bad:
             raise ValueError(f"record: unknown series {bad}; allowed: {RECORDABLE}")
@@ -306,6 +313,10 @@ class JournalOrbit:
         if opr != int(opr):
             raise ValueError(f"outputs_per_revolution = {outputs_per_revolution!r} [1/rev] must be an integer")
         opr = int(opr)
+        if revolutions * opr < 1.0 - 1e-9:
+            raise ValueError(f"revolutions = {revolutions!r} [rev] is less than one output interval; allowed: >= "
+                             f"{1 / opr:g} rev at outputs_per_revolution = {opr}")
+        check_orbit_memory(self.film.n, revolutions, opr, record, record_from_revolution)
         touch_gap = check_range("touch_gap", touch_gap, "-", 0.0, 1.0, high_open=True,
                                 why="(0 turns touch detection off)")
         if chunk_revolutions is None:
@@ -372,6 +383,7 @@ class JournalOrbit:
             what = "journal touches the bearing" if self.bearing.layers is None else "boundary layers touch"
             message = (f"{what} (eccentricity ratio {self.bearing.max_eccentricity_ratio - touch_gap:.4f}) at t = "
                        f"{touched:.6g} s ({touched * rpm_to_hz(self.speed_rpm):.2f} revolutions)")
+        rec.last_y = self.universal_state(out.y) if formulation == "content" else np.array(out.y)  # also when resumed at the end
         r = rec.result(method, out.stats, touched, message, out.t)
         r.success = out.success
         return r
@@ -450,6 +462,30 @@ class JournalOrbit:
         return {k: np.array(v) for k, v in out.items()}
 
 
+def orbit_memory(cells, revolutions, outputs_per_revolution=100, record=(), record_from_revolution=0.0) -> dict:
+    """Bytes an orbit run on ``cells`` film cells will need, by part: ``model`` (the film's arrays and operator
+    tables, 1.1 kB per cell) and ``solver`` (sparse Jacobian, LU factors, integrator workspace, 5.5 kB per
+    cell) -- both measured (peak resident memory of a 0.02-revolution IDA run on the 151 x 21, 300 x 42 and
+    600 x 84 grids: 4.8, 6.6 and 6.4 kB per cell in all, docs/validation.md) -- and ``recordings`` (per output:
+    40 bytes per recorded number while running, then the arrays; fields 8 bytes per cell from
+    ``record_from_revolution`` on)."""
+    outputs = revolutions * outputs_per_revolution + 1
+    scalars = 3 + sum(dict(force=2, min_film=1, mass=1, outflow=2).get(k, 0) for k in record)
+    fields = sum(k in FIELD_SERIES for k in record)
+    field_outputs = max(0.0, revolutions - record_from_revolution) * outputs_per_revolution + 1
+    return dict(model=1100.0 * cells, solver=5500.0 * (cells + N_ROTOR),
+                recordings=40.0 * scalars * outputs + 8.0 * cells * fields * field_outputs)
+
+
+def check_orbit_memory(cells, revolutions, outputs_per_revolution=100, record=(), record_from_revolution=0.0):
+    """Refuse (one line, :class:`~transient.checks.MemoryLimitError`) an orbit run whose :func:`orbit_memory`
+    exceeds the stated share of the machine's memory, naming the parameters to change."""
+    check_memory(f"this orbit run ({revolutions:g} rev x {outputs_per_revolution} outputs/rev on {cells} cells)",
+                 orbit_memory(cells, revolutions, outputs_per_revolution, record, record_from_revolution),
+                 "lower revolutions or outputs_per_revolution, record fewer series (record=, record_from_revolution=), "
+                 "or use a coarser grid (a long run can go on in parts with start=)")
+
+
 class _Recorder:
     """Keeps x, y (always) and the requested series at the output times; streams, never the whole state."""
 
@@ -511,6 +547,10 @@ class _Recorder:
         n = self.o.film.n
         return float(np.hypot(self.last_y[n], self.last_y[n + 1]))
 
+    def times(self) -> np.ndarray:
+        """The output times held, in the run's time tau = omega t (checked against a checkpoint's count)."""
+        return np.array(self.t) * self.o.film.omega
+
     def arrays(self) -> dict:
         """Everything recorded, as plain arrays (checkpoints)."""
         out = dict(t=np.array(self.t), x=np.array(self.x), y=np.array(self.y), last_tau=np.array(self.last_tau))
@@ -521,6 +561,16 @@ class _Recorder:
         return out
 
     def restore(self, a: dict):
+        """Take the arrays of a checkpoint; ``ValueError`` if they do not fit each other."""
+        rows = len(a["t"])
+        if np.ndim(a["t"]) != 1 or not np.all(np.isfinite(a["t"])) or np.any(np.diff(a["t"]) <= 0):
+            raise ValueError("its times are not finite and increasing")
+        for k in ("x", "y", *self.series):
+            if len(a[k]) != rows if k not in FIELD_SERIES else len(a[k]) != len(a[k + "_t"]):
+                raise ValueError(f"{k} has {len(a[k])} rows, t has {rows}")
+        if rows and float(a["last_tau"]) != float(a["t"][-1]) * self.o.film.omega:
+            if not np.isclose(float(a["last_tau"]), float(a["t"][-1]) * self.o.film.omega, rtol=1e-12):
+                raise ValueError("its last output time does not match its last row")
         self.t, self.x, self.y = list(a["t"]), list(a["x"]), list(a["y"])
         self.last_tau = float(a["last_tau"])
         for k in self.series:

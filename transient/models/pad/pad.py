@@ -73,7 +73,7 @@ from transient.fv.reynolds import ReynoldsOperator, residual_kernel
 from transient.surfaces.roughness import RoughSurface
 from transient.results import RunResult, quantity, result_type
 from transient.solvers.integrate import METHODS, Problem, solve
-from transient.checks import check_int, check_positive, check_range
+from transient.checks import check_int, check_memory, check_positive, check_range
 
 __all__ = ["ThrustPad", "DescentResult", "pressure_flow_clamped", "rect_shape_factor"]
 
@@ -395,6 +395,7 @@ class ThrustPad:
         if method == "rk4" and dt is None:
             raise ValueError("method 'rk4' needs dt [s] (fixed step)")
         path = "separable" if path == "auto" else path
+        check_descent_memory(self.grid_shape[0] * self.grid_shape[1], t_eval.size, path)
         # scales: v_ref = the massless initial rate (or h_s / t_end if the pad starts balanced)
         v0 = (float(self.asperity_load(h_s)) - W) / self._K_series(h_s)
         v_ref = max(abs(v0), h_s / t_end)
@@ -588,3 +589,20 @@ class _FullDAE:
         nx, ny = pad.grid_shape
         return dict(h0=h, dh0_dt=v, w_hyd=p @ self.A, w_asp=np.asarray(pad.asperity_load(h), float) * one,
                     contact_area=np.asarray(pad.contact_area(h), float) * one, pressure=p[-1].reshape(ny, nx))
+
+
+def descent_memory(cells: int, n_out: int, path: str) -> dict:
+    """Bytes a :meth:`ThrustPad.descent` will need, by part: ``grid`` (~30 arrays over the cells: film,
+    factors, operator), ``jacobian`` (the full path's sparse Jacobian and LU factors, nested-dissection fill
+    ~31/8 n log2 n entries of 12 bytes) and ``outputs`` (the integrator keeps every output state: the
+    full path's n = cells + 2 per output, the separable path's two; ~12 derived series)."""
+    n = cells + 2 if path == "full" else 2
+    return dict(grid=30.0 * 8 * cells,
+                jacobian=12.0 * (5 * n + 31 / 8 * n * np.log2(max(n, 2))) if path == "full" else 0.0,
+                outputs=8.0 * n_out * (n + 12) * 2)
+
+
+def check_descent_memory(cells: int, n_out: int, path: str):
+    """Refuse (one line) a descent whose :func:`descent_memory` exceeds the stated share of the machine."""
+    check_memory(f"this descent ({n_out} outputs on {cells} cells, {path} path)", descent_memory(cells, n_out, path),
+                 "lower n_out (or pass fewer t_eval), or use a coarser grid")

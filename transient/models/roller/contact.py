@@ -37,7 +37,7 @@ from types import SimpleNamespace
 import numpy as np
 from scipy.interpolate import RegularGridInterpolator
 
-from transient.checks import check_positive, check_range
+from transient.checks import check_memory, check_positive, check_range
 from transient.models.roller.continuation import PathResult, follow
 from transient.models.roller.dry import DryContact, DrySolver, dry_contact
 from transient.models.roller.film import EHLFilm, interpolate_state, solve_steady
@@ -118,10 +118,14 @@ class RollerContact:
         """The paper's dimensionless case: ``U = eta0 u/(E' R_m)``, ``G = alpha E'``, ``W = w/(E' R_m^2)``
         (total load) with ``E' = modulus`` [Pa] and R_m from ``roller``; ``speed`` [m/s] fixes the SI
         viscosity ``eta0 = U E' R_m / speed`` (only the product matters with Barus)."""
-        U = check_positive("U", U, "-")
+        U = check_range("U", U, "-", 0.0, 1e-4, low_open=True)
         G = check_range("G", G, "-", 0.0, 1e5)
-        W = check_positive("W", W, "-")
-        modulus = check_positive("modulus", modulus, "Pa")
+        W = check_range("W", W, "-", 0.0, 1e-2, low_open=True)
+        modulus = check_range("modulus", modulus, "Pa", 1e6, 1e13, why="(1 MPa to 10 TPa)")
+        speed = check_positive("speed", speed, "m/s")
+        if G / modulus > 1e-6:
+            raise ValueError(f"G = {G!r} [-] with modulus = {modulus!r} [Pa] gives a pressure-viscosity coefficient "
+                             f"G / modulus = {G / modulus:.4g} 1/Pa; allowed: at most 1e-06 1/Pa")
         rm = roller.mean_radius
         return cls(roller, load=W * modulus * rm * rm, speed=speed, viscosity=U * modulus * rm / speed,
                    pressure_viscosity=G / modulus, modulus=modulus, **kw)
@@ -132,6 +136,8 @@ class RollerContact:
             if grid != "paper":
                 raise ValueError(f"grid = {grid!r}: use 'paper', ('clustered', nx, ny) or (nx, ny)")
             return ("clustered",) + PAPER_GRID
+        if not isinstance(grid, (tuple, list)):
+            raise ValueError(f"grid = {grid!r}: use 'paper', ('clustered', nx, ny) or (nx, ny)")
         grid = tuple(grid)
         if len(grid) == 3 and grid[0] == "clustered":
             kind, nx, ny = grid
@@ -443,6 +449,13 @@ class RollerContact:
         t_end = check_positive("t_end", t_end, "s")
         if self.grid_spec[0] == "uniform":
             raise ValueError("transient needs a clustered grid (dense elasticity for IDA's dense Jacobian)")
+        n_out = int(check_range("n_out", n_out, "-", 2, 1e6))
+        nodes = self.grid.nx * self.grid.ny
+        n = nodes + 1
+        check_memory(f"this transient ({n_out} outputs on {nodes} nodes)",
+                     dict(jacobian=3 * 8.0 * n * n, elasticity=8.0 * nodes * nodes, outputs=3 * 8.0 * n_out * n),
+                     "use a coarser clustered grid (dense elasticity and Jacobian grow as the nodes squared) or "
+                     "lower n_out")
         film = self.film_problem(self.grid)
         s = self.scales
         w_start = self.load

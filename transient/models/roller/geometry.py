@@ -44,15 +44,15 @@ class TaperedRoller:
         check_positive("length", length, "m")
         object.__setattr__(self, "length", float(length))
         if self.dub_off_radius != math.inf:  # math.inf: no dub-off (a straight roller)
-            check_range("dub_off_radius", self.dub_off_radius, "m", 0.0, math.inf, low_open=True, high_open=True,
+            check_range("dub_off_radius", self.dub_off_radius, "m", 1e-6, math.inf, high_open=True,
                         why="(or math.inf: no dub-off)")
         start = 0.5 * length if self.profile_start is None else self.profile_start
-        check_range("profile_start", start, "m", 0.0, 0.5 * length)
+        check_range("profile_start", start, "m", 0.0, 0.5 * length, why=f"(at most half the length = {length!r} m)")
         object.__setattr__(self, "profile_start", float(start))
         check_range("tilt_deg", self.tilt_deg, "deg", -5.0, 5.0)
         if math.sin(math.radians(self.half_angle_deg)) * 0.5 * length >= self.mean_radius:
             raise ValueError(f"half_angle_deg = {self.half_angle_deg!r} [deg] with length = {length!r} [m] gives a "
-                             "non-positive radius at the small end")
+                             f"non-positive radius at the small end for mean_radius = {self.mean_radius!r} [m]")
 
     # dimensionless geometry (units of R_m) -----------------------------------------------------------
     @property

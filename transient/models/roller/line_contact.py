@@ -85,10 +85,10 @@ class LineContact:
     def __init__(self, radius, load_per_length, speed, viscosity, pressure_viscosity, modulus,
                  density: str = "dowson-higginson", viscosity_law: str = "barus", grid=401, domain=(-5.0, 2.5),
                  scheme: str = "upwind2", elastic: bool = True, dh_constants=DOWSON_HIGGINSON_PARK):
-        self.radius = check_positive("radius", radius, "m")
-        self.load_per_length = check_positive("load_per_length", load_per_length, "N/m")
-        self.speed = check_positive("speed", speed, "m/s")
-        self.modulus = check_positive("modulus", modulus, "Pa")
+        self.radius = check_range("radius", radius, "m", 1e-5, 10.0)
+        self.load_per_length = check_range("load_per_length", load_per_length, "N/m", 1e-3, 1e10)
+        self.speed = check_range("speed", speed, "m/s", 0.0, 1e3, low_open=True)
+        self.modulus = check_range("modulus", modulus, "Pa", 1e6, 1e13, why="(1 MPa to 10 TPa)")
         self.rheology = Rheology(viscosity=check_positive("viscosity", viscosity, "Pa s"),
                                  pressure_viscosity=pressure_viscosity, viscosity_law=viscosity_law,
                                  density=density, dh_constants=tuple(dh_constants))
@@ -104,7 +104,12 @@ class LineContact:
             n = int(check_range("grid", grid, "nodes", 11, 100001))
             nodes = np.linspace(lo, hi, n)
         else:
-            nodes = np.asarray(grid, dtype=float)
+            try:
+                nodes = np.asarray(grid, dtype=float)
+            except (TypeError, ValueError):
+                raise ValueError(f"grid = {grid!r}: a number of nodes or the node positions (units of b)") from None
+            if nodes.ndim != 1 or nodes.size < 11 or not np.all(np.diff(nodes) > 0):
+                raise ValueError(f"grid: {nodes.size} node positions; allowed: at least 11, increasing (units of b)")
             if nodes[0] != lo or nodes[-1] != hi:
                 raise ValueError(f"grid nodes must start at the inlet {lo} and end at the outlet {hi} (units of b)")
         self.grid = TensorGrid(nodes)
