@@ -3,8 +3,10 @@ save/load in an open format without pickle, a one-screen summary and a DataFrame
 
 A result type is a dataclass deriving from :class:`Result`, declared with :func:`result_type`. Units are declared per field with
 :func:`quantity` (``x: np.ndarray = quantity("m")``); fields without a unit are dimensionless or
-non-numeric. Every result answers ``success`` / ``message`` (a failed or stopped run says why) and, where
-it is a run that can be continued, ``final_state`` and ``final_time`` [s].
+non-numeric. Every result answers ``success`` / ``message`` (a failed or stopped run says why), declared once
+by :class:`StatusResult`; a run in time derives from :class:`RunResult` (``t``, ``stats``, ``final_state`` and
+``final_time`` [s] to continue from, ``a + b`` to join chunks), a steady solve from :class:`SteadyResult`
+(``iterations``, ``residual_norms``).
 
 Files: :meth:`Result.save` writes one ``.npz`` (a zip of ``.npy`` arrays, readable by any numpy without
 this package) holding every array field and a JSON document ``__meta__`` with the class, the scalar fields,
