@@ -38,8 +38,9 @@ import scipy.sparse.linalg as spla
 
 from transient.checks import check_choice, check_positive, check_range
 from transient.models.journal.kernels import N_ROTOR
-from transient.results import Result, quantity, result_type
+from transient.results import StatusResult, quantity, result_type
 from transient.solvers.integrate import solve
+from transient.solvers.settling import settled_stop, settles
 from transient.solvers.shooting import floquet_multipliers, newton_krylov, newton_picard
 
 METHODS = ("shooting", "newton-krylov")
@@ -56,7 +57,7 @@ def _check_orbit(orbit):
 
 
 @result_type
-class PeriodicOrbit(Result):
+class PeriodicOrbit(StatusResult):
     """One revolution of the periodic unbalance response at ``speed_rpm``.
 
     ``t`` [s] (``outputs_per_revolution + 1`` samples over one period, the unbalance at angle 0 at t = 0),
@@ -86,8 +87,7 @@ class PeriodicOrbit(Result):
     method: str = "shooting"
     wall_time: float = quantity("s", 0.0)
     basis: np.ndarray | None = quantity("-", None, repr=False)
-    success: bool = False
-    message: str = ""
+    success: bool = field(default=False, kw_only=True)
 
     @property
     def harmonic(self) -> np.ndarray:
@@ -110,7 +110,7 @@ class PeriodicOrbit(Result):
 
 
 @result_type
-class ResponseCurve(Result):
+class ResponseCurve(StatusResult):
     """Periodic orbits along a path of speeds (continuation), one row per speed.
 
     ``semi_major`` [m] of the 1x ellipse, ``amplitude_x``, ``amplitude_y`` [m] (half peak-to-peak over the
@@ -141,12 +141,10 @@ class ResponseCurve(Result):
     whirl_amplitude: np.ndarray = quantity("m")
     onset_rpm: float = quantity("rpm", float("nan"))
     orbits: list = field(default_factory=list, repr=False)
-    success: bool = True
-    message: str = ""
 
 
 @result_type
-class WhirlResponse(Result):
+class WhirlResponse(StatusResult):
     """Time-integrated response past the onset (quasi-periodic: oil whirl).
 
     ``t`` [s], ``x``, ``y`` [m] at ``outputs_per_revolution``; ``poincare_x``, ``poincare_y`` [m]: once per
@@ -166,8 +164,6 @@ class WhirlResponse(Result):
     whirl_amplitude: float = quantity("m", float("nan"))
     synchronous_amplitude: float = quantity("m", float("nan"))
     poincare_spread: float = quantity("m", float("nan"))
-    success: bool = True
-    message: str = ""
 
 
 class _Flow:
@@ -314,17 +310,14 @@ def _embed_basis(F: _Flow, V) -> np.ndarray:
 
 def _settle(orbit: JournalOrbit, state, rtol, tol, max_revolutions):
     """Time integration from ``state`` until two consecutive once-per-revolution steps of the rotor are below
-    ``tol``; returns (state at the last revolution, revolutions, message, settled)."""
+    ``tol`` (largest component, in C: :func:`~transient.solvers.settling.settles`, checked every two
+    revolutions); returns (state at the last revolution, revolutions, message, settled)."""
     C = orbit.bearing.clearance
-
-    def settled(r):
-        z = np.column_stack([r.x, r.y]) / C
-        d = np.max(np.abs(np.diff(z, axis=0)), axis=1) if len(z) > 1 else np.zeros(0)
-        return "settled" if d.size >= 2 and np.all(d[-2:] <= tol) else None
-
+    criterion = settles(tol, confirm=2, norm="max")
+    rotor = lambda r: np.column_stack([r.x, r.y]) / C  # noqa: E731
     r = orbit.run(int(max_revolutions), y0=state, rtol=rtol, atol=1e-3 * rtol, outputs_per_revolution=1,
-                  chunk_revolutions=2, stop=settled, progress=False)
-    ok = r.success and r.message == "settled"
+                  chunk_revolutions=2, stop=settled_stop(rotor, criterion), progress=False)
+    ok = r.success and criterion(rotor(r)) is not None
     msg = (f"shooting did not converge; settled by time integration in {len(r.t) - 1} revolutions" if ok else
            f"shooting did not converge and time integration did not settle in {len(r.t) - 1} revolutions: {r.message}")
     y = r.final_state.copy()

@@ -395,7 +395,7 @@ class LineContact:
                              h_min=np.array([r.h_min for r in rows]), p_max=np.array([r.p_max for r in rows]),
                              h0=sol.y[:, -1] * self.film_scale, load=np.array([ratio(t) for t in sol.t]) * w_ref,
                              x=last.x, pressure=last.pressure, film=last.film, success=sol.success,
-                             message=sol.message, n_steps=sol.stats.n_steps, n_jacobians=sol.stats.n_jac,
+                             message=sol.message, stats=sol.stats, n_steps=sol.stats.n_steps, n_jacobians=sol.stats.n_jac,
                              wall_time=wall, final_state=sol.y[-1].copy(), final_time=float(sol.t[-1] * t_ref))
 
     def _result(self, film, u, ok, msg, iterations, norms, wall) -> LineSteady:
