@@ -21,7 +21,7 @@ from transient.plots import journal as plots, save
 from transient.study.cavitation_modes import coefficients_by_mode
 from transient.study.scenario import JsonRecord, log, parser
 
-OUT = Path(__file__).resolve().parent / "out" / "journal_cavitation_modes"
+OUT = "journal_cavitation_modes"  # output folder name: ROOT/journal_cavitation_modes (transient.study.scenario)
 
 
 def main(argv=None):

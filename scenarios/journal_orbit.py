@@ -4,7 +4,7 @@ journal bearing, Figs. 3, 4, 8 and the stability threshold.
     transient run scenarios/journal_orbit.py [--quick] [--out DIR] [--grid NT NZ] [--rtol R] [--resume]
                                              [--only fig3 fig8 stability] [--settle]
 
-Default: the paper's 151 x 21 half grid; figures and journal_orbit.json in scenarios/out/journal/.
+Default: the paper's 151 x 21 half grid; figures and journal_orbit.json in transient_out/journal/.
 * Fig. 3: orbit from the static equilibrium at 6000 rpm settling onto the ellipse; Fig. 4: spectrum of x(t)
   over an integer number of revolutions of the settled orbit (transient.study.journal.orbit_from_equilibrium);
 * Fig. 8: unbalance response amplitude against speed, 1000-7500 rpm in 250 rpm steps: periodic orbits by
@@ -34,7 +34,7 @@ from transient.study.journal import (continuation_response, linear_response_curv
                                      settled_unbalance_orbit, stability_run)
 from transient.study.scenario import JsonRecord, log, parser
 
-OUT = Path(__file__).resolve().parent / "out" / "journal"
+OUT = "journal"  # output folder name: ROOT/journal (transient.study.scenario)
 ROTOR, PAPER = rho_kim.ROTOR, rho_kim.REPORTED
 PERTURB = 0.01  # initial offset of the balanced rotor in the stability runs [C]
 OPR = 64  # outputs per revolution (spectrum up to 32x)
