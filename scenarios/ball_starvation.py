@@ -14,7 +14,7 @@ Along each axis the map's regimes at the reference point are compared with the p
 ("reproduced" / "NOT reproduced", with the points that differ).
 --quick: 1, 6, 11 balls x 80, 90 rpm x 30, 60 N, 12 passes per sequence, the critical film against the ball
 count only (1 and 11 balls), bisections to 25 %.
-Figures ball_*.png and ball_starvation.json (+ the map as ball_map.npz) into scenarios/out/ball/.
+Figures ball_*.png and ball_starvation.json (+ the map as ball_map.npz) into transient_out/ball/.
 """
 
 from __future__ import annotations
@@ -33,7 +33,7 @@ from transient.plots import ball as plots, save
 from transient.study.ball import MAP_SETTINGS, critical_value, paper_verdict, regime_map, sweep
 from transient.study.scenario import JsonRecord, log, parser
 
-OUT = Path(__file__).resolve().parent / "out" / "ball"
+OUT = "ball"  # output folder name: ROOT/ball (transient.study.scenario)
 REF = jeong.REFERENCE
 #: the map's axes (the quick ones pass through the reference point), passes per sequence, the bisections'
 #: relative tolerance, the ambient films of Fig. 11

@@ -9,7 +9,7 @@ corner M <= 10, L <= 5) on a fully flooded domain (transient.study.ehl_chart). M
 "Optimum similarity analysis with applications to elastohydrodynamic lubrication", Wear 159 (1992), as
 quoted by Venner & Lubrecht, "Multilevel Methods in Lubrication" (2000). Writes moes_chart.png and
 ehl_chart.json (every point: converged or not, H_c, H_min, deviation from Moes, iterations, wall time)
-into scenarios/out/ehl_chart/.
+into transient_out/ehl_chart/.
 """
 
 from __future__ import annotations
@@ -22,7 +22,7 @@ from transient.plots.roller import moes_chart
 from transient.study.ehl_chart import chart_point, moes_curves
 from transient.study.scenario import JsonRecord, log, parser
 
-OUT = Path(__file__).resolve().parent / "out" / "ehl_chart"
+OUT = "ehl_chart"  # output folder name: ROOT/ehl_chart (transient.study.scenario)
 M_FULL, L_FULL = (1, 3, 10, 30, 100, 300, 1000), (0, 2, 5, 10, 20, 25)
 M_QUICK, L_QUICK = (1, 10, 100), (0, 5, 20)
 

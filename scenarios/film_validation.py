@@ -5,7 +5,7 @@
 Sommerfeld long bearing (pressure profile, grid convergence on uniform and stretched grids), the short
 full-film bearing against Ocvirk's limit, the squeeze film between rectangular plates against its series
 (transient.study.film_validation). Writes film_validation.png, .json (all numbers) and .csv (one row per
-solve) into DIR (default scenarios/out/film_validation/). --quick: coarse grids, a few seconds.
+solve) into DIR (default transient_out/film_validation/). --quick: coarse grids, a few seconds.
 """
 
 from __future__ import annotations

@@ -2,7 +2,7 @@
 
     transient run scenarios/flow_factors.py [--quick] [--out DIR] [--realisations N]
 
-Writes flow_factors_numerical.png and .json into scenarios/out/flow_factors/ (default) and prints a
+Writes flow_factors_numerical.png and .json into transient_out/flow_factors/ (default) and prints a
 markdown table (``--out docs`` for the documentation copy).
 
 Set-up (choices, stated in the JSON): Gaussian heights, exponential ACF (Patir 1978; Patir & Cheng
@@ -26,7 +26,7 @@ from transient.plots.surfaces import flow_factors as plot_flow_factors
 from transient.study.scenario import parser
 from transient.surfaces.flow_simulation import peklenik_lengths, pressure_flow_factor_numerical
 
-OUT = Path(__file__).resolve().parent / "out" / "flow_factors"
+OUT = "flow_factors"  # output folder name: ROOT/flow_factors (transient.study.scenario)
 GAMMAS = (1 / 6, 1.0, 6.0)
 NAME = {1 / 6: "1/6", 1.0: "1", 6.0: "6"}
 H_VALUES = (1.0, 1.5, 2.0, 3.0, 4.0, 6.0)

@@ -21,7 +21,7 @@ from transient.plots import journal as plots, save
 from transient.study.cavitation_modes import coefficients_by_mode
 from transient.study.scenario import JsonRecord, log, parser
 
-OUT = Path(__file__).resolve().parent / "out" / "journal_cavitation_modes"
+OUT = "journal_cavitation_modes"  # output folder name: ROOT/journal_cavitation_modes (transient.study.scenario)
 
 
 def main(argv=None):
@@ -35,11 +35,11 @@ def main(argv=None):
     res = coefficients_by_mode(dict(rho_kim.BEARING, grid=grid), loads, 6000.0, (0.0, 90.0, 270.0))
     rec = JsonRecord(out / "cavitation_modes.json", dict(grid=grid, quick=a.quick))
     for ang, r in res.items():
-        dK, dC = r["dK_max"], r["dC_max"]
-        rec.put(f"groove_{ang:g}deg", r)
+        dK, dC = r.dK_max, r.dC_max
+        rec.put(f"groove_{ang:g}deg", r.record())
         for i, W in enumerate(loads):
-            log(f"  groove {ang:5.0f} deg, {W:7.0f} N: e/C Elrod {r['eps_elrod'][i]:.3f}, Reynolds "
-                f"{r['eps_reynolds'][i]:.3f}; K differs {100 * dK[i]:5.1f} %, C {100 * dC[i]:5.1f} %")
+            log(f"  groove {ang:5.0f} deg, {W:7.0f} N: e/C Elrod {r.eps_elrod[i]:.3f}, Reynolds "
+                f"{r.eps_reynolds[i]:.3f}; K differs {100 * dK[i]:5.1f} %, C {100 * dC[i]:5.1f} %")
     log(f"written: {save(plots.cavitation_modes(res), out / 'cavitation_modes.png')}")
     rec.put("wall_s", time.perf_counter() - t0)
     log(f"[cavitation modes] done in {time.perf_counter() - t0:.0f} s; numbers in {out / 'cavitation_modes.json'}")

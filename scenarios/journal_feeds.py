@@ -21,7 +21,7 @@ from transient.plots import feeds as plots, save
 from transient.study.feeds import feed_designs, feed_sweep
 from transient.study.scenario import JsonRecord, log, parser
 
-OUT = Path(__file__).resolve().parent / "out" / "journal_feeds"
+OUT = "journal_feeds"  # output folder name: ROOT/journal_feeds (transient.study.scenario)
 BEARING = dict(diameter=0.1, length=0.08, clearance=150e-6, viscosity=0.01, supply_pressure=70e3,
                ambient_pressure=0.0, cavitation_pressure=0.0)
 SPEED_RPM = 3000.0

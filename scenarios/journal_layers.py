@@ -24,7 +24,7 @@ from transient.plots import layers as plots, save
 from transient.study.layers import gecim_cases, layered_cases, shear_thinning_dynamics
 from transient.study.scenario import JsonRecord, log, parser
 
-OUT = Path(__file__).resolve().parent / "out" / "journal_layers"
+OUT = "journal_layers"  # output folder name: ROOT/journal_layers (transient.study.scenario)
 
 
 def main(argv=None):

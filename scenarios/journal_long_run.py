@@ -23,7 +23,7 @@ from transient.params import rho_kim
 from transient.plots import journal as plots, save
 from transient.study.scenario import log, parser
 
-OUT = Path(__file__).resolve().parent / "out" / "journal_long"
+OUT = "journal_long"  # output folder name: ROOT/journal_long (transient.study.scenario)
 
 
 def main(argv=None):

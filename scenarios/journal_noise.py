@@ -7,7 +7,7 @@ Default: the paper's 151 x 21 half grid, 1000-7500 rpm (quick: 41 x 6, 3 speeds)
 transient.bearing_noise (the periodic orbit by shooting to 1e-4 C -- no settling run; --settle: settle from
 the static equilibrium until the once-per-revolution journal position repeats to 1e-4 C -- then record the
 pressure over an integer number of revolutions only). Figures and journal_noise.json (rewritten after each
-speed) into scenarios/out/noise/:
+speed) into transient_out/noise/:
 * Fig. 9/10 -- N_b (eq. 16) and A-weighted N_b against speed; Fig. 11/12 -- per-harmonic levels;
 * Fig. 5/6 -- equilibrium pressure, RMS fluctuation p_f and its level in the oil at 6000 rpm;
 * Fig. 4/7 -- journal x spectrum and nodal spectra at film rupture, reformation, 96 deg and max p_f;
@@ -29,7 +29,7 @@ from transient.params import rho_kim
 from transient.plots import journal as plots, save
 from transient.study.scenario import JsonRecord, log, parser
 
-OUT = Path(__file__).resolve().parent / "out" / "noise"
+OUT = "noise"  # output folder name: ROOT/noise (transient.study.scenario)
 FULL = dict(grid=(151, 21), speeds=(1000, 2000, 3000, 4000, 5000, 6000, 7000, 7500))
 QUICK = dict(grid=(41, 6), speeds=(2000, 4000, 6000))
 FIG_SPEED = 6000

@@ -4,7 +4,7 @@ journal bearing, Figs. 3, 4, 8 and the stability threshold.
     transient run scenarios/journal_orbit.py [--quick] [--out DIR] [--grid NT NZ] [--rtol R] [--resume]
                                              [--only fig3 fig8 stability] [--settle]
 
-Default: the paper's 151 x 21 half grid; figures and journal_orbit.json in scenarios/out/journal/.
+Default: the paper's 151 x 21 half grid; figures and journal_orbit.json in transient_out/journal/.
 * Fig. 3: orbit from the static equilibrium at 6000 rpm settling onto the ellipse; Fig. 4: spectrum of x(t)
   over an integer number of revolutions of the settled orbit (transient.study.journal.orbit_from_equilibrium);
 * Fig. 8: unbalance response amplitude against speed, 1000-7500 rpm in 250 rpm steps: periodic orbits by
@@ -34,7 +34,7 @@ from transient.study.journal import (continuation_response, linear_response_curv
                                      settled_unbalance_orbit, stability_run)
 from transient.study.scenario import JsonRecord, log, parser
 
-OUT = Path(__file__).resolve().parent / "out" / "journal"
+OUT = "journal"  # output folder name: ROOT/journal (transient.study.scenario)
 ROTOR, PAPER = rho_kim.ROTOR, rho_kim.REPORTED
 PERTURB = 0.01  # initial offset of the balanced rotor in the stability runs [C]
 OPR = 64  # outputs per revolution (spectrum up to 32x)
@@ -51,15 +51,15 @@ def orbit(bearing, speed, unbalance=ROTOR["unbalance"]):
 def fig3_fig4(bearing, cfg, rtol, out, rec):
     o = orbit(bearing, PAPER["speed_rpm"])
     log(f"[fig 3] {o.speed_rpm:g} rpm, {cfg['fig3_revs']} revolutions from the equilibrium (IDA rtol {rtol:g}) ...")
-    res, r = orbit_from_equilibrium(o, cfg["fig3_revs"], rtol, OPR, cfg["fft_revs"])
-    rec.put("fig3_fig4", r)
-    res.save(out / "orbit_6000rpm.npz")
-    save(plots.orbit_settling(res, r, OPR, bearing.grid_shape), out / "journal_fig3_orbit.png")
+    r = orbit_from_equilibrium(o, cfg["fig3_revs"], rtol, OPR, cfg["fft_revs"])
+    rec.put("fig3_fig4", r.record())
+    r.orbit.save(out / "orbit_6000rpm.npz")
+    save(plots.orbit_settling(r, OPR, bearing.grid_shape), out / "journal_fig3_orbit.png")
     save(plots.x_spectrum(r), out / "journal_fig4_spectrum.png")
-    so = r["settled_orbit"]
-    log(f"[fig 3] {r['wall_s']:.1f} s; semi-axes {so['semi_major']:.4f} / {so['semi_minor']:.4f} C, within 1 % after "
-        f"{r['settled_within_1pct_after_revs']} rev; [fig 4] peak at {r['spectrum_peak_order']:g}x, "
-        f"2x/1x = {r['ratio_2x_to_1x']:.2e}")
+    so = r.settled_orbit
+    log(f"[fig 3] {r.wall_s:.1f} s; semi-axes {so['semi_major']:.4f} / {so['semi_minor']:.4f} C, within 1 % after "
+        f"{r.settled_within_1pct_after_revs} rev; [fig 4] peak at {r.spectrum_peak_order:g}x, "
+        f"2x/1x = {r.ratio_2x_to_1x:.2e}")
 
 
 def fig8(bearing, cfg, rtol, out, rec, settle=False):
@@ -79,12 +79,11 @@ def fig8(bearing, cfg, rtol, out, rec, settle=False):
     for s in sp if settle else ():
         if s in sweep:
             continue
-        shape, n, change, steps, wall = settled_unbalance_orbit(orbit(bearing, s), rtol, OPR, cfg["sweep_min_revs"],
-                                                                cfg["sweep_max_revs"])
-        sweep[s] = dict(speed_rpm=s, revolutions=n, settle_estimate=change, n_steps=steps, wall_s=wall, **shape)
+        u = settled_unbalance_orbit(orbit(bearing, s), rtol, OPR, cfg["sweep_min_revs"], cfg["sweep_max_revs"])
+        sweep[s] = dict(speed_rpm=s, revolutions=u.revolutions, settle_estimate=u.settle_estimate, n_steps=u.n_steps,
+                        wall_s=u.wall_s, settled=u.success, **u.shape)
         rec.put("fig8", dict(points=[sweep[k] for k in sorted(sweep)], linear=lin))
-        log(f"[fig 8] {s:5d} rpm: semi-major {shape['semi_major']:.4f} C; {n} rev, distance from settled ~{change:.1e} "
-            f"of the amplitude, {wall:.1f} s")
+        log(f"[fig 8] {s:5d} rpm: semi-major {u.shape['semi_major']:.4f} C; {u.message}; {u.wall_s:.1f} s")
     for s, p in sweep.items():
         (lp,) = linear_response_curve(bearing, ROTOR, [s])
         p.update(linear_amp_x=lp["amp_x"], linear_amp_y=lp["amp_y"], linear_semi_major=lp["semi_major"])

@@ -36,7 +36,7 @@ from transient.plots import save, whip as plots
 from transient.study.scenario import JsonRecord, log, parser
 from transient.study.whip import ENVELOPE_TOL, long_whip, run_up, settled_text
 
-OUT = Path(__file__).resolve().parent / "out" / "journal_whip"
+OUT = "journal_whip"  # output folder name: ROOT/journal_whip (transient.study.scenario)
 OPR = 64  # outputs per revolution
 QUICK_REVOLUTIONS = 10.0  # of each long run with --quick: the whirl is still growing (reported as not settled)
 

@@ -2,7 +2,7 @@
 paper's Figs. 3-10.
 
 Run: ``transient run scenarios/roller_ehl.py [--quick] [--out DIR]`` (PNGs and ``roller_ehl.json`` into
-``scenarios/out/roller_ehl/`` by default). The paper's case (:mod:`transient.params.park`): U_m = 1e-11,
+``transient_out/roller_ehl/`` by default). The paper's case (:mod:`transient.params.park`): U_m = 1e-11,
 G = 2500, W = 2e-5, E' = 220 GPa, theta = 10 deg, R_d* = 0.5, Y_d = 0.7, tilt +0.002, -0.002 and 0 deg,
 on the paper's 94 x 45 non-uniform grid (``--quick``: 62 x 45). Prints the paper's statements checked.
 """

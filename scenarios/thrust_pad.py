@@ -7,7 +7,7 @@ Our choices where the paper gives no values are in transient.params.lee_rhim (pa
 600 N, Rq = 5 um, l0 = 16 um) and transient.physics.asperity.STEEL_CONTACT (E' = 115.4 GPa, H = 4 GPa,
 sqrt(Rq/Rp) = 0.01, N Rq Rp = 0.04: psi = 0.29, elastic). Surfaces of 512 x 512 samples (256 with --quick),
 the same seed for the three gammas; W_asp, A_re and phi_c from each surface's height density, the flow
-factors from its measured gamma. PNGs and thrust_pad.json into scenarios/out/thrust_pad/.
+factors from its measured gamma. PNGs and thrust_pad.json into transient_out/thrust_pad/.
 """
 
 from __future__ import annotations
@@ -24,7 +24,7 @@ from transient.plots import pad as plots, save
 from transient.study import pad as study
 from transient.study.scenario import JsonRecord, log, parser
 
-OUT = Path(__file__).resolve().parent / "out" / "thrust_pad"
+OUT = "thrust_pad"  # output folder name: ROOT/thrust_pad (transient.study.scenario)
 
 
 def main(argv=None):

@@ -130,10 +130,10 @@ def test_the_circle_finder_finds_a_circle(tmp_path, monkeypatch):
 
 def test_results_and_checks_import_nothing_above_them():
     """``results.py`` and ``checks.py`` sit at the bottom: they import only ``_version`` (not the package root, not
-    a room)."""
+    a room); ``results.py`` also takes the memory cap of loaded files from ``checks.py``, which is below it."""
     edges, _ = _module_imports()
-    bad = sorted((a, b) for a, b in edges if a in ("transient.results", "transient.checks")
-                 and b not in ("transient._version",))
+    allowed = {"transient.results": ("transient._version", "transient.checks"), "transient.checks": ("transient._version",)}
+    bad = sorted((a, b) for a, b in edges if a in allowed and b not in allowed[a])
     assert bad == []
 
 

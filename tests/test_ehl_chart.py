@@ -94,3 +94,18 @@ def test_line_steady_exports_its_fields_as_a_node_table():
     df = s.to_dataframe()
     assert len(df) == s.x.size and df.attrs["units"] == {"x": "m", "pressure": "Pa", "film": "m"}
     assert np.array_equal(df["film"].to_numpy(), s.film)
+
+
+def test_a_film_that_closes_on_a_too_coarse_grid_is_a_named_failure_not_a_result():
+    """At M ~ 30 on 61 nodes the continuation converges the equations to a film with h_min < 0: refused, named."""
+    c = LineContact(radius=0.01, load_per_length=1e5, speed=0.0625, viscosity=0.04, pressure_viscosity=2e-8,
+                    modulus=2.2e11, grid=61)
+    with pytest.raises(EHLConvergenceError, match=r"h_min = .* m <= 0.*too coarse"):
+        c.steady()
+    s = c.steady(raise_on_failure=False)
+    assert not s.success and s.h_min <= 0
+
+
+def test_moes_formula_tends_to_its_isoviscous_branch_as_L_vanishes():
+    """No overflow for a vanishing pressure-viscosity group: the piezoviscous part tends to zero."""
+    assert moes_central(30.0, 1e-290) == pytest.approx(moes_central(30.0, 0.0), rel=1e-12)

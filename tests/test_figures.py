@@ -84,12 +84,14 @@ def test_ball_regime_map_is_categorical_over_the_sampled_points():
 
 def test_spectrum_axis_is_not_set_by_the_dc_bin():
     from transient.plots.journal import x_spectrum
+    from transient.study.journal import EquilibriumOrbit
 
     order = np.arange(0, 16) / 4.0
     spec = np.full(order.size, 1e-9)
     spec[0], spec[4], spec[8] = 0.5, 1e-2, 1e-4  # mean position, 1x, 2x
-    rec = dict(spectrum_order=order, spectrum_amplitude_C=spec, harmonics_C={"1x": 1e-2, "2x": 1e-4},
-               speed_rpm=6000.0, fft_revolutions=4, spectrum_peak_order=1.0)
+    rec = EquilibriumOrbit(orbit=None, spectrum_order=order, spectrum_amplitude_C=spec,
+                           harmonics_C={"1x": 1e-2, "2x": 1e-4}, speed_rpm=6000.0, fft_revolutions=4,
+                           spectrum_peak_order=1.0)
     fig = x_spectrum(rec)
     assert figure_problems(fig) == []
     lo, hi = fig.axes[0].get_ylim()

@@ -3,8 +3,10 @@ save/load in an open format without pickle, a one-screen summary and a DataFrame
 
 A result type is a dataclass deriving from :class:`Result`, declared with :func:`result_type`. Units are declared per field with
 :func:`quantity` (``x: np.ndarray = quantity("m")``); fields without a unit are dimensionless or
-non-numeric. Every result answers ``success`` / ``message`` (a failed or stopped run says why) and, where
-it is a run that can be continued, ``final_state`` and ``final_time`` [s].
+non-numeric. Every result answers ``success`` / ``message`` (a failed or stopped run says why), declared once
+by :class:`StatusResult`; a run in time derives from :class:`RunResult` (``t``, ``stats``, ``final_state`` and
+``final_time`` [s] to continue from, ``a + b`` to join chunks), a steady solve from :class:`SteadyResult`
+(``iterations``, ``residual_norms``).
 
 Files: :meth:`Result.save` writes one ``.npz`` (a zip of ``.npy`` arrays, readable by any numpy without
 this package) holding every array field and a JSON document ``__meta__`` with the class, the scalar fields,
@@ -551,3 +553,105 @@ def _short(v):
 
 def _version() -> str:
     return __version__
+
+
+# --------------------------------------------------------------------------------------------------
+# the two kinds of result every model returns: a run (a time series) and a steady solve
+# --------------------------------------------------------------------------------------------------
+
+@record_type
+@dataclasses.dataclass
+class Stats:
+    """Integrator statistics, counted by the integration facade's own wrappers so they mean the same for every
+    method; summed over the chunks of a long run (``a + b``).
+
+    ``None`` means the backend does not report that number (scikit-sundae 1.2 and scipy expose no
+    error-test or nonlinear-failure counts; fixed-step RK4 has none by construction, reported as 0).
+    """
+
+    n_steps: int = 0
+    n_rhs: int = 0
+    n_jac: int = 0
+    n_error_test_failures: int | None = None
+    n_nonlinear_failures: int | None = None
+    wall_time: float = 0.0
+    callback_time: float = 0.0
+
+    @property
+    def callback_share(self) -> float:
+        """Fraction of the wall time spent inside the Python callbacks (rhs, residual, Jacobian)."""
+        return self.callback_time / self.wall_time if self.wall_time > 0 else 0.0
+
+    def __add__(self, other: "Stats") -> "Stats":
+        """Totals of two runs (a count unknown in either stays unknown)."""
+        add = lambda a, b: None if a is None or b is None else a + b  # noqa: E731
+        return Stats(*(add(getattr(self, f.name), getattr(other, f.name)) for f in dataclasses.fields(Stats)))
+
+
+@result_type
+class StatusResult(Result):
+    """Base of every result that can fail: keyword-only ``success`` and ``message`` (a failed or stopped
+    computation says why)."""
+
+    _: dataclasses.KW_ONLY
+    success: bool = True
+    message: str = ""
+
+
+@result_type
+class RunResult(StatusResult):
+    """Base of the results of a run in time: output times ``t`` [s] (the first field of every run result) and,
+    keyword-only, ``success`` / ``message`` (a failed or stopped run says why; the outputs up to the failure
+    are kept), the integrator statistics ``stats``, the final state (the model's own variables) and its time
+    ``final_time`` [s], from which the model's ``run(..., start=result)`` continues.
+
+    ``a + b`` concatenates two chunks of one run (``b`` continued from ``a``), as PyBaMM's
+    ``Solution.__add__``: the series along ``t`` (arrays whose first axis has one row per output time) are
+    joined, ``b``'s first output dropped when it repeats ``a``'s last time; the statistics are summed; every
+    other field (status, final state and time, the fields named in ``snapshot_fields``: fields at the last
+    output only) is ``b``'s."""
+
+    #: array fields that hold one snapshot (e.g. the fields at the last output), never concatenated
+    snapshot_fields: ClassVar[tuple[str, ...]] = ()
+
+    t: np.ndarray = quantity("s")
+    _: dataclasses.KW_ONLY
+    stats: Stats | None = dataclasses.field(default_factory=Stats)
+    final_state: np.ndarray | None = quantity("-", None, repr=False)
+    final_time: float = quantity("s", 0.0)
+
+    def __add__(self, other: "RunResult") -> "RunResult":
+        if type(other) is not type(self):
+            return NotImplemented
+        t0, t1 = np.asarray(self.t), np.asarray(other.t)
+        skip = 1 if t0.size and t1.size and t1[0] == t0[-1] else 0
+        n0, n1 = t0.shape[0], t1.shape[0]
+        out = {}
+        for f in dataclasses.fields(self):
+            a, b = getattr(self, f.name), getattr(other, f.name)
+            if f.name == "stats":
+                out[f.name] = b if a is None else a if b is None else a + b
+            elif (isinstance(a, np.ndarray) and isinstance(b, np.ndarray) and a.ndim >= 1 and b.ndim >= 1
+                  and a.shape[0] == n0 and b.shape[0] == n1 and a.shape[1:] == b.shape[1:]
+                  and f.name != "final_state" and f.name not in self.snapshot_fields):
+                out[f.name] = np.concatenate([a, b[skip:]])
+            else:
+                out[f.name] = b
+        init = {k: v for k, v in out.items() if k in {f.name for f in dataclasses.fields(self) if f.init}}
+        obj = type(self)(**init)
+        for f in dataclasses.fields(self):
+            if not f.init:
+                setattr(obj, f.name, out[f.name])
+        return obj
+
+
+@result_type
+class SteadyResult(StatusResult):
+    """Base of the results of a steady (time-independent) solve, keyword-only: ``success`` / ``message`` (a
+    solve that did not converge says why), the ``iterations`` taken and the ``residual_norms`` per iteration
+    (infinity norm of the scaled equations; empty when the solver does not keep them)."""
+
+    time_axis = None
+    _: dataclasses.KW_ONLY
+    iterations: int = 0
+    residual_norms: list = dataclasses.field(default_factory=list)

@@ -28,11 +28,12 @@ the orbit and records that window is :func:`transient.study.noise.bearing_noise`
 from __future__ import annotations
 
 import time
+from dataclasses import field
 
 import numpy as np
 
 from transient.analysis.spectra import amplitude_spectrum, harmonic_amplitudes, mean_and_fluctuation
-from transient.results import Result, quantity, result_type
+from transient.results import StatusResult, quantity, result_type
 from transient.units import rpm_to_hz
 
 P_REF = 20e-6  #: reference sound pressure in air [Pa] (eq. 15)
@@ -141,7 +142,7 @@ def film_transitions(state, row=0) -> dict:
 
 # -------------------------------------------------------------------------------------------------
 @result_type
-class BearingNoise(Result):
+class BearingNoise(StatusResult):
     """Noise analysis of one speed. Arrays per node are (n_axial, n_theta) on the bearing grid (half
     bearing when symmetric, row 0 next to the mid-plane).
 
@@ -182,8 +183,7 @@ class BearingNoise(Result):
     level_db_harmonics: float = quantity("dB")
     level_dba: float = quantity("dB(A)")
     timings: dict = quantity("s")
-    success: bool = True
-    message: str = "periodic response analysed"
+    message: str = field(default="periodic response analysed", kw_only=True)
 
     @property
     def frequency_hz(self) -> float:

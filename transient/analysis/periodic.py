@@ -1,7 +1,8 @@
 """Detection of a steady periodic response from once-per-period (Poincare) samples.
 
 A response that has settled onto a motion with the forcing period T returns to the same point every
-period, so its Poincare samples ``z_k = z(t0 + k T)`` converge. :func:`find_settled` returns the first
+period, so its Poincare samples ``z_k = z(t0 + k T)`` converge. :func:`find_settled`
+(:mod:`transient.solvers.settling`, where models reach it too) returns the first
 sample from which ``confirm`` consecutive Poincare steps ``|z_k - z_{k-1}| / scale`` are all below
 ``tol``; :func:`require_periodic` raises :class:`NotPeriodicError` with a clear message when that does
 not happen within the samples given (transient still decaying too slowly, or a motion that is not
@@ -15,35 +16,11 @@ from __future__ import annotations
 
 import numpy as np
 
+from transient.solvers.settling import find_settled, poincare_steps  # noqa: F401  (the criterion lives with the solvers)
+
 
 class NotPeriodicError(RuntimeError):
     """The response did not become periodic with the forcing period within the allowed time."""
-
-
-def poincare_steps(samples, scale=1.0) -> np.ndarray:
-    """Distances between consecutive Poincare samples, ``|z_k - z_{k-1}| / scale`` (length n - 1).
-
-    ``samples``: (n,) or (n, d) once-per-period samples."""
-    z = np.asarray(samples, dtype=float)
-    if z.ndim == 1:
-        z = z[:, None]
-    if len(z) < 2:
-        return np.zeros(0)
-    return np.linalg.norm(np.diff(z, axis=0), axis=1) / float(scale)
-
-
-def find_settled(samples, tol, scale=1.0, confirm=2) -> int | None:
-    """Index k of the first Poincare sample from which the motion is periodic to ``tol``: the
-    ``confirm`` steps ending at sample k are all below ``tol`` (relative to ``scale``). ``None`` if
-    not reached."""
-    if confirm < 1:
-        raise ValueError(f"confirm must be >= 1, got {confirm}")
-    d = poincare_steps(samples, scale)
-    below = d < tol
-    for k in range(confirm - 1, len(d)):
-        if below[k - confirm + 1: k + 1].all():
-            return k + 1  # sample index (step k joins samples k and k + 1)
-    return None
 
 
 def not_periodic_message(samples, tol, scale=1.0, what="the response") -> str:

@@ -63,10 +63,10 @@ def curve_part(bearing, cfg, log):
     t0 = time.perf_counter()
     for s in sp:
         t = time.perf_counter()
-        shape, n, change, _, _ = settled_unbalance_orbit(_orbit(bearing, s), rtol, OPR)
-        rows.append(dict(speed_rpm=s, settle_wall=time.perf_counter() - t, settle_revolutions=n,
-                         settle_estimate=change, settle_semi_major=shape["semi_major"]))
-        log(f"  settle {s:5d} rpm: {n} rev, {rows[-1]['settle_wall']:.1f} s")
+        u = settled_unbalance_orbit(_orbit(bearing, s), rtol, OPR)
+        rows.append(dict(speed_rpm=s, settle_wall=time.perf_counter() - t, settle_revolutions=u.revolutions,
+                         settle_estimate=u.settle_estimate, settle_semi_major=u.shape["semi_major"], settled=u.success))
+        log(f"  settle {s:5d} rpm: {u.revolutions} rev, {rows[-1]['settle_wall']:.1f} s ({u.message})")
     settle_wall = time.perf_counter() - t0
     t0 = time.perf_counter()
     curve = response_curve(_orbit(bearing, sp[0]), sp, rtol=rtol, outputs_per_revolution=OPR)

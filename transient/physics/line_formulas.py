@@ -90,5 +90,9 @@ def moes_central(M: float, L: float) -> float:
     a = moes_asymptotes(M, L)
     s = (7.0 + 8.0 * math.exp(-2.0 * a["EI"] / a["RI"])) / 5.0
     iso = (a["RI"] ** (7.0 / 3.0) + a["EI"] ** (7.0 / 3.0)) ** (3.0 * s / 7.0)
-    piezo = (a["RP"] ** -3.5 + a["EP"] ** -3.5) ** (-2.0 * s / 7.0) if L > 0 else 0.0
+    piezo = 0.0
+    if L > 0:  # (RP^-3.5 + EP^-3.5)^(-2s/7) through logarithms: it tends to 0 as L -> 0 instead of overflowing
+        l1, l2 = -3.5 * math.log(a["RP"]), -3.5 * math.log(a["EP"])
+        top = max(l1, l2)
+        piezo = math.exp(-2.0 * s / 7.0 * (top + math.log(math.exp(l1 - top) + math.exp(l2 - top))))
     return (iso + piezo) ** (1.0 / s)

@@ -4,7 +4,7 @@ drawable from the installed package.
 The figures are grouped by model family, each a module reachable from here without a separate import::
 
     import transient.plots as tp
-    fig = tp.journal.orbit_settling(result, record, 64, bearing.grid_shape)
+    fig = tp.journal.orbit_settling(orbit_from_equilibrium(orbit, 30, 1e-6), 64, bearing.grid_shape)
     tp.save(fig, "out/orbit.png")
 
 ``ball``, ``feeds``, ``film``, ``journal``, ``layers``, ``pad``, ``roller``, ``surfaces``, ``sweep``, ``whip`` (imported on

@@ -9,22 +9,23 @@ from transient.analysis.orbits import per_revolution
 from transient.plots import figure
 
 
-def orbit_settling(result, record, outputs_per_revolution, grid):
+def orbit_settling(study, outputs_per_revolution, grid):
     """Fig. 3: the orbit from the static equilibrium settling onto its ellipse (left) and the distance of
-    each revolution from the last (right). ``record``: the numbers of
-    :func:`transient.study.journal.orbit_from_equilibrium`."""
+    each revolution from the last (right). ``study``: the
+    :class:`~transient.study.journal.EquilibriumOrbit` of :func:`transient.study.journal.orbit_from_equilibrium`."""
+    result = study.orbit
     C = result.clearance
     X, Y = per_revolution(result.x, result.y, outputs_per_revolution, C)
-    dist = np.asarray(record["settle_distance_per_rev"])
-    amp = record["settled_orbit"]["semi_major"]
+    dist = np.asarray(study.settle_distance_per_rev)
+    amp = study.settled_orbit["semi_major"]
     fig, (ax, bx) = figure(1, 2, size=(11, 4.8))
     ax.plot(result.y / C, result.x / C, lw=0.5, color="0.6", label="transient from equilibrium")
     ax.plot(np.append(Y[-1], Y[-1][0]), np.append(X[-1], X[-1][0]), lw=1.8, color="tab:red",
             label=f"settled orbit (rev {len(dist)})")
-    eq = record["equilibrium"]
+    eq = study.equilibrium
     ax.plot(eq[1], eq[0], "k+", ms=10, label="static equilibrium")
     ax.set(xlabel="y / C (90 deg ahead of the load, with the rotation) [-]", ylabel="x / C (towards the load) [-]",
-           title=f"Fig. 3: journal orbit, {record['speed_rpm']:g} rpm, {grid[0]}x{grid[1]}")
+           title=f"Fig. 3: journal orbit, {study.speed_rpm:g} rpm, {grid[0]}x{grid[1]}")
     ax.invert_yaxis()
     ax.set_aspect("equal", adjustable="datalim")
     ax.legend(fontsize=8)
@@ -32,27 +33,29 @@ def orbit_settling(result, record, outputs_per_revolution, grid):
     bx.axhline(0.01 * amp, color="0.5", ls=":", lw=0.8)
     bx.set(xlabel="revolution [-]", ylabel="max distance from the last revolution [C]",
            title=f"settling (1 % of the amplitude: dotted): within 1 % after "
-                 f"{record['settled_within_1pct_after_revs']} rev")
+                 f"{study.settled_within_1pct_after_revs} rev")
     bx.title.set_fontsize(10)
     bx.grid(True, which="both", lw=0.3)
     return fig
 
 
-def x_spectrum(record):
-    """Fig. 4: spectrum of x over the last revolutions of the settled orbit (orders of the shaft speed)."""
-    order = np.asarray(record["spectrum_order"])
-    spec = np.asarray(record["spectrum_amplitude_C"])
+def x_spectrum(study):
+    """Fig. 4: spectrum of x over the last revolutions of the settled orbit (orders of the shaft speed);
+    ``study``: the :class:`~transient.study.journal.EquilibriumOrbit` of
+    :func:`transient.study.journal.orbit_from_equilibrium`."""
+    order = np.asarray(study.spectrum_order)
+    spec = np.asarray(study.spectrum_amplitude_C)
     fig, ax = figure(size=(7, 4.2))
     ac = order > 0.05  # without the DC bin (the orbit's mean position), which would set the axis range
     ax.semilogy(order[ac], np.maximum(spec[ac], 1e-12), lw=1.0)
-    for h, v in record["harmonics_C"].items():
+    for h, v in study.harmonics_C.items():
         if h != "0.5x":
             ax.annotate(h, (float(h[:-1]), v), textcoords="offset points", xytext=(3, 4), fontsize=8)
     ax.set_xlim(0, 8)
     ax.set_ylim(max(spec[ac].max() * 1e-6, 1e-12), spec[ac].max() * 3)
     ax.set(xlabel="frequency / shaft speed [-]", ylabel="amplitude of x [C]",
-           title=f"Fig. 4: spectrum of x, {record['speed_rpm']:g} rpm, last {record['fft_revolutions']} revolutions "
-                 f"(largest peak at {record['spectrum_peak_order']:g}x)")
+           title=f"Fig. 4: spectrum of x, {study.speed_rpm:g} rpm, last {study.fft_revolutions} revolutions "
+                 f"(largest peak at {study.spectrum_peak_order:g}x)")
     ax.title.set_fontsize(10)
     ax.grid(True, which="both", lw=0.3)
     return fig
@@ -206,12 +209,12 @@ def whirl_amplitude(points):
 def cavitation_modes(res):
     """Elrod against Reynolds film (:func:`transient.study.cavitation_modes.coefficients_by_mode`): the largest
     entry of (K_Elrod - K_Reynolds) and of the same for C, relative to the largest Reynolds entry, against the
-    Reynolds equilibrium eccentricity, one line per groove angle (``dK_max``, ``dC_max`` of each angle's
-    table)."""
+    Reynolds equilibrium eccentricity, one line per groove angle (``dK_max``, ``dC_max`` of each
+    :class:`~transient.study.cavitation_modes.ModeComparison`)."""
     fig, axes = figure(1, 2, size=(11, 4.2))
     for ang, r in res.items():
         for ax, q in zip(axes, ("K", "C")):
-            ax.plot(r["eps_reynolds"], 100 * r[f"d{q}_max"], "o-", label=f"groove at {ang:g} deg")
+            ax.plot(r.eps_reynolds, 100 * getattr(r, f"d{q}_max"), "o-", label=f"groove at {ang:g} deg")
     for ax, q in zip(axes, ("stiffness K", "damping C")):
         ax.set(xlabel="equilibrium e/C (Reynolds film) [-]", ylabel="largest |Elrod - Reynolds| / max |Reynolds| [%]",
                title=f"{q}: mass-conserving vs Reynolds-condition film")

@@ -39,24 +39,20 @@ import scipy.sparse.linalg as spla
 
 from transient.checks import check_choice
 from transient.fv.reynolds import Fields, ReynoldsOperator
-from transient.results import Result, result_type
+from transient.results import SteadyResult, result_type
 
 _TINY = np.finfo(float).tiny
 
 
 @result_type
-class NewtonResult(Result):
+class NewtonResult(SteadyResult):
     """Outcome of :func:`newton`: the solution ``x``, iterations, residual norms per iteration."""
 
     time_axis = None
     x: np.ndarray
-    iterations: int
     residual_norm: float
-    success: bool
-    message: str
     n_factorisations: int = 0
     step_norms: list = field(default_factory=list)
-    residual_norms: list = field(default_factory=list)
 
     @property
     def u(self) -> np.ndarray:

@@ -46,11 +46,11 @@ from typing import Callable
 import numpy as np
 import scipy.sparse.linalg as spla
 
-from transient.results import Result, result_type
+from transient.results import SteadyResult, result_type
 
 
 @result_type
-class ShootingResult(Result):
+class ShootingResult(SteadyResult):
     """Outcome of a shooting solve. ``state``: the accepted start state (a fixed point of the period map to
     ``error_estimate`` in the caller's norm), ``image``: its flow over one period, ``multipliers``: the
     Ritz values of the monodromy (dominant first), ``basis``/``monodromy``: ``W = M V`` orthonormalised
@@ -62,16 +62,12 @@ class ShootingResult(Result):
     time_axis = None
     state: np.ndarray
     image: np.ndarray
-    success: bool
-    message: str
-    iterations: int = 0
     periods: int = 0
     derivatives: int = 0
     error_estimate: float = float("nan")
     multipliers: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=complex))
     basis: np.ndarray | None = None
     monodromy: np.ndarray | None = None
-    residual_norms: list = field(default_factory=list)
     step_norms: list = field(default_factory=list)
     rtols: list = field(default_factory=list)
     wall_time: float = 0.0

@@ -13,7 +13,7 @@ import numpy as np
 
 from transient.models.ball.bearing import FLOODED, PARCHED, STARVED
 from transient.params import jeong
-from transient.results import Result, quantity, result_type
+from transient.results import StatusResult, quantity, result_type
 
 SWEPT = ("n_balls", "speed_rpm", "load", "ambient_film")
 REGIMES = (FLOODED, STARVED, PARCHED)
@@ -53,7 +53,7 @@ def boundaries(values, sequences) -> dict:
 # --------------------------------------------------------------------------------------------------
 
 @result_type
-class RegimeMap(Result):
+class RegimeMap(StatusResult):
     """Final regime of the ball-pass sequence over ball count x speed x load (one ambient film).
 
     Arrays are indexed ``[i_balls, i_speed, i_load]``; ``regime`` holds indices into ``regimes``
@@ -75,8 +75,6 @@ class RegimeMap(Result):
     n_run: np.ndarray = quantity("-", None)
     wall: np.ndarray = quantity("s", None)
     settings: dict = None
-    success: bool = True
-    message: str = ""
 
     def names(self) -> np.ndarray:
         """The regime of every point as a string array."""

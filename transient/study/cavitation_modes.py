@@ -11,17 +11,61 @@ e/C ~ 0.5).
 
 from __future__ import annotations
 
+import dataclasses
+
 import numpy as np
 
 from transient.models.journal.bearing import Groove, JournalBearing
+from transient.results import StatusResult, quantity, result_type
 
 
-def coefficients_by_mode(bearing_kw: dict, loads_N, speed_rpm: float, groove_angles_deg=(0.0, 90.0)) -> dict:
-    """For each groove angle and load: equilibrium eccentricity, K [N/m] and C [N s/m] (2x2) of both films, and
-    ``dK_max``, ``dC_max``: the largest entry of :func:`relative_difference` per load.
-    Returns ``{angle: dict(loads, eps_elrod, eps_reynolds, K_elrod, K_reynolds, C_elrod, C_reynolds, dK_max,
-    dC_max)}``."""
-    out = {}
+@result_type
+class ModeComparison(StatusResult):
+    """Both films with the groove at one angle, per load: the equilibrium eccentricity ratios, the stiffness
+    ``K`` [N/m] and damping ``C`` [N s/m] (loads, 2, 2) of the Elrod and the Reynolds film, and ``dK_max``,
+    ``dC_max``: the largest entry of :func:`relative_difference` per load."""
+
+    time_axis = "loads"
+    groove_angle_deg: float = quantity("deg")
+    loads: np.ndarray = quantity("N")
+    eps_elrod: np.ndarray = quantity("-")
+    eps_reynolds: np.ndarray = quantity("-")
+    K_elrod: np.ndarray = quantity("N/m")
+    K_reynolds: np.ndarray = quantity("N/m")
+    C_elrod: np.ndarray = quantity("N s/m")
+    C_reynolds: np.ndarray = quantity("N s/m")
+    dK_max: np.ndarray = quantity("-", None)
+    dC_max: np.ndarray = quantity("-", None)
+
+    def __post_init__(self):
+        for q in ("K", "C"):
+            if getattr(self, f"d{q}_max") is None:
+                d = np.abs(relative_difference(self, q))
+                setattr(self, f"d{q}_max", d.reshape(len(self.loads), -1).max(axis=1))
+
+    def record(self) -> dict:
+        """The table as a JSON-ready dict (arrays as lists)."""
+        return {f.name: (lambda v: v.tolist() if isinstance(v, np.ndarray) else v)(getattr(self, f.name))
+                for f in dataclasses.fields(self) if f.name not in ("success", "message")}
+
+
+@result_type
+class CavitationModes(StatusResult):
+    """The comparison at every groove angle (:class:`ModeComparison`, in the order asked);
+    ``items()`` gives (angle [deg], comparison) pairs."""
+
+    time_axis = None
+    comparisons: list
+
+    def items(self):
+        return [(c.groove_angle_deg, c) for c in self.comparisons]
+
+
+def coefficients_by_mode(bearing_kw: dict, loads_N, speed_rpm: float,
+                         groove_angles_deg=(0.0, 90.0)) -> CavitationModes:
+    """For each groove angle and load: equilibrium eccentricity, K [N/m] and C [N s/m] (2x2) of both films and
+    their largest relative difference (:class:`ModeComparison`)."""
+    out = []
     for ang in groove_angles_deg:
         kw = dict(bearing_kw, groove=Groove(angle_deg=ang))
         rows = {m: dict(eps=[], K=[], C=[]) for m in ("elrod", "reynolds")}
@@ -32,16 +76,13 @@ def coefficients_by_mode(bearing_kw: dict, loads_N, speed_rpm: float, groove_ang
                 K, C = b.coefficients(W, speed_rpm)
                 rows[mode]["K"].append(K)
                 rows[mode]["C"].append(C)
-        r = dict(loads=np.asarray(loads_N, dtype=float),
-                 **{f"{q}_{m}": np.asarray(rows[m][q]) for m in rows for q in ("eps", "K", "C")})
-        for q in ("K", "C"):
-            r[f"d{q}_max"] = np.abs(relative_difference(r, q)).reshape(len(r["loads"]), -1).max(axis=1)
-        out[float(ang)] = r
-    return out
+        out.append(ModeComparison(groove_angle_deg=float(ang), loads=np.asarray(loads_N, dtype=float),
+                                  **{f"{q}_{m}": np.asarray(rows[m][q]) for m in rows for q in ("eps", "K", "C")}))
+    return CavitationModes(comparisons=out)
 
 
-def relative_difference(res_angle: dict, quantity: str) -> np.ndarray:
+def relative_difference(comparison: ModeComparison, quantity: str) -> np.ndarray:
     """(Elrod - Reynolds) / max|Reynolds| per load for the 2x2 ``quantity`` ("K" or "C"): shape (loads, 2, 2)."""
-    e, r = res_angle[f"{quantity}_elrod"], res_angle[f"{quantity}_reynolds"]
+    e, r = getattr(comparison, f"{quantity}_elrod"), getattr(comparison, f"{quantity}_reynolds")
     scale = np.abs(r).reshape(len(r), -1).max(axis=1)[:, None, None]
     return (e - r) / scale

@@ -10,25 +10,62 @@ secant steps in speed; no settling runs.
 Fig. 8 by settling (:func:`settled_unbalance_orbit`, the former way): each speed starts on the linear unbalance
 response (:meth:`~transient.models.journal.JournalOrbit.linear_start`) and runs until the distance from the
 settled orbit, estimated from the change between consecutive revolutions ``d`` and its decay ratio ``q`` as
-``d q / (1 - q)``, is below ``settle_fraction`` of the orbit amplitude (checked every 2 revolutions after
-``min_revolutions``, capped at ``max_revolutions``); the estimate is saved with each point.
+``d q / (1 - q)``, is below ``settle_fraction`` of the orbit amplitude (by :func:`~transient.study.settle.settle`:
+checked every 2 revolutions from ``min_revolutions`` on, capped at ``max_revolutions``; a point that did not get
+there says "NOT settled"); the estimate is saved with each point.
 """
 
 from __future__ import annotations
+
+import dataclasses
 
 import numpy as np
 
 from transient.analysis.orbits import (ellipse_semi_major, growth_per_revolution, orbit_shape, per_revolution,
                                        revolution_spectrum)
-from transient.models.journal import JournalOrbit
+from transient.models.journal import JournalOrbit, OrbitResult
 from transient.models.journal.periodic import response_curve, stability_onset
+from transient.results import StatusResult, quantity, result_type
+from transient.study.settle import settle
+
+
+@result_type
+class EquilibriumOrbit(StatusResult):
+    """The orbit from the static equilibrium (Figs. 3-4) and its numbers: the run (``orbit``), the speed
+    [rpm], the revolutions run, the equilibrium (eccentricity ratio, attitude angle [deg], centre [C]), the last
+    revolution's shape [C] (:func:`~transient.analysis.orbits.orbit_shape`), the distance of each revolution
+    from the last [C] and the revolution after which it stays within ``settle_fraction`` of the amplitude, and
+    the spectrum of x over the last ``fft_revolutions`` (orders of the shaft speed, amplitudes [C], the
+    harmonics [C] and the order of the largest peak). :meth:`record` is the JSON-ready record of the numbers."""
+
+    time_axis = None
+    orbit: OrbitResult
+    speed_rpm: float = quantity("rpm")
+    revolutions: int = 0
+    wall_s: float = quantity("s", 0.0)
+    n_steps: int = 0
+    eps_equilibrium: float = quantity("-", 0.0)
+    attitude_deg: float = quantity("deg", 0.0)
+    equilibrium: tuple = quantity("-", (0.0, 0.0))
+    settled_orbit: dict = quantity("-", default_factory=dict)
+    settle_distance_per_rev: np.ndarray = quantity("-", default_factory=lambda: np.zeros(0))
+    settled_within_1pct_after_revs: int = 0
+    spectrum_peak_order: float = quantity("-", 0.0)
+    harmonics_C: dict = quantity("-", default_factory=dict)
+    ratio_2x_to_1x: float = quantity("-", 0.0)
+    fft_revolutions: int = 0
+    spectrum_order: np.ndarray = quantity("-", default_factory=lambda: np.zeros(0))
+    spectrum_amplitude_C: np.ndarray = quantity("-", default_factory=lambda: np.zeros(0))
+
+    def record(self) -> dict:
+        """The numbers as a JSON-ready dict (arrays as lists; the orbit run left out)."""
+        return _record(self, skip=("orbit", "success", "message"))
 
 
 def orbit_from_equilibrium(orbit, revolutions, rtol, outputs_per_revolution=64, fft_revolutions=10,
-                           settle_fraction=0.01):
+                           settle_fraction=0.01) -> EquilibriumOrbit:
     """The paper's Fig. 3/4 run: ``revolutions`` from the static equilibrium (IDA), the settled ellipse, the
-    distance of each revolution from the last, and the x spectrum over the last ``fft_revolutions``.
-    Returns (orbit result, record dict of the numbers)."""
+    distance of each revolution from the last, and the x spectrum over the last ``fft_revolutions``."""
     opr = outputs_per_revolution
     e = orbit.equilibrium()
     res = orbit.run(revolutions, method="ida", rtol=rtol, atol=1e-9, outputs_per_revolution=opr,
@@ -40,13 +77,13 @@ def orbit_from_equilibrium(orbit, revolutions, rtol, outputs_per_revolution=64, 
     settled_at = next((k + 1 for k in range(len(dist)) if np.all(dist[k:-1] <= settle_fraction * amp)), len(dist))
     nf = min(fft_revolutions, X.shape[0])
     order, spec, harm, peak = revolution_spectrum(X[-nf:])
-    rec = dict(speed_rpm=orbit.speed_rpm, revolutions=revolutions, wall_s=res.stats.wall_time,
-               n_steps=res.stats.n_steps, eps_equilibrium=e.eccentricity_ratio, attitude_deg=e.attitude_angle_deg,
-               equilibrium=(e.position[0] / res.clearance, e.position[1] / res.clearance), settled_orbit=shape,
-               settle_distance_per_rev=dist.tolist(), settled_within_1pct_after_revs=settled_at,
-               spectrum_peak_order=peak, harmonics_C=harm, ratio_2x_to_1x=harm["2x"] / harm["1x"],
-               fft_revolutions=nf, spectrum_order=order.tolist(), spectrum_amplitude_C=spec.tolist())
-    return res, rec
+    return EquilibriumOrbit(
+        orbit=res, speed_rpm=orbit.speed_rpm, revolutions=revolutions, wall_s=res.stats.wall_time,
+        n_steps=res.stats.n_steps, eps_equilibrium=e.eccentricity_ratio, attitude_deg=e.attitude_angle_deg,
+        equilibrium=(e.position[0] / res.clearance, e.position[1] / res.clearance), settled_orbit=shape,
+        settle_distance_per_rev=dist, settled_within_1pct_after_revs=settled_at, spectrum_peak_order=peak,
+        harmonics_C=harm, ratio_2x_to_1x=harm["2x"] / harm["1x"], fft_revolutions=nf, spectrum_order=order,
+        spectrum_amplitude_C=spec, success=res.success, message=res.message)
 
 
 def settle_estimate(X, Y) -> float:
@@ -62,30 +99,49 @@ def settle_estimate(X, Y) -> float:
     return float(d[-1] * q / (1.0 - q) / max(amp, 1e-300))  # remaining distance if the decay is geometric
 
 
+@result_type
+class UnbalanceOrbit(StatusResult):
+    """The unbalance response at one speed settled from the linear start (:func:`settled_unbalance_orbit`): the
+    settling run (``orbit``), the last revolution's shape [C] (:func:`~transient.analysis.orbits.orbit_shape`),
+    the revolutions run, the estimated distance from the settled orbit over the amplitude
+    (:func:`settle_estimate`), the integrator steps and the wall time [s]. ``success``: the estimate fell below
+    the asked fraction (else "NOT settled")."""
+
+    time_axis = None
+    orbit: OrbitResult
+    shape: dict = quantity("-", default_factory=dict)
+    revolutions: int = 0
+    settle_estimate: float = quantity("-", float("inf"))
+    n_steps: int = 0
+    wall_s: float = quantity("s", 0.0)
+
+
 def settled_unbalance_orbit(orbit, rtol, outputs_per_revolution=64, min_revolutions=4, max_revolutions=40,
-                            settle_fraction=1e-2):
-    """Settle from the linear start by the extrapolated-distance estimate (module docstring). Returns (the
-    last revolution's shape dict, revolutions run, estimated distance / amplitude, steps, wall [s])."""
+                            settle_fraction=1e-2) -> UnbalanceOrbit:
+    """Settle from the linear start by the extrapolated-distance estimate (module docstring), by
+    :func:`~transient.study.settle.settle` with the whole revolutions as the observable, checked every 2
+    revolutions from ``min_revolutions`` on."""
     opr = outputs_per_revolution
-    res = orbit.run(min_revolutions, method="ida", rtol=rtol, atol=1e-9, outputs_per_revolution=opr,
-                    y0=orbit.linear_start(), progress=False)
-    xs, ys = [res.x], [res.y]
-    steps, wall = res.stats.n_steps, res.stats.wall_time
-    n = min_revolutions
-    while True:
-        X, Y = per_revolution(np.concatenate(xs), np.concatenate(ys), opr, res.clearance)
-        change = settle_estimate(X, Y)
-        if change <= settle_fraction or n >= max_revolutions or res.touched_at is not None:
-            break
-        extra = min(2, max_revolutions - n)
-        res = orbit.run(extra, method="ida", rtol=rtol, atol=1e-9, outputs_per_revolution=opr, start=res,
-                        progress=False)
-        xs.append(res.x[1:])
-        ys.append(res.y[1:])
-        steps += res.stats.n_steps
-        wall += res.stats.wall_time
-        n += extra
-    return orbit_shape(X[-1], Y[-1]), n, change, steps, wall
+
+    def revolutions(r):
+        return per_revolution(r.x, r.y, opr, r.clearance)
+
+    def criterion(XY):
+        n = XY[0].shape[0]
+        return n if n >= min_revolutions and settle_estimate(*XY) <= settle_fraction else None
+
+    s = settle(orbit, observable=revolutions, criterion=criterion, max_periods=max_revolutions, chunk_periods=2,
+               outputs_per_period=opr, require=False, what=f"the unbalance orbit at {orbit.speed_rpm:g} rpm",
+               method="ida", rtol=rtol, atol=1e-9, y0=orbit.linear_start())
+    res = s.result
+    X, Y = revolutions(res)
+    change = settle_estimate(X, Y)
+    ok = res.success and res.touched_at is None and change <= settle_fraction
+    msg = (f"settled: distance from the settled orbit ~{change:.1e} of the amplitude after {X.shape[0]} revolutions"
+           if ok else f"NOT settled to {settle_fraction:g} in {X.shape[0]} revolutions (estimate {change:.1e})"
+           + ("" if res.success and res.touched_at is None else f": {res.message}"))
+    return UnbalanceOrbit(orbit=res, shape=orbit_shape(X[-1], Y[-1]), revolutions=X.shape[0], settle_estimate=change,
+                          n_steps=res.stats.n_steps, wall_s=res.stats.wall_time, success=ok, message=msg)
 
 
 def continuation_response(bearing, rotor, speeds, rtol, outputs_per_revolution=64, step_beyond=250.0,
@@ -159,3 +215,14 @@ def stability_run(orbit, perturbation, revolutions, rtol, outputs_per_revolution
                      verdict="grows" if slope > 0 else "decays", wall_s=res.stats.wall_time,
                      touched=res.touched_at is not None, revolutions_axis=res.revolutions.tolist(),
                      distance_C=r.tolist())
+
+
+def _record(result, skip=()) -> dict:
+    """The fields of a study result as a JSON-ready dict (arrays as lists)."""
+    out = {}
+    for f in dataclasses.fields(result):
+        if f.name in skip:
+            continue
+        v = getattr(result, f.name)
+        out[f.name] = v.tolist() if isinstance(v, np.ndarray) else v
+    return out

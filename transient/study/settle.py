@@ -1,38 +1,44 @@
-"""Settle a periodically forced model onto its periodic response: one protocol for every model.
+"""Settle a periodically forced model onto its periodic response: one loop for every study.
 
 A response forced with period T returns to the same point every period once it has settled, so its
-once-per-period (Poincare) samples converge (:mod:`transient.analysis.periodic`). :func:`settle` runs the
-model period by period (in chunks, nothing recorded but the Poincare samples) and stops as soon as
-``confirm`` consecutive Poincare steps are below ``tol``; it raises
-:class:`~transient.analysis.periodic.NotPeriodicError` with a diagnosis when that does not happen within
-``max_periods`` (still decaying, or not periodic: whirl past the threshold) or when the run hits a
-terminal event (the journal touches the bearing).
+once-per-period (Poincare) samples converge (:mod:`transient.solvers.settling`). :func:`settle` runs the
+model period by period in chunks (the model's long-run driver, its progress bar with ``progress=True``),
+asks an ``observable(result_so_far)`` and a ``criterion(observable) -> int | None`` after every chunk, and
+stops as soon as the criterion returns the period at which the response settled. The default is the
+Poincare criterion: ``confirm`` consecutive once-per-period steps of the journal centre below ``tol`` [C]
+(:func:`~transient.solvers.settling.settles`). When that does not happen within ``max_periods`` (still
+decaying, or not periodic: whirl past the threshold) or the run hits a terminal event (the journal touches
+the bearing), it raises :class:`~transient.analysis.periodic.NotPeriodicError` with a diagnosis, or, with
+``require=False``, returns the result flagged ``success=False``.
 
-The model needs ``run(periods, outputs_per_revolution=1, chunk_revolutions=, stop=, start=, ...)``
-returning a result with ``final_state``/``final_time`` (e.g. :class:`~transient.models.journal.JournalOrbit`)
-and an ``observable(result) -> (n, d)`` array of the Poincare samples in the units of ``tol``.
+The model needs ``run(periods, outputs_per_revolution=, chunk_revolutions=, stop=, start=, progress=, ...)``
+returning a result with ``final_state``/``final_time`` (e.g. :class:`~transient.models.journal.JournalOrbit`).
 """
 
 from __future__ import annotations
 
 import time
-from dataclasses import dataclass
+from typing import Callable
 
 import numpy as np
 
-from transient.analysis.periodic import NotPeriodicError, find_settled, not_periodic_message, poincare_steps
+from transient.analysis.periodic import NotPeriodicError, not_periodic_message, poincare_steps
+from transient.results import StatusResult, quantity, result_type
+from transient.solvers.settling import settled_stop, settles
 
 
-@dataclass
-class Settled:
-    """A settled run: the last result (continue from it with ``start=``), where it settled, the Poincare
-    steps, the periods integrated and the wall time [s]."""
+@result_type
+class Settled(StatusResult):
+    """A settle run: the last result (continue from it with ``start=``), the period at which it settled
+    (None if it did not), the Poincare steps of the journal centre [C], the periods integrated and the wall
+    time [s]; ``success`` says whether the criterion was met."""
 
+    time_axis = None
     result: object
     settled_at: int | None
-    poincare_steps: np.ndarray
-    periods: int
-    wall_time: float
+    poincare_steps: np.ndarray = quantity("-")
+    periods: int = 0
+    wall_time: float = quantity("s", 0.0)
 
 
 def journal_observable(result) -> np.ndarray:
@@ -41,36 +47,49 @@ def journal_observable(result) -> np.ndarray:
 
 
 def settle(model, *, tol: float = 1e-4, confirm: int = 2, max_periods: int = 60, chunk_periods: int = 5,
-           periods: int | None = None, start=None, observable=journal_observable, what: str | None = None,
-           **run_kwargs) -> Settled:
-    """Run ``model`` until its Poincare samples settle to ``tol`` (module docstring).
+           periods: int | None = None, start=None, observable: Callable = journal_observable,
+           criterion: Callable | None = None, outputs_per_period: int = 1, require: bool = True,
+           progress: bool = False, what: str | None = None, **run_kwargs) -> Settled:
+    """Run ``model`` until ``criterion(observable(result))`` says it has settled (module docstring).
 
-    ``periods`` = int skips the detection and runs exactly that many. ``run_kwargs`` go to ``model.run``
-    (method, rtol, ...)."""
+    ``criterion`` defaults to ``confirm`` Poincare steps below ``tol``; ``outputs_per_period`` > 1 hands the
+    observable the whole orbit (e.g. per-revolution shapes). ``periods`` = int skips the detection and runs
+    exactly that many. ``run_kwargs`` go to ``model.run`` (method, rtol, y0, ...)."""
     what = what or f"the response of {type(model).__name__}"
+    opp = int(outputs_per_period)
     t0 = time.perf_counter()
     if periods is not None:
-        r = model.run(int(periods), outputs_per_revolution=1, start=start, **run_kwargs) if periods > 0 else None
-        _no_event(r, what)
-        z = observable(r) if r is not None else np.zeros((0, 2))
-        return Settled(r, None, poincare_steps(z), int(periods), time.perf_counter() - t0)
+        r = model.run(int(periods), outputs_per_revolution=opp, start=start, progress=progress,
+                      **run_kwargs) if periods > 0 else None
+        _no_event(r, what, require)
+        steps = poincare_steps(journal_observable(r)[::opp]) if r is not None else np.zeros(0)
+        return Settled(r, None, steps, int(periods), time.perf_counter() - t0, message=f"ran {int(periods)} periods")
     if int(max_periods) < 1:
         raise ValueError(f"max_periods = {max_periods!r} [-]; allowed: >= 1")
-
-    def settled(partial):
-        k = find_settled(observable(partial), tol, 1.0, confirm)
-        return f"settled to {tol:g} after {k} periods" if k is not None else None
-
-    r = model.run(int(max_periods), outputs_per_revolution=1, chunk_revolutions=max(1, int(chunk_periods)),
-                  stop=settled, start=start, progress=False, **run_kwargs)
-    _no_event(r, what)
+    poincare = criterion is None
+    criterion = settles(tol, confirm) if poincare else criterion
+    r = model.run(int(max_periods), outputs_per_revolution=opp, chunk_revolutions=max(1, int(chunk_periods)),
+                  stop=settled_stop(observable, criterion), start=start, progress=progress, **run_kwargs)
+    done = (len(r.t) - 1) // opp
+    if not _no_event(r, what, require):
+        return Settled(r, None, poincare_steps(journal_observable(r)[::opp]), done, time.perf_counter() - t0,
+                       success=False, message=f"{what}: {r.message}")
     z = observable(r)
-    k = find_settled(z, tol, 1.0, confirm)
+    k = criterion(z)
     if k is None:
-        raise NotPeriodicError(not_periodic_message(z, tol, 1.0, what))
-    return Settled(r, k, poincare_steps(z), len(z) - 1, time.perf_counter() - t0)
+        msg = not_periodic_message(z, tol, 1.0, what) if poincare else f"{what} did not settle in {done} periods"
+        if require:
+            raise NotPeriodicError(msg)
+        return Settled(r, None, poincare_steps(journal_observable(r)[::opp]), done, time.perf_counter() - t0,
+                       success=False, message=f"NOT settled: {msg}")
+    return Settled(r, k, poincare_steps(journal_observable(r)[::opp]), done, time.perf_counter() - t0,
+                   message=f"settled after {k} periods")
 
 
-def _no_event(r, what):
+def _no_event(r, what, require) -> bool:
+    """True if the run ended without a terminal event or failure; else raise (``require``) or False."""
     if r is not None and (getattr(r, "touched_at", None) is not None or not r.success):
-        raise NotPeriodicError(f"{what}: {r.message}")
+        if require:
+            raise NotPeriodicError(f"{what}: {r.message}")
+        return False
+    return True

@@ -39,7 +39,7 @@ from pathlib import Path
 
 import numpy as np
 
-from transient.results import Result, atomic_write, code_version, file_error, quantity, read_npz, result_type
+from transient.results import StatusResult, atomic_write, code_version, file_error, quantity, read_npz, result_type
 from transient.study.scenario import default_root
 from transient.study.scene import KINDS, Scene
 
@@ -49,7 +49,7 @@ ONE_THREAD = dict(OMP_NUM_THREADS="1", OPENBLAS_NUM_THREADS="1", MKL_NUM_THREADS
 
 
 @result_type
-class SweepResult(Result):
+class SweepResult(StatusResult):
     """A finished sweep: ``table`` (column -> values, one row per point in grid order), the swept
     parameters, the store folder, how many points were computed, reused from the store and failed (with their
     errors in ``failures``), and the wall time [s]."""
@@ -63,8 +63,6 @@ class SweepResult(Result):
     failed: int = 0
     failures: list = None
     wall_time: float = quantity("s", 0.0)
-    success: bool = True
-    message: str = ""
 
     def to_dataframe(self):
         import pandas as pd

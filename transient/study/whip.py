@@ -23,7 +23,7 @@ from __future__ import annotations
 import numpy as np
 
 from transient.analysis.orbits import per_revolution, revolution_spectrum
-from transient.results import Result, quantity, result_type
+from transient.results import StatusResult, quantity, result_type
 
 
 #: a whirl is a limit cycle when its eccentricity envelope (max and min over a block of revolutions) changes by
@@ -92,7 +92,7 @@ def whirl_numbers(result, outputs_per_revolution: int, last_revolutions: int = 1
 
 
 @result_type
-class RunUp(Result):
+class RunUp(StatusResult):
     """A quasi-static run-up (:func:`run_up`): ``t`` [s] physical time, ``x``, ``y`` [m] journal centre,
     ``speed_rpm`` [rpm] of every sample; ``speeds`` [rpm] of the segments with, per segment, the eccentricity
     range over its last revolutions ``eps_min``, ``eps_max``, how fast its envelope still moved
@@ -113,8 +113,6 @@ class RunUp(Result):
     threshold_rpm: float = quantity("rpm", 0.0)
     clearance: float = quantity("m", 0.0)
     touched_at: float | None = quantity("s", None)
-    success: bool = True
-    message: str = ""
 
 
 def carry_state(old, new, y):

@@ -57,7 +57,7 @@ from transient.checks import check_choice
 from transient.fv.grid import Axis, Grid2D
 from transient.fv.reynolds import ReynoldsOperator
 from transient.surfaces.roughness import RoughSurface
-from transient.results import Result, quantity, result_type
+from transient.results import StatusResult, quantity, result_type
 from transient.checks import check_positive, check_range
 
 __all__ = [
@@ -72,7 +72,7 @@ DIRECTIONS = ("x", "y")
 
 
 @result_type
-class FlowFactorResult(Result):
+class FlowFactorResult(StatusResult):
     """Result of :func:`pressure_flow_factor_numerical`.
 
     ``H`` (n_H,), ``phi_mean`` and ``phi_std`` (sample standard deviation over realisations, ddof=1;
@@ -90,8 +90,6 @@ class FlowFactorResult(Result):
     gamma: np.ndarray = quantity("-")
     contact_fraction: np.ndarray = quantity("-")
     meta: dict = field(default_factory=dict)
-    success: bool = True
-    message: str = ""
 
     def __iter__(self):
         return iter((self.H, self.phi_mean, self.phi_std))

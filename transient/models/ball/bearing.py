@@ -44,7 +44,7 @@ from transient.physics.hertz import (HertzContact, gap_rolling_axis, gap_rolling
                                      meniscus_position, reduced_modulus)
 from transient.models.ball.track import FrontTrack, UniformTrack
 from transient.checks import check_choice, check_int, check_memory, check_range
-from transient.results import Result, quantity, record_type, result_type
+from transient.results import StatusResult, quantity, record_type, result_type
 from transient.solvers.settings import DEFAULT, Integration, Recording, from_keywords
 from transient.units import rpm_to_rad_s
 
@@ -72,7 +72,7 @@ class FloodedFilm:
 
 
 @result_type
-class BallSequence(Result):
+class BallSequence(StatusResult):
     """Ball-after-ball film sequence. Arrays indexed by pass n = 0 .. n_run-1 (films in m).
 
     ``h_inlet`` inlet film met by the ball, ``h_central``/``h_minimum`` Hamrock–Dowson films,
@@ -104,8 +104,6 @@ class BallSequence(Result):
     x: np.ndarray | None = quantity("m", None)
     profiles: np.ndarray | None = quantity("m", None)
     volume: np.ndarray | None = quantity("m^2", None)
-    success: bool = True
-    message: str = ""
 
     @property
     def n_run(self) -> int:

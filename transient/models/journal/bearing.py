@@ -20,7 +20,7 @@ from transient.fv.grid import Axis, Grid2D
 from transient.models.journal.feeds import Groove, as_feeds, check_feeds, feed_labels
 from transient.models.journal.film import Film
 from transient.models.journal.gecim_film import flow_law
-from transient.physics.layered import NO_LAYERS, BoundaryLayers, Gecim, LayeredFilm, Newtonian
+from transient.physics.layered import BoundaryLayers, Gecim, Newtonian
 from transient.models.journal.kernels import N_ROTOR
 from transient.models.journal.reynolds_film import ReynoldsFilm
 from transient.models.journal.scales import film_scales

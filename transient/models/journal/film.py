@@ -232,7 +232,7 @@ def film_state(film, u, X, Y, F, P, content, iterations=0):
         eccentricity_ratio=eps, attitude_angle_deg=float(att), position=(X * C, Y * C),
         force=(Fx, Fy), load=float(np.hypot(Fx, Fy)), min_film=C * (1.0 - eps),
         speed_rpm=film.speed_rpm, pressure=pressure, film_content=theta, angle_deg=np.degrees(grid.x.centres),
-        z=grid.z.centres * R, u=np.array(u, dtype=float), newton_iterations=iterations,
+        z=grid.z.centres * R, u=np.array(u, dtype=float), newton_iterations=iterations, iterations=iterations,
         friction_force=friction[0], bearing_friction_force=friction[1], film_thickness=h, pressure_gradient=G,
         axial_pressure_gradient=Gz, viscosity=law.viscosity, sliding_speed=s.omega * R,
         layers=None if ly is None else (ly.thickness, ly.viscosity[0], ly.viscosity[1], ly.alpha),

@@ -31,6 +31,7 @@ from __future__ import annotations
 
 import time
 from dataclasses import field
+from typing import Any
 
 import numpy as np
 import scipy.linalg as sla
@@ -38,14 +39,19 @@ import scipy.sparse.linalg as spla
 
 from transient.checks import check_choice, check_positive, check_range
 from transient.models.journal.kernels import N_ROTOR
-from transient.results import Result, quantity, result_type
+from transient.results import StatusResult, quantity, result_type
 from transient.solvers.integrate import solve
+from transient.solvers.settling import settled_stop, settles
 from transient.solvers.shooting import floquet_multipliers, newton_krylov, newton_picard
 
 METHODS = ("shooting", "newton-krylov")
 #: below this dominant multiplier the derivatives' noise (~rtol / fd_step) swamps the whirl pair: a continuation
 #: then takes the whirl basis afresh at the next speed instead of following the noisy subspace
 REFINE_FLOOR = 0.05
+
+#: What shooting and continuation take: a :class:`~transient.models.journal.orbit.JournalOrbit` (not imported here:
+#: ``orbit.py`` offers these functions as its methods, so the import would close a circle).
+Orbit = Any
 
 
 def _check_orbit(orbit):
@@ -56,7 +62,7 @@ def _check_orbit(orbit):
 
 
 @result_type
-class PeriodicOrbit(Result):
+class PeriodicOrbit(StatusResult):
     """One revolution of the periodic unbalance response at ``speed_rpm``.
 
     ``t`` [s] (``outputs_per_revolution + 1`` samples over one period, the unbalance at angle 0 at t = 0),
@@ -86,8 +92,7 @@ class PeriodicOrbit(Result):
     method: str = "shooting"
     wall_time: float = quantity("s", 0.0)
     basis: np.ndarray | None = quantity("-", None, repr=False)
-    success: bool = False
-    message: str = ""
+    success: bool = field(default=False, kw_only=True)
 
     @property
     def harmonic(self) -> np.ndarray:
@@ -110,7 +115,7 @@ class PeriodicOrbit(Result):
 
 
 @result_type
-class ResponseCurve(Result):
+class ResponseCurve(StatusResult):
     """Periodic orbits along a path of speeds (continuation), one row per speed.
 
     ``semi_major`` [m] of the 1x ellipse, ``amplitude_x``, ``amplitude_y`` [m] (half peak-to-peak over the
@@ -141,12 +146,10 @@ class ResponseCurve(Result):
     whirl_amplitude: np.ndarray = quantity("m")
     onset_rpm: float = quantity("rpm", float("nan"))
     orbits: list = field(default_factory=list, repr=False)
-    success: bool = True
-    message: str = ""
 
 
 @result_type
-class WhirlResponse(Result):
+class WhirlResponse(StatusResult):
     """Time-integrated response past the onset (quasi-periodic: oil whirl).
 
     ``t`` [s], ``x``, ``y`` [m] at ``outputs_per_revolution``; ``poincare_x``, ``poincare_y`` [m]: once per
@@ -166,15 +169,13 @@ class WhirlResponse(Result):
     whirl_amplitude: float = quantity("m", float("nan"))
     synchronous_amplitude: float = quantity("m", float("nan"))
     poincare_spread: float = quantity("m", float("nan"))
-    success: bool = True
-    message: str = ""
 
 
 class _Flow:
     """The once-per-revolution map of an orbit on the free film cells + rotor (IDA), keeping the journal
     centre at ``opr`` outputs of the last few periods integrated (the orbit of the accepted iterate)."""
 
-    def __init__(self, orbit: JournalOrbit, opr: int, atol_factor: float = 1e-3):
+    def __init__(self, orbit: Orbit, opr: int, atol_factor: float = 1e-3):
         f = orbit.film
         self.o, self.opr, self.atol_factor = orbit, int(opr), atol_factor
         self.keep = np.concatenate([np.flatnonzero(f.op.free), f.n + np.arange(N_ROTOR)])
@@ -211,7 +212,7 @@ class _Flow:
         return float(np.max(np.abs(d[-N_ROTOR:])))
 
 
-def whirl_basis(orbit: JournalOrbit, y) -> np.ndarray:
+def whirl_basis(orbit: Orbit, y) -> np.ndarray:
     """(n, 2) basis of the whirl subspace at state ``y``: real and imaginary parts of the dominant eigenvector of
     the linearised rotor ``q' = A q``, ``A = [[0, I], [kappa dF/dq, kappa dF/dq']]`` (the K, C of
     :meth:`JournalBearing.coefficients`, dimensionless in tau, here from the film sensitivities at ``y``'s film
@@ -225,7 +226,7 @@ def whirl_basis(orbit: JournalOrbit, y) -> np.ndarray:
     return lift(orbit, y, np.column_stack([q.real, q.imag]))
 
 
-def lift(orbit: JournalOrbit, y, dq) -> np.ndarray:
+def lift(orbit: Orbit, y, dq) -> np.ndarray:
     """Film + rotor directions from rotor directions ``dq`` (4, p) at state ``y``: the film's quasi-steady
     sensitivity ``du = -G_u^-1 G_q dq`` (the film slaved to the rotor)."""
     f, n = orbit.film, orbit.film.n
@@ -234,7 +235,7 @@ def lift(orbit: JournalOrbit, y, dq) -> np.ndarray:
     return np.vstack([du, dq])
 
 
-def periodic_response(orbit: JournalOrbit, rtol: float = 1e-6, tol: float | None = None, method: str = "shooting",
+def periodic_response(orbit: Orbit, rtol: float = 1e-6, tol: float | None = None, method: str = "shooting",
                       start=None, basis=None, outputs_per_revolution: int = 64, max_iter: int = 25,
                       fallback: bool = False, max_revolutions: int = 200, fd_step: float = 1e-3,
                       relax: int = 1) -> PeriodicOrbit:
@@ -312,26 +313,23 @@ def _embed_basis(F: _Flow, V) -> np.ndarray:
     return out
 
 
-def _settle(orbit: JournalOrbit, state, rtol, tol, max_revolutions):
+def _settle(orbit: Orbit, state, rtol, tol, max_revolutions):
     """Time integration from ``state`` until two consecutive once-per-revolution steps of the rotor are below
-    ``tol``; returns (state at the last revolution, revolutions, message, settled)."""
+    ``tol`` (largest component, in C: :func:`~transient.solvers.settling.settles`, checked every two
+    revolutions); returns (state at the last revolution, revolutions, message, settled)."""
     C = orbit.bearing.clearance
-
-    def settled(r):
-        z = np.column_stack([r.x, r.y]) / C
-        d = np.max(np.abs(np.diff(z, axis=0)), axis=1) if len(z) > 1 else np.zeros(0)
-        return "settled" if d.size >= 2 and np.all(d[-2:] <= tol) else None
-
+    criterion = settles(tol, confirm=2, norm="max")
+    rotor = lambda r: np.column_stack([r.x, r.y]) / C  # noqa: E731
     r = orbit.run(int(max_revolutions), y0=state, rtol=rtol, atol=1e-3 * rtol, outputs_per_revolution=1,
-                  chunk_revolutions=2, stop=settled, progress=False)
-    ok = r.success and r.message == "settled"
+                  chunk_revolutions=2, stop=settled_stop(rotor, criterion), progress=False)
+    ok = r.success and criterion(rotor(r)) is not None
     msg = (f"shooting did not converge; settled by time integration in {len(r.t) - 1} revolutions" if ok else
            f"shooting did not converge and time integration did not settle in {len(r.t) - 1} revolutions: {r.message}")
     y = r.final_state.copy()
     return y, len(r.t) - 1, msg, ok
 
 
-def response_curve(orbit: JournalOrbit, speeds_rpm, rtol: float = 1e-5, tol: float | None = None,
+def response_curve(orbit: Orbit, speeds_rpm, rtol: float = 1e-5, tol: float | None = None,
                    outputs_per_revolution: int = 64, whirl_revolutions: int = 0, predictor: str = "quadratic",
                    previous=None, progress: bool = False, fd_step: float = 1e-3) -> ResponseCurve:
     """Periodic unbalance responses along ``speeds_rpm`` (monotone) by continuation (module docstring): the
@@ -419,7 +417,7 @@ def _curve(speeds, orbits, whirls) -> ResponseCurve:
         success=not bad, message="" if not bad else f"shooting did not converge at {', '.join(bad)} rpm")
 
 
-def stability_onset(orbit: JournalOrbit, below: PeriodicOrbit, above: PeriodicOrbit, rtol: float = 1e-5,
+def stability_onset(orbit: Orbit, below: PeriodicOrbit, above: PeriodicOrbit, rtol: float = 1e-5,
                     tol_rpm: float = 2.0, max_steps: int = 12) -> ResponseCurve:
     """Speed where the dominant Floquet multiplier of the periodic orbit crosses the unit circle, between the
     periodic orbits ``below`` (stable) and ``above`` (unstable) of the rotor and bearing of ``orbit`` (e.g. the
@@ -457,7 +455,7 @@ def stability_onset(orbit: JournalOrbit, below: PeriodicOrbit, above: PeriodicOr
     return out
 
 
-def quasi_periodic_response(orbit: JournalOrbit, revolutions: int = 100, start=None, perturbation: float = 1e-3,
+def quasi_periodic_response(orbit: Orbit, revolutions: int = 100, start=None, perturbation: float = 1e-3,
                             rtol: float = 1e-5, outputs_per_revolution: int = 32) -> WhirlResponse:
     """Time integration of the response past the onset (quasi-periodic oil whirl): ``revolutions`` from
     ``start`` (a state at t = 0, e.g. the unstable periodic orbit's; default the linearised response) with
@@ -494,7 +492,7 @@ def quasi_periodic_response(orbit: JournalOrbit, revolutions: int = 100, start=N
                          poincare_spread=spread, success=bool(r.success and r.touched_at is None), message=msg)
 
 
-def floquet_check(orbit: JournalOrbit, p: PeriodicOrbit, k: int = 6, rtol: float = 1e-9,
+def floquet_check(orbit: Orbit, p: PeriodicOrbit, k: int = 6, rtol: float = 1e-9,
                   fd_step: float = 1e-6) -> tuple[np.ndarray, np.ndarray, int]:
     """The ``k`` multipliers of largest modulus of the periodic orbit ``p`` by Arnoldi on the full monodromy
     (free film cells + rotor; one period per product). Returns (multipliers, the share of each eigenvector

@@ -10,15 +10,14 @@ import numpy as np
 
 from transient.checks import check_int, check_range
 from transient.physics.layered import NO_LAYERS, BoundaryLayers, Gecim, LayeredFilm, Newtonian
-from transient.results import Result, quantity, result_type
-from transient.solvers.integrate import Stats
+from transient.results import RunResult, SteadyResult, quantity, result_type
 from transient.units import rpm_to_hz
 
 RECORDED_FIELDS = ("force", "min_film", "mass", "outflow", "supply_flow", "side_leakage", "pressure", "pressure_t", "film_content", "film_content_t")
 
 
 @result_type
-class FilmState(Result):
+class FilmState(SteadyResult):
     """A film solution with the journal at a fixed position (and, optionally, moving).
 
     ``pressure`` [Pa, absolute] and ``film_content`` (theta = rho/rho_c) are (n_axial, n_theta) arrays on
@@ -64,8 +63,7 @@ class FilmState(Result):
     side_flow_ratio: float = quantity("-", float("nan"))
     layers: tuple | None = None  # (delta [m], mu_a [Pa s], mu_b [Pa s], alpha [m]) or None
     gecim: tuple | None = None  # the shear-thinning bulk (kappa [Pa], mu_2/mu_1) or None (Newtonian)
-    success: bool = True
-    message: str = "converged"
+    message: str = field(default="converged", kw_only=True)
 
     @property
     def max_pressure(self) -> float:
@@ -105,7 +103,7 @@ class FilmState(Result):
 
 
 @result_type
-class OrbitResult(Result):
+class OrbitResult(RunResult):
     """Time series of one orbit run (outputs at ``outputs_per_revolution`` per revolution).
 
     ``t`` [s], ``x``, ``y`` [m] (journal centre; x towards the load); the recorded series (None if not
@@ -120,18 +118,12 @@ class OrbitResult(Result):
     why) if the integrator failed; the outputs up to the failure are kept.
     """
 
-    t: np.ndarray = quantity("s")
     x: np.ndarray = quantity("m")
     y: np.ndarray = quantity("m")
     method: str = "ida"
-    stats: Stats = field(default_factory=Stats)
     speed_rpm: float = quantity("rpm", 0.0)
     clearance: float = quantity("m", 0.0)
-    success: bool = True
-    message: str = ""
     touched_at: float | None = quantity("s", None)
-    final_state: np.ndarray | None = None
-    final_time: float = quantity("s", 0.0)
     force: np.ndarray | None = quantity("N", None)
     min_film: np.ndarray | None = quantity("m", None)
     mass: np.ndarray | None = quantity("m^3", None)

@@ -71,8 +71,8 @@ from transient.physics.flow_factors import PRESSURE_FLOW_TABLE, _gamma_bracket, 
 from transient.fv.grid import Axis, Grid2D
 from transient.fv.reynolds import ReynoldsOperator, residual_kernel
 from transient.surfaces.roughness import RoughSurface
-from transient.results import Result, quantity, result_type
-from transient.solvers.integrate import METHODS, Problem, Stats, solve
+from transient.results import RunResult, quantity, result_type
+from transient.solvers.integrate import METHODS, Problem, solve
 from transient.checks import check_int, check_memory, check_positive, check_range
 
 __all__ = ["ThrustPad", "DescentResult", "pressure_flow_clamped", "rect_shape_factor"]
@@ -134,7 +134,7 @@ def pressure_flow_clamped(H: float, gamma: float):
 # --------------------------------------------------------------------------------------------------
 
 @result_type
-class DescentResult(Result):
+class DescentResult(RunResult):
     """Squeeze descent of the pad under a constant load.
 
     ``t`` [s], ``h0`` [m] (mean-plane separation), ``dh0_dt`` [m/s], ``w_hyd`` [N] (film load),
@@ -143,7 +143,6 @@ class DescentResult(Result):
     ``success``, ``message``; ``pressure`` [Pa] (ny, nx) at the last output (full IDA path only).
     """
 
-    t: np.ndarray = quantity("s")
     h0: np.ndarray = quantity("m")
     dh0_dt: np.ndarray = quantity("m/s")
     w_hyd: np.ndarray = quantity("N")
@@ -153,9 +152,6 @@ class DescentResult(Result):
     mass: float = quantity("kg")
     path: str = quantity("")
     method: str = quantity("")
-    stats: Stats = None
-    success: bool = True
-    message: str = ""
     pressure: np.ndarray | None = quantity("Pa", None, repr=False)
 
     @property

@@ -485,7 +485,7 @@ class RollerContact:
                                h_min=np.array([r.h_min for r in rows]), p_max=np.array([r.p_max for r in rows]),
                                h0=sol.y[:, -1] * s["film"], load=np.array([ratio(t) for t in sol.t]) * self.load,
                                x=last.x, y=last.y, pressure=last.pressure, film=last.film, success=sol.success,
-                               message=sol.message, n_steps=sol.stats.n_steps, n_jacobians=sol.stats.n_jac,
+                               message=sol.message, stats=sol.stats, n_steps=sol.stats.n_steps, n_jacobians=sol.stats.n_jac,
                                wall_time=wall, final_state=sol.y[-1].copy(), final_time=float(sol.t[-1] * t_ref))
 
     def result(self, film: EHLFilm, u, ok, msg, iters, norms, wall, info=None) -> RollerSteady:

@@ -24,11 +24,11 @@ import numpy as np
 
 from transient.models.roller.geometry import TaperedRoller
 from transient.physics.elasticity import SurfaceConvolution
-from transient.results import Result, quantity, result_type
+from transient.results import SteadyResult, quantity, result_type
 
 
 @result_type
-class DryContact(Result):
+class DryContact(SteadyResult):
     """Dry contact of the roller: pressure map on a uniform grid and the footprint."""
 
     time_axis = None
@@ -45,9 +45,6 @@ class DryContact(Result):
     max_half_width: float = quantity("m")
     approach: float = quantity("m")
     load: float = quantity("N")
-    success: bool = True
-    message: str = ""
-    iterations: int = 0
     wall_time: float = quantity("s", 0.0)
 
 

@@ -87,8 +87,9 @@ class LineContact:
                  scheme: str = "upwind2", elastic: bool = True, dh_constants=DOWSON_HIGGINSON_PARK):
         self.radius = check_range("radius", radius, "m", 1e-5, 10.0)
         self.load_per_length = check_range("load_per_length", load_per_length, "N/m", 1e-3, 1e10)
-        self.speed = check_range("speed", speed, "m/s", 0.0, 1e3, low_open=True)
-        self.modulus = check_range("modulus", modulus, "Pa", 1e6, 1e13, why="(1 MPa to 10 TPa)")
+        self.speed = check_range("speed", speed, "m/s", 1e-9, 1e3, why="(1 nm/s to 1 km/s)")
+        self.modulus = check_range("modulus", modulus, "Pa", 1e6, 1e18,
+                                    why="(1 MPa to 1e18 Pa: above ~1e14 Pa the body is rigid, the Martin limit)")
         self.rheology = Rheology(viscosity=check_positive("viscosity", viscosity, "Pa s"),
                                  pressure_viscosity=pressure_viscosity, viscosity_law=viscosity_law,
                                  density=density, dh_constants=tuple(dh_constants))
@@ -261,6 +262,12 @@ class LineContact:
             if notes:
                 msg += "; " + "; ".join(notes)
         res = self._result(film, u, ok, msg, iters, norms, time.perf_counter() - t0)
+        if ok and not res.h_min > 0.0:  # converged equations, unphysical film: the grid cannot carry this load
+            ok = False
+            msg = (f"did not converge to a physical film: the equations converged to one that closes (h_min = "
+                   f"{res.h_min:.3g} m <= 0) on {levels[-1].x.size} nodes: "
+                   f"the grid is too coarse for M = {self.M:.3g}; refine it (node spacing in the contact <= 4/M b)")
+            res = self._result(film, u, ok, msg, iters, norms, time.perf_counter() - t0)
         if not ok and raise_on_failure:
             raise EHLConvergenceError(msg, res)
         return res
@@ -388,7 +395,7 @@ class LineContact:
                              h_min=np.array([r.h_min for r in rows]), p_max=np.array([r.p_max for r in rows]),
                              h0=sol.y[:, -1] * self.film_scale, load=np.array([ratio(t) for t in sol.t]) * w_ref,
                              x=last.x, pressure=last.pressure, film=last.film, success=sol.success,
-                             message=sol.message, n_steps=sol.stats.n_steps, n_jacobians=sol.stats.n_jac,
+                             message=sol.message, stats=sol.stats, n_steps=sol.stats.n_steps, n_jacobians=sol.stats.n_jac,
                              wall_time=wall, final_state=sol.y[-1].copy(), final_time=float(sol.t[-1] * t_ref))
 
     def _result(self, film, u, ok, msg, iterations, norms, wall) -> LineSteady:

@@ -11,7 +11,7 @@ from dataclasses import field
 
 import numpy as np
 
-from transient.results import Result, quantity, result_type
+from transient.results import RunResult, SteadyResult, quantity, result_type
 
 
 class EHLConvergenceError(RuntimeError):
@@ -23,7 +23,7 @@ class EHLConvergenceError(RuntimeError):
 
 
 @result_type
-class LineSteady(Result):
+class LineSteady(SteadyResult):
     """Steady EHL line contact (:class:`~transient.models.roller.line_contact.LineContact`).
 
     ``x`` node positions (boundary nodes included), ``pressure`` and ``film`` at the nodes; the film at
@@ -43,11 +43,7 @@ class LineSteady(Result):
     modulus: float = quantity("Pa")
     hertz_half_width: float = quantity("m")
     hertz_pressure: float = quantity("Pa")
-    success: bool = True
-    message: str = ""
-    iterations: int = 0
     wall_time: float = quantity("s", 0.0)
-    residual_norms: list = field(default_factory=list)
     state: np.ndarray = quantity("-", default_factory=lambda: np.zeros(0))
 
     def to_dataframe(self):
@@ -81,7 +77,7 @@ class LineSteady(Result):
 
 
 @result_type
-class LineDry(Result):
+class LineDry(SteadyResult):
     """Dry contact of the cylinder (:meth:`LineContact.dry`): pressure, maximum, half-width, and the Hertz
     values for comparison."""
 
@@ -92,16 +88,13 @@ class LineDry(Result):
     half_width: float = quantity("m")
     hertz_half_width: float = quantity("m")
     hertz_pressure: float = quantity("Pa")
-    success: bool = True
-    message: str = ""
-    iterations: int = 0
 
 
 @result_type
-class LineTransient(Result):
+class LineTransient(RunResult):
     """Transient of the line contact (IDA): series at the output times ``t``, final fields."""
 
-    t: np.ndarray = quantity("s")
+    snapshot_fields = ("x", "pressure", "film")
     h_central: np.ndarray = quantity("m")
     h_min: np.ndarray = quantity("m")
     p_max: np.ndarray = quantity("Pa")
@@ -110,17 +103,13 @@ class LineTransient(Result):
     x: np.ndarray = quantity("m")
     pressure: np.ndarray = quantity("Pa")
     film: np.ndarray = quantity("m")
-    success: bool = True
-    message: str = ""
     n_steps: int = 0
     n_jacobians: int = 0
     wall_time: float = quantity("s", 0.0)
-    final_state: np.ndarray = quantity("-", default_factory=lambda: np.zeros(0))
-    final_time: float = quantity("s", 0.0)
 
 
 @result_type
-class RollerSteady(Result):
+class RollerSteady(SteadyResult):
     """Steady EHL of the tapered roller (:class:`~transient.models.roller.contact.RollerContact`).
 
     ``x`` (rolling direction) and ``y`` (along the roller, from the mid-plane, negative at the small
@@ -147,11 +136,7 @@ class RollerSteady(Result):
     half_width: float = quantity("m")
     footprint_length: float = quantity("m")
     profile_start: float = quantity("m", 0.0)
-    success: bool = True
-    message: str = ""
-    iterations: int = 0
     wall_time: float = quantity("s", 0.0)
-    residual_norms: list = field(default_factory=list)
     state: np.ndarray = quantity("-", default_factory=lambda: np.zeros(0))
     solver_info: dict = field(default_factory=dict)
 
@@ -203,10 +188,10 @@ def _row(coord, field2d, at):
 
 
 @result_type
-class RollerTransient(Result):
+class RollerTransient(RunResult):
     """Transient of the roller contact (IDA): series at the output times ``t``, final fields."""
 
-    t: np.ndarray = quantity("s")
+    snapshot_fields = ("x", "y", "pressure", "film")
     h_central: np.ndarray = quantity("m")
     h_min: np.ndarray = quantity("m")
     p_max: np.ndarray = quantity("Pa")
@@ -216,10 +201,6 @@ class RollerTransient(Result):
     y: np.ndarray = quantity("m")
     pressure: np.ndarray = quantity("Pa")
     film: np.ndarray = quantity("m")
-    success: bool = True
-    message: str = ""
     n_steps: int = 0
     n_jacobians: int = 0
     wall_time: float = quantity("s", 0.0)
-    final_state: np.ndarray = quantity("-", default_factory=lambda: np.zeros(0))
-    final_time: float = quantity("s", 0.0)

@@ -10,7 +10,7 @@ from typing import Callable, Sequence
 import numpy as np
 import scipy.sparse as sp
 
-from transient.results import Result, record_type, result_type
+from transient.results import Result, Stats, result_type
 
 
 def short_repr(x, limit=60) -> str:
@@ -93,29 +93,6 @@ class Problem:
     @property
     def is_dae(self) -> bool:
         return self.algebraic.size > 0
-
-
-@record_type
-@dataclass
-class Stats:
-    """Solver statistics, counted by the facade's own wrappers so they mean the same for every method.
-
-    ``None`` means the backend does not report that number (scikit-sundae 1.2 and scipy expose no
-    error-test or nonlinear-failure counts; fixed-step RK4 has none by construction, reported as 0).
-    """
-
-    n_steps: int = 0
-    n_rhs: int = 0
-    n_jac: int = 0
-    n_error_test_failures: int | None = None
-    n_nonlinear_failures: int | None = None
-    wall_time: float = 0.0
-    callback_time: float = 0.0
-
-    @property
-    def callback_share(self) -> float:
-        """Fraction of the wall time spent inside the Python callbacks (rhs, residual, Jacobian)."""
-        return self.callback_time / self.wall_time if self.wall_time > 0 else 0.0
 
 
 @result_type
