@@ -6,14 +6,14 @@ Public API (re-exported here):
 
 * integration: :func:`solve`, :class:`Problem`, :class:`Solution`, :class:`Stats`
 * results: :class:`Result` (the base of every result: units, save/load, summary), :func:`load_result`
-* journal bearing (seed 003): :class:`JournalBearing`, :class:`Groove`, :class:`JournalOrbit` (with
+* journal bearing (Rho & Kim): :class:`JournalBearing`, :class:`Groove`, :class:`JournalOrbit` (with
   ``periodic_response`` and ``response_curve``: periodic orbits by shooting), :func:`stability_onset`;
   bearing noise: :func:`bearing_noise`, :func:`a_weighting`
-* layered boundary films and shear-thinning bulk (seed 004): :class:`BoundaryLayers` (``JournalBearing(...,
+* layered boundary films and shear-thinning bulk (Jang): :class:`BoundaryLayers` (``JournalBearing(...,
   layers=)``), :class:`Gecim`, :class:`Newtonian`, :class:`LayeredFilm` (the pointwise flow law)
-* thrust ball bearing starvation (seed 002): :class:`ThrustBallBearing`
-* EHL of a tilted tapered roller (seed 001): :class:`LineContact`, :class:`TaperedRoller`, :class:`RollerContact`
-* rough surfaces and asperity contact (seed 000): :class:`RoughSurface`, :func:`greenwood_tripp`,
+* thrust ball bearing starvation (Jeong et al.): :class:`ThrustBallBearing`
+* EHL of a tilted tapered roller (Park): :class:`LineContact`, :class:`TaperedRoller`, :class:`RollerContact`
+* rough surfaces and asperity contact (Lee & Rhim): :class:`RoughSurface`, :func:`greenwood_tripp`,
   :class:`AsperityContact`, :class:`DiscreteDensity`, :func:`steel_asperity_contact`,
   :func:`pressure_flow_factors`, :func:`shear_flow_factor`, :func:`contact_factor`, :class:`ThrustPad`
 """
