@@ -6,8 +6,9 @@ Public API (re-exported here):
 
 * integration: :func:`solve`, :class:`Problem`, :class:`Solution`, :class:`Stats`
 * results: :class:`Result` (the base of every result: units, save/load, summary), :func:`load_result`
-* journal bearing (Rho & Kim): :class:`JournalBearing`, :class:`Groove`, :class:`JournalOrbit` (with
-  ``periodic_response`` and ``response_curve``: periodic orbits by shooting), :func:`stability_onset`;
+* journal bearing (Rho & Kim): :class:`JournalBearing`, its oil feeds :class:`Groove`, :class:`OilHole`,
+  :class:`CircumferentialGroove`, :class:`JournalOrbit` (with ``periodic_response`` and ``response_curve``:
+  periodic orbits by shooting), :func:`stability_onset`;
   bearing noise: :func:`bearing_noise`, :func:`a_weighting`
 * layered boundary films and shear-thinning bulk (Jang): :class:`BoundaryLayers` (``JournalBearing(...,
   layers=)``), :class:`Gecim`, :class:`Newtonian`, :class:`LayeredFilm` (the pointwise flow law)
@@ -31,7 +32,7 @@ _os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 from transient._version import __version__  # noqa: E402,F401
 from transient.analysis.acoustics import a_weighting
 from transient.models.ball import ThrustBallBearing
-from transient.models.journal import Groove, JournalBearing, JournalOrbit, stability_onset
+from transient.models.journal import CircumferentialGroove, Groove, JournalBearing, JournalOrbit, OilHole, stability_onset
 from transient.models.pad import ThrustPad
 from transient.models.roller import LineContact, RollerContact, TaperedRoller
 from transient.physics.asperity import AsperityContact, DiscreteDensity, greenwood_tripp, steel_asperity_contact
@@ -43,7 +44,7 @@ from transient.study.noise import bearing_noise  # the public API re-exports the
 from transient.surfaces.roughness import RoughSurface
 
 __all__ = [
-    "AsperityContact", "BoundaryLayers", "DiscreteDensity", "Gecim", "Groove", "LayeredFilm", "Newtonian", "JournalBearing", "JournalOrbit", "LineContact", "Problem",
+    "AsperityContact", "BoundaryLayers", "CircumferentialGroove", "DiscreteDensity", "Gecim", "Groove", "LayeredFilm", "Newtonian", "JournalBearing", "JournalOrbit", "LineContact", "OilHole", "Problem",
     "Result", "RollerContact", "TaperedRoller",
     "RoughSurface", "Solution", "Stats", "ThrustBallBearing", "ThrustPad", "a_weighting", "bearing_noise", "contact_factor",
     "greenwood_tripp", "load_result", "pressure_flow_factors", "stability_onset", "shear_flow_factor", "solve", "steel_asperity_contact",
