@@ -7,14 +7,15 @@ Public API (re-exported here):
 * integration: :func:`solve`, :class:`Problem`, :class:`Solution`, :class:`Stats`; run settings
   :class:`Integration`, :class:`Recording`, :class:`LongRun` (``JournalOrbit.run``, ``ThrustBallBearing.sequence``)
 * results: :class:`Result` (the base of every result: units, save/load, summary), :func:`load_result`
-* journal bearing (seed 003): :class:`JournalBearing`, :class:`Groove`, :class:`JournalOrbit` (with
-  ``periodic_response`` and ``response_curve``: periodic orbits by shooting), :func:`stability_onset`;
+* journal bearing (Rho & Kim): :class:`JournalBearing`, its oil feeds :class:`Groove`, :class:`OilHole`,
+  :class:`CircumferentialGroove`, :class:`JournalOrbit` (with ``periodic_response`` and ``response_curve``:
+  periodic orbits by shooting), :func:`stability_onset`;
   bearing noise: :func:`bearing_noise`, :func:`a_weighting`
-* layered boundary films and shear-thinning bulk (seed 004): :class:`BoundaryLayers` (``JournalBearing(...,
+* layered boundary films and shear-thinning bulk (Jang): :class:`BoundaryLayers` (``JournalBearing(...,
   layers=)``), :class:`Gecim`, :class:`Newtonian`, :class:`LayeredFilm` (the pointwise flow law)
-* thrust ball bearing starvation (seed 002): :class:`ThrustBallBearing`
-* EHL of a tilted tapered roller (seed 001): :class:`LineContact`, :class:`TaperedRoller`, :class:`RollerContact`
-* rough surfaces and asperity contact (seed 000): :class:`RoughSurface`, :func:`greenwood_tripp`,
+* thrust ball bearing starvation (Jeong et al.): :class:`ThrustBallBearing`
+* EHL of a tilted tapered roller (Park): :class:`LineContact`, :class:`TaperedRoller`, :class:`RollerContact`
+* rough surfaces and asperity contact (Lee & Rhim): :class:`RoughSurface`, :func:`greenwood_tripp`,
   :class:`AsperityContact`, :class:`DiscreteDensity`, :func:`steel_asperity_contact`,
   :func:`pressure_flow_factors`, :func:`shear_flow_factor`, :func:`contact_factor`, :class:`ThrustPad`
 """
@@ -32,7 +33,7 @@ _os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 from transient._version import __version__  # noqa: E402,F401
 from transient.analysis.acoustics import a_weighting
 from transient.models.ball import ThrustBallBearing
-from transient.models.journal import Groove, JournalBearing, JournalOrbit, stability_onset
+from transient.models.journal import CircumferentialGroove, Groove, JournalBearing, JournalOrbit, OilHole, stability_onset
 from transient.models.pad import ThrustPad
 from transient.models.roller import LineContact, RollerContact, TaperedRoller
 from transient.physics.asperity import AsperityContact, DiscreteDensity, greenwood_tripp, steel_asperity_contact
@@ -45,7 +46,8 @@ from transient.study.noise import bearing_noise  # the public API re-exports the
 from transient.surfaces.roughness import RoughSurface
 
 __all__ = [
-    "AsperityContact", "BoundaryLayers", "DiscreteDensity", "Gecim", "Groove", "Integration", "LayeredFilm", "LongRun", "Newtonian", "JournalBearing", "JournalOrbit", "LineContact", "Problem",
+    "AsperityContact", "BoundaryLayers", "CircumferentialGroove", "DiscreteDensity", "Gecim", "Groove", "Integration",
+    "LayeredFilm", "LongRun", "Newtonian", "JournalBearing", "JournalOrbit", "LineContact", "OilHole", "Problem",
     "Recording", "Result", "RollerContact", "TaperedRoller",
     "RoughSurface", "Solution", "Stats", "ThrustBallBearing", "ThrustPad", "a_weighting", "bearing_noise", "contact_factor",
     "greenwood_tripp", "load_result", "pressure_flow_factors", "stability_onset", "shear_flow_factor", "solve", "steel_asperity_contact",

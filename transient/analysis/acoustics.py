@@ -1,4 +1,4 @@
-"""Bearing noise from the film pressure fluctuation (Rho & Kim, seed 003, sections 2.3-2.4).
+"""Bearing noise from the film pressure fluctuation (Rho & Kim, sections 2.3-2.4).
 
 On the steady periodic response of :class:`~transient.models.journal.orbit.JournalOrbit`:
 

@@ -1,4 +1,4 @@
-"""Features of a steady EHL roller solution (Park, seed 001) that the paper's statements are about.
+"""Features of a steady EHL roller solution (Park) that the paper's statements are about.
 
 All functions take :class:`~transient.models.roller.results.RollerSteady` results and return plain
 dictionaries of SI numbers (lengths [m], pressures [Pa]):

@@ -1,6 +1,6 @@
 """The full pressure-gradient vector at every face of a :class:`~transient.fv.reynolds.ReynoldsOperator`, for
 flow laws that couple the two directions (a shear-thinning bulk: its viscosity depends on the magnitude of
-the shear rate, seed 004 eq. 12).
+the shear rate, Jang eq. 12).
 
 At a face between cells ``L -> R`` along direction ``a`` (0 = x, 1 = z) the normal component is the
 two-point difference of the Reynolds operator and the transverse one the mean of the two cells' Green-Gauss

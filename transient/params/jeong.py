@@ -1,4 +1,4 @@
-"""Jeong, Lee, Yoo & Cho (seed 002): the thrust ball bearing of the starvation paper, SI.
+"""Jeong, Lee, Yoo & Cho: the thrust ball bearing of the starvation paper, SI.
 
 Table 1: E = 207 GPa, nu = 0.3, pitch diameter 31 mm, ball 3 mm, surface tension 0.036 N/m, viscosity
 0.02 Pa s; the pressure-viscosity coefficient is not stated (2.0e-8 1/Pa, a typical mineral oil, adopted).

@@ -1,4 +1,4 @@
-"""Lee & Rhim (seed 000): the parallel thrust pad study. The paper gives no pad, oil or contact values; these
+"""Lee & Rhim: the parallel thrust pad study. The paper gives no pad, oil or contact values; these
 are our stated choices (steel contact values are in :data:`transient.physics.asperity.STEEL_CONTACT`).
 
 Pad L = B = 20 mm, mu = 0.03 Pa s, load 600 N (apparent pressure 1.5 MPa), start at h0 = 5 Rq from rest;

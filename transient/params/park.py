@@ -1,4 +1,4 @@
-"""Park (seed 001), "EHL analysis of a tilted tapered roller" (KSTLE 2015): the paper's parameter set.
+"""Park, "EHL analysis of a tilted tapered roller" (KSTLE 2015): the paper's parameter set.
 
 The paper is dimensionless (lengths by the mean radius R_m, ``P = p/E'``). Its list, with our reading
 (docs/ehl.md): ``R_d* = 0.5``, ``|Y_d| = 0.7``, ``theta = 10 deg``, ``U_m = 1e-11``, "T = 2,500" read as

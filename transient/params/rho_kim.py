@@ -1,4 +1,4 @@
-"""Rho & Kim (seed 003), Table 1: the journal bearing and rotor of the noise paper, SI.
+"""Rho & Kim, Table 1: the journal bearing and rotor of the noise paper, SI.
 
 p_s = 1 atm; mu, beta, D, L/D = 0.3, C = D/1000; W = 981 N, unbalance e = 0.01 C. The rotor mass is not
 stated: m = W / g = 100 kg is adopted (the load is the rotor's weight).

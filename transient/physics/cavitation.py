@@ -1,6 +1,6 @@
 """Mass-conserving (Elrod / JFO) cavitation in a form a stiff BDF integrator can differentiate.
 
-Elrod (1981), Vijayaraghavan & Keith (1989), as in Rho & Kim (seed 003) eqs. (1), (2), (4)::
+Elrod (1981), Vijayaraghavan & Keith (1989), as in Rho & Kim eqs. (1), (2), (4)::
 
     theta = rho / rho_c,    p = p_c + beta g(theta) (theta - 1),    g = 1 full film, 0 cavitated
 

@@ -22,7 +22,7 @@ exact (Love, 1929)::
 (any tensor grid, exact); :class:`SurfaceConvolution` applies the same coefficients on a uniform grid
 by one zero-padded FFT product (Liu, Wang & Liu, *Wear* 243, 2000: "DC-FFT"), exact (no periodic
 wrap-around error), ``O(N log N)``. Models multiply by their own constant (``2/(pi E')`` in SI, or the
-scaled factor of their units). Used by the EHL of the tapered roller (Park, seed 001).
+scaled factor of their units). Used by the EHL of the tapered roller (Park).
 """
 
 from __future__ import annotations

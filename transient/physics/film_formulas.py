@@ -6,12 +6,12 @@ viscosity, ``alpha`` the pressure–viscosity coefficient, ``w`` the load per co
 
     U = eta0 u / (E' Rx),   G = alpha E',   W = w / (E' Rx^2),   H = h / Rx
 
-Fully flooded (high elastic modulus, "hard EHL"), used by the paper (seed 002, Eq. 5)::
+Fully flooded (high elastic modulus, "hard EHL"), used by the paper (Jeong et al., Eq. 5)::
 
     H_c   = 2.69 U^0.67 G^0.53 W^-0.067 (1 - 0.61 exp(-0.73 k))       central
     H_min = 3.63 U^0.68 G^0.49 W^-0.073 (1 - exp(-0.68 k))            minimum
 
-Starvation (Hamrock & Dowson 1977, *J. Lubr. Technol.* 99, 15-23; seed 002 Eqs. 1, 4), with the
+Starvation (Hamrock & Dowson 1977, *J. Lubr. Technol.* 99, 15-23; Jeong et al. Eqs. 1, 4), with the
 inlet meniscus at ``m = x_in / b`` (b the semi-axis along the rolling direction)::
 
     m_c   = 1 + 3.06 ((Rx/b)^2 H_c)^0.58          critical meniscus, central film

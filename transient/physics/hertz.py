@@ -6,7 +6,7 @@ Film Lubrication*): ``x`` is the rolling (entraining) direction, ``y`` the trans
 ``R = 1 / (1/Rx + 1/Ry)``, ``E' = 2 / ((1 - nu_a^2)/E_a + (1 - nu_b^2)/E_b)``.
 The ellipse has the semi-major axis ``a`` across the rolling direction (along ``y``) and the
 semi-minor axis ``b`` along the rolling direction; the ellipticity is ``k = a / b``.
-(The 2017 paper of Jeong, Lee, Yoo & Cho, seed 002, names the transverse direction x and the rolling
+(The 2017 paper of Jeong, Lee, Yoo & Cho, names the transverse direction x and the rolling
 direction y, so its ``a_x`` is our ``a`` and its ``a_y`` our ``b``.)
 
 Exact relations (Johnson, *Contact Mechanics*, 1985, eqs. 3.40-3.41; Hamrock & Brewe 1983), with

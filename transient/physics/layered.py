@@ -1,6 +1,6 @@
-"""Layered boundary films with a shear-thinning (Gecim) bulk: the pointwise flow law (seed 004, Jang).
+"""Layered boundary films with a shear-thinning (Gecim) bulk: the pointwise flow law (Jang).
 
-Jang's model (seed 004, eqs. 1-18): across the film ``0 <= z <= h`` two porous, solid-like layers of
+Jang's model (Jang, eqs. 1-18): across the film ``0 <= z <= h`` two porous, solid-like layers of
 thickness ``delta`` sit on the walls (layer a on the lower wall moving at ``U1``, layer b on the upper wall
 moving at ``U2``); in them the flow obeys Darcy's law relative to the wall (eqs. 4, 5)::
 
@@ -373,7 +373,7 @@ def _solve_tau0_2d(dux, duy, Gx, Gy, H, kappa, r, xg, wg, acc, tol=NEWTON_TOL):
     converge) stopped at a step of ``tol`` of the stress scale; leaves all sixteen sums at the root in ``acc``
     (the flow sums corrected by a last step: the flow is then ~tol^4 from the root's, the derivative sums ~tol^2).
     The start's Couette part solves the law exactly (the stress ``S(|du|/H)`` of a pure shear at the rate ``du/H``), its pressure part is the Newtonian ``mu_1``
-    one; against the plain Newtonian start it cuts the sums per face from 5.8 to 3.6 at seed 004's journal case."""
+    one; against the plain Newtonian start it cuts the sums per face from 5.8 to 3.6 at Jang's journal case."""
     m = math.hypot(dux, duy) / H
     c = _couette_stress(m / kappa, r) * kappa / m if m > 0.0 else 1.0
     tx, ty = _newton_tau0_2d(dux, duy, Gx, Gy, H, kappa, r, xg, wg, acc, c * dux / H - 0.5 * Gx * H,
@@ -513,7 +513,7 @@ class Gecim:
 
 @dataclass(frozen=True)
 class BoundaryLayers:
-    """Porous solid-like layers on both walls (Jang, seed 004).
+    """Porous solid-like layers on both walls (Jang).
 
     ``thickness`` delta [m] >= 0 (each wall); ``viscosity`` [Pa s] one value or the pair
     ``(mu_a, mu_b)`` (lower, upper wall); ``alpha`` [m] >= 0 the permeability length (0: immobile layers,

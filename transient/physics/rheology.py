@@ -2,7 +2,7 @@
 
 Every law is a numba kernel returning the value relative to its ambient value and its derivative with
 respect to the pressure ``p`` [Pa] (gauge), pointwise (``*_point``, callable from other kernels) and
-vectorised over arrays (``*_array``). Used by the EHL models (Park, seed 001) and available to the
+vectorised over arrays (``*_array``). Used by the EHL models (Park) and available to the
 journal and layered films.
 
 Viscosity, ``eta / eta0``::

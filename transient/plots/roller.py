@@ -1,4 +1,4 @@
-"""Figures of the tapered-roller EHL (Park, seed 001, Figs. 3-10), drawn from
+"""Figures of the tapered-roller EHL (Park, Figs. 3-10), drawn from
 :class:`~transient.models.roller.results.RollerSteady` results only, in the paper's dimensionless units
 (X, Y by R_m; P = p/E' x 10^3; H = h/R_m x 10^5), or for the maps in engineering units
 (``units="SI"``: x, y in mm, pressure in GPa, film in um).

@@ -1,5 +1,5 @@
 """The mass-conserving (Elrod) film against the classical Reynolds-condition film: stiffness and damping over a
-load range, with the supply groove at the maximum film or away from it (issue 17).
+load range, with the supply groove at the maximum film or away from it.
 
 The Reynolds condition resets the film to full at the reformation line whatever oil the cavity carries; the
 Elrod film carries the cavity's content (striations) into the converging gap and runs partly starved until

@@ -1,4 +1,4 @@
-"""Bearing noise at one speed (Rho & Kim, seed 003, sections 2.3-2.4): the periodic orbit, a recorded window,
+"""Bearing noise at one speed (Rho & Kim, sections 2.3-2.4): the periodic orbit, a recorded window,
 the analysis.
 
 1. the settled orbit: by default its periodic state by shooting

@@ -355,14 +355,14 @@ KINDS = {
              settle_tol=Option("-", 0.01, 1e-9, 1.0)),
         _journal_orbit_point, _journal_build, _figures(dict(curves=("semi_major_C", "eps_max"))),
         lambda r, run: _plots("journal").long_run(r, run["outputs_per_revolution"]),
-        "unbalanced rotor on the Elrod journal bearing (seed 003), run from the static equilibrium", _journal_memory),
+        "unbalanced rotor on the Elrod journal bearing (Rho & Kim), run from the static equilibrium", _journal_memory),
     "journal_noise": Kind(
         "journal_noise", {"rho_kim": _RHO_KIM}, _JOURNAL_UNITS,
         dict(revolutions=Option("rev", 4, 1, 1000, integer=True), harmonics=Option("-", 5, 1, 100, integer=True),
              rtol=Option("-", 1e-6, 1e-12, 1e-2), max_settle_revolutions=Option("rev", 60, 1, 1e5, integer=True)),
         _journal_noise_point, _journal_build, _figures(dict(curves=("level_db", "level_dba", "whirl_amplitude_um"))),
         lambda r, run: _plots("journal").noise_spectra(r, {}),
-        "bearing noise of the settled orbit (seed 003)", _journal_memory),
+        "bearing noise of the settled orbit (Rho & Kim)", _journal_memory),
     "ball_sequence": Kind(
         "ball_sequence", {"jeong": {**jeong.BEARING, **jeong.REFERENCE}},
         dict(pitch_diameter="m", ball_diameter="m", n_balls="-", conformity="-", youngs_modulus="Pa", poisson_ratio="-",
@@ -372,7 +372,7 @@ KINDS = {
              replenishment=Option("", "thin_film", choices=("thin_film", "chiu", "chiu_thin"))),
         _ball_point, _ball_build, _figures(dict(curves=("H_central", "h_inlet_um"))),
         lambda r, run: _plots("ball").inlet_sequence({"this run": r}, {}),
-        "ball-pass starvation sequence of a thrust ball bearing (seed 002)"),
+        "ball-pass starvation sequence of a thrust ball bearing (Jeong et al.)"),
     "pad_descent": Kind(
         "pad_descent", {"lee_rhim": dict(**lee_rhim.PAD, load=lee_rhim.LOAD, rq=lee_rhim.SURFACE["rq"], gamma=1.0,
                                          samples=256, seed=11, grid=[40, 40])},
@@ -381,7 +381,7 @@ KINDS = {
              rtol=Option("-", 1e-8, 1e-12, 1e-2)),
         _pad_point, _pad_build, _figures(dict(curves=("h_eq_over_rq", "t_to_2rq_ms", "contact_area_end_mm2"))),
         lambda r, run: _plots("pad").descent_vs_time({1.0: r}, r.h0[0] / 5.0, r.load),
-        "squeeze descent of a rough parallel thrust pad (seed 000); gamma = 0: Gaussian heights, no generated surface",
+        "squeeze descent of a rough parallel thrust pad (Lee & Rhim); gamma = 0: Gaussian heights, no generated surface",
         _pad_memory),
     "roller_ehl": Kind(
         "roller_ehl", {"park": dict(**park.ROLLER, tilt_deg=0.0, **park.DIMENSIONLESS, grid="paper")},
@@ -389,5 +389,5 @@ KINDS = {
              U="-", G="-", W="-", modulus="Pa", grid="nodes"),
         dict(tol=Option("-", 1e-8, 1e-14, 1e-3)),
         _roller_point, _roller_build, _figures(dict(curves=("h_min_um", "h_central_um", "p_max_GPa"))),
-        None, "steady EHL of the tilted tapered roller (seed 001), the paper's dimensionless case"),
+        None, "steady EHL of the tilted tapered roller (Park), the paper's dimensionless case"),
 }

@@ -1,4 +1,4 @@
-"""Reference solutions for the EHL line contact (seed 001 verification), SI, by quadrature of closed forms.
+"""Reference solutions for the EHL line contact (Park verification), SI, by quadrature of closed forms.
 
 Rigid cylinder (reduced radius R) on a plane, isoviscous and incompressible, gap ``h = h0 + x^2/(2R)``,
 domain ``[a, b]`` with ``p(a) = 0``.

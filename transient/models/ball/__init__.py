@@ -1,4 +1,4 @@
-"""Thrust ball bearing: per-ball starvation and replenishment between passes (seed 002, Jeong et al.)."""
+"""Thrust ball bearing: per-ball starvation and replenishment between passes (Jeong et al.)."""
 
 from transient.models.ball.bearing import ThrustBallBearing
 

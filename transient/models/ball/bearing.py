@@ -1,4 +1,4 @@
-"""Thrust ball bearing starvation: the per-ball starvation / replenishment sequence (seed 002).
+"""Thrust ball bearing starvation: the per-ball starvation / replenishment sequence (Jeong et al.).
 
 Jeong, Lee, Yoo & Cho (J. Korean Soc. Tribol. Lubr. Eng. 33(3), 2017) follow the oil film on the
 race of a thrust ball bearing from ball to ball:

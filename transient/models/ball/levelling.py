@@ -26,7 +26,7 @@ in place of ``kappa^4``).
 
 Chiu's solution (Y. P. Chiu, "A theory of hydrodynamic friction forces in starved point contacts
 considering cavitation", and "A theory of film replenishment in rolling contacts", ASLE Trans. 17,
-1974; as written in seed 002, Eqs. 6-7) for a depression ``f(x)`` of half width ``a'`` in a layer of
+1974; as written in Jeong et al., Eqs. 6-7) for a depression ``f(x)`` of half width ``a'`` in a layer of
 depth ``h_inf``::
 
     zeta(x, t) = a' int_0^inf F(xi) exp(-xi L g(H)) cos(xi x / a') dxi,   L = t S / (2 eta a')
@@ -278,7 +278,7 @@ def continuous_rate(kappa, h0: float = 1.0):
 
 def chiu_kernel(H):
     """``g(H) = (1 - 4H e^{-2H} - e^{-4H}) / (1 + e^{-2H})^2 = (sinh 2H - 2H)/(1 + cosh 2H)`` (Chiu 1974;
-    seed 002 Eq. 6). For ``H < 0.5`` the numerator is summed as its series to avoid cancellation."""
+    Jeong et al. Eq. 6). For ``H < 0.5`` the numerator is summed as its series to avoid cancellation."""
     H = np.asarray(H, dtype=float)
     out = np.empty_like(H)
     small = H < 0.5

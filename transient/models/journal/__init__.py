@@ -1,5 +1,5 @@
-"""Journal bearing with a mass-conserving Elrod film (or the classical Reynolds-condition film, issue 17) and the
-unbalanced rotor on it (seed 003, Rho & Kim)."""
+"""Journal bearing with a mass-conserving Elrod film (or the classical Reynolds-condition film) and the
+unbalanced rotor on it (Rho & Kim)."""
 
 from transient.models.journal.bearing import JournalBearing, omega
 from transient.models.journal.feeds import CircumferentialGroove, Groove, OilHole

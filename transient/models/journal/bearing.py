@@ -1,6 +1,6 @@
 """Finite plain journal bearing with a mass-conserving Elrod film (default) or the classical
 incompressible film with the Reynolds (Swift-Stieber) condition: steady film, static equilibrium,
-linearised stiffness/damping and the Lund stability threshold (Rho & Kim, seed 003; issue 17).
+linearised stiffness/damping and the Lund stability threshold (Rho & Kim).
 
 All public arguments and results are SI (m, Pa, Pa s, N, rpm). The discretisation and the
 dimensionless groups are in :mod:`transient.models.journal.kernels`.
@@ -96,11 +96,11 @@ class JournalBearing:
         ``stability_threshold``; the time-domain orbit needs ``"elrod"``. The classical full 360 deg bearing
         of the design charts (Raimondi & Boyd) is ``cavitation="reynolds"`` with ``groove=None``.
     rheology : the bulk: ``None`` or :class:`~transient.physics.layered.Newtonian` (default, viscosity mu), or
-        :class:`~transient.physics.layered.Gecim` (seed 004's shear-thinning bulk, low-shear viscosity mu =
+        :class:`~transient.physics.layered.Gecim` (Jang's shear-thinning bulk, low-shear viscosity mu =
         ``viscosity``): its Poiseuille flux is the 2-D layered flow law at every face
         (:mod:`transient.models.journal.gecim_film`, 9-point Jacobian), in every journal computation and
         both films.
-    layers : :class:`~transient.physics.layered.BoundaryLayers` on journal and bearing (seed 004): the bulk is
+    layers : :class:`~transient.physics.layered.BoundaryLayers` on journal and bearing (Jang): the bulk is
         ``h - 2 delta`` thick and the layers add their Darcy flow (Newtonian bulk: a Poiseuille conductance,
         :func:`~transient.models.journal.kernels.conductances`); the film closes at ``e/C = 1 - 2 delta / C``
         (the orbit stops there: "boundary layers touch"). Default: none.

@@ -1,4 +1,4 @@
-"""The discretised Elrod film of a journal bearing at one shaft speed (seed 003).
+"""The discretised Elrod film of a journal bearing at one shaft speed (Rho & Kim).
 
 Scales (``p0 = 6 mu omega (R/C)^2``, the switch widths), the finite-volume operator with the rotor's
 trailing unknowns, the scratch arrays of :mod:`transient.models.journal.kernels`, and the evaluations
@@ -254,7 +254,7 @@ def film_geometry(film, X, Y, P):
 def wall_friction(film, h, G, Gz, theta) -> tuple[float, float]:
     """Friction forces [N] of the film on the journal (its drag, against the rotation) and on the bearing (along the
     rotation): ``-sum tau(0) min(theta, 1) dA`` and ``-sum tau(h) min(theta, 1) dA`` over the bearing, with the
-    wall shear stresses ``tau(0)``, ``tau(h) = tau(0) + G h`` of the film's flow law (seed 004's layered film;
+    wall shear stresses ``tau(0)``, ``tau(h) = tau(0) + G h`` of the film's flow law (Jang's layered film;
     ``tau(0) = -mu U / h - (h/2) dp/ds`` for a Newtonian bulk without layers) at each cell's film ``h`` and pressure
     gradients ``G = dp/ds``, ``Gz = dp/dz`` (:func:`film_geometry`), the journal speed ``U = omega R``; a cavitated
     cell shears only its content fraction theta (Elrod's striated film). A Gecim bulk couples the directions: its

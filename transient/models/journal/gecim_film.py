@@ -1,4 +1,4 @@
-"""The Poiseuille flux of a shear-thinning (Gecim) bulk in the journal film (seed 004, Jang; issue 13).
+"""The Poiseuille flux of a shear-thinning (Gecim) bulk in the journal film (Jang).
 
 In the journal's scales (``p0 = 6 mu_1 omega (R/C)^2``, ``H = h/C``, lengths ``/R``, flux ``/(C omega R)``)
 the flux across a face is the classical film's content-upwinded Couette part plus the pressure part of the
@@ -36,7 +36,7 @@ GRAD_SCALE = 6.0  # p0 / R in units of mu_1 omega R / C^2: the law's G = 6 grad 
 def face_accuracy(ratio):
     """Gauss points per quadrature panel and the continuity Newton's stop of the face law for the viscosity ratio
     mu_2/mu_1: (6, 1e-4) from 0.2 up, else (8, 1e-5); the law is smoother for larger ratios. Against 20 points and a
-    1e-7 stop on the 19280 faces of seed 004's case (241 x 40, kappa* 0.65, r 0.57), (6, 1e-4) gives the flow to
+    1e-7 stop on the 19280 faces of Jang's case (241 x 40, kappa* 0.65, r 0.57), (6, 1e-4) gives the flow to
     2.6e-10 of the Couette flow, dq/dG to 2.2e-8 and dq/dh to 1.1e-9 (the stop adds nothing: 1.97 -> 1.64 us per
     face); over 4000 random states (|G| H up to 1e2 kappa) the worst dq/dG is 7.4e-8 at r = 0.2 and, with (8, 1e-5),
     4.6e-8 at r = 0.05 (a 1e-4 stop would give 2.7e-7 there)."""

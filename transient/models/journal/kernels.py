@@ -1,4 +1,4 @@
-"""The discretised Elrod film of a plain journal bearing coupled to a rigid 2-DOF rotor (seed 003).
+"""The discretised Elrod film of a plain journal bearing coupled to a rigid 2-DOF rotor (Rho & Kim).
 
 Dimensionless groups (``R`` radius, ``C`` radial clearance, ``omega`` shaft speed)::
 
@@ -47,7 +47,7 @@ def conductances(X, Y, cosp, sinp, layer_gap, darcy, H, k, c):
     Couette coefficient ``c = H/2`` of every cell.
 
     ``gap = 2 delta / C`` and ``darcy = 3 alpha^2 mu_1 (1/mu_a + 1/mu_b) / C^2`` are the boundary layers of
-    seed 004 with a Newtonian bulk (:func:`transient.physics.layered.newtonian_flow` in the journal's scales,
+    Jang with a Newtonian bulk (:func:`transient.physics.layered.newtonian_flow` in the journal's scales,
     p0 = 6 mu omega (R/C)^2): the bulk is ``H - gap`` thick, the layers add their Darcy flow; the Couette flux
     is ``H/2`` whatever the layers (they move with their walls). Without layers (0, 0) ``k = H^3/2``."""
     for i in range(H.size):

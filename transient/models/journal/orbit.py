@@ -1,4 +1,4 @@
-"""Unbalanced rigid rotor on a journal bearing with the Elrod film, in the time domain (seed 003).
+"""Unbalanced rigid rotor on a journal bearing with the Elrod film, in the time domain (Rho & Kim).
 
 :class:`JournalOrbit` assembles the film + rotor method-of-lines system of
 :mod:`transient.models.journal.kernels` and integrates it through :func:`transient.solvers.integrate.solve`:

@@ -1,4 +1,4 @@
-"""Periodic unbalance response of the journal orbit without settling runs (seed 003, Rho & Kim: the settled
+"""Periodic unbalance response of the journal orbit without settling runs (Rho & Kim: the settled
 orbits of Figs. 3-12, the unbalance response of Fig. 8 and the onset of oil whirl at ~7800 rpm).
 
 The unbalance force ``m e Omega^2 (cos tau, sin tau)`` has the period 2 pi in ``tau = omega t``, so the settled

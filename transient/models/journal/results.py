@@ -1,4 +1,4 @@
-"""Results of the journal bearing models (Rho & Kim, seed 003; the layered film of seed 004): SI fields with
+"""Results of the journal bearing models (Rho & Kim; the layered film of Jang): SI fields with
 units. :class:`FilmState` is a film solution with the journal held at a position, :class:`OrbitResult` the
 time series of an orbit run."""
 
@@ -78,7 +78,7 @@ class FilmState(SteadyResult):
     def velocity_profile(self, angle_deg: float, axial_index: int = 0, points: int = 41):
         """Circumferential velocity across the film at the cell nearest ``angle_deg`` in axial row
         ``axial_index`` (0: next to the mid-plane): (heights z [m] from the journal surface, velocity [m/s]),
-        from the film's flow law (seed 004: the journal moves at ``sliding_speed``, the bearing is at rest;
+        from the film's flow law (Jang: the journal moves at ``sliding_speed``, the bearing is at rest;
         boundary layers, if any, move with their walls plus their Darcy slip; a Gecim bulk through the 2-D law
         at the cell's circumferential and axial pressure gradients)."""
         ang = check_range("angle_deg", angle_deg, "deg", -360.0, 720.0)
@@ -94,7 +94,7 @@ class FilmState(SteadyResult):
 
     def interface_shear(self, axial_index: int = 0):
         """Circumferential shear stress [Pa] at the journal-side and the bearing-side interface of the boundary
-        layers (seed 004 eq. 28; the walls themselves without layers) along the angle in axial row
+        layers (Jang eq. 28; the walls themselves without layers) along the angle in axial row
         ``axial_index``: (lower, upper) arrays over ``angle_deg``, from the film's flow law at each cell."""
         row = check_int("axial_index", axial_index, "-", 0, self.pressure.shape[0] - 1)
         h, G, Gz = self.film_thickness[row], self.pressure_gradient[row], self.axial_pressure_gradient[row]

@@ -1,4 +1,4 @@
-"""The classical incompressible film with the Reynolds (Swift-Stieber) cavitation condition (issue 17).
+"""The classical incompressible film with the Reynolds (Swift-Stieber) cavitation condition.
 
 Same grid, stencil and dimensionless groups as the Elrod film (:mod:`transient.models.journal.kernels`):
 ``H = 1 + X cos(phi) + Y sin(phi)``, ``p = p_c + p0 P``, ``p0 = 6 mu omega (R/C)^2``, ``tau = omega t``.
@@ -30,7 +30,7 @@ The kernels are those of :mod:`transient.fv.reynolds` (numba) with ``P = u``, ``
 ``k = H^3 / 2`` (boundary layers: :func:`~transient.models.journal.kernels.conductances`), ``c = H / 2``;
 the Jacobian (cells and the four journal columns) is analytic and sparse.
 
-**Shear-thinning bulk** (``JournalBearing(rheology=Gecim(...))``, seed 004): the Poiseuille flux is the layered
+**Shear-thinning bulk** (``JournalBearing(rheology=Gecim(...))``, Jang): the Poiseuille flux is the layered
 Gecim law at every face (:mod:`transient.models.journal.gecim_film`), so ``G`` is no longer affine in ``P``;
 the same active-set iteration then is a semismooth Newton method on ``min(P_i, G_i(P) / J_ii(P)) = 0`` with
 ``G`` and ``J = dG/dP`` re-evaluated at every iterate (no finite termination; it stops on the residual).
@@ -152,7 +152,7 @@ class ReynoldsFilm(FilmBlock):
 
         For a Gecim bulk the iteration matrix is the 5-point part of the analytic ``dG/dP`` at each iterate (the
         corner entries, from the transverse gradients, are left out: an inexact Newton step whose LU is the
-        Newtonian film's). On seed 004's case (241 x 40) it takes the same 18 iterations as the full 9-point
+        Newtonian film's). On Jang's case (241 x 40) it takes the same 18 iterations as the full 9-point
         matrix, reaches the same pressure (force to 1e-12) and factorises in ~14 ms instead of ~21 ms; the residual
         test decides convergence either way.
         """

@@ -1,4 +1,4 @@
-"""The paper's time scheme for the journal orbit, done well: the users' hand-coded baseline (seed 003).
+"""The paper's time scheme for the journal orbit, done well: the users' hand-coded baseline (Rho & Kim).
 
 Classical RK4 on the rotor with N steps per revolution; the film is solved at every stage for the
 stage's rotor state, its time derivative by a backward-Euler step from the film of the last completed

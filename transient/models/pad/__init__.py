@@ -1,4 +1,4 @@
-"""Parallel thrust pad with rough surfaces: average-Reynolds squeeze film and asperity contact (seed 000)."""
+"""Parallel thrust pad with rough surfaces: average-Reynolds squeeze film and asperity contact (Lee & Rhim)."""
 
 from transient.models.pad.pad import ThrustPad
 

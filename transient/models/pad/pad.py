@@ -1,5 +1,5 @@
 """Parallel rectangular thrust pad in mixed lubrication: squeeze film + asperity contact (Lee & Rhim,
-seed 000).
+Lee & Rhim).
 
 A rigid pad ``L x B`` (x along the length L, y along the width B) sits parallel to a counter-face at
 the nominal separation ``h0(t)`` of the mean planes (positive when the gap is open). Parallel surfaces
@@ -165,7 +165,7 @@ class DescentResult(RunResult):
 # --------------------------------------------------------------------------------------------------
 
 class ThrustPad:
-    """Parallel rectangular thrust pad, smooth or rough (Lee & Rhim, seed 000). See the module doc.
+    """Parallel rectangular thrust pad, smooth or rough (Lee & Rhim). See the module doc.
 
     Parameters (SI)
     ----------

@@ -1,4 +1,4 @@
-"""EHL of line and finite line contacts: the tilted tapered roller of Park (seed 001).
+"""EHL of line and finite line contacts: the tilted tapered roller of Park.
 
 :class:`LineContact` (1-D, infinitely long), :class:`TaperedRoller` (geometry), :class:`RollerContact`
 (finite line contact: dry footprint, steady EHL, transient).

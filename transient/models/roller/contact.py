@@ -1,4 +1,4 @@
-"""EHL of a tilted tapered roller: the finite line contact of Park (seed 001), steady.
+"""EHL of a tilted tapered roller: the finite line contact of Park, steady.
 
 Dimensionless as in the paper (X, Y by R_m, ``P = p/E'``, ``H = h/R_m``, ``U_m = eta0 u/(E' R_m)``,
 ``G = alpha E'``, ``W = w/(E' R_m^2)`` with w the total load), eqs. (1)-(6)::

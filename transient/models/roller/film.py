@@ -1,4 +1,4 @@
-"""The discrete EHL problem on a tensor grid (Park, seed 001): unknowns, residual, Jacobians, film.
+"""The discrete EHL problem on a tensor grid (Park): unknowns, residual, Jacobians, film.
 
 Scaled units (chosen by the model): lengths by the half-width ``b`` of the contact, pressure by
 ``p_h``, film by ``b^2/R``, so that the rigid gap is ``x^2/(2 Rs) + ...`` and the elastic film is

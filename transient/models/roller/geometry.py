@@ -1,4 +1,4 @@
-"""Tapered roller with dub-off (profiled) ends, possibly tilted: the rigid gap of Park (seed 001), eq. (4).
+"""Tapered roller with dub-off (profiled) ends, possibly tilted: the rigid gap of Park, eq. (4).
 
 Dimensionless, lengths by the mean radius ``R_m`` (radius at the mid-plane ``Y = 0``); ``X`` rolling
 direction, ``Y`` along the contact line (the generator), negative towards the small end::

@@ -1,4 +1,4 @@
-"""Vertex-centred tensor grids for the EHL film (Park, seed 001): nodes, control volumes, clustering.
+"""Vertex-centred tensor grids for the EHL film (Park): nodes, control volumes, clustering.
 
 Nodes include the boundary nodes, where ``P = 0`` (paper eq. 6); the unknowns are the interior nodes.
 Node ``i``'s control volume (and elastic patch, on which its pressure is uniform) runs between the

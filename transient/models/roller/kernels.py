@@ -1,4 +1,4 @@
-"""numba kernels of the EHL film (Park, seed 001): finite-volume Reynolds residual, its local Jacobian,
+"""numba kernels of the EHL film (Park): finite-volume Reynolds residual, its local Jacobian,
 Fischer-Burmeister complementarity, dense Jacobian assembly.
 
 Scaled variables (see :mod:`transient.models.roller.film`): lengths ``x, y`` in units of the contact

@@ -1,4 +1,4 @@
-"""Newton-Krylov linear solves for the EHL film (Park, seed 001): exact Jacobian-vector products and
+"""Newton-Krylov linear solves for the EHL film (Park): exact Jacobian-vector products and
 preconditioners, handed to :func:`transient.solvers.newton.newton` as its ``jacobian``.
 
 The Newton matrix of :class:`~transient.models.roller.film.EHLFilm` is ``J = D_a - D_b S (Sp + Sh K)``

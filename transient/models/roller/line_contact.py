@@ -1,4 +1,4 @@
-"""Steady EHL of an infinitely long line contact: the 1-D limit of the roller model (Park, seed 001).
+"""Steady EHL of an infinitely long line contact: the 1-D limit of the roller model (Park).
 
 A cylinder of reduced radius ``R`` on a plane, load ``w`` per unit length, mean entrainment speed
 ``u``, lubricant ``eta(p)``, ``rho(p)`` (:mod:`transient.physics.rheology`). Reynolds with the exit

@@ -1,4 +1,4 @@
-"""Results of the EHL models (Park, seed 001): SI fields with units, dimensionless views as properties.
+"""Results of the EHL models (Park): SI fields with units, dimensionless views as properties.
 
 Every result says ``success`` / ``message``; a steady solve also keeps its Newton residual history
 (``residual_norms``, the infinity norm of the scaled equations per iteration), so a failed solve can be

@@ -1,4 +1,4 @@
-"""Transient EHL (Park, seed 001, extended in time): the squeeze-film DAE integrated by IDA.
+"""Transient EHL (Park, extended in time): the squeeze-film DAE integrated by IDA.
 
 Reynolds with the squeeze term, in the scaled units of :mod:`transient.models.roller.film` (time
 ``tau`` in units of ``t_ref``; rolling: ``t_ref = b/u`` and ``kappa = lam``)::
