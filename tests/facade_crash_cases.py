@@ -126,6 +126,9 @@ def group_observer():
 def group_sigint():
     """A real Ctrl-C (SIGINT to this process) delivered inside the rhs: it is deferred to the next
     callback/step boundary, the interrupted callback completes, and solve raises KeyboardInterrupt."""
+    # Ctrl-C live as in a terminal, also when this process was started in the background of a shell without job
+    # control (it then inherits SIGINT ignored, and Python keeps it ignored)
+    signal.signal(signal.SIGINT, signal.default_int_handler)
     t = np.linspace(0.0, 2000.0, 5)
     for method in ("cvode", "ida", "bdf", "lsoda", "rk4"):
         for when in (1, 3):
