@@ -2,8 +2,8 @@
 per kernel compiled (its name and seconds), printed only when numba's on-disk cache holds no compiled code for the
 model family's main kernel (a fresh install, a changed kernel source, or a new ``NUMBA_CACHE_DIR``).
 
-The seconds of ``FAMILIES`` are measured cold compile times (fresh ``NUMBA_CACHE_DIR``, 2 busy cores; README,
-section "How long things take"); a warm start loads the cached machine code in about a second.
+The seconds of ``FAMILIES`` are measured cold compile times (fresh ``NUMBA_CACHE_DIR``, an idle 2-core machine;
+README, section "How long things take"); a warm start loads the cached machine code in about a second.
 """
 
 from __future__ import annotations
@@ -12,12 +12,12 @@ import importlib
 import sys
 
 #: family -> (module, kernel whose cache entry says whether the family is compiled, cold compile seconds measured
-#: with a fresh cache on 2 cores busy with other jobs (load average ~12; an idle machine is several times faster))
+#: with a fresh cache on an idle 2-core machine (a busy one takes several times longer))
 FAMILIES = {
-    "journal": ("transient.models.journal.kernels", "dae_residual", 375),
-    "ball": ("transient.models.ball.front", "front_kernel", 30),
-    "roller": ("transient.models.roller.kernels", "reynolds_kernel", 35),
-    "layered": ("transient.physics.layered", "gecim_face_2d", 200),
+    "journal": ("transient.models.journal.kernels", "dae_residual", 10),
+    "ball": ("transient.models.ball.front", "front_kernel", 5),
+    "roller": ("transient.models.roller.kernels", "reynolds_kernel", 5),
+    "layered": ("transient.physics.layered", "gecim_face_2d", 25),
 }
 
 
@@ -63,9 +63,9 @@ def announce(*families: str, stream=None) -> bool:
     cold = [f for f in families if is_cold(f)]
     if not cold:
         return False
-    seconds = max(FAMILIES[f][2] for f in cold)  # the families share kernels (a journal run compiles the layered ones)
-    stream.write(f"compiling kernels once (~{seconds} s on 2 busy cores, less on an idle machine; cached for the next "
-                 "runs)\n")
+    seconds = sum(FAMILIES[f][2] for f in cold)
+    stream.write(f"compiling kernels once (~{seconds} s on an idle 2-core machine, longer on a busy one; cached for the "
+                 "next runs)\n")
     stream.flush()
     try:
         from numba.core import event
