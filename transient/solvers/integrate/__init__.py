@@ -47,16 +47,11 @@ from typing import Callable
 
 from transient.checks import check_atol, check_choice, check_count, check_rtol, check_step, check_times
 from transient.solvers.integrate import bdf2, rk4, scipy_backend, sundials
-from transient.solvers.integrate.guard import SIGINT, Guard, Stall, Stop, all_finite, first_nonfinite
+from transient.solvers.integrate.guard import SIGINT, Guard, Stop, first_nonfinite
 from transient.solvers.integrate.guard import nonfinite_probe as _nonfinite_probe  # noqa: F401 (tests probe it)
-from transient.solvers.integrate.outputs import Events, Output, step_events
+from transient.solvers.integrate.outputs import Output
 from transient.solvers.integrate.problem import Problem, Settings, Solution, Stats, short_repr
 from transient.solvers.integrate.sundials import LINEAR_SOLVERS
-
-# The names of the single-module facade's internals, for back ends written against it (their home is the modules
-# above); a back end's solve(problem, t_eval, out, guard, settings) uses them through BACKENDS.
-_Guard, _Output, _Events, _Stop, _Stall, _SIGINT = Guard, Output, Events, Stop, Stall, SIGINT
-_step_events, _all_finite, _first_nonfinite, _short = step_events, all_finite, first_nonfinite, short_repr
 
 __all__ = ["BACKENDS", "LINEAR_SOLVERS", "METHODS", "Backend", "Problem", "Settings", "Solution", "Stats", "solve"]
 
@@ -175,9 +170,9 @@ def solve(problem: Problem, t_eval, method: str = "cvode", rtol: float = 1e-6, a
     if backend.fixed_step:  # no error test, no nonlinear solve of its own
         stats.n_error_test_failures = 0
         stats.n_nonlinear_failures = 0
-    elif method == "bdf2":  # its own error test and Newton count their failures on the guard
-        stats.n_error_test_failures = getattr(guard, "n_error_test_failures", None)
-        stats.n_nonlinear_failures = getattr(guard, "n_nonlinear_failures", None)
+    else:  # the back ends that count their own failures leave them on the guard (None: not counted)
+        stats.n_error_test_failures = guard.n_error_test_failures
+        stats.n_nonlinear_failures = guard.n_nonlinear_failures
     res = out.result(success=success, message=message, method=method, stats=stats)
     if out.events is not None:
         out.events.fill(res)

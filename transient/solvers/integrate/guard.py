@@ -143,6 +143,8 @@ class Guard:
         self.n_rhs = 0
         self.n_jac = 0
         self.n_steps = 0
+        self.n_error_test_failures: int | None = None  # set by a back end that counts them itself (bdf2)
+        self.n_nonlinear_failures: int | None = None
         self.seconds = 0.0
         self.poisoned = False
         self.error: BaseException | None = None  # the first exception raised inside a callback
