@@ -78,7 +78,8 @@ def check_choice(name, value, choices):
 # Integrator arguments (unitless, or in the problem's own time unit)
 # --------------------------------------------------------------------------------------------------
 
-def _short(x, limit=60) -> str:
+def short_repr(x, limit=60) -> str:
+    """``repr(x)`` cut to ``limit`` characters (for one-line error messages)."""
     r = repr(x)
     return r if len(r) <= limit else r[:limit - 3] + "..."
 
@@ -93,7 +94,7 @@ def _number(value):
 def _show(value) -> str:
     """A value for an error message: numbers plainly (0.5, nan; not np.float64(0.5))."""
     x = _number(value)
-    return repr(x) if x is not None else _short(value)
+    return repr(x) if x is not None else short_repr(value)
 
 
 def check_step(name, value, *, free_zero=False) -> float:
@@ -124,7 +125,7 @@ def check_atol(value, n=None):
     try:
         a = np.asarray(value, dtype=float)
     except (TypeError, ValueError):
-        raise ValueError(f"atol must be {what}, got {_short(value)}") from None
+        raise ValueError(f"atol must be {what}, got {short_repr(value)}") from None
     if a.ndim == 0:
         v = check_step("atol", value if _number(value) is not None else float(a))
         if v < ATOL_FLOOR:
@@ -153,7 +154,7 @@ def check_times(name, value) -> np.ndarray:
         t = np.asarray(value, dtype=float)
     except (TypeError, ValueError):
         raise ValueError(f"{name} must be a 1-D array of at least 2 increasing finite times, got "
-                         f"{_short(value)}") from None
+                         f"{short_repr(value)}") from None
     if t.ndim != 1 or t.size < 2:
         raise ValueError(f"{name} must be a 1-D array of at least 2 times [s], got shape {t.shape}")
     bad = np.flatnonzero(~np.isfinite(t))

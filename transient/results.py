@@ -30,7 +30,7 @@ from typing import Any, ClassVar
 import numpy as np
 
 from transient._version import __version__
-from transient.checks import MEMORY_SHARE, memory_limit
+from transient.checks import MEMORY_SHARE, memory_limit, short_repr
 
 FORMAT = "transient-result/1"
 _REGISTRY: dict[str, type] = {}
@@ -363,10 +363,10 @@ def load_result(path, *, max_bytes: int | None = None) -> Result:
     if not isinstance(meta, dict):
         raise ResultFileError(f"{path}: corrupted metadata (a JSON {type(meta).__name__}, not an object)")
     if meta.get("format") != FORMAT:
-        raise ResultFileError(f"{path}: unknown format {_short_repr(meta.get('format'))} (expected {FORMAT})")
+        raise ResultFileError(f"{path}: unknown format {short_repr(meta.get('format'))} (expected {FORMAT})")
     cls = _REGISTRY.get(meta.get("class")) if isinstance(meta.get("class"), str) else None
     if cls is None:
-        raise ResultFileError(f"{path}: unknown result type {_short_repr(meta.get('class'))}")
+        raise ResultFileError(f"{path}: unknown result type {short_repr(meta.get('class'))}")
     fields = meta.get("fields")
     if not isinstance(fields, dict):
         raise ResultFileError(f"{path}: corrupted metadata (no 'fields' object)")
@@ -399,11 +399,6 @@ def _one_line(e) -> str:
     return text if len(text) <= 200 else text[:197] + "..."
 
 
-def _short_repr(v) -> str:
-    text = repr(v)
-    return text if len(text) <= 60 else text[:57] + "..."
-
-
 _MAX_DEPTH = 32
 
 
@@ -415,13 +410,13 @@ def _declared_arrays(enc, out: dict, depth: int):
     if isinstance(enc, dict) and "array" in enc:
         name = enc["array"]
         if not isinstance(name, str):
-            raise ValueError(f"array name {_short_repr(name)} is not a string")
+            raise ValueError(f"array name {short_repr(name)} is not a string")
         if "dtype" in enc or "shape" in enc:
             dtype, shape = enc.get("dtype"), enc.get("shape")
             if not isinstance(dtype, str) or not isinstance(shape, list) or not all(
                     isinstance(n, int) and not isinstance(n, bool) and n >= 0 for n in shape):
-                raise ValueError(f"array {name!r}: malformed declaration dtype={_short_repr(dtype)}, "
-                                 f"shape={_short_repr(shape)}")
+                raise ValueError(f"array {name!r}: malformed declaration dtype={short_repr(dtype)}, "
+                                 f"shape={short_repr(shape)}")
             out[name] = (np.dtype(dtype), tuple(shape))
         else:
             out[name] = None
@@ -489,7 +484,7 @@ def _encode(v, key, arrays):
 
 def _decode(enc, arrays, path):
     if not isinstance(enc, dict):
-        raise ValueError(f"field encoding {_short_repr(enc)} is not an object")
+        raise ValueError(f"field encoding {short_repr(enc)} is not an object")
     if "array" in enc:
         if enc["array"] not in arrays:
             raise ResultFileError(f"{path}: array {enc['array']!r} missing")

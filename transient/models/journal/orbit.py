@@ -371,7 +371,8 @@ class JournalOrbit:
             what = "journal touches the bearing" if self.bearing.layers is None else "boundary layers touch"
             message = (f"{what} (eccentricity ratio {self.bearing.max_eccentricity_ratio - touch_gap:.4f}) at t = "
                        f"{touched:.6g} s ({touched * rpm_to_hz(self.speed_rpm):.2f} revolutions)")
-        rec.last_y = self.universal_state(out.y) if formulation == "content" else np.array(out.y)  # also when resumed at the end
+        # the driver's last state, also when a finished checkpoint is resumed and nothing was left to run
+        rec.last_y = self.universal_state(out.y) if formulation == "content" else np.array(out.y)
         r = rec.result(method, out.stats, touched, message, out.t)
         r.success = out.success
         return r

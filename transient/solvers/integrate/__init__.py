@@ -45,12 +45,13 @@ import time
 from dataclasses import dataclass
 from typing import Callable
 
-from transient.checks import check_atol, check_choice, check_count, check_rtol, check_step, check_times
+from transient.checks import (check_atol, check_choice, check_count, check_rtol, check_step, check_times,
+                              short_repr)
 from transient.solvers.integrate import bdf2, rk4, scipy_backend, sundials
 from transient.solvers.integrate.guard import SIGINT, Guard, Stop, first_nonfinite
 from transient.solvers.integrate.guard import nonfinite_probe as _nonfinite_probe  # noqa: F401 (tests probe it)
 from transient.solvers.integrate.outputs import Output
-from transient.solvers.integrate.problem import Problem, Settings, Solution, Stats, short_repr
+from transient.solvers.integrate.problem import Problem, Settings, Solution, Stats
 from transient.solvers.integrate.sundials import LINEAR_SOLVERS
 
 __all__ = ["BACKENDS", "LINEAR_SOLVERS", "METHODS", "Backend", "Problem", "Settings", "Solution", "Stats", "solve"]

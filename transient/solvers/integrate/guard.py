@@ -16,7 +16,8 @@ from typing import Callable
 import numba
 import numpy as np
 
-from transient.solvers.integrate.problem import Problem, short_repr
+from transient.checks import short_repr
+from transient.solvers.integrate.problem import Problem
 
 EPS = np.finfo(float).eps
 

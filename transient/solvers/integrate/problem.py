@@ -10,13 +10,8 @@ from typing import Callable, Sequence
 import numpy as np
 import scipy.sparse as sp
 
+from transient.checks import short_repr
 from transient.results import Result, Stats, result_type
-
-
-def short_repr(x, limit=60) -> str:
-    """``repr(x)`` cut to ``limit`` characters (for one-line error messages)."""
-    r = repr(x)
-    return r if len(r) <= limit else r[:limit - 3] + "..."
 
 
 @dataclass

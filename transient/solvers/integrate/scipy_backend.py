@@ -11,9 +11,10 @@ import numpy as np
 import scipy.integrate as si
 import scipy.sparse as sp
 
+from transient.checks import short_repr
 from transient.solvers.integrate.guard import SIGINT, Guard, Stall, Stop
 from transient.solvers.integrate.outputs import Events, Output, step_events
-from transient.solvers.integrate.problem import Problem, Settings, short_repr
+from transient.solvers.integrate.problem import Problem, Settings
 
 
 def _scipy_jacobian(problem, guard, dense):

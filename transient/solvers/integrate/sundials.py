@@ -9,9 +9,10 @@ import warnings
 import numpy as np
 import scipy.sparse as sp
 
+from transient.checks import short_repr
 from transient.solvers.integrate.guard import SIGINT, Guard, Stall
 from transient.solvers.integrate.outputs import Events, Output
-from transient.solvers.integrate.problem import Problem, Settings, short_repr
+from transient.solvers.integrate.problem import Problem, Settings
 
 LINEAR_SOLVERS = ("auto", "sparse", "band", "dense")
 
