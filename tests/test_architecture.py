@@ -208,3 +208,28 @@ def test_the_positional_rule_can_fail(tmp_path):
         f"@njit(cache=True)\ndef kernel({names}):\n    pass\n"
         f"class JournalBearing:\n    def __init__(self, {names}):\n        pass\n")
     assert [(name, n) for _, _, name, n in _long_signatures(tmp_path)] == [("bag", 13), ("Model.run", 14)]
+
+
+TESTS = Path(__file__).resolve().parent
+#: test folders that mirror something outside the package (the scenario scripts)
+OUTSIDE_THE_PACKAGE = {"scenarios"}
+
+
+def _test_folders():
+    return sorted(p.relative_to(TESTS) for p in TESTS.rglob("*") if p.is_dir() and p.name != "__pycache__"
+                  and not any(part.startswith(".") for part in p.relative_to(TESTS).parts))
+
+
+def test_the_test_tree_mirrors_the_package():
+    """Every test folder names a folder of the package (``tests/models/journal`` -> ``transient/models/journal``),
+    and no ``test_*.py`` of a model, a solver or a physical law sits loose at the top of ``tests/``."""
+    folders = _test_folders()
+    assert folders, "tests/ has no sub-folders"
+    for rel in folders:
+        if rel.parts[0] in OUTSIDE_THE_PACKAGE:
+            assert (TESTS.parent / rel).is_dir(), rel
+        else:
+            assert (PKG / rel).is_dir(), f"tests/{rel} mirrors no folder transient/{rel}"
+    loose = {p.stem for p in TESTS.glob("test_*.py")}
+    assert loose <= {"test_architecture", "test_api_edges", "test_docs_examples", "test_figures", "test_fuzz_inputs",
+                     "test_reliability", "test_result_bases", "test_results"}, loose

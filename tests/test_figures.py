@@ -2,12 +2,15 @@
 scenario runs with --quick into a temporary folder with ``transient.plots.save`` recording the figures.
 Slow (the scenarios' quick runs); the fast tests check the figure functions on small inputs."""
 
+from pathlib import Path
+
 import numpy as np
 import pytest
 
 import transient.plots as tp
 from figure_checks import figure_problems
-from scenario_loader import SCENARIOS, load_scenario
+
+SCENARIOS = Path(__file__).resolve().parents[1] / "scenarios"
 
 #: scenarios and the arguments of their quickest complete run
 QUICK_ARGS = {p.stem: ["--quick"] for p in sorted(SCENARIOS.glob("*.py"))}
@@ -31,8 +34,8 @@ def recorded(monkeypatch):
 
 @pytest.mark.slow
 @pytest.mark.parametrize("name", sorted(QUICK_ARGS))
-def test_scenario_figures(name, tmp_path, recorded):
-    load_scenario(name).main([*QUICK_ARGS[name], "--out", str(tmp_path)])
+def test_scenario_figures(name, tmp_path, recorded, scenario_loader):
+    scenario_loader(name).main([*QUICK_ARGS[name], "--out", str(tmp_path)])
     pngs = sorted(p.name for p in tmp_path.rglob("*.png"))
     assert pngs, f"{name} wrote no figure"
     assert set(pngs) <= set(recorded), f"figures not written through transient.plots.save: {set(pngs) - set(recorded)}"

@@ -1,4 +1,4 @@
-"""Per-call overhead of the integrator callbacks (``transient bench film`` part 2).
+"""Per-call overhead of the integrator callbacks (``transient bench reynolds-operator`` part 2).
 
 A linear test system y' = -lambda * y (n states, diagonal Jacobian) is integrated by CVODE three ways:
 scikit-sundae called directly with a numba right-hand side, the same through :func:`transient.solve`

@@ -23,7 +23,7 @@ import time
 from pathlib import Path
 
 from transient.models.roller import LineContact, RollerContact, TaperedRoller
-from transient.models.roller.film import solve_steady
+from transient.models.roller.ehl_problem import solve_steady
 from transient.models.roller.transient import GAMMA
 from transient.params import park
 
@@ -84,7 +84,7 @@ def _time_fine_level(grid) -> float:
     prev = _paper_contact(specs[-2][1:] if specs[-2][0] == "uniform" else specs[-2])
     prev._dry = c.dry()
     sp = prev.steady(tol=1e-8)
-    from transient.models.roller.film import interpolate_state
+    from transient.models.roller.ehl_problem import interpolate_state
     from transient.models.roller.krylov import NewtonKrylov, NewtonMatrix, TwoLevel
 
     coarse_c = _paper_contact(specs[0])

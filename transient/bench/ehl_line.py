@@ -22,7 +22,7 @@ import time
 from pathlib import Path
 
 from transient.bench import best_of
-from transient.models.roller.film import interpolate_state
+from transient.models.roller.ehl_problem import interpolate_state
 from transient.models.roller.line_contact import LineContact
 from transient.study.ehl_chart import chart_contact, chart_point
 

@@ -21,7 +21,7 @@ from pathlib import Path
 from matplotlib.figure import Figure
 
 #: the figure modules, one per model family (imported lazily by attribute access)
-FAMILIES = ("ball", "feeds", "film", "journal", "layers", "pad", "roller", "surfaces", "sweep", "whip")
+FAMILIES = ("ball", "feeds", "journal", "layers", "pad", "reynolds_operator", "roller", "surfaces", "sweep", "whip")
 __all__ = ["figure", "save", *FAMILIES]
 
 

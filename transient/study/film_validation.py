@@ -1,5 +1,5 @@
 """Verification study of the finite-volume Reynolds operator against closed forms (the discretisations of
-tests/test_film_accuracy.py, set-ups from :mod:`transient.verification.cases`):
+tests/fv/test_reynolds_accuracy.py, set-ups from :mod:`transient.verification.cases`):
 
 1. Sommerfeld infinitely long bearing (eps = 0.6): pressure profile against the closed form, and the grid
    convergence of the max pressure error on uniform and stretched grids (observed orders);
@@ -18,12 +18,12 @@ from pathlib import Path
 
 import numpy as np
 
-from transient.plots import film as plots, save
+from transient.plots import reynolds_operator as plots, save
 from transient.study.scenario import log
 from transient.verification import reference as ref
 from transient.verification.cases import EPS, observed_orders, short_bearing_case, sommerfeld_case, squeeze_plate_case
 
-#: full settings = the grids of tests/test_film_accuracy.py (plus coarser/finer squeeze grids)
+#: full settings = the grids of tests/fv/test_reynolds_accuracy.py (plus coarser/finer squeeze grids)
 FULL = dict(sommerfeld_grids=(40, 80, 160, 320), sommerfeld_delta=0.5, profile_n=40,
             short_LD=(0.1, 0.05, 0.025), short_grid=(240, 160),
             squeeze_grids=(16, 32, 64), squeeze_ratios=(1, 2, 4), squeeze_delta=0.5)

@@ -9,7 +9,7 @@ condition is likely p >= 0). For each case the steady film at the fixed position
 layer-free film splits exactly into
 
 * the thinner bulk: the immobile layers (alpha = 0) are a bearing of clearance C - 2 delta
-  (tests/test_journal_layers.py), and
+  (tests/models/journal/test_layers.py), and
 * the Darcy flow through mobile layers (alpha > 0), which gives part of it back.
 
 Pressures are reported as p* = p / p0, p0 = 6 mu omega (R/C)^2 (the layer-free bearing's scale).

@@ -3,7 +3,7 @@
 Each function builds one grid, solves the steady Reynolds equation with
 :func:`~transient.solvers.newton.solve_steady` on an incompressible film (``P = u``, ``C = 1``) and
 compares with the closed forms of :mod:`transient.verification.reference`. They are shared by the tests
-(``tests/test_film_accuracy.py``) and the validation scenario (``scenarios/film_validation.py``), so
+(``tests/fv/test_reynolds_accuracy.py``) and the validation scenario (``scenarios/film_validation.py``), so
 the numbers in ``docs/validation.md`` come from exactly the discretisations the tests check.
 
 * :func:`sommerfeld_case` -- infinitely long journal bearing, full Sommerfeld pressure;

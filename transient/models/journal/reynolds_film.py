@@ -24,7 +24,7 @@ for an M-matrix stops after finitely many steps with the exact discrete solution
 Sensitivities: on the converged active set (cells at ``P = 0``) the pressurised cells satisfy
 ``G_I = 0``, so ``dP_I/dq = -J_II^{-1} dG_I/dq`` for ``q = (X, Y, VX, VY)`` (the velocity columns give the
 damping). Moving the rupture boundary adds nothing to first order because ``p = dp/dn = 0`` there
-(checked against finite differences of the complementarity solve in tests/test_journal_reynolds.py).
+(checked against finite differences of the complementarity solve in tests/models/journal/test_reynolds_film.py).
 
 The kernels are those of :mod:`transient.fv.reynolds` (numba) with ``P = u``, ``C = 1``,
 ``k = H^3 / 2`` (boundary layers: :func:`~transient.models.journal.kernels.conductances`), ``c = H / 2``;

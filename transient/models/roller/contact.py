@@ -13,7 +13,7 @@ Domain (Park's Fig. 2): ``X`` from ``-5c`` to ``2.5c``, ``Y`` over ``+-0.55 d`` 
 footprint's ends plus 5 % of ``d`` if it is off-centre), with ``c`` (mid-plane half-width) and ``d``
 (length) of the dry elastostatic footprint (:mod:`transient.models.roller.dry`). Internally lengths are
 scaled by ``c``, pressure by ``p_h = E' c/(4 R_m)`` and the film by ``c^2/R_m``
-(:mod:`transient.models.roller.film`).
+(:mod:`transient.models.roller.ehl_problem`).
 
 Grids: ``"paper"`` -- 94 x 45 nodes (the paper's maximum), non-uniform: 60 % of the X nodes clustered on
 the inlet side of the contact (sech^2 density centred at -0.5 c, width 1.8 c: on the line contact this
@@ -40,14 +40,14 @@ from scipy.interpolate import RegularGridInterpolator
 from transient.checks import check_memory, check_positive, check_range
 from transient.models.roller.continuation import PathResult, follow
 from transient.models.roller.dry import DryContact, DrySolver, dry_contact
-from transient.models.roller.film import EHLFilm, interpolate_state, solve_steady
+from transient.models.roller.ehl_problem import EHLFilm, interpolate_state, solve_steady
 from transient.models.roller.geometry import TaperedRoller
 from transient.models.roller.grid import TensorGrid, clustered_axis
 from transient.models.roller.krylov import DenseLU, NewtonKrylov, NewtonMatrix, TwoLevel
 from transient.models.roller.results import EHLConvergenceError, RollerSteady, RollerTransient
 from transient.models.roller.transient import load_ratio, run_squeeze
 from transient.physics.line_formulas import dowson_toyoda_central
-from transient.physics.rheology import DOWSON_HIGGINSON_PARK, Rheology
+from transient.physics.lubricant import DOWSON_HIGGINSON_PARK, Lubricant
 from transient.solvers.newton import NewtonError
 
 PAPER_GRID = (94, 45)
@@ -79,7 +79,7 @@ class RollerContact:
 
     ``roller`` (:class:`TaperedRoller`), ``load`` [N] (total), ``speed`` [m/s] (mean entrainment speed at
     the mid-plane), ``viscosity`` eta0 [Pa s], ``pressure_viscosity`` alpha [1/Pa], ``modulus`` E' [Pa],
-    ``density``, ``viscosity_law``, ``dh_constants`` as in :class:`~transient.physics.rheology.Rheology`;
+    ``density``, ``viscosity_law``, ``dh_constants`` as in :class:`~transient.physics.lubricant.Lubricant`;
     ``grid``: ``"paper"``, ``("clustered", nx, ny)`` or ``(nx, ny)`` (uniform); ``domain``: (inlet,
     outlet) in units of c and the half-length of the domain in units of d.
     """
@@ -93,7 +93,7 @@ class RollerContact:
         self.load = check_positive("load", load, "N")
         self.speed = check_positive("speed", speed, "m/s")
         self.modulus = check_positive("modulus", modulus, "Pa")
-        self.rheology = Rheology(viscosity=check_positive("viscosity", viscosity, "Pa s"),
+        self.lubricant = Lubricant(viscosity=check_positive("viscosity", viscosity, "Pa s"),
                                  pressure_viscosity=pressure_viscosity, viscosity_law=viscosity_law, density=density,
                                  dh_constants=tuple(dh_constants))
         self.domain = (check_range("domain[0] (inlet)", domain[0], "c", -50.0, -1.5),
@@ -152,11 +152,11 @@ class RollerContact:
     # -- dimensionless groups and scales --------------------------------------------------------------
     @property
     def U(self) -> float:
-        return self.rheology.viscosity * self.speed / (self.modulus * self.roller.mean_radius)
+        return self.lubricant.viscosity * self.speed / (self.modulus * self.roller.mean_radius)
 
     @property
     def G(self) -> float:
-        return self.rheology.pressure_viscosity * self.modulus
+        return self.lubricant.pressure_viscosity * self.modulus
 
     @property
     def W(self) -> float:
@@ -274,7 +274,7 @@ class RollerContact:
         B = s["B"]
         X, Y = grid.x * B, grid.y * B
         rigid = ro.gap(X[None, :], Y[:, None]) / (B * B)
-        return EHLFilm(grid, rigid, ro.radius_ratio(Y), s["lam"], s["w_bar"], self.rheology, s["p_scale"],
+        return EHLFilm(grid, rigid, ro.radius_ratio(Y), s["lam"], s["w_bar"], self.lubricant, s["p_scale"],
                        elastic=elastic, elastic_factor=1.0 / (2.0 * math.pi), order2=(self.scheme == "upwind2"))
 
     def initial_guess(self, film: EHLFilm) -> np.ndarray:

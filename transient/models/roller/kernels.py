@@ -1,7 +1,7 @@
 """numba kernels of the EHL film (Park): finite-volume Reynolds residual, its local Jacobian,
 Fischer-Burmeister complementarity, dense Jacobian assembly.
 
-Scaled variables (see :mod:`transient.models.roller.film`): lengths ``x, y`` in units of the contact
+Scaled variables (see :mod:`transient.models.roller.ehl_problem`): lengths ``x, y`` in units of the contact
 half-width, pressure ``p`` in units of ``p_h``, film ``h`` in units of ``b^2/R``. Per interior node
 ``I`` with control volume ``A = dx dy`` the residual is the net inflow per unit area::
 
@@ -33,7 +33,7 @@ import math
 import numpy as np
 from numba import njit
 
-from transient.physics.rheology import density_point, viscosity_point
+from transient.physics.lubricant import density_point, viscosity_point
 
 #: slots of the local Jacobian
 C, W, E, S, N, WW = 0, 1, 2, 3, 4, 5

@@ -1,7 +1,7 @@
 """Newton-Krylov linear solves for the EHL film (Park): exact Jacobian-vector products and
 preconditioners, handed to :func:`transient.solvers.newton.newton` as its ``jacobian``.
 
-The Newton matrix of :class:`~transient.models.roller.film.EHLFilm` is ``J = D_a - D_b S (Sp + Sh K)``
+The Newton matrix of :class:`~transient.models.roller.ehl_problem.EHLFilm` is ``J = D_a - D_b S (Sp + Sh K)``
 bordered by the load row and the ``h0`` column (``D_a``, ``D_b``: Fischer-Burmeister derivatives, ``S``
 the row scaling, ``Sp``, ``Sh`` the 6-slot local Jacobian, ``K`` the elastic influence operator). Its
 product with a vector costs one deformation (dense ``K v``: ``O(N^2)``; DC-FFT: ``O(N log N)``) plus

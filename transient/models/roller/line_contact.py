@@ -1,7 +1,7 @@
 """Steady EHL of an infinitely long line contact: the 1-D limit of the roller model (Park).
 
 A cylinder of reduced radius ``R`` on a plane, load ``w`` per unit length, mean entrainment speed
-``u``, lubricant ``eta(p)``, ``rho(p)`` (:mod:`transient.physics.rheology`). Reynolds with the exit
+``u``, lubricant ``eta(p)``, ``rho(p)`` (:mod:`transient.physics.lubricant`). Reynolds with the exit
 condition, load balance and the plane-strain elastic film (Johnson eq. 2.25b)::
 
     d/dx(rho h^3/(12 eta) dp/dx) = u d(rho h)/dx,   p(x_in) = 0,  p = dp/dx = 0 at the free exit
@@ -25,7 +25,7 @@ import numpy as np
 
 from transient.checks import check_positive, check_range
 from transient.models.roller.continuation import PathResult, follow
-from transient.models.roller.film import EHLFilm, interpolate_state, solve_steady
+from transient.models.roller.ehl_problem import EHLFilm, interpolate_state, solve_steady
 from transient.models.roller.grid import TensorGrid
 from transient.models.roller.dry import edge_positions, polonsky_keer
 from transient.models.roller.results import EHLConvergenceError, LineDry, LineSteady, LineTransient
@@ -33,7 +33,7 @@ from transient.models.roller.transient import load_ratio, run_squeeze
 from transient.physics.elasticity import line_influence
 from transient.physics.line_formulas import (dowson_toyoda_central, hertz_line, line_groups, martin_min, moes_central,
                                              moes_groups)
-from transient.physics.rheology import DOWSON_HIGGINSON_PARK, Rheology
+from transient.physics.lubricant import DOWSON_HIGGINSON_PARK, Lubricant
 from transient.solvers.newton import NewtonError
 
 SCHEMES = ("upwind2", "upwind1")
@@ -90,7 +90,7 @@ class LineContact:
         self.speed = check_range("speed", speed, "m/s", 1e-9, 1e3, why="(1 nm/s to 1 km/s)")
         self.modulus = check_range("modulus", modulus, "Pa", 1e6, 1e18,
                                     why="(1 MPa to 1e18 Pa: above ~1e14 Pa the body is rigid, the Martin limit)")
-        self.rheology = Rheology(viscosity=check_positive("viscosity", viscosity, "Pa s"),
+        self.lubricant = Lubricant(viscosity=check_positive("viscosity", viscosity, "Pa s"),
                                  pressure_viscosity=pressure_viscosity, viscosity_law=viscosity_law,
                                  density=density, dh_constants=tuple(dh_constants))
         if scheme not in SCHEMES:
@@ -114,7 +114,7 @@ class LineContact:
             if nodes[0] != lo or nodes[-1] != hi:
                 raise ValueError(f"grid nodes must start at the inlet {lo} and end at the outlet {hi} (units of b)")
         self.grid = TensorGrid(nodes)
-        self.U, self.G, self.W = line_groups(self.rheology.viscosity, self.speed, self.rheology.pressure_viscosity,
+        self.U, self.G, self.W = line_groups(self.lubricant.viscosity, self.speed, self.lubricant.pressure_viscosity,
                                              self.load_per_length, self.modulus, self.radius)
         self.M, self.L = moes_groups(self.U, self.G, self.W)
         # the loaded zone: the Hertz contact, or below M = 2.5 the hydrodynamic length ~ sqrt(2 R h) ~ 2.5 b / M
@@ -130,7 +130,7 @@ class LineContact:
         """The same contact (same nodes in units of its own b, or ``nodes``) at another load [N/m] and,
         optionally, another pressure-viscosity coefficient [1/Pa]: the steps of the load continuation."""
         o = self._options
-        alpha = self.rheology.pressure_viscosity if pressure_viscosity is None else pressure_viscosity
+        alpha = self.lubricant.pressure_viscosity if pressure_viscosity is None else pressure_viscosity
         return LineContact(self.radius, load_per_length, self.speed, o["viscosity"], alpha, o["modulus"],
                            density=o["density"], viscosity_law=o["viscosity_law"],
                            grid=self.grid.x if nodes is None else nodes,
@@ -140,20 +140,20 @@ class LineContact:
     @property
     def lam(self) -> float:
         """Wedge coefficient ``12 eta0 u R^2 / (b^3 p_h)``."""
-        return 12.0 * self.rheology.viscosity * self.speed * self.radius ** 2 / (self.b ** 3 * self.p_h)
+        return 12.0 * self.lubricant.viscosity * self.speed * self.radius ** 2 / (self.b ** 3 * self.p_h)
 
     @property
     def film_scale(self) -> float:
         """Film unit ``b^2 / R`` [m]."""
         return self.b * self.b / self.radius
 
-    def film_problem(self, grid: TensorGrid | None = None, rheology: Rheology | None = None, kernel=None) -> EHLFilm:
-        """The scaled discrete problem (:class:`~transient.models.roller.film.EHLFilm`) on ``grid``
+    def film_problem(self, grid: TensorGrid | None = None, lubricant: Lubricant | None = None, kernel=None) -> EHLFilm:
+        """The scaled discrete problem (:class:`~transient.models.roller.ehl_problem.EHLFilm`) on ``grid``
         (default: the contact's grid); ``kernel``: its influence matrix if already computed."""
         grid = self.grid if grid is None else grid
         x = grid.x
         return EHLFilm(grid, 0.5 * x * x, np.ones(1), self.lam, self.load_per_length / (self.b * self.p_h),
-                       rheology or self.rheology, self.p_h, elastic="dense" if self.elastic else "rigid",
+                       lubricant or self.lubricant, self.p_h, elastic="dense" if self.elastic else "rigid",
                        elastic_factor=-1.0 / math.pi, order2=(self.scheme == "upwind2"), kernel=kernel)
 
     def initial_guess(self, film: EHLFilm) -> np.ndarray:
@@ -309,7 +309,7 @@ class LineContact:
         Returns the :class:`~transient.models.roller.continuation.PathResult` (state in this contact's
         scaled units at ``s = 1``)."""
         grid = self.grid if grid is None else grid
-        w1, a1 = self.load_per_length, self.rheology.pressure_viscosity
+        w1, a1 = self.load_per_length, self.lubricant.pressure_viscosity
         w0 = w1 * min(1.0, M_EASY / self.M)
         a0 = a1 * min(1.0, L_EASY / self.L) if self.L > 0 else 0.0
         kernel = self.film_problem(grid).K

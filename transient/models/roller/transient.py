@@ -1,6 +1,6 @@
 """Transient EHL (Park, extended in time): the squeeze-film DAE integrated by IDA.
 
-Reynolds with the squeeze term, in the scaled units of :mod:`transient.models.roller.film` (time
+Reynolds with the squeeze term, in the scaled units of :mod:`transient.models.roller.ehl_problem` (time
 ``tau`` in units of ``t_ref``; rolling: ``t_ref = b/u`` and ``kappa = lam``)::
 
     G = F(p, h) - kappa [rho'(p) h dp/dtau + rho(p) dh/dtau],   dh/dtau = dh0/dtau + k_el K dp/dtau
@@ -25,7 +25,7 @@ import time
 import numpy as np
 
 from transient.checks import check_positive, check_range
-from transient.models.roller.film import EHLFilm
+from transient.models.roller.ehl_problem import EHLFilm
 from transient.models.roller.kernels import assemble_dense
 from transient.solvers.integrate import Problem, solve
 from transient.solvers.newton import newton

@@ -16,7 +16,6 @@ import os
 import numpy as np
 import pytest
 import scipy.sparse as sp
-from fd_jacobian import central_jacobian
 
 from transient.verification.reference import short_bearing_force
 from transient.params.rho_kim import BEARING as RHO_KIM_BEARING, ROTOR as RHO_KIM_ROTOR
@@ -79,7 +78,7 @@ def _orbit_state(switch_width, film="classical"):
 TAU = 0.3  # the time at which the Jacobians are checked
 
 
-def _rhs_jacobians(prob, y, step):
+def _rhs_jacobians(fd_jacobian, prob, y, step):
     """The analytic ``df/dy`` of an ODE problem at ``y`` (dense) and its central differences."""
     n = y.size
     pat = prob.jac_pattern.tocsc()
@@ -91,10 +90,10 @@ def _rhs_jacobians(prob, y, step):
         prob.rhs(TAU, v, out)
         return out
 
-    return sp.csc_matrix((data, pat.indices, pat.indptr), shape=(n, n)).toarray(), central_jacobian(f, y, n, step=step)
+    return sp.csc_matrix((data, pat.indices, pat.indptr), shape=(n, n)).toarray(), fd_jacobian(f, y, n, step=step)
 
 
-def _residual_jacobians(prob, y, yp, cj, step):
+def _residual_jacobians(fd_jacobian, prob, y, yp, cj, step):
     """The analytic ``dF/dy + cj dF/dy'`` of an IDA problem at ``(y, y')`` (dense) and its central differences."""
     n = y.size
     pat = prob.jac_pattern.tocsc()
@@ -106,7 +105,7 @@ def _residual_jacobians(prob, y, yp, cj, step):
         prob.residual(TAU, v, vp, out)
         return out
 
-    J_fd = central_jacobian(lambda v: F(v, yp), y, n, step=step) + cj * central_jacobian(lambda v: F(y, v), yp, n,
+    J_fd = fd_jacobian(lambda v: F(v, yp), y, n, step=step) + cj * fd_jacobian(lambda v: F(y, v), yp, n,
                                                                                           step=step)
     return sp.csc_matrix((data, pat.indices, pat.indptr), shape=(n, n)).toarray(), J_fd
 
@@ -119,9 +118,9 @@ def _inconsistent_yp(prob, y):
 
 
 @pytest.mark.parametrize("switch_width, film", CASES)
-def test_ode_jacobian_matches_finite_differences(switch_width, film):
+def test_ode_jacobian_matches_finite_differences(switch_width, film, fd_jacobian):
     o, prob, y = _orbit_state(switch_width, film)
-    J_an, J_fd = _rhs_jacobians(prob, y, 5e-4 * o.film.width)
+    J_an, J_fd = _rhs_jacobians(fd_jacobian, prob, y, 5e-4 * o.film.width)
     rel, outside = _compare(J_an, J_fd, prob.jac_pattern.toarray() != 0)
     assert rel < 1e-6, rel
     assert outside == 0.0
@@ -131,9 +130,9 @@ def test_ode_jacobian_matches_finite_differences(switch_width, film):
 
 
 @pytest.mark.parametrize("switch_width, film", CASES)
-def test_dae_jacobian_matches_finite_differences(switch_width, film):
+def test_dae_jacobian_matches_finite_differences(switch_width, film, fd_jacobian):
     o, prob, y = _orbit_state(switch_width, film)
-    J_an, J_fd = _residual_jacobians(prob, y, _inconsistent_yp(prob, y), 7.5, 5e-4 * o.film.width)
+    J_an, J_fd = _residual_jacobians(fd_jacobian, prob, y, _inconsistent_yp(prob, y), 7.5, 5e-4 * o.film.width)
     mask = (prob.jac_pattern.toarray() != 0) | np.eye(o.n, dtype=bool)  # IDA's pattern always has the diagonal
     rel, outside = _compare(J_an, J_fd, mask)
     assert rel < 1e-6, rel
@@ -141,7 +140,7 @@ def test_dae_jacobian_matches_finite_differences(switch_width, film):
 
 
 @pytest.mark.parametrize("switch_width, film", CASES)
-def test_content_jacobians_match_finite_differences(switch_width, film):
+def test_content_jacobians_match_finite_differences(switch_width, film, fd_jacobian):
     """The content formulation (state m = H theta): the IDA residual Jacobian dF/dy + cj dF/dy' and the ODE
     Jacobian, with the chain rule through u = C^-1(m / H) (du/dm and du/dX at fixed m) in the film rows and
     in the rotor rows (the force depends on X through u at fixed content)."""
@@ -151,13 +150,13 @@ def test_content_jacobians_match_finite_differences(switch_width, film):
     np.testing.assert_allclose(o.universal_state(y), y_u, rtol=1e-9, atol=1e-12)  # the layouts map back
     mask = (prob.jac_pattern.toarray() != 0) | np.eye(o.n, dtype=bool)
     h = 5e-5 * o.film.width  # the content bends on the scale w_theta + w / beta_bar: a finer step than in u
-    J_an, J_fd = _residual_jacobians(prob, y, _inconsistent_yp(prob, y), 7.5, h)
+    J_an, J_fd = _residual_jacobians(fd_jacobian, prob, y, _inconsistent_yp(prob, y), 7.5, h)
     rel, outside = _compare(J_an, J_fd, mask)
     assert rel < 1e-6, rel
     assert outside == 0.0
     nf = o.film.n
     assert np.abs(J_an[nf + 2:, nf:nf + 2]).max() > 0  # dF_V/dX through u(m, X): really there
-    rel, outside = _compare(*_rhs_jacobians(prob, y, h), mask)
+    rel, outside = _compare(*_rhs_jacobians(fd_jacobian, prob, y, h), mask)
     assert rel < 1e-6, rel
     assert outside == 0.0
 
@@ -190,7 +189,7 @@ def test_content_inverse_and_conservation():
 
 
 @pytest.mark.parametrize("rate", [0.0, 3.0])
-def test_film_jacobian_matches_finite_differences(rate):
+def test_film_jacobian_matches_finite_differences(rate, fd_jacobian):
     """dG/du, and at rate = 0 the rotor columns dG/dX, dG/dY, dG/dVX, dG/dVY (the columns the
     equilibrium Newton and the K/C sensitivities use)."""
     b = paper_bearing(grid=(16, 4), switch_width=1e4)
@@ -206,7 +205,7 @@ def test_film_jacobian_matches_finite_differences(rate):
     def G(v):
         return f.residual(v, X, Y, VX, VY, rate=rate, C_ref=C_ref).copy()
 
-    J_fd = central_jacobian(G, u, n, step=5e-4 * f.width)
+    J_fd = fd_jacobian(G, u, n, step=5e-4 * f.width)
     rel, outside = _compare(M[:n, :n], J_fd, pat[:n, :n])
     assert rel < 1e-6, rel
     assert outside == 0.0
@@ -216,7 +215,7 @@ def test_film_jacobian_matches_finite_differences(rate):
         def Gq(v):
             return f.residual(u, *v, rate=rate, C_ref=C_ref).copy()
 
-        Jq = central_jacobian(Gq, q, n)
+        Jq = fd_jacobian(Gq, q, n)
         rel_q, _ = _compare(M[:n, n:n + 4], Jq, pat[:n, n:n + 4])
         assert rel_q < 1e-6, rel_q
 

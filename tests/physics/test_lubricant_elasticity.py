@@ -1,4 +1,4 @@
-"""Seed 001 building blocks: rheology laws and elastic influence coefficients against closed forms."""
+"""Seed 001 building blocks: lubricant laws (viscosity and density against pressure) and elastic influence coefficients against closed forms."""
 
 import math
 
@@ -7,13 +7,13 @@ import pytest
 from scipy.integrate import dblquad, quad
 
 from transient.physics.elasticity import SurfaceConvolution, line_influence, surface_influence
-from transient.physics.rheology import DOWSON_HIGGINSON_CLASSIC, Rheology
+from transient.physics.lubricant import DOWSON_HIGGINSON_CLASSIC, Lubricant
 
 P = np.array([0.0, 1e8, 5e8, 1e9, 2e9])
 
 
 def test_barus_and_dowson_higginson_closed_forms():
-    r = Rheology(viscosity=0.05, pressure_viscosity=2e-8)
+    r = Lubricant(viscosity=0.05, pressure_viscosity=2e-8)
     eta, deta = r.eta(P)
     assert np.allclose(eta, np.exp(2e-8 * P), rtol=1e-14)
     assert np.allclose(deta, 2e-8 * np.exp(2e-8 * P), rtol=1e-14)
@@ -21,13 +21,13 @@ def test_barus_and_dowson_higginson_closed_forms():
     g = P / 1e9  # the paper's eq. (3): 1 + 0.58 p / (1 + 1.68 p), p in GPa
     assert np.allclose(rho, 1 + 0.58 * g / (1 + 1.68 * g), rtol=1e-14)
     assert np.allclose(drho * 1e9, 0.58 / (1 + 1.68 * g) ** 2, rtol=1e-13)
-    classic = Rheology(0.05, 2e-8, dh_constants=DOWSON_HIGGINSON_CLASSIC).rho(np.array([1e9]))[0]
+    classic = Lubricant(0.05, 2e-8, dh_constants=DOWSON_HIGGINSON_CLASSIC).rho(np.array([1e9]))[0]
     assert classic[0] == pytest.approx(1 + 0.6 / 2.7, rel=1e-14)
 
 
 def test_roelands_closed_form_and_low_pressure_slope():
     eta0, alpha = 0.04, 2.2e-8
-    r = Rheology(viscosity=eta0, pressure_viscosity=alpha, viscosity_law="roelands")
+    r = Lubricant(viscosity=eta0, pressure_viscosity=alpha, viscosity_law="roelands")
     eta, deta = r.eta(P)
     a = math.log(eta0) + 9.67
     z = alpha * 1.96e8 / a
@@ -40,10 +40,10 @@ def test_roelands_closed_form_and_low_pressure_slope():
 
 @pytest.mark.parametrize("bad", [dict(viscosity=0.0), dict(viscosity=-1.0), dict(pressure_viscosity=-1e-9),
                                  dict(viscosity_law="walther"), dict(density="ideal-gas")])
-def test_rheology_rejects_bad_input(bad):
+def test_lubricant_rejects_bad_input(bad):
     kw = dict(viscosity=0.05, pressure_viscosity=2e-8) | bad
     with pytest.raises(ValueError, match=next(iter(bad))):
-        Rheology(**kw)
+        Lubricant(**kw)
 
 
 @pytest.mark.parametrize("x0,y0", [(0.3, -0.2), (0.45, 0.2), (-1.0, 2.0), (1.7, 0.1)])

@@ -3,7 +3,7 @@
 Before the facade guarded its callbacks, these killed the interpreter (segfault, rc 139, or heap
 corruption abort, rc 134) or lost the exception, so they must not run inside pytest itself.
 
-Usage: ``python tests/facade_crash_cases.py GROUP [GROUP ...]`` (groups: exceptions, observer, sigint;
+Usage: ``python tests/solvers/facade_crash_cases.py GROUP [GROUP ...]`` (groups: exceptions, observer, sigint;
 one process for all of them pays the package import once). Each case prints one line
 ``CASE <name> <outcome>`` (flushed at once, so a crash shows which case died) where outcome is
 ``raised <Type> <message> tb=<0|1> note=<0|1>`` (tb: the callback's own frame is in the traceback;

@@ -6,18 +6,17 @@ import json
 import numpy as np
 import pytest
 
-from scenario_loader import load_scenario
 from transient.models.journal import JournalBearing, JournalOrbit, OrbitResult
 from transient.params.rho_kim import BEARING, ROTOR
 from transient.study.whip import carry_state, whirl_numbers
 
 
-def test_whip_scenario_quick_and_resumed(tmp_path):
+def test_whip_scenario_quick_and_resumed(tmp_path, scenario_loader):
     """32x4 grid, 5 speeds x 5 revolutions, 16 revolutions at 1.2x and 1.5x: below the threshold the orbit is
     synchronous (whirl ratio ~1), above it the whirl is at about half the shaft speed and grows (measured
     0.96, 0.51, 0.45, 0.47, 0.50 over the run-up; 1.5x: e/C up to 0.93 within 16 revolutions). A second
     call with the same settings resumes from the checkpoints and gives the same numbers."""
-    mod = load_scenario("journal_whip")
+    mod = scenario_loader("journal_whip")
     args = ["--quick", "--grid", "32", "4", "--revolutions", "16", "--out", str(tmp_path)]
     data = mod.main(args)
     for name in ("run_up.png", "whirl_1.2x.png", "whirl_1.5x.png", "whip.json", "run_up.npz", "whirl_1.5x.npz"):

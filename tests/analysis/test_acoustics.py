@@ -161,12 +161,11 @@ def test_no_field_when_not_asked():
     assert "pressure" not in r.fields and r.final_state is not None
 
 
-def test_noise_scenario_tiny(tmp_path):
+def test_noise_scenario_tiny(tmp_path, scenario_loader):
     import json
 
-    from scenario_loader import load_scenario
 
-    load_scenario("journal_noise").main(["--grid", "24", "4", "--speeds", "4000", "6000", "--revolutions", "2", "--out", str(tmp_path)])
+    scenario_loader("journal_noise").main(["--grid", "24", "4", "--speeds", "4000", "6000", "--revolutions", "2", "--out", str(tmp_path)])
     for name in ("fig5_fig6_pfluct.png", "fig4_fig7_spectra.png", "fig9_to_fig12_levels.png", "journal_noise.json"):
         assert (tmp_path / name).stat().st_size > 1000, name
     d = json.loads((tmp_path / "journal_noise.json").read_text())

@@ -1,6 +1,6 @@
 """The classical Reynolds-condition film of ``JournalBearing(cavitation="reynolds")`` (issue 17).
 
-Conventions as in tests/test_journal_model.py: ``phi`` from the groove (top) in the direction of rotation,
+Conventions as in tests/models/journal/test_journal_model.py: ``phi`` from the groove (top) in the direction of rotation,
 ``H = 1 + X cos(phi) + Y sin(phi)``, film force on the journal ``F = +int p (cos, sin) dA``; a journal
 displaced along +x puts the maximum film at phi = 0, so the closed forms of
 :mod:`transient.verification.reference` apply with ``theta = phi`` and ``F_model = -F_ref``.
@@ -13,7 +13,6 @@ import warnings
 
 import numpy as np
 import pytest
-from fd_jacobian import central_jacobian
 from scipy.integrate import quad
 from scipy.optimize import brentq
 
@@ -65,7 +64,7 @@ def test_elrod_film_without_supply_warns():
 # analytic Jacobian vs finite differences; complementarity
 # --------------------------------------------------------------------------------------------------
 
-def test_jacobian_matches_finite_differences():
+def test_jacobian_matches_finite_differences(fd_jacobian):
     """dG/dP (affine: exact up to rounding) and the journal columns dG/d(X, Y, VX, VY) on a 16x4 grid with a
     groove, at a moving, off-centre journal and a pressure with cavitated cells; the finite-difference
     entries outside the sparsity pattern are exactly zero."""
@@ -77,8 +76,8 @@ def test_jacobian_matches_finite_differences():
     assert np.any(P[f.free] == 0.0) and np.any(P[f.free] > 0.0)
     M = f.op.matrix(f.jacobian_data(P, *q)).toarray()
     pattern = f.op.matrix(np.ones(f.op.nnz)).toarray() != 0
-    Ju = central_jacobian(lambda v: f.residual(v, *q).copy(), P + 0.1, n, 1e-3, relative=False)
-    Jq = central_jacobian(lambda v: f.residual(P, *v).copy(), q, n, 1e-6, relative=False)
+    Ju = fd_jacobian(lambda v: f.residual(v, *q).copy(), P + 0.1, n, 1e-3, relative=False)
+    Jq = fd_jacobian(lambda v: f.residual(P, *v).copy(), q, n, 1e-6, relative=False)
     for an, fd, pat in ((M[:n, :n], Ju, pattern[:n, :n]), (M[:n, n:n + 4], Jq, pattern[:n, n:n + 4])):
         scale = np.abs(an).max(axis=0)
         assert float((np.abs(fd - an).max(axis=0) / scale).max()) < 1e-7
@@ -111,7 +110,7 @@ def test_complementarity_holds(groove):
 # --------------------------------------------------------------------------------------------------
 
 RAIMONDI_BOYD_LD1 = {  # eps: (Sommerfeld number S = (R/C)^2 mu N / P, attitude angle [deg]); as in
-    0.6: (0.121, 50.58),  # tests/test_journal_model.py (Raimondi & Boyd 1958, ASLE Trans. 1; Shigley's
+    0.6: (0.121, 50.58),  # tests/models/journal/test_journal_model.py (Raimondi & Boyd 1958, ASLE Trans. 1; Shigley's
     0.8: (0.0446, 36.24),  # table for the full journal bearing, L/D = 1)
 }
 
@@ -205,7 +204,7 @@ def test_long_bearing_swift_stieber(eps):
 # stiffness and damping, equilibrium, stability threshold
 # --------------------------------------------------------------------------------------------------
 
-def test_force_sensitivity_matches_finite_differences_of_the_solve():
+def test_force_sensitivity_matches_finite_differences_of_the_solve(fd_jacobian):
     """The active-set sensitivities (position: stiffness; journal velocity through the squeeze term:
     damping) against central differences of the whole complementarity solve (step 1e-6): the rupture
     boundary's motion adds nothing to first order (p = dp/dn = 0 there). Measured 2e-10 / 8e-11."""
@@ -219,7 +218,7 @@ def test_force_sensitivity_matches_finite_differences_of_the_solve():
 
     P, _ = f.solve(X, Y)
     _, dq, dv = f.force_sensitivity(P, X, Y)
-    fd = central_jacobian(F, np.array([X, Y, 0.0, 0.0]), 2, 1e-6, relative=False)
+    fd = fd_jacobian(F, np.array([X, Y, 0.0, 0.0]), 2, 1e-6, relative=False)
     assert np.abs(fd[:, :2] - dq).max() < 1e-6 * np.abs(dq).max()
     assert np.abs(fd[:, 2:] - dv).max() < 1e-6 * np.abs(dv).max()
     assert abs(dv[0, 1] - dv[1, 0]) < 1e-9 * np.abs(dv).max()  # fixed-boundary damping is symmetric
@@ -242,12 +241,12 @@ def _short_force(q, zb):
                                           limit=200)[0] for w in (np.cos, np.sin)])
 
 
-def _short_coefficient_error(LD, X=0.55, Y=0.25):
+def _short_coefficient_error(fd_jacobian, LD, X=0.55, Y=0.25):
     """Worst relative error (per column, against its largest entry) of dF/d(X, Y) and dF/d(VX, VY) of the
     Reynolds film (no groove, 480 around, axially Richardson-extrapolated from 6/12 cells) against the
     derivatives of the short-bearing pi-film force (quadrature + central differences)."""
     zb = 0.5 * LD * D / (0.5 * D)
-    ref = central_jacobian(lambda v: _short_force(v, zb), np.array([X, Y, 0.0, 0.0]), 2, 1e-5, relative=False)
+    ref = fd_jacobian(lambda v: _short_force(v, zb), np.array([X, Y, 0.0, 0.0]), 2, 1e-5, relative=False)
     S = {}
     for nz in (6, 12):
         f = reynolds_bearing(LD * D, (480, nz), groove=None).film(RPM)
@@ -258,11 +257,11 @@ def _short_coefficient_error(LD, X=0.55, Y=0.25):
     return err[:, :2].max(), err[:, 2:].max()
 
 
-def test_short_bearing_stiffness_and_damping():
+def test_short_bearing_stiffness_and_damping(fd_jacobian):
     """Stiffness (position) and damping (squeeze) sensitivities of a short bearing against the short-bearing
     pi-film force's derivatives. Measured (stiffness / damping): L/D 0.2: 7.9 / 5.4 %; 0.1: 2.2 / 1.4 %;
     0.05: 0.62 / 0.45 % -- the (L/D)^2 term of the short-bearing theory, as for the force."""
-    e1, e2 = np.array(_short_coefficient_error(0.1)), np.array(_short_coefficient_error(0.05))
+    e1, e2 = np.array(_short_coefficient_error(fd_jacobian, 0.1)), np.array(_short_coefficient_error(fd_jacobian, 0.05))
     assert np.all(e1 < 0.03) and np.all(e2 < 0.01), (e1, e2)
     assert np.all(e1 / e2 > 2.5), (e1, e2)
 

@@ -3,7 +3,6 @@ solution, the mid-plane against the line contact, load balance, Jacobian, DC-FFT
 
 import numpy as np
 import pytest
-from fd_jacobian import central_jacobian
 
 from transient.models.roller import LineContact, RollerContact, TaperedRoller
 from transient.models.roller.dry import dry_contact
@@ -75,14 +74,14 @@ def test_midplane_equals_line_contact_on_the_same_nodes(untapered):
     c, s = untapered
     x, p, h = s.section_x(0.0)
     w = np.trapezoid(p, x)
-    b = LineContact(RM, w, c.speed, c.rheology.viscosity, c.rheology.pressure_viscosity, E).b
+    b = LineContact(RM, w, c.speed, c.lubricant.viscosity, c.lubricant.pressure_viscosity, E).b
     nodes = x / b
-    lc = LineContact(RM, w, c.speed, c.rheology.viscosity, c.rheology.pressure_viscosity, E,
+    lc = LineContact(RM, w, c.speed, c.lubricant.viscosity, c.lubricant.pressure_viscosity, E,
                      grid=nodes, domain=(nodes[0], nodes[-1]))
     assert s.h_central == pytest.approx(lc.steady().h_central, rel=5e-3)
 
 
-def test_analytic_jacobian_2d_matches_finite_differences(untapered):
+def test_analytic_jacobian_2d_matches_finite_differences(untapered, fd_jacobian):
     c = untapered[0]
     g = c.make_grid("clustered", 14, 12)
     f = c.film_problem(g)
@@ -93,7 +92,7 @@ def test_analytic_jacobian_2d_matches_finite_differences(untapered):
     def F(v):
         return f.reynolds(v[:-1], f.film(v[:-1], v[-1])).copy()
 
-    fd = central_jacobian(F, u, J.shape[0])
+    fd = fd_jacobian(F, u, J.shape[0])
     assert np.max(np.abs(J - fd)) < 1e-6 * np.max(np.abs(fd))
 
 

@@ -7,12 +7,10 @@ import json
 import numpy as np
 import pytest
 
-from scenario_loader import load_scenario
-
 
 @pytest.fixture(scope="module")
-def scenario():
-    return load_scenario("film_validation")
+def scenario(scenario_loader):
+    return scenario_loader("film_validation")
 
 
 def test_quick_run_writes_files_and_second_order(scenario, tmp_path, capsys):

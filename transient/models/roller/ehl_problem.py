@@ -23,7 +23,7 @@ import numpy as np
 from transient.models.roller.grid import TensorGrid
 from transient.models.roller.kernels import N_SLOTS, assemble_dense, fischer_burmeister, penalty, reynolds_kernel
 from transient.physics.elasticity import SurfaceConvolution, line_influence, surface_influence
-from transient.physics.rheology import Rheology
+from transient.physics.lubricant import Lubricant
 from transient.solvers.newton import newton
 
 ELASTIC = ("dense", "fft", "rigid")
@@ -55,11 +55,11 @@ class EHLFilm:
 
     ``rigid``: the rigid gap at every full node (flat, full grid); ``rs``: the local radius ratio
     (entrainment speed and curvature) per full y row; ``lam``: the wedge coefficient; ``w_bar``: the
-    scaled load; ``p_scale`` [Pa]: the pressure unit (for the rheology); ``elastic``: ``"dense"``
+    scaled load; ``p_scale`` [Pa]: the pressure unit (for the lubricant laws); ``elastic``: ``"dense"``
     (influence matrix), ``"fft"`` (uniform grids) or ``"rigid"``; ``elastic_factor``: ``k_el``.
     """
 
-    def __init__(self, grid: TensorGrid, rigid, rs, lam: float, w_bar: float, rheology: Rheology, p_scale: float,
+    def __init__(self, grid: TensorGrid, rigid, rs, lam: float, w_bar: float, lubricant: Lubricant, p_scale: float,
                  elastic: str = "dense", elastic_factor: float = 1.0, order2: bool = True, kernel=None):
         if elastic not in ELASTIC:
             raise ValueError(f"elastic = {elastic!r} is not one of {ELASTIC}")
@@ -74,9 +74,9 @@ class EHLFilm:
         self.rs = np.ascontiguousarray(rs, dtype=float)
         self.lam = float(lam)
         self.w_bar = float(w_bar)
-        self.rheology = rheology
+        self.lubricant = lubricant
         self.p_scale = float(p_scale)
-        self.rheo_args = rheology.kernel_args()
+        self.rheo_args = lubricant.kernel_args()
         self.elastic = elastic
         self.k_el = float(elastic_factor)
         self.order2 = bool(order2)

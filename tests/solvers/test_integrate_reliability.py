@@ -4,7 +4,7 @@ Reproductions of a hostile tester's reports, each failing on the facade before t
 02ba1ff) and passing after:
 
 * an exception in a Jacobian/rhs/event callback under CVODE/IDA killed the interpreter (segfault,
-  rc 139; abort, rc 134) -- run in a child process (tests/facade_crash_cases.py) so a crash fails
+  rc 139; abort, rc 134) -- run in a child process (tests/solvers/facade_crash_cases.py) so a crash fails
   the test instead of killing pytest;
 * a NaN right-hand side stalled CVODE/IDA at h ~ 1e-17 for a million steps, LSODA returned
   success=True with NaN states, scipy's BDF raised from its LU;
@@ -40,7 +40,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 def crash_cases():
     """One child process runs every crash-prone case (one package import); its lines by case name."""
     env = dict(os.environ)
-    root = os.path.dirname(HERE)
+    root = os.path.dirname(os.path.dirname(HERE))
     env["PYTHONPATH"] = root + (os.pathsep + env["PYTHONPATH"] if env.get("PYTHONPATH") else "")
     proc = subprocess.run([sys.executable, os.path.join(HERE, "facade_crash_cases.py"), "exceptions", "observer",
                            "sigint"], capture_output=True, text=True, timeout=600, env=env)

@@ -146,7 +146,7 @@ def test_a_killed_sweep_loses_only_the_points_in_flight(tmp_path):
 
 
 def test_the_shipped_scene_files_load():
-    files = sorted((Path(__file__).resolve().parents[1] / "scenarios" / "scenes").glob("*.toml"))
+    files = sorted((Path(__file__).resolve().parents[2] / "scenarios" / "scenes").glob("*.toml"))
     assert len(files) >= 5
     for f in files:
         assert load_scene(f).kind.name in KINDS

@@ -4,13 +4,12 @@ Checked against: the classical film in the Newtonian limit (second-order converg
 is the face-film discretisation), the exact mapping of immobile layers onto a bearing of clearance C - 2 delta
 (which also checks every scale: kappa*, p0, the gradient factor 6), the bounds set by the two viscosities, the
 analytic Jacobian of the Reynolds-condition film (the Elrod film's ODE, DAE and content Jacobians are in
-tests/test_journal_model.py, ``gecim`` case), the orbit's mass balance and bad input.
+tests/models/journal/test_journal_model.py, ``gecim`` case), the orbit's mass balance and bad input.
 """
 
 import numpy as np
 import pytest
 
-from fd_jacobian import central_jacobian
 from transient import BoundaryLayers, Gecim, JournalBearing, JournalOrbit
 from transient.models.journal.bearing import Groove, omega
 from transient.params.rho_kim import BEARING, ROTOR
@@ -71,7 +70,7 @@ def test_shear_thinning_load_lies_between_the_two_viscosities():
     assert loads[0] < loads[1] < loads[2] < loads[3], loads
 
 
-def test_reynolds_film_jacobian_matches_finite_differences():
+def test_reynolds_film_jacobian_matches_finite_differences(fd_jacobian):
     """dG/dP (no longer affine) and the journal columns of the Reynolds-condition film with a Gecim bulk and
     mobile layers, at a solved pressure with cavitated cells; nothing outside the 9-point pattern."""
     b = bearing((16, 4), cavitation="reynolds", rheology=GECIM,
@@ -84,8 +83,8 @@ def test_reynolds_film_jacobian_matches_finite_differences():
     P = P + 0.05 * np.cos(np.arange(n))  # off the solution: the Jacobian must hold anywhere
     M = f.op.matrix(f.jacobian_data(P, *q)).toarray()
     pattern = f.op.matrix(np.ones(f.op.nnz)).toarray() != 0
-    Ju = central_jacobian(lambda v: f.residual(v, *q).copy(), P, n, 1e-5, relative=False)
-    Jq = central_jacobian(lambda v: f.residual(P, *v).copy(), q, n, 1e-6, relative=False)
+    Ju = fd_jacobian(lambda v: f.residual(v, *q).copy(), P, n, 1e-5, relative=False)
+    Jq = fd_jacobian(lambda v: f.residual(P, *v).copy(), q, n, 1e-6, relative=False)
     for an, fd, pat in ((M[:n, :n], Ju, pattern[:n, :n]), (M[:n, n:n + 4], Jq, pattern[:n, n:n + 4])):
         scale = np.abs(an).max(axis=0)
         assert float((np.abs(fd - an).max(axis=0) / scale).max()) < 1e-6

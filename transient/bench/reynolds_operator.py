@@ -10,7 +10,7 @@ after the JIT warm-up:
 * fields -- the softplus switch alone, :func:`transient.physics.cavitation.softplus_pressure` on the
   pressure-like variable ``beta (u - 1)`` (the journal model's kernel; included in both of the above).
 
-``run()`` returns the rows, :func:`markdown` formats them; ``transient bench film`` writes them to docs/.
+``run()`` returns the rows, :func:`markdown` formats them; ``transient bench reynolds-operator`` writes them to docs/.
 """
 
 from __future__ import annotations
@@ -106,7 +106,7 @@ TITLE = "film operator: residual and Jacobian time against grid size; integrator
 
 
 def main(out, quick: bool = False) -> str:
-    """``transient bench film``: the operator timings and the callback overhead as one section."""
+    """``transient bench reynolds-operator``: the operator timings and the callback overhead as one section."""
     from transient.bench import callbacks
 
     rows = run(grids=((151, 21), (301, 41)) if quick else ((151, 21), (301, 41), (601, 81)))

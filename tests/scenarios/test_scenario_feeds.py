@@ -1,11 +1,10 @@
 """The oil-feed design scenario runs end to end (quick settings) and its mass balance holds at every point."""
 
 import numpy as np
-from scenario_loader import load_scenario
 
 
-def test_feeds_scenario_quick(tmp_path):
-    data = load_scenario("journal_feeds").main(["--quick", "--out", str(tmp_path)])
+def test_feeds_scenario_quick(tmp_path, scenario_loader):
+    data = scenario_loader("journal_feeds").main(["--quick", "--out", str(tmp_path)])
     assert (tmp_path / "journal_feeds.png").exists() and (tmp_path / "journal_feeds.json").exists()
     names = ("full groove", "3/4-length groove", "two grooves at +-90 deg", "oil hole")
     for name in names:

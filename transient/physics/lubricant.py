@@ -20,7 +20,7 @@ with the paper's constants ``c1 = 0.58 /GPa, c2 = 1.68 /GPa`` (Park eq. 3; the c
 and 1.7 /GPa, :data:`DOWSON_HIGGINSON_CLASSIC`), or incompressible (``rho/rho0 = 1``).
 
 Law codes (for kernels that take the law as an argument): :data:`BARUS`, :data:`ROELANDS`,
-:data:`ISOVISCOUS`; :data:`DOWSON_HIGGINSON`, :data:`INCOMPRESSIBLE`. :class:`Rheology` bundles a
+:data:`ISOVISCOUS`; :data:`DOWSON_HIGGINSON`, :data:`INCOMPRESSIBLE`. :class:`Lubricant` bundles a
 viscosity law and a density law with their constants, validated, and evaluates both on arrays.
 """
 
@@ -112,7 +112,7 @@ def density_array(law, p, c1, c2):
 
 
 @dataclass(frozen=True)
-class Rheology:
+class Lubricant:
     """A viscosity law and a density law with their constants (SI).
 
     ``viscosity`` eta0 [Pa s] (needed by Roelands; Barus and isoviscous use only ratios),

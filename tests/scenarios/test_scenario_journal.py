@@ -2,11 +2,10 @@
 
 import json
 
-from scenario_loader import load_scenario
 
 
-def test_journal_scenario_quick(tmp_path):
-    data = load_scenario("journal_orbit").main(["--quick", "--grid", "24", "4", "--out", str(tmp_path)])
+def test_journal_scenario_quick(tmp_path, scenario_loader):
+    data = scenario_loader("journal_orbit").main(["--quick", "--grid", "24", "4", "--out", str(tmp_path)])
     for name in ("journal_fig3_orbit.png", "journal_fig4_spectrum.png", "journal_fig8_response.png",
                  "journal_stability.png", "journal_orbit.json", "orbit_6000rpm.npz"):
         assert (tmp_path / name).stat().st_size > 1000, name

@@ -5,7 +5,7 @@ The journal film's Poiseuille conductance becomes ``k = (H - 2 delta/C)^3/2 + 3 
 identical to round-off), the exact mapping of immobile layers onto a classical bearing of clearance C - 2 delta,
 the flow law of :mod:`transient.physics.layered` integrated by its own quadrature (Gecim with mu_2 = mu_1), the
 orbit's mass balance, and the named event where the layers touch. The analytic Jacobians with layers are
-checked against finite differences in tests/test_journal_model.py (``layers`` parametrisation).
+checked against finite differences in tests/models/journal/test_journal_model.py (``layers`` parametrisation).
 """
 
 import numpy as np
@@ -105,14 +105,13 @@ def test_bad_layers_are_named():
         b.steady_state(0.65, RPM)
 
 
-def test_seed_004_findings(tmp_path):
+def test_seed_004_findings(tmp_path, scenario_loader):
     """The scenario (quick grid), with the Newtonian and with the Gecim bulk: thicker layers raise the pressure
     strongly, more for thicker layers; the layer viscosity matters less than the thickness (2 -> 100 mu moves the
     load less than 0.1 -> 0.2 h_min does); the Gecim bulk carries 0.57..1 of the Newtonian load and less friction;
     the interface shear grows as the layers become immobile (Figs. 9-11: mu_ab up, alpha down)."""
-    from scenario_loader import load_scenario
 
-    data = load_scenario("journal_layers").main(["--quick", "--out", str(tmp_path)])
+    data = scenario_loader("journal_layers").main(["--quick", "--out", str(tmp_path)])
     c = data["cases"]
     peaks = [c["base"]["peak"]] + [r["mobile"]["peak"] for r in c["thickness"]]
     assert all(b > 1.3 * a for a, b in zip(peaks[:-1], peaks[1:])), peaks
