@@ -1,0 +1,1 @@
+"""Rotors on bearings."""
