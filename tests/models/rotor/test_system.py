@@ -18,17 +18,6 @@ def bearing():
     return JournalBearing(**BEARING, grid=(48, 8))
 
 
-def rigid_two_node(m, inertia, span):
-    """A rigid rotor of mass m and transverse inertia [kg m^2] carried at two nodes a span [m] apart: the mass
-    matrix of (x_a, y_a, x_b, y_b) from its kinetic energy (centre (x_a + x_b)/2, tilt (x_b - x_a)/span)."""
-    t = m / 4 * np.array([[1, 1], [1, 1]]) + inertia / span ** 2 * np.array([[1, -1], [-1, 1]])
-    M = np.zeros((4, 4))
-    for i in range(2):
-        for j in range(2):
-            M[2 * i, 2 * j] = M[2 * i + 1, 2 * j + 1] = t[i, j]
-    return Rotor(mass=M, stiffness=np.zeros((4, 4)), nodes=[1, 2])
-
-
 def test_one_node_rotor_is_the_journal_orbit(bearing):
     rotor = Rotor(mass=M_ROTOR * np.eye(2), stiffness=np.zeros((2, 2)), nodes=[0])
     s = RotorBearingSystem(rotor, {0: bearing}, unbalance=[(0, M_ROTOR * ECC, 0.0)], gravity=G)
@@ -42,16 +31,16 @@ def test_one_node_rotor_is_the_journal_orbit(bearing):
 
 
 def test_symmetric_rotor_on_two_bearings_is_the_half_orbit(bearing):
-    rotor = rigid_two_node(M_ROTOR, 3.0, 0.5)
-    s = RotorBearingSystem(rotor, {1: bearing, 2: bearing}, unbalance=[(1, M_ROTOR * ECC / 2, 0.0),
-                                                                       (2, M_ROTOR * ECC / 2, 0.0)], gravity=G)
+    rotor = Rotor.rigid(M_ROTOR, 3.0, 0.5)
+    s = RotorBearingSystem(rotor, {0: bearing, 1: bearing}, unbalance=[(0, M_ROTOR * ECC / 2, 0.0),
+                                                                       (1, M_ROTOR * ECC / 2, 0.0)], gravity=G)
     eq = s.equilibrium(6000)
     assert eq.bearing_load == pytest.approx([M_ROTOR * G / 2] * 2, rel=1e-8)
     half = bearing.equilibrium(M_ROTOR * G / 2, 6000)
-    assert np.allclose(eq.position(1), half.position, rtol=1e-6)
+    assert np.allclose(eq.position(0), half.position, rtol=1e-6)
     r = s.run(2, 6000, rtol=1e-7, atol=1e-10)
     o = JournalOrbit(bearing, M_ROTOR / 2, ECC, M_ROTOR * G / 2, 6000).run(2, rtol=1e-7, atol=1e-10)
-    for node in (1, 2):
+    for node in (0, 1):
         x, y = r.position(node)
         assert np.max(np.hypot(x - o.x, y - o.y)) < 1e-6 * bearing.clearance
 
@@ -179,3 +168,13 @@ def test_bad_input_names_the_parameter(bearing):
         s.run(1, lambda t: 1000.0 * t)
     with pytest.raises(ValueError, match="method"):
         s.run(1, 6000, method="rk45")
+
+
+def test_rigid_and_jeffcott_builders():
+    r = Rotor.rigid(10.0, 2.0, 0.4)
+    assert r.total_mass == pytest.approx(10.0)
+    tilt = np.array([-0.2, 0, 0.2, 0])  # a unit tilt about the centre: kinetic energy I / 2
+    assert tilt @ r.mass @ tilt == pytest.approx(2.0)
+    j = Rotor.jeffcott(1e6, 8.0, 1.0)
+    assert j.total_mass == pytest.approx(10.0)
+    assert np.allclose(j.stiffness @ np.tile([1.0, 0.0], 3), 0.0)  # a free rigid translation

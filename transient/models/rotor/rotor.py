@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from transient.checks import check_int
+from transient.checks import check_int, check_positive
 
 DOF_LAYOUTS = (("x", "y"), ("x", "y", "tx", "ty"))
 
@@ -136,6 +136,28 @@ class Rotor:
     def translation(self, node) -> np.ndarray:
         """(2, n): the rows mapping q to the (x, y) displacement [m] of ``node``."""
         return self.basis[[self.dof(node, "x"), self.dof(node, "y")]]
+
+    @classmethod
+    def rigid(cls, mass, inertia, span) -> "Rotor":
+        """A rigid rotor of ``mass`` [kg] and transverse moment of inertia ``inertia`` [kg m^2] about its centre,
+        carried at nodes 0 and 1 a ``span`` [m] apart (centre mid-way), x and y at each: the mass matrix from the
+        kinetic energy of the centre ``(x_0 + x_1) / 2`` and the tilt ``(x_1 - x_0) / span``; no stiffness."""
+        m = check_positive("mass", mass, "kg")
+        inertia = check_positive("inertia", inertia, "kg m^2")
+        span = check_positive("span", span, "m")
+        t = m / 4 * np.ones((2, 2)) + inertia / span ** 2 * np.array([[1.0, -1.0], [-1.0, 1.0]])
+        return cls(mass=np.kron(t, np.eye(2)), stiffness=np.zeros((4, 4)), nodes=[0, 1])
+
+    @classmethod
+    def jeffcott(cls, shaft_stiffness, disk_mass, journal_mass) -> "Rotor":
+        """A disk of ``disk_mass`` [kg] at node 1 on a massless shaft between two journals of ``journal_mass``
+        [kg] at nodes 0 and 2, each half of the shaft a spring ``shaft_stiffness`` [N/m] in x and y."""
+        k = check_positive("shaft_stiffness", shaft_stiffness, "N/m")
+        md = check_positive("disk_mass", disk_mass, "kg")
+        mj = check_positive("journal_mass", journal_mass, "kg")
+        chain = k * np.array([[1.0, -1.0, 0.0], [-1.0, 2.0, -1.0], [0.0, -1.0, 1.0]])
+        return cls(mass=np.kron(np.diag([mj, md, mj]), np.eye(2)), stiffness=np.kron(chain, np.eye(2)),
+                   nodes=[0, 1, 2])
 
     @classmethod
     def example(cls) -> "Rotor":

@@ -278,28 +278,47 @@ class RotorBearingSystem:
                 bearings.append((r.dof(node, "x"), r.dof(node, "y"), kb, cb))
         return r.mass, C, r.gyroscopic, K, bearings
 
-    def unbalance_response(self, speed_rpm) -> UnbalanceResponse:
-        """The linear unbalance response at ``speed_rpm``: the rotor with each bearing's K and C at its static
-        load (:meth:`coefficients`), forced by the unbalances; complex amplitudes per node
-        (``position(node)``, ``x(t) = Re(X e^{i Omega t})``)."""
-        from transient.models.rotor.linear import unbalance_response
-
+    def unbalance_response(self, speed_rpm, film_states=False) -> UnbalanceResponse:
+        """The linear unbalance response at ``speed_rpm``: complex amplitudes per node (``position(node)``,
+        ``x(t) = Re(X e^{i Omega t})``). Default: the rotor with each bearing's K and C at its static load
+        (:meth:`coefficients`, :mod:`transient.models.rotor.linear`); ``film_states=True``: the system linearised
+        with the films' own states (:meth:`linearisation`), ``(A + i B) Z = F`` in the time ``tau = Omega t``."""
         speed = check_speed(speed_rpm)
         w = rpm_to_rad_s(speed)
-        coef = self.coefficients(speed)
-        M, C, G, K, bearings = self._linear_matrices(coef)
+        eq = self.equilibrium(speed)
+        coef = self.coefficients(speed, eq)
         r = self.rotor
-        f = np.zeros(r.n, dtype=complex)
-        for node, me, phase in self.unbalance:
-            T = r.translation(node)
-            amp = me * w * w * np.exp(1j * np.radians(phase))
-            f += T[0] * amp - 1j * T[1] * amp
-        X = unbalance_response(M, C, G, K, bearings, f, w)
-        return UnbalanceResponse(displacement=self._node_displacements(np.asarray(X)),
+        if film_states:
+            lin = self.linearisation(speed, eq)
+            q = lin.forced_response()[lin.dae.Q0:lin.dae.V0] * lin.dae.L
+        else:
+            from transient.models.rotor.linear import unbalance_response
+
+            M, C, G, K, bearings = self._linear_matrices(coef)
+            f = np.zeros(r.n, dtype=complex)
+            for node, me, phase in self.unbalance:
+                T = r.translation(node)
+                amp = me * w * w * np.exp(1j * np.radians(phase))
+                f += T[0] * amp - 1j * T[1] * amp
+            q = np.asarray(unbalance_response(M, C, G, K, bearings, f, w))
+        return UnbalanceResponse(displacement=self._node_displacements(q),
                                  stiffness=np.array([coef[n][0] for n in self.bearing_nodes]),
                                  damping=np.array([coef[n][1] for n in self.bearing_nodes]),
                                  nodes=list(r.nodes), bearing_nodes=self.bearing_nodes, speed_rpm=speed,
-                                 success=True, message="linear")
+                                 success=True, message="linear, film states" if film_states else "linear, K and C")
+
+    def linearisation(self, speed_rpm, equilibrium=None) -> "Linearisation":
+        """The system linearised at its static equilibrium with the film states included
+        (:class:`Linearisation`)."""
+        speed = check_speed(speed_rpm)
+        eq = self.equilibrium(speed) if equilibrium is None else equilibrium
+        return Linearisation(self, self.dae(speed), eq)
+
+    def linear_start(self, speed_rpm) -> np.ndarray:
+        """The state at t = 0 on the linear unbalance response with the film states (equilibrium + Re Z): a run
+        started there (``start=(0, state)``) is settled but for the nonlinearity of the films."""
+        lin = self.linearisation(speed_rpm)
+        return lin.equilibrium.state + lin.forced_response().real
 
     def quasi_static_eigenvalues(self, speed_rpm, equilibrium=None) -> np.ndarray:
         """Eigenvalues [1/s] of the rotor with each bearing's K and C (Lund's quasi-static bearings), sorted by
@@ -311,40 +330,15 @@ class RotorBearingSystem:
         return np.asarray(eigenvalues(M, C, G, K, bearings, rpm_to_rad_s(speed)))
 
     def eigenvalues(self, speed_rpm, count=4, equilibrium=None) -> np.ndarray:
-        """Eigenvalues [1/s] of the system linearised at its static equilibrium with the film states included:
-        the pencil ``(dF/dy) z + lambda (dF/dy') z = 0`` of the DAE's Jacobian (groove cells and the shaft angle
-        left out), those nearest each of the ``count`` least stable quasi-static eigenvalues
-        (:meth:`quasi_static_eigenvalues`) by sparse shift-invert Arnoldi; sorted by real part, largest last."""
+        """Eigenvalues [1/s] of the system linearised at its static equilibrium with the film states included
+        (:meth:`Linearisation.eigenvalues`): those nearest each of the ``count`` least stable quasi-static
+        eigenvalues (:meth:`quasi_static_eigenvalues`), sorted by real part, largest last."""
         speed = check_speed(speed_rpm)
         count = check_int("count", count, "-", 1, 100)
         eq = self.equilibrium(speed) if equilibrium is None else equilibrium
-        dae = self.dae(speed)
-        dae.unbalance = []
-        y = read_only(eq.state)
-        zero = read_only(np.zeros(dae.n))
-        d0, d1 = np.empty(dae.pattern.nnz), np.empty(dae.pattern.nnz)
-        dae.jacobian(0.0, y, zero, 0.0, d0)
-        dae.jacobian(0.0, y, zero, 1.0, d1)
-        keep = np.ones(dae.n, dtype=bool)
-        for b in dae.blocks:
-            keep[b.offset:b.offset + b.n] = b.film.op.free
-        keep[dae.P0] = False
-        mat = lambda d: sp.csc_matrix((d, dae.pattern.indices, dae.pattern.indptr), shape=dae.pattern.shape)  # noqa: E731
-        A = mat(d0)[keep][:, keep].tocsc()
-        B = (mat(d1) - mat(d0))[keep][:, keep].tocsc()
         qs = self.quasi_static_eigenvalues(speed, eq)
         qs = qs[np.imag(qs) > 0]
-        shifts = qs[np.argsort(-qs.real)][:count] / dae.omega
-        found = []
-        for sigma in shifts:
-            lu = spla.splu((A + sigma * B).tocsc())
-            op = spla.LinearOperator(A.shape, matvec=lambda x, lu=lu: lu.solve(B @ x), dtype=complex)
-            mu = spla.eigs(op, k=min(3, A.shape[0] - 2), which="LM", return_eigenvectors=False, tol=1e-10)
-            found.extend(sigma - 1.0 / mu)
-        lam = np.array(found) * dae.omega
-        lam = lam[np.isfinite(lam)]
-        lam = np.unique(np.round(lam, 9))
-        return lam[np.argsort(lam.real)]
+        return self.linearisation(speed, eq).eigenvalues(qs[np.argsort(-qs.real)][:count])
 
     def growth_rate(self, speed_rpm, film_states=True) -> float:
         """Largest real part [1/s] of the linearised system's eigenvalues: with the film states
@@ -491,6 +485,56 @@ class RotorBearingSystem:
         return dict(rotor=h.hexdigest()[:16], nodes=list(r.nodes), dofs=list(r.dofs),
                     bearings={str(n): b.parameters() for n, b in self.bearings.items()},
                     unbalance=[list(u) for u in self.unbalance], gravity=list(self.gravity_vector))
+
+
+class Linearisation:
+    """The system linearised at its static equilibrium with the films' own states: ``B z' + A z = f`` in the
+    time ``tau = Omega t`` (``A = dF/dy``, ``B = dF/dy'`` of the DAE at rest, the groove cells and the shaft angle
+    left out: they do not move)."""
+
+    def __init__(self, system, dae: SystemDAE, equilibrium: RotorEquilibrium):
+        self.system, self.dae, self.equilibrium = system, dae, equilibrium
+        dae.unbalance = []
+        y = read_only(equilibrium.state)
+        zero = read_only(np.zeros(dae.n))
+        d0, d1 = np.empty(dae.pattern.nnz), np.empty(dae.pattern.nnz)
+        dae.jacobian(0.0, y, zero, 0.0, d0)
+        dae.jacobian(0.0, y, zero, 1.0, d1)
+        keep = np.ones(dae.n, dtype=bool)
+        for b in dae.blocks:
+            keep[b.offset:b.offset + b.n] = b.film.op.free
+        keep[dae.P0] = False
+        self.keep = keep
+        mat = lambda d: sp.csc_matrix((d, dae.pattern.indices, dae.pattern.indptr), shape=dae.pattern.shape)  # noqa: E731
+        self.A = mat(d0)[keep][:, keep].tocsc()
+        self.B = (mat(d1) - mat(d0))[keep][:, keep].tocsc()
+
+    def forced_response(self) -> np.ndarray:
+        """The complex amplitudes Z of the whole state (dimensionless, groove cells and angle 0) under the
+        system's unbalances at the equilibrium's speed: ``(A + i B) Z = F``, ``F`` the unbalance force
+        ``(m e / L) e^{i a} (t_x - i t_y)`` in the momentum rows."""
+        dae, s = self.dae, self.system
+        f = np.zeros(dae.n, dtype=complex)
+        for node, me, phase in s.unbalance:
+            T = s.rotor.translation(node)
+            f[dae.V0:dae.P0] += (me / dae.L) * np.exp(1j * np.radians(phase)) * (T[0] - 1j * T[1])
+        z = np.zeros(dae.n, dtype=complex)
+        z[self.keep] = spla.spsolve((self.A + 1j * self.B).tocsc(), f[self.keep])
+        return z
+
+    def eigenvalues(self, shifts, k=3) -> np.ndarray:
+        """Eigenvalues [1/s] of the pencil ``(A + lambda B) z = 0`` nearest each of ``shifts`` [1/s] (``k``
+        each) by shift-invert Arnoldi on ``(A + sigma B)^-1 B``, sorted by real part, largest last."""
+        w = self.dae.omega
+        found = []
+        for sigma in np.asarray(shifts, dtype=complex) / w:
+            lu = spla.splu((self.A + sigma * self.B).tocsc())
+            op = spla.LinearOperator(self.A.shape, matvec=lambda x, lu=lu: lu.solve(self.B @ x), dtype=complex)
+            mu = spla.eigs(op, k=min(k, self.A.shape[0] - 2), which="LM", return_eigenvectors=False, tol=1e-10)
+            found.extend(sigma - 1.0 / mu)
+        lam = np.array(found) * w
+        lam = np.unique(np.round(lam[np.isfinite(lam)], 9))
+        return lam[np.argsort(lam.real)]
 
 
 def _solve(K, f) -> np.ndarray:
