@@ -83,18 +83,18 @@ def block_jacobian(u, up, X, Y, Xd, Yd, s, cj, local, switch, geo, fields, extra
 @njit(cache=True)
 def scatter_block(local, data, maps, ax, ay, gx, gy):
     """The film block's ``local`` Jacobian into the system's CSC ``data`` (positions in ``maps``, a
-    :class:`~transient.models.rotor.assembly.BlockMaps`): the cell block as it is, the coupling to the rotor
+    :class:`~transient.models.rotor.model.BlockMaps`): the cell block as it is, the coupling of the free cells to the rotor
     coordinates ``dF_i/dq_j = dF_i/dX ax_j + dF_i/dY ay_j`` (``X = ax . q``), and the border
     ``dF_r/du_i = -(gx_r dFx/du_i + gy_r dFy/du_i)`` (the force enters rotor row ``r`` as ``gx_r Fx + gy_r Fy``)."""
     src, dst, col_x, col_y, coupling, row_fx, row_fy, border = maps
     for p in range(src.size):
         data[dst[p]] = local[src[p]]
-    n = col_x.size
-    for i in range(n):
+    for i in range(col_x.size):
         lx = local[col_x[i]]
         ly = local[col_y[i]]
         for j in range(ax.size):
             data[coupling[i, j]] = lx * ax[j] + ly * ay[j]
+    for i in range(row_fx.size):
         fx = local[row_fx[i]]
         fy = local[row_fy[i]]
         for r in range(gx.size):

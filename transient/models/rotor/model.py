@@ -32,9 +32,10 @@ from transient.models.rotor.kernels import block_jacobian, block_residual, scatt
 
 
 class BlockMaps(NamedTuple):
-    """Where a film block's local Jacobian goes in the system's CSC data: the cell block (``src`` -> ``dst``),
-    the local positions of ``dF_i/dX``, ``dF_i/dY`` (``col_x``, ``col_y``) and of ``dFx/du_i``, ``dFy/du_i``
-    (``row_fx``, ``row_fy``), the system positions of the coupling (n, m) and of the border (n, m)."""
+    """Where a film block's local Jacobian goes in the system's CSC data: the cell block (``src`` -> ``dst``; a
+    groove cell's row only its diagonal), the local positions of ``dF_i/dX``, ``dF_i/dY`` of the free cells
+    (``col_x``, ``col_y``) and of ``dFx/du_i``, ``dFy/du_i`` of every cell (``row_fx``, ``row_fy``), the system
+    positions of the coupling (free cells, m) and of the border (cells, m)."""
 
     src: np.ndarray
     dst: np.ndarray
@@ -70,13 +71,17 @@ class FilmBlock:
         return float(self.ax @ qs), float(self.ay @ qs)
 
 
-def system_pattern(blocks, nq, n_total):
+def system_pattern(blocks, nq, n_total, q_mask, v_mask, phi_rows):
     """The CSC pattern of the system Jacobian and each block's :class:`BlockMaps`; returns
-    ``(pattern, rotor_positions)`` with ``rotor_positions = (kin_q, kin_v, mom_q (nq, nq), mom_v (nq, nq),
-    mom_phi (nq), phi_phi)``."""
+    ``(pattern, rotor_positions)`` with ``rotor_positions = (kin_q, kin_v, mom_q, mom_v, mom_phi, phi_phi)``:
+    the positions of the kinematic rows' entries, of the momentum rows' entries in the rotor coordinates where
+    ``q_mask`` (stiffness) and ``v_mask`` (mass, damping, gyroscopic) are true (row-major order of the masks),
+    in the angle column for ``phi_rows`` (the unbalances), and of the angle row's diagonal. Only the rotor
+    matrices' own nonzeros enter: explicit zeros in the border let the fill-reducing ordering of the sparse LU
+    go wrong (measured: 5x the fill on a Jeffcott rotor)."""
     Q0 = n_total - 2 * nq - 1
     V0, P0 = Q0 + nq, n_total - 1
-    rows, cols, tags = [], [], []
+    rows, cols = [], []
 
     def add(r, c):
         r, c = np.broadcast_arrays(np.asarray(r, dtype=np.int64), np.asarray(c, dtype=np.int64))
@@ -90,21 +95,25 @@ def system_pattern(blocks, nq, n_total):
         pat = b.film.op.pattern.tocoo()
         n = b.n
         local_pos = _positions(b.film.op.pattern)
+        free = b.film.op.free
         keep = (pat.row < n) & (pat.col < n)
+        keep[keep] = free[pat.row[keep]] | (pat.row[keep] == pat.col[keep])  # a groove cell's row: u' = 0
         lr, lc = pat.row[keep], pat.col[keep]
         ids_cells = add(b.offset + lr, b.offset + lc)
         src = local_pos[lr, lc]
         cells = np.arange(n)
-        ids_coup = add(b.offset + cells[:, None], Q0 + b.support[None, :])
+        ids_coup = add(b.offset + cells[free][:, None], Q0 + b.support[None, :])
         ids_border = add(V0 + b.support[None, :], b.offset + cells[:, None])
         st = b.film.op.stencil
         block_ids.append((src, ids_cells, ids_coup, ids_border, st))
     j = np.arange(nq)
     kin_q = add(Q0 + j, Q0 + j)
     kin_v = add(Q0 + j, V0 + j)
-    mom_q = add(V0 + j[:, None], Q0 + j[None, :])
-    mom_v = add(V0 + j[:, None], V0 + j[None, :])
-    mom_phi = add(V0 + j, P0)
+    r_q, c_q = np.nonzero(q_mask)
+    mom_q = add(V0 + r_q, Q0 + c_q)
+    r_v, c_v = np.nonzero(v_mask)
+    mom_v = add(V0 + r_v, V0 + c_v)
+    mom_phi = add(V0 + np.asarray(phi_rows, dtype=np.int64), P0)
     phi_phi = add(P0, P0)
     r, c = np.concatenate(rows), np.concatenate(cols)
     ids = np.arange(r.size, dtype=float) + 1.0
@@ -116,7 +125,8 @@ def system_pattern(blocks, nq, n_total):
     where[m.data.astype(np.int64) - 1] = np.arange(m.nnz)
     for b, (src, ids_cells, ids_coup, ids_border, st) in zip(blocks, block_ids):
         b.maps = BlockMaps(np.ascontiguousarray(src, dtype=np.int64), where[ids_cells],
-                           np.ascontiguousarray(st.pos_col_extra[:b.n, 0]), np.ascontiguousarray(st.pos_col_extra[:b.n, 1]),
+                           np.ascontiguousarray(st.pos_col_extra[:b.n, 0][b.film.op.free]),
+                           np.ascontiguousarray(st.pos_col_extra[:b.n, 1][b.film.op.free]),
                            np.ascontiguousarray(where[ids_coup]), np.ascontiguousarray(st.pos_row_extra[2, :b.n]),
                            np.ascontiguousarray(st.pos_row_extra[3, :b.n]), np.ascontiguousarray(where[ids_border]))
     pattern = sp.csc_matrix((np.ones(m.nnz), m.indices, m.indptr), shape=m.shape)
@@ -174,7 +184,13 @@ class SystemDAE:
         self.f_static = system.gravity_vector @ rotor.gravity_load / (L * w ** 2)
         self.unbalance = [(rotor.translation(node) * me / L, np.radians(phase)) for node, me, phase
                           in system.unbalance]
-        self.pattern, self.rotor_pos = system_pattern(self.blocks, nq, self.n)
+        self.q_mask = rotor.stiffness != 0
+        self.v_mask = (rotor.mass != 0) | (rotor.damping != 0) | (rotor.gyroscopic != 0)
+        np.fill_diagonal(self.v_mask, True)
+        self.phi_rows = np.flatnonzero(np.any([np.any(T != 0, axis=0) for T, _ in self.unbalance], axis=0)) \
+            if self.unbalance else np.zeros(0, dtype=np.int64)
+        self.pattern, self.rotor_pos = system_pattern(self.blocks, nq, self.n, self.q_mask, self.v_mask,
+                                                      self.phi_rows)
         self.pattern.sort_indices()
         self.forces = np.zeros((len(self.blocks), 2))
 
@@ -221,14 +237,14 @@ class SystemDAE:
         kin_q, kin_v, mom_q, mom_v, mom_phi, phi_phi = self.rotor_pos
         data[kin_q] = cj
         data[kin_v] = -1.0
-        data[mom_q] = self.Kw
-        data[mom_v] = self.Cw + s * self.G + cj * self.M
+        data[mom_q] = self.Kw[self.q_mask]
+        data[mom_v] = (self.Cw + s * self.G + cj * self.M)[self.v_mask]
         phi = y[P0]
         dphi = np.zeros(nq)
         for T, a in self.unbalance:
             c, sn = np.cos(phi + a), np.sin(phi + a)
             dphi -= T[0] * (-s * s * sn + ds * c) + T[1] * (s * s * c + ds * sn)
-        data[mom_phi] = dphi
+        data[mom_phi] = dphi[self.phi_rows]
         data[phi_phi] = cj
 
     # ------------------------------------------------------------------------------------------
