@@ -70,3 +70,33 @@ def test_two_bearing_quasi_static_threshold_is_the_half_rotors(bearing):
     s = RotorBearingSystem(Rotor.rigid(M_ROTOR, 3.0, 0.5), {0: bearing, 1: bearing}, gravity=G)
     n = s.stability_threshold((4000.0, 12000.0), film_states=False)
     assert n == pytest.approx(bearing.stability_threshold(M_ROTOR / 2, M_ROTOR * G / 2, (4000.0, 12000.0)), rel=1e-3)
+
+
+def free_growth_rate(s, speed, revolutions=16, per=64):
+    """Growth rate [1/s] of a free vibration from the equilibrium at ``speed`` [rpm] (time domain): the slope of
+    the log of the per-revolution peak distance from the equilibrium over the second half of the run."""
+    eq = s.equilibrium(speed)
+    y = eq.state.copy()
+    y[s.dae(speed).Q0] += 0.01
+    r = s.run(revolutions, speed, start=(0.0, y), outputs_per_revolution=per)
+    x, yy = r.position(0)
+    n = revolutions * per
+    e = np.hypot(x - eq.position(0)[0], yy - eq.position(0)[1])[:n].reshape(revolutions, per).max(axis=1)
+    half = revolutions // 2
+    return np.polyfit(r.t[:n:per][half:], np.log(e[half:]), 1)[0]
+
+
+@pytest.mark.slow
+def test_time_domain_threshold_is_the_film_state_threshold(bearing):
+    """The growth rate of free runs 3 % either side of the linearised threshold (film states) changes sign, and
+    its zero (linear interpolation) lies within 1 % of it; the quasi-static threshold is higher."""
+    rotor = Rotor(mass=M_ROTOR * np.eye(2), stiffness=np.zeros((2, 2)), nodes=[0])
+    s = RotorBearingSystem(rotor, {0: bearing}, gravity=G)
+    n_film = s.stability_threshold((4000.0, 12000.0))
+    n_qs = s.stability_threshold((4000.0, 12000.0), film_states=False)
+    lo, hi = 0.97 * n_film, 1.03 * n_film
+    g_lo, g_hi = free_growth_rate(s, lo), free_growth_rate(s, hi)
+    assert g_lo < 0 < g_hi
+    n_time = lo - g_lo * (hi - lo) / (g_hi - g_lo)
+    assert n_time == pytest.approx(n_film, rel=0.01)
+    assert n_qs > 1.02 * n_film

@@ -47,7 +47,7 @@ class BlockMaps(NamedTuple):
     border: np.ndarray
 
 
-class FilmBlock:
+class BearingBlock:
     """One bearing's film in the system: its node, the film at the reference speed, its offset in the state,
     the rotor coordinates its node moves with (``support``), ``ax``, ``ay`` (node position in C_b per q~) and
     ``gx``, ``gy`` (the generalised force per unit of ``Fbar`` in the momentum rows)."""
@@ -171,7 +171,7 @@ class SystemDAE:
         off = 0
         for node, bearing in system.bearings.items():
             film = bearing.film(speed_ref_rpm)
-            self.blocks.append(FilmBlock(node, bearing, film, off, rotor.translation(node), L, w))
+            self.blocks.append(BearingBlock(node, bearing, film, off, rotor.translation(node), L, w))
             off += film.n
         self.n_film = off
         self.nq = nq = rotor.n
