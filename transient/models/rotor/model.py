@@ -92,15 +92,15 @@ def system_pattern(blocks, nq, n_total, q_mask, v_mask, phi_rows):
 
     block_ids = []
     for b in blocks:
-        pat = b.film.op.pattern.tocoo()
+        pat = sp.csc_matrix(b.film.op.pattern)
         n = b.n
-        local_pos = _positions(b.film.op.pattern)
+        row = pat.indices
+        col = np.repeat(np.arange(pat.shape[1]), np.diff(pat.indptr))
         free = b.film.op.free
-        keep = (pat.row < n) & (pat.col < n)
-        keep[keep] = free[pat.row[keep]] | (pat.row[keep] == pat.col[keep])  # a groove cell's row: u' = 0
-        lr, lc = pat.row[keep], pat.col[keep]
-        ids_cells = add(b.offset + lr, b.offset + lc)
-        src = local_pos[lr, lc]
+        keep = (row < n) & (col < n)
+        keep[keep] = free[row[keep]] | (row[keep] == col[keep])  # a groove cell's row: u' = 0
+        src = np.flatnonzero(keep)  # local CSC positions of the cell block
+        ids_cells = add(b.offset + row[src], b.offset + col[src])
         cells = np.arange(n)
         ids_coup = add(b.offset + cells[free][:, None], Q0 + b.support[None, :])
         ids_border = add(V0 + b.support[None, :], b.offset + cells[:, None])
@@ -131,26 +131,6 @@ def system_pattern(blocks, nq, n_total, q_mask, v_mask, phi_rows):
                            np.ascontiguousarray(st.pos_row_extra[3, :b.n]), np.ascontiguousarray(where[ids_border]))
     pattern = sp.csc_matrix((np.ones(m.nnz), m.indices, m.indptr), shape=m.shape)
     return pattern, tuple(where[x] for x in (kin_q, kin_v, mom_q, mom_v, mom_phi, phi_phi))
-
-
-def _positions(pattern):
-    """A dense (n, n) table of the CSC position of every stored entry of a film's local pattern (-1 elsewhere);
-    the films are small enough (n ~ 3e3: a 9e6-entry int table would not be): use a dict instead."""
-    pat = sp.csc_matrix(pattern)
-    pos = {}
-    for c in range(pat.shape[1]):
-        for p in range(pat.indptr[c], pat.indptr[c + 1]):
-            pos[(int(pat.indices[p]), c)] = p
-    return _Lookup(pos)
-
-
-class _Lookup:
-    def __init__(self, pos):
-        self.pos = pos
-
-    def __getitem__(self, rc):
-        r, c = rc
-        return np.array([self.pos[(int(a), int(b))] for a, b in zip(r, c)], dtype=np.int64)
 
 
 class SystemDAE:
