@@ -100,3 +100,18 @@ def test_time_domain_threshold_is_the_film_state_threshold(bearing):
     n_time = lo - g_lo * (hi - lo) / (g_hi - g_lo)
     assert n_time == pytest.approx(n_film, rel=0.01)
     assert n_qs > 1.02 * n_film
+
+
+def test_periodic_response_of_one_node_is_the_orbits(bearing):
+    """Shooting on the system's period map gives the single-bearing orbit's periodic response and multipliers."""
+    from transient import JournalOrbit
+
+    rotor = Rotor(mass=M_ROTOR * np.eye(2), stiffness=np.zeros((2, 2)), nodes=[0])
+    s = RotorBearingSystem(rotor, {0: bearing}, unbalance=[(0, M_ROTOR * ECC, 0.0)], gravity=G)
+    p = s.periodic_response(6000)
+    o = JournalOrbit(bearing, M_ROTOR, ECC, M_ROTOR * G, 6000).periodic_response()
+    assert p.success and p.error_estimate <= 1e-6
+    x, y = p.position(0)
+    assert np.max(np.hypot(x - o.x, y - o.y)) < 1e-5 * bearing.clearance
+    assert np.ptp(x) > 0.02 * bearing.clearance
+    assert np.allclose(np.sort_complex(p.multipliers[:2]), np.sort_complex(o.multipliers[:2]), atol=1e-2)

@@ -93,3 +93,25 @@ class UnbalanceResponse(_Nodes, StatusResult):
         """Peak amplitudes |X|, |Y| [m] of ``node``."""
         x, y = self.position(node)
         return float(abs(x)), float(abs(y))
+
+
+@result_type
+class PeriodicResponse(_Nodes, StatusResult):
+    """The settled (periodic) unbalance response over one revolution by shooting: ``t`` [s] from shaft angle 0,
+    ``displacement`` [m] (n_t, n_nodes, 2) (``position(node)``), ``multipliers`` the dominant Floquet
+    multipliers (stable inside the unit circle), ``error_estimate`` [smallest clearance] of the fixed point,
+    ``periods`` integrated, ``state`` the system's state at angle 0 (a run's ``start=(0, state)``)."""
+
+    t: np.ndarray = quantity("s", None)
+    displacement: np.ndarray = quantity("m", None)
+    multipliers: np.ndarray = None
+    error_estimate: float = quantity("-", float("nan"))
+    periods: int = 0
+    nodes: list = None
+    speed_rpm: float = quantity("rpm", 0.0)
+    state: np.ndarray = quantity("-", None, repr=False)
+
+    def amplitude(self, node) -> tuple[float, float]:
+        """Half the peak-to-peak excursion [m] of ``node`` in x and y."""
+        x, y = self.position(node)
+        return float(np.ptp(x) / 2), float(np.ptp(y) / 2)

@@ -476,6 +476,20 @@ class RotorBearingSystem:
         r.success = out.success
         return r
 
+    def periodic_response(self, speed_rpm, rtol=1e-6, tol=None, modes=2, outputs_per_revolution=64, max_iter=25):
+        """The settled unbalance orbit at ``speed_rpm`` by shooting (Newton-Picard on the ``modes`` least damped
+        modes of the linearisation with the film states, :mod:`~transient.models.rotor.periodic`): ``p.position(node)``
+        over one revolution [m], ``p.multipliers``. ``tol`` [smallest clearance] on the rotor's coordinates and
+        velocities (default ``rtol``)."""
+        from transient.models.rotor.periodic import periodic_response
+
+        speed = check_speed(speed_rpm)
+        rtol = check_range("rtol", rtol, "-", 1e-12, 1e-2)
+        tol = rtol if tol is None else check_positive("tol", tol, "-")
+        modes = check_int("modes", modes, "-", 1, 20)
+        opr = check_int("outputs_per_revolution", outputs_per_revolution, "1/rev", 4, 100000)
+        return periodic_response(self, speed, rtol, tol, modes, opr, check_int("max_iter", max_iter, "-", 1, 1000))
+
     def parameters(self) -> dict:
         """Every parameter of the system (SI), e.g. to key a checkpoint (the rotor's matrices as a digest)."""
         r = self.rotor
