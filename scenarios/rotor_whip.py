@@ -52,10 +52,11 @@ def build(grid):
     return RotorBearingSystem(rotor, {a: bearing, b: bearing}, unbalance=[(disk, UNBALANCE, 0.0)]), a, disk
 
 
-def ramp(n0, n1, revolutions):
-    """Speed linear in time from n0 to n1 [rpm] over the time in which the shaft turns ``revolutions`` times."""
+def ramp(n0, n1, revolutions, t0=0.0):
+    """Speed linear in time from n0 to n1 [rpm] from t0 [s] over the time in which the shaft turns ``revolutions``
+    times."""
     duration = 120.0 * revolutions / (n0 + n1)
-    return lambda t: n0 + (n1 - n0) * min(max(t, 0.0), duration) / duration
+    return lambda t: n0 + (n1 - n0) * min(max(t - t0, 0.0), duration) / duration
 
 
 def main(argv=None):
@@ -94,21 +95,23 @@ def main(argv=None):
         if a.fresh and ckpt.exists():
             ckpt.unlink()
         log(f"[rotor] {name.replace('_', '-')} {n0:.0f} -> {n1:.0f} rpm over {revs:g} revolutions; checkpoint {ckpt}")
-        r = s.run(revs, ramp(n0, n1, revs), rtol=1e-5, start=runs.get(start), checkpoint=ckpt, resume=True,
+        t_start = runs[start].final_time if start else 0.0
+        r = s.run(revs, ramp(n0, n1, revs, t_start), rtol=1e-5, start=runs.get(start), checkpoint=ckpt, resume=True,
                   chunk_revolutions=10.0, outputs_per_revolution=OPR, progress=True, touch_gap=1e-3,
                   reference_speed_rpm=2.0 * th)
         r.save(out / f"{name}.npz")
         runs[name] = r
         ns, amp = synchronous_amplitude(r.t, r.position(disk)[0], r.speed_rpm, 2.0)
-        sp, f, spec = waterfall(r.t, r.position(disk)[0], r.speed_rpm, 4.0)
+        window = max(4.0, revs / 25.0)  # revolutions per spectrum: 25 windows over the run
+        sp, f, spec = waterfall(r.t, r.position(disk)[0], r.speed_rpm, window)
         peak = f[np.argmax(spec[:, 1:], axis=1) + 1]
         rec.put(name, dict(message=r.message, steps=r.stats.n_steps, wall_s=r.stats.wall_time, speeds_rpm=ns,
-                           disk_1x_m=amp, window_speeds_rpm=sp, dominant_frequency_hz=peak,
+                           disk_1x_m=amp, window_speeds_rpm=sp, window_revolutions=window, dominant_frequency_hz=peak,
                            dominant_order=peak * 60.0 / sp))
         log(f"  {r.message}; {r.stats.n_steps / revs:.0f} steps per revolution; dominant order of the disk's x "
             f"per window: {np.round(peak * 60.0 / sp, 2).tolist()}")
         title = f"{name.replace('_', '-')}: spectrum of the disk's x (cascade)"
-        log(f"written: {save(plots.waterfall(r, disk, title), out / f'waterfall_{name}.png')}")
+        log(f"written: {save(plots.waterfall(r, disk, title, window), out / f'waterfall_{name}.png')}")
     r = runs["run_up"]
     pts = {f"{k.replace('_', '-')} (transient)": synchronous_amplitude(v.t, v.position(disk)[0], v.speed_rpm, 2.0)
            for k, v in runs.items()}

@@ -52,6 +52,8 @@ def waterfall(result, node, title, window_revolutions=4.0, max_order=1.5):
     spectrum of x [um] per window against frequency [Hz] and speed [rpm], with the 1x, 0.5x lines."""
     x = result.position(node)[0]
     speeds, freqs, amp = cascade(result.t, x, result.speed_rpm, window_revolutions)
+    order = np.argsort(speeds)  # a coast-down's windows come in falling speed
+    speeds, amp = speeds[order], amp[order]
     fig, ax = figure(size=(7.5, 4.8))
     keep = freqs <= max_order * speeds.max() / 60.0
     a = np.maximum(amp[:, keep] * 1e6, 1e-4)

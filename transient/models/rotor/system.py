@@ -381,7 +381,9 @@ class RotorBearingSystem:
         method : ``"ida"`` (SUNDIALS IDA, sparse SuperLU on the block-arrow pattern).
         rtol, atol : tolerances (atol on the dimensionless states: p/p0, journal position in clearances).
         start : None (the static equilibrium at the start speed, at rest), a previous :class:`RotorRunResult`
-            (continued from its final state and time) or ``(t [s], state)``.
+            (continued from its final state and time, at its reference speed) or ``(t [s], state)`` (a state at this
+            run's reference speed: e.g. ``linear_start``, ``equilibrium(...).state`` or a periodic response's at the
+            run's constant speed).
         checkpoint : path of an ``.npz`` rewritten after every chunk (``resume=True`` continues from it).
         outputs_per_revolution : outputs per revolution at the reference speed.
         touch_gap : > 0 stops the run when a journal reaches e/C = 1 - touch_gap.
@@ -403,8 +405,10 @@ class RotorBearingSystem:
         if start is not None:
             if isinstance(start, RotorRunResult):
                 t0, y = float(start.final_time), np.array(start.final_state, dtype=float)
-                if reference_speed_rpm is None:
-                    reference_speed_rpm = start.reference_speed_rpm
+                if reference_speed_rpm is not None and reference_speed_rpm != start.reference_speed_rpm:
+                    raise ValueError(f"reference_speed_rpm = {reference_speed_rpm!r} [rpm]; allowed: the start's "
+                                     f"{start.reference_speed_rpm!r} (its film state is in that speed's pressure unit)")
+                reference_speed_rpm = start.reference_speed_rpm
             else:
                 t0, y = float(start[0]), np.array(start[1], dtype=float)
         speed_fn, t_end, n_max = _speed_schedule(speed_rpm, t0, revolutions)
