@@ -178,3 +178,12 @@ def test_rigid_and_jeffcott_builders():
     j = Rotor.jeffcott(1e6, 8.0, 1.0)
     assert j.total_mass == pytest.approx(10.0)
     assert np.allclose(j.stiffness @ np.tile([1.0, 0.0], 3), 0.0)  # a free rigid translation
+
+
+def test_touch_event_stops_the_run_at_the_bearing(bearing):
+    rotor = Rotor(mass=M_ROTOR * np.eye(2), stiffness=np.zeros((2, 2)), nodes=[0])
+    s = RotorBearingSystem(rotor, {0: bearing}, unbalance=[(0, M_ROTOR * 0.6 * bearing.clearance, 0.0)], gravity=G)
+    r = s.run(3, 6000, touch_gap=0.4, outputs_per_revolution=32)
+    assert r.touched_at is not None and r.t[-1] < 3 * 0.01
+    assert "touches its bearing" in r.message
+    assert r.eccentricity_ratio(0).max() <= 0.6 + 1e-3
