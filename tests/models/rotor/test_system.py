@@ -153,6 +153,8 @@ def test_bad_input_names_the_parameter(bearing):
         RotorBearingSystem(rotor, {0: bearing}, unbalance=[(5, 1e-4, 0.0)])
     with pytest.raises(ValueError, match=r"unbalance\[0\] m e = -1 \[kg m\]"):
         RotorBearingSystem(rotor, {0: bearing}, unbalance=[(0, -1, 0.0)])
+    with pytest.raises(ValueError, match=r"cavitation = 'reynolds'"):
+        RotorBearingSystem(rotor, {0: JournalBearing(**BEARING, grid=(16, 4), cavitation="reynolds")})
     with pytest.raises(ValueError, match=r"gravity = .* \[m/s\^2\]"):
         RotorBearingSystem(rotor, {0: bearing}, gravity=(1.0, 2.0, 3.0))
     soft = Rotor(mass=M_ROTOR * np.eye(4), stiffness=1e3 * np.array([[1, 0, -1, 0], [0, 1, 0, -1], [-1, 0, 1, 0],

@@ -70,6 +70,11 @@ class RotorBearingSystem:
                 raise TypeError(f"bearings[{node!r}] must be a JournalBearing, got {type(b).__name__}")
             if not np.any(rotor.translation(node)):
                 raise ValueError(f"bearings: node {node!r} does not move in this rotor's coordinates")
+        for node, b in bearings.items():
+            if b.cavitation != "elrod":
+                raise ValueError(f"bearings[{node!r}] cavitation = {b.cavitation!r}; allowed: \"elrod\" (the rotor "
+                                 "system couples the mass-conserving films; the Reynolds-condition film serves the "
+                                 "single bearing's steady and linear analyses)")
         self.bearings = dict(bearings)
         self.unbalance = []
         for k, item in enumerate(unbalance):
@@ -396,11 +401,6 @@ class RotorBearingSystem:
         atol = check_range("atol", atol, "-", 1e-30, 1.0)
         opr = check_int("outputs_per_revolution", outputs_per_revolution, "1/rev", 1, 1_000_000)
         touch_gap = check_range("touch_gap", touch_gap, "-", 0.0, 1.0, high_open=True)
-        for b in self.bearings.values():
-            if b.cavitation != "elrod":
-                raise ValueError(f"bearing cavitation = {b.cavitation!r}; allowed for time runs: \"elrod\" (the "
-                                 "mass-conserving film; the Reynolds-condition film serves the steady and linear "
-                                 "analyses)")
         t0, y = 0.0, None
         if start is not None:
             if isinstance(start, RotorRunResult):
