@@ -293,11 +293,14 @@ def critical_speeds(mass, damping, gyroscopic, stiffness, bearings_of_speed: Cal
     samples = check_count("samples", samples, 2)
     grid = np.linspace(lo, hi, samples)
 
-    def f_k(w, k):
+    def forward_minus_speed(w):
         f = _forward(mass, damping, gyroscopic, stiffness, bearings_of_speed, w, n_modes, dofs, frequency, zeta_max)
-        return (f[k] if k < f.size else np.inf) - w
+        return np.concatenate([f, np.full(n_modes - f.size, np.inf)]) - w
 
-    table = np.array([[f_k(w, k) for k in range(n_modes)] for w in grid])
+    def f_k(w, k):
+        return forward_minus_speed(w)[k]
+
+    table = np.array([forward_minus_speed(w) for w in grid])
     out = []
     for k in range(n_modes):
         g = table[:, k]
