@@ -132,3 +132,30 @@ def test_bad_input_names_the_parameter():
         lin.eigenvalues(M, None, None, np.zeros((2, 2)), bearings, -1.0)
     with pytest.raises(ValueError, match=r"forces \[N\] must be 2"):
         lin.unbalance_response(M, None, None, np.zeros((2, 2)), bearings, np.zeros(3), 100.0)
+
+
+@pytest.mark.slow
+def test_example_rotor_on_two_film_bearings_has_its_first_critical_below_its_whirl_onset():
+    """The built-in example is sized for a run-up through the first critical speed to twice the whirl onset:
+    on two of Rho & Kim's bearings (quasi-static K/C, 61 x 11) both fall at a few thousand rpm, the critical
+    below the onset and the onset below twice the critical (so that whip can lock in on the way up).
+    Measured: 2443 and 4585 rpm (151 x 21: 2452 and 4618 rpm)."""
+    from transient.models.journal.bearing import JournalBearing
+    from transient.models.rotor.shaft import example_matrices
+    from transient.params.rho_kim import BEARING
+
+    ex = example_matrices()
+    M, K, G = ex["mass"], ex["stiffness"], ex["gyroscopic"]
+    load = 9.81 * M[0::4, 0::4].sum() / len(ex["bearing_nodes"])
+    bearing = JournalBearing(**BEARING, grid=(61, 11))
+
+    def bearings_of_speed(w):
+        Kb, Cb = bearing.coefficients(load, max(w * 30 / math.pi, 50.0))
+        return [(4 * n, 4 * n + 1, Kb, Cb) for n in ex["bearing_nodes"]]
+
+    rpm = 30 / math.pi
+    critical = lin.critical_speeds(M, None, G, K, bearings_of_speed, (100.0, 600.0), 2, dofs=ex["dofs"], samples=11,
+                                   max_damping_ratio=0.3) * rpm
+    onset = lin.quasi_static_threshold(M, None, G, K, bearings_of_speed, (100.0, 1500.0), samples=15) * rpm
+    assert critical.size == 1 and 1500 < critical[0] < 4000
+    assert critical[0] < onset < 2 * critical[0] and onset < 8000
