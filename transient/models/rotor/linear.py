@@ -163,11 +163,40 @@ def eigenvalues(mass, damping, gyroscopic, stiffness, bearings, omega) -> np.nda
 
 def whirl_direction(vector, pairs) -> float:
     """+1 for a purely forward circular whirl, -1 backward: ``2 sum Im(X conj(Y)) / sum(|X|^2 + |Y|^2)`` over
-    the (x, y) dof pairs ``pairs``."""
+    the dof pairs ``pairs`` ((x, y) and, where the model has them, (tx, ty): with tx = -dy/dz, ty = dx/dz a
+    forward whirl of the centreline is a forward whirl of (tx, ty) in the same order)."""
     X = vector[[p[0] for p in pairs]]
     Y = vector[[p[1] for p in pairs]]
     den = np.sum(np.abs(X) ** 2 + np.abs(Y) ** 2)
     return float(2.0 * np.sum(np.imag(X * np.conj(Y))) / den) if den > 0 else 0.0
+
+
+def _whirls(lam, V, pairs):
+    """Whirl directions of the modes ``V[:, k]``. A degenerate eigenvalue (an isotropic rotor at rest: forward
+    and backward whirl at one frequency) has any mix of them as eigenvectors; its cluster's vectors are
+    replaced by the combinations that diagonalise the whirl form ``2 Im(X conj(Y))`` against
+    ``|X|^2 + |Y|^2``, which whirl purely forward and backward."""
+    n = V.shape[0]
+    H = np.zeros((n, n), dtype=complex)
+    N = np.zeros((n, n))
+    for ia, ib in pairs:
+        H[ia, ib] += 1j
+        H[ib, ia] -= 1j
+        N[ia, ia] += 1.0
+        N[ib, ib] += 1.0
+    out = np.array([whirl_direction(V[:, k], pairs) for k in range(lam.size)])
+    done = np.zeros(lam.size, dtype=bool)
+    for k in range(lam.size):
+        if done[k]:
+            continue
+        cluster = np.flatnonzero(np.abs(lam - lam[k]) <= 1e-8 * max(abs(lam[k]), 1e-300))
+        done[cluster] = True
+        if cluster.size > 1:
+            B = V[:, cluster]
+            nb = B.conj().T @ N @ B
+            if np.linalg.cond(nb) < 1e8:
+                out[cluster] = sl.eigh(B.conj().T @ H @ B, nb, eigvals_only=True)
+    return out
 
 
 class Campbell(NamedTuple):
@@ -182,31 +211,40 @@ class Campbell(NamedTuple):
 
 
 def _pairs(n, bearings, dofs):
+    """The dof pairs a whirl is measured on: every node's (x, y) and (tx, ty) given ``dofs``, else the bearings'."""
     if dofs is not None:
         nd = len(dofs)
         if n % nd or "x" not in dofs or "y" not in dofs:
             raise ValueError(f"dofs = {short_repr(dofs)} does not tile {n} degrees of freedom with x and y per node")
-        ix, iy = dofs.index("x"), dofs.index("y")
-        return [(k * nd + ix, k * nd + iy) for k in range(n // nd)]
+        local = [(dofs.index("x"), dofs.index("y"))]
+        if "tx" in dofs and "ty" in dofs:
+            local.append((dofs.index("tx"), dofs.index("ty")))
+        return [(k * nd + a, k * nd + b) for k in range(n // nd) for a, b in local]
     pairs = [(b[0], b[1]) for b in bearings]
     if not pairs:
         raise ValueError("whirl directions need the (x, y) dofs: give dofs=(...) per node or at least one bearing")
     return pairs
 
 
+def _modes(mass, damping, gyroscopic, stiffness, bearings, omega, dofs):
+    """The underdamped modes (eigenvalues with positive imaginary part, ascending) and their whirl directions."""
+    lam, V = _eig(mass, damping, gyroscopic, stiffness, bearings, omega, vectors=True)
+    pairs = _pairs(V.shape[0], check_bearings(bearings, V.shape[0]), dofs)
+    up = np.flatnonzero(lam.imag > 1e-9 * np.maximum(np.abs(lam), 1e-300))
+    return lam[up], _whirls(lam[up], V[:, up], pairs)
+
+
 def modes_at(mass, damping, gyroscopic, stiffness, bearings, omega, n_modes, dofs=None):
     """(frequencies [rad/s], damping ratios, log decrements, whirl) of the ``n_modes`` lowest underdamped modes
     (eigenvalues with positive imaginary part) at shaft speed ``omega`` [rad/s], NaN-padded."""
     n_modes = check_count("n_modes", n_modes)
-    lam, V = _eig(mass, damping, gyroscopic, stiffness, bearings, omega, vectors=True)
-    pairs = _pairs(V.shape[0], check_bearings(bearings, V.shape[0]), dofs)
-    keep = np.flatnonzero(lam.imag > 1e-9 * np.maximum(np.abs(lam), 1e-300))[:n_modes]
+    lam, whirl = _modes(mass, damping, gyroscopic, stiffness, bearings, omega, dofs)
+    lk, wk = lam[:n_modes], whirl[:n_modes]
     out = np.full((4, n_modes), np.nan)
-    lk = lam[keep]
-    out[0, : keep.size] = lk.imag
-    out[1, : keep.size] = -lk.real / np.abs(lk)
-    out[2, : keep.size] = -2 * np.pi * lk.real / lk.imag
-    out[3, : keep.size] = [whirl_direction(V[:, k], pairs) for k in keep]
+    out[0, : lk.size] = lk.imag
+    out[1, : lk.size] = -lk.real / np.abs(lk)
+    out[2, : lk.size] = -2 * np.pi * lk.real / lk.imag
+    out[3, : lk.size] = wk
     return out
 
 
@@ -230,41 +268,48 @@ def campbell(mass, damping, gyroscopic, stiffness, bearings_of_speed: Callable, 
     return Campbell(s, rows[:, 0], rows[:, 1], rows[:, 2], rows[:, 3])
 
 
-def _forward(mass, damping, gyroscopic, stiffness, bearings_of_speed, w, n_modes, dofs, frequency):
-    """The forward-whirl natural frequencies [rad/s] at speed ``w``, ascending."""
-    lam, V = _eig(mass, damping, gyroscopic, stiffness, bearings_of_speed(w), w, vectors=True)
-    pairs = _pairs(V.shape[0], check_bearings(bearings_of_speed(w), V.shape[0]), dofs)
-    up = np.flatnonzero(lam.imag > 1e-9 * np.maximum(np.abs(lam), 1e-300))
-    fw = [k for k in up if whirl_direction(V[:, k], pairs) > 0]
-    f = np.abs(lam[fw]) if frequency == "undamped" else lam[fw].imag
+def _forward(mass, damping, gyroscopic, stiffness, bearings_of_speed, w, n_modes, dofs, frequency, zeta_max):
+    """The forward-whirl natural frequencies [rad/s] at speed ``w`` of modes with damping ratio <= zeta_max,
+    ascending."""
+    lam, whirl = _modes(mass, damping, gyroscopic, stiffness, bearings_of_speed(w), w, dofs)
+    lam = lam[(whirl > 0) & (-lam.real <= zeta_max * np.abs(lam))]
+    f = np.abs(lam) if frequency == "undamped" else lam.imag
     return np.sort(f)[:n_modes]
 
 
 def critical_speeds(mass, damping, gyroscopic, stiffness, bearings_of_speed: Callable, speed_range, n_modes=4, *,
-                    dofs=None, frequency="damped", samples=60) -> np.ndarray:
+                    dofs=None, frequency="damped", max_damping_ratio=1.0, samples=60) -> np.ndarray:
     """Speeds [rad/s] in ``speed_range`` = (low, high) where the k-th forward-whirl natural frequency (k <
-    ``n_modes``; ``frequency="damped"``: Im(lambda), ``"undamped"``: |lambda|) crosses the 1x line, by sampling
-    ``samples`` speeds and brentq on each sign change of ``f_k(Omega) - Omega``; ascending."""
+    ``n_modes``; ``frequency="damped"``: Im(lambda), ``"undamped"``: |lambda|) of the modes with damping ratio
+    <= ``max_damping_ratio`` crosses the 1x line, by sampling ``samples`` speeds and brentq on each sign change of
+    ``f_k(Omega) - Omega``; ascending. A sign change where the k-th mode changes (modes entering or leaving the
+    set: a jump, not a crossing) is not reported."""
     lo, hi = (_speed("speed_range[0]", speed_range[0]), _speed("speed_range[1]", speed_range[1]))
     if not hi > lo:
         raise ValueError(f"speed_range = {short_repr(speed_range)} [rad/s] must be (low, high) with high > low")
     if frequency not in ("damped", "undamped"):
         raise ValueError(f"frequency must be one of ('damped', 'undamped'), got frequency = {frequency!r}")
+    zeta_max = check_range("max_damping_ratio", max_damping_ratio, "-", 0.0, 1.0, low_open=True)
     samples = check_count("samples", samples, 2)
     grid = np.linspace(lo, hi, samples)
 
-    def f_k(w, k):
-        f = _forward(mass, damping, gyroscopic, stiffness, bearings_of_speed, w, n_modes, dofs, frequency)
-        return (f[k] if k < f.size else np.inf) - w
+    def forward_minus_speed(w):
+        f = _forward(mass, damping, gyroscopic, stiffness, bearings_of_speed, w, n_modes, dofs, frequency, zeta_max)
+        return np.concatenate([f, np.full(n_modes - f.size, np.inf)]) - w
 
-    table = np.array([[f_k(w, k) for k in range(n_modes)] for w in grid])
+    def f_k(w, k):
+        return forward_minus_speed(w)[k]
+
+    table = np.array([forward_minus_speed(w) for w in grid])
     out = []
     for k in range(n_modes):
         g = table[:, k]
         for j in range(samples - 1):
             if np.isfinite(g[j]) and np.isfinite(g[j + 1]) and g[j] * g[j + 1] <= 0 and g[j] != g[j + 1]:
-                out.append(grid[j] if g[j] == 0 else brentq(f_k, grid[j], grid[j + 1], args=(k,), xtol=1e-10,
-                                                              rtol=1e-12))
+                root = grid[j] if g[j] == 0 else brentq(f_k, grid[j], grid[j + 1], args=(k,), xtol=1e-10,
+                                                         rtol=1e-12)
+                if abs(f_k(root, k)) <= 1e-6 * max(root, 1.0):
+                    out.append(root)
     return np.array(sorted(set(out)))
 
 
