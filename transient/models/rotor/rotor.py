@@ -173,26 +173,33 @@ class Rotor:
         return r
 
     @classmethod
-    def from_ross(cls, ross_rotor, modes=None) -> "Rotor":
-        """A rotor from a ROSS ``Rotor`` (optional extra ``transient[ross]``): its mass, stiffness, damping (shaft
-        only: bearings are added by :class:`~transient.models.rotor.system.RotorBearingSystem`) and gyroscopic
-        matrices, reduced to ``modes`` modes plus the static correction at its bearing nodes when given."""
+    def from_ross(cls, ross_rotor, modes=None, bearing_nodes=None) -> "Rotor":
+        """A rotor from a ROSS ``Rotor`` (optional extra ``transient[ross]``): its shaft and disks' mass, stiffness,
+        damping and gyroscopic matrices (:func:`~transient.models.rotor.ross_import.matrices_from_ross`; ROSS's own
+        bearings are left out: :class:`~transient.models.rotor.system.RotorBearingSystem` adds the films). With
+        ``modes``: reduced to that many fixed-interface modes plus the static correction at the bearing nodes
+        (:func:`~transient.models.rotor.modal.reduce`, Craig-Bampton); ``bearing_nodes`` default: the nodes of
+        ROSS's bearing elements. ``rotor.bearing_nodes`` holds them."""
         from transient.models.rotor.ross_import import matrices_from_ross
 
         m = matrices_from_ross(ross_rotor)
         full = cls(mass=m["mass"], stiffness=m["stiffness"], damping=m.get("damping"),
                    gyroscopic=m.get("gyroscopic"), nodes=m["nodes"], dofs=m["dofs"])
-        keep_nodes = tuple(m.get("bearing_nodes", ()))
-        full.bearing_nodes = keep_nodes
+        if bearing_nodes is None:
+            bearing_nodes = sorted({int(b.n) for b in getattr(ross_rotor, "bearing_elements", [])})
+        full.bearing_nodes = tuple(bearing_nodes)
         if modes is None:
             return full
         from transient.models.rotor.modal import reduce
 
-        modes = check_int("modes", modes, "-", 1, full.n)
-        keep = [full.dof(nd, d) for nd in keep_nodes for d in ("x", "y")]
+        if not full.bearing_nodes:
+            raise ValueError("bearing_nodes = () [-]; allowed: the nodes the bearings will sit at (a reduced rotor "
+                             "keeps their x and y exactly), e.g. from ROSS's bearing elements")
+        modes = check_int("modes", modes, "-", 0, full.n)
+        keep = [full.dof(nd, d) for nd in full.bearing_nodes for d in ("x", "y")]
         red = reduce(full.mass, full.stiffness, full.damping, full.gyroscopic, keep, modes)
         B = np.asarray(red.basis)
         r = cls(mass=red.mass, stiffness=red.stiffness, damping=red.damping, gyroscopic=red.gyroscopic,
                 nodes=full.nodes, dofs=full.dofs, basis=B, gravity_load=full.gravity_load @ B)
-        r.bearing_nodes = keep_nodes
+        r.bearing_nodes = full.bearing_nodes
         return r

@@ -269,19 +269,19 @@ class RotorBearingSystem:
                 for k, node in enumerate(self.bearing_nodes)}
 
     def _linear_matrices(self, coefficients):
-        """(M, C, G, K, bearings) for :mod:`transient.models.rotor.linear`: a nodal rotor hands its bearing dofs
-        as indices, a reduced one gets the bearings projected on its coordinates (``bearings = []``)."""
+        """(M, C, G, K, bearings) for :mod:`transient.models.rotor.linear`: each bearing on the rotor coordinates
+        that are its node's x and y (a nodal rotor's dofs, a Craig-Bampton rotor's kept boundary coordinates)."""
         r = self.rotor
-        K, C = r.stiffness.copy(), r.damping.copy()
         bearings = []
         for node, (kb, cb) in coefficients.items():
-            if r.reduced:
-                T = r.translation(node)
-                K += T.T @ kb @ T
-                C += T.T @ cb @ T
-            else:
-                bearings.append((r.dof(node, "x"), r.dof(node, "y"), kb, cb))
-        return r.mass, C, r.gyroscopic, K, bearings
+            T = r.translation(node)
+            unit = [np.flatnonzero(row) for row in T]
+            if not all(u.size == 1 and row[u[0]] == 1.0 for u, row in zip(unit, T)):
+                raise ValueError(f"bearing node {node}: its x and y are not coordinates of this reduced rotor; "
+                                 "allowed: a nodal rotor or one reduced keeping the bearing nodes' x and y "
+                                 "(Rotor.from_ross(..., modes=) does)")
+            bearings.append((int(unit[0][0]), int(unit[1][0]), kb, cb))
+        return r.mass, r.damping, r.gyroscopic, r.stiffness, bearings
 
     def unbalance_response(self, speed_rpm, film_states=False) -> UnbalanceResponse:
         """The linear unbalance response at ``speed_rpm``: complex amplitudes per node (``position(node)``,
