@@ -117,3 +117,14 @@ def test_periodic_response_of_one_node_is_the_orbits(bearing):
     assert np.max(np.hypot(x - o.x, y - o.y)) < 1e-5 * bearing.clearance
     assert np.ptp(x) > 0.02 * bearing.clearance
     assert np.allclose(np.sort_complex(p.multipliers[:2]), np.sort_complex(o.multipliers[:2]), atol=1e-2)
+
+
+def test_steady_and_linear_results_save_and_load(bearing, tmp_path):
+    from transient.results import load_result
+
+    rotor = Rotor(mass=M_ROTOR * np.eye(2), stiffness=np.zeros((2, 2)), nodes=[0])
+    s = RotorBearingSystem(rotor, {0: bearing}, unbalance=[(0, M_ROTOR * ECC, 0.0)], gravity=G)
+    for r in (s.equilibrium(6000), s.unbalance_response(6000)):
+        back = load_result(r.save(tmp_path / type(r).__name__))
+        assert type(back) is type(r) and back.units()["displacement"] == "m"
+        assert np.array_equal(np.asarray(back.position(0)), np.asarray(r.position(0)))
