@@ -16,6 +16,7 @@ SCENARIOS = Path(__file__).resolve().parents[1] / "scenarios"
 QUICK_ARGS = {p.stem: ["--quick"] for p in sorted(SCENARIOS.glob("*.py"))}
 QUICK_ARGS["journal_orbit"] = ["--quick", "--grid", "24", "4"]
 QUICK_ARGS["journal_long_run"] = ["--quick"]
+QUICK_ARGS["rotor_whip"] = ["--quick", "--revolutions", "6"]
 
 
 @pytest.fixture
@@ -108,3 +109,22 @@ def test_plots_reach_their_figure_modules_and_save_says_it_creates_folders(tmp_p
     assert path.exists() and "created folder" in capsys.readouterr().err
     with pytest.raises(FileNotFoundError, match="missing"):
         tp.save(fig, tmp_path / "missing" / "f.png", make_folders=False)
+
+
+def test_rotor_figures_name_units():
+    from transient.models.rotor.results import RotorRunResult
+    from transient.plots import rotor
+
+    t = np.linspace(0.0, 1.0, 4001)
+    n = 1200.0 + 1200.0 * t
+    phi = np.concatenate([[0.0], np.cumsum(0.5 * (n[1:] + n[:-1]) * np.pi / 30.0 * np.diff(t))])
+    d = np.zeros((t.size, 2, 2))
+    d[:, :, 0] = 1e-6 * np.cos(phi)[:, None]
+    d[:, :, 1] = 1e-6 * np.sin(phi)[:, None]
+    r = RotorRunResult(t=t, displacement=d, speed_rpm=n, nodes=[0, 1], bearing_nodes=[0])
+    lam = [np.array([-10 + 2j * np.pi * 30, -5 + 2j * np.pi * 50]) for _ in range(3)]
+    figs = [rotor.campbell([1000.0, 2000.0, 3000.0], lam, {"threshold": 2500.0}),
+            rotor.response_curve({"linear": ([1000, 2000], [1e-6, 2e-6])}, {"run": ([1500], [1.5e-6])}, "disk"),
+            rotor.waterfall(r, 1, "cascade", window_revolutions=2.0), rotor.orbits(r, {0: "bearing", 1: "disk"}, [1800.0])]
+    for fig in figs:
+        assert figure_problems(fig) == []

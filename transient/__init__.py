@@ -14,6 +14,9 @@ Public API (re-exported here):
 * layered boundary films and shear-thinning bulk (Jang): :class:`BoundaryLayers` (``JournalBearing(...,
   layers=)``), :class:`Gecim`, :class:`Newtonian`, :class:`LayeredFilm` (the pointwise flow law)
 * thrust ball bearing starvation (Jeong et al.): :class:`ThrustBallBearing`
+* rotors on journal bearings: :class:`Rotor` (from matrices, ``Rotor.example()``, ``Rotor.from_ross``),
+  :class:`RotorBearingSystem` (equilibrium, time runs with a transient film per bearing, linear unbalance
+  response, stability threshold)
 * EHL of a tilted tapered roller (Park): :class:`LineContact`, :class:`TaperedRoller`, :class:`RollerContact`
 * rough surfaces and asperity contact (Lee & Rhim): :class:`RoughSurface`, :func:`greenwood_tripp`,
   :class:`AsperityContact`, :class:`DiscreteDensity`, :func:`steel_asperity_contact`,
@@ -36,6 +39,7 @@ from transient.models.ball import ThrustBallBearing
 from transient.models.journal import CircumferentialGroove, Groove, JournalBearing, JournalOrbit, OilHole, stability_onset
 from transient.models.pad import ThrustPad
 from transient.models.roller import LineContact, RollerContact, TaperedRoller
+from transient.models.rotor import Rotor, RotorBearingSystem
 from transient.physics.asperity import AsperityContact, DiscreteDensity, greenwood_tripp, steel_asperity_contact
 from transient.physics.flow_factors import contact_factor, pressure_flow_factors, shear_flow_factor
 from transient.physics.layered import BoundaryLayers, Gecim, LayeredFilm, Newtonian
@@ -48,7 +52,7 @@ from transient.surfaces.roughness import RoughSurface
 __all__ = [
     "AsperityContact", "BoundaryLayers", "CircumferentialGroove", "DiscreteDensity", "Gecim", "Groove", "Integration",
     "LayeredFilm", "LongRun", "Newtonian", "JournalBearing", "JournalOrbit", "LineContact", "OilHole", "Problem",
-    "Recording", "Result", "RollerContact", "TaperedRoller",
+    "Recording", "Result", "RollerContact", "Rotor", "RotorBearingSystem", "TaperedRoller",
     "RoughSurface", "Solution", "Stats", "ThrustBallBearing", "ThrustPad", "a_weighting", "bearing_noise", "contact_factor",
     "greenwood_tripp", "load_result", "pressure_flow_factors", "stability_onset", "shear_flow_factor", "solve", "steel_asperity_contact",
 ]

@@ -1,0 +1,127 @@
+"""Oil whirl and whip of a flexible rotor on two plain journal bearings: a run-up through its first critical
+speed to twice the whirl onset, and the coast-down back.
+
+    transient run scenarios/rotor_whip.py [--quick] [--out DIR] [--grid 151 21] [--revolutions 400] [--fresh]
+
+The built-in flexible rotor (``Rotor.example()``: an 80 mm steel shaft of 1.2 m with a 400 mm disk at mid-span,
+Timoshenko elements; stiffness-proportional structural damping 1e-5 s) on two bearings of Rho & Kim ("Noise
+estimation of oil lubricated journal bearings": D = 80 mm, L/D = 0.3, C = 80 um) at its end nodes, an unbalance
+at the disk.
+
+1. Static equilibrium; the whirl threshold of the linearised system with the films' own states and of the
+   quasi-static bearing coefficients (Lund); the Campbell diagram (bearings as K, C).
+2. The linear unbalance response against the speed, both ways.
+3. A run-up from 0.3x to 2x the threshold (linear in time), then the coast-down back, each over
+   ``--revolutions`` shaft revolutions, checkpointed every 10 (the same command resumes; --fresh starts over).
+   Waterfalls of the disk's x at every speed show the 1x line, the whirl near 0.5x above the onset and its
+   lock-in at the first critical frequency (whip); orbits at a bearing and at mid-span; the run's 1x amplitude
+   beside the linear curves (a run-up is transient: its 1x amplitude is not a settled response).
+
+Writes DIR/campbell.png, response.png, waterfall_run_up.png, waterfall_coast_down.png, orbits.png, the runs
+DIR/run_up.npz, DIR/coast_down.npz (transient.load_result) and every number in DIR/rotor_whip.json.
+A ROSS rotor (``Rotor.from_ross``) runs the same way; this script uses the built-in one.
+"""
+
+from __future__ import annotations
+
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+
+from transient import JournalBearing, Rotor, RotorBearingSystem
+from transient.analysis.rotor import synchronous_amplitude, waterfall
+from transient.params import rho_kim
+from transient.plots import rotor as plots, save
+from transient.study.scenario import JsonRecord, log, parser
+
+OUT = "rotor_whip"
+STRUCTURAL_DAMPING = 1e-5  # [s]: C = beta K damps the shaft's high bending modes (the stiff part of the system)
+UNBALANCE = 1e-4  # [kg m] at the disk
+OPR = 40  # outputs per revolution
+
+
+def build(grid):
+    ex = Rotor.example()
+    rotor = Rotor(mass=ex.mass, stiffness=ex.stiffness, damping=STRUCTURAL_DAMPING * ex.stiffness,
+                  gyroscopic=ex.gyroscopic, nodes=ex.nodes, dofs=ex.dofs)
+    bearing = JournalBearing(**rho_kim.BEARING, grid=grid)
+    a, b = ex.bearing_nodes
+    disk = ex.disk_nodes[0]
+    return RotorBearingSystem(rotor, {a: bearing, b: bearing}, unbalance=[(disk, UNBALANCE, 0.0)]), a, disk
+
+
+def ramp(n0, n1, revolutions, t0=0.0):
+    """Speed linear in time from n0 to n1 [rpm] from t0 [s] over the time in which the shaft turns ``revolutions``
+    times."""
+    duration = 120.0 * revolutions / (n0 + n1)
+    return lambda t: n0 + (n1 - n0) * min(max(t - t0, 0.0), duration) / duration
+
+
+def main(argv=None):
+    ap = parser(__doc__, OUT)
+    ap.add_argument("--grid", type=int, nargs=2, metavar=("NT", "NZ"), help="film grid (default 151 21; quick 32 6)")
+    ap.add_argument("--revolutions", type=float, help="revolutions of the run-up and of the coast-down (400; quick 30)")
+    ap.add_argument("--fresh", action="store_true", help="ignore existing checkpoints")
+    a = ap.parse_args(argv)
+    grid = tuple(a.grid) if a.grid else ((32, 6) if a.quick else (151, 21))
+    revs = a.revolutions or (30.0 if a.quick else 400.0)
+    out = Path(a.out)
+    out.mkdir(parents=True, exist_ok=True)
+    rec = JsonRecord(out / "rotor_whip.json", dict(grid=grid, revolutions=revs, quick=a.quick))
+    s, bnode, disk = build(grid)
+    t0 = time.perf_counter()
+    eq = s.equilibrium(3000.0)
+    log(f"[rotor] grid {grid[0]} x {grid[1]}: bearing loads {eq.bearing_load.round(1)} N, e/C "
+        f"{eq.eccentricity_ratio.round(3)} at 3000 rpm")
+    th = s.stability_threshold((1000.0, 30000.0))
+    th_qs = s.stability_threshold((1000.0, 30000.0), film_states=False)
+    log(f"[rotor] whirl threshold: {th:.0f} rpm with the film states, {th_qs:.0f} rpm with quasi-static K, C")
+    rec.put("thresholds_rpm", dict(film_states=th, quasi_static=th_qs))
+
+    speeds = np.linspace(0.3, 2.0, 12 if a.quick else 35) * th
+    eig = [s.quasi_static_eigenvalues(n) for n in speeds]
+    log(f"written: {save(plots.campbell(speeds, eig, {'threshold, film states': th, 'threshold, K and C': th_qs}), out / 'campbell.png')}")
+    lin = {}
+    for label, film in (("linear, bearings as K, C", False), ("linear, film states", True)):
+        amp = [abs(s.unbalance_response(n, film_states=film).position(disk)[0]) for n in speeds]
+        lin[label] = (speeds, np.array(amp))
+    rec.put("linear", {k: dict(speeds_rpm=v[0], disk_x_m=v[1]) for k, v in lin.items()})
+
+    runs = {}
+    for name, (n0, n1), start in (("run_up", (0.3 * th, 2.0 * th), None), ("coast_down", (2.0 * th, 0.3 * th), "run_up")):
+        ckpt = out / f"{name}_checkpoint.npz"
+        if a.fresh and ckpt.exists():
+            ckpt.unlink()
+        log(f"[rotor] {name.replace('_', '-')} {n0:.0f} -> {n1:.0f} rpm over {revs:g} revolutions; checkpoint {ckpt}")
+        t_start = runs[start].final_time if start else 0.0
+        r = s.run(revs, ramp(n0, n1, revs, t_start), rtol=1e-5, start=runs.get(start), checkpoint=ckpt, resume=True,
+                  chunk_revolutions=10.0, outputs_per_revolution=OPR, progress=True, touch_gap=1e-3,
+                  reference_speed_rpm=2.0 * th)
+        r.save(out / f"{name}.npz")
+        runs[name] = r
+        ns, amp = synchronous_amplitude(r.t, r.position(disk)[0], r.speed_rpm, 2.0)
+        window = max(4.0, revs / 25.0)  # revolutions per spectrum: 25 windows over the run
+        sp, f, spec = waterfall(r.t, r.position(disk)[0], r.speed_rpm, window)
+        peak = f[np.argmax(spec[:, 1:], axis=1) + 1]
+        rec.put(name, dict(message=r.message, steps=r.stats.n_steps, wall_s=r.stats.wall_time, speeds_rpm=ns,
+                           disk_1x_m=amp, window_speeds_rpm=sp, window_revolutions=window, dominant_frequency_hz=peak,
+                           dominant_order=peak * 60.0 / sp))
+        log(f"  {r.message}; {r.stats.n_steps / revs:.0f} steps per revolution; dominant order of the disk's x "
+            f"per window: {np.round(peak * 60.0 / sp, 2).tolist()}")
+        title = f"{name.replace('_', '-')}: spectrum of the disk's x (cascade)"
+        log(f"written: {save(plots.waterfall(r, disk, title, window), out / f'waterfall_{name}.png')}")
+    r = runs["run_up"]
+    pts = {f"{k.replace('_', '-')} (transient)": synchronous_amplitude(v.t, v.position(disk)[0], v.speed_rpm, 2.0)
+           for k, v in runs.items()}
+    log(f"written: {save(plots.response_curve(lin, pts, 'the disk (x)'), out / 'response.png')}")
+    marks = [n for n in (0.8 * th, 1.2 * th, 1.9 * th) if r.speed_rpm.min() <= n <= r.speed_rpm.max()]
+    log(f"written: {save(plots.orbits(r, {bnode: f'bearing (node {bnode})', disk: f'mid-span (node {disk})'}, marks), out / 'orbits.png')}")
+    rec.put("wall_s", time.perf_counter() - t0)
+    log(f"[rotor] done in {time.perf_counter() - t0:.0f} s; numbers in {out / 'rotor_whip.json'}")
+    return rec.data
+
+
+if __name__ == "__main__":
+    main(sys.argv[1:])

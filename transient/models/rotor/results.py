@@ -1,0 +1,117 @@
+"""Results of a rotor on journal bearings: SI fields with units, the displacement of every node by
+``position(node)``."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from transient.results import RunResult, StatusResult, SteadyResult, quantity, result_type
+
+
+class _Nodes:
+    """``position(node)``: the (x, y) of one node from the ``displacement`` array (last axis: x, y)."""
+
+    def _index(self, node) -> int:
+        nodes = list(self.nodes)
+        if node not in nodes:
+            raise ValueError(f"node = {node!r} is not a node of this result; allowed: {nodes}")
+        return nodes.index(node)
+
+    def position(self, node):
+        """The (x, y) displacement [m] of ``node`` (arrays over ``t`` for a run, numbers or complex amplitudes
+        otherwise)."""
+        d = self.displacement[..., self._index(node), :]
+        return d[..., 0], d[..., 1]
+
+
+@result_type
+class RotorRunResult(_Nodes, RunResult):
+    """A time run of a rotor on journal bearings.
+
+    ``t`` [s]; ``displacement`` [m] (n_t, n_nodes, 2): x, y of every node (``position(node)``); ``speed_rpm``
+    [rpm] (n_t) the shaft speed; ``bearing_force`` [N] (n_t, n_bearings, 2) the film force on the journal at
+    each bearing node (``bearing_nodes``); ``clearance`` [m] per bearing; ``touched_at`` [s] when a journal
+    reached its bearing (the run stopped there); ``reference_speed_rpm`` [rpm] the speed of the state's pressure
+    unit; ``final_state`` (the system's dimensionless state) at
+    ``final_time`` [s], from which ``run(..., start=result)`` continues."""
+
+    displacement: np.ndarray = quantity("m", None)
+    speed_rpm: np.ndarray = quantity("rpm", None)
+    bearing_force: np.ndarray = quantity("N", None)
+    nodes: list = None
+    bearing_nodes: list = None
+    clearance: np.ndarray = quantity("m", None)
+    method: str = "ida"
+    touched_at: float | None = quantity("s", None)
+    reference_speed_rpm: float = quantity("rpm", 0.0)
+
+    def eccentricity_ratio(self, node) -> np.ndarray:
+        """e/C of the journal at the bearing ``node``."""
+        x, y = self.position(node)
+        return np.hypot(x, y) / self.clearance[list(self.bearing_nodes).index(node)]
+
+    @property
+    def revolutions(self) -> np.ndarray:
+        """Shaft revolutions at every output (trapezoidal integral of the speed)."""
+        s = np.asarray(self.speed_rpm) / 60.0
+        return np.concatenate([[0.0], np.cumsum(0.5 * (s[1:] + s[:-1]) * np.diff(self.t))])
+
+
+@result_type
+class RotorEquilibrium(_Nodes, SteadyResult):
+    """The static equilibrium of a rotor on journal bearings: ``displacement`` [m] (n_nodes, 2) of every node,
+    ``bearing_force`` [N] (n_bearings, 2) the film force on the journal, ``bearing_load`` [N] its magnitude (the
+    load each bearing carries), ``eccentricity_ratio`` and ``attitude_angle_deg`` per bearing (from the bearing's
+    load line to the line of centres, in the direction of rotation), ``state`` the system's dimensionless state."""
+
+    displacement: np.ndarray = quantity("m", None)
+    bearing_force: np.ndarray = quantity("N", None)
+    bearing_load: np.ndarray = quantity("N", None)
+    eccentricity_ratio: np.ndarray = quantity("-", None)
+    attitude_angle_deg: np.ndarray = quantity("deg", None)
+    nodes: list = None
+    bearing_nodes: list = None
+    speed_rpm: float = quantity("rpm", 0.0)
+    state: np.ndarray = quantity("-", None, repr=False)
+
+
+@result_type
+class UnbalanceResponse(_Nodes, StatusResult):
+    """The linear unbalance response at one speed: ``displacement`` [m] (n_nodes, 2) complex amplitudes with
+    ``x(t) = Re(X e^{i Omega t})`` (``position(node)``); ``stiffness`` [N/m] and ``damping`` [N s/m]
+    (n_bearings, 2, 2) the linearised bearing coefficients used."""
+
+    time_axis = None
+    displacement: np.ndarray = quantity("m", None)
+    stiffness: np.ndarray = quantity("N/m", None)
+    damping: np.ndarray = quantity("N s/m", None)
+    nodes: list = None
+    bearing_nodes: list = None
+    speed_rpm: float = quantity("rpm", 0.0)
+
+    def amplitude(self, node) -> tuple[float, float]:
+        """Peak amplitudes |X|, |Y| [m] of ``node``."""
+        x, y = self.position(node)
+        return float(abs(x)), float(abs(y))
+
+
+@result_type
+class PeriodicResponse(_Nodes, StatusResult):
+    """The settled (periodic) unbalance response over one revolution by shooting: ``t`` [s] from shaft angle 0,
+    ``displacement`` [m] (n_t, n_nodes, 2) (``position(node)``), ``multipliers`` the dominant Floquet
+    multipliers (stable inside the unit circle), ``error_estimate`` [smallest clearance] of the fixed point,
+    ``periods`` integrated, ``state`` the system's state at angle 0 (a run's ``start=(0, state)``)."""
+
+    t: np.ndarray = quantity("s", None)
+    displacement: np.ndarray = quantity("m", None)
+    multipliers: np.ndarray = None
+    error_estimate: float = quantity("-", float("nan"))
+    periods: int = 0
+    nodes: list = None
+    speed_rpm: float = quantity("rpm", 0.0)
+    state: np.ndarray = quantity("-", None, repr=False)
+
+    def amplitude(self, node) -> tuple[float, float]:
+        """Half the peak-to-peak excursion [m] of ``node`` in x and y."""
+        x, y = self.position(node)
+        return float(np.ptp(x) / 2), float(np.ptp(y) / 2)

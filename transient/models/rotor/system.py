@@ -1,0 +1,664 @@
+"""A rotor on several journal bearings: static equilibrium, time runs with a mass-conserving Elrod film per
+bearing, the linear unbalance response and the stability threshold.
+
+Each bearing's film is the journal film of :mod:`transient.models.journal` (Elrod; boundary layers and the Gecim
+bulk included) driven by the motion of its rotor node; its force enters the rotor equations at that node
+(:mod:`transient.models.rotor.model`)::
+
+    M q'' + (C + Omega G) q' + K q = f_bearings + f_unbalance(t) + M g
+
+The static equilibrium solves the steady film of every bearing together with the shaft's statics (Newton on
+the whole system, started from the bearing loads of the shaft on rigid supports); the linear analyses use each
+bearing's own stiffness and damping (``JournalBearing.coefficients``) at the load it carries there (Lund's
+method), and, for the stability threshold, also the full linearisation with the film states included: the
+eigenvalues of the system's Jacobian pencil at the equilibrium closest to the quasi-static ones (sparse
+shift-invert Arnoldi).
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+from typing import Callable
+
+import numpy as np
+import scipy.sparse as sp
+import scipy.sparse.linalg as spla
+from scipy.integrate import quad
+from scipy.optimize import brentq
+
+from transient.checks import (check_choice, check_int, check_memory, check_positive, check_range, check_rtol,
+                              short_repr)
+from transient.models.journal.bearing import JournalBearing, NoEquilibriumError, check_speed
+from transient.models.journal.film import read_only
+from transient.models.rotor.model import SystemDAE
+from transient.models.rotor.results import RotorEquilibrium, RotorRunResult, UnbalanceResponse
+from transient.models.rotor.rotor import Rotor
+from transient.solvers.integrate import Problem, Stats
+from transient.solvers.longrun import run_long
+from transient.solvers.newton import NewtonError, newton
+from transient.units import rpm_to_rad_s
+
+RUN_METHODS = ("ida",)
+#: a shaft node's bearing support in the start of the equilibrium: this many times the largest of the rotor's
+#: stiffness and its gravity load per clearance (the reactions are those of rigid supports to about 1e-6)
+SUPPORT_STIFFNESS = 1e6
+
+
+class RotorBearingSystem:
+    """A :class:`~transient.models.rotor.rotor.Rotor` on :class:`~transient.models.journal.JournalBearing` s.
+
+    Parameters (SI)
+    ----------
+    rotor : the rotor.
+    bearings : ``{node: JournalBearing}``; a bearing node must carry x and y.
+    unbalance : ``[(node, m e [kg m], phase [deg]), ...]``: each unbalance's force ``m e Omega^2`` rotates with
+        the shaft from ``phase`` (measured from +x in the direction of rotation at t = 0).
+    gravity [m/s^2] : a number (acting along +x, the bearings' load direction) or an (x, y) vector.
+    """
+
+    def __init__(self, rotor: Rotor, bearings: dict, unbalance=(), gravity=9.81):
+        if not isinstance(rotor, Rotor):
+            raise TypeError(f"rotor must be a transient Rotor, got {type(rotor).__name__}")
+        self.rotor = rotor
+        if not isinstance(bearings, dict) or not bearings:
+            raise ValueError(f"bearings = {short_repr(bearings)}; allowed: a non-empty dict {{node: JournalBearing}}")
+        for node, b in bearings.items():
+            if node not in rotor.nodes:
+                raise ValueError(f"bearings: node = {node!r} is not a node of the rotor; allowed: {rotor.nodes}")
+            if not isinstance(b, JournalBearing):
+                raise TypeError(f"bearings[{node!r}] must be a JournalBearing, got {type(b).__name__}")
+            if not np.any(rotor.translation(node)):
+                raise ValueError(f"bearings: node {node!r} does not move in this rotor's coordinates")
+        for node, b in bearings.items():
+            if b.cavitation != "elrod":
+                raise ValueError(f"bearings[{node!r}] cavitation = {b.cavitation!r}; allowed: \"elrod\" (the rotor "
+                                 "system couples the mass-conserving films; the Reynolds-condition film serves the "
+                                 "single bearing's steady and linear analyses)")
+        self.bearings = dict(bearings)
+        self.unbalance = []
+        for k, item in enumerate(unbalance):
+            try:
+                node, me, phase = item
+            except (TypeError, ValueError):
+                raise ValueError(f"unbalance[{k}] = {short_repr(item)}; allowed: (node, m e [kg m], phase [deg])") from None
+            if node not in rotor.nodes:
+                raise ValueError(f"unbalance[{k}]: node = {node!r} is not a node of the rotor; allowed: {rotor.nodes}")
+            me = check_range(f"unbalance[{k}] m e", me, "kg m", 0.0, 1e3)
+            phase = check_range(f"unbalance[{k}] phase", phase, "deg", -360.0, 360.0)
+            self.unbalance.append((node, me, phase))
+        if np.ndim(gravity) == 0:
+            g = np.array([check_range("gravity", gravity, "m/s^2", -1e4, 1e4), 0.0])
+        else:
+            g = np.array(gravity, dtype=float)
+            if g.shape != (2,) or not np.all(np.isfinite(g)) or np.max(np.abs(g)) > 1e4:
+                raise ValueError(f"gravity = {short_repr(gravity)} [m/s^2]; allowed: a number or an (x, y) vector, "
+                                 "each in [-1e4, 1e4]")
+        self.gravity_vector = g
+        self.length_scale = min(b.clearance for b in self.bearings.values())
+        self._check_units()
+
+    @property
+    def bearing_nodes(self) -> list:
+        return list(self.bearings)
+
+    def _check_units(self):
+        """A rotor whose gravity deflection on rigid supports is larger than a thousand clearances is in other
+        units than its bearings (e.g. millimetres against metres)."""
+        q = self._rigid_support_displacement()
+        d = np.max(np.abs(self.rotor.basis @ q)) if q.size else 0.0
+        if d > 1e3 * self.length_scale:
+            raise ValueError(f"rotor: gravity deflects the shaft on rigid supports by {d:.3g} m, more than 1000 "
+                             f"bearing clearances ({self.length_scale:.3g} m); allowed: the rotor's matrices in SI "
+                             "(kg, N/m) like the bearings (m)")
+
+    # ------------------------------------------------------------------------------------------
+    def _support_stiffness(self):
+        r = self.rotor
+        f = np.abs(self.gravity_vector @ r.gravity_load).max() / self.length_scale
+        return SUPPORT_STIFFNESS * max(np.max(np.abs(r.stiffness)), f, 1.0)
+
+    def _supported(self, ks):
+        """The rotor's stiffness with a spring ``ks`` in x and y at every bearing node."""
+        K = self.rotor.stiffness.copy()
+        for node in self.bearings:
+            T = self.rotor.translation(node)
+            K += ks * T.T @ T
+        return K
+
+    def _rigid_support_displacement(self):
+        ks = self._support_stiffness()
+        return _solve(self._supported(ks), self.gravity_vector @ self.rotor.gravity_load)
+
+    def static_loads(self) -> dict:
+        """The load [N] (x, y) each bearing carries when the shaft sits on rigid supports at its bearing nodes
+        (the shaft's statics under gravity): ``{node: (Wx, Wy)}``."""
+        ks = self._support_stiffness()
+        q = self._rigid_support_displacement()
+        return {node: tuple(ks * self.rotor.translation(node) @ q) for node in self.bearings}
+
+    # ------------------------------------------------------------------------------------------
+    def dae(self, speed_ref_rpm, speed=None) -> SystemDAE:
+        """The system's DAE at a reference speed (:class:`~transient.models.rotor.model.SystemDAE`)."""
+        return SystemDAE(self, speed_ref_rpm, speed)
+
+    def equilibrium(self, speed_rpm) -> RotorEquilibrium:
+        """Static equilibrium at ``speed_rpm``: every bearing's steady film and the shaft's statics solved
+        together (no unbalance). Raises :class:`~transient.models.journal.bearing.NoEquilibriumError` naming the
+        bearing whose load cannot be carried."""
+        speed = check_speed(speed_rpm)
+        for node, b in self.bearings.items():
+            b._check_supplied()
+        dae = self.dae(speed)
+        y = self._steady(dae, 1.0)
+        return self._equilibrium_result(dae, y, speed)
+
+    def _equilibrium_result(self, dae, y, speed) -> RotorEquilibrium:
+        q, xy = dae.split(y)
+        forces, ecc, att = [], [], []
+        for b, (X, Y) in zip(dae.blocks, xy):
+            fl = b.film
+            F = np.array(fl.force(y[b.offset:b.offset + b.n], X, Y)) * fl.force_scale
+            forces.append(F)
+            ecc.append(np.hypot(X, Y))
+            load_dir = np.arctan2(-F[1], -F[0])
+            att.append(float(np.degrees(np.angle(np.exp(1j * (np.arctan2(Y, X) - load_dir))))))
+        forces = np.array(forces)
+        return RotorEquilibrium(displacement=self._node_displacements(q), bearing_force=forces,
+                                bearing_load=np.hypot(forces[:, 0], forces[:, 1]), eccentricity_ratio=np.array(ecc),
+                                attitude_angle_deg=np.array(att), nodes=list(self.rotor.nodes),
+                                bearing_nodes=self.bearing_nodes, speed_rpm=speed, state=np.array(y),
+                                success=True, message="converged")
+
+    def _node_displacements(self, q) -> np.ndarray:
+        """(..., n_nodes, 2): x, y [m] of every node for rotor coordinates q [m] (last axis of q)."""
+        r = self.rotor
+        full = np.asarray(q) @ r.basis.T
+        full = full.reshape(full.shape[:-1] + (len(r.nodes), len(r.dofs)))
+        return np.ascontiguousarray(full[..., :2])
+
+    def _start_guess(self, dae, s):
+        """The state of the films at their bearings' own equilibria under the shaft's static loads, the shaft
+        bent through those journal positions, at rest."""
+        r = self.rotor
+        y = np.zeros(dae.n)
+        ks = self._support_stiffness()
+        rhs = self.gravity_vector @ r.gravity_load
+        speed = s * dae.speed_ref_rpm
+        for node, W in self.static_loads().items():
+            b = self.bearings[node]
+            blk = next(k for k in dae.blocks if k.node == node)
+            load = float(np.hypot(*W))
+            if load < 1e-12 * max(1.0, np.abs(rhs).max()):
+                X = Y = 0.0
+                u = None
+            else:
+                try:
+                    e = b.equilibrium(load, speed)
+                except NoEquilibriumError as exc:
+                    raise NoEquilibriumError(f"the bearing at node {node} cannot carry its static load {load:.6g} N at "
+                                             f"speed_rpm = {speed:.6g} [rpm] ({exc}); allowed: a load the film "
+                                             "carries inside the clearance (a larger, longer or more viscous "
+                                             "bearing, or a higher speed)") from None
+                a = np.arctan2(W[1], W[0])
+                X0, Y0 = e.position[0] / b.clearance, e.position[1] / b.clearance
+                X, Y = X0 * np.cos(a) - Y0 * np.sin(a), X0 * np.sin(a) + Y0 * np.cos(a)
+                u = e.u
+            u, _ = blk.film.solve(X, Y, u0=u if s == 1.0 else None)  # e.u is in p0 units of its own speed
+            y[blk.offset:blk.offset + blk.n] = u
+            T = r.translation(node)
+            rhs = rhs + ks * T.T @ (np.array([X, Y]) * b.clearance)
+        q = _solve(self._supported(ks), rhs)
+        y[dae.Q0:dae.V0] = q / dae.L
+        return y
+
+    def _steady(self, dae, s, y0=None) -> np.ndarray:
+        """Newton on the system at rest (``y' = 0``, no unbalance) at speed ratio ``s``: the films' steady
+        equations with the groove cells held, the shaft's statics; pseudo-transient continuation if plain
+        Newton fails."""
+        y0 = self._start_guess(dae, s) if y0 is None else np.array(y0, dtype=float)
+        saved = dae.speed, dae.unbalance
+        dae.speed, dae.unbalance = (lambda tau: (s, 0.0)), []
+        fixed_rows = np.concatenate([b.offset + np.flatnonzero(~b.film.op.free) for b in dae.blocks])
+        fixed_vals = np.concatenate([b.film.op.u_fixed[~b.film.op.free] for b in dae.blocks])
+        fixed_diag = _diagonal_positions(dae.pattern, fixed_rows)
+        P0 = dae.P0
+        zero = read_only(np.zeros(dae.n))
+        data = np.empty(dae.pattern.nnz)
+
+        def F(y):
+            out = np.empty(dae.n)
+            dae.residual(0.0, read_only(y), zero, out)
+            out[fixed_rows] = y[fixed_rows] - fixed_vals
+            out[P0] = y[P0]
+            return out
+
+        def J(y, shift):
+            dae.jacobian(0.0, read_only(y), zero, shift, data)
+            data[fixed_diag] = 1.0
+            data[dae.rotor_pos[4]] = 0.0
+            data[dae.rotor_pos[5]] = 1.0
+            return sp.csc_matrix((data.copy(), dae.pattern.indices, dae.pattern.indptr), shape=dae.pattern.shape)
+
+        try:
+            try:
+                res = newton(F, J, y0, xtol=1e-11, ftol=1e-10, max_iter=30, name="rotor equilibrium")
+            except NewtonError:
+                res = newton(F, J, y0, xtol=1e-11, ftol=1e-10, max_iter=300, pseudo_time=1.0,
+                             name="rotor equilibrium")
+        except NewtonError as exc:
+            raise NoEquilibriumError(f"no static equilibrium of the rotor on its bearings at speed_rpm = "
+                                     f"{s * dae.speed_ref_rpm:.6g} [rpm]: {exc}") from None
+        finally:
+            dae.speed, dae.unbalance = saved
+        y = res.x
+        for b, (X, Y) in zip(dae.blocks, dae.split(y)[1]):
+            lim = b.bearing.max_eccentricity_ratio
+            if np.hypot(X, Y) >= lim:
+                raise NoEquilibriumError(f"the bearing at node {b.node} cannot carry its load at speed_rpm = "
+                                         f"{s * dae.speed_ref_rpm:.6g} [rpm]: the journal reaches e/C = "
+                                         f"{np.hypot(X, Y):.4f}; allowed: below {lim:.4g}")
+        return y
+
+    # ------------------------------------------------------------------------------------------
+    def coefficients(self, speed_rpm, equilibrium: RotorEquilibrium | None = None) -> dict:
+        """Each bearing's linearised stiffness K [N/m] and damping C [N s/m] (2x2, the bearing's frame) at the
+        load it carries in the static equilibrium: ``{node: (K, C)}`` (``JournalBearing.coefficients``)."""
+        eq = self.equilibrium(speed_rpm) if equilibrium is None else equilibrium
+        return {node: self.bearings[node].coefficients(float(eq.bearing_load[k]), speed_rpm)
+                for k, node in enumerate(self.bearing_nodes)}
+
+    def _linear_matrices(self, coefficients):
+        """(M, C, G, K, bearings) for :mod:`transient.models.rotor.linear`: each bearing on the rotor coordinates
+        that are its node's x and y (a nodal rotor's dofs, a Craig-Bampton rotor's kept boundary coordinates)."""
+        r = self.rotor
+        bearings = []
+        for node, (kb, cb) in coefficients.items():
+            T = r.translation(node)
+            unit = [np.flatnonzero(row) for row in T]
+            if not all(u.size == 1 and row[u[0]] == 1.0 for u, row in zip(unit, T)):
+                raise ValueError(f"bearing node {node}: its x and y are not coordinates of this reduced rotor; "
+                                 "allowed: a nodal rotor or one reduced keeping the bearing nodes' x and y "
+                                 "(Rotor.from_ross(..., modes=) does)")
+            bearings.append((int(unit[0][0]), int(unit[1][0]), kb, cb))
+        return r.mass, r.damping, r.gyroscopic, r.stiffness, bearings
+
+    def unbalance_response(self, speed_rpm, film_states=False) -> UnbalanceResponse:
+        """The linear unbalance response at ``speed_rpm``: complex amplitudes per node (``position(node)``,
+        ``x(t) = Re(X e^{i Omega t})``). Default: the rotor with each bearing's K and C at its static load
+        (:meth:`coefficients`, :mod:`transient.models.rotor.linear`); ``film_states=True``: the system linearised
+        with the films' own states (:meth:`linearisation`), ``(A + i B) Z = F`` in the time ``tau = Omega t``."""
+        speed = check_speed(speed_rpm)
+        w = rpm_to_rad_s(speed)
+        eq = self.equilibrium(speed)
+        coef = self.coefficients(speed, eq)
+        r = self.rotor
+        if film_states:
+            lin = self.linearisation(speed, eq)
+            q = lin.forced_response()[lin.dae.Q0:lin.dae.V0] * lin.dae.L
+        else:
+            from transient.models.rotor.linear import unbalance_response
+
+            M, C, G, K, bearings = self._linear_matrices(coef)
+            f = np.zeros(r.n, dtype=complex)
+            for node, me, phase in self.unbalance:
+                T = r.translation(node)
+                amp = me * w * w * np.exp(1j * np.radians(phase))
+                f += T[0] * amp - 1j * T[1] * amp
+            q = np.asarray(unbalance_response(M, C, G, K, bearings, f, w))
+        return UnbalanceResponse(displacement=self._node_displacements(q),
+                                 stiffness=np.array([coef[n][0] for n in self.bearing_nodes]),
+                                 damping=np.array([coef[n][1] for n in self.bearing_nodes]),
+                                 nodes=list(r.nodes), bearing_nodes=self.bearing_nodes, speed_rpm=speed,
+                                 success=True, message="linear, film states" if film_states else "linear, K and C")
+
+    def linearisation(self, speed_rpm, equilibrium=None) -> "Linearisation":
+        """The system linearised at its static equilibrium with the film states included
+        (:class:`Linearisation`)."""
+        speed = check_speed(speed_rpm)
+        eq = self.equilibrium(speed) if equilibrium is None else equilibrium
+        return Linearisation(self, self.dae(speed), eq)
+
+    def linear_start(self, speed_rpm) -> np.ndarray:
+        """The state at t = 0 on the linear unbalance response with the film states (equilibrium + Re Z): a run
+        started there (``start=(0, state)``) is settled but for the nonlinearity of the films."""
+        lin = self.linearisation(speed_rpm)
+        return lin.equilibrium.state + lin.forced_response().real
+
+    def quasi_static_eigenvalues(self, speed_rpm, equilibrium=None) -> np.ndarray:
+        """Eigenvalues [1/s] of the rotor with each bearing's K and C (Lund's quasi-static bearings), sorted by
+        the size of their imaginary part."""
+        from transient.models.rotor.linear import eigenvalues
+
+        speed = check_speed(speed_rpm)
+        M, C, G, K, bearings = self._linear_matrices(self.coefficients(speed, equilibrium))
+        return np.asarray(eigenvalues(M, C, G, K, bearings, rpm_to_rad_s(speed)))
+
+    def eigenvalues(self, speed_rpm, count=4, equilibrium=None) -> np.ndarray:
+        """Eigenvalues [1/s] of the system linearised at its static equilibrium with the film states included
+        (:meth:`Linearisation.eigenvalues`): those nearest each of the ``count`` least stable quasi-static
+        eigenvalues (:meth:`quasi_static_eigenvalues`), sorted by real part, largest last."""
+        speed = check_speed(speed_rpm)
+        count = check_int("count", count, "-", 1, 100)
+        eq = self.equilibrium(speed) if equilibrium is None else equilibrium
+        qs = self.quasi_static_eigenvalues(speed, eq)
+        qs = qs[np.imag(qs) > 0]
+        return self.linearisation(speed, eq).eigenvalues(qs[np.argsort(-qs.real)][:count])
+
+    def growth_rate(self, speed_rpm, film_states=True) -> float:
+        """Largest real part [1/s] of the linearised system's eigenvalues: with the film states
+        (:meth:`eigenvalues`) or of the quasi-static bearings (``film_states=False``)."""
+        eq = self.equilibrium(speed_rpm)
+        lam = self.eigenvalues(speed_rpm, equilibrium=eq) if film_states else \
+            self.quasi_static_eigenvalues(speed_rpm, eq)
+        return float(np.max(lam.real))
+
+    def stability_threshold(self, speed_range_rpm=(500.0, 30000.0), rtol=1e-4, film_states=True) -> float:
+        """The lowest speed [rpm] in ``speed_range_rpm`` at which the linearised system's largest growth rate
+        crosses zero (oil whirl onset): with the film states included (default), or from the quasi-static K and
+        C (``film_states=False``, Lund's method; it leaves out the film's own dynamics)."""
+        lo, hi = speed_range_rpm
+        lo, hi = check_speed(lo), check_speed(hi)
+        if hi <= lo:
+            raise ValueError(f"speed_range_rpm = {speed_range_rpm!r} [rpm]; allowed: (low, high) with low < high")
+        g = lambda n: self.growth_rate(n, film_states)  # noqa: E731
+        speeds = np.geomspace(lo, hi, 9)
+        vals = [g(speeds[0])]
+        for k in range(len(speeds) - 1):
+            vals.append(g(speeds[k + 1]))
+            if vals[k] < 0 <= vals[k + 1]:
+                return float(brentq(g, speeds[k], speeds[k + 1], rtol=rtol))
+        raise ValueError(f"no stability threshold in speed_range_rpm = ({lo:g}, {hi:g}) [rpm] (largest growth rates "
+                         f"{vals[0]:.3g} ... {vals[-1]:.3g} 1/s); allowed: a range where the growth rate changes sign")
+
+    # ------------------------------------------------------------------------------------------
+    def run(self, revolutions, speed_rpm, method="ida", rtol=1e-6, start=None, checkpoint=None, *, atol=1e-9,
+            outputs_per_revolution=100, chunk_revolutions=None, resume=False, progress=None, touch_gap=0.0,
+            time_budget=None, reference_speed_rpm=None) -> RotorRunResult:
+        """Integrate the rotor on its films over ``revolutions`` shaft revolutions.
+
+        Parameters
+        ----------
+        revolutions [rev] : the run's length in shaft revolutions (a speed function: the time in which the shaft
+            turns that often).
+        speed_rpm [rpm] : a number, or a function of the time t [s] (run-up, coast-down): it enters the films'
+            Couette flow and the unbalance force (angle = integral of the speed, plus the m e Omega' term).
+        method : ``"ida"`` (SUNDIALS IDA, sparse SuperLU on the block-arrow pattern).
+        rtol, atol : tolerances (atol on the dimensionless states: p/p0, journal position in clearances).
+        start : None (the static equilibrium at the start speed, at rest), a previous :class:`RotorRunResult`
+            (continued from its final state and time, at its reference speed) or ``(t [s], state)`` (a state at this
+            run's reference speed: e.g. ``linear_start``, ``equilibrium(...).state`` or a periodic response's at the
+            run's constant speed).
+        checkpoint : path of an ``.npz`` rewritten after every chunk (``resume=True`` continues from it).
+        outputs_per_revolution : outputs per revolution at the reference speed.
+        touch_gap : > 0 stops the run when a journal reaches e/C = 1 - touch_gap.
+        reference_speed_rpm : the speed of the films' pressure unit (default: the largest speed of the run;
+            a continued run keeps its start's).
+        """
+        revolutions = check_positive("revolutions", revolutions, "rev")
+        check_choice("method", method, RUN_METHODS)
+        rtol = check_rtol(rtol)
+        atol = check_range("atol", atol, "-", 1e-30, 1.0)
+        opr = check_int("outputs_per_revolution", outputs_per_revolution, "1/rev", 1, 1_000_000)
+        touch_gap = check_range("touch_gap", touch_gap, "-", 0.0, 1.0, high_open=True)
+        t0, y = 0.0, None
+        if start is not None:
+            if isinstance(start, RotorRunResult):
+                t0, y = float(start.final_time), np.array(start.final_state, dtype=float)
+                if reference_speed_rpm is not None and reference_speed_rpm != start.reference_speed_rpm:
+                    raise ValueError(f"reference_speed_rpm = {reference_speed_rpm!r} [rpm]; allowed: the start's "
+                                     f"{start.reference_speed_rpm!r} (its film state is in that speed's pressure unit)")
+                reference_speed_rpm = start.reference_speed_rpm
+            else:
+                t0, y = float(start[0]), np.array(start[1], dtype=float)
+        speed_fn, t_end, n_max = _speed_schedule(speed_rpm, t0, revolutions)
+        ref = n_max if reference_speed_rpm is None else check_speed(reference_speed_rpm)
+        if callable(speed_rpm) and any(b.shear_thinning for b in self.bearings.values()):
+            raise ValueError("speed_rpm as a function of time with a Gecim (shear-thinning) bearing: its bulk flux is "
+                             "tabulated at one sliding speed; allowed: a constant speed")
+        w = rpm_to_rad_s(ref)
+
+        def speed(tau):
+            t = tau / w
+            n = speed_fn(t)
+            h = 1e-6 * max(t_end - t0, 1e-9)
+            lo = max(t - h, t0)  # the speed function is taken only inside the run
+            dn = (speed_fn(t + h) - speed_fn(lo)) / (t + h - lo) if callable(speed_rpm) else 0.0
+            return n / ref, rpm_to_rad_s(dn) / w ** 2
+
+        dae = self.dae(ref, speed)
+        s0 = speed(t0 * w)[0]
+        if y is None:
+            if s0 <= 0:
+                raise ValueError(f"speed_rpm(t = {t0:g} s) = {s0 * ref:g} [rpm]: a film carries no load at rest; "
+                                 "allowed: > 0 (start a run-up from a low speed)")
+            y = self._steady(dae, s0)
+        if y.shape != (dae.n,) or not np.all(np.isfinite(y)):
+            raise ValueError(f"start state has shape {y.shape} or non-finite entries; this system has {dae.n} finite "
+                             "states")
+        n_out = max(1, int(round(revolutions * opr)))
+        tau0, tau_end = t0 * w, t_end * w
+        check_memory(f"this rotor run ({n_out} outputs, {dae.n} states)",
+                     dict(model=1100.0 * dae.n_film, solver=5500.0 * dae.n,
+                          recordings=8.0 * n_out * (2 * len(self.rotor.nodes) + 2 * len(self.bearings) + 2)),
+                     "lower revolutions or outputs_per_revolution, or use coarser bearing grids")
+        rec = _Recorder(self, dae, speed)
+        limits = [(b.bearing.max_eccentricity_ratio - touch_gap) ** 2 for b in dae.blocks]
+
+        def problem_at(y_, tau_):
+            y_ = np.array(y_, dtype=float)
+            events = None
+            if touch_gap > 0:
+                def events(t, yy, out):
+                    q = yy[dae.Q0:dae.V0]
+                    for k, b in enumerate(dae.blocks):
+                        X, Y = b.position(q)
+                        out[k] = limits[k] - (X * X + Y * Y)
+            return Problem(y0=y_, yp0=dae.consistent_yp(tau_, y_), residual=dae.residual, jac_pattern=dae.pattern,
+                           jac_residual=dae.jacobian, events=events, n_events=len(dae.blocks) if events else 0,
+                           event_terminal=[True] * len(dae.blocks), event_direction=[-1] * len(dae.blocks),
+                           name="rotor on journal bearings")
+
+        chunk = chunk_revolutions if chunk_revolutions is not None else (10.0 if checkpoint else revolutions)
+        chunk = check_range("chunk_revolutions", chunk, "rev", 1.0 / opr, np.inf)
+        key = dict(self.parameters(), speed=_speed_key(speed_fn, t0, t_end), reference_speed_rpm=ref, method=method,
+                   rtol=rtol, atol=atol, outputs_per_revolution=opr, touch_gap=touch_gap, start_time=t0,
+                   chunk_revolutions=chunk,
+                   start_state=hashlib.sha256(np.ascontiguousarray(y).tobytes()).hexdigest()[:16])
+        rec.last_y = y
+        out = run_long(problem_at, y, tau0, (tau_end - tau0) / n_out, n_out, rec, method=method, rtol=rtol,
+                       atol=dae.absolute_tolerance(atol), chunk_outputs=max(1, int(round(chunk * opr))),
+                       checkpoint=checkpoint, resume=resume, key=key, progress=progress,
+                       unit=("rev", (tau_end - tau0) / revolutions),
+                       label="rotor run", status=rec.status, time_budget=time_budget)
+        touched, message = None, out.message
+        if out.event is not None:
+            touched = out.event[0] / w
+            message = f"a journal touches its bearing (e/C = 1 - {touch_gap:g}) at t = {touched:.6g} s"
+        rec.last_y = np.array(out.y)
+        r = rec.result(method, out.stats, touched, message, out.t / w, ref)
+        r.success = out.success
+        return r
+
+    def periodic_response(self, speed_rpm, rtol=1e-6, tol=None, modes=2, outputs_per_revolution=64, max_iter=25):
+        """The settled unbalance orbit at ``speed_rpm`` by shooting (Newton-Picard on the ``modes`` least damped
+        modes of the linearisation with the film states, :mod:`~transient.models.rotor.periodic`): ``p.position(node)``
+        over one revolution [m], ``p.multipliers``. ``tol`` [smallest clearance] on the rotor's coordinates and
+        velocities (default ``rtol``)."""
+        from transient.models.rotor.periodic import periodic_response
+
+        speed = check_speed(speed_rpm)
+        rtol = check_range("rtol", rtol, "-", 1e-12, 1e-2)
+        tol = rtol if tol is None else check_positive("tol", tol, "-")
+        modes = check_int("modes", modes, "-", 1, 20)
+        opr = check_int("outputs_per_revolution", outputs_per_revolution, "1/rev", 4, 100000)
+        return periodic_response(self, speed, rtol, tol, modes, opr, check_int("max_iter", max_iter, "-", 1, 1000))
+
+    def parameters(self) -> dict:
+        """Every parameter of the system (SI), e.g. to key a checkpoint (the rotor's matrices as a digest)."""
+        r = self.rotor
+        h = hashlib.sha256()
+        for a in (r.mass, r.stiffness, r.damping, r.gyroscopic, r.basis, r.gravity_load):
+            h.update(np.ascontiguousarray(a).tobytes())
+        return dict(rotor=h.hexdigest()[:16], nodes=list(r.nodes), dofs=list(r.dofs),
+                    bearings={str(n): b.parameters() for n, b in self.bearings.items()},
+                    unbalance=[list(u) for u in self.unbalance], gravity=list(self.gravity_vector))
+
+
+class Linearisation:
+    """The system linearised at its static equilibrium with the films' own states: ``B z' + A z = f`` in the
+    time ``tau = Omega t`` (``A = dF/dy``, ``B = dF/dy'`` of the DAE at rest, the groove cells and the shaft angle
+    left out: they do not move)."""
+
+    def __init__(self, system, dae: SystemDAE, equilibrium: RotorEquilibrium):
+        self.system, self.dae, self.equilibrium = system, dae, equilibrium
+        dae.unbalance = []
+        y = read_only(equilibrium.state)
+        zero = read_only(np.zeros(dae.n))
+        d0, d1 = np.empty(dae.pattern.nnz), np.empty(dae.pattern.nnz)
+        dae.jacobian(0.0, y, zero, 0.0, d0)
+        dae.jacobian(0.0, y, zero, 1.0, d1)
+        keep = np.ones(dae.n, dtype=bool)
+        for b in dae.blocks:
+            keep[b.offset:b.offset + b.n] = b.film.op.free
+        keep[dae.P0] = False
+        self.keep = keep
+        mat = lambda d: sp.csc_matrix((d, dae.pattern.indices, dae.pattern.indptr), shape=dae.pattern.shape)  # noqa: E731
+        self.A = mat(d0)[keep][:, keep].tocsc()
+        self.B = (mat(d1) - mat(d0))[keep][:, keep].tocsc()
+
+    def forced_response(self) -> np.ndarray:
+        """The complex amplitudes Z of the whole state (dimensionless, groove cells and angle 0) under the
+        system's unbalances at the equilibrium's speed: ``(A + i B) Z = F``, ``F`` the unbalance force
+        ``(m e / L) e^{i a} (t_x - i t_y)`` in the momentum rows."""
+        dae, s = self.dae, self.system
+        f = np.zeros(dae.n, dtype=complex)
+        for node, me, phase in s.unbalance:
+            T = s.rotor.translation(node)
+            f[dae.V0:dae.P0] += (me / dae.L) * np.exp(1j * np.radians(phase)) * (T[0] - 1j * T[1])
+        z = np.zeros(dae.n, dtype=complex)
+        z[self.keep] = spla.spsolve((self.A + 1j * self.B).tocsc(), f[self.keep])
+        return z
+
+    def eigenvalues(self, shifts, k=3) -> np.ndarray:
+        """Eigenvalues [1/s] of the pencil ``(A + lambda B) z = 0`` nearest each of ``shifts`` [1/s] (``k``
+        each) by shift-invert Arnoldi on ``(A + sigma B)^-1 B``, sorted by real part, largest last."""
+        w = self.dae.omega
+        found = []
+        for sigma in np.asarray(shifts, dtype=complex) / w:
+            lu = spla.splu((self.A + sigma * self.B).tocsc())
+            op = spla.LinearOperator(self.A.shape, matvec=lambda x, lu=lu: lu.solve(self.B @ x), dtype=complex)
+            mu = spla.eigs(op, k=min(k, self.A.shape[0] - 2), which="LM", return_eigenvectors=False, tol=1e-10)
+            found.extend(sigma - 1.0 / mu)
+        lam = np.array(found) * w
+        lam = np.unique(np.round(lam[np.isfinite(lam)], 9))
+        return lam[np.argsort(lam.real)]
+
+
+def _solve(K, f) -> np.ndarray:
+    """``K q = f`` for the shaft on its supports; a rotor with a free rigid-body motion the bearings do not hold
+    (e.g. tilts of a rotor with one bearing) gets the least-squares displacement."""
+    try:
+        return np.linalg.solve(K, f)
+    except np.linalg.LinAlgError:
+        return np.linalg.lstsq(K, f, rcond=None)[0]
+
+
+def _diagonal_positions(pattern, rows) -> np.ndarray:
+    """CSC positions of the diagonal entries (r, r) of ``pattern`` for ``rows``."""
+    pos = np.empty(len(rows), dtype=np.int64)
+    for k, r in enumerate(rows):
+        s, e = pattern.indptr[r], pattern.indptr[r + 1]
+        pos[k] = s + int(np.flatnonzero(pattern.indices[s:e] == r)[0])
+    return pos
+
+
+def _speed_schedule(speed_rpm, t0, revolutions):
+    """``(speed(t) [rpm], t_end [s], largest speed [rpm])`` of a constant speed or a speed function over the
+    run: a function's run ends when the shaft has turned ``revolutions`` times since ``t0``."""
+    if not callable(speed_rpm):
+        n = check_speed(speed_rpm)
+        return (lambda t: n), t0 + revolutions * 60.0 / n, n
+
+    def fn(t):
+        v = float(speed_rpm(t))
+        if not np.isfinite(v) or v < 0 or v > 1e6:
+            raise ValueError(f"speed_rpm(t = {t:.6g} s) = {v!r} [rpm]; allowed: [0, 1e6]")
+        return v
+
+    n0 = fn(t0)
+    turns = lambda T: quad(fn, t0, T, limit=200)[0] / 60.0 - revolutions  # noqa: E731
+    T = t0 + revolutions * 60.0 / max(n0, 1.0)
+    for _ in range(60):
+        if turns(T) >= 0:
+            break
+        T = t0 + 2 * (T - t0)
+    else:
+        raise ValueError(f"speed_rpm(t): the shaft does not turn {revolutions:g} times in {T - t0:.3g} s")
+    t_end = brentq(turns, t0, T, xtol=1e-12 * max(T, 1.0))
+    n_max = max(fn(t) for t in np.linspace(t0, t_end, 257))
+    if n_max <= 0:
+        raise ValueError("speed_rpm(t) is zero over the whole run; allowed: a shaft that turns")
+    return fn, t_end, check_speed(n_max)
+
+
+def _speed_key(fn, t0, t_end) -> str:
+    """A digest of a speed schedule (its values at 65 times of the run), to key a checkpoint."""
+    v = np.array([fn(t) for t in np.linspace(t0, t_end, 65)])
+    return hashlib.sha256(json.dumps([t0, t_end, *v.tolist()]).encode()).hexdigest()[:16]
+
+
+class _Recorder:
+    """Keeps t, the speed, every node's x, y and every bearing's film force at the outputs (never the state)."""
+
+    def __init__(self, system, dae, speed: Callable):
+        self.s, self.dae, self.speed = system, dae, speed
+        self.t, self.n, self.d, self.f = [], [], [], []
+        self.last_y = None
+        self.last_tau = -np.inf
+
+    def observe(self, tau, y):
+        dae = self.dae
+        self.last_y = y = np.array(y)
+        if tau <= self.last_tau:
+            return
+        self.last_tau = tau
+        q = y[dae.Q0:dae.V0]
+        self.t.append(tau / dae.omega)
+        self.n.append(self.speed(tau)[0] * dae.speed_ref_rpm)
+        self.d.append(self.s._node_displacements(q * dae.L))
+        forces = []
+        for b in dae.blocks:
+            X, Y = b.position(q)
+            F = b.film.force(y[b.offset:b.offset + b.n], X, Y)
+            forces.append((F[0] * b.film.force_scale, F[1] * b.film.force_scale))
+        self.f.append(forces)
+
+    def status(self) -> str:
+        q = self.last_y[self.dae.Q0:self.dae.V0]
+        return "e/C = " + ", ".join(f"{np.hypot(*b.position(q)):.3f}" for b in self.dae.blocks)
+
+    def times(self) -> np.ndarray:
+        return np.array(self.t) * self.dae.omega
+
+    def arrays(self) -> dict:
+        return dict(t=np.array(self.t), speed=np.array(self.n), d=np.array(self.d), f=np.array(self.f),
+                    last_tau=np.array(self.last_tau))
+
+    def restore(self, a: dict):
+        rows = len(a["t"])
+        if any(len(a[k]) != rows for k in ("speed", "d", "f")):
+            raise ValueError("its series do not have one row per output time")
+        self.t, self.n, self.d, self.f = list(a["t"]), list(a["speed"]), list(a["d"]), list(a["f"])
+        self.last_tau = float(a["last_tau"])
+
+    def result(self, method, stats, touched, message, t_end, ref) -> RotorRunResult:
+        nodes = list(self.s.rotor.nodes)
+        nb = len(self.dae.blocks)
+        r = RotorRunResult(t=np.array(self.t), displacement=np.array(self.d).reshape(-1, len(nodes), 2),
+                           speed_rpm=np.array(self.n), bearing_force=np.array(self.f).reshape(-1, nb, 2),
+                           nodes=nodes, bearing_nodes=self.s.bearing_nodes,
+                           clearance=np.array([b.bearing.clearance for b in self.dae.blocks]), method=method,
+                           touched_at=touched, message=message, stats=stats or Stats(), final_state=self.last_y,
+                           final_time=float(t_end), reference_speed_rpm=ref)
+        return r
