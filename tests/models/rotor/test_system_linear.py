@@ -65,11 +65,13 @@ def test_small_unbalance_settles_on_the_film_state_linear_response(bearing):
     assert abs(lin.position(1)[0]) > 1e-3 * bearing.clearance
 
 
-def test_two_bearing_quasi_static_threshold_is_the_half_rotors(bearing):
-    """The symmetric rigid rotor on two identical bearings has the threshold of half its mass on one bearing."""
+def test_two_bearing_quasi_static_growth_is_the_half_rotors(bearing):
+    """The symmetric rigid rotor on two identical bearings has the quasi-static growth rates (whose zero is the
+    threshold) of half its mass on one bearing, below and above the onset."""
     s = RotorBearingSystem(Rotor.rigid(M_ROTOR, 3.0, 0.5), {0: bearing, 1: bearing}, gravity=G)
-    n = s.stability_threshold((4000.0, 12000.0), film_states=False)
-    assert n == pytest.approx(bearing.stability_threshold(M_ROTOR / 2, M_ROTOR * G / 2, (4000.0, 12000.0)), rel=1e-3)
+    for n in (6000.0, 9000.0):
+        half = bearing.growth_rate(M_ROTOR / 2, M_ROTOR * G / 2, n)
+        assert s.growth_rate(n, film_states=False) == pytest.approx(half, rel=1e-6)
 
 
 def free_growth_rate(s, speed, revolutions=16, per=64):
@@ -115,3 +117,14 @@ def test_periodic_response_of_one_node_is_the_orbits(bearing):
     assert np.max(np.hypot(x - o.x, y - o.y)) < 1e-5 * bearing.clearance
     assert np.ptp(x) > 0.02 * bearing.clearance
     assert np.allclose(np.sort_complex(p.multipliers[:2]), np.sort_complex(o.multipliers[:2]), atol=1e-2)
+
+
+def test_steady_and_linear_results_save_and_load(bearing, tmp_path):
+    from transient.results import load_result
+
+    rotor = Rotor(mass=M_ROTOR * np.eye(2), stiffness=np.zeros((2, 2)), nodes=[0])
+    s = RotorBearingSystem(rotor, {0: bearing}, unbalance=[(0, M_ROTOR * ECC, 0.0)], gravity=G)
+    for r in (s.equilibrium(6000), s.unbalance_response(6000)):
+        back = load_result(r.save(tmp_path / type(r).__name__))
+        assert type(back) is type(r) and back.units()["displacement"] == "m"
+        assert np.array_equal(np.asarray(back.position(0)), np.asarray(r.position(0)))
