@@ -124,6 +124,26 @@ def test_critical_speeds_equal_ross(film_coefficients):
     assert damped.size == 3
 
 
+def test_support_masses_and_bearings_are_left_out(film_coefficients):
+    """A bearing linked to a support point mass (ROSS's extra dofs after the shaft's): the import is the shaft and
+    disks alone."""
+    Kb, Cb = film_coefficients
+    plain = _ross_rotor()
+    steel = rs.materials.steel
+    shaft = [rs.ShaftElement(L=LENGTH, idl=0.0, odl=DIAMETER, material=steel, shear_effects=True,
+                             rotary_inertia=True, gyroscopic=True) for _ in range(ELEMENTS)]
+    disk = rs.DiskElement.from_geometry(n=ELEMENTS // 2, material=steel, width=0.1, i_d=DIAMETER, o_d=0.4)
+    support = ELEMENTS + 1
+    bearings = [rs.BearingElement(n=0, n_link=support, kxx=Kb[0, 0], kyy=Kb[1, 1], cxx=Cb[0, 0], cyy=Cb[1, 1]),
+                rs.BearingElement(n=support, kxx=1e9, cxx=1e3),
+                rs.BearingElement(n=ELEMENTS, kxx=Kb[0, 0], kyy=Kb[1, 1], cxx=Cb[0, 0], cyy=Cb[1, 1])]
+    supported = rs.Rotor(shaft, [disk], bearings, point_mass_elements=[rs.PointMass(n=support, m=20.0)])
+    assert supported.ndof > 6 * (ELEMENTS + 1)
+    a, b = matrices_from_ross(plain), matrices_from_ross(supported)
+    for key in ("mass", "stiffness", "damping", "gyroscopic"):
+        assert np.array_equal(a[key], b[key]), key
+
+
 def test_not_a_ross_rotor():
     with pytest.raises(TypeError, match="ross_rotor must be a ross.Rotor"):
         matrices_from_ross(object())
