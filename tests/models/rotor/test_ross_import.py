@@ -124,6 +124,29 @@ def test_critical_speeds_equal_ross(film_coefficients):
     assert damped.size == 3
 
 
+@pytest.mark.slow
+def test_campbell_equals_ross_modal_analysis(film_coefficients):
+    """The six lowest damped frequencies and log decrements at 0, 500 and 1000 rad/s against ROSS's run_modal
+    (dense) on the same rotor and bearings (measured: equal to 3e-13); where ROSS calls a mode's whirl forward or
+    backward (not "Mixed"), the whirl index has that sign."""
+    Kb, Cb = film_coefficients
+    rotor = _ross_rotor(Kb, Cb)
+    m = matrices_from_ross(rotor)
+    speeds = [0.0, 500.0, 1000.0]
+    ours = lin.campbell(m["mass"], m["damping"], m["gyroscopic"], m["stiffness"], lambda w: _bearings(Kb, Cb), speeds,
+                        6, dofs=m["dofs"])
+    for i, w in enumerate(speeds):
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            modal = rotor.run_modal(w, sparse=False)
+        wd, log_dec, whirl = np.asarray(modal.wd), np.asarray(modal.log_dec), modal.whirl_direction()
+        for f, delta, index in zip(ours.frequencies[i], ours.log_decrements[i], ours.whirl[i]):
+            k = np.argmin(np.abs(wd - f))
+            assert f == pytest.approx(wd[k], rel=1e-9) and delta == pytest.approx(log_dec[k], rel=1e-9)
+            if whirl[k] in ("Forward", "Backward"):
+                assert np.sign(index) == (1 if whirl[k] == "Forward" else -1)
+
+
 def test_support_masses_and_bearings_are_left_out(film_coefficients):
     """A bearing linked to a support point mass (ROSS's extra dofs after the shaft's): the import is the shaft and
     disks alone."""
