@@ -36,33 +36,33 @@ def main(argv=None):
     t0 = time.perf_counter()
     res = layered_cases(grid)
     rec = JsonRecord(out / "layers.json", dict(grid=grid, quick=a.quick))
-    rec.put("cases", {k: v for k, v in res.items() if k != "angle_deg"})
-    b = res["base"]
+    rec.put("cases", res.record())
+    b = res.base
     log(f"[layers] grid {grid[0]} x {grid[1]}: no layers: load {b['load_N']:.1f} N, peak p/p0 {b['peak']:.3f}")
-    for row in res["thickness"]:
+    for row in res.thickness:
         im, mo = row["immobile"], row["mobile"]
         log(f"  delta {row['delta_over_hmin']:.1f} h_min: immobile {im['load_N']:.1f} N (peak {im['peak']:.3f}), "
             f"mobile {mo['load_N']:.1f} N (peak {mo['peak']:.3f}); thinner bulk +{100 * row['rise_thinner_bulk']:.1f} %, "
             f"Darcy {100 * row['darcy_share']:+.1f} % of the layer-free load")
-    for row in res["viscosity"]:
+    for row in res.viscosity:
         log(f"  mu_ab {row['mu_ab_over_mu']:g} mu (delta 0.1 h_min, mobile): load {row['load_N']:.1f} N, "
             f"peak {row['peak']:.3f}")
     log(f"written: {save(plots.layered_profiles(res), out / 'layers.png')}")
     g = gecim_cases(grid)
-    rec.put("gecim", {k: v for k, v in g.items() if k not in ("angle_deg", "z_over_B")})
-    b = g["base"]
-    log(f"[gecim bulk] kappa {g['kappa_Pa']:.4g} Pa: no layers: load {b['gecim']['load_N']:.1f} N "
+    rec.put("gecim", g.record())
+    b = g.base
+    log(f"[gecim bulk] kappa {g.kappa_Pa:.4g} Pa: no layers: load {b['gecim']['load_N']:.1f} N "
         f"({b['gecim']['load_N'] / b['newtonian']['load_N']:.3f} of the Newtonian bulk), friction "
         f"{b['gecim']['friction_N']:.3f} N (Newtonian {b['newtonian']['friction_N']:.3f} N)")
-    for row in g["thickness"]:
+    for row in g.thickness:
         ge = row["gecim"]
         log(f"  delta {row['delta_over_hmin']:.1f} h_min: load {ge['load_N']:.1f} N ({row['thinning_load_ratio']:.3f} "
             f"of Newtonian), peak {ge['peak']:.3f}; thinner bulk +{100 * row['rise_thinner_bulk']:.1f} %, Darcy "
             f"{100 * row['darcy_share']:+.1f} %; friction {ge['friction_N']:.3f} N on the journal (f = "
             f"{ge['friction_coefficient']:.4f}), {ge['bearing_friction_N']:.3f} N on the bearing")
-    for row in g["viscosity"]:
+    for row in g.viscosity:
         log(f"  mu_ab {row['mu_ab_over_mu']:g} mu (delta 0.1 h_min): load {row['load_N']:.1f} N")
-    for row in g["immobility"]:
+    for row in g.immobility:
         log(f"  alpha {row['alpha_over_hmin']:g} h_min, mu_ab {row['mu_ab_over_mu']:g} mu: load {row['load_N']:.1f} N, "
             f"max interface shear {abs(row['interface_lower_Pa']).max() / 1e3:.3f} kPa (journal side), "
             f"{abs(row['interface_upper_Pa']).max() / 1e3:.3f} kPa (bearing side); layer slip u_a/U "
@@ -71,13 +71,13 @@ def main(argv=None):
     log(f"written: {save(plots.pressure_fields(g), out / 'gecim_fields.png')}")
     log(f"written: {save(plots.immobility(g), out / 'immobility.png')}")
     d = shear_thinning_dynamics((48, 8) if a.quick else (151, 21))
-    rec.put("dynamics", d)
+    rec.put("dynamics", d.record())
     for name in ("newtonian", "gecim"):
-        r = d[name]
+        r = getattr(d, name)
         orbit = (f"periodic orbit span {r['orbit_span_C'][0]:.4f} x {r['orbit_span_C'][1]:.4f} C (shooting converged, "
                  f"error {r['error_estimate_C']:.1e} C, |mu| {r['max_multiplier']:.3f}, {r['periods']} periods)"
                  if r["converged"] else f"periodic orbit NOT converged: {r['message']}")
-        log(f"[rotor, {name} bulk] Rho & Kim at {d['speed_rpm']:.0f} rpm: e/C {r['eccentricity']:.4f}, attitude "
+        log(f"[rotor, {name} bulk] Rho & Kim at {d.speed_rpm:.0f} rpm: e/C {r['eccentricity']:.4f}, attitude "
             f"{r['attitude_deg']:.2f} deg, friction {r['friction_N']:.2f} N, Kxx {r['K'][0][0]:.4g} N/m, Cxx "
             f"{r['C'][0][0]:.4g} N s/m, threshold {r['threshold_rpm']:.0f} rpm, {orbit}")
     log(f"written: {save(plots.dynamics(d), out / 'dynamics.png')}")

@@ -55,13 +55,13 @@ def main(argv=None):
     save(plots.descent_vs_time(runs, rq, P.LOAD), out / "fig5_vs_time.png")
     save(plots.vs_h0(study.curves_vs_h0(pads, np.linspace(0.5, 4.0, 200)), runs), out / "fig5_vs_h0.png")
     trends = study.trends(pads, P.LOAD)
-    rec.put("trends", trends)
+    rec.put("trends", trends.rows)
     rec.put("seed_spread_H1.5", study.seed_spread(lambda s: ThrustPad(P.PAD["length"], P.PAD["width"],
                                                                       P.PAD["viscosity"], surface=s, grid=(4, 4)),
-                                                  P.GAMMAS, n))
+                                                  P.GAMMAS, n).per_gamma)
     fit = study.asperity_load_vs_area(pads, np.geomspace(50.0, 8000.0, 8 if a.quick else 14))
     save(plots.asperity_load_vs_area(fit, runs), out / "fig6_wasp_vs_area.png")
-    rec.put("fig6", fit)
+    rec.put("fig6", dict(fit.per_gamma, all=fit.overall))
     rec.put("descent", {f"{g:.4g}": dict(h_eq_over_rq=pads[g].equilibrium(P.LOAD) / pads[g].sigma,
                                          h_end_over_rq=float(r.h0[-1] / pads[g].sigma),
                                          t_to_2rq_ms=float(np.interp(-2.0, -r.h0 / pads[g].sigma, r.t) * 1e3),
@@ -72,8 +72,8 @@ def main(argv=None):
     log(f"full 2-D DAE vs separable (gamma 1, 40x40): max |dh0/h0| = {rel:.2e}")
     for line in study.claim_verdicts(trends):
         log(line)
-    log(f"Fig. 6: W_asp against A_re over all gammas: R^2 = {fit['all']['R2']:.5f}, mean contact pressure "
-        f"{fit['all']['slope'] / 1e6:.1f} MPa")
+    log(f"Fig. 6: W_asp against A_re over all gammas: R^2 = {fit.overall['R2']:.5f}, mean contact pressure "
+        f"{fit.overall['slope'] / 1e6:.1f} MPa")
     rec.put("wall_s", time.perf_counter() - t0)
     log(f"wrote {out} ({rec.data['wall_s']:.1f} s)")
     return rec.data

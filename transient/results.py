@@ -592,6 +592,15 @@ class StatusResult(Result):
     success: bool = True
     message: str = ""
 
+    #: fields :meth:`record` leaves out besides ``success`` and ``message`` (e.g. a whole run)
+    record_skip: ClassVar[tuple] = ()
+
+    def record(self) -> dict:
+        """The fields as a JSON-ready dict (arrays as lists), for a study's numbers file."""
+        skip = {"success", "message", *self.record_skip}
+        return {f.name: (lambda v: v.tolist() if isinstance(v, np.ndarray) else v)(getattr(self, f.name))
+                for f in dataclasses.fields(self) if f.name not in skip}
+
 
 @result_type
 class RunResult(StatusResult):

@@ -12,18 +12,18 @@ from transient.plots import figure
 def layered_profiles(res):
     """Two panels: p*(angle) at the mid-plane per layer thickness (solid: mobile layers, alpha = 0.1 h_min;
     dashed: immobile), and per layer viscosity at delta = 0.1 h_min."""
-    a = res["angle_deg"]
+    a = res.angle_deg
     fig, (ax, bx) = figure(1, 2, size=(11.5, 4.3))
-    ax.plot(a, res["base"]["profile"], "k-", lw=1.2, label="no layers")
-    for row, col in zip(res["thickness"], ("tab:blue", "tab:orange", "tab:red")):
+    ax.plot(a, res.base["profile"], "k-", lw=1.2, label="no layers")
+    for row, col in zip(res.thickness, ("tab:blue", "tab:orange", "tab:red")):
         d = row["delta_over_hmin"]
         ax.plot(a, row["mobile"]["profile"], "-", color=col, label=f"delta = {d:g} h_min")
         ax.plot(a, row["immobile"]["profile"], "--", color=col, lw=0.8)
     ax.set(xlabel="angle from the top, with the rotation [deg]", ylabel="p / p0 at the mid-plane [-]",
            title="layer thickness (dashed: immobile layers, alpha = 0)", xlim=(90, 270))
     ax.legend(fontsize=8)
-    bx.plot(a, res["base"]["profile"], "k-", lw=1.2, label="no layers")
-    for row in res["viscosity"]:
+    bx.plot(a, res.base["profile"], "k-", lw=1.2, label="no layers")
+    for row in res.viscosity:
         bx.plot(a, row["profile"], label=f"mu_ab = {row['mu_ab_over_mu']:g} mu")
     bx.set(xlabel="angle [deg]", ylabel="p / p0 at the mid-plane [-]", title="layer viscosity (delta = 0.1 h_min)",
            xlim=(90, 270))
@@ -34,18 +34,18 @@ def layered_profiles(res):
 def gecim_profiles(res):
     """Two panels with the Gecim bulk (:func:`transient.study.layers.gecim_cases`): p*(angle) at the mid-plane per
     layer thickness (solid: Gecim bulk, dashed: Newtonian bulk; mobile layers), and per layer viscosity."""
-    a = res["angle_deg"]
+    a = res.angle_deg
     fig, (ax, bx) = figure(1, 2, size=(11.5, 4.3))
-    ax.plot(a, res["base"]["gecim"]["profile"], "k-", lw=1.2, label="no layers")
-    ax.plot(a, res["base"]["newtonian"]["profile"], "k--", lw=0.8)
-    for row, col in zip(res["thickness"], ("tab:blue", "tab:orange", "tab:red")):
+    ax.plot(a, res.base["gecim"]["profile"], "k-", lw=1.2, label="no layers")
+    ax.plot(a, res.base["newtonian"]["profile"], "k--", lw=0.8)
+    for row, col in zip(res.thickness, ("tab:blue", "tab:orange", "tab:red")):
         ax.plot(a, row["gecim"]["profile"], "-", color=col, label=f"delta = {row['delta_over_hmin']:g} h_min")
         ax.plot(a, row["newtonian"]["profile"], "--", color=col, lw=0.8)
     ax.set(xlabel="angle from the top, with the rotation [deg]", ylabel="p / p0 at the mid-plane [-]",
            title="Gecim bulk, layer thickness (dashed: Newtonian bulk)", xlim=(90, 270))
     ax.legend(fontsize=8)
-    bx.plot(a, res["base"]["gecim"]["profile"], "k-", lw=1.2, label="no layers")
-    for row in res["viscosity"]:
+    bx.plot(a, res.base["gecim"]["profile"], "k-", lw=1.2, label="no layers")
+    for row in res.viscosity:
         bx.plot(a, row["profile"], label=f"mu_ab = {row['mu_ab_over_mu']:g} mu")
     bx.set(xlabel="angle [deg]", ylabel="p / p0 at the mid-plane [-]", title="Gecim bulk, layer viscosity "
            "(delta = 0.1 h_min)", xlim=(90, 270))
@@ -57,8 +57,8 @@ def immobility(res):
     """Figs. 9-11's question with the Gecim bulk, from mobile to immobile layers: the velocity across the film at the
     mid-plane pressure peak and the shear stress at the journal-side interface along the angle for the first case
     (top), and each other case's difference from it (bottom: the cases lie within a line width of each other)."""
-    a = res["angle_deg"]
-    rows = res["immobility"]
+    a = res.angle_deg
+    rows = res.immobility
     ref = rows[0]
     fig, ((ax, bx), (cx, dx)) = figure(2, 2, size=(11.5, 7.4))
     lab = lambda r: f"alpha = {r['alpha_over_hmin']:g} h_min, mu_ab = {r['mu_ab_over_mu']:g} mu"  # noqa: E731
@@ -85,9 +85,9 @@ def immobility(res):
 def pressure_fields(res):
     """Figs. 3-6's view with the Gecim bulk: p/p0 over the angle and the half length (mid-plane at 0) for each
     layer thickness, on one colour scale."""
-    a, z = res["angle_deg"], res["z_over_B"]
-    cases = [("no layers", res["base"]["gecim"]["field"])] + [
-        (f"delta = {r['delta_over_hmin']:g} h_min", r["gecim"]["field"]) for r in res["thickness"]]
+    a, z = res.angle_deg, res.z_over_B
+    cases = [("no layers", res.base["gecim"]["field"])] + [
+        (f"delta = {r['delta_over_hmin']:g} h_min", r["gecim"]["field"]) for r in res.thickness]
     top = max(float(f.max()) for _, f in cases)
     fig, axes = figure(1, len(cases), size=(3.3 * len(cases), 3.6))
     for ax, (title, f) in zip(axes, cases):
@@ -105,7 +105,7 @@ def dynamics(res):
     legend."""
     fig, ax = figure(1, 1, size=(5.8, 5.4))
     for name, colour in (("newtonian", "black"), ("gecim", "tab:red")):
-        r = res[name]
+        r = getattr(res, name)
         x, y = np.asarray(r["x_C"]), np.asarray(r["y_C"])
         state = (f"periodic, |mu| {r['max_multiplier']:.2f}" if r.get("converged") else "NOT converged")
         ax.plot(np.append(y, y[0]), np.append(x, x[0]), "-", color=colour,
@@ -113,7 +113,7 @@ def dynamics(res):
         if "equilibrium_C" in r:
             ax.plot(r["equilibrium_C"][1], r["equilibrium_C"][0], "+", color=colour, ms=9)
     ax.set(xlabel="y / C (90 deg ahead of the load, with the rotation) [-]", ylabel="x / C (towards the load) [-]",
-           title=f"periodic unbalance orbit at {res['speed_rpm']:.0f} rpm (+: static equilibrium)")
+           title=f"periodic unbalance orbit at {res.speed_rpm:.0f} rpm (+: static equilibrium)")
     ax.invert_yaxis()
     ax.set_aspect("equal", adjustable="datalim")
     ax.title.set_fontsize(9)

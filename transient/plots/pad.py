@@ -58,10 +58,11 @@ def descent_vs_time(runs: dict, rq, load):
     return fig
 
 
-def vs_h0(curves: dict, runs: dict, v_ref=1e-3):
+def vs_h0(curves, runs: dict):
     """Fig. 5 against h0/Rq: contact area, asperity load, film load in the descent and at a fixed closing rate."""
     fig, ax = figure(1, 4, size=(17, 4.2))
-    for g, c in curves.items():
+    v_ref = curves.v_ref
+    for g, c in curves.per_gamma.items():
         kw = _style(g)
         ax[0].semilogy(c["H"], c["area_pct"], **kw)
         ax[1].semilogy(c["H"], c["w_asp"], **kw)
@@ -78,18 +79,18 @@ def vs_h0(curves: dict, runs: dict, v_ref=1e-3):
     return fig
 
 
-def asperity_load_vs_area(fit: dict, runs: dict):
+def asperity_load_vs_area(fit, runs: dict):
     """Fig. 6: asperity load against real contact area: equilibria of a load sweep (markers), the descents
     (lines) and the straight line through all points."""
     fig, ax = figure(size=(6.5, 5))
     for g, r in runs.items():
-        f = fit[f"{g:.4g}"]
+        f = fit.per_gamma[f"{g:.4g}"]
         kw = _style(g)
         ax.plot(f["A_re"] * 1e6, f["W_asp"], "o", color=kw["color"],
                 label=f"{kw['label']}: R² = {f['R2']:.4f}, slope {f['slope'] / 1e6:.0f} MPa")
         ax.plot(r.contact_area * 1e6, r.w_asp, "-", color=kw["color"], lw=0.8, alpha=0.6)
-    a = fit["all"]
-    xx = np.linspace(0, max(f["A_re"].max() for k, f in fit.items() if k != "all"), 10)
+    a = fit.overall
+    xx = np.linspace(0, max(f["A_re"].max() for f in fit.per_gamma.values()), 10)
     ax.plot(xx * 1e6, a["slope"] * xx + a["intercept"], "k--", lw=1,
             label=f"all: R² = {a['R2']:.4f}, p_r = {a['slope'] / 1e6:.0f} MPa")
     ax.set(xlabel="real contact area A_re [mm²]", ylabel="W_asp [N]", title="Fig. 6: asperity load vs real contact area")

@@ -32,7 +32,6 @@ from __future__ import annotations
 import json
 import math
 import os
-import sys
 import time
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -42,6 +41,7 @@ import numpy as np
 
 from transient.results import FileFault, _content_digest, atomic_savez, code_version, npz_headers, read_npz
 from transient.solvers.integrate import Stats, solve
+from transient.solvers.progress import FRACTIONAL, progress_bar
 
 CHECKPOINT_FORMAT = "transient-checkpoint/2"
 MAX_CHUNKS = 1_000_000
@@ -120,7 +120,7 @@ def run_long(problem_at: Callable, y0, t0: float, dt_out: float, n_outputs: int,
         resumed_from = k
         n_chunks = -(-(n_outputs - k) // chunk_outputs)
         progress = (n_chunks > 1) if progress is None else bool(progress)
-        bar = _bar(progress, n_outputs * dt_out / ulen, k * dt_out / ulen, uname, label)
+        bar = progress_bar(progress, n_outputs * dt_out / ulen, uname, label, k * dt_out / ulen, FRACTIONAL)
         wall0 = time.perf_counter()
         deadline = math.inf if time_budget is None else wall0 + float(time_budget)
         out = Outcome(y=y, t=t0 + k * dt_out, stats=stats, outputs_done=k, resumed_from=resumed_from)
@@ -189,15 +189,6 @@ class _Last:
         self.out.y = np.array(y)
         self.out.t = float(t)
         self.recorder.observe(t, y)
-
-
-def _bar(enabled, total, initial, unit, label):
-    if not enabled:
-        return None
-    from tqdm.auto import tqdm
-
-    return tqdm(total=total, initial=initial, unit=unit, desc=label, file=sys.stderr, dynamic_ncols=True,
-                bar_format="{desc}: {percentage:3.0f}%|{bar}| {n:.4g}/{total:.4g} {unit} [{elapsed}<{remaining}] {postfix}")
 
 
 def _accumulate(total: Stats, part: Stats):

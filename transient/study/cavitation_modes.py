@@ -11,7 +11,6 @@ e/C ~ 0.5).
 
 from __future__ import annotations
 
-import dataclasses
 
 import numpy as np
 
@@ -42,11 +41,6 @@ class ModeComparison(StatusResult):
             if getattr(self, f"d{q}_max") is None:
                 d = np.abs(relative_difference(self, q))
                 setattr(self, f"d{q}_max", d.reshape(len(self.loads), -1).max(axis=1))
-
-    def record(self) -> dict:
-        """The table as a JSON-ready dict (arrays as lists)."""
-        return {f.name: (lambda v: v.tolist() if isinstance(v, np.ndarray) else v)(getattr(self, f.name))
-                for f in dataclasses.fields(self) if f.name not in ("success", "message")}
 
 
 @result_type

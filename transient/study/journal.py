@@ -17,7 +17,6 @@ there says "NOT settled"); the estimate is saved with each point.
 
 from __future__ import annotations
 
-import dataclasses
 
 import numpy as np
 
@@ -57,9 +56,7 @@ class EquilibriumOrbit(StatusResult):
     spectrum_order: np.ndarray = quantity("-", default_factory=lambda: np.zeros(0))
     spectrum_amplitude_C: np.ndarray = quantity("-", default_factory=lambda: np.zeros(0))
 
-    def record(self) -> dict:
-        """The numbers as a JSON-ready dict (arrays as lists; the orbit run left out)."""
-        return _record(self, skip=("orbit", "success", "message"))
+    record_skip = ("orbit",)  # the run itself is saved on its own
 
 
 def orbit_from_equilibrium(orbit, revolutions, rtol, outputs_per_revolution=64, fft_revolutions=10,
@@ -215,14 +212,3 @@ def stability_run(orbit, perturbation, revolutions, rtol, outputs_per_revolution
                      verdict="grows" if slope > 0 else "decays", wall_s=res.stats.wall_time,
                      touched=res.touched_at is not None, revolutions_axis=res.revolutions.tolist(),
                      distance_C=r.tolist())
-
-
-def _record(result, skip=()) -> dict:
-    """The fields of a study result as a JSON-ready dict (arrays as lists)."""
-    out = {}
-    for f in dataclasses.fields(result):
-        if f.name in skip:
-            continue
-        v = getattr(result, f.name)
-        out[f.name] = v.tolist() if isinstance(v, np.ndarray) else v
-    return out

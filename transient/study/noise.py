@@ -67,8 +67,6 @@ def bearing_noise(orbit, revolutions=4, harmonics=5, *, settle_revolutions=None,
     else:
         s = settle(orbit, tol=tol, confirm=confirm, max_periods=max_settle_revolutions, chunk_periods=chunk_revolutions,
                    periods=settle_revolutions, what=what, progress=progress, **kw)  # its tqdm bar, no print
-    if progress and periodic:
-        print(f"  {what}: {s.periods} revolutions integrated by shooting ({s.wall_time:.1f} s)", flush=True)
     t1 = time.perf_counter()
     r = orbit.run(revolutions, outputs_per_revolution=S, record=("pressure",), start=s.result, progress=False, **kw)
     if r.touched_at is not None or not r.success:

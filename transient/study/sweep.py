@@ -40,6 +40,7 @@ from pathlib import Path
 import numpy as np
 
 from transient.results import StatusResult, atomic_write, code_version, file_error, quantity, read_npz, result_type
+from transient.solvers.progress import progress_bar
 from transient.study.scenario import default_root
 from transient.study.scene import KINDS, Scene
 
@@ -290,7 +291,7 @@ def sweep(scene: Scene, values: dict, *, store=None, workers: int | None = None,
     todo = [j for j in jobs if j[3] not in rows]
     reused = len(jobs) - len(todo)
     t0 = time.perf_counter()
-    bar = _bar(progress, len(jobs), reused, kind)
+    bar = progress_bar(progress, len(jobs), "point", f"sweep {kind}", reused)
     try:
         for row in _execute(todo, workers, scheduler):
             rows[row["key"]] = row
@@ -312,14 +313,6 @@ def sweep(scene: Scene, values: dict, *, store=None, workers: int | None = None,
     if figures if figures is not None else scene.outputs.get("figures", True):
         _figures(scene, res, store)
     return res
-
-
-def _bar(enabled, total, initial, kind):
-    if not enabled:
-        return None
-    from tqdm.auto import tqdm
-
-    return tqdm(total=total, initial=initial, unit="point", desc=f"sweep {kind}", file=sys.stderr, dynamic_ncols=True)
 
 
 def _execute(jobs, workers, scheduler):

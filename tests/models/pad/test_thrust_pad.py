@@ -283,11 +283,11 @@ def test_other_validation():
 
 def test_the_papers_claims_print_as_reproduced_or_not_with_the_reason():
     """One line per claim of the paper: "reproduced" only where the trend holds at every h0/Rq checked."""
-    from transient.study.pad import CLAIMS, claim_verdicts
+    from transient.study.pad import CLAIMS, Trends, claim_verdicts
 
     rows = {"H=1": {k: True for k, _, _ in CLAIMS}, "H=2": {k: True for k, _, _ in CLAIMS}}
     rows["H=2"]["iso_largest_W_asp"] = False
-    lines = claim_verdicts(rows)
+    lines = claim_verdicts(Trends(rows=rows))
     assert len(lines) == len(CLAIMS) and all(line.startswith("paper's claim: ") for line in lines)
     assert lines[0].endswith("reproduced (at h0/Rq = 1, 2)")
     assert "NOT reproduced (fails at h0/Rq = 2 of h0/Rq = 1, 2; see docs/validation.md" in lines[1]

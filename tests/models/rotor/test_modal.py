@@ -78,6 +78,11 @@ def test_reduction_error_falls_as_modes_grow():
     assert resp[2] < 5e-3 and resp[8] < 3e-4 and resp[16] < 1e-5
 
 
+def test_keeping_every_dof_is_the_full_model():
+    r = reduce(M, K, None, G, np.arange(52), 0)
+    assert np.array_equal(r.basis, np.eye(52)) and np.array_equal(r.mass, M) and np.array_equal(r.gyroscopic, G)
+
+
 def test_bad_input_names_the_parameter():
     with pytest.raises(ValueError, match=r"keep = .* \[-\] must hold distinct dof indices in \[0, 51\]"):
         reduce(M, K, None, G, [0, 52], 2)

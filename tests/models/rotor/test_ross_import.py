@@ -124,6 +124,49 @@ def test_critical_speeds_equal_ross(film_coefficients):
     assert damped.size == 3
 
 
+@pytest.mark.slow
+def test_campbell_equals_ross_modal_analysis(film_coefficients):
+    """The six lowest damped frequencies and log decrements at 0, 500 and 1000 rad/s against ROSS's run_modal
+    (dense) on the same rotor and bearings (measured: equal to 3e-13); where ROSS calls a mode's whirl forward or
+    backward (not "Mixed"), the whirl index has that sign."""
+    Kb, Cb = film_coefficients
+    rotor = _ross_rotor(Kb, Cb)
+    m = matrices_from_ross(rotor)
+    speeds = [0.0, 500.0, 1000.0]
+    ours = lin.campbell(m["mass"], m["damping"], m["gyroscopic"], m["stiffness"], lambda w: _bearings(Kb, Cb), speeds,
+                        6, dofs=m["dofs"])
+    for i, w in enumerate(speeds):
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            modal = rotor.run_modal(w, sparse=False)
+        wd, log_dec, whirl = np.asarray(modal.wd), np.asarray(modal.log_dec), modal.whirl_direction()
+        for f, delta, index in zip(ours.frequencies[i], ours.log_decrements[i], ours.whirl[i]):
+            k = np.argmin(np.abs(wd - f))
+            assert f == pytest.approx(wd[k], rel=1e-9) and delta == pytest.approx(log_dec[k], rel=1e-9)
+            if whirl[k] in ("Forward", "Backward"):
+                assert np.sign(index) == (1 if whirl[k] == "Forward" else -1)
+
+
+def test_support_masses_and_bearings_are_left_out(film_coefficients):
+    """A bearing linked to a support point mass (ROSS's extra dofs after the shaft's): the import is the shaft and
+    disks alone."""
+    Kb, Cb = film_coefficients
+    plain = _ross_rotor()
+    steel = rs.materials.steel
+    shaft = [rs.ShaftElement(L=LENGTH, idl=0.0, odl=DIAMETER, material=steel, shear_effects=True,
+                             rotary_inertia=True, gyroscopic=True) for _ in range(ELEMENTS)]
+    disk = rs.DiskElement.from_geometry(n=ELEMENTS // 2, material=steel, width=0.1, i_d=DIAMETER, o_d=0.4)
+    support = ELEMENTS + 1
+    bearings = [rs.BearingElement(n=0, n_link=support, kxx=Kb[0, 0], kyy=Kb[1, 1], cxx=Cb[0, 0], cyy=Cb[1, 1]),
+                rs.BearingElement(n=support, kxx=1e9, cxx=1e3),
+                rs.BearingElement(n=ELEMENTS, kxx=Kb[0, 0], kyy=Kb[1, 1], cxx=Cb[0, 0], cyy=Cb[1, 1])]
+    supported = rs.Rotor(shaft, [disk], bearings, point_mass_elements=[rs.PointMass(n=support, m=20.0)])
+    assert supported.ndof > 6 * (ELEMENTS + 1)
+    a, b = matrices_from_ross(plain), matrices_from_ross(supported)
+    for key in ("mass", "stiffness", "damping", "gyroscopic"):
+        assert np.array_equal(a[key], b[key]), key
+
+
 def test_not_a_ross_rotor():
     with pytest.raises(TypeError, match="ross_rotor must be a ross.Rotor"):
         matrices_from_ross(object())

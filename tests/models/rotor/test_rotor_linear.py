@@ -159,3 +159,22 @@ def test_example_rotor_on_two_film_bearings_has_its_first_critical_below_its_whi
     onset = lin.quasi_static_threshold(M, None, G, K, bearings_of_speed, (100.0, 1500.0), samples=15) * rpm
     assert critical.size == 1 and 1500 < critical[0] < 4000
     assert critical[0] < onset < 2 * critical[0] and onset < 8000
+
+
+def test_one_node_rigid_rotor_threshold_equals_the_bearings_own_lund_threshold():
+    """Rho & Kim's rigid rotor (100 kg on one bearing, 981 N) as a one-node rotor: quasi_static_threshold with
+    the bearing's K/C at each speed equals JournalBearing.stability_threshold (its own Lund eigenvalues; brentq
+    rtol 1e-4 there)."""
+    from transient.models.journal.bearing import JournalBearing
+    from transient.params.rho_kim import BEARING, ROTOR
+
+    bearing = JournalBearing(**BEARING, grid=(41, 6))
+    mass, load = ROTOR["rotor_mass"], ROTOR["load"]
+    own = bearing.stability_threshold(mass, load)
+
+    def bearings_of_speed(w):
+        return [(0, 1, *bearing.coefficients(load, w * 30 / math.pi))]
+
+    ours = lin.quasi_static_threshold(np.eye(2) * mass, None, None, np.zeros((2, 2)), bearings_of_speed,
+                                      (own * 0.8 * math.pi / 30, own * 1.2 * math.pi / 30), samples=3)
+    assert ours * 30 / math.pi == pytest.approx(own, rel=3e-4)

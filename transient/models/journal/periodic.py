@@ -42,6 +42,7 @@ from transient.models.journal.kernels import N_ROTOR
 from transient.results import StatusResult, quantity, result_type
 from transient.solvers.integrate import solve
 from transient.solvers.settling import settled_stop, settles
+from transient.solvers.progress import progress_bar
 from transient.solvers.shooting import floquet_multipliers, newton_krylov, newton_picard
 
 METHODS = ("shooting", "newton-krylov")
@@ -350,6 +351,7 @@ def response_curve(orbit: Orbit, speeds_rpm, rtol: float = 1e-5, tol: float | No
     path = [p.speed_rpm for p in done]
     orbits, whirls = [], []
     basis = done[-1].basis if done and done[-1].max_multiplier > REFINE_FLOOR else None
+    bar = progress_bar(progress, speeds.size, "speed", "periodic responses")
     for s in speeds:
         o = orbit if s == orbit.speed_rpm else orbit.at_speed(s)
         start = _extrapolate(np.array(path), [p.state for p in done], s, 3 if predictor == "quadratic" else 2)
@@ -367,10 +369,13 @@ def response_curve(orbit: Orbit, speeds_rpm, rtol: float = 1e-5, tol: float | No
         if whirl_revolutions > 0 and p.converged and not p.stable:
             w = quasi_periodic_response(o, whirl_revolutions, start=p.state, rtol=rtol)
         whirls.append(w)
-        if progress:
-            print(f"  {s:7.0f} rpm: semi-major {p.semi_major / o.bearing.clearance if p.t.size else np.nan:.5f} C, "
-                  f"|mu| {p.max_multiplier:.4f}, {p.iterations} iterations, {p.revolutions_integrated} periods, "
-                  f"{p.wall_time:.1f} s" + ("" if p.converged else " NOT CONVERGED"), flush=True)
+        if bar:
+            bar.set_postfix_str(f"{s:.0f} rpm: semi-major {p.semi_major / o.bearing.clearance if p.t.size else np.nan:.5f}"
+                                f" C, |mu| {p.max_multiplier:.4f}, {p.iterations} iterations"
+                                + ("" if p.converged else ", NOT CONVERGED"))
+            bar.update()
+    if bar:
+        bar.close()
     return _curve(speeds, orbits, whirls)
 
 

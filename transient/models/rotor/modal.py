@@ -52,6 +52,8 @@ def reduce(mass, stiffness, damping, gyroscopic, keep, modes) -> ReducedModel:
     b = _keep(keep, n)
     i = np.setdiff1d(np.arange(n), b)
     nm = check_int("modes", modes, "-", 0, i.size)
+    if i.size == 0:  # everything kept: nothing to reduce
+        return ReducedModel(M, K, None if damping is None else C, None if gyroscopic is None else G, np.eye(n))
     Kii, Kib, Mii = K[np.ix_(i, i)], K[np.ix_(i, b)], M[np.ix_(i, i)]
     w2, phi = sl.eigh(Kii, Mii, subset_by_index=[0, max(nm, 1) - 1])
     scale = np.max(np.diag(Kii) / np.diag(Mii))  # ~ the largest w^2 of the fixed-interface model
