@@ -265,8 +265,13 @@ class RotorBearingSystem:
         """Each bearing's linearised stiffness K [N/m] and damping C [N s/m] (2x2, the bearing's frame) at the
         load it carries in the static equilibrium: ``{node: (K, C)}`` (``JournalBearing.coefficients``)."""
         eq = self.equilibrium(speed_rpm) if equilibrium is None else equilibrium
-        return {node: self.bearings[node].coefficients(float(eq.bearing_load[k]), speed_rpm)
-                for k, node in enumerate(self.bearing_nodes)}
+        out, done = {}, {}
+        for k, node in enumerate(self.bearing_nodes):
+            key = (id(self.bearings[node]), float(eq.bearing_load[k]))  # a bearing shared at equal loads: once
+            if key not in done:
+                done[key] = self.bearings[node].coefficients(key[1], speed_rpm)
+            out[node] = done[key]
+        return out
 
     def _linear_matrices(self, coefficients):
         """(M, C, G, K, bearings) for :mod:`transient.models.rotor.linear`: each bearing on the rotor coordinates
