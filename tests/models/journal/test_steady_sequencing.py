@@ -1,4 +1,4 @@
-"""The steady Elrod film by grid sequencing (JournalBearing.film_solve, Film.solve(prolonged=True)) against the solve
+"""The steady Elrod film by grid sequencing (JournalBearing.film_solve, Film.solve(chord=True)) against the solve
 from rest on the same grid: the same discrete film, so the same load, pressure and mass balance to the solver's
 tolerance; and the interpolation that carries a coarse film to the fine grid (fv.grid.interpolate_cells).
 Timings: transient/bench/steady_film.py."""
@@ -126,11 +126,11 @@ def test_equilibrium_and_coefficients_with_sequencing_equal_those_without(monkey
 
 
 def test_a_bad_prolonged_start_still_reaches_the_film_from_rest():
-    """``prolonged=True`` from a start far from the film (all at the ambient): plain chord Newton, or, should it
+    """``chord=True`` from a start far from the film (all at the ambient): plain chord Newton, or, should it
     fail, the pseudo-transient solve from the same start -- the same film either way."""
     b = pfeil((96, 12))
     ref = from_rest(b, 0.6, 0.0)
     f = b.film(RPM)
-    u, its = f.solve(0.6, 0.0, u0=np.zeros(b.grid.n), prolonged=True)
+    u, its = f.solve(0.6, 0.0, u0=np.zeros(b.grid.n), chord=True)
     s = f.state(u, 0.6, 0.0, its)
     assert s.load == pytest.approx(ref.load, rel=1e-9)

@@ -276,7 +276,7 @@ class JournalBearing:
         sequencing above ``SEQUENCE_CELLS`` cells: the same film on :meth:`coarser` grids, down to one below that
         size or with fewer than twice ``SEQUENCE_MIN_THETA`` circumferential cells, solved from rest (:meth:`Film.solve <transient.models.journal.film.Film.solve>`), each interpolated to
         the next finer grid (:func:`~transient.fv.grid.interpolate_cells`) as the start of its Newton iteration
-        (``prolonged``). The fronts of the film then start next to where they end, instead of crossing the grid one
+        (``chord=True``). The fronts of the film then start next to where they end, instead of crossing the grid one
         cell per iteration. Also returns the levels, coarsest first: (grid shape, iterations, factorisations). The
         Reynolds-condition film and the small grids: one solve from rest."""
         if isinstance(film, ReynoldsFilm) or film.n <= SEQUENCE_CELLS or self.grid_shape[0] < 2 * SEQUENCE_MIN_THETA:
@@ -284,7 +284,7 @@ class JournalBearing:
             return u, its, [(self.grid_shape, its, getattr(film, "factorisations", 0))]
         coarse = self.coarser()
         uc, _, levels = coarse.film_solve(coarse.film(film.speed_rpm), X, Y)
-        u, its = film.solve(X, Y, u0=interpolate_cells(coarse.grid, uc, self.grid), prolonged=True)
+        u, its = film.solve(X, Y, u0=interpolate_cells(coarse.grid, uc, self.grid), chord=True)
         return u, its, levels + [(self.grid_shape, its, film.factorisations)]
 
     def equilibrium(self, load, speed_rpm, tol=1e-10, max_iter=40) -> FilmState:

@@ -26,7 +26,7 @@ from transient.physics.layered import NO_LAYERS, Gecim, LayeredFilm
 from transient.solvers.newton import NewtonError, newton
 
 
-#: Residual [max(1, |u|)] at which the chord iteration of a prolonged start stops (Film.solve).
+#: Residual [max(1, |u|)] at which the chord iteration from a prolonged start stops (Film.solve(chord=True)).
 CHORD_RESIDUAL = 1e-13
 #: SuperLU's column ordering in the solve from a prolonged start: minimum degree on A^T + A (the 5-point pattern is
 #: symmetric) fills 35 % less than the default COLAMD at 800 x 102 and made the sequenced solve 21 % faster
@@ -127,7 +127,7 @@ class Film(FilmBlock):
         film_jacobian(read_only(u), X, Y, VX, VY, rate, data, self.switch, self.geo, self.fields, self.extras, self.fv)
         return data
 
-    def solve(self, X, Y, VX=0.0, VY=0.0, u0=None, tol=1e-10, max_iter=400, prolonged=False):
+    def solve(self, X, Y, VX=0.0, VY=0.0, u0=None, tol=1e-10, max_iter=400, chord=False):
         """Steady film G(u) = 0 for a prescribed journal state (X, Y, VX, VY), returns (u, iterations).
 
         Pseudo-transient continuation (:func:`~transient.solvers.newton.newton`): Newton steps on the
@@ -136,9 +136,10 @@ class Film(FilmBlock):
         so the solve cannot wander off into unphysical branches. Converged when the Newton step and the
         residual are below ``tol`` and 1e-8 of ``max(1, |u|)``.
 
-        ``prolonged=True``: ``u0`` is the steady film of a coarser grid interpolated to this one (grid sequencing,
-        :meth:`~transient.models.journal.bearing.JournalBearing.film_solve`), already next to the solution: plain
-        Newton with the line search, keeping the factorisation while the residual falls at least twofold per
+        ``chord=True``: ``u0`` is the steady film of a coarser grid interpolated to this one (a prolonged start: grid
+        sequencing, :meth:`~transient.models.journal.bearing.JournalBearing.film_solve`), next to the solution
+        (not a film at another journal position: from there plain Newton wanders, measured): plain Newton with the
+        line search, keeping the factorisation while the residual falls at least twofold per
         iteration (chord; SuperLU with the ``PROLONGED_ORDERING``), until also the residual is below
         ``CHORD_RESIDUAL`` of ``max(1, |u|)`` (a chord converges linearly: this takes the solution and the mass
         balance to the rounding level a Newton step reaches); should that fail, the pseudo-transient solve from the
@@ -156,7 +157,7 @@ class Film(FilmBlock):
             return float(np.max(np.abs(dv))) <= tol * scale and float(np.max(np.abs(r))) <= r_tol * scale
 
         self.factorisations = 0
-        if prolonged and u0 is not None:
+        if chord and u0 is not None:
             try:
                 lu = lambda v, rate: spla.splu(J(v, rate), permc_spec=PROLONGED_ORDERING)  # noqa: E731
                 res = newton(G, lu, u, max_iter=max_iter, chord=True, name="film solve",
