@@ -84,9 +84,9 @@ def markdown(r) -> str:
         g = case["grid"]
         for name, c in case["methods"].items():
             levels = " -> ".join(f"{a} x {b}: {i}/{k}" for (a, b), i, k in c["levels"])
-            rows.append(f"| {g[0]} x {g[1]} | {name} | {c['iterations']} | {c['factorisations']} | {c['seconds']:.2f} | "
-                        f"{c['speed_up']:.1f} | {c['load']:.6f} | {c['load_rel_diff']:.1e} | {c['mass_balance']:.1e} | "
-                        f"{levels} |")
+            rows.append(f"| {g[0]} x {g[1]} | {name} | {c['iterations']} | {c['factorisations']} | "
+                        f"{c['seconds']:.2f} | {c['speed_up']:.1f} | {c['load']:.6f} | {c['load_rel_diff']:.1e} | "
+                        f"{c['mass_balance']:.1e} | {levels} |")
     return "\n".join([
         f"## {TITLE}", "",
         "Pfeil's demonstration bearing (60 mm groove at 270 deg, 70 kPa), e/C 0.5, 3000 rpm; grids on the half length. "

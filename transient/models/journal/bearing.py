@@ -273,12 +273,13 @@ class JournalBearing:
 
     def film_solve(self, film, X, Y) -> tuple[np.ndarray, int, list]:
         """The steady film ``u`` of ``film`` (this bearing's, any speed) at (X, Y) and its Newton iterations, by grid
-        sequencing above ``SEQUENCE_CELLS`` cells: the same film on :meth:`coarser` grids, down to one below that
-        size or with fewer than twice ``SEQUENCE_MIN_THETA`` circumferential cells, solved from rest (:meth:`Film.solve <transient.models.journal.film.Film.solve>`), each interpolated to
-        the next finer grid (:func:`~transient.fv.grid.interpolate_cells`) as the start of its Newton iteration
-        (``chord=True``). The fronts of the film then start next to where they end, instead of crossing the grid one
-        cell per iteration. Also returns the levels, coarsest first: (grid shape, iterations, factorisations). The
-        Reynolds-condition film and the small grids: one solve from rest."""
+        sequencing above ``SEQUENCE_CELLS`` cells: the same film on :meth:`coarser` grids, down to one of at most that
+        size or with fewer than twice ``SEQUENCE_MIN_THETA`` circumferential cells, solved from rest
+        (:meth:`Film.solve <transient.models.journal.film.Film.solve>`), each interpolated to the next finer grid
+        (:func:`~transient.fv.grid.interpolate_cells`) as the start of its Newton iteration (``chord=True``). The
+        fronts of the film then start next to where they end, instead of crossing the grid one cell per iteration.
+        Also returns the levels, coarsest first: (grid shape, iterations, factorisations). The Reynolds-condition
+        film and the small grids: one solve from rest."""
         if isinstance(film, ReynoldsFilm) or film.n <= SEQUENCE_CELLS or self.grid_shape[0] < 2 * SEQUENCE_MIN_THETA:
             u, its = film.solve(X, Y)
             return u, its, [(self.grid_shape, its, getattr(film, "factorisations", 0))]

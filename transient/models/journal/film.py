@@ -139,11 +139,11 @@ class Film(FilmBlock):
         ``chord=True``: ``u0`` is the steady film of a coarser grid interpolated to this one (a prolonged start: grid
         sequencing, :meth:`~transient.models.journal.bearing.JournalBearing.film_solve`), next to the solution
         (not a film at another journal position: from there plain Newton wanders, measured): plain Newton with the
-        line search, keeping the factorisation while the residual falls at least twofold per
-        iteration (chord; SuperLU with the ``PROLONGED_ORDERING``), until also the residual is below
-        ``CHORD_RESIDUAL`` of ``max(1, |u|)`` (a chord converges linearly: this takes the solution and the mass
-        balance to the rounding level a Newton step reaches); should that fail, the pseudo-transient solve from the
-        same start. The number of factorisations of the last solve is ``self.factorisations``.
+        line search, keeping the factorisation while the residual falls at least twofold per iteration (chord;
+        SuperLU with the ``PROLONGED_ORDERING``), until also the residual is below ``CHORD_RESIDUAL`` of
+        ``max(1, |u|)`` (a chord converges linearly: this takes the solution and the mass balance to the rounding
+        level a Newton step reaches); should that fail, the pseudo-transient solve from the same start. The number
+        of factorisations of the last solve is ``self.factorisations``.
         """
         n = self.n
         u = np.zeros(n) if u0 is None else np.array(u0, dtype=float)
