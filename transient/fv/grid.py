@@ -201,3 +201,32 @@ class Grid2D:
 
     def __repr__(self):
         return f"Grid2D(nx={self.nx}, nz={self.nz}, x={self.x!r}, z={self.z!r}, fixed={int(self.fixed.sum())})"
+
+
+def _centre_weights(axis: Axis, points) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """For each point: the two cells of ``axis`` whose centres bracket it and the weight of the second (linear
+    interpolation); a periodic axis wraps, a bounded one holds its end cells' values beyond their centres."""
+    c, index = axis.centres, np.arange(axis.n)
+    if axis.periodic:
+        c = np.concatenate([[c[-1] - axis.length], c, [c[0] + axis.length]])
+        index = np.concatenate([[axis.n - 1], index, [0]])
+        p = axis.edges[0] + np.mod(np.asarray(points, dtype=float) - axis.edges[0], axis.length)
+    else:
+        p = np.asarray(points, dtype=float)
+    if c.size == 1:
+        zero = np.zeros(p.shape, dtype=np.int64)
+        return zero, zero, np.zeros(p.shape)
+    p = np.clip(p, c[0], c[-1])
+    k = np.clip(np.searchsorted(c, p, side="right") - 1, 0, c.size - 2)
+    return index[k], index[k + 1], (p - c[k]) / (c[k + 1] - c[k])
+
+
+def interpolate_cells(source: Grid2D, values, target: Grid2D) -> np.ndarray:
+    """The cell field ``values`` of ``source`` at the cell centres of ``target`` (a grid of the same domain, e.g. a
+    refinement): bilinear in the cell centres, a periodic axis wrapped, a bounded one held at its end cells' values
+    beyond their centres. The prolongation of grid sequencing (a fine solve started from a coarse solution)."""
+    v = source.to_2d(np.asarray(values, dtype=float))
+    i0, i1, wx = _centre_weights(source.x, target.x.centres)
+    j0, j1, wz = _centre_weights(source.z, target.z.centres)
+    rows = v[:, i0] * (1.0 - wx) + v[:, i1] * wx  # (source nz, target nx)
+    return (rows[j0] * (1.0 - wz)[:, None] + rows[j1] * wz[:, None]).ravel()
