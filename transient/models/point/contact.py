@@ -23,7 +23,9 @@ import numpy as np
 from transient.checks import check_choice, check_int, check_positive, check_range
 from transient.models.point.fbns import fbns
 from transient.models.point.film import PointFilm
-from transient.models.point.results import PointDry, PointSteady
+from transient.models.point.results import PointDry, PointSteady, PointTransient
+from transient.models.point.stepping import march, steady_by_time_steps
+from transient.results import Stats
 from transient.models.roller.dry import edge_positions, polonsky_keer
 from transient.models.roller.results import EHLConvergenceError
 from transient.physics import film_formulas as hd
@@ -169,8 +171,8 @@ class PointContact:
     # -- steady ------------------------------------------------------------------------------------------
     def steady(self, initial=None, tol: float = 1e-8, max_iter: int = 60, raise_on_failure: bool = True) -> PointSteady:
         """Steady film by FBNS Newton from the dry Hertz pressure (or ``initial``: a :class:`PointSteady`
-        of the same grid). A starved contact is reached from the flooded one by continuation in the inlet
-        layer when the direct solve fails. Raises :class:`EHLConvergenceError` (``raise_on_failure``) with
+        of the same grid); when Newton fails from there (starved inlets), by pseudo-transient continuation
+        (:func:`~transient.models.point.stepping.steady_by_time_steps`) from the same start. Raises :class:`EHLConvergenceError` (``raise_on_failure``) with
         the last iterate flagged ``success=False``."""
         check_range("tol", tol, "-", 1e-14, 1e-2)
         max_iter = check_int("max_iter", max_iter, "-", 1, 10000)
@@ -183,38 +185,75 @@ class PointContact:
         else:
             u0 = self.hertz_start(film)
         u, ok, norms = fbns(film, u0, tol, max_iter)
-        path = []
-        if not ok and self.inlet_film is not None and initial is None:
-            u, ok, norms, path = self._starvation_path(tol, max_iter)
-            film = self.film_problem()
-        res = self._result(film, u, ok, norms, time.perf_counter() - t0, dict(continuation=path))
+        info = dict(newton=len(norms) - 1)
+        if not ok:  # pseudo-transient continuation: the physical transient until nearly steady
+            u, ok, norms, counts = steady_by_time_steps(film, u0, tol)
+            info.update(time_steps=counts)
+        res = self._result(film, u, ok, norms, time.perf_counter() - t0, info)
         if not ok and raise_on_failure:
             raise EHLConvergenceError(f"point contact: Newton did not converge (residual {norms[-1]:.3g} after "
                                       f"{len(norms) - 1} iterations; history {[f'{v:.2g}' for v in norms]})", res)
         return res
 
-    def _starvation_path(self, tol, max_iter):
-        """Flooded solution, then the inlet layer lowered geometrically to its value (halving failed steps)."""
-        flooded = self.film_problem(inlet_film=None)
-        u, ok, norms = fbns(flooded, self.hertz_start(flooded), tol, max_iter)
-        if not ok:
-            return u, ok, norms, []
-        h_start = 4.0 * max(self.hd_central, self.inlet_film)
-        target = self.inlet_film
-        path, h_now = [], h_start
-        step = 0.5
-        while h_now > target and step > 1e-3:
-            h_try = max(target, h_now * step)
-            ut, ok_t, nt = fbns(self.film_problem(inlet_film=h_try), u, tol, max_iter)
-            if ok_t:
-                u, h_now, norms = ut, h_try, nt
-                path.append(h_try)
-                step = min(0.5, step * 0.8 if step < 0.5 else step)
-            else:
-                step = math.sqrt(step)
-                if step > 0.99:
-                    break
-        return u, h_now == target, norms, path
+    # -- transient ---------------------------------------------------------------------------------------
+    @property
+    def time_scale(self) -> float:
+        """``b/u`` [s], the unit of the scaled time."""
+        return self.hertz.b / self.speed
+
+    def transient(self, t_end: float, load=None, start="dry", rtol: float = 1e-4, max_steps: int = 5000) -> PointTransient:
+        """The film in time (:mod:`transient.models.point.stepping`: BDF2 with FBNS Newton per step).
+
+        ``t_end`` [s]; ``load`` [N]: a number or a function of ``t`` [s] (default: the contact's load);
+        ``start``: ``"dry"`` (the dry Hertz pressure with the film lifted to Hamrock-Dowson's central film,
+        the content full, or for a starved inlet the layer where it does not fill the gap) or a
+        :class:`PointSteady` / :class:`PointTransient` of this contact's grid; ``rtol`` the relative local
+        error per step. Series at every accepted step; the final fields and state (``start=`` of a next run)."""
+        t_end = check_range("t_end", t_end, "s", 0.0, 1e6, low_open=True)
+        rtol = check_range("rtol", rtol, "-", 1e-8, 0.5)
+        max_steps = check_int("max_steps", max_steps, "-", 1, 10 ** 7)
+        if load is None:
+            load = self.load
+        if callable(load):
+            f_load = load
+            check_range("load(0)", float(f_load(0.0)), "N", 0.0, 1e8, low_open=True)
+        else:
+            value = check_range("load", load, "N", 0.0, 1e8, low_open=True)
+            f_load = lambda t: value  # noqa: E731
+        film = self.film_problem()
+        if isinstance(start, str):
+            check_choice("start", start, ("dry",))
+            u0 = self.hertz_start(film)
+        else:
+            u0 = np.asarray(start.final_state if isinstance(start, PointTransient) else start.state, float)
+            if u0.size != 2 * film.n + 1:
+                raise ValueError(f"start: a state of {u0.size} unknowns; this grid has {2 * film.n + 1}")
+        ts = self.time_scale
+        ratio = lambda T: float(f_load(T * ts)) / self.load  # noqa: E731
+        c, hs = self.hertz, self.film_scale
+        jc, ic = 0, int(np.argmin(np.abs(film.x)))
+        rows = []
+
+        def observe(T, u):
+            P, _, h0 = film.split(u)
+            H = film.film(P, h0)
+            rows.append((T * ts, H[jc, ic] * hs, H.min() * hs, P.max() * c.p_max, h0 * hs, ratio(T) * self.load))
+
+        observe(0.0, u0)
+        t0 = time.perf_counter()
+        T, u, ok, msg, counts = march(film, u0, t_end / ts, ratio, rtol=rtol, h0=1e-3, max_steps=max_steps,
+                                      observe=observe)
+        wall = time.perf_counter() - t0
+        a = np.array(rows)
+        P, Th, h0 = film.split(u)
+        H = film.film(P, h0)
+        stats = Stats(n_steps=counts["steps"], n_jac=counts["newton"], n_error_test_failures=counts["rejected"],
+                      wall_time=wall)
+        return PointTransient(t=a[:, 0], h_central=a[:, 1], h_min=a[:, 2], p_max=a[:, 3], h0=a[:, 4], load=a[:, 5],
+                              x=film.x * c.b, y=film.y_full * c.b, pressure=film.full(P) * c.p_max,
+                              film=film.full(H) * hs, theta=film.full(Th), wall_time=wall, stats=stats,
+                              final_state=u, final_time=T * ts, success=bool(ok),
+                              message="completed" if ok else msg)
 
     def _result(self, film: PointFilm, u, ok, norms, wall, info) -> PointSteady:
         P, T, h0 = film.split(u)

@@ -17,14 +17,14 @@ import scipy.linalg as sla
 import scipy.sparse as sp
 
 
-def newton_step(film, u, e, rhs_extra=None, extra_p=None, extra_t=None):
+def newton_step(film, u, e, res=None, cj=0.0):
     """The full Newton step ``du`` at ``u`` (``e = film.equations(u)``), by the node-wise Schur reduction.
 
-    ``rhs_extra``: residual of the Reynolds rows to use instead of ``e["res"]`` (the transient's rows);
-    ``extra_p``/``extra_t``: additions to their P and theta blocks."""
+    ``res``, ``cj``: the Reynolds rows of a time step, ``R - cj (q - q_hat)``, and their storage coefficient
+    (default: the steady rows ``e["res"]``, ``cj = 0``)."""
     n = film.n
-    j_pp, a_t, j_h0, w = film.newton_matrix(u, e, extra_p, extra_t)
-    res = e["res"] if rhs_extra is None else rhs_extra
+    j_pp, a_t, j_h0, w = film.newton_matrix(u, e, cj)
+    res = e["res"] if res is None else res
     alpha, gamma = film.fb_derivatives(u, e)
     fb = e["fb"]
     keep_p = np.abs(gamma) >= np.abs(alpha)
@@ -52,31 +52,48 @@ def newton_step(film, u, e, rhs_extra=None, extra_p=None, extra_t=None):
     return du
 
 
-def fbns(film, u0, tol=1e-8, max_iter=60, load_ratio=1.0, step_max=0.5):
-    """Newton from ``u0`` until the largest scaled residual is below ``tol``.
+def rows(film, e, cj=0.0, q_hat=None):
+    """``(Reynolds rows, their scales)``: steady ``R``, or a time step's ``R - cj (q - q_hat)``."""
+    if not cj:
+        return e["res"], e["scale"]
+    q = film.storage(e)
+    rho_h = (e["rho"] * e["H"]).ravel()[film.flat]
+    return e["res"] - cj * (q - q_hat), e["scale"] + cj * rho_h
+
+
+def merit(film, e, cj=0.0, q_hat=None):
+    """The scaled residual vector: Reynolds rows by their scale, Fischer-Burmeister rows, load balance."""
+    r, s = rows(film, e, cj, q_hat)
+    return np.concatenate([r / s, e["fb"], [e["load"]]])
+
+
+def fbns(film, u0, tol=1e-8, max_iter=60, load_ratio=1.0, step_max=0.5, cj=0.0, q_hat=None, memory=1):
+    """Newton from ``u0`` until the largest scaled residual is below ``tol`` (steady, or one implicit time
+    step ``R - cj (q - q_hat) = 0`` when ``cj > 0``).
 
     Returns ``(u, converged, norms)``; ``norms`` the infinity norm of the scaled residual per iteration.
     The step is cut so that the film stays positive and no pressure moves by more than ``step_max`` (of
-    p_h) plus half its value in one step, then halved until the residual norm decreases."""
+    p_h) plus half its value in one step, then halved until the residual norm decreases below the largest of
+    the last ``memory`` norms (1: monotone; more: the non-monotone rule of Grippo, Lampariello & Lucidi, 1986)."""
     u = np.array(u0, float)
     e = film.equations(u, load_ratio)
-    f = film.merit_vector(e)
+    f = merit(film, e, cj, q_hat)
     norms = [float(np.max(np.abs(f)))]
+    merits = [float(np.sqrt(f @ f))]
+    n = film.n
     for _ in range(max_iter):
         if norms[-1] < tol:
             return u, True, norms
-        du = newton_step(film, u, e)
-        n = film.n
-        p = u[:n]
-        big = np.max(np.abs(du[:n]) / (step_max + 0.5 * np.abs(p)))
+        du = newton_step(film, u, e, rows(film, e, cj, q_hat)[0], cj)
+        big = np.max(np.abs(du[:n]) / (step_max + 0.5 * np.abs(u[:n])))
         s = min(1.0, 1.0 / big) if big > 0 else 1.0
-        phi0 = float(f @ f)
+        phi0 = max(v * v for v in merits[-memory:])
         accepted = False
         for _ in range(30):
             ut = u + s * du
             et = film.equations(ut, load_ratio)
             if np.min(et["H"]) > 0.0:
-                ft = film.merit_vector(et)
+                ft = merit(film, et, cj, q_hat)
                 if np.all(np.isfinite(ft)) and float(ft @ ft) < (1.0 - 1e-4 * s) * phi0:
                     accepted = True
                     break
@@ -85,4 +102,5 @@ def fbns(film, u0, tol=1e-8, max_iter=60, load_ratio=1.0, step_max=0.5):
             return u, False, norms
         u, e, f = ut, et, ft
         norms.append(float(np.max(np.abs(f))))
+        merits.append(float(np.sqrt(f @ f)))
     return u, norms[-1] < tol, norms

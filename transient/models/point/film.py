@@ -142,10 +142,6 @@ class PointFilm:
         sides = -en * (P[-1, 1:-1] - P[-2, 1:-1]) / self.dy
         return dict(inlet=float(inlet @ wy), outlet=float(outlet @ wy), sides=2.0 * float(sides.sum()) * self.dx)
 
-    def merit_vector(self, e):
-        """The scaled residual: Reynolds rows by their scale, Fischer-Burmeister rows, load balance."""
-        return np.concatenate([e["res"] / e["scale"], e["fb"], [e["load"]]])
-
     def local_matrices(self, e):
         """Sparse ``(dR/dP local, dR/dH on the half-grid nodes, dR/dtheta)`` from the kernel's slots."""
         n, nn = self.n, self.m * self.nx
@@ -170,16 +166,22 @@ class PointFilm:
         beta = np.where(rad > 0, 1.0 - b / safe, g)
         return alpha, -beta
 
-    def newton_matrix(self, u, e, extra_p=None, extra_t=None):
-        """Dense blocks of the full Jacobian: ``(J_PP, J_Ptheta (sparse), dR/dH0, load row)``.
+    def storage(self, e):
+        """The film content ``q = rho theta H`` at the unknowns (the transient's stored mass)."""
+        return (e["rho"] * e["T"] * e["H"]).ravel()[self.flat]
 
-        ``extra_p``/``extra_t``: sparse additions to the P and theta blocks (the transient's storage terms)."""
+    def newton_matrix(self, u, e, cj=0.0):
+        """Blocks of the Jacobian of the Reynolds rows ``R - cj q`` (``cj = 0``: steady): ``(J_P dense,
+        J_theta sparse, dR/dH0, load row)``; ``cj`` the time-stepper's coefficient of the storage term."""
         a_p, d_h, a_t = self.local_matrices(e)
         j_pp = np.asarray(d_h @ self.kernel())
         j_pp += a_p.toarray()
-        if extra_p is not None:
-            j_pp += extra_p
-        if extra_t is not None:
-            a_t = a_t + extra_t
         j_h0 = np.asarray(d_h.sum(axis=1)).ravel()
+        if cj:
+            f = self.flat
+            rho, drho, T, H = (e[k].ravel()[f] for k in ("rho", "drho", "T", "H"))
+            j_pp -= (cj * rho * T)[:, None] * self.kernel()[f]
+            j_pp[np.arange(self.n), np.arange(self.n)] -= cj * drho * T * H
+            a_t = a_t - sp.diags(cj * rho * H)
+            j_h0 = j_h0 - cj * rho * T
         return j_pp, a_t, j_h0, self.weight / self.load
