@@ -15,6 +15,7 @@ Public API (re-exported here):
   layers=)``), :class:`Gecim`, :class:`Newtonian`, :class:`LayeredFilm` (the pointwise flow law)
 * thrust ball bearing starvation (Jeong et al.): :class:`ThrustBallBearing`
 * EHL of a tilted tapered roller (Park): :class:`LineContact`, :class:`TaperedRoller`, :class:`RollerContact`
+* EHL point contacts, flooded or starved, steady and transient: :class:`PointContact`
 * rough surfaces and asperity contact (Lee & Rhim): :class:`RoughSurface`, :func:`greenwood_tripp`,
   :class:`AsperityContact`, :class:`DiscreteDensity`, :func:`steel_asperity_contact`,
   :func:`pressure_flow_factors`, :func:`shear_flow_factor`, :func:`contact_factor`, :class:`ThrustPad`
@@ -35,6 +36,7 @@ from transient.analysis.acoustics import a_weighting
 from transient.models.ball import ThrustBallBearing
 from transient.models.journal import CircumferentialGroove, Groove, JournalBearing, JournalOrbit, OilHole, stability_onset
 from transient.models.pad import ThrustPad
+from transient.models.point import PointContact
 from transient.models.roller import LineContact, RollerContact, TaperedRoller
 from transient.physics.asperity import AsperityContact, DiscreteDensity, greenwood_tripp, steel_asperity_contact
 from transient.physics.flow_factors import contact_factor, pressure_flow_factors, shear_flow_factor
@@ -47,7 +49,8 @@ from transient.surfaces.roughness import RoughSurface
 
 __all__ = [
     "AsperityContact", "BoundaryLayers", "CircumferentialGroove", "DiscreteDensity", "Gecim", "Groove", "Integration",
-    "LayeredFilm", "LongRun", "Newtonian", "JournalBearing", "JournalOrbit", "LineContact", "OilHole", "Problem",
+    "LayeredFilm", "LongRun", "Newtonian", "JournalBearing", "JournalOrbit", "LineContact", "OilHole", "PointContact",
+    "Problem",
     "Recording", "Result", "RollerContact", "TaperedRoller",
     "RoughSurface", "Solution", "Stats", "ThrustBallBearing", "ThrustPad", "a_weighting", "bearing_noise", "contact_factor",
     "greenwood_tripp", "load_result", "pressure_flow_factors", "stability_onset", "shear_flow_factor", "solve", "steel_asperity_contact",

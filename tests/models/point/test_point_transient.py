@@ -32,6 +32,7 @@ def test_start_from_dry_contact_settles_on_the_steady_film(contact):
     assert np.max(np.abs(r.pressure - s.pressure)) < 1e-3 * s.p_max
 
 
+@pytest.mark.slow
 def test_load_step_squeezes_to_the_steady_film_at_the_new_load(contact):
     s1 = contact.steady()
     r = contact.transient(t_end=60 * contact.time_scale, load=2 * BASE["load"], start=s1, rtol=1e-3)
