@@ -11,8 +11,8 @@ GRID = (33, 33)
 
 
 def test_bdf2_coefficients_are_exact_for_quadratics():
-    q = lambda t: 1.0 + 2.0 * t - 3.0 * t * t  # noqa: E731
-    dq = lambda t: 2.0 - 6.0 * t  # noqa: E731
+    q = lambda t: 1.0 + 2.0 * t - 3.0 * t * t
+    dq = lambda t: 2.0 - 6.0 * t
     t_prev, t_n, h = 0.0, 0.3, 0.5
     cj, q_hat = bdf_coefficients(h, t_n - t_prev, q(t_n), q(t_prev))
     assert cj * (q(t_n + h) - q_hat) == pytest.approx(dq(t_n + h), rel=1e-12)

@@ -25,12 +25,12 @@ from transient.models.point.fbns import fbns
 from transient.models.point.film import PointFilm
 from transient.models.point.results import PointDry, PointSteady, PointTransient
 from transient.models.point.stepping import march, steady_by_time_steps
-from transient.results import Stats
 from transient.models.roller.dry import edge_positions, polonsky_keer
 from transient.models.roller.results import EHLConvergenceError
 from transient.physics import film_formulas as hd
 from transient.physics.hertz import hertz_contact
 from transient.physics.lubricant import DOWSON_HIGGINSON_PARK, Lubricant
+from transient.results import Stats
 
 #: nodes required inside the Hertz semi-axis b along the rolling direction
 MIN_NODES_PER_B = 4
@@ -219,7 +219,7 @@ class PointContact:
             check_range("load(0)", float(f_load(0.0)), "N", 0.0, 1e8, low_open=True)
         else:
             value = check_range("load", load, "N", 0.0, 1e8, low_open=True)
-            f_load = lambda t: value  # noqa: E731
+            f_load = lambda t: value
         film = self.film_problem()
         if isinstance(start, str):
             check_choice("start", start, ("dry",))
@@ -229,7 +229,7 @@ class PointContact:
             if u0.size != 2 * film.n + 1:
                 raise ValueError(f"start: a state of {u0.size} unknowns; this grid has {2 * film.n + 1}")
         ts = self.time_scale
-        ratio = lambda T: float(f_load(T * ts)) / self.load  # noqa: E731
+        ratio = lambda T: float(f_load(T * ts)) / self.load
         c, hs = self.hertz, self.film_scale
         jc, ic = 0, int(np.argmin(np.abs(film.x)))
         rows = []
