@@ -18,6 +18,7 @@ Public API (re-exported here):
   :class:`RotorBearingSystem` (equilibrium, time runs with a transient film per bearing, linear unbalance
   response, stability threshold)
 * EHL of a tilted tapered roller (Park): :class:`LineContact`, :class:`TaperedRoller`, :class:`RollerContact`
+* EHL point contacts, flooded or starved, steady and transient: :class:`PointContact`
 * rough surfaces and asperity contact (Lee & Rhim): :class:`RoughSurface`, :func:`greenwood_tripp`,
   :class:`AsperityContact`, :class:`DiscreteDensity`, :func:`steel_asperity_contact`,
   :func:`pressure_flow_factors`, :func:`shear_flow_factor`, :func:`contact_factor`, :class:`ThrustPad`
@@ -38,6 +39,7 @@ from transient.analysis.acoustics import a_weighting
 from transient.models.ball import ThrustBallBearing
 from transient.models.journal import CircumferentialGroove, Groove, JournalBearing, JournalOrbit, OilHole, stability_onset
 from transient.models.pad import ThrustPad
+from transient.models.point import PointContact
 from transient.models.roller import LineContact, RollerContact, TaperedRoller
 from transient.models.rotor import Rotor, RotorBearingSystem
 from transient.physics.asperity import AsperityContact, DiscreteDensity, greenwood_tripp, steel_asperity_contact
@@ -51,8 +53,8 @@ from transient.surfaces.roughness import RoughSurface
 
 __all__ = [
     "AsperityContact", "BoundaryLayers", "CircumferentialGroove", "DiscreteDensity", "Gecim", "Groove", "Integration",
-    "LayeredFilm", "LongRun", "Newtonian", "JournalBearing", "JournalOrbit", "LineContact", "OilHole", "Problem",
-    "Recording", "Result", "RollerContact", "Rotor", "RotorBearingSystem", "TaperedRoller",
+    "LayeredFilm", "LongRun", "Newtonian", "JournalBearing", "JournalOrbit", "LineContact", "OilHole", "PointContact",
+    "Problem", "Recording", "Result", "RollerContact", "Rotor", "RotorBearingSystem", "TaperedRoller",
     "RoughSurface", "Solution", "Stats", "ThrustBallBearing", "ThrustPad", "a_weighting", "bearing_noise", "contact_factor",
     "greenwood_tripp", "load_result", "pressure_flow_factors", "stability_onset", "shear_flow_factor", "solve", "steel_asperity_contact",
 ]

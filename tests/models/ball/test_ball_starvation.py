@@ -19,7 +19,7 @@ def test_parameter_validation_names_parameter_and_unit():
         ThrustBallBearing(n_balls=40)
     b = ThrustBallBearing()
     with pytest.raises(ValueError, match="load = -3.*N"):
-        b.contact(load=-3.0)
+        b.hertz(load=-3.0)
     with pytest.raises(ValueError, match="ambient_film"):
         b.sequence(load=30, speed_rpm=80, ambient_film=-1e-6, n_passes=3)
 
@@ -32,7 +32,7 @@ def test_geometry_and_kinematics_hand_values():
     # u = omega d_e / 4 = (80 * 2 pi / 60) * 0.031 / 4 = 0.0649262 m/s; t_b = 4 pi / (6 omega) = 0.25 s
     assert b.entrainment_speed(80) == pytest.approx(0.0649262, rel=1e-6)
     assert b.pass_interval(80) == pytest.approx(0.25, rel=1e-12)
-    c = b.contact(load=30.0)
+    c = b.hertz(load=30.0)
     assert c.load_per_ball == pytest.approx(5.0)
     assert c.a > c.b and c.k == pytest.approx(c.a / c.b)
     assert 2 / 3 * c.p_max * math.pi * c.a * c.b == pytest.approx(5.0, rel=1e-12)

@@ -42,6 +42,7 @@ import numpy as np
 from transient.physics import film_formulas as hd
 from transient.physics.hertz import (HertzContact, gap_rolling_axis, gap_rolling_axis_slope, hertz_contact,
                                      meniscus_position, reduced_modulus)
+from transient.models.ball.numerical_film import NumericalFilms
 from transient.models.ball.track import FrontTrack, UniformTrack
 from transient.checks import check_choice, check_int, check_memory, check_range
 from transient.results import StatusResult, quantity, record_type, result_type
@@ -51,6 +52,8 @@ from transient.units import rpm_to_rad_s
 FLOODED, STARVED, PARCHED = "fully flooded", "starved", "parched"
 REPLENISHMENT = ("thin_film", "chiu", "chiu_thin")
 GRIDS = ("front", "uniform")
+#: the film of a pass: Hamrock-Dowson with the 0.29 starvation law, or the numerical starved point contact
+CONTACTS = ("formula", "numerical")
 
 
 
@@ -160,6 +163,11 @@ class ThrustBallBearing:
 
     Geometry: the race is flat along the rolling direction and grooved across it with radius
     ``f d``, so ``Rx = d/2`` and ``Ry = f d / (2 f - 1)``.
+
+    ``contact``: the film of each ball pass from ``"formula"`` (Hamrock-Dowson and the starvation law
+    ``H_F ((m-1)/(m_c-1))^0.29``, the paper's) or ``"numerical"`` (the starved point contact at the pass's inlet
+    film, :mod:`transient.models.ball.numerical_film`, on ``contact_grid`` nodes). The per-ball Hertz contact is
+    :meth:`hertz`.
     """
 
     pitch_diameter: float = 0.031
@@ -171,8 +179,11 @@ class ThrustBallBearing:
     viscosity: float = 0.02
     pressure_viscosity: float = 2.0e-8
     surface_tension: float = 0.036
+    contact: str = "formula"
+    contact_grid: tuple = (33, 33)
 
     def __post_init__(self):
+        check_choice("contact", self.contact, CONTACTS)
         check_range("ball_diameter", self.ball_diameter, "m", 1e-4, 1.0, high_open=True)
         check_range("pitch_diameter", self.pitch_diameter, "m", self.ball_diameter, 10.0, low_open=True, high_open=True,
                     why=f"(above ball_diameter = {self.ball_diameter:g} m)")
@@ -218,14 +229,14 @@ class ThrustBallBearing:
         return 4.0 * math.pi / rpm_to_rad_s(self.n_balls * speed_rpm)  # 4 pi / (Z omega)
 
     # contact --------------------------------------------------------------------------------------
-    def contact(self, load: float, exact: bool = True) -> HertzContact:
+    def hertz(self, load: float, exact: bool = True) -> HertzContact:
         """Per-ball Hertz contact for the bearing's TOTAL axial load [N] (per ball: load / n_balls)."""
         check_range("load", load, "N", 1e-6, 1e7, high_open=True)
         return hertz_contact(load / self.n_balls, self.rx, self.ry, self.e_prime, exact=exact)
 
     def flooded_film(self, load: float, speed_rpm: float) -> FloodedFilm:
         """Hamrock–Dowson fully flooded central/minimum film and critical menisci (per ball)."""
-        c = self.contact(load)
+        c = self.hertz(load)
         u = self.entrainment_speed(speed_rpm)
         U, G, W = hd.dimensionless_groups(self.viscosity, u, self.pressure_viscosity, c.load_per_ball,
                                           c.e_prime, c.rx)
@@ -300,7 +311,7 @@ class ThrustBallBearing:
                           profiles=8.0 * nodes * n_passes * bool(record_profiles), track=200.0 * 8 * nodes),
                      "lower n_passes, n_cells or record_profiles=False")
         check_range("ridge_fraction", ridge_fraction, "-", 0.0, 1.0, low_open=False, high_open=False)
-        c = self.contact(load)
+        c = self.hertz(load)
         ff = self.flooded_film(load, speed_rpm)
         check_range("ambient_film", ambient_film, "m", ff.h_c, 1e-2, low_open=False, high_open=True,
                     why=f"(at least the fully flooded central film h_c = {ff.h_c:.4g} m at {load:g} N, "
@@ -357,16 +368,19 @@ class ThrustBallBearing:
         else:  # the front mesh needs no floor; the uniform grid's floor mobility can drain a cell below zero
             floor = 0.0 if track.kind == "front" else 1e-9
         meniscus = _Meniscus(c)
+        films = NumericalFilms(self, c, ff.speed, self.contact_grid) if self.contact == "numerical" else None
         for n in range(n_max):
             if record_profiles:
                 profiles.append(track.profile(x_out) * h_ref)
             vol[n] = track.volume() * h_ref * a_p
             hin = track.inlet() * h_ref
             m = meniscus(hin)
-            Hc = hd.starved_central_film(ff.H_c, m, ff.m_c)
-            Hm = hd.starved_minimum_film(ff.H_min, m, ff.m_star)
-            hc = Hc * c.rx
-            h_in[n], h_cen[n], h_mn[n], ms[n] = hin, hc, Hm * c.rx, m
+            if films is None:
+                hc = hd.starved_central_film(ff.H_c, m, ff.m_c) * c.rx
+                hm = hd.starved_minimum_film(ff.H_min, m, ff.m_star) * c.rx
+            else:
+                hc, hm = films(hin, n)
+            h_in[n], h_cen[n], h_mn[n], ms[n] = hin, hc, hm, m
             if m >= ff.m_c:
                 regime.append(FLOODED)
             elif (hin - h_out_prev if n > 0 else hin) >= hc:

@@ -1,0 +1,50 @@
+"""Transient EHL point contact: its long-time limit is the steady film; a load step squeezes the film."""
+
+import numpy as np
+import pytest
+
+from transient.models.point import PointContact
+from transient.models.point.stepping import bdf_coefficients
+
+BASE = dict(load=20.0, speed=1.0, viscosity=0.04, pressure_viscosity=2e-8, modulus=2.2e11)
+GRID = (33, 33)
+
+
+def test_bdf2_coefficients_are_exact_for_quadratics():
+    q = lambda t: 1.0 + 2.0 * t - 3.0 * t * t
+    dq = lambda t: 2.0 - 6.0 * t
+    t_prev, t_n, h = 0.0, 0.3, 0.5
+    cj, q_hat = bdf_coefficients(h, t_n - t_prev, q(t_n), q(t_prev))
+    assert cj * (q(t_n + h) - q_hat) == pytest.approx(dq(t_n + h), rel=1e-12)
+
+
+@pytest.fixture(scope="module")
+def contact():
+    return PointContact(0.01, grid=GRID, domain=(-4.5, 2.0, 2.5), **BASE)
+
+
+def test_start_from_dry_contact_settles_on_the_steady_film(contact):
+    s = contact.steady()
+    r = contact.transient(t_end=60 * contact.time_scale, start="dry", rtol=1e-3)
+    assert r.success
+    assert r.h_central[-1] == pytest.approx(s.h_central, rel=1e-4)
+    assert r.h_min[-1] == pytest.approx(s.h_min, rel=1e-3)
+    assert np.max(np.abs(r.pressure - s.pressure)) < 1e-3 * s.p_max
+
+
+@pytest.mark.slow
+def test_load_step_squeezes_to_the_steady_film_at_the_new_load(contact):
+    s1 = contact.steady()
+    r = contact.transient(t_end=60 * contact.time_scale, load=2 * BASE["load"], start=s1, rtol=1e-3)
+    assert r.success
+    # the film thins to the new level (undershooting it by less than 0.1 % on the way)
+    assert r.h_central[-1] < 0.96 * r.h_central[0] and r.h_central.min() > 0.999 * r.h_central[-1]
+    # the same SI grid at the doubled load: its steady film is the transient's limit
+    b1 = contact.b
+    twice = PointContact(0.01, grid=GRID, **dict(BASE, load=2 * BASE["load"]))
+    f = b1 / twice.b
+    twice = PointContact(0.01, grid=GRID, domain=tuple(v * f for v in contact.domain), **dict(BASE, load=2 * BASE["load"]))
+    assert np.allclose(twice.x_nodes * twice.b, contact.x_nodes * b1, rtol=1e-12, atol=1e-15)
+    s2 = twice.steady()
+    assert r.h_central[-1] == pytest.approx(s2.h_central, rel=1e-4)
+    assert r.load[-1] == pytest.approx(2 * BASE["load"])

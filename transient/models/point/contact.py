@@ -1,0 +1,293 @@
+"""EHL point contact, circular or elliptical, fully flooded or starved by a prescribed inlet layer.
+
+Equations and scaling: :mod:`transient.models.point.ehl_problem` (mass-conserving fractional film, Fischer-Burmeister
+complementarity, DC-FFT elasticity, load balance by ``h0``); steady solve:
+:mod:`transient.models.point.fbns`; transient: :mod:`transient.models.point.transient`. SI at the API::
+
+    pc = PointContact(radius_x=0.01, load=20.0, speed=1.0, viscosity=0.04, pressure_viscosity=2e-8,
+                      modulus=2.2e11, inlet_film=None, grid=(65, 65))
+    s = pc.steady()        # s.h_central, s.h_min, s.p_max, s.meniscus_x, s.pressure, s.film [SI]
+
+``x`` is the rolling (entraining) direction, ``speed`` the mean entraining speed ``(u_a + u_b)/2``,
+``modulus`` the reduced modulus ``E' = 2/((1 - nu_a^2)/E_a + (1 - nu_b^2)/E_b)``, ``inlet_film`` the
+thickness [m] of the oil layer the contact meets (both surfaces together); ``None``: fully flooded.
+"""
+
+from __future__ import annotations
+
+import math
+import time
+
+import numpy as np
+
+from transient.checks import check_choice, check_int, check_positive, check_range
+from transient.models.point.fbns import fbns
+from transient.models.point.ehl_problem import PointFilm
+from transient.models.point.results import PointDry, PointSteady, PointTransient
+from transient.models.point.stepping import march, steady_by_time_steps
+from transient.models.roller.dry import edge_positions, polonsky_keer
+from transient.models.roller.results import EHLConvergenceError
+from transient.physics import film_formulas as hd
+from transient.physics.hertz import hertz_contact
+from transient.physics.lubricant import DOWSON_HIGGINSON_PARK, Lubricant
+from transient.results import Stats
+
+#: nodes required inside the Hertz semi-axis b along the rolling direction
+MIN_NODES_PER_B = 4
+
+
+class PointContact:
+    """Steady and transient EHL point contact (module docstring).
+
+    Parameters (SI): ``radius_x`` Rx [m] (reduced radius along the rolling direction), ``radius_y`` Ry [m]
+    (>= Rx; None: circular), ``load`` [N], ``speed`` [m/s], ``viscosity`` eta0 [Pa s],
+    ``pressure_viscosity`` alpha [1/Pa], ``modulus`` E' [Pa], ``density`` ``"dowson-higginson"`` or
+    ``"incompressible"``, ``viscosity_law`` ``"barus"`` or ``"roelands"``, ``inlet_film`` [m] or None,
+    ``grid`` (nx, ny) nodes (boundary included, ny odd), ``domain`` (x_in, x_out, y_half) in units of b
+    (default (-4.5, 1.5, 1 + 1.5 k), the inlet moved upstream of Hamrock-Dowson's critical meniscus when that
+    lies further out), ``dh_constants`` Dowson-Higginson's (c1, c2) [1/Pa].
+    """
+
+    def __init__(self, radius_x, radius_y=None, *, load, speed, viscosity, pressure_viscosity, modulus,
+                 density: str = "dowson-higginson", viscosity_law: str = "barus", inlet_film=None,
+                 grid=(65, 65), domain=None, dh_constants=DOWSON_HIGGINSON_PARK):
+        self.radius_x = check_range("radius_x", radius_x, "m", 1e-5, 10.0)
+        ry = self.radius_x if radius_y is None else radius_y
+        self.radius_y = check_range("radius_y", ry, "m", self.radius_x, 1e4,
+                                    why=f"(at least radius_x = {self.radius_x:g} m: x is the rolling direction "
+                                        "with the smaller radius)")
+        self.load = check_range("load", load, "N", 0.0, 1e8, low_open=True)
+        self.speed = check_range("speed", speed, "m/s", 1e-9, 1e3, why="(1 nm/s to 1 km/s)")
+        self.modulus = check_range("modulus", modulus, "Pa", 1e6, 1e14)
+        check_choice("viscosity_law", viscosity_law, ("barus", "roelands"))
+        check_choice("density", density, ("dowson-higginson", "incompressible"))
+        self.lubricant = Lubricant(viscosity=check_positive("viscosity", viscosity, "Pa s"),
+                                   pressure_viscosity=pressure_viscosity, viscosity_law=viscosity_law,
+                                   density=density, dh_constants=tuple(dh_constants))
+        self.hertz = hertz_contact(self.load, self.radius_x, self.radius_y, self.modulus)
+        c = self.hertz
+        self.U, self.G, self.W = hd.dimensionless_groups(viscosity, self.speed, pressure_viscosity, self.load,
+                                                         self.modulus, self.radius_x)
+        #: Hamrock-Dowson's fully flooded films [m] and critical meniscus (central film)
+        self.hd_central = hd.central_film_flooded(self.U, self.G, self.W, c.k) * self.radius_x
+        self.hd_minimum = hd.minimum_film_flooded(self.U, self.G, self.W, c.k) * self.radius_x
+        self.m_c = hd.critical_meniscus_central(self.hd_central / self.radius_x, self.radius_x, c.b)
+        if inlet_film is not None:
+            check_range("inlet_film", inlet_film, "m", 0.05 * self.hd_central, 1.0,
+                        why=f"(at least 5 % of the flooded central film {self.hd_central:.3g} m (Hamrock-Dowson): "
+                            "a thinner layer cannot carry the load as a film)")
+        self.inlet_film = inlet_film
+        if domain is None:
+            domain = (-max(4.5, 1.25 * self.m_c), 1.5, 1.0 + 1.5 * c.k)
+        x_in = check_range("domain[0] (inlet)", domain[0], "b", -1e4, -1.5)
+        x_out = check_range("domain[1] (outlet)", domain[1], "b", 1.2, 1e4)
+        y_half = check_range("domain[2] (half width)", domain[2], "b", 1.2 * c.k, 1e4,
+                             why=f"(beyond the Hertz semi-axis a = {c.k:.3g} b)")
+        self.domain = (x_in, x_out, y_half)
+        try:
+            nx, ny = grid
+        except (TypeError, ValueError):
+            raise ValueError(f"grid = {grid!r}: (nx, ny) node counts") from None
+        nx = check_int("grid[0]", nx, "nodes", 17, 2049)
+        ny = check_int("grid[1]", ny, "nodes", 17, 2049)
+        if ny % 2 == 0:
+            raise ValueError(f"grid[1] = {ny} nodes must be odd (a node row on the symmetry line y = 0)")
+        dx = (x_out - x_in) / (nx - 1)
+        i0 = round(-x_in / dx)
+        self.x_nodes = (np.arange(nx) - i0) * dx  # a node at x = 0 (the film's centre)
+        self.y_nodes = np.linspace(-y_half, y_half, ny)
+        per_b = 1.0 / dx
+        if per_b < MIN_NODES_PER_B or c.k / (self.y_nodes[1] - self.y_nodes[0]) < MIN_NODES_PER_B:
+            raise ValueError(f"grid = {grid!r} puts {per_b:.3g} x {c.k / (self.y_nodes[1] - self.y_nodes[0]):.3g} "
+                             f"nodes per Hertz semi-axes b x a; allowed: at least {MIN_NODES_PER_B} (more nodes or "
+                             "a smaller domain)")
+        self.grid = (nx, ny)
+
+    # -- scales ------------------------------------------------------------------------------------------
+    @property
+    def b(self) -> float:
+        """Hertz semi-axis along the rolling direction [m]."""
+        return self.hertz.b
+
+    @property
+    def film_scale(self) -> float:
+        """Film unit ``b^2/Rx`` [m]."""
+        return self.hertz.b ** 2 / self.radius_x
+
+    @property
+    def lam(self) -> float:
+        """``12 eta0 u Rx^2 / (b^3 p_h)``."""
+        c = self.hertz
+        return 12.0 * self.lubricant.viscosity * self.speed * self.radius_x ** 2 / (c.b ** 3 * c.p_max)
+
+    @property
+    def moes(self) -> tuple[float, float]:
+        """Moes' point-contact groups ``(M, L)`` = ``(W (2U)^-3/4, G (2U)^1/4)`` (Rx as the radius)."""
+        return self.W * (2.0 * self.U) ** -0.75, self.G * (2.0 * self.U) ** 0.25
+
+    def film_problem(self, inlet_film="same") -> PointFilm:
+        """The scaled discrete problem (:class:`~transient.models.point.ehl_problem.PointFilm`)."""
+        c = self.hertz
+        h_in = self.inlet_film if inlet_film == "same" else inlet_film
+        h_oil = math.inf if h_in is None else h_in / self.film_scale
+        return PointFilm(self.x_nodes, self.y_nodes, self.radius_x / self.radius_y, self.lam,
+                         2.0 * c.p_max * self.radius_x / (math.pi * self.modulus * c.b), c.p_max,
+                         self.lubricant.kernel_args(), h_oil, 2.0 * math.pi * c.k / 3.0)
+
+    def hertz_start(self, film: PointFilm) -> np.ndarray:
+        """The dry Hertz pressure, ``h0`` putting the central film at Hamrock-Dowson's, full content (starved:
+        the content ``H_oil/H`` upstream of the Hertz zone, where the layer does not fill the gap)."""
+        k = self.hertz.k
+        yy, xx = np.meshgrid(film.y, film.x, indexing="ij")
+        P = np.sqrt(np.clip(1.0 - xx ** 2 - (yy / k) ** 2, 0.0, None))
+        u = np.concatenate([P.ravel()[film.flat], np.ones(film.n), [0.0]])
+        H = film.film(P, 0.0)
+        u[-1] = self.hd_central / self.film_scale - H[0, np.argmin(np.abs(film.x))]
+        if math.isfinite(film.h_oil):  # starved: the layer carried at constant flux up to where it fills the gap
+            H = (H + u[-1]).ravel()[film.flat]
+            thin = (film.x[film.i] < 0.0) & (H > film.h_oil) & (u[: film.n] == 0.0)
+            u[film.n: 2 * film.n][thin] = film.h_oil / H[thin]
+        return u
+
+    # -- dry ---------------------------------------------------------------------------------------------
+    def dry(self, tol: float = 1e-12) -> PointDry:
+        """Dry contact on the EHL grid by Polonsky & Keer's conjugate gradient on the same DC-FFT
+        coefficients (:func:`transient.models.roller.dry.polonsky_keer`): the zero-speed limit, checked
+        against Hertz. Semi-axes between nodes from ``p^2`` extrapolated linearly."""
+        t0 = time.perf_counter()
+        f = self.film_problem(inlet_film=None)
+        yy, xx = np.meshgrid(f.y_full, f.x, indexing="ij")
+        g0 = 0.5 * xx ** 2 + 0.5 * (self.radius_x / self.radius_y) * yy ** 2
+        P, _, it, ok = polonsky_keer(g0, f.conv, f.dx * f.dy, f.load, tol=tol)
+        c = self.hertz
+        jc, ic = f.y_full.size // 2, int(np.argmin(np.abs(f.x)))
+        ex, ey = edge_positions(f.x, P[jc]), edge_positions(f.y_full, P[:, ic])
+        return PointDry(x=f.x * c.b, y=f.y_full * c.b, pressure=P * c.p_max, p_max=float(P.max() * c.p_max),
+                        half_width_x=0.5 * (ex[1] - ex[0]) * c.b, half_width_y=0.5 * (ey[1] - ey[0]) * c.b,
+                        hertz_pressure=c.p_max, hertz_b=c.b, hertz_a=c.a, success=bool(ok), iterations=it,
+                        message="converged" if ok else "Polonsky-Keer CG did not converge",
+                        wall_time=time.perf_counter() - t0)
+
+    # -- steady ------------------------------------------------------------------------------------------
+    def steady(self, initial=None, tol: float = 1e-8, max_iter: int = 60, raise_on_failure: bool = True) -> PointSteady:
+        """Steady film by FBNS Newton from the dry Hertz pressure (or ``initial``: a :class:`PointSteady`
+        of the same grid); when Newton fails from there (starved inlets), by pseudo-transient continuation
+        (:func:`~transient.models.point.stepping.steady_by_time_steps`) from the same start. Raises :class:`EHLConvergenceError` (``raise_on_failure``) with
+        the last iterate flagged ``success=False``."""
+        check_range("tol", tol, "-", 1e-14, 1e-2)
+        max_iter = check_int("max_iter", max_iter, "-", 1, 10000)
+        t0 = time.perf_counter()
+        film = self.film_problem()
+        if initial is not None:
+            u0 = np.asarray(initial.state, float)
+            if u0.size != 2 * film.n + 1:
+                raise ValueError(f"initial: a state of {u0.size} unknowns; this grid has {2 * film.n + 1}")
+        else:
+            u0 = self.hertz_start(film)
+        u, ok, norms = fbns(film, u0, tol, max_iter)
+        info = dict(newton=len(norms) - 1)
+        if not ok:  # pseudo-transient continuation: the physical transient until nearly steady
+            u, ok, norms, counts = steady_by_time_steps(film, u0, tol)
+            info.update(time_steps=counts)
+        res = self._result(film, u, ok, norms, time.perf_counter() - t0, info)
+        if not ok and raise_on_failure:
+            raise EHLConvergenceError(f"point contact: Newton did not converge (residual {norms[-1]:.3g} after "
+                                      f"{len(norms) - 1} iterations; history {[f'{v:.2g}' for v in norms]})", res)
+        return res
+
+    # -- transient ---------------------------------------------------------------------------------------
+    @property
+    def time_scale(self) -> float:
+        """``b/u`` [s], the unit of the scaled time."""
+        return self.hertz.b / self.speed
+
+    def transient(self, t_end: float, load=None, start="dry", rtol: float = 1e-4, max_steps: int = 5000) -> PointTransient:
+        """The film in time (:mod:`transient.models.point.stepping`: BDF2 with FBNS Newton per step).
+
+        ``t_end`` [s]; ``load`` [N]: a number or a function of ``t`` [s] (default: the contact's load);
+        ``start``: ``"dry"`` (the dry Hertz pressure with the film lifted to Hamrock-Dowson's central film,
+        the content full, or for a starved inlet the layer where it does not fill the gap) or a
+        :class:`PointSteady` / :class:`PointTransient` of this contact's grid; ``rtol`` the relative local
+        error per step. Series at every accepted step; the final fields and state (``start=`` of a next run)."""
+        t_end = check_range("t_end", t_end, "s", 0.0, 1e6, low_open=True)
+        rtol = check_range("rtol", rtol, "-", 1e-8, 0.5)
+        max_steps = check_int("max_steps", max_steps, "-", 1, 10 ** 7)
+        if load is None:
+            load = self.load
+        if callable(load):
+            f_load = load
+            check_range("load(0)", float(f_load(0.0)), "N", 0.0, 1e8, low_open=True)
+        else:
+            value = check_range("load", load, "N", 0.0, 1e8, low_open=True)
+            f_load = lambda t: value
+        film = self.film_problem()
+        if isinstance(start, str):
+            check_choice("start", start, ("dry",))
+            u0 = self.hertz_start(film)
+        else:
+            u0 = np.asarray(start.final_state if isinstance(start, PointTransient) else start.state, float)
+            if u0.size != 2 * film.n + 1:
+                raise ValueError(f"start: a state of {u0.size} unknowns; this grid has {2 * film.n + 1}")
+        ts = self.time_scale
+        ratio = lambda T: float(f_load(T * ts)) / self.load
+        c, hs = self.hertz, self.film_scale
+        jc, ic = 0, int(np.argmin(np.abs(film.x)))
+        rows = []
+
+        def observe(T, u):
+            P, _, h0 = film.split(u)
+            H = film.film(P, h0)
+            rows.append((T * ts, H[jc, ic] * hs, H.min() * hs, P.max() * c.p_max, h0 * hs, ratio(T) * self.load))
+
+        observe(0.0, u0)
+        t0 = time.perf_counter()
+        T, u, ok, msg, counts = march(film, u0, t_end / ts, ratio, rtol=rtol, h0=1e-3, max_steps=max_steps,
+                                      observe=observe)
+        wall = time.perf_counter() - t0
+        a = np.array(rows)
+        P, Th, h0 = film.split(u)
+        H = film.film(P, h0)
+        stats = Stats(n_steps=counts["steps"], n_jac=counts["newton"], n_error_test_failures=counts["rejected"],
+                      wall_time=wall)
+        return PointTransient(t=a[:, 0], h_central=a[:, 1], h_min=a[:, 2], p_max=a[:, 3], h0=a[:, 4], load=a[:, 5],
+                              x=film.x * c.b, y=film.y_full * c.b, pressure=film.full(P) * c.p_max,
+                              film=film.full(H) * hs, theta=film.full(Th), wall_time=wall, stats=stats,
+                              final_state=u, final_time=T * ts, success=bool(ok),
+                              message="completed" if ok else msg)
+
+    def _result(self, film: PointFilm, u, ok, norms, wall, info) -> PointSteady:
+        P, T, h0 = film.split(u)
+        H = film.film(P, h0)
+        Pf, Tf, Hf = film.full(P), film.full(T), film.full(H)
+        c, hs = self.hertz, self.film_scale
+        x, y = film.x * c.b, film.y_full * c.b
+        jc, ic = y.size // 2, int(np.argmin(np.abs(film.x)))
+        jm, im = np.unravel_index(np.argmin(Hf), Hf.shape)
+        meniscus, flooded = self._meniscus(film, T[0], H[0])
+        e = film.equations(u)
+        q_unit = self.speed * hs * c.b  # scaled flow rate -> m^3/s
+        flows = {k: v * q_unit for k, v in film.flow_balance(e).items()}
+        return PointSteady(x=x, y=y, pressure=Pf * c.p_max, film=Hf * hs, theta=Tf, h_central=float(Hf[jc, ic] * hs),
+                           h_min=float(Hf[jm, im] * hs), x_of_h_min=float(x[im]), y_of_h_min=float(abs(y[jm])),
+                           p_max=float(Pf.max() * c.p_max), meniscus_x=meniscus * c.b, flooded_inlet=flooded,
+                           load_error=float(e["load"]), radius_x=self.radius_x, b=c.b, hertz_pressure=c.p_max,
+                           inlet_flux=flows["inlet"], outlet_flux=flows["outlet"], side_flux=flows["sides"], wall_time=wall, state=np.asarray(u),
+                           solver_info=info, success=bool(ok), iterations=len(norms) - 1,
+                           residual_norms=[float(v) for v in norms],
+                           message="converged" if ok else f"not converged: residual {norms[-1]:.3g}")
+
+    @staticmethod
+    def _meniscus(film: PointFilm, theta, h):
+        """Inlet meniscus on the centreline [units of b]: where the content reaches 1, extrapolated from the
+        two nodes upstream; the domain's inlet (and ``flooded=True``) when the first node is full."""
+        x = film.x
+        full = np.nonzero(theta[1:-1] >= 1.0 - 1e-9)[0]
+        if full.size == 0:
+            return float(x[-1]), False
+        i = int(full[0]) + 1
+        if i <= 1:
+            return float(x[0]), True
+        t1, t0 = theta[i - 1], theta[i - 2] if i >= 3 else film.h_oil / h[0]
+        slope = (t1 - t0) / film.dx
+        xm = x[i - 1] + (1.0 - t1) / slope if slope > 0 else x[i - 1]
+        return float(min(max(xm, x[i - 1]), x[i])), False
