@@ -3,7 +3,6 @@ response against the full one's."""
 
 import warnings
 
-import numpy as np
 import pytest
 
 with warnings.catch_warnings():

@@ -186,7 +186,7 @@ class SystemDAE:
 
     def residual(self, tau, y, yp, out):
         s, ds = self.speed(tau)
-        Q0, V0, P0, nq = self.Q0, self.V0, self.P0, self.nq
+        Q0, V0, P0 = self.Q0, self.V0, self.P0
         q, v, qp, vp = y[Q0:V0], y[V0:P0], yp[Q0:V0], yp[V0:P0]
         f = self.rotor_force(tau, y, s, ds)
         for k, b in enumerate(self.blocks):
