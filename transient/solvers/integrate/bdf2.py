@@ -12,16 +12,22 @@ on the declared ``error_components`` only, in the weighted RMS norm of ``rtol |y
 PI controller (Gustafsson; Hairer & Wanner, Solving ODEs II, IV.2: exponents 0.7/3 and 0.4/3), its ratio kept
 in [0.2, 2] (BDF2 is zero-stable for ratios below 1 + sqrt 2) and the step below ``max_step``.
 
-Newton: predictor = the quadratic extrapolation, iterated on the model's Newton variables ``z`` (``y =
-to_state(z)``); chord iterations on the last factorisation (the model's Jacobian ``(dF/dy + cj dF/dy') dy/dz``,
-factored by :class:`~transient.solvers.bandlu.BorderedBandLU`), the update scaled by ``2 / (1 + cj / cj_J)`` when
-cj changed since the factorisation (as SUNDIALS IDA does). A fresh Jacobian at the current iterate when the model
-reports components that switched regime since the last one or the contraction rate exceeds 0.3 (at most 10 per
-solve), and before a step whose cj moved by more than 30 % or whose last Newton contracted slowly; an update
-larger than the previous one halves the previous update instead (damping down to 1/16). Convergence is judged on
-the update in the model's own units: the error components against ``0.1 (rtol |y| + atol)``, the others by the
-model's ``norm`` kernel (e.g. the film's pressure and content updates). A Newton failure (25 iterations, no
-convergence) cuts the step by 4.
+Newton, iterated on the model's Newton variables ``z`` (``y = to_state(z)``): it starts, component by component,
+from the quadratic extrapolation of ``z`` through the last three steps or from that of ``y`` mapped to ``z``,
+whichever was clearly closer (by ``PICK_RATIO``) to the converged ``z`` in the previous step (a film cell: its
+pressure extrapolated where it stays in the full film, its content where it cavitates or crosses). Chord iterations
+on the last factorisation (the model's Jacobian ``(dF/dy + cj dF/dy') dy/dz``, factored by
+:class:`~transient.solvers.bandlu.BorderedBandLU`), the update scaled by ``2 / (1 + cj / cj_J)`` when cj changed
+since the factorisation (as SUNDIALS IDA does). A fresh Jacobian at the current iterate when the model reports
+components that switched regime since the last one or the contraction rate exceeds 0.3 (at most 10 per solve; the
+residual at that iterate is solved again, not re-evaluated), and before a step whose cj moved by more than 30 % or
+whose last Newton contracted slowly; an update larger than the previous one halves the previous update instead
+(damping down to 1/16). Convergence is judged on the update in the model's own units: the error components
+against ``0.1 (rtol |y| + atol)``, the others by the model's ``norm`` kernel (e.g. the film's pressure and content
+updates): an update within tolerance, or one whose remaining error the chord's contraction rate ``r`` bounds,
+``max(r / (1 - r), 0.3) |dz| <= 1`` (Hairer & Wanner II, IV.8; SUNDIALS). A Newton failure (25 iterations, no
+convergence) cuts the step by 4. The cost by operation (residuals, Jacobians, iterations, refreshes and why) is
+added to ``options["newton_counts"]`` (an int64 array of ``N_COUNTS``) if given.
 
 The Newton iteration (residual, solves, Jacobian, factorisation, norm) is one numba kernel; Python runs once per
 step (predictor, error test, step control, dense output, events). Outputs at ``t_eval`` come from the step's
@@ -65,7 +71,7 @@ CJ_J, REFRESH, RATE, ITERS, Z_GIVEN = range(5)
 class Bdf2Model(NamedTuple):
     """What a model hands the BDF2 stepper.
 
-    ``newton(args, t, cj, b, y, yp, F, dz, data, lu, y_pred, err_idx, err_w, state, counts) -> int``: the model's
+    ``newton(args, t, cj, b, y, yp, F, dz, data, lu, y_pred, z, pick, err_idx, err_w, state, counts) -> int``: the model's
     own ``@njit(cache=True)`` function returning :func:`newton_step` called with its kernels (numba caches a
     function whose kernels are globals, not one that receives them as arguments)::
 
@@ -80,7 +86,8 @@ class Bdf2Model(NamedTuple):
 
     Newton iterates on variables ``z`` of the model's choice (e.g. the film's universal variable, smooth across
     the cavitation switch where the content is not); the time discretisation, error test and outputs stay on the
-    state ``y``. ``error_components``: the indices the error test and step control act on (identical in ``y`` and
+    state ``y``; ``z`` (in/out: the extrapolation in z, then the solution) and ``pick`` (in/out, bool per component)
+    carry the predictor choice between steps (:func:`newton_step`). ``error_components``: the indices the error test and step control act on (identical in ``y`` and
     ``z``); ``n_border``: the trailing dense unknowns of the arrow pattern."""
 
     newton: Callable
@@ -141,8 +148,9 @@ def _chord(norm, args, lu, z, F, dz, scale, err_idx, err_w):
 def newton_step(residual, jacobian, norm, to_state, from_state, args, t, cj, b, y, yp, F, dz, data, lu, y_pred, z,
                 pick, err_idx, err_w, state, counts):
     """Solve one implicit step ``F(t, y, cj y + b) = 0`` (the result in ``y``, ``yp`` and, in the Newton variables,
-    ``z``), iterating on the model's Newton variables ``z`` (``y = to_state(z)``) from ``z`` itself if
-    ``state[Z_GIVEN]`` else from the predictor ``y_pred``.
+    ``z``), iterating on the model's Newton variables ``z`` (``y = to_state(z)``). Start: component ``i`` of the
+    extrapolation ``z`` (given if ``state[Z_GIVEN]``) where ``pick[i]``, else of the predictor ``y_pred`` mapped to
+    z; on convergence ``pick[i]`` says whether the extrapolation in z was closer (by ``PICK_RATIO``).
 
     Chord iterations on the current factorisation. The Jacobian is re-evaluated at the current iterate (and
     factored) when the contraction rate exceeds ``RATE_REFRESH`` or the model reports components that switched
