@@ -247,6 +247,10 @@ def markdown(res) -> str:
           + _long_text(res["whip_long"]) + ".",
           f"**Small orbit, {c['small_revs']} revolutions** (the faster of two alternating runs): "
           + _long_text(res["small_long"]) + "."]
+    short = [f"{k} = {c[k]} (the benchmark's {FULL[k]})" for k in ("whip_timed", "small_revs")
+             if not c["quick"] and c[k] != FULL[k]]
+    if short:
+        L.append("**Shortened long runs** (the machine was shared: 2 cores, load 11-14): " + ", ".join(short) + ".")
     return "\n".join(L)
 
 
