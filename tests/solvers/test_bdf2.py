@@ -13,7 +13,7 @@ from transient.models.journal.bearing import JournalBearing
 from transient.models.journal.content_newton import bdf2_jacobian, bdf2_residual, bdf2_to_state
 from transient.models.journal.orbit import BDF2_FILM_TOL, JournalOrbit
 from transient.params.rho_kim import BEARING, ROTOR
-from transient.solvers.integrate import solve
+from transient.solvers.integrate import bdf2, solve
 
 CL, W, MASS, RPM = BEARING["clearance"], ROTOR["load"], ROTOR["rotor_mass"], 6000.0
 TWO_PI = 2 * np.pi
@@ -23,11 +23,12 @@ def orbit(grid=(48, 8), unbalance=0.3, **kw):
     return JournalOrbit(JournalBearing(**dict(BEARING, **kw), grid=grid), MASS, unbalance * CL, W, RPM)
 
 
-def fixed_step_run(o, steps_per_rev, tau, y0=None):
-    """The content problem from the equilibrium (or y0, universal layout) by BDF2 with a fixed step."""
+def fixed_step_run(o, steps_per_rev, tau, y0=None, counts=None):
+    """The content problem from the equilibrium (or y0, universal layout) by BDF2 with a fixed step (its Newton's
+    cost by operation added to ``counts`` if given)."""
     p = o.problem(y0, formulation="content")
     return solve(p, tau, method="bdf2", rtol=1e-3, atol=1e-9,
-                 options={"bdf2": o.bdf2_model(), "fixed_step": TWO_PI / steps_per_rev})
+                 options={"bdf2": o.bdf2_model(), "fixed_step": TWO_PI / steps_per_rev, "newton_counts": counts})
 
 
 def journal_error(o, s, ref):
@@ -78,13 +79,19 @@ def test_every_step_conserves_mass_to_the_newton_tolerance():
     """At fixed steps the outputs at the step points are the steps themselves: the BDF2 conservation law of each
     free cell, A (3 m_(k+2) - 4 m_(k+1) + m_k) / (2 h) + R(m_(k+2)) = 0, holds to the Newton tolerance (its residual
     divided by the cell's A 3 / (2 h) is a content error below BDF2_FILM_TOL), and so does the whole film's
-    balance (the sum over the cells: content change + outflow)."""
+    balance (the sum over the cells: content change + outflow). The Newton's counts: one residual per iteration
+    (a refreshed Jacobian solves the residual at hand again), every Jacobian accounted for by its reason, one
+    solve per step."""
     o = orbit(grid=(24, 6))
     spr = 400
     h = TWO_PI / spr
     tau = np.arange(0, 41) * h
-    s = fixed_step_run(o, spr, tau)
+    c = np.zeros(bdf2.N_COUNTS, dtype=np.int64)
+    s = fixed_step_run(o, spr, tau, counts=c)
     assert s.success, s.message
+    assert c[bdf2.RESIDUALS] == c[bdf2.ITERATIONS] == s.stats.n_rhs
+    assert c[bdf2.J_EVALS] == c[bdf2.J_SWITCH] + c[bdf2.J_RATE] + c[bdf2.J_START] == s.stats.n_jac
+    assert c[bdf2.SOLVES] == s.stats.n_steps == 40
     args, n = o.bdf2_model().args, o.film.n
     free, area = o.film.op.free, o.film.area
     worst, flux = 0.0, 0.0

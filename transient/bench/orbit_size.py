@@ -11,13 +11,14 @@ The Rho & Kim bearing and rotor (m = 100 kg, W = 981 N) on the paper grid, three
 
 Candidates, in one run at the same settings: IDA on the universal film (state u, ``A H D(u) u' + R = 0``) at the
 rtols of the config; the variable-step BDF2 of :mod:`transient.solvers.integrate.bdf2` on the content film (``A m' + R = 0``,
-its own Newton on a bordered band LU, error test on the rotor at ``BDF2_RTOL``) at the step caps of the config
-(least steps per revolution); in the large case the paper's RK4 (3000 steps per revolution). IDA on the content
+its own Newton on a bordered band LU, error test on the rotor) at the (step cap, rtol) pairs of the config (the cap:
+least steps per revolution); in the large case the paper's RK4 (3000 steps per revolution). IDA on the content
 film and on a 10x wider switch are compared in docs/journal.md (section 5). Error = the largest journal-centre
 distance over the run's outputs from a reference (IDA universal, rtol ``REF_RTOL``) in units of C. Step, Jacobian
 (= factorisation) and residual counts are exact; times are wall and CPU seconds on a shared 2-core machine
 (compare ratios within one run; the BDF2 and IDA long runs alternate, twice, and keep the faster of each).
-"Cost at RK4's error" interpolates each candidate's curve log-log.
+"Cost at RK4's error" (large) and "cost at IDA rtol 1e-3's error" (whip, small) interpolate each candidate's curve
+log-log.
 """
 
 from __future__ import annotations
@@ -37,11 +38,15 @@ TITLE = "Orbit size: IDA, BDF2 on the content film and RK4 from small orbits to 
 CLEARANCE = BEARING["clearance"]
 FORMS = ("universal", "bdf2")
 REF_RTOL = 1e-8
-BDF2_RTOL = 1e-4
-FULL = dict(grid=(151, 21), rtols=(1e-3, 1e-4), caps=(300, 500), small_caps=(100, 200), rk4_steps=3000, whip_offset=0.4,
-            spin_up=6, whip_timed=3, small_revs=100, opr=20)
-QUICK = dict(grid=(48, 8), rtols=(1e-3, 1e-4), caps=(300, 500), small_caps=(100, 200), rk4_steps=600, whip_offset=0.4,
-             spin_up=3, whip_timed=2, small_revs=10, opr=20)
+BDF2_RTOL = 1e-4  # the whip's spin-up
+#: BDF2 candidates (step cap [steps per revolution], rtol on the rotor) per case, paired with IDA's rtols; the long
+#: runs take IDA at the loosest rtol and BDF2 at ``*_long``
+LARGE_BDF2 = ((300, 1e-4), (500, 1e-4))
+SMALL_BDF2 = ((100, 1e-3), (100, 1e-4))
+FULL = dict(grid=(151, 21), rtols=(1e-3, 1e-4), bdf2=LARGE_BDF2, small_bdf2=SMALL_BDF2, whip_long=(300, 1e-4),
+            small_long=(100, 1e-3), rk4_steps=3000, whip_offset=0.4, spin_up=6, whip_timed=3, small_revs=100, opr=20)
+QUICK = dict(grid=(48, 8), rtols=(1e-3, 1e-4), bdf2=LARGE_BDF2, small_bdf2=SMALL_BDF2, whip_long=(300, 1e-4),
+             small_long=(100, 1e-3), rk4_steps=600, whip_offset=0.4, spin_up=3, whip_timed=2, small_revs=10, opr=20)
 
 
 def atol_for(rtol):
@@ -68,21 +73,22 @@ def _row(case, label, r, wall, cpu, ref, revs):
 
 
 def _run(o, form, setting, revs, opr, start=None):
-    """One candidate: IDA universal at rtol ``setting`` or BDF2 with ``setting`` steps per revolution at least."""
+    """One candidate: IDA universal at rtol ``setting`` or BDF2 at ``setting`` = (step cap, rtol)."""
     if form == "bdf2":
-        return o.run(revs, method="bdf2", rtol=BDF2_RTOL, steps_per_revolution=setting, outputs_per_revolution=opr,
+        cap, rtol = setting
+        return o.run(revs, method="bdf2", rtol=rtol, steps_per_revolution=cap, outputs_per_revolution=opr,
                      start=start, progress=False)
     return o.run(revs, rtol=setting, atol=atol_for(setting), outputs_per_revolution=opr, start=start, progress=False)
 
 
 def _label(form, setting):
-    return f"IDA universal rtol {setting:.0e}" if form == "ida" else f"BDF2 >= {setting} steps/rev"
+    return f"IDA universal rtol {setting:.0e}" if form == "ida" else f"BDF2 >= {setting[0]} steps/rev rtol {setting[1]:.0e}"
 
 
-def _side_by_side(case, o, rtols, caps, revs, ref, start=None, opr=20, log=print):
-    """IDA at every rtol and BDF2 at every step cap, alternating (IDA, BDF2, BDF2, IDA, ...)."""
+def _side_by_side(case, o, rtols, bdf2, revs, ref, start=None, opr=20, log=print):
+    """IDA at every rtol and BDF2 at every (cap, rtol), alternating (IDA, BDF2, BDF2, IDA, ...)."""
     rows = []
-    pairs = list(zip(rtols, caps))
+    pairs = list(zip(rtols, bdf2))
     for k, (rt, cap) in enumerate(pairs):
         order = (("ida", rt), ("bdf2", cap)) if k % 2 == 0 else (("bdf2", cap), ("ida", rt))
         for form, setting in order:
@@ -96,12 +102,14 @@ def _side_by_side(case, o, rtols, caps, revs, ref, start=None, opr=20, log=print
 
 def _warm(o):
     for form in ("ida", "bdf2"):  # JIT warm-up (the BDF2 driver compiles once per process), not timed
-        _run(o, form, 1e-3 if form == "ida" else 500, 0.05, 20)
+        _run(o, form, 1e-3 if form == "ida" else (500, 1e-4), 0.05, 20)
 
 
-def cost_at(rows, form, target):
-    """Wall seconds per revolution for ``form`` to reach ``target`` error (log-log on its points)."""
-    pts = sorted((r["error"], r["wall_per_rev"]) for r in rows if r.get("form") == form and r["error"] > 0)
+def cost_at(rows, form, target, case=None, key="wall_per_rev"):
+    """Seconds per revolution (``key``: wall or CPU) for ``form`` to reach ``target`` error (log-log on its points;
+    rows of ``case``)."""
+    pts = sorted((r["error"], r[key]) for r in rows if r.get("form") == form and r["error"] > 0
+                 and case in (None, r["case"]))
     if not pts or target < pts[0][0]:
         return math.nan
     for (e0, w0), (e1, w1) in zip(pts[:-1], pts[1:]):
@@ -116,11 +124,11 @@ def _reference(o, revs, opr, start=None):
                  progress=False)
 
 
-def _long(o, revs, opr, cap, rtol, start=None):
-    """IDA (rtol) and BDF2 (cap) over ``revs`` revolutions, alternating twice; the faster run of each."""
+def _long(o, revs, opr, bdf2, rtol, start=None):
+    """IDA (rtol) and BDF2 ((cap, rtol)) over ``revs`` revolutions, alternating twice; the faster run of each."""
     out = {}
     for form in ("bdf2", "ida", "ida", "bdf2"):
-        setting = cap if form == "bdf2" else rtol
+        setting = bdf2 if form == "bdf2" else rtol
         r, w, c = _timed(lambda: _run(o, form, setting, revs, opr, start))
         prev = out.get(form)
         if prev is None or w < prev["wall"]:
@@ -132,7 +140,7 @@ def _long(o, revs, opr, cap, rtol, start=None):
 
 def run(quick=False, log=print) -> dict:
     cfg = dict(QUICK if quick else FULL)
-    grid, rtols, caps, opr = cfg["grid"], cfg["rtols"], cfg["caps"], cfg["opr"]
+    grid, rtols, bdf2, opr = cfg["grid"], cfg["rtols"], cfg["bdf2"], cfg["opr"]
     out = dict(config=dict(cfg, quick=quick, ref_rtol=REF_RTOL, bdf2_rtol=BDF2_RTOL), rows=[])
     rows = out["rows"]
 
@@ -143,7 +151,7 @@ def run(quick=False, log=print) -> dict:
     ref, w, _ = _timed(lambda: _reference(o, 1, opr))
     out["large_reference"] = dict(wall=w, steps=ref.stats.n_steps, excursion_C=float(np.max(np.hypot(
         ref.x - ref.x[0], ref.y - ref.y[0])) / CLEARANCE))
-    rows += _side_by_side("large", o, rtols, caps, 1.0, ref, opr=opr, log=log)
+    rows += _side_by_side("large", o, rtols, bdf2, 1.0, ref, opr=opr, log=log)
     n_rk4 = cfg["rk4_steps"]
     o.run(0.01, method="rk4", steps_per_revolution=n_rk4, progress=False)
     r, w, c = _timed(lambda: o.run(1, method="rk4", steps_per_revolution=n_rk4, outputs_per_revolution=opr,
@@ -151,9 +159,14 @@ def run(quick=False, log=print) -> dict:
     rows.append(_row("large", f"RK4 {n_rk4} steps/rev (paper)", r, w, c, ref, 1.0) | dict(form="rk4"))
     log(f"  RK4 {n_rk4}: {w:.1f} s, error {rows[-1]['error']:.2e} C")
     e_rk4, w_rk4 = rows[-1]["error"], rows[-1]["wall_per_rev"]
-    out["large_matched"] = {f: dict(wall_per_rev=cost_at(rows, f, e_rk4)) for f in FORMS}
+    c_rk4 = rows[-1]["cpu_per_rev"]
+    out["large_matched"] = {f: dict(wall_per_rev=cost_at(rows, f, e_rk4), cpu_per_rev=cost_at(rows, f, e_rk4,
+                                                                                              key="cpu_per_rev"))
+                            for f in FORMS}
     for f in FORMS:
-        out["large_matched"][f]["speedup_vs_rk4"] = w_rk4 / out["large_matched"][f]["wall_per_rev"]
+        m = out["large_matched"][f]
+        m["speedup_vs_rk4"] = w_rk4 / m["wall_per_rev"]
+        m["cpu_speedup_vs_rk4"] = c_rk4 / m["cpu_per_rev"]
 
     # ---- oil whip at 1.5x the threshold --------------------------------------------------------------------
     th = o.bearing.stability_threshold(ROTOR["rotor_mass"], ROTOR["load"])
@@ -169,8 +182,8 @@ def run(quick=False, log=print) -> dict:
                                steps=sp.stats.n_steps, eps_last_rev=(float(eps[-opr:].min()), float(eps[-opr:].max())),
                                message=sp.message)
     wref = _reference(ow, 1, opr, start=sp)
-    rows += _side_by_side("whip", ow, rtols, caps, 1.0, wref, start=sp, opr=opr, log=log)
-    out["whip_long"] = _long(ow, cfg["whip_timed"], opr, max(caps), max(rtols), start=sp)
+    rows += _side_by_side("whip", ow, rtols, bdf2, 1.0, wref, start=sp, opr=opr, log=log)
+    out["whip_long"] = _long(ow, cfg["whip_timed"], opr, tuple(cfg["whip_long"]), max(rtols), start=sp)
     for form, v in out["whip_long"].items():
         log(f"  whip {v['revolutions']} revolutions {form}: {v['wall']:.0f} s -> {v['minutes_per_1000_rev']:.0f} min "
             f"per 1000 revolutions")
@@ -180,8 +193,12 @@ def run(quick=False, log=print) -> dict:
     _warm(os_)
     log("[orbit_size] small: 0.01 C, 6000 rpm ...")
     sref = _reference(os_, 1, opr)
-    rows += _side_by_side("small", os_, rtols, cfg["small_caps"], 1.0, sref, opr=opr, log=log)
-    out["small_long"] = _long(os_, cfg["small_revs"], opr, min(cfg["small_caps"]), max(rtols))
+    rows += _side_by_side("small", os_, rtols, cfg["small_bdf2"], 1.0, sref, opr=opr, log=log)
+    out["small_long"] = _long(os_, cfg["small_revs"], opr, tuple(cfg["small_long"]), max(rtols))
+    for case in ("whip", "small"):
+        e = next(r["error"] for r in rows if r["case"] == case and r["label"] == _label("ida", max(rtols)))
+        out[f"{case}_matched"] = dict(error=e, **{f: cost_at(rows, f, e, case) for f in FORMS},
+                                      **{f"{f}_cpu": cost_at(rows, f, e, case, "cpu_per_rev") for f in FORMS})
     for form, v in out["small_long"].items():
         log(f"  small {v['revolutions']} revolutions {form}: {v['wall']:.1f} s, {v['steps_per_rev']:.0f} steps/rev")
     return out
@@ -192,8 +209,7 @@ def _fmt(v, f="{:.2e}"):
 
 
 def _long_text(d):
-    names = dict(ida="IDA universal rtol {:.0e}", bdf2="BDF2 >= {} steps/rev")
-    return ", ".join(f"{names[f].format(v['setting'])} {v['wall']:.1f} s ({v['steps_per_rev']:.0f} steps and "
+    return ", ".join(f"{_label(f, v['setting'])} {v['wall']:.1f} s wall, {v['cpu']:.1f} s CPU ({v['steps_per_rev']:.0f} steps and "
                      f"{v['jac_per_rev']:.0f} Jacobians per revolution; {v['minutes_per_1000_rev']:.0f} min per 1000 "
                      f"revolutions)" for f, v in d.items())
 
@@ -202,7 +218,7 @@ def markdown(res) -> str:
     c = res["config"]
     lr, sp = res["large_reference"], res["whip_spin_up"]
     L = [f"Rho & Kim bearing and rotor, {c['grid'][0]} x {c['grid'][1]} half grid. IDA on the universal film "
-         f"(atol = min(1e-9, 1e-3 rtol)); BDF2 on the content film (rtol {c['bdf2_rtol']:g} on the rotor, film Newton "
+         f"(atol = min(1e-9, 1e-3 rtol)); BDF2 on the content film (the rtol on the rotor as labelled, film Newton "
          f"tolerance 1e-8 in p0 and content, at least the given steps per revolution); RK4 with the film per stage"
          + (" — **quick smoke run, not the benchmark**" if c["quick"] else "") + ".", "",
          f"References: IDA universal rtol {c['ref_rtol']:g} (large case: {lr['steps']} steps, excursion "
@@ -216,15 +232,25 @@ def markdown(res) -> str:
                  f"{r['res_per_rev']:.0f} | {r['wall_per_rev']:.2f} | {r['cpu_per_rev']:.2f} | {_fmt(r['error'])} |")
     m = res["large_matched"]
     rk4 = next(r for r in res["rows"] if r.get("form") == "rk4")
-    L += ["", f"**Large orbit at RK4's error** ({_fmt(rk4['error'])} C, {rk4['wall_per_rev']:.1f} s): "
-          + ", ".join(f"{'IDA universal' if f == 'universal' else 'BDF2'} {m[f]['wall_per_rev']:.2f} s "
-                      f"({m[f]['speedup_vs_rk4']:.1f}x RK4)" if math.isfinite(m[f]["wall_per_rev"])
+    L += ["", f"**Large orbit at RK4's error** ({_fmt(rk4['error'])} C, {rk4['wall_per_rev']:.1f} s wall, "
+              f"{rk4['cpu_per_rev']:.1f} s CPU): "
+          + ", ".join(f"{'IDA universal' if f == 'universal' else 'BDF2'} {m[f]['wall_per_rev']:.2f} s wall "
+                      f"({m[f]['speedup_vs_rk4']:.1f}x RK4), {m[f]['cpu_per_rev']:.2f} s CPU "
+                      f"({m[f]['cpu_speedup_vs_rk4']:.1f}x RK4)" if math.isfinite(m[f]["wall_per_rev"])
                       else f"{f}: RK4's error not reached at the settings run" for f in FORMS)
           + " (a candidate whose loosest run is already more accurate is charged that run).",
+          *(f"**{case.capitalize()} at IDA rtol {max(c['rtols']):.0e}'s error** ({_fmt(res[case + '_matched']['error'])} C): "
+            + ", ".join(f"{'IDA universal' if f == 'universal' else 'BDF2'} {_fmt(res[case + '_matched'][f], '{:.2f}')} "
+                        f"s wall / {_fmt(res[case + '_matched'][f + '_cpu'], '{:.2f}')} s CPU per revolution"
+                        for f in FORMS) + "." for case in ("whip", "small")),
           f"**Whip, {c['whip_timed']} revolutions** (the faster of two alternating runs): "
           + _long_text(res["whip_long"]) + ".",
           f"**Small orbit, {c['small_revs']} revolutions** (the faster of two alternating runs): "
           + _long_text(res["small_long"]) + "."]
+    short = [f"{k} = {c[k]} (the benchmark's {FULL[k]})" for k in ("whip_timed", "small_revs")
+             if not c["quick"] and c[k] != FULL[k]]
+    if short:
+        L.append("**Shortened long runs** (the machine was shared: 2 cores, load 11-14): " + ", ".join(short) + ".")
     return "\n".join(L)
 
 

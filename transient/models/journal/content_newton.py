@@ -16,10 +16,10 @@ from transient.solvers.integrate.bdf2 import newton_step
 
 
 @njit  # not cacheable: numba counts the kernels handed to newton_step as dynamic globals (compiled once per process)
-def bdf2_newton(args, t, cj, b, y, yp, F, dz, data, lu, y_pred, err_idx, err_w, state, counts):
+def bdf2_newton(args, t, cj, b, y, yp, F, dz, data, lu, y_pred, z, pick, err_idx, err_w, state, counts):
     """:func:`~transient.solvers.integrate.bdf2.newton_step` on the content film + rotor, iterating on ``[u, X, Y, VX, VY]``."""
     return newton_step(bdf2_residual, bdf2_jacobian, film_newton_norm, bdf2_to_state, bdf2_from_state, args, t,
-                       cj, b, y, yp, F, dz, data, lu, y_pred, err_idx, err_w, state, counts)
+                       cj, b, y, yp, F, dz, data, lu, y_pred, z, pick, err_idx, err_w, state, counts)
 
 
 @njit(cache=True)
@@ -115,3 +115,4 @@ def film_newton_norm(z, dz, args):
             if v > size:
                 size = v
     return size, switched
+

@@ -12,16 +12,22 @@ on the declared ``error_components`` only, in the weighted RMS norm of ``rtol |y
 PI controller (Gustafsson; Hairer & Wanner, Solving ODEs II, IV.2: exponents 0.7/3 and 0.4/3), its ratio kept
 in [0.2, 2] (BDF2 is zero-stable for ratios below 1 + sqrt 2) and the step below ``max_step``.
 
-Newton: predictor = the quadratic extrapolation, iterated on the model's Newton variables ``z`` (``y =
-to_state(z)``); chord iterations on the last factorisation (the model's Jacobian ``(dF/dy + cj dF/dy') dy/dz``,
-factored by :class:`~transient.solvers.bandlu.BorderedBandLU`), the update scaled by ``2 / (1 + cj / cj_J)`` when
-cj changed since the factorisation (as SUNDIALS IDA does). A fresh Jacobian at the current iterate when the model
-reports components that switched regime since the last one or the contraction rate exceeds 0.3 (at most 10 per
-solve), and before a step whose cj moved by more than 30 % or whose last Newton contracted slowly; an update
-larger than the previous one halves the previous update instead (damping down to 1/16). Convergence is judged on
-the update in the model's own units: the error components against ``0.1 (rtol |y| + atol)``, the others by the
-model's ``norm`` kernel (e.g. the film's pressure and content updates). A Newton failure (25 iterations, no
-convergence) cuts the step by 4.
+Newton, iterated on the model's Newton variables ``z`` (``y = to_state(z)``): it starts, component by component,
+from the quadratic extrapolation of ``z`` through the last three steps or from that of ``y`` mapped to ``z``,
+whichever was clearly closer (by ``PICK_RATIO``) to the converged ``z`` in the previous step (a film cell: its
+pressure extrapolated where it stays in the full film, its content where it cavitates or crosses). Chord iterations
+on the last factorisation (the model's Jacobian ``(dF/dy + cj dF/dy') dy/dz``, factored by
+:class:`~transient.solvers.bandlu.BorderedBandLU`), the update scaled by ``2 / (1 + cj / cj_J)`` when cj changed
+since the factorisation (as SUNDIALS IDA does). A fresh Jacobian at the current iterate when the model reports
+components that switched regime since the last one or the contraction rate exceeds 0.3 (at most 10 per solve; the
+residual at that iterate is solved again, not re-evaluated), and before a step whose cj moved by more than 30 % or
+whose last Newton contracted slowly; an update larger than the previous one halves the previous update instead
+(damping down to 1/16). Convergence is judged on the update in the model's own units: the error components
+against ``0.1 (rtol |y| + atol)``, the others by the model's ``norm`` kernel (e.g. the film's pressure and content
+updates): an update within tolerance, or one whose remaining error the chord's contraction rate ``r`` bounds,
+``max(r / (1 - r), 0.3) |dz| <= 1`` (Hairer & Wanner II, IV.8; SUNDIALS). A Newton failure (25 iterations, no
+convergence) cuts the step by 4. The cost by operation (residuals, Jacobians, iterations, refreshes and why) is
+added to ``options["newton_counts"]`` (an int64 array of ``N_COUNTS``) if given.
 
 The Newton iteration (residual, solves, Jacobian, factorisation, norm) is one numba kernel; Python runs once per
 step (predictor, error test, step control, dense output, events). Outputs at ``t_eval`` come from the step's
@@ -48,13 +54,24 @@ MAX_ITER = 25
 MAX_REFRESH = 10  # Jacobian re-evaluations inside one Newton solve
 RATE_REFRESH = 0.3  # a step after a Newton that contracted slower than this starts with a fresh Jacobian
 CJ_REFRESH = 0.3  # ... and so does a step whose cj moved by more than this fraction since the factorisation
+RATE_FLOOR = 0.3  # an update is accepted if max(rate / (1 - rate), RATE_FLOOR) times its size is within tolerance
+PICK_RATIO = 0.5  # a component starts from the extrapolation in z if that was this much closer than the one in y
 MIN_RATIO, MAX_RATIO, SAFETY = 0.2, 2.0, 0.9
+#: slots of the Newton's ``counts`` (the stepper's cost by operation, ``options["newton_counts"]``): residuals,
+#: Jacobians (each one factored), Newton iterations, Jacobians refreshed inside a solve because components switched
+#: regime / because the contraction was slow / at a solve's start, damped updates, Newton solves, switched
+#: components summed over the refreshes they caused
+RESIDUALS, J_EVALS, ITERATIONS, J_SWITCH, J_RATE, J_START, DAMPED, SOLVES, SWITCHED = range(9)
+N_COUNTS = 9
+#: slots of the Newton's ``state``: cj of the factorisation (0: none), refresh flag, last contraction rate, iterations
+#: of the last solve, the iteration start z given (1) or from the predictor y_pred (0)
+CJ_J, REFRESH, RATE, ITERS, Z_GIVEN = range(5)
 
 
 class Bdf2Model(NamedTuple):
     """What a model hands the BDF2 stepper.
 
-    ``newton(args, t, cj, b, y, yp, F, dz, data, lu, y_pred, err_idx, err_w, state, counts) -> int``: the model's
+    ``newton(args, t, cj, b, y, yp, F, dz, data, lu, y_pred, z, pick, err_idx, err_w, state, counts) -> int``: the model's
     own ``@njit(cache=True)`` function returning :func:`newton_step` called with its kernels (numba caches a
     function whose kernels are globals, not one that receives them as arguments)::
 
@@ -69,7 +86,8 @@ class Bdf2Model(NamedTuple):
 
     Newton iterates on variables ``z`` of the model's choice (e.g. the film's universal variable, smooth across
     the cavitation switch where the content is not); the time discretisation, error test and outputs stay on the
-    state ``y``. ``error_components``: the indices the error test and step control act on (identical in ``y`` and
+    state ``y``; ``z`` (in/out: the extrapolation in z, then the solution) and ``pick`` (in/out, bool per component)
+    carry the predictor choice between steps (:func:`newton_step`). ``error_components``: the indices the error test and step control act on (identical in ``y`` and
     ``z``); ``n_border``: the trailing dense unknowns of the arrow pattern."""
 
     newton: Callable
@@ -86,12 +104,12 @@ def _refactor(jacobian, to_state, args, t, cj, b, z, y, yp, data, lu, state, cou
     for i in range(y.size):
         yp[i] = cj * y[i] + b[i]
     jacobian(t, y, yp, cj, data, args)
-    counts[1] += 1
-    state[1] = 0.0
+    counts[J_EVALS] += 1
+    state[REFRESH] = 0.0
     if band_factor(data, lu) != 0:
-        state[0] = 0.0
+        state[CJ_J] = 0.0
         return False
-    state[0] = cj
+    state[CJ_J] = cj
     return True
 
 
@@ -104,12 +122,19 @@ def _update(residual, norm, to_state, args, lu, t, cj, b, z, y, yp, F, dz, scale
     for i in range(n):
         yp[i] = cj * y[i] + b[i]
     residual(t, y, yp, F, args)
-    counts[0] += 1
+    counts[RESIDUALS] += 1
     for i in range(n):
         if not np.isfinite(F[i]):
             return np.inf, 0
+    return _chord(norm, args, lu, z, F, dz, scale, err_idx, err_w)
+
+
+@njit(cache=True)
+def _chord(norm, args, lu, z, F, dz, scale, err_idx, err_w):
+    """The update ``dz = scale M^-1 F`` on the current factorisation for the residual ``F`` at ``z``, its size and
+    switched components (:func:`_update`)."""
     band_solve(lu, F, dz)
-    for i in range(n):
+    for i in range(dz.size):
         dz[i] *= scale
     size, switched = norm(z, dz, args)
     for k in range(err_idx.size):
@@ -120,23 +145,37 @@ def _update(residual, norm, to_state, args, lu, t, cj, b, z, y, yp, F, dz, scale
 
 
 @njit(cache=True)
-def newton_step(residual, jacobian, norm, to_state, from_state, args, t, cj, b, y, yp, F, dz, data, lu, y_pred, err_idx,
-                err_w, state, counts):
-    """Solve one implicit step ``F(t, y, cj y + b) = 0`` from the predictor ``y_pred`` (the result in ``y``, ``yp``),
-    iterating on the model's Newton variables ``z`` (``y = to_state(z)``).
+def newton_step(residual, jacobian, norm, to_state, from_state, args, t, cj, b, y, yp, F, dz, data, lu, y_pred, z,
+                pick, err_idx, err_w, state, counts):
+    """Solve one implicit step ``F(t, y, cj y + b) = 0`` (the result in ``y``, ``yp`` and, in the Newton variables,
+    ``z``), iterating on the model's Newton variables ``z`` (``y = to_state(z)``). Start: component ``i`` of the
+    extrapolation ``z`` (given if ``state[Z_GIVEN]``) where ``pick[i]``, else of the predictor ``y_pred`` mapped to
+    z; on convergence ``pick[i]`` says whether the extrapolation in z was closer (by ``PICK_RATIO``).
 
     Chord iterations on the current factorisation. The Jacobian is re-evaluated at the current iterate (and
     factored) when the contraction rate exceeds ``RATE_REFRESH`` or the model reports components that switched
-    regime since the Jacobian (cells crossing the cavitation switch), at most ``MAX_REFRESH`` times. An update
-    larger than the previous one (no contraction) halves the previous update instead (damping, down to 1/16).
-    ``state`` = [cj of the factorisation (0: none), refresh flag, last rate, iterations]; ``counts`` =
-    [residuals, Jacobians]. Returns 0 (converged), 1 (no convergence), 2 (singular)."""
+    regime since the Jacobian (cells crossing the cavitation switch), at most ``MAX_REFRESH`` times; the residual
+    at that iterate is solved again on the new factorisation (not re-evaluated). An update larger than the previous
+    one (no contraction) halves the previous update instead (damping, down to 1/16). Converged when the update
+    is within tolerance, or (Hairer & Wanner II, IV.8; SUNDIALS) when the contraction rate ``r`` of the chord
+    bounds the error left after it, ``max(r / (1 - r), RATE_FLOOR) |dz| <= 1`` (``r`` of this solve, on the first
+    iteration the last solve's; not on an update from a fresh Jacobian). ``state`` and ``counts``: the slots
+    named in this module. Returns 0 (converged), 1 (no convergence), 2 (singular)."""
     n = y.size
-    z = np.empty(n)
-    from_state(y_pred, z, args)
-    if state[0] == 0.0 or state[1] != 0.0:
+    z_y = np.empty(n)
+    from_state(y_pred, z_y, args)
+    z_z = z.copy()
+    for i in range(n):
+        if state[Z_GIVEN] == 0.0 or not pick[i]:
+            z[i] = z_y[i]
+    counts[SOLVES] += 1
+    fresh = 0  # the iteration whose update came from a fresh Jacobian (its rate is not the chord's)
+    if state[CJ_J] == 0.0 or state[REFRESH] != 0.0:
+        counts[J_START] += 1
         if not _refactor(jacobian, to_state, args, t, cj, b, z, y, yp, data, lu, state, counts):
             return 2
+    else:
+        fresh = -1
     z_base = z.copy()
     d_base = np.zeros(n)
     refreshed = 0
@@ -145,38 +184,49 @@ def newton_step(residual, jacobian, norm, to_state, from_state, args, t, cj, b, 
     rate = 0.0
     for it in range(MAX_ITER):
         size, switched = _update(residual, norm, to_state, args, lu, t, cj, b, z, y, yp, F, dz,
-                                 2.0 / (1.0 + cj / state[0]), err_idx, err_w, counts)
-        state[3] = it + 1
+                                 2.0 / (1.0 + cj / state[CJ_J]), err_idx, err_w, counts)
+        state[ITERS] = it + 1
+        counts[ITERATIONS] += 1
         if it > 0 and size > prev and lam > 1.0 / 16.0:  # damp the last update
+            counts[DAMPED] += 1
             lam *= 0.5
             for i in range(n):
                 z[i] = z_base[i] - lam * d_base[i]
             continue
-        if size > 1.0 and refreshed < MAX_REFRESH and (switched > 0 or (it > 0 and size > RATE_REFRESH * prev)):
+        if (1.0 < size < np.inf and refreshed < MAX_REFRESH
+                and (switched > 0 or (it > 0 and size > RATE_REFRESH * prev))):
             refreshed += 1
+            fresh = it
+            counts[J_SWITCH if switched > 0 else J_RATE] += 1
+            counts[SWITCHED] += switched
             if not _refactor(jacobian, to_state, args, t, cj, b, z, y, yp, data, lu, state, counts):
                 return 2
-            size, switched = _update(residual, norm, to_state, args, lu, t, cj, b, z, y, yp, F, dz, 1.0, err_idx,
-                                     err_w, counts)
+            size, switched = _chord(norm, args, lu, z, F, dz, 1.0, err_idx, err_w)  # F is the residual at z
         if not np.isfinite(size):
-            state[1] = 1.0
+            state[REFRESH] = 1.0
             return 1
         rate = size / prev if it > 0 else 0.0
-        state[2] = rate
+        r = rate if it > 0 else state[RATE]
+        state[RATE] = rate
         z_base[:] = z
         d_base[:] = dz
         for i in range(n):
             z[i] -= dz[i]
-        if size <= 1.0:
+        done = size <= 1.0
+        if not done and fresh != it and 0.0 < r < 0.9:
+            done = size * max(RATE_FLOOR, r / (1.0 - r)) <= 1.0
+        if done:
             to_state(z, y, args)
             for i in range(n):
                 yp[i] = cj * y[i] + b[i]
+            for i in range(n):  # each component starts the next step from the predictor closer to it in this one
+                pick[i] = state[Z_GIVEN] != 0.0 and abs(z[i] - z_z[i]) < PICK_RATIO * abs(z[i] - z_y[i])
             if rate > RATE_REFRESH:
-                state[1] = 1.0
+                state[REFRESH] = 1.0
             return 0
         prev = size
         lam = 1.0
-    state[1] = 1.0
+    state[REFRESH] = 1.0
     return 1
 
 
@@ -212,8 +262,10 @@ def integrate_bdf2(problem, t_eval, out, guard, rtol, atol, max_step, first_step
     lu = BorderedBandLU(problem.jac_pattern, model.n_border)
     data = np.zeros(problem.jac_pattern.nnz)
     F, dy, yp, y_new = (np.empty(n) for _ in range(4))
-    state = np.zeros(4)
-    counts = np.zeros(2, dtype=np.int64)
+    state = np.zeros(5)
+    pick = np.zeros(n, dtype=np.bool_)
+    z_new = np.empty(n)
+    counts = np.zeros(N_COUNTS, dtype=np.int64)
     events = out.events
     t_end = float(t_eval[-1])
     t = float(t_eval[0])
@@ -226,14 +278,17 @@ def integrate_bdf2(problem, t_eval, out, guard, rtol, atol, max_step, first_step
     h = fixed if fixed > 0 else (first_step if first_step > 0 else 1e-4 * span)
     t_start, k_step = t, 0
     h_cap = max_step if max_step > 0 else span
-    ts, ys = [t], [y]  # the last (up to 3) accepted points, oldest first
+    ts, ys, zs = [t], [y], [None]  # the last (up to 3) accepted points, oldest first
     err_prev = 1.0
     n_etf = n_nlf = 0
     message = "reached the final time"
 
     def finish(success, msg):
-        guard.n_rhs += int(counts[0])
-        guard.n_jac += int(counts[1])
+        guard.n_rhs += int(counts[RESIDUALS])
+        guard.n_jac += int(counts[J_EVALS])
+        tally = options.get("newton_counts")
+        if tally is not None:
+            tally += counts
         guard.n_error_test_failures = n_etf
         guard.n_nonlinear_failures = n_nlf
         return success, msg
@@ -262,11 +317,16 @@ def integrate_bdf2(problem, t_eval, out, guard, rtol, atol, max_step, first_step
             b = (-(1.0 + w) / h) * y + (w * w / (h * (1.0 + w))) * ys[-2]
             y_pred = _quadratic(ts, ys, t_new, slope)
             h2 = ts[-2] - ts[-3] if len(ts) == 3 else 0.0
-        if state[0] != 0.0 and abs(cj / state[0] - 1.0) > CJ_REFRESH:
-            state[1] = 1.0
+        if state[CJ_J] != 0.0 and abs(cj / state[CJ_J] - 1.0) > CJ_REFRESH:
+            state[REFRESH] = 1.0
         err_w = 1.0 / (NEWTON_FACTOR * (rtol * np.abs(y_pred[err_idx]) + atol_v))
+        if len(ts) == 3 and zs[0] is not None:
+            z_new[:] = _quadratic(ts, zs, t_new)
+            state[Z_GIVEN] = 1.0
+        else:
+            state[Z_GIVEN] = 0.0
         code = model.newton(model.args, t_new, cj, np.ascontiguousarray(b), y_new, yp, F, dy, data, lu.arrays,
-                            np.ascontiguousarray(y_pred), err_idx, err_w, state, counts)
+                            np.ascontiguousarray(y_pred), z_new, pick, err_idx, err_w, state, counts)
         interrupt()
         if code != 0:
             n_nlf += 1
@@ -298,7 +358,7 @@ def integrate_bdf2(problem, t_eval, out, guard, rtol, atol, max_step, first_step
             return y_acc if s >= t_new else _quadratic(pts_t, pts_y, s, slope)
 
         t_old = t
-        ts, ys = (ts + [t_new])[-3:], (ys + [y_acc])[-3:]
+        ts, ys, zs = (ts + [t_new])[-3:], (ys + [y_acc])[-3:], (zs + [z_new.copy()])[-3:]
         t, y = t_new, y_acc
         if events is not None:
             g_prev, te = step_events(events, state_at, t_old, t_new, g_prev, y_acc, out)
