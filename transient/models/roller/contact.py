@@ -62,6 +62,10 @@ def _dense_lu(film, u, shift):
 def _two_level(coarse, film, u, shift):
     return TwoLevel(film, coarse, u, shift, NewtonMatrix(film, u, shift))
 
+#: y clusters of the clustered grids at the two ends of the dry footprint: sech^2 width [c] and share of the
+#: nodes each. The film's end constriction (the side lobes of the horseshoe) lies within ~0.3 c of the
+#: footprint's end and narrows as the load grows (docs/ehl.md, section 6)
+END_WIDTH, END_FRACTION = 0.15, 0.15
 #: above this many unknowns the dense path solves its linear systems by GMRES + a reused LU
 KRYLOV_ABOVE = 600
 #: first level (and two-level coarse grid) of the uniform-grid solves
@@ -219,9 +223,10 @@ class RollerContact:
         s = self.scales
         x = clustered_axis(x0, x1, nx, _weights(x1 - x0, [(-0.5, 1.8, 0.6)]), snap=[0.0])
         yd = self.roller.y_d / s["B"]
-        ends = [0.5 * (-yd + s["y_lo"]), 0.5 * (yd + s["y_hi"])]
-        narrow = max(1.5, 0.5 * (s["y_hi"] - yd))
-        cl = [(e, narrow, 0.3) for e in ends] + [(e, 10.0 * narrow, 0.1) for e in ends]
+        cl = []
+        for start, end in ((-yd, s["y_lo"]), (yd, s["y_hi"])):
+            cl += [(0.5 * (start + end), max(1.0, abs(end - start)), 0.25), (end, END_WIDTH, END_FRACTION),
+                   (start, 8.0, 0.05)]
         y = clustered_axis(y0, y1, ny, _weights(y1 - y0, cl), snap=[0.0, -yd, yd])
         return TensorGrid(x, y)
 
@@ -313,6 +318,10 @@ class RollerContact:
         grid = self.grid
         u, g_prev, iters, ok, msg, info = None, None, 0, True, "", {"levels": []}
         specs = self.levels()
+        if self.mid_plane_M > M_EASY_2D and specs[0][0] == "clustered":
+            # the path runs on the coarsest level fine enough for this load (as LineContact.steady)
+            fine_enough = [self.contact_spacing(self.make_grid(*sp)) * self.mid_plane_M <= 4.0 for sp in specs]
+            specs = specs[fine_enough.index(True) if any(fine_enough) else -1:]
         for k, spec in enumerate(specs):
             last = k == len(specs) - 1
             g = grid if last else self.make_grid(*spec)
@@ -365,6 +374,14 @@ class RollerContact:
         if not ok and raise_on_failure:
             raise EHLConvergenceError(msg, res)
         return res
+
+    @staticmethod
+    def contact_spacing(grid: TensorGrid) -> float:
+        """Largest x node spacing within 1.5 c of the centre line (units of c). A heavily loaded line
+        contact has discrete solutions only while it is <= 4/M (docs/ehl.md, section 7)."""
+        x = grid.x
+        near = (x[1:] > -1.5) & (x[:-1] < 1.5)
+        return float(np.max(np.diff(x)[near]))
 
     @property
     def mid_plane_M(self) -> float:
