@@ -18,11 +18,13 @@ scaled by ``c``, pressure by ``p_h = E' c/(4 R_m)`` and the film by ``c^2/R_m``
 Grids: ``"paper"`` -- 94 x 45 nodes (the paper's maximum), non-uniform: 60 % of the X nodes clustered on
 the inlet side of the contact (sech^2 density centred at -0.5 c, width 1.8 c: on the line contact this
 gives the central film within 0.7 % of its grid-converged value, the uniform 94-node grid 1.2 %), and in
-Y 30 % of the nodes on each profiled end; nodes on ``X = 0`` and ``Y = 0, +-Y_d``; elasticity by the
-dense influence matrix. ``("clustered", nx, ny)``: the same law with other node counts. ``(nx, ny)``:
+Y at each end 25 % of the nodes on the profiled part of the footprint and 15 % on the footprint's end
+(where the film's side lobes close under load: ``END_WIDTH``); nodes on ``X = 0`` and ``Y = 0, +-Y_d``;
+elasticity by the dense influence matrix. ``("clustered", nx, ny)``: the same law with other node counts. ``(nx, ny)``:
 uniform, elasticity by DC-FFT and Newton-Krylov (:mod:`transient.models.roller.krylov`).
 
-Steady solve: nested iteration from the dry pressure on coarse grids to the requested one; Newton on the
+Steady solve: nested iteration from the dry pressure on coarse grids to the requested one (above the paper
+case's load: load continuation on the coarsest level whose x spacing resolves the load); Newton on the
 Fischer-Burmeister system with the dense matrix (small grids) or GMRES with a single-precision LU
 preconditioner kept across iterations (the paper grid) or a two-level preconditioner (uniform grids).
 """
@@ -344,6 +346,12 @@ class RollerContact:
                 if not ok:
                     msg = (f"level 1/{len(specs)} ({g.x.size} x {g.y.size} nodes): Newton did not converge; "
                            f"{path.message}")
+                    if path.path:
+                        msg += f" (last converged load {path.path[-1][0]:.4g} N of {self.load:.4g} N)"
+                    dx, m = self.contact_spacing(g), self.mid_plane_M
+                    if dx * m > 4.0:
+                        msg += (f"; the x node spacing in the contact, {dx:.3g} c, exceeds 4/M = {4.0 / m:.3g} c "
+                                f"(mid-plane M = {m:.3g}): the grid is too coarse for this load, refine x")
                     film = path.film
             for pseudo in attempts:
                 if spec[0] == "uniform":
