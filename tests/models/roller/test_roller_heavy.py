@@ -9,6 +9,7 @@ import pytest
 from transient.models.roller import RollerContact, TaperedRoller
 from transient.models.roller.contact import END_WIDTH
 from transient.params import park
+from transient.physics.line_formulas import moes_central
 
 
 def contact(factor, grid="paper", tilt=0.002):
@@ -38,13 +39,18 @@ def _checks(c, s):
 
 
 @pytest.mark.slow
-def test_ten_times_the_paper_load_on_the_paper_grid():
-    c = contact(10.0)
+def test_twice_the_paper_load_on_the_paper_grid():
+    c = contact(2.0)
     s = c.steady()
     _checks(c, s)
     assert s.solver_info["continuation"]["loads"][-1] == pytest.approx(c.load)
-    # heavily loaded: the pressure is nearly the dry (Hertzian) one, the film a few per cent of c^2/R
-    assert s.p_max == pytest.approx(c.dry().p_max, rel=0.15)
+    # the pressure stays near the dry (Hertzian) one; the central film thins as Moes' line-contact
+    # formula at the mid-plane groups says (its own accuracy is a few per cent)
     base = contact(1.0).steady()
-    assert s.h_central < base.h_central  # the central film thins as the load grows
-    assert math.log(s.h_central / base.h_central) / math.log(10.0) == pytest.approx(-0.1, abs=0.06)
+    ratio = s.h_central / base.h_central
+    L = c.G * (2.0 * c.U) ** 0.25
+    moes = moes_central(c.mid_plane_M, L) / moes_central(contact(1.0).mid_plane_M, L)
+    print(f"p_max / dry p_max = {s.p_max / c.dry().p_max:.3f}; h_c(2x) / h_c(1x) = {ratio:.4f}, Moes {moes:.4f}; "
+          f"h_min = {s.h_min:.3e} m at y = {s.y_of_h_min:.4e} m; wall {s.wall_time:.0f} s")
+    assert s.p_max == pytest.approx(c.dry().p_max, rel=0.25)
+    assert ratio == pytest.approx(moes, rel=0.08)
