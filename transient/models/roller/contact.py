@@ -319,6 +319,7 @@ class RollerContact:
         t0 = time.perf_counter()
         grid = self.grid
         u, g_prev, iters, ok, msg, info = None, None, 0, True, "", {"levels": []}
+        owner = self  # the contact whose scales the state is in (a failed path's last converged load)
         specs = self.levels()
         if self.mid_plane_M > M_EASY_2D and specs[0][0] == "clustered":
             # the path runs on the coarsest level fine enough for this load (as LineContact.steady)
@@ -352,7 +353,7 @@ class RollerContact:
                     if dx * m > 4.0:
                         msg += (f"; the x node spacing in the contact, {dx:.3g} c, exceeds 4/M = {4.0 / m:.3g} c "
                                 f"(mid-plane M = {m:.3g}): the grid is too coarse for this load, refine x")
-                    film = path.film
+                    film, owner = path.film, path.contact
             for pseudo in attempts:
                 if spec[0] == "uniform":
                     jac = NewtonKrylov(film, partial(_two_level, coarse), restart=80, max_iter=400, refresh_after=60)
@@ -378,7 +379,7 @@ class RollerContact:
                 break
         if ok:
             msg = f"converged: {iters} Newton iterations over {len(specs)} grid level(s)"
-        res = self.result(film, u, ok, msg, iters, nr.residual_norms, time.perf_counter() - t0, info)
+        res = owner.result(film, u, ok, msg, iters, nr.residual_norms, time.perf_counter() - t0, info)
         if not ok and raise_on_failure:
             raise EHLConvergenceError(msg, res)
         return res
@@ -446,11 +447,11 @@ class RollerContact:
                               name="RollerContact continuation start")
         except NewtonError as exc:
             return PathResult(state=exc.result.x, s=0.0, success=False, iterations=exc.result.iterations,
-                              residual_norms=list(exc.result.residual_norms), film=f0,
+                              residual_norms=list(exc.result.residual_norms), film=f0, contact=c0,
                               message=f"Newton failed at the start of the path (load {w0:.4g} N)")
         path = follow(solve, predict, central, nr.x)
         path.iterations += nr.iterations
-        path.film = at(path.s)[1]
+        path.contact, path.film = at(path.s)
         path.path = [(at(s)[0].load, hc) for s, hc in path.path]
         return path
 
