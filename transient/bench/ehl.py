@@ -9,7 +9,7 @@
    the cost of one Newton iteration on the finest level against the number of unknowns N.
 3. Transients (IDA, dense Jacobian) from the dry contact to the steady film, as multiples of one steady
    solve of the same problem: the line contact (401 nodes) and a coarse 2-D grid.
-4. Service loads: the paper's case tilted +0.002 deg at 1x, 10x and 50x its load (W = 2e-5, 2e-4, 1e-3)
+4. Service loads: the paper's case tilted +0.002 deg at 1x, 2x, 10x and 50x its load (W = 2e-5 ... 1e-3)
    on the paper grid, side by side: converged or not (the named failure's message), wall time, Newton
    iterations, continuation steps, h_c, h_min and p_max against the dry contact's.
 
@@ -105,11 +105,11 @@ def _time_fine_level(grid) -> float:
 
 
 def service_loads(quick: bool) -> list:
-    """The tilted paper case at multiples of its load on the paper grid (``quick``: 1x and 10x only; a
-    coarser x axis would not resolve the 10x load, whose mid-plane M is 31: spacing <= 4/M)."""
+    """The tilted paper case at multiples of its load on the paper grid (``quick``: 1x and 2x only).
+    10x and 50x do not converge today (docs/ehl.md, section 8): the table gives the named failure."""
     out = []
     grid = "paper"
-    for factor in (1.0, 10.0) if quick else (1.0, 10.0, 50.0):
+    for factor in (1.0, 2.0) if quick else (1.0, 2.0, 10.0, 50.0):
         c = RollerContact.from_dimensionless(**dict(park.DIMENSIONLESS, W=park.DIMENSIONLESS["W"] * factor),
                                              roller=TaperedRoller(**dict(park.ROLLER, tilt_deg=0.002)),
                                              speed=park.SPEED, grid=grid)
@@ -138,13 +138,13 @@ def transients(quick: bool) -> list:
                     limit_error=abs(r.h_central[-1] / s.h_central - 1)))
     ro = TaperedRoller(0.01, 10.0, 0.02, 0.005, 0.002, 0.0)
     c = RollerContact.from_dimensionless(U=1e-11, G=2500.0, W=2e-5 * 0.4 / 1.4, modulus=220e9, roller=ro,
-                                         grid=("clustered", 32, 23))
+                                         grid=("clustered", 32, 25))
     c.dry()
     t0 = time.perf_counter()
     s = c.steady(penalty=GAMMA)
     ts = time.perf_counter() - t0
     r = c.transient(t_end=(20 if quick else 40) * c.time_scale, start="dry", rtol=1e-5, n_out=11)
-    out.append(dict(case=f"roller (Y_d = 0.2 R_m), clustered 32 x 23 ({c.grid.n + 1} unknowns)", steady_s=ts,
+    out.append(dict(case=f"roller (Y_d = 0.2 R_m), clustered 32 x 25 ({c.grid.n + 1} unknowns)", steady_s=ts,
                     transient_s=r.wall_time, ratio=r.wall_time / ts, steps=r.n_steps, jacobians=r.n_jacobians,
                     success=r.success, limit_error=abs(r.h_central[-1] / s.h_central - 1)))
     return out
@@ -228,6 +228,6 @@ def main(out, quick: bool = False) -> str:
                      f"({r['y_of_h_min']:+.4f}) | {r['p_max'] / r['p_dry']:.3f} |")
     for r in service:
         if not r["success"]:
-            lines.append(f"\n{r['factor']:g}x: {r['message']}")
+            lines.append(f"\n{r['factor']:g}x (film numbers of the last converged load): {r['message']}")
     lines += ["", f"Total bench time {data['total_s']:.0f} s."]
     return "\n".join(lines)
