@@ -60,7 +60,7 @@ def test_penalty_form_converges_to_the_exact_complementarity_as_one_over_gamma()
 def test_roller_transient_from_dry_tends_to_steady():
     ro = TaperedRoller(R, 10.0, 2 * R, 0.5 * R, 0.2 * R, 0.0)
     c = RollerContact.from_dimensionless(U=1e-11, G=2500.0, W=2e-5 * 0.4 / 1.4, modulus=E, roller=ro,
-                                         grid=("clustered", 32, 23))
+                                         grid=("clustered", 32, 25))
     s = c.steady(penalty=GAMMA)
     r = c.transient(t_end=40 * c.time_scale, start="dry", rtol=1e-5, n_out=11)
     assert r.success

@@ -18,11 +18,13 @@ scaled by ``c``, pressure by ``p_h = E' c/(4 R_m)`` and the film by ``c^2/R_m``
 Grids: ``"paper"`` -- 94 x 45 nodes (the paper's maximum), non-uniform: 60 % of the X nodes clustered on
 the inlet side of the contact (sech^2 density centred at -0.5 c, width 1.8 c: on the line contact this
 gives the central film within 0.7 % of its grid-converged value, the uniform 94-node grid 1.2 %), and in
-Y 30 % of the nodes on each profiled end; nodes on ``X = 0`` and ``Y = 0, +-Y_d``; elasticity by the
-dense influence matrix. ``("clustered", nx, ny)``: the same law with other node counts. ``(nx, ny)``:
+Y at each end 25 % of the nodes on the profiled part of the footprint and 15 % on the footprint's end
+(where the film's side lobes close under load: ``END_WIDTH``); nodes on ``X = 0`` and ``Y = 0, +-Y_d``;
+elasticity by the dense influence matrix. ``("clustered", nx, ny)``: the same law with other node counts. ``(nx, ny)``:
 uniform, elasticity by DC-FFT and Newton-Krylov (:mod:`transient.models.roller.krylov`).
 
-Steady solve: nested iteration from the dry pressure on coarse grids to the requested one; Newton on the
+Steady solve: nested iteration from the dry pressure on coarse grids to the requested one (above the paper
+case's load: load continuation on the coarsest level whose x spacing resolves the load); Newton on the
 Fischer-Burmeister system with the dense matrix (small grids) or GMRES with a single-precision LU
 preconditioner kept across iterations (the paper grid) or a two-level preconditioner (uniform grids).
 """
@@ -62,6 +64,10 @@ def _dense_lu(film, u, shift):
 def _two_level(coarse, film, u, shift):
     return TwoLevel(film, coarse, u, shift, NewtonMatrix(film, u, shift))
 
+#: y clusters of the clustered grids at the two ends of the dry footprint: sech^2 width [c] and share of the
+#: nodes each. The film's end constriction (the side lobes of the horseshoe) lies within ~0.3 c of the
+#: footprint's end and narrows as the load grows (docs/ehl.md, section 6)
+END_WIDTH, END_FRACTION = 0.15, 0.15
 #: above this many unknowns the dense path solves its linear systems by GMRES + a reused LU
 KRYLOV_ABOVE = 600
 #: first level (and two-level coarse grid) of the uniform-grid solves
@@ -219,9 +225,10 @@ class RollerContact:
         s = self.scales
         x = clustered_axis(x0, x1, nx, _weights(x1 - x0, [(-0.5, 1.8, 0.6)]), snap=[0.0])
         yd = self.roller.y_d / s["B"]
-        ends = [0.5 * (-yd + s["y_lo"]), 0.5 * (yd + s["y_hi"])]
-        narrow = max(1.5, 0.5 * (s["y_hi"] - yd))
-        cl = [(e, narrow, 0.3) for e in ends] + [(e, 10.0 * narrow, 0.1) for e in ends]
+        cl = []
+        for start, end in ((-yd, s["y_lo"]), (yd, s["y_hi"])):
+            cl += [(0.5 * (start + end), max(1.0, abs(end - start)), 0.25), (end, END_WIDTH, END_FRACTION),
+                   (start, 8.0, 0.05)]
         y = clustered_axis(y0, y1, ny, _weights(y1 - y0, cl), snap=[0.0, -yd, yd])
         return TensorGrid(x, y)
 
@@ -312,7 +319,12 @@ class RollerContact:
         t0 = time.perf_counter()
         grid = self.grid
         u, g_prev, iters, ok, msg, info = None, None, 0, True, "", {"levels": []}
+        owner = self  # the contact whose scales the state is in (a failed path's last converged load)
         specs = self.levels()
+        if self.mid_plane_M > M_EASY_2D and specs[0][0] == "clustered":
+            # the path runs on the coarsest level fine enough for this load (as LineContact.steady)
+            fine_enough = [self.contact_spacing(self.make_grid(*sp)) * self.mid_plane_M <= 4.0 for sp in specs]
+            specs = specs[fine_enough.index(True) if any(fine_enough) else -1:]
         for k, spec in enumerate(specs):
             last = k == len(specs) - 1
             g = grid if last else self.make_grid(*spec)
@@ -335,7 +347,13 @@ class RollerContact:
                 if not ok:
                     msg = (f"level 1/{len(specs)} ({g.x.size} x {g.y.size} nodes): Newton did not converge; "
                            f"{path.message}")
-                    film = path.film
+                    if path.path:
+                        msg += f" (last converged load {path.path[-1][0]:.4g} N of {self.load:.4g} N)"
+                    dx, m = self.contact_spacing(g), self.mid_plane_M
+                    if dx * m > 4.0:
+                        msg += (f"; the x node spacing in the contact, {dx:.3g} c, exceeds 4/M = {4.0 / m:.3g} c "
+                                f"(mid-plane M = {m:.3g}): the grid is too coarse for this load, refine x")
+                    film, owner = path.film, path.contact
             for pseudo in attempts:
                 if spec[0] == "uniform":
                     jac = NewtonKrylov(film, partial(_two_level, coarse), restart=80, max_iter=400, refresh_after=60)
@@ -361,10 +379,18 @@ class RollerContact:
                 break
         if ok:
             msg = f"converged: {iters} Newton iterations over {len(specs)} grid level(s)"
-        res = self.result(film, u, ok, msg, iters, nr.residual_norms, time.perf_counter() - t0, info)
+        res = owner.result(film, u, ok, msg, iters, nr.residual_norms, time.perf_counter() - t0, info)
         if not ok and raise_on_failure:
             raise EHLConvergenceError(msg, res)
         return res
+
+    @staticmethod
+    def contact_spacing(grid: TensorGrid) -> float:
+        """Largest x node spacing within 1.5 c of the centre line (units of c). A heavily loaded line
+        contact has discrete solutions only while it is <= 4/M (docs/ehl.md, section 7)."""
+        x = grid.x
+        near = (x[1:] > -1.5) & (x[:-1] < 1.5)
+        return float(np.max(np.diff(x)[near]))
 
     @property
     def mid_plane_M(self) -> float:
@@ -421,11 +447,11 @@ class RollerContact:
                               name="RollerContact continuation start")
         except NewtonError as exc:
             return PathResult(state=exc.result.x, s=0.0, success=False, iterations=exc.result.iterations,
-                              residual_norms=list(exc.result.residual_norms), film=f0,
+                              residual_norms=list(exc.result.residual_norms), film=f0, contact=c0,
                               message=f"Newton failed at the start of the path (load {w0:.4g} N)")
         path = follow(solve, predict, central, nr.x)
         path.iterations += nr.iterations
-        path.film = at(path.s)[1]
+        path.contact, path.film = at(path.s)
         path.path = [(at(s)[0].load, hc) for s, hc in path.path]
         return path
 

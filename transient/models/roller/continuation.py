@@ -34,8 +34,9 @@ class PathResult:
     rejected: int = 0
     residual_norms: list = field(default_factory=list)
     path: list = field(default_factory=list)
-    #: the discrete problem at ``s`` (set by the caller)
+    #: the discrete problem at ``s`` and the contact it belongs to (set by the caller)
     film: object = None
+    contact: object = None
 
 
 def follow(solve, predict, central_film, u0, *, first_step: float = 0.25, max_change: float = 0.4,
