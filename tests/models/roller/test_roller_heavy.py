@@ -1,7 +1,6 @@
 """The tilted tapered roller above the paper's load: the clustered grid resolves the ends of the
 footprint, and the steady film converges with positive film, balanced load and a Hertzian pressure."""
 
-import math
 
 import numpy as np
 import pytest

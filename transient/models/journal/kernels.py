@@ -155,18 +155,23 @@ def state_fields(u, X, Y, switch, geo, fields, fv):
 
 
 @njit(cache=True)
-def _stencil_residual(u, X, Y, switch, geo, fields, fv, R):
+def stencil_residual(u, X, Y, switch, geo, fields, fv, R, speed_ratio):
+    """The film's net outflow ``R`` at the position ``(X, Y)``, its Couette part scaled by ``speed_ratio``
+    (``Omega / omega_ref``: 1 here, the shaft's speed function in :mod:`transient.models.rotor.kernels`)."""
     H, P, dP, C, D, dD, k, c, zero, _ = fields
     faces, boundary, cells, face_k, bulk = fv
     state_fields(u, X, Y, switch, geo, fields, fv)
     if gecim_bulk(bulk):  # the Poiseuille flux is the Gecim bulk's (gecim_film), not k grad P
         k[:] = 0.0
+    if speed_ratio != 1.0:
+        c *= speed_ratio
     residual_kernel(u, P, C, k, k, c, zero, True, faces, boundary, cells, face_k, R)
     add_bulk_residual(P, H, cells.free, bulk, R)
 
 
 @njit(cache=True)
-def _stencil_jacobian(u, X, Y, switch, geo, fields, extras, fv, data):
+def stencil_jacobian(u, X, Y, switch, geo, fields, extras, fv, data, speed_ratio):
+    """The Jacobian of :func:`stencil_residual` into the arrow pattern ``data`` (cell block, position columns)."""
     layer_gap, darcy = switch.layer_gap, switch.darcy
     cosp, sinp, area = geo
     H, P, dP, C, D, dD, k, c, zero, _ = fields
@@ -178,6 +183,9 @@ def _stencil_jacobian(u, X, Y, switch, geo, fields, extras, fv, data):
     if gecim_bulk(bulk):
         k[:] = 0.0
         dk_dq[:] = 0.0
+    if speed_ratio != 1.0:
+        c *= speed_ratio
+        dc_dq *= speed_ratio
     jacobian_kernel(P, dP, C, D, k, zero, k, zero, c, zero, dk_dq, dk_dq, dc_dq, no_dq, True,
                     faces, boundary, cells, face_k, pos_col, data)
     add_bulk_jacobian(P, dP, H, cosp, sinp, cells.free, bulk, pos_col, dk_dq.shape[0], data)
@@ -192,7 +200,7 @@ def ode_rhs(tau, y, out, switch, rotor, geo, fields, fv):
     free = fv.cells.free
     n = free.size
     X, Y, VX, VY = y[n], y[n + 1], y[n + 2], y[n + 3]
-    _stencil_residual(y[:n], X, Y, switch, geo, fields, fv, R)
+    stencil_residual(y[:n], X, Y, switch, geo, fields, fv, R, 1.0)
     for i in range(n):
         if free[i]:
             out[i] = (-R[i] / area[i] - C[i] * (VX * cosp[i] + VY * sinp[i])) / (H[i] * D[i])
@@ -220,7 +228,7 @@ def ode_jacobian(tau, y, data, f, switch, rotor, geo, fields, extras, fv):
     free, u_fixed, pos_c = fv.cells
     n = free.size
     X, Y, VX, VY = y[n], y[n + 1], y[n + 2], y[n + 3]
-    _stencil_jacobian(y[:n], X, Y, switch, geo, fields, extras, fv, data)
+    stencil_jacobian(y[:n], X, Y, switch, geo, fields, extras, fv, data, 1.0)
     for i in range(n):
         scale[i] = -1.0 / (H[i] * D[i] * area[i]) if free[i] else 0.0
     scale_rows(data, indices, scale)  # rotor rows: scale 1 (they are filled below)
@@ -250,7 +258,7 @@ def dae_residual(tau, y, yp, out, switch, rotor, geo, fields, fv):
     n = free.size
     X, Y, VX, VY = y[n], y[n + 1], y[n + 2], y[n + 3]
     Xd, Yd = yp[n], yp[n + 1]
-    _stencil_residual(y[:n], X, Y, switch, geo, fields, fv, R)
+    stencil_residual(y[:n], X, Y, switch, geo, fields, fv, R, 1.0)
     for i in range(n):
         if free[i]:
             out[i] = area[i] * (H[i] * D[i] * yp[i] + C[i] * (Xd * cosp[i] + Yd * sinp[i])) + R[i]
@@ -279,7 +287,7 @@ def dae_jacobian(tau, y, yp, cj, data, switch, rotor, geo, fields, extras, fv):
     n = free.size
     X, Y = y[n], y[n + 1]
     Xd, Yd = yp[n], yp[n + 1]
-    _stencil_jacobian(y[:n], X, Y, switch, geo, fields, extras, fv, data)
+    stencil_jacobian(y[:n], X, Y, switch, geo, fields, extras, fv, data, 1.0)
     for i in range(n):
         if free[i]:
             a = area[i]
@@ -312,7 +320,7 @@ def film_residual(u, X, Y, VX, VY, rate, C_ref, out, switch, geo, fields, fv):
     cosp, sinp, area = geo
     H, P, dP, C, D, dD, k, c, zero, R = fields
     free = fv.cells.free
-    _stencil_residual(u, X, Y, switch, geo, fields, fv, out)
+    stencil_residual(u, X, Y, switch, geo, fields, fv, out, 1.0)
     for i in range(u.size):
         if free[i]:
             out[i] += area[i] * (C[i] * (VX * cosp[i] + VY * sinp[i]) + rate * H[i] * (C[i] - C_ref[i]))
@@ -326,7 +334,7 @@ def film_jacobian(u, X, Y, VX, VY, rate, data, switch, geo, fields, extras, fv):
     H, P, dP, C, D, dD, k, c, zero, R = fields
     dk_dq, dc_dq, no_dq, pos_row, pos_col, indices, scale = extras
     free, u_fixed, pos_c = fv.cells
-    _stencil_jacobian(u, X, Y, switch, geo, fields, extras, fv, data)
+    stencil_jacobian(u, X, Y, switch, geo, fields, extras, fv, data, 1.0)
     ne = dk_dq.shape[0]
     for i in range(u.size):
         if free[i]:
@@ -381,7 +389,7 @@ def _content_film(y, switch, geo, fields, fv, work, sym):
     u, theta = work.u, work.theta
     n = free.size
     content_universal(y, switch, geo, free, u_fixed, theta, u)
-    _stencil_residual(u, y[n], y[n + 1], switch, geo, fields, fv, R)
+    stencil_residual(u, y[n], y[n + 1], switch, geo, fields, fv, R, 1.0)
     return film_force(P, cosp, sinp, area, sym)
 
 
@@ -435,7 +443,7 @@ def content_jacobian(tau, y, yp, cj, data, switch, rotor, geo, fields, extras, f
     u, theta, E, ux, uy, indptr = work
     n = free.size
     content_universal(y, switch, geo, free, u_fixed, theta, u)
-    _stencil_jacobian(u, y[n], y[n + 1], switch, geo, fields, extras, fv, data)
+    stencil_jacobian(u, y[n], y[n + 1], switch, geo, fields, extras, fv, data, 1.0)
     for j in range(n):
         h = H[j]
         if free[j] and h > H_FLOOR:

@@ -17,9 +17,7 @@ from __future__ import annotations
 
 from numba import njit
 
-from transient.fv.reynolds import jacobian_kernel, residual_kernel
-from transient.models.journal.kernels import (add_bulk_jacobian, add_bulk_residual, film_force, gecim_bulk,
-                                              position_derivatives, state_fields)
+from transient.models.journal.kernels import film_force, stencil_jacobian, stencil_residual
 
 
 @njit(cache=True)
@@ -27,15 +25,8 @@ def block_residual(u, up, X, Y, Xd, Yd, s, out, switch, geo, fields, fv, sym):
     """The film block's residual (module docstring) into ``out``; returns the film force ``(Fx, Fy)``."""
     cosp, sinp, area = geo
     H, P, dP, C, D, dD, k, c, zero, R = fields
-    faces, boundary, cells, face_k, bulk = fv
-    free = cells.free
-    state_fields(u, X, Y, switch, geo, fields, fv)
-    if gecim_bulk(bulk):
-        k[:] = 0.0
-    for i in range(c.size):
-        c[i] *= s
-    residual_kernel(u, P, C, k, k, c, zero, True, faces, boundary, cells, face_k, R)
-    add_bulk_residual(P, H, free, bulk, R)
+    free = fv.cells.free
+    stencil_residual(u, X, Y, switch, geo, fields, fv, R, s)
     for i in range(free.size):
         if free[i]:
             out[i] = area[i] * (H[i] * D[i] * up[i] + C[i] * (Xd * cosp[i] + Yd * sinp[i])) + R[i]
@@ -49,24 +40,11 @@ def block_jacobian(u, up, X, Y, Xd, Yd, s, cj, local, switch, geo, fields, extra
     """``dF/du + cj dF/du'`` of :func:`block_residual` in the film's own arrow pattern (``local``): the cell
     block, ``dF_i/dX`` and ``dF_i/dY`` (``cj`` terms of ``X'``, ``Y'`` included) in extra columns 0 and 1, and
     the force derivatives ``dFx/du_j``, ``dFy/du_j`` in extra rows 2 and 3."""
-    layer_gap, darcy = switch.layer_gap, switch.darcy
     cosp, sinp, area = geo
     H, P, dP, C, D, dD, k, c, zero, R = fields
-    dk_dq, dc_dq, no_dq, pos_row, pos_col, indices, scale = extras
-    faces, boundary, cells, face_k, bulk = fv
-    free, u_fixed, pos_c = cells
-    state_fields(u, X, Y, switch, geo, fields, fv)
-    position_derivatives(H, cosp, sinp, layer_gap, darcy, dk_dq, dc_dq)
-    if gecim_bulk(bulk):
-        k[:] = 0.0
-        dk_dq[:] = 0.0
-    for i in range(c.size):
-        c[i] *= s
-        dc_dq[0, i] *= s
-        dc_dq[1, i] *= s
-    jacobian_kernel(P, dP, C, D, k, zero, k, zero, c, zero, dk_dq, dk_dq, dc_dq, no_dq, True,
-                    faces, boundary, cells, face_k, pos_col, local)
-    add_bulk_jacobian(P, dP, H, cosp, sinp, free, bulk, pos_col, dk_dq.shape[0], local)
+    pos_row, pos_col = extras.pos_row, extras.pos_col
+    free, u_fixed, pos_c = fv.cells
+    stencil_jacobian(u, X, Y, switch, geo, fields, extras, fv, local, s)
     for i in range(free.size):
         if free[i]:
             a = area[i]
