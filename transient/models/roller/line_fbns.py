@@ -1,0 +1,174 @@
+"""Mass-conserving (film-content) line-contact film for the Fischer-Burmeister-Newton-Schur iteration.
+
+The line contact of :mod:`transient.models.roller.line_contact` in the fractional-film form of
+Jakobsson-Floberg-Olsson / Elrod, as solved by FBNS (Woloszynski, Podsiadlo & Stachowiak, *Tribol. Lett.*
+58, 2015; Hansen, Kacan, Frohnapfel & Codrignani, *Tribol. Lett.* 70, 2022, with the elastic film). Scaled
+units of :mod:`transient.models.roller.ehl_problem` (x by b, p by p_h, h by b^2/R); per interior node ``I``
+with control volume ``dx_I``::
+
+    R_I = { e_{I+1/2} (p_{I+1} - p_I)/(x_{I+1} - x_I) - e_{I-1/2} (p_I - p_{I-1})/(x_I - x_{I-1})
+            - lam (q_{I+1/2} - q_{I-1/2}) } / dx_I = 0,        e = rho h^3/eta,  m = rho theta h
+    q_{I+1/2} = m_I + f_R (m_I - m_{I-1})     (the Reynolds residual's upwind flux, order 1 or 2)
+    FB(p_I, 1 - theta_I) = 0,   FB(a, b) = a + b - sqrt(a^2 + b^2)      (p >= 0, theta <= 1, p (1 - theta) = 0)
+    sum_I dx_I p_I / w_bar - 1 = 0                                        (the unknown h0)
+
+with ``h = h0 + x^2/2 + K p`` (:class:`~transient.models.roller.ehl_problem.EHLFilm`'s influence matrix).
+Where ``theta = 1`` the rows are those of the Reynolds-condition problem (``EHLFilm``); the two discrete
+problems differ only in the node where the film ruptures, so this form serves to reach the
+neighbourhood of the solution (its Fischer-Burmeister pair is linear in the unknowns, Newton's steps
+stay meaningful from the Hertz pressure at any load), and :mod:`transient.models.roller.line_newton`
+finishes on the Reynolds-condition equations.
+
+:class:`LineContentFilm` exposes the interface of :func:`transient.models.point.fbns.fbns`
+(``equations``, ``newton_matrix``, ``fb_derivatives``).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import scipy.sparse as sp
+from numba import njit
+
+from transient.models.roller.ehl_problem import EHLFilm
+from transient.models.roller.kernels import node_properties
+
+#: local Jacobian slots: centre, west, east, west-west
+N_LOCAL = 4
+
+
+@njit(cache=True, error_model="numpy")
+def content_residual(p_full, t_full, x, props, lam, order2, res, scale, dp, dh, dt):
+    """Reynolds rows ``res`` (module docstring), their scales (Poiseuille diagonal plus ``lam rho h / dx``)
+    and the local derivatives ``dp``, ``dh``, ``dt`` (n, 4: slots centre, west, east, west-west) with
+    respect to the full-node pressure, film and content; ``props`` from :func:`node_properties`
+    (film-free quantities: rho, drho, eps, deps/dp, deps/dh, rho h, drho/dp h)."""
+    nf = x.size
+    rho, drho, eps, deps_p, deps_h, rh, drh = props[0], props[1], props[2], props[3], props[4], props[5], props[6]
+    dE = np.zeros(N_LOCAL)
+    dM = np.zeros(N_LOCAL)
+    dP = np.zeros(N_LOCAL)
+    nb = np.zeros(N_LOCAL, np.int64)
+    for I in range(1, nf - 1):
+        r = I - 1
+        dxR = x[I + 1] - x[I]
+        dxL = x[I] - x[I - 1]
+        A = 0.5 * (dxR + dxL)
+        eR = 0.5 * (eps[I] + eps[I + 1])
+        eL = 0.5 * (eps[I - 1] + eps[I])
+        gR = (p_full[I + 1] - p_full[I]) / dxR
+        gL = (p_full[I] - p_full[I - 1]) / dxL
+        mC = rh[I] * t_full[I]
+        mW = rh[I - 1] * t_full[I - 1]
+        fR = 0.5 * dxR / dxL if order2 else 0.0
+        fL = 0.0
+        qL = mW
+        if I >= 2:
+            if order2:
+                fL = 0.5 * dxL / (x[I - 1] - x[I - 2])
+            qL = mW + fL * (mW - rh[I - 2] * t_full[I - 2])
+        qR = mC + fR * (mC - mW)
+        res[r] = (eR * gR - eL * gL - lam * (qR - qL)) / A
+        scale[r] = (eR / dxR + eL / dxL + lam * rh[I]) / A
+        for s in range(N_LOCAL):
+            dE[s] = 0.0
+            dM[s] = 0.0
+            dP[s] = 0.0
+            nb[s] = -1
+        nb[0], nb[1], nb[2] = I, I - 1, I + 1
+        dE[2] = 0.5 * gR
+        dE[0] = 0.5 * (gR - gL)
+        dE[1] = -0.5 * gL
+        dP[2] = eR / dxR
+        dP[0] = -(eR / dxR + eL / dxL)
+        dP[1] = eL / dxL
+        dM[0] = -lam * (1.0 + fR)
+        dM[1] = lam * (1.0 + fR + fL)
+        if I >= 2:
+            nb[3] = I - 2
+            dM[3] = -lam * fL
+        for s in range(N_LOCAL):
+            k = nb[s]
+            if k < 0:
+                dp[r, s] = 0.0
+                dh[r, s] = 0.0
+                dt[r, s] = 0.0
+                continue
+            dp[r, s] = (dP[s] + dE[s] * deps_p[k] + dM[s] * drh[k] * t_full[k]) / A
+            dh[r, s] = (dE[s] * deps_h[k] + dM[s] * rho[k] * t_full[k]) / A
+            dt[r, s] = dM[s] * rh[k] / A
+
+
+class LineContentFilm:
+    """The film-content form (module docstring) of an :class:`EHLFilm` line problem; unknowns
+    ``u = [p (n), theta (n), h0]``."""
+
+    def __init__(self, film: EHLFilm):
+        if film.grid.two_d or film.elastic == "fft":
+            raise ValueError("LineContentFilm: a line contact (1-D grid, dense or rigid elasticity)")
+        self.base = film
+        self.x = film.grid.x
+        self.nf = self.x.size
+        self.n = self.nf - 2
+        n = self.n
+        self.K = film.K if film.elastic == "dense" else np.zeros((self.nf, n))
+        self.weight = film.area_w
+        self.props = np.empty((7, self.nf))
+        offs = np.array([0, -1, 1, -2])
+        rows = np.repeat(np.arange(n), N_LOCAL)
+        cols = (np.arange(1, n + 1)[:, None] + offs[None, :]).ravel()  # full-node columns
+        self._rows, self._cols = rows, cols
+        self._inner = (cols >= 1) & (cols <= n)
+
+    def expand(self, u):
+        """``(p_full, theta_full, h0)``; the boundary nodes carry ``p = 0``, ``theta = 1``."""
+        n = self.n
+        pf = np.zeros(self.nf)
+        tf = np.ones(self.nf)
+        pf[1:-1] = u[:n]
+        tf[1:-1] = u[n: 2 * n]
+        return pf, tf, float(u[-1])
+
+    def equations(self, u, load_ratio=1.0):
+        """Residual pieces at ``u`` (as :meth:`transient.models.point.ehl_problem.PointFilm.equations`)."""
+        b = self.base
+        pf, tf, h0 = self.expand(u)
+        H = b.film(u[: self.n], h0)
+        v, al, ln0, d, c1, c2 = b.rheo_args
+        node_properties(pf, H, v, al, ln0, d, c1, c2, b.p_scale, self.props)
+        n = self.n
+        res, scale = np.empty(n), np.empty(n)
+        dp, dh, dt = np.empty((n, N_LOCAL)), np.empty((n, N_LOCAL)), np.empty((n, N_LOCAL))
+        content_residual(pf, tf, self.x, self.props, b.lam, b.order2, res, scale, dp, dh, dt)
+        p, t = u[:n], u[n: 2 * n]
+        bb = 1.0 - t
+        rad = np.sqrt(p * p + bb * bb)
+        return dict(H=H, res=res, scale=scale, dp=dp, dh=dh, dt=dt, fb=p + bb - rad, rad=rad,
+                    load=self.weight @ p - load_ratio)
+
+    def fb_derivatives(self, u, e):
+        """``(dFB/dp, dFB/dtheta)`` per node; at the kink ``p = 1 - theta = 0`` the element of the generalised
+        Jacobian of a full film (``(0, -1)``: theta held, the pressure free, as on the side ``p > 0``)."""
+        n = self.n
+        p, b, rad = u[:n], 1.0 - u[n: 2 * n], e["rad"]
+        safe = np.where(rad > 0, rad, 1.0)
+        return np.where(rad > 0, 1.0 - p / safe, 0.0), -np.where(rad > 0, 1.0 - b / safe, 1.0)
+
+    def local_matrices(self, e):
+        """Sparse ``(dR/dp local, dR/dh on the full nodes, dR/dtheta)``."""
+        n, nf = self.n, self.nf
+        rows, cols, inner = self._rows, self._cols, self._inner
+        ok = cols >= 0
+        a_p = sp.csr_matrix((e["dp"].ravel()[inner], (rows[inner], cols[inner] - 1)), shape=(n, n))
+        d_h = sp.csr_matrix((e["dh"].ravel()[ok], (rows[ok], cols[ok])), shape=(n, nf))
+        a_t = sp.csr_matrix((e["dt"].ravel()[inner], (rows[inner], cols[inner] - 1)), shape=(n, n))
+        return a_p, d_h, a_t
+
+    def newton_matrix(self, u, e, cj=0.0):
+        """``(dR/dp dense, dR/dtheta sparse, dR/dh0, load row)`` (steady: ``cj`` must be 0)."""
+        if cj:
+            raise ValueError("LineContentFilm is steady only (cj = 0)")
+        a_p, d_h, a_t = self.local_matrices(e)
+        j_pp = np.asarray(d_h @ self.K)
+        j_pp += a_p.toarray()
+        return j_pp, a_t, np.asarray(d_h.sum(axis=1)).ravel(), self.weight
+

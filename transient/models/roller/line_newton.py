@@ -1,0 +1,164 @@
+"""Fischer-Burmeister-Newton-Schur iteration of the line contact with a reused factorisation.
+
+Newton on the film-content equations of :class:`~transient.models.roller.line_fbns.LineContentFilm`
+(Woloszynski, Podsiadlo & Stachowiak, *Tribol. Lett.* 58, 2015; Hansen et al., *Tribol. Lett.* 70, 2022):
+each Fischer-Burmeister row ``a dp + g dtheta = -FB`` is diagonal, so one unknown per node is eliminated
+(theta where ``|g| >= |a|``, the pressure otherwise), leaving the exact ``(n + 1)`` Schur matrix ``S``
+(dense: the elastic coupling). ``S`` is assembled every iteration (``O(n^2)``) but factorised only now and
+then: the step solves ``S dz = r`` by GMRES (Saad & Schultz, 1986) preconditioned with the LU factors of
+an earlier ``S`` in single precision; a new factorisation is made when GMRES needs more than
+:data:`REFACTOR_ITERS` iterations or does not reach its tolerance. Near the solution ``S`` changes
+little, so most Newton iterations cost a few ``O(n^2)`` products instead of an ``O(n^3)`` LU.
+
+Globalisation as :func:`transient.models.point.fbns.fbns`: the step is cut so that the film stays
+positive and no pressure moves by more than ``step_max`` plus half its value, then halved until the
+scaled residual norm decreases (Armijo).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+import scipy.linalg as sla
+import scipy.sparse as sp
+import scipy.sparse.linalg as spla
+
+#: GMRES iterations above which the preconditioner is refreshed at the next Newton iteration
+REFACTOR_ITERS = 12
+#: below this many unknowns each step is a direct LAPACK solve (cheaper than GMRES there)
+DIRECT_BELOW = 400
+#: GMRES relative tolerance of a Newton step
+GMRES_RTOL = 1e-8
+
+
+@dataclass
+class ContentNewtonStats:
+    """Counts of one solve: Newton iterations, LU factorisations, GMRES iterations (all steps)."""
+
+    iterations: int = 0
+    factorisations: int = 0
+    krylov: int = 0
+    norms: list = field(default_factory=list)
+    steps: list = field(default_factory=list)
+
+
+class _Preconditioner:
+    """The single-precision LU factors of a Schur matrix, applied as ``S_old^-1 r``."""
+
+    def __init__(self, S):
+        self.lu = sla.lu_factor(S.astype(np.float32), check_finite=False)
+
+    def solve(self, r):
+        return sla.lu_solve(self.lu, r.astype(np.float32), check_finite=False).astype(float)
+
+
+def schur_system(film, u, e):
+    """``(S, r, (a_p, b_p, a_th, b_t))``: the Schur matrix and right-hand side of the Newton step at ``u``
+    and the node-wise back-substitution ``dp = a_p + b_p z``, ``dtheta = a_th + b_t z``."""
+    n = film.n
+    j_pp, a_t, j_h0, w = film.newton_matrix(u, e)
+    alpha, gamma = film.fb_derivatives(u, e)
+    fb = e["fb"]
+    keep_p = np.abs(gamma) >= np.abs(alpha)
+    sg = np.where(keep_p, gamma, 1.0)
+    sa = np.where(keep_p, 1.0, alpha)
+    b_p = np.where(keep_p, 1.0, -gamma / sa)
+    a_p = np.where(keep_p, 0.0, -fb / sa)
+    b_t = np.where(keep_p, -alpha / sg, 1.0)
+    a_th = np.where(keep_p, -fb / sg, 0.0)
+    S = np.empty((n + 1, n + 1))
+    S[:n, :n] = j_pp * b_p[None, :]
+    S[:n, :n] += (a_t @ sp.diags(b_t)).toarray()
+    S[:n, n] = j_h0
+    S[n, :n] = w * b_p
+    S[n, n] = 0.0
+    r = np.empty(n + 1)
+    r[:n] = -e["res"] - j_pp @ a_p - a_t @ a_th
+    r[n] = -e["load"] - w @ a_p
+    return S, r, (a_p, b_p, a_th, b_t)
+
+
+def _gmres(S, r, pre):
+    """GMRES on ``S z = r`` preconditioned by ``pre``: ``(z, converged, iterations)``."""
+    count = [0]
+
+    def tick(_):
+        count[0] += 1
+
+    z, info = spla.gmres(S, r, rtol=GMRES_RTOL, atol=0.0, restart=40, maxiter=2,
+                         M=spla.LinearOperator(S.shape, matvec=pre.solve), callback=tick, callback_type="pr_norm")
+    return z, info == 0, count[0]
+
+
+def _krylov_step(S, r, pre, stats):
+    """``(z, preconditioner, refresh next time)``: GMRES with ``pre``; if it does not converge, with the
+    factors of ``S`` itself (and LAPACK's solve if even that fails)."""
+    z, ok, its = _gmres(S, r, pre)
+    stats.krylov += its
+    if not ok:
+        pre = _Preconditioner(S)
+        stats.factorisations += 1
+        z, ok, its2 = _gmres(S, r, pre)
+        stats.krylov += its2
+        if not ok:
+            z = sla.solve(S, r, check_finite=False)
+    return z, pre, its > REFACTOR_ITERS
+
+
+def merit(e, scale):
+    """The scaled residual: Reynolds rows by ``scale`` (the row scales of the iterate the step starts from,
+    so that the Newton step is a descent direction of the merit), Fischer-Burmeister rows, load balance."""
+    return np.concatenate([e["res"] / scale, e["fb"], [e["load"]]])
+
+
+def content_newton(film, u0, tol: float = 1e-10, max_iter: int = 60, step_max: float = 0.5):
+    """Newton (module docstring) from ``u0`` until the largest scaled residual is below ``tol``.
+
+    Returns ``(u, converged, stats)`` (:class:`ContentNewtonStats`; ``stats.norms`` the infinity norm of
+    the scaled residual per iteration)."""
+    n = film.n
+    u = np.array(u0, float)
+    e = film.equations(u)
+    f = merit(e, e["scale"])
+    stats = ContentNewtonStats(norms=[float(np.max(np.abs(f)))])
+    m2 = float(f @ f)
+    pre, refresh = None, True
+    for _ in range(max_iter):
+        if stats.norms[-1] < tol:
+            return u, True, stats
+        S, r, (a_p, b_p, a_th, b_t) = schur_system(film, u, e)
+        if n < DIRECT_BELOW:
+            z = sla.solve(S, r, check_finite=False)
+            stats.factorisations += 1
+        else:
+            if refresh or pre is None:
+                pre = _Preconditioner(S)
+                stats.factorisations += 1
+            z, pre, refresh = _krylov_step(S, r, pre, stats)
+        du = np.empty(2 * n + 1)
+        du[:n] = a_p + b_p * z[:n]
+        du[n: 2 * n] = a_th + b_t * z[:n]
+        du[-1] = z[n]
+        big = np.max(np.abs(du[:n]) / (step_max + 0.5 * np.abs(u[:n])))
+        s = min(1.0, 1.0 / big) if big > 0 else 1.0
+        accepted = False
+        for _ in range(30):
+            ut = u + s * du
+            with np.errstate(over="ignore", invalid="ignore"):
+                et = film.equations(ut)
+                if np.min(et["H"]) > 0.0:
+                    ft = merit(et, e["scale"])
+                    if np.all(np.isfinite(ft)) and float(ft @ ft) < (1.0 - 1e-4 * s) * m2:
+                        accepted = True
+                        break
+            s *= 0.5
+        stats.iterations += 1
+        if not accepted:
+            return u, False, stats
+        u, e = ut, et
+        stats.steps.append(s)
+        f = merit(e, e["scale"])
+        m2 = float(f @ f)
+        stats.norms.append(float(np.max(np.abs(f))))
+    return u, stats.norms[-1] < tol, stats

@@ -1,0 +1,160 @@
+"""Grid and load sequencing of the line contact's film-content Newton (:mod:`transient.models.roller.line_newton`).
+
+The line contact (:class:`~transient.models.roller.line_contact.LineContact`) is solved on the grid levels
+of :meth:`LineContact.levels` (every other node of the next finer one), coarse to fine, along the load
+path of :meth:`LineContact.continuation`: ``s = 0`` is the contact with the load scaled to
+``M0 = min(M, 10)`` and ``alpha`` to ``L0 = min(L, 5)``, solved from the Hertz pressure (:func:`cold_start`);
+``s = 1`` is the contact itself (``w = w0 (w1/w0)^s``, ``alpha = a0 + s (a1 - a0)``). Level ``k`` carries
+the load up to ``M_k = min(M, RESOLVED / dx_k)`` (``dx_k`` its node spacing in the Hertz zone: a grid
+resolves the outlet constriction, of width ~ 1/M, only so far), by continuation steps
+(:func:`transient.models.roller.continuation.follow`) started from the previous step's solution; the
+next, finer level starts from it interpolated (nested iteration). On the coarse levels a Newton
+iteration costs little; on the finest one, a few iterations with a reused factorisation.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from transient.models.roller.continuation import follow
+from transient.models.roller.grid import TensorGrid
+from transient.models.roller.line_fbns import LineContentFilm
+from transient.models.roller.line_newton import content_newton
+from transient.physics.line_formulas import moes_central
+from transient.solvers.newton import NewtonError, NewtonResult
+
+#: the corner of the Moes chart solved from the Hertz pressure
+M_START, L_START = 10.0, 5.0
+#: a level carries the load up to M = RESOLVED / (its node spacing in the Hertz zone, units of b)
+RESOLVED = 8.0
+#: amplitude (units of p_h, at most; 0.5/(alpha p_h) when smaller) of the inlet pressure ramp of the start
+INLET_RAMP = 0.05
+#: Newton iterations allowed per continuation step
+STEP_ITERS = 25
+
+
+@dataclass
+class SequenceResult:
+    """Outcome of :func:`solve_sequence`: the film-content state on the finest grid and its film problem."""
+
+    state: np.ndarray
+    content: LineContentFilm
+    success: bool
+    message: str
+    iterations: int = 0
+    factorisations: int = 0
+    residual_norms: list = field(default_factory=list)
+    log: list = field(default_factory=list)
+
+
+def cold_start(contact, film) -> np.ndarray:
+    """``[p, theta, h0]``: the Hertz pressure with an inlet ramp (amplitude ``INLET_RAMP``, at most
+    ``0.5/(alpha p_h)``: the inlet pressure is of the order of ``1/alpha``), ``h0`` putting the central film at
+    Moes' formula, and downstream of the contact the content ``theta = h_c/h`` of a film carried at the
+    central flux (so that no node starts at the kink ``p = 1 - theta = 0`` of the Fischer-Burmeister pair
+    except upstream, where the film is full)."""
+    xi = film.grid.x[1:-1]
+    p = np.sqrt(np.clip(1.0 - xi * xi, 0.0, None))
+    ap = contact.lubricant.pressure_viscosity * contact.p_h
+    amp = min(INLET_RAMP, 0.5 / ap) if ap > 0.0 else INLET_RAMP
+    p = np.maximum(p, np.where(xi < -1.0, amp * (xi - xi[0]) / (-1.0 - xi[0]), 0.0))
+    hc = moes_central(contact.M, contact.L) * math.sqrt(2.0 * contact.U) * contact.radius / contact.film_scale
+    h0 = hc - float(np.interp(0.0, film.grid.x, film.film(p, 0.0)))
+    h = film.film(p, h0)[1:-1]
+    theta = np.where((xi > 0.0) & (p <= 0.0), np.clip(hc / np.where(h > 0.0, h, np.inf), 0.0, 1.0), 1.0)
+    return np.concatenate([p, theta, [h0]])
+
+
+def carry(grid_from: TensorGrid, u, grid_to: TensorGrid) -> np.ndarray:
+    """``[p, theta, h0]`` of one grid on another (linear interpolation; ``p = 0``, ``theta = 1`` on the
+    boundary)."""
+    m = grid_from.x.size - 2
+    p = np.interp(grid_to.x[1:-1], grid_from.x, np.concatenate([[0.0], u[:m], [0.0]]))
+    t = np.interp(grid_to.x[1:-1], grid_from.x, np.concatenate([[1.0], u[m: 2 * m], [1.0]]))
+    return np.concatenate([p, t, u[-1:]])
+
+
+def solve_sequence(contact, tol: float = 1e-10, max_iter: int = 60) -> SequenceResult:
+    """The film-content solution of ``contact`` (module docstring) on its finest grid."""
+    levels = contact.levels()
+    w1, a1 = contact.load_per_length, contact.lubricant.pressure_viscosity
+    m0 = min(contact.M, M_START)
+    w0 = w1 * m0 / contact.M
+    a0 = a1 * min(1.0, L_START / contact.L) if contact.L > 0 else 0.0
+    out = SequenceResult(state=np.zeros(1), content=None, success=False, message="")
+
+    def s_of(M):
+        return 1.0 if contact.M <= m0 * (1.0 + 1e-12) else min(1.0, math.log(M / m0) / math.log(contact.M / m0))
+
+    u, s, grid_prev = None, 0.0, None
+    for k, grid in enumerate(levels):
+        kernel = contact.film_problem(grid).K
+        cache = {}
+
+        def at(t, grid=grid, kernel=kernel, cache=cache):
+            if t not in cache:
+                c = contact if t >= 1.0 else contact.with_load(w0 * (w1 / w0) ** t, a0 + t * (a1 - a0), nodes=grid.x)
+                cache[t] = (c, LineContentFilm(c.film_problem(grid, kernel=kernel)))
+            return cache[t]
+
+        def newton_at(t, u_start, iters):
+            u_new, ok, st = content_newton(at(t)[1], u_start, tol=tol, max_iter=iters)
+            out.iterations += st.iterations
+            out.factorisations += st.factorisations
+            out.residual_norms = st.norms
+            return u_new, ok, st
+
+        if k == 0:
+            u0 = cold_start(*at(0.0)[:1], at(0.0)[1].base)
+            u, ok, st = newton_at(0.0, u0, max_iter)
+            out.log.append(f"{grid.x.size} nodes: cold start M = {at(0.0)[0].M:.3g}, L = {at(0.0)[0].L:.3g}: "
+                           f"{st.iterations} iterations")
+        else:
+            u, ok, st = newton_at(s, carry(grid_prev, u, grid), max_iter)
+            out.log.append(f"{grid.x.size} nodes: {st.iterations} iterations from {grid_prev.x.size} nodes")
+        if not ok:
+            out.message = f"{grid.x.size} nodes: Newton did not converge at s = {s:.3g} of the load path"
+            break
+        spacing = contact._contact_spacing(grid)
+        s_target = 1.0 if k == len(levels) - 1 else s_of(min(contact.M, RESOLVED / spacing))
+        if s_target > s:
+            def param(tp, lo=s, hi=s_target):  # follow's parameter [0, 1] on [s, s_target]
+                return 1.0 if tp >= 1.0 and hi >= 1.0 else lo + tp * (hi - lo)
+
+            def central(tp, v, at=at, grid=grid, param=param):
+                c, f = at(param(tp))
+                h = f.base.film(v[: f.n], v[-1])
+                return float(np.interp(0.0, grid.x, h)) * c.film_scale if h.min() > 0.0 else float("nan")
+
+            def predict(t0, v, t1, at=at, central=central, param=param):
+                hc = central(t0, v)
+                w = v.copy()
+                w[-1] += hc / at(param(t1))[0].film_scale - hc / at(param(t0))[0].film_scale
+                return w
+
+            def solve(tp, v, param=param):
+                u_new, ok, st = newton_at(param(tp), v, STEP_ITERS)
+                res = NewtonResult(x=u_new, iterations=st.iterations, residual_norm=st.norms[-1], success=ok,
+                                   message="", residual_norms=st.norms)
+                if not ok:
+                    raise NewtonError("film-content Newton did not converge", res)
+                return res
+
+            path = follow(solve, predict, central, u, first_step=0.5)
+            out.log.append(f"{grid.x.size} nodes: load path s = {s:.3g} -> {s_target:.3g}: {path.message}")
+            if not path.success:
+                out.message = f"{grid.x.size} nodes: {path.message}"
+                u, s = path.state, param(path.s)
+                ok = False
+                break
+            u, s = path.state, s_target
+        grid_prev = grid
+    out.state = u
+    out.content = at(s)[1]
+    out.success = bool(ok and s >= 1.0)
+    if out.success:
+        out.message = "; ".join(out.log)
+    return out
