@@ -19,21 +19,21 @@ neighbourhood of the solution (its Fischer-Burmeister pair is linear in the unkn
 stay meaningful from the Hertz pressure at any load), and :mod:`transient.models.roller.line_newton`
 finishes on the Reynolds-condition equations.
 
-:class:`LineContentFilm` exposes the interface of :func:`transient.models.point.fbns.fbns`
-(``equations``, ``newton_matrix``, ``fb_derivatives``).
+:class:`LineContentFilm` gives the residual pieces as :class:`transient.models.point.ehl_problem.PointFilm`
+(``equations``, ``fb_derivatives``) and the Schur matrix of its Newton step (``schur_matrix``).
 """
 
 from __future__ import annotations
 
 import numpy as np
-import scipy.sparse as sp
 from numba import njit
 
 from transient.models.roller.ehl_problem import EHLFilm
 from transient.models.roller.kernels import node_properties
 
-#: local Jacobian slots: centre, west, east, west-west
+#: local Jacobian slots: centre, west, east, west-west, and their offsets in full nodes
 N_LOCAL = 4
+OFFSETS = np.array([0, -1, 1, -2])
 
 
 @njit(cache=True, error_model="numpy")
@@ -113,11 +113,6 @@ class LineContentFilm:
         self.K = film.K if film.elastic == "dense" else np.zeros((self.nf, n))
         self.weight = film.area_w
         self.props = np.empty((7, self.nf))
-        offs = np.array([0, -1, 1, -2])
-        rows = np.repeat(np.arange(n), N_LOCAL)
-        cols = (np.arange(1, n + 1)[:, None] + offs[None, :]).ravel()  # full-node columns
-        self._rows, self._cols = rows, cols
-        self._inner = (cols >= 1) & (cols <= n)
 
     def expand(self, u):
         """``(p_full, theta_full, h0)``; the boundary nodes carry ``p = 0``, ``theta = 1``."""
@@ -153,22 +148,69 @@ class LineContentFilm:
         safe = np.where(rad > 0, rad, 1.0)
         return np.where(rad > 0, 1.0 - p / safe, 0.0), -np.where(rad > 0, 1.0 - b / safe, 1.0)
 
-    def local_matrices(self, e):
-        """Sparse ``(dR/dp local, dR/dh on the full nodes, dR/dtheta)``."""
-        n, nf = self.n, self.nf
-        rows, cols, inner = self._rows, self._cols, self._inner
-        ok = cols >= 0
-        a_p = sp.csr_matrix((e["dp"].ravel()[inner], (rows[inner], cols[inner] - 1)), shape=(n, n))
-        d_h = sp.csr_matrix((e["dh"].ravel()[ok], (rows[ok], cols[ok])), shape=(n, nf))
-        a_t = sp.csr_matrix((e["dt"].ravel()[inner], (rows[inner], cols[inner] - 1)), shape=(n, n))
-        return a_p, d_h, a_t
+    def schur_matrix(self, e, b_p, b_t) -> np.ndarray:
+        """Dense ``S = [[J_p diag(b_p) + J_theta diag(b_t), dR/dh0], [load row diag(b_p), 0]]``: the Newton
+        matrix of the Reynolds rows and the load balance after the node-wise substitution
+        ``dp = b_p z``, ``dtheta = b_t z`` (``J_p = dR/dp`` local plus through the film, ``J_theta = dR/dtheta``)."""
+        S = np.empty((self.n + 1, self.n + 1))
+        schur_kernel(e["dp"], e["dh"], e["dt"], self.K, b_p, b_t, self.weight, S)
+        return S
 
-    def newton_matrix(self, u, e, cj=0.0):
-        """``(dR/dp dense, dR/dtheta sparse, dR/dh0, load row)`` (steady: ``cj`` must be 0)."""
-        if cj:
-            raise ValueError("LineContentFilm is steady only (cj = 0)")
-        a_p, d_h, a_t = self.local_matrices(e)
-        j_pp = np.asarray(d_h @ self.K)
-        j_pp += a_p.toarray()
-        return j_pp, a_t, np.asarray(d_h.sum(axis=1)).ravel(), self.weight
+    def jacobian_product(self, e, v_p, v_t) -> np.ndarray:
+        """``J_p v_p + J_theta v_t`` (the Reynolds rows' response to pressure and content changes)."""
+        out = np.zeros(self.n)
+        local_product(e["dh"], self.K @ v_p, out)
+        pad = np.zeros(self.nf)
+        pad[1:-1] = v_p
+        local_product(e["dp"], pad, out)
+        pad[1:-1] = v_t
+        local_product(e["dt"], pad, out)
+        return out
 
+
+@njit(cache=True)
+def local_product(d, v_full, out):
+    """``out[r] += sum_s d[r, s] v_full[r + 1 + offset_s]`` over the slots centre, west, east, west-west."""
+    n = d.shape[0]
+    for r in range(n):
+        acc = 0.0
+        for s in range(N_LOCAL):
+            c = r + 1 + OFFSETS[s]
+            if 0 <= c < v_full.size:
+                acc += d[r, s] * v_full[c]
+        out[r] += acc
+
+
+@njit(cache=True)
+def schur_kernel(dp, dh, dt, K, b_p, b_t, weight, S):
+    """Fill ``S`` (:meth:`LineContentFilm.schur_matrix`); ``K`` (full nodes, interior nodes) the film's
+    influence matrix, ``dp``, ``dh``, ``dt`` the local slots of :func:`content_residual`."""
+    n = dp.shape[0]
+    nf = K.shape[0]
+    for r in range(n):
+        row = S[r]
+        for q in range(n + 1):
+            row[q] = 0.0
+        h0 = 0.0
+        for s in range(N_LOCAL):
+            c = r + 1 + OFFSETS[s]
+            if c < 0 or c >= nf:
+                continue
+            v = dh[r, s]
+            if v != 0.0:
+                h0 += v
+                kr = K[c]
+                for q in range(n):
+                    row[q] += v * kr[q]
+            if 1 <= c <= n:
+                row[c - 1] += dp[r, s]
+        for q in range(n):
+            row[q] *= b_p[q]
+        for s in range(N_LOCAL):
+            c = r + 1 + OFFSETS[s]
+            if 1 <= c <= n:
+                row[c - 1] += dt[r, s] * b_t[c - 1]
+        row[n] = h0
+    for q in range(n):
+        S[n, q] = weight[q] * b_p[q]
+    S[n, n] = 0.0

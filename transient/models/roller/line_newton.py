@@ -21,7 +21,6 @@ from dataclasses import dataclass, field
 
 import numpy as np
 import scipy.linalg as sla
-import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
 #: GMRES iterations above which the preconditioner is refreshed at the next Newton iteration
@@ -56,8 +55,6 @@ class _Preconditioner:
 def schur_system(film, u, e):
     """``(S, r, (a_p, b_p, a_th, b_t))``: the Schur matrix and right-hand side of the Newton step at ``u``
     and the node-wise back-substitution ``dp = a_p + b_p z``, ``dtheta = a_th + b_t z``."""
-    n = film.n
-    j_pp, a_t, j_h0, w = film.newton_matrix(u, e)
     alpha, gamma = film.fb_derivatives(u, e)
     fb = e["fb"]
     keep_p = np.abs(gamma) >= np.abs(alpha)
@@ -67,15 +64,10 @@ def schur_system(film, u, e):
     a_p = np.where(keep_p, 0.0, -fb / sa)
     b_t = np.where(keep_p, -alpha / sg, 1.0)
     a_th = np.where(keep_p, -fb / sg, 0.0)
-    S = np.empty((n + 1, n + 1))
-    S[:n, :n] = j_pp * b_p[None, :]
-    S[:n, :n] += (a_t @ sp.diags(b_t)).toarray()
-    S[:n, n] = j_h0
-    S[n, :n] = w * b_p
-    S[n, n] = 0.0
-    r = np.empty(n + 1)
-    r[:n] = -e["res"] - j_pp @ a_p - a_t @ a_th
-    r[n] = -e["load"] - w @ a_p
+    S = film.schur_matrix(e, b_p, b_t)
+    r = np.empty(film.n + 1)
+    r[:-1] = -e["res"] - film.jacobian_product(e, a_p, a_th)
+    r[-1] = -e["load"] - film.weight @ a_p
     return S, r, (a_p, b_p, a_th, b_t)
 
 

@@ -107,33 +107,49 @@ def solve_sequence(contact, tol: float = 1e-10, max_iter: int = 60) -> SequenceR
             out.residual_norms = st.norms
             return u_new, ok, st
 
+        def central(t, v, at=at, grid=grid):
+            c, f = at(t)
+            h = f.base.film(v[: f.n], v[-1])
+            return float(np.interp(0.0, grid.x, h)) * c.film_scale if h.min() > 0.0 else float("nan")
+
+        def shift(t0, v, t1, at=at, central=central):
+            """``v`` at ``t0`` carried to ``t1``: ``h0`` moved so that the central film in metres stays."""
+            hc = central(t0, v)
+            w = v.copy()
+            w[-1] += hc / at(t1)[0].film_scale - hc / at(t0)[0].film_scale
+            return w
+
+        last = k == len(levels) - 1
+        s_target = 1.0 if last else max(s, s_of(min(contact.M, RESOLVED / contact._contact_spacing(grid))))
         if k == 0:
-            u0 = cold_start(*at(0.0)[:1], at(0.0)[1].base)
+            u0 = cold_start(at(0.0)[0], at(0.0)[1].base)
             u, ok, st = newton_at(0.0, u0, max_iter)
             out.log.append(f"{grid.x.size} nodes: cold start M = {at(0.0)[0].M:.3g}, L = {at(0.0)[0].L:.3g}: "
                            f"{st.iterations} iterations")
         else:
-            u, ok, st = newton_at(s, carry(grid_prev, u, grid), max_iter)
-            out.log.append(f"{grid.x.size} nodes: {st.iterations} iterations from {grid_prev.x.size} nodes")
+            start = carry(grid_prev, u, grid)
+            ok = False
+            if s_target > s:  # first the whole way at once, from the coarser solution
+                u_j, ok, st = newton_at(s_target, shift(s, start, s_target), STEP_ITERS)
+                if ok:
+                    u, s = u_j, s_target
+                    out.log.append(f"{grid.x.size} nodes: {st.iterations} iterations from {grid_prev.x.size} "
+                                   f"nodes to s = {s:.3g}")
+            if not ok:
+                u, ok, st = newton_at(s, start, max_iter)
+                out.log.append(f"{grid.x.size} nodes: {st.iterations} iterations from {grid_prev.x.size} nodes")
         if not ok:
             out.message = f"{grid.x.size} nodes: Newton did not converge at s = {s:.3g} of the load path"
             break
-        spacing = contact._contact_spacing(grid)
-        s_target = 1.0 if k == len(levels) - 1 else s_of(min(contact.M, RESOLVED / spacing))
         if s_target > s:
             def param(tp, lo=s, hi=s_target):  # follow's parameter [0, 1] on [s, s_target]
                 return 1.0 if tp >= 1.0 and hi >= 1.0 else lo + tp * (hi - lo)
 
-            def central(tp, v, at=at, grid=grid, param=param):
-                c, f = at(param(tp))
-                h = f.base.film(v[: f.n], v[-1])
-                return float(np.interp(0.0, grid.x, h)) * c.film_scale if h.min() > 0.0 else float("nan")
+            def central_p(tp, v, central=central, param=param):
+                return central(param(tp), v)
 
-            def predict(t0, v, t1, at=at, central=central, param=param):
-                hc = central(t0, v)
-                w = v.copy()
-                w[-1] += hc / at(param(t1))[0].film_scale - hc / at(param(t0))[0].film_scale
-                return w
+            def predict(t0, v, t1, shift=shift, param=param):
+                return shift(param(t0), v, param(t1))
 
             def solve(tp, v, param=param):
                 u_new, ok, st = newton_at(param(tp), v, STEP_ITERS)
@@ -143,7 +159,7 @@ def solve_sequence(contact, tol: float = 1e-10, max_iter: int = 60) -> SequenceR
                     raise NewtonError("film-content Newton did not converge", res)
                 return res
 
-            path = follow(solve, predict, central, u, first_step=0.5)
+            path = follow(solve, predict, central_p, u, first_step=0.5)
             out.log.append(f"{grid.x.size} nodes: load path s = {s:.3g} -> {s_target:.3g}: {path.message}")
             if not path.success:
                 out.message = f"{grid.x.size} nodes: {path.message}"
