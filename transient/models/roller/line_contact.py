@@ -27,6 +27,7 @@ from transient.checks import check_positive, check_range
 from transient.models.roller.continuation import PathResult, follow
 from transient.models.roller.ehl_problem import EHLFilm, interpolate_state, solve_steady
 from transient.models.roller.grid import TensorGrid
+from transient.models.roller.line_sequence import solve_sequence
 from transient.models.roller.dry import edge_positions, polonsky_keer
 from transient.models.roller.results import EHLConvergenceError, LineDry, LineSteady, LineTransient
 from transient.models.roller.transient import load_ratio, run_squeeze
@@ -203,16 +204,55 @@ class LineContact:
     # -- solves --------------------------------------------------------------------------------------
     def steady(self, initial=None, tol: float = 1e-9, max_iter: int = 60, raise_on_failure: bool = True,
                penalty: float | None = None) -> LineSteady:
-        """Steady film by nested iteration: semismooth Newton on the complementarity system on
-        :meth:`levels`, each level started from the coarser solution. The coarsest level starts from
-        :meth:`initial_guess` where the contact lies in the easy corner of the Moes chart (M <= 10,
-        L <= 5); elsewhere, and wherever Newton from the interpolated coarser solution fails, the level
-        is solved by load (and pressure-viscosity) continuation from that corner
+        """Steady film. By default (exact complementarity, no ``initial``) the film-content form is solved
+        by Fischer-Burmeister-Newton-Schur iterations along grid levels and the load path from the Hertz
+        pressure (:func:`transient.models.roller.line_sequence.solve_sequence`); its solution is then
+        checked against (and, where it is not within ``tol``, finished by Newton on) the Reynolds-condition
+        equations of :meth:`film_problem`, so the discrete film is the same. Where that fails, and for
+        ``initial`` or ``penalty``, :meth:`steady_reynolds`. Raises :class:`EHLConvergenceError` (its
+        ``result`` flagged ``success=False`` with the residual history) if no path reaches the contact,
+        unless ``raise_on_failure=False``."""
+        if initial is not None or penalty is not None:
+            return self.steady_reynolds(initial, tol, max_iter, raise_on_failure, penalty)
+        t0 = time.perf_counter()
+        seq = solve_sequence(self, tol=0.1 * tol, max_iter=max_iter)
+        if seq.success:
+            film = seq.content.base
+            n = seq.content.n
+            u = np.append(seq.state[:n], seq.state[-1])
+            film.set_row_scale(u)
+            norms = list(seq.residual_norms) + [float(np.max(np.abs(film.residual(u))))]
+            its = seq.iterations
+            ok = norms[-1] <= tol
+            msg = f"converged (film-content Newton, {seq.factorisations} LU factorisations): {seq.message}"
+            if not ok:  # a different rupture node: finish on the Reynolds-condition equations
+                nr, k, hist = self._newton(film, u, tol, PATH_MAX_ITER, [None])
+                its += k
+                norms += list(hist)
+                if nr is not None:
+                    ok, u = True, nr.x
+                    msg += f"; {k} Newton iterations on the Reynolds-condition equations"
+            if ok:
+                res = self._result(film, u, True, msg, its, norms, time.perf_counter() - t0)
+                if res.h_min > 0.0:
+                    return res
+        fallback = self.steady_reynolds(None, tol, max_iter, False, None)
+        fallback.message = f"film-content Newton: {seq.message or 'no physical film'}; then {fallback.message}"
+        fallback.wall_time = time.perf_counter() - t0
+        if not fallback.success and raise_on_failure:
+            raise EHLConvergenceError(fallback.message, fallback)
+        return fallback
+
+    def steady_reynolds(self, initial=None, tol: float = 1e-9, max_iter: int = 60, raise_on_failure: bool = True,
+                        penalty: float | None = None) -> LineSteady:
+        """Steady film on the Reynolds-condition equations alone, by nested iteration: semismooth Newton
+        on the complementarity system on :meth:`levels`, each level started from the coarser solution. The
+        coarsest level starts from :meth:`initial_guess` where the contact lies in the easy corner of the
+        Moes chart (M <= 10, L <= 5); elsewhere, and wherever Newton from the interpolated coarser solution
+        fails, the level is solved by load (and pressure-viscosity) continuation from that corner
         (:meth:`continuation`). ``initial``: a previous :class:`LineSteady` on the same grid to start
         from instead. ``penalty``: None for the exact complementarity (Fischer-Burmeister), or the
-        penalty factor of the penalty form (the transient's ``GAMMA`` gives its limit). Raises
-        :class:`EHLConvergenceError` (its ``result`` flagged ``success=False`` with the residual
-        history) if no path reaches the contact, unless ``raise_on_failure=False``."""
+        penalty factor of the penalty form (the transient's ``GAMMA`` gives its limit)."""
         t0 = time.perf_counter()
         if penalty is not None:
             penalty = check_range("penalty", penalty, "-", 1.0, 1e12)
@@ -338,7 +378,7 @@ class LineContact:
             return solve_steady(at(s)[1], u0, tol=tol, max_iter=max_iter, name="LineContact.continuation Newton")
 
         c0, f0 = at(0.0)
-        start = c0.with_load(c0.load_per_length, nodes=grid.x).steady(tol=tol, max_iter=60, raise_on_failure=False,
+        start = c0.with_load(c0.load_per_length, nodes=grid.x).steady_reynolds(tol=tol, max_iter=60, raise_on_failure=False,
                                                                       penalty=penalty)
         if not start.success:
             return PathResult(state=start.state, s=0.0, success=False, iterations=start.iterations,
