@@ -4,8 +4,9 @@
                                          [--density incompressible|dowson-higginson] [--law barus|roelands]
 
 Each chart point (Moes groups M = W (2U)^-1/2 from 1 to 1000, L = G (2U)^1/4 from 0 to 25, U = 1e-11) is
-solved from a cold start by LineContact.steady (load and pressure-viscosity continuation from the easy
-corner M <= 10, L <= 5) on a fully flooded domain (transient.study.ehl_chart). Moes' formula: Moes,
+solved from a cold start by LineContact.steady (Fischer-Burmeister-Newton-Schur on the film-content
+form -- Woloszynski, Podsiadlo & Stachowiak, Tribol. Lett. 58 (2015) -- over grid levels and a load path
+from the easy corner M <= 10, L <= 5) on a fully flooded domain (transient.study.ehl_chart). Moes' formula: Moes,
 "Optimum similarity analysis with applications to elastohydrodynamic lubrication", Wear 159 (1992), as
 quoted by Venner & Lubrecht, "Multilevel Methods in Lubrication" (2000). Writes moes_chart.png and
 ehl_chart.json (every point: converged or not, H_c, H_min, deviation from Moes, iterations, wall time)
