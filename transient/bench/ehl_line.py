@@ -106,7 +106,8 @@ def main(out, quick: bool = False) -> str:
     lines = ["## EHL line contact over the Moes chart", "",
              f"`transient bench ehl_line`{' --quick' if quick else ''}; clustered grids of {nodes} nodes, fully "
              "flooded domains (`transient.study.ehl_chart`), cold starts, Barus, incompressible unless said; "
-             f"OPENBLAS_NUM_THREADS = {threads}; 2 cores shared with other jobs (wall time is the elapsed "
+             f"BLAS on one thread inside the solver (OPENBLAS_NUM_THREADS = {threads} outside it); 2 cores "
+             "shared with other jobs (wall time is the elapsed "
              "time and grows with the machine's load; CPU time is this process's, all threads).", "",
              f"**Whole chart with `LineContact.steady` (film-content FBNS): {len(ok)} of {len(rows)} points "
              f"converged.** Slowest point: M = {slow['M']:g}, L = {slow['L']:g} ({slow['wall_s']:.2f} s wall, "

@@ -18,6 +18,7 @@ import math
 from dataclasses import dataclass, field
 
 import numpy as np
+from threadpoolctl import threadpool_limits
 
 from transient.models.roller.continuation import follow
 from transient.models.roller.grid import TensorGrid
@@ -32,6 +33,8 @@ M_START, L_START = 10.0, 5.0
 RESOLVED = 8.0
 #: amplitude (units of p_h, at most; 0.5/(alpha p_h) when smaller) of the inlet pressure ramp of the start
 INLET_RAMP = 0.05
+#: the coarsest level keeps at least this many nodes, this many of them in the loaded zone
+MIN_NODES, MIN_ZONE = 129, 10
 #: Newton iterations allowed per continuation step
 STEP_ITERS = 25
 
@@ -77,9 +80,29 @@ def carry(grid_from: TensorGrid, u, grid_to: TensorGrid) -> np.ndarray:
     return np.concatenate([p, t, u[-1:]])
 
 
+def grid_levels(contact) -> list[TensorGrid]:
+    """Grids coarse to fine: every other node of the next finer one while the coarser keeps at least
+    ``MIN_NODES`` nodes and ``MIN_ZONE`` of them in the loaded zone ``|x| < max(1, 2.5/M)`` b."""
+    out = [contact.grid]
+    zone = max(1.0, 2.5 / contact.M)
+    while (out[0].x.size - 1) % 2 == 0:
+        xc = out[0].x[::2]
+        if xc.size < MIN_NODES or np.count_nonzero(np.abs(xc) < zone) < MIN_ZONE:
+            break
+        out.insert(0, TensorGrid(xc))
+    return out
+
+
 def solve_sequence(contact, tol: float = 1e-10, max_iter: int = 60) -> SequenceResult:
-    """The film-content solution of ``contact`` (module docstring) on its finest grid."""
-    levels = contact.levels()
+    """The film-content solution of ``contact`` (module docstring) on its finest grid. BLAS runs on one
+    thread: the matrices (n <~ 4000) are too small for threads to pay, and on a shared machine idle BLAS
+    threads spinning for a core made a chart point 4x slower (measured)."""
+    with threadpool_limits(limits=1, user_api="blas"):
+        return _solve_sequence(contact, tol, max_iter)
+
+
+def _solve_sequence(contact, tol, max_iter) -> SequenceResult:
+    levels = grid_levels(contact)
     w1, a1 = contact.load_per_length, contact.lubricant.pressure_viscosity
     m0 = min(contact.M, M_START)
     w0 = w1 * m0 / contact.M
