@@ -95,8 +95,9 @@ def grid_levels(contact) -> list[TensorGrid]:
 
 def solve_sequence(contact, tol: float = 1e-10, max_iter: int = 60) -> SequenceResult:
     """The film-content solution of ``contact`` (module docstring) on its finest grid. BLAS runs on one
-    thread: the matrices (n <~ 4000) are too small for threads to pay, and on a shared machine idle BLAS
-    threads spinning for a core made a chart point 4x slower (measured)."""
+    thread (``transient`` sets ``OPENBLAS_NUM_THREADS=1`` at import, too late when numpy was imported
+    first): the matrices (n <~ 4000) are too small for threads to pay, and on a shared machine BLAS threads
+    waiting for a core made a chart point 4x slower (measured)."""
     with threadpool_limits(limits=1, user_api="blas"):
         return _solve_sequence(contact, tol, max_iter)
 
