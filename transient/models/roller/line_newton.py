@@ -17,6 +17,7 @@ scaled residual norm decreases (Armijo).
 
 from __future__ import annotations
 
+import warnings
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -97,7 +98,9 @@ def _krylov_step(S, r, pre, stats):
         z, ok, its2 = _gmres(S, r, pre)
         stats.krylov += its2
         if not ok:
-            z = sla.solve(S, r, check_finite=False)
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore", sla.LinAlgWarning)
+                z = sla.solve(S, r, check_finite=False)
     return z, pre, its > REFACTOR_ITERS
 
 
@@ -124,7 +127,9 @@ def content_newton(film, u0, tol: float = 1e-10, max_iter: int = 60, step_max: f
             return u, True, stats
         S, r, (a_p, b_p, a_th, b_t) = schur_system(film, u, e)
         if n < DIRECT_BELOW:
-            z = sla.solve(S, r, check_finite=False)
+            with warnings.catch_warnings():  # an ill-conditioned step is judged by the line search
+                warnings.simplefilter("ignore", sla.LinAlgWarning)
+                z = sla.solve(S, r, check_finite=False)
             stats.factorisations += 1
         else:
             if refresh or pre is None:

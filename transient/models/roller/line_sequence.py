@@ -6,7 +6,8 @@ path of :meth:`LineContact.continuation`: ``s = 0`` is the contact with the load
 ``M0 = min(M, 10)`` and ``alpha`` to ``L0 = min(L, 5)``, solved from the Hertz pressure (:func:`cold_start`);
 ``s = 1`` is the contact itself (``w = w0 (w1/w0)^s``, ``alpha = a0 + s (a1 - a0)``). Level ``k`` carries
 the load up to ``M_k = min(M, RESOLVED / dx_k)`` (``dx_k`` its node spacing in the Hertz zone: a grid
-resolves the outlet constriction, of width ~ 1/M, only so far), by continuation steps
+resolves the outlet constriction, of width ~ 1/M, only so far; where its path stops earlier, the next
+level continues from there), by continuation steps
 (:func:`transient.models.roller.continuation.follow`) started from the previous step's solution; the
 next, finer level starts from it interpolated (nested iteration). On the coarse levels a Newton
 iteration costs little; on the finest one, a few iterations with a reused factorisation.
@@ -185,12 +186,12 @@ def _solve_sequence(contact, tol, max_iter) -> SequenceResult:
 
             path = follow(solve, predict, central_p, u, first_step=0.5)
             out.log.append(f"{grid.x.size} nodes: load path s = {s:.3g} -> {s_target:.3g}: {path.message}")
-            if not path.success:
+            u, s = path.state, param(path.s)
+            if not path.success and last:
                 out.message = f"{grid.x.size} nodes: {path.message}"
-                u, s = path.state, param(path.s)
                 ok = False
                 break
-            u, s = path.state, s_target
+            # a coarse level that cannot carry the load further hands over to the finer one where it stopped
         grid_prev = grid
     out.state = u
     out.content = at(s)[1]
