@@ -14,10 +14,10 @@ with control volume ``dx_I``::
 
 with ``h = h0 + x^2/2 + K p`` (:class:`~transient.models.roller.ehl_problem.EHLFilm`'s influence matrix).
 Where ``theta = 1`` the rows are those of the Reynolds-condition problem (``EHLFilm``); the two discrete
-problems differ only in the node where the film ruptures, so this form serves to reach the
-neighbourhood of the solution (its Fischer-Burmeister pair is linear in the unknowns, Newton's steps
-stay meaningful from the Hertz pressure at any load), and :mod:`transient.models.roller.line_newton`
-finishes on the Reynolds-condition equations.
+problems could differ only in the node where the film ruptures (on every chart point measured they do not:
+``LineContact.steady`` checks the solution against the Reynolds-condition equations and finishes on them
+otherwise). This form's Fischer-Burmeister pair is linear in the unknowns, so Newton's steps stay
+meaningful from the Hertz pressure at any load.
 
 :class:`LineContentFilm` gives the residual pieces as :class:`transient.models.point.ehl_problem.PointFilm`
 (``equations``, ``fb_derivatives``) and the Schur matrix of its Newton step (``schur_matrix``).

@@ -40,7 +40,6 @@ class ContentNewtonStats:
     factorisations: int = 0
     krylov: int = 0
     norms: list = field(default_factory=list)
-    steps: list = field(default_factory=list)
 
 
 class _Preconditioner:
@@ -157,7 +156,6 @@ def content_newton(film, u0, tol: float = 1e-10, max_iter: int = 60, step_max: f
         if not accepted:
             return u, False, stats
         u, e = ut, et
-        stats.steps.append(s)
         f = merit(e, e["scale"])
         m2 = float(f @ f)
         stats.norms.append(float(np.max(np.abs(f))))
