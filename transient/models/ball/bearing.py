@@ -180,7 +180,7 @@ class ThrustBallBearing:
     pressure_viscosity: float = 2.0e-8
     surface_tension: float = 0.036
     contact: str = "formula"
-    contact_grid: tuple = (33, 33)
+    contact_grid: tuple = (65, 33)
 
     def __post_init__(self):
         check_choice("contact", self.contact, CONTACTS)

@@ -82,7 +82,7 @@ def reynolds(P, T, H, rho, drho, eps, deps, depsh, dx, dy, h_oil, res, scale, dp
                 qw = rho[j, i - 1] * T[j, i - 1] * H[j, i - 1]
                 dqw_h = rho[j, i - 1] * T[j, i - 1]
             res[r] = pois - (q - qw) / dx
-            scale[r] = ax * (ee + ew) + ay * (en + es) + rho[j, i] * H[j, i] / dx
+            scale[r] = rho[j, i] * H[j, i] / dx
             # d/d(eps at the centre): half of every face
             dface = 0.5 * (ax * gx + ay * ((pn - p) - (p - ps)))
             dp[r, 0] = -ax * (ee + ew) - ay * (en + es) + deps[j, i] * dface - drho[j, i] * T[j, i] * H[j, i] / dx
