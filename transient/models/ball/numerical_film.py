@@ -16,6 +16,11 @@ from transient.models.point import PointContact
 from transient.physics.hertz import HertzContact
 
 
+class LayerTooThin(RuntimeError):
+    """The pass's inlet film is below the range the point contact accepts (5 % of the flooded central film): the
+    contact runs dry (the sequence stops there, flagged)."""
+
+
 class NumericalFilms:
     """``films(h_in, n) -> (h_central, h_min)`` [m] for the bearing's contact at entraining speed ``speed``
     [m/s] on ``grid`` nodes; ``n`` the pass (named in errors)."""
@@ -40,7 +45,7 @@ class NumericalFilms:
             try:
                 pc = PointContact(inlet_film=key, **self._args)
             except ValueError as e:
-                raise RuntimeError(f"pass {n}: inlet film {key:.4g} m: {e}") from None
+                raise LayerTooThin(f"pass {n}: inlet film {key:.4g} m: {e}") from None
             s = pc.steady(initial=start, raise_on_failure=False)
             if not s.success:
                 raise RuntimeError(f"pass {n}: the numerical point contact did not converge: {pc.failure_message(s)}; "

@@ -195,7 +195,7 @@ class PointContact:
         u[n: 2 * n][dry] = film.h_oil / H[dry]
         return u
 
-    def steady(self, initial=None, tol: float = 1e-8, max_iter: int = 60, raise_on_failure: bool = True) -> PointSteady:
+    def steady(self, initial=None, tol: float = 1e-8, max_iter: int = 150, raise_on_failure: bool = True) -> PointSteady:
         """Steady film by FBNS Newton from the dry Hertz pressure (or ``initial``: a :class:`PointSteady`
         of the same grid, for this or another inlet layer: :meth:`layer_start`); when Newton fails from there
         (starved inlets), by pseudo-transient continuation
