@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from transient.analysis.starvation import chevalier, hd_meniscus_law
 from transient.plots import figure
 
 
@@ -50,7 +51,6 @@ def starved_films(checks: dict, title: str = ""):
     same films against the computed meniscus distance with Hamrock & Dowson's 0.29 law."""
     fig, (a, b) = figure(1, 2, size=(12.0, 4.8))
     rr = np.logspace(-1.3, 1.2, 200)
-    from transient.study.point import chevalier, hd_meniscus_law
 
     for k, (label, c) in enumerate(checks.items()):
         line, = a.plot(c["r"], c["film"], "o", label=f"{label}: computed")

@@ -8,7 +8,8 @@ from transient.models.ball import ThrustBallBearing
 from transient.models.point import PointContact
 from transient.params import jeong
 from transient.models.roller.results import EHLConvergenceError
-from transient.study.point import chevalier, fit_gamma, layer_sweep
+from transient.analysis.starvation import chevalier, fit_gamma
+from transient.study.point import layer_sweep
 
 #: a steel ball on a steel flat, mineral oil: M = 61, L = 10.8
 BASE = dict(radius_x=0.01, load=20.0, speed=1.0, viscosity=0.04, pressure_viscosity=2e-8, modulus=2.2e11)
