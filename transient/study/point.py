@@ -37,7 +37,7 @@ def layer_sweep(ratios, **contact) -> dict:
         ok = bool(s.success)
         for k, v in (("h_central", s.h_central), ("h_min", s.h_min), ("m", s.m), ("success", ok),
                      ("flooded", bool(s.flooded_inlet)), ("newton", s.iterations)):
-            cols[k].append(v if ok or k in ("success", "newton") else math.nan)
+            cols[k].append(v if ok or k in ("success", "newton") else (False if k == "flooded" else math.nan))
         results.append(s if ok else None)
         prev = s if ok else prev
     out = {k: np.array(v) for k, v in cols.items()}
