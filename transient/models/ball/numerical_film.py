@@ -6,7 +6,8 @@ film, the meniscus a result) with the pass's inlet film as the inlet layer. A la
 everywhere on the contact's inlet boundary floods it exactly (the flooded solution, computed once); thinner
 layers are solved each (cached per inlet film to four significant digits, so a periodic sequence solves each
 level once), each from the solution of the nearest thicker layer solved so far (continuation in the layer,
-:meth:`PointContact.layer_start`). A layer thinner than the contact carries on its grid stops the sequence with an
+:meth:`PointContact.layer_start`). A layer below 5 % of the flooded film ends the sequence before that pass,
+flagged (:class:`LayerTooThin`: the contact runs dry); one the contact does not carry on its grid stops it with an
 error naming the pass and the inlet film.
 """
 

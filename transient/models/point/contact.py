@@ -186,9 +186,9 @@ class PointContact:
             starved = upstream & (u[n: 2 * n] < 1.0)
             u[n: 2 * n][starved] = np.minimum(u[n: 2 * n][starved] * film.h_oil / h_old, 1.0)
             return u
-        P, _, h0 = film.split(u)
         if film.h_oil < initial.h_central / self.film_scale:
             return self.hertz_start(film)
+        P, _, h0 = film.split(u)
         H = film.film(P, h0).ravel()[film.flat]
         dry = upstream & (H > film.h_oil)
         u[:n][dry] = 0.0
