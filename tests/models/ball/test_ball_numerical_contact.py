@@ -41,3 +41,20 @@ def test_starved_pass_takes_the_starved_point_contact_film():
     s = _contact(b, h_in).steady()
     assert not s.flooded_inlet
     assert seq.h_central[0] == pytest.approx(s.h_central, rel=1e-12)
+
+
+@pytest.mark.slow
+def test_reference_sequence_with_the_numerical_contact_runs_dry_flagged():
+    """Jeong et al.'s reference point (80 rpm): the mass-conserving contact passes on h_in/rho_c, the track keeps
+    half of it, so the inlet film falls ~2.4x per pass until it is below what the contact accepts; the formula's
+    periodic parched film has a central film twice its inlet film."""
+    ref = dict(load=30.0, speed_rpm=80.0, ambient_film=100e-6, n_passes=10, stop_at_periodic=False)
+    num = ThrustBallBearing(contact="numerical").sequence(**ref)
+    assert not num.success and num.final_regime == "parched"
+    assert "pass 5" in num.message and "inlet_film" in num.message
+    assert num.n_run == 5
+    starved = slice(2, 5)
+    assert num.h_central[starved] / num.h_inlet[starved] == pytest.approx(0.838, abs=0.01)
+    assert num.h_inlet[3] / num.h_inlet[2] == pytest.approx(0.5 * num.h_central[2] / num.h_inlet[2], rel=0.01)
+    formula = ThrustBallBearing().sequence(**ref)
+    assert formula.success and formula.h_central[-1] / formula.h_inlet[-1] == pytest.approx(2.0, rel=0.01)

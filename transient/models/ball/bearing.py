@@ -42,7 +42,7 @@ import numpy as np
 from transient.physics import film_formulas as hd
 from transient.physics.hertz import (HertzContact, gap_rolling_axis, gap_rolling_axis_slope, hertz_contact,
                                      meniscus_position, reduced_modulus)
-from transient.models.ball.numerical_film import NumericalFilms
+from transient.models.ball.numerical_film import LayerTooThin, NumericalFilms
 from transient.models.ball.track import FrontTrack, UniformTrack
 from transient.checks import check_choice, check_int, check_memory, check_range
 from transient.results import StatusResult, quantity, record_type, result_type
@@ -180,7 +180,7 @@ class ThrustBallBearing:
     pressure_viscosity: float = 2.0e-8
     surface_tension: float = 0.036
     contact: str = "formula"
-    contact_grid: tuple = (33, 33)
+    contact_grid: tuple = (65, 33)
 
     def __post_init__(self):
         check_choice("contact", self.contact, CONTACTS)
@@ -294,6 +294,11 @@ class ThrustBallBearing:
         front_level, front_tau : the front mesh follows the level ``front_level * h_out`` with relaxation
             time ``front_tau`` (scaled).
         periodic_tol : relative change of ``h_inf`` over 3 passes that counts as periodic.
+
+        With ``contact="numerical"`` a pass whose inlet film is below 5 % of the flooded central film (the
+        mass-conserving contact passes on less oil than it meets, so a parched sequence can run dry) ends the
+        sequence before that pass: ``success=False``, ``final_regime`` parched, ``message`` naming the pass and
+        the inlet film.
         """
         ig = from_keywords(Integration, integration, "integration", dict(method="cvode", atol=1e-10), method=method,
                            rtol=rtol, atol=atol, dt=dt, linear_solver=linear_solver)
@@ -361,6 +366,7 @@ class ThrustBallBearing:
         st = {"n_steps": 0, "n_rhs": 0, "n_jac": 0, "n_freeze": 0, "wall_time": 0.0, "integrate_time": 0.0}
         wall0 = time.perf_counter()
         periodic, n_per, calm = False, -1, 0
+        stopped = ""
         h_out_prev = 0.0
         n_run = n_max
         if precursor_film is not None:
@@ -379,7 +385,11 @@ class ThrustBallBearing:
                 hc = hd.starved_central_film(ff.H_c, m, ff.m_c) * c.rx
                 hm = hd.starved_minimum_film(ff.H_min, m, ff.m_star) * c.rx
             else:
-                hc, hm = films(hin, n)
+                try:
+                    hc, hm = films(hin, n)
+                except LayerTooThin as e:
+                    n_run, stopped = n, f"stopped: {e}"
+                    break
             h_in[n], h_cen[n], h_mn[n], ms[n] = hin, hc, hm, m
             if m >= ff.m_c:
                 regime.append(FLOODED)
@@ -421,7 +431,7 @@ class ThrustBallBearing:
         if not periodic and n_run >= 6:
             tail = h_in[n_run - 6:n_run]
             declining = bool(np.all(np.diff(tail) < 0) and ms[n_run - 1] < ff.m_c)
-        if declining:
+        if declining or stopped:
             final = PARCHED
         else:
             final = regime[n_run - 1]
@@ -429,5 +439,5 @@ class ThrustBallBearing:
                             h_outlet=h_outs[sl].copy(), m=ms[sl].copy(), regime=regime[:n_run], m_c=ff.m_c,
                             m_star=ff.m_star, flooded=ff, contact=c, t_between=t_b, periodic=periodic,
                             n_periodic=n_per, declining=declining, final_regime=final, stats=st,
-                            x=x_out * a_p, profiles=np.array(profiles) if record_profiles else None,
-                            volume=vol[sl].copy())
+                            x=x_out * a_p, profiles=np.array(profiles[:n_run]) if record_profiles else None,
+                            volume=vol[sl].copy(), success=not stopped, message=stopped)

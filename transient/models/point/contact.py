@@ -169,31 +169,76 @@ class PointContact:
                         wall_time=time.perf_counter() - t0)
 
     # -- steady ------------------------------------------------------------------------------------------
-    def steady(self, initial=None, tol: float = 1e-8, max_iter: int = 60, raise_on_failure: bool = True) -> PointSteady:
+    def layer_start(self, film: PointFilm, initial: PointSteady) -> np.ndarray:
+        """Start for this contact's inlet layer from ``initial``, a solution for another layer on the same grid
+        (continuation in the layer). Upstream of the meniscus the flux is the layer's, carried at zero pressure
+        (``theta H = H_oil``): a starved start scales the content there by the ratio of the layers; a flooded
+        start gets zero pressure and the content ``H_oil/H`` wherever upstream of the centre the gap is thicker
+        than the layer, or, for a layer thinner than its central film (the meniscus then near the Hertz zone,
+        where the flooded pressure is far from the starved one), :meth:`hertz_start`."""
+        u = np.array(initial.state, float)
+        h_old = initial.inlet_film / self.film_scale
+        if not math.isfinite(film.h_oil) or h_old == film.h_oil:
+            return u
+        n = film.n
+        upstream = film.x[film.i] < 0.0
+        if math.isfinite(h_old):
+            starved = upstream & (u[n: 2 * n] < 1.0)
+            u[n: 2 * n][starved] = np.minimum(u[n: 2 * n][starved] * film.h_oil / h_old, 1.0)
+            return u
+        if film.h_oil < initial.h_central / self.film_scale:
+            return self.hertz_start(film)
+        P, _, h0 = film.split(u)
+        H = film.film(P, h0).ravel()[film.flat]
+        dry = upstream & (H > film.h_oil)
+        u[:n][dry] = 0.0
+        u[n: 2 * n][dry] = film.h_oil / H[dry]
+        return u
+
+    def steady(self, initial=None, tol: float = 1e-8, max_iter: int = 150, raise_on_failure: bool = True) -> PointSteady:
         """Steady film by FBNS Newton from the dry Hertz pressure (or ``initial``: a :class:`PointSteady`
-        of the same grid); when Newton fails from there (starved inlets), by pseudo-transient continuation
-        (:func:`~transient.models.point.stepping.steady_by_time_steps`) from the same start. Raises :class:`EHLConvergenceError` (``raise_on_failure``) with
-        the last iterate flagged ``success=False``."""
+        of the same grid, for this or another inlet layer: :meth:`layer_start`); when Newton fails from there
+        (starved inlets), by pseudo-transient continuation
+        (:func:`~transient.models.point.stepping.steady_by_time_steps`) from the same start; when both fail from
+        ``initial``, both again from the Hertz start. Raises
+        :class:`EHLConvergenceError` (``raise_on_failure``) with the last iterate flagged ``success=False``; for
+        a starved inlet whose film collapses (``h_min`` below 1 % of ``h_central``: the layer is thinner than
+        the contact carries on this grid) the message names ``inlet_film``."""
         check_range("tol", tol, "-", 1e-14, 1e-2)
         max_iter = check_int("max_iter", max_iter, "-", 1, 10000)
         t0 = time.perf_counter()
         film = self.film_problem()
+        starts = [self.hertz_start(film)]
         if initial is not None:
-            u0 = np.asarray(initial.state, float)
-            if u0.size != 2 * film.n + 1:
-                raise ValueError(f"initial: a state of {u0.size} unknowns; this grid has {2 * film.n + 1}")
-        else:
-            u0 = self.hertz_start(film)
-        u, ok, norms = fbns(film, u0, tol, max_iter)
-        info = dict(newton=len(norms) - 1)
-        if not ok:  # pseudo-transient continuation: the physical transient until nearly steady
-            u, ok, norms, counts = steady_by_time_steps(film, u0, tol)
-            info.update(time_steps=counts)
+            if np.size(initial.state) != 2 * film.n + 1:
+                raise ValueError(f"initial: a state of {np.size(initial.state)} unknowns; this grid has {2 * film.n + 1}")
+            starts.insert(0, self.layer_start(film, initial))
+        for k, u0 in enumerate(starts):
+            u, ok, norms = fbns(film, u0, tol, max_iter)
+            info = dict(newton=len(norms) - 1, start="initial" if k < len(starts) - 1 else "hertz")
+            if not ok:  # pseudo-transient continuation: the physical transient until nearly steady
+                u, ok, norms, counts = steady_by_time_steps(film, u0, tol)
+                info.update(time_steps=counts)
+            if ok:
+                break
         res = self._result(film, u, ok, norms, time.perf_counter() - t0, info)
         if not ok and raise_on_failure:
-            raise EHLConvergenceError(f"point contact: Newton did not converge (residual {norms[-1]:.3g} after "
-                                      f"{len(norms) - 1} iterations; history {[f'{v:.2g}' for v in norms]})", res)
+            raise EHLConvergenceError(self.failure_message(res), res)
         return res
+
+    def failure_message(self, res: PointSteady) -> str:
+        """Why ``res`` did not converge, in one line: the residual history, and for a starved inlet whose film
+        collapsed (``h_min < 0.01 h_central``) the inlet layer named with the grid's spacing."""
+        norms = res.residual_norms
+        msg = (f"point contact: Newton did not converge (residual {norms[-1]:.3g} after {len(norms) - 1} "
+               f"iterations; history {[f'{v:.2g}' for v in norms]})")
+        if self.inlet_film is not None and res.h_min < 0.01 * res.h_central:
+            dx = self.x_nodes[1] - self.x_nodes[0]
+            msg = (f"inlet_film = {self.inlet_film:.4g} m is thinner than this contact carries on a grid of "
+                   f"{self.grid[0]} x {self.grid[1]} nodes (dx = {dx:.3g} b): the film collapses to "
+                   f"{res.h_min:.3g} m at x = {res.x_of_h_min / self.b:.3g} b, y = {res.y_of_h_min / self.b:.3g} b; "
+                   f"allowed: a thicker layer or a finer grid. ") + msg
+        return msg
 
     # -- transient ---------------------------------------------------------------------------------------
     @property
@@ -270,6 +315,7 @@ class PointContact:
         return PointSteady(x=x, y=y, pressure=Pf * c.p_max, film=Hf * hs, theta=Tf, h_central=float(Hf[jc, ic] * hs),
                            h_min=float(Hf[jm, im] * hs), x_of_h_min=float(x[im]), y_of_h_min=float(abs(y[jm])),
                            p_max=float(Pf.max() * c.p_max), meniscus_x=meniscus * c.b, flooded_inlet=flooded,
+                           inlet_film=math.inf if self.inlet_film is None else float(self.inlet_film),
                            load_error=float(e["load"]), radius_x=self.radius_x, b=c.b, hertz_pressure=c.p_max,
                            inlet_flux=flows["inlet"], outlet_flux=flows["outlet"], side_flux=flows["sides"], wall_time=wall, state=np.asarray(u),
                            solver_info=info, success=bool(ok), iterations=len(norms) - 1,

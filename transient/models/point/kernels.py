@@ -12,7 +12,9 @@ with the mirror ``P_S = P_N``, ``eps_s = eps_n`` on the symmetry row and, at the
 ``q_W = min(H_oil, H_W)`` (the oil layer carried in; ``H_oil = inf`` for a flooded inlet).
 
 Outputs, per unknown ``r`` (interior nodes, x fastest): ``res[r]``, the row scale ``scale[r]`` (the
-Poiseuille diagonal plus ``rho H/dx``), ``dp[r, 5]`` and ``dh[r, 5]`` (derivatives with respect to P and H
+Couette coefficient ``rho H/dx``, the row's derivative with respect to the content: the residual over it is the
+control volume's mass error relative to the flux through it; a Poiseuille diagonal in it would hide the mass
+balance of a starved inlet, where it is ~10^5 times larger), ``dp[r, 5]`` and ``dh[r, 5]`` (derivatives with respect to P and H
 at the centre, west, east, south, north node; on the symmetry row the north slot carries both mirror
 terms) and ``dt[r, 2]`` (with respect to theta at the centre and west node).
 """
@@ -82,7 +84,7 @@ def reynolds(P, T, H, rho, drho, eps, deps, depsh, dx, dy, h_oil, res, scale, dp
                 qw = rho[j, i - 1] * T[j, i - 1] * H[j, i - 1]
                 dqw_h = rho[j, i - 1] * T[j, i - 1]
             res[r] = pois - (q - qw) / dx
-            scale[r] = ax * (ee + ew) + ay * (en + es) + rho[j, i] * H[j, i] / dx
+            scale[r] = rho[j, i] * H[j, i] / dx
             # d/d(eps at the centre): half of every face
             dface = 0.5 * (ax * gx + ay * ((pn - p) - (p - ps)))
             dp[r, 0] = -ax * (ee + ew) - ay * (en + es) + deps[j, i] * dface - drho[j, i] * T[j, i] * H[j, i] / dx

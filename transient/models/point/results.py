@@ -20,7 +20,8 @@ class PointSteady(SteadyResult):
     film content reaches 1 on the centreline (the inlet meniscus; the domain's inlet when flooded there),
     ``b`` and ``hertz_pressure`` the Hertz semi-axis along the rolling direction and maximum pressure,
     ``inlet_flux``, ``outlet_flux`` and ``side_flux`` the oil flow rates into the domain at its inlet and out of
-    it at its outlet and sides [m^3/s] (volume at ambient density)."""
+    it at its outlet and sides [m^3/s] (volume at ambient density), ``inlet_film`` the prescribed inlet layer
+    (``inf``: fully flooded)."""
 
     time_axis = None
     x: np.ndarray = quantity("m")
@@ -39,6 +40,7 @@ class PointSteady(SteadyResult):
     b: float = quantity("m")
     hertz_pressure: float = quantity("Pa")
     flooded_inlet: bool = True
+    inlet_film: float = quantity("m", float("inf"))
     inlet_flux: float = quantity("m^3/s", 0.0)
     outlet_flux: float = quantity("m^3/s", 0.0)
     side_flux: float = quantity("m^3/s", 0.0)

@@ -100,7 +100,8 @@ def steady_by_time_steps(film, u0, tol=1e-8, t_max=1e4, rtol=0.3):
     T, u, _, _, counts = march(film, u0, t_max, lambda T: 1.0, rtol=rtol, h0=1e-2, stop=below(1e-3))
     us, oks, norms = fbns(film, u, tol, 60)
     if not oks:
-        T2, u, _, _, more = march(film, u, t_max, lambda T: 1.0, rtol=rtol, h0=T / 10.0, stop=below(tol))
+        T2, u, _, _, more = march(film, u, t_max, lambda T: 1.0, rtol=rtol, h0=T / 10.0 if T > 0 else 1e-2,
+                                  stop=below(tol))
         T += T2
         counts = {k: counts[k] + more[k] for k in counts}
         norms = [float(np.max(np.abs(merit(film, film.equations(u)))))]
