@@ -12,6 +12,8 @@ scaled residual norm with the film kept positive.
 
 from __future__ import annotations
 
+import time
+
 import numpy as np
 import scipy.linalg as sla
 import scipy.sparse as sp
@@ -122,9 +124,11 @@ def nested_start(film, u0, tol, max_iter, load_ratio, step_max, memory, solver):
     its solution interpolated bilinearly back; None when the coarse Newton fails."""
     from transient.models.point.krylov import inject, prolong_state
 
+    t0 = time.perf_counter()
     coarse = film.coarsened(2)
     uc, ok, norms = fbns(coarse, inject(film, coarse, 2, u0), tol, max_iter, load_ratio, step_max, memory=memory)
     solver.stats.setdefault("coarse_newton", []).append((coarse.nx, len(norms) - 1, ok))
+    solver.stats["coarse_s"] = solver.stats.get("coarse_s", 0.0) + time.perf_counter() - t0
     return prolong_state(coarse, film, uc) if ok else None
 
 
