@@ -45,10 +45,10 @@ METHODS = (("dense LU", "dense", False), ("Newton-Krylov", "krylov", False), ("N
 
 
 #: preconditioner variants of the Newton-Krylov path: (name, KrylovSolver keywords)
-VARIANTS = (("coarse LU + near-field LU (offsets up to 1 node), rebuilt every step (default)", dict(near=1)),
-            ("coarse LU + near-field LU (self-influence only)", dict(near=0)),
+VARIANTS = (("coarse LU + near-field LU (self-influence only), rebuilt every step (default)", dict(near=0)),
+            ("coarse LU + near-field LU (offsets up to 1 node)", dict(near=1)),
             ("coarse LU only (GMRES capped at 100)", dict(near=None, max_iter=100)),
-            ("default, kept while GMRES needs at most 10 iterations", dict(near=1, refresh_after=10)))
+            ("default, kept while GMRES needs at most 10 iterations", dict(near=0, refresh_after=10)))
 
 
 def solve(pc: PointContact, method, nested: bool) -> dict:

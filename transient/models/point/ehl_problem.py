@@ -111,6 +111,12 @@ class PointFilm:
         """Half-grid film ``H`` for the half-grid pressure ``P`` (DC-FFT of the mirrored pressure)."""
         return h0 + self.rigid + self.mirrored.apply(P)
 
+    def deformation(self, dp):
+        """``K dp``: the half-grid film change (flat) for pressure changes ``dp`` at the unknowns (DC-FFT)."""
+        field = np.zeros(self.m * self.nx)
+        field[self.flat] = dp
+        return self.mirrored.apply(field.reshape(self.m, self.nx)).ravel()
+
     def kernel(self):
         """Dense ``dH/dP``: rows every half-grid node, columns the unknowns (mirror images added)."""
         if self._kernel is None:

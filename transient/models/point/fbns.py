@@ -90,9 +90,7 @@ def newton_step(film, u, e, res=None, cj=0.0, solver=None):
     r = np.empty(n + 1)
     r[:n] = -res - a_pd @ a_p - a_t @ a_th
     if np.any(a_p):
-        field = np.zeros(film.m * film.nx)
-        field[film.flat] = a_p
-        r[:n] -= d_h @ film.mirrored.apply(field.reshape(film.m, film.nx)).ravel()
+        r[:n] -= d_h @ film.deformation(a_p)
     r[n] = -e["load"] - film.weight / film.load @ a_p
     solver = DenseSolver(film) if solver is None else solver
     z = solver.solve(film, u, e, local, b_p, b_t, r, cj)
