@@ -19,7 +19,8 @@ Hamrock-Dowson and Nijenbanning-Venner-Moes.
 3. Central films against Nijenbanning, Venner & Moes (*Wear* 176, 1994) over Moes' chart (Barus,
    incompressible).
 
-``main(out, quick)`` writes ``ehl_point.json`` into ``out`` and returns the markdown section.
+``main(out, quick)`` writes ``ehl_point.json`` into ``out`` and returns the markdown section
+(:func:`report` of that data).
 """
 
 from __future__ import annotations
@@ -148,9 +149,14 @@ def main(out, quick: bool = False) -> str:
         hd += [formula_case(w, u, 2e-8, 257) for w, u in ((10.0, 0.1), (30.0, 0.1), (100.0, 0.3))]
     chart = ([(100.0, 10.0)] if quick else [(M, L) for L in (5.0, 10.0, 20.0) for M in (20.0, 50.0, 100.0, 300.0, 1000.0)])
     nvm = [chart_case(M, L, 65 if quick else 129, d) for M, L in chart for d in ("incompressible", "dowson-higginson")]
-    (out / "ehl_point.json").write_text(json.dumps(dict(scaling=rows, variants=var, hamrock_dowson=hd, nvm=nvm),
-                                                     indent=1))
+    data = dict(scaling=rows, variants=var, hamrock_dowson=hd, nvm=nvm)
+    (out / "ehl_point.json").write_text(json.dumps(data, indent=1))
+    return report(data)
 
+
+def report(data: dict) -> str:
+    """The markdown section from the measured ``data`` (what :func:`main` writes to ``ehl_point.json``)."""
+    rows, var, hd, nvm = data["scaling"], data["variants"], data["hamrock_dowson"], data["nvm"]
     lines = [f"## {TITLE}", "",
              "Circular contact, M = 205, L = 7.2, fully flooded, Hertz start, tolerance 1e-8; the methods in one "
              "run, interleaved per grid. Newton its: on the grid itself (in brackets: on the coarser grids of "
@@ -177,7 +183,8 @@ def main(out, quick: bool = False) -> str:
     if len(kry) > 1:
         lines += ["", "Cost of one Newton-Krylov iteration against N (exponent between successive grids; "
                   "N log N would give the second number):", ""]
-        for (n1, t1), (n2, t2) in zip(kry, kry[1:]):
+        pairs = list(zip(kry, kry[1:])) + ([(kry[0], kry[-1])] if len(kry) > 2 else [])
+        for (n1, t1), (n2, t2) in pairs:
             p = math.log(t2 / t1) / math.log(n2 / n1)
             q = math.log(n2 * math.log(n2) / (n1 * math.log(n1))) / math.log(n2 / n1)
             lines.append(f"- N = {n1} -> {n2}: {t1:.3f} -> {t2:.3f} s, exponent {p:.2f} ({q:.2f})")
