@@ -268,31 +268,33 @@ class KrylovSolver:
 
     def solve(self, film, u, e, local, b_p, b_t, r, cj):
         s = self.stats
-        t0 = time.perf_counter()
         A = ReducedOperator(film, local, b_p, b_t)
         fresh = self.M is None
         if fresh:
-            self.M = self.preconditioner(film, u, A, cj)
-            s["setups"] += 1
+            self._build(film, u, A, cj)
         else:
             self.M.A = A
-        t1 = time.perf_counter()
-        limit = self.max_iter if fresh else 2 * self.refresh_after
-        x, its, ok = gmres_solve(A, r, self.M, self.rtol, self.restart, limit)
+        t0 = time.perf_counter()
+        x, its, ok = gmres_solve(A, r, self.M, self.rtol, self.restart,
+                                 self.max_iter if fresh else 2 * self.refresh_after)
+        s["gmres_s"] += time.perf_counter() - t0
         if not ok and not fresh:  # a stale preconditioner: rebuild and retry
-            t2 = time.perf_counter()
-            self.M = self.preconditioner(film, u, A, cj)
-            s["setups"] += 1
-            t1 += time.perf_counter() - t2
+            self._build(film, u, A, cj)
+            t0 = time.perf_counter()
             x, more, ok = gmres_solve(A, r, self.M, self.rtol, self.restart, self.max_iter)
+            s["gmres_s"] += time.perf_counter() - t0
             its += more
         if its > self.refresh_after or not ok:
             self.M = None
-        s["setup_s"] += t1 - t0
-        s["gmres_s"] += time.perf_counter() - t1
         s["newton"] += 1
         s["gmres"] += its
         s["gmres_its"].append(its)
         s["matvecs"] += A.matvecs
         s["failures"] += not ok
         return x
+
+    def _build(self, film, u, A, cj):
+        t0 = time.perf_counter()
+        self.M = self.preconditioner(film, u, A, cj)
+        self.stats["setups"] += 1
+        self.stats["setup_s"] += time.perf_counter() - t0
