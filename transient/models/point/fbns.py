@@ -16,39 +16,12 @@ import time
 
 import numpy as np
 import scipy.linalg as sla
-import scipy.sparse as sp
+
+from transient.models.point.krylov import KrylovSolver, coarsening_factor, inject, prolong_state
+from transient.models.point.reduced import dense_reduced, schur
 
 #: the largest nodal unknown count (half grid) solved by the dense LU; above it, Newton-Krylov
 DENSE_MAX_UNKNOWNS = 600
-
-
-def schur(film, u, e):
-    """Node-wise elimination of the Fischer-Burmeister rows: ``(a_p, b_p, a_theta, b_theta)`` with
-    ``dP = a_p + b_p z`` and ``dtheta = a_theta + b_theta z`` for the remaining unknown ``z`` per node (the
-    pressure where ``|dFB/dtheta| >= |dFB/dP|``, the content otherwise; all ``|b| <= 1``)."""
-    alpha, gamma = film.fb_derivatives(u, e)
-    fb = e["fb"]
-    keep_p = np.abs(gamma) >= np.abs(alpha)
-    sg = np.where(keep_p, gamma, 1.0)
-    sa = np.where(keep_p, 1.0, alpha)
-    b_p = np.where(keep_p, 1.0, -gamma / sa)
-    a_p = np.where(keep_p, 0.0, -fb / sa)
-    b_t = np.where(keep_p, -alpha / sg, 1.0)
-    a_th = np.where(keep_p, -fb / sg, 0.0)
-    return a_p, b_p, a_th, b_t
-
-
-def dense_reduced(film, local, b_p, b_t) -> np.ndarray:
-    """The reduced Newton matrix (``(N + 1)`` square, dense: the elastic block in full)."""
-    a_p, d_h, a_t = local
-    n = film.n
-    A = np.empty((n + 1, n + 1))
-    A[:n, :n] = np.asarray(d_h @ film.kernel()) * b_p[None, :]
-    A[:n, :n] += (a_p @ sp.diags(b_p) + a_t @ sp.diags(b_t)).toarray()
-    A[:n, n] = np.asarray(d_h.sum(axis=1)).ravel()
-    A[n, :n] = film.weight / film.load * b_p
-    A[n, n] = 0.0
-    return A
 
 
 class DenseSolver:
@@ -69,8 +42,6 @@ def linear_solver(film, method="auto"):
     """The reduced system's solver: ``"dense"`` (:class:`DenseSolver`), ``"krylov"``
     (:class:`~transient.models.point.krylov.KrylovSolver`), or ``"auto"``: dense up to
     :data:`DENSE_MAX_UNKNOWNS` nodal unknowns, Krylov above (and where the grid coarsens)."""
-    from transient.models.point.krylov import KrylovSolver, coarsening_factor
-
     if method == "auto":
         method = "krylov" if film.n > DENSE_MAX_UNKNOWNS and coarsening_factor(film) > 1 else "dense"
     return KrylovSolver(film) if method == "krylov" else DenseSolver(film)
@@ -120,8 +91,6 @@ def nested_start(film, u0, tol, max_iter, load_ratio, step_max, memory, solver):
     """Nested iteration (Venner & Lubrecht, *Multilevel Methods in Lubrication*, 2000, the FMG start): the
     steady problem on every second node from ``u0`` injected there (itself nested while the grid is large),
     its solution interpolated bilinearly back; None when the coarse Newton fails."""
-    from transient.models.point.krylov import inject, prolong_state
-
     t0 = time.perf_counter()
     coarse = film.coarsened(2)
     uc, ok, norms = fbns(coarse, inject(film, coarse, 2, u0), tol, max_iter, load_ratio, step_max, memory=memory)

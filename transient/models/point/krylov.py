@@ -36,6 +36,8 @@ import scipy.linalg as sla
 import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
+from transient.models.point.reduced import dense_reduced, schur
+
 
 class ReducedOperator(spla.LinearOperator):
     """The reduced Newton matrix ``A`` (module docstring) of ``film`` as a matrix-free operator.
@@ -257,8 +259,6 @@ class KrylovSolver:
                           gmres_its=[])
 
     def preconditioner(self, film, u, A, cj):
-        from transient.models.point.fbns import dense_reduced, schur
-
         cf = self.coarse
         uc = inject(film, cf, self.factor, u)
         ec = cf.equations(uc)
