@@ -26,10 +26,37 @@ from __future__ import annotations
 import math
 
 import numpy as np
+import scipy.fft as sfft
 import scipy.sparse as sp
 
 from transient.models.point.kernels import node_properties, reynolds
 from transient.physics.elasticity import SurfaceConvolution, surface_influence
+
+
+class MirroredConvolution:
+    """``K p`` on the half grid for a pressure mirrored about ``Y = 0``: the DC-FFT product of
+    :class:`~transient.physics.elasticity.SurfaceConvolution` (same coefficients), zero-padded to the next
+    fast FFT length at least ``2 n - 1`` per axis (exact linear convolution; ``2 n`` of a prime ``n`` would
+    make the FFT several times slower)."""
+
+    def __init__(self, conv: SurfaceConvolution, m: int):
+        self.conv, self.m = conv, m
+        ny, nx = conv.ny, conv.nx
+        self.shape = (sfft.next_fast_len(2 * ny - 1, real=True), sfft.next_fast_len(2 * nx - 1, real=True))
+        k = conv._offsets
+        ext = np.zeros(self.shape)
+        ly, lx = self.shape
+        ext[:ny, :nx] = k[ny - 1:, nx - 1:]
+        ext[:ny, lx - nx + 1:] = k[ny - 1:, : nx - 1]
+        ext[ly - ny + 1:, :nx] = k[: ny - 1, nx - 1:]
+        ext[ly - ny + 1:, lx - nx + 1:] = k[: ny - 1, : nx - 1]
+        self.kernel_hat = sfft.rfft2(ext)
+
+    def apply(self, half: np.ndarray) -> np.ndarray:
+        """Half-grid deformation ``(m, nx)`` for the half-grid pressure ``half`` ``(m, nx)``."""
+        full = np.vstack([half[:0:-1], half])
+        out = sfft.irfft2(sfft.rfft2(full, s=self.shape) * self.kernel_hat, s=self.shape)
+        return out[self.m - 1: self.conv.ny, : self.conv.nx]
 
 
 class PointFilm:
@@ -46,6 +73,7 @@ class PointFilm:
         self.m = (ny + 1) // 2
         self.y = self.y_full[self.m - 1:]
         self.nx = self.x.size
+        self.ratio = float(ratio)
         self.dx = float(self.x[1] - self.x[0])
         self.dy = float(self.y[1] - self.y[0])
         self.lam, self.c_el, self.p_h = float(lam), float(c_el), float(p_h)
@@ -61,7 +89,9 @@ class PointFilm:
         self.flat = self.j * nx + self.i  # unknown -> half-grid node
         self.weight = np.where(self.j == 0, 1.0, 2.0) * self.dx * self.dy  # load quadrature (both halves)
         self.conv = SurfaceConvolution(nx, ny, self.dx, self.dy, scale=self.c_el)
+        self.mirrored = MirroredConvolution(self.conv, m)
         self._kernel = None
+        self._coarse = {}
         self._pattern()
 
     # -- fields ---------------------------------------------------------------------------------------
@@ -79,7 +109,13 @@ class PointFilm:
 
     def film(self, P, h0):
         """Half-grid film ``H`` for the half-grid pressure ``P`` (DC-FFT of the mirrored pressure)."""
-        return h0 + self.rigid + self.conv.apply(self.full(P))[self.m - 1:]
+        return h0 + self.rigid + self.mirrored.apply(P)
+
+    def deformation(self, dp):
+        """``K dp``: the half-grid film change (flat) for pressure changes ``dp`` at the unknowns (DC-FFT)."""
+        field = np.zeros(self.m * self.nx)
+        field[self.flat] = dp
+        return self.mirrored.apply(field.reshape(self.m, self.nx)).ravel()
 
     def kernel(self):
         """Dense ``dH/dP``: rows every half-grid node, columns the unknowns (mirror images added)."""
@@ -170,18 +206,34 @@ class PointFilm:
         """The film content ``q = rho theta H`` at the unknowns (the transient's stored mass)."""
         return (e["rho"] * e["T"] * e["H"]).ravel()[self.flat]
 
-    def newton_matrix(self, u, e, cj=0.0):
-        """Blocks of the Jacobian of the Reynolds rows ``R - cj q`` (``cj = 0``: steady): ``(J_P dense,
-        J_theta sparse, dR/dH0, load row)``; ``cj`` the time-stepper's coefficient of the storage term."""
+    def coarsened(self, factor: int = 2) -> "PointFilm":
+        """The same problem on every ``factor``-th node (``nx - 1`` and ``(ny - 1)/2`` divisible by it; cached)."""
+        if (self.nx - 1) % factor or (self.m - 1) % factor:
+            raise ValueError(f"factor = {factor}: the grid {self.nx} x {self.y_full.size} does not coarsen by it")
+        if factor not in self._coarse:
+            self._coarse[factor] = PointFilm(self.x[::factor], self.y_full[::factor], self.ratio, self.lam,
+                                             self.c_el, self.p_h, self.lub, self.h_oil, self.load)
+        return self._coarse[factor]
+
+    def local_newton(self, u, e, cj=0.0):
+        """The sparse pieces of the Jacobian of the Reynolds rows ``R - cj q`` (``cj = 0``: steady):
+        ``(dR/dP at fixed film, dR/dH on the half-grid nodes, dR/dtheta)``; the full pressure block is
+        ``dR/dP + (dR/dH) K`` with ``K`` the elastic influence of the unknowns on the half-grid films, and
+        ``dR/dH0`` the row sums of ``dR/dH``."""
         a_p, d_h, a_t = self.local_matrices(e)
+        if cj:
+            f, n = self.flat, self.n
+            rho, drho, T, H = (e[k].ravel()[f] for k in ("rho", "drho", "T", "H"))
+            d_h = d_h - sp.csr_matrix((cj * rho * T, (np.arange(n), f)), shape=d_h.shape)
+            a_p = a_p - sp.diags(cj * drho * T * H)
+            a_t = a_t - sp.diags(cj * rho * H)
+        return a_p.tocsr(), d_h.tocsr(), a_t.tocsr()
+
+    def newton_matrix(self, u, e, cj=0.0):
+        """Blocks of the Jacobian of the Reynolds rows ``R - cj q`` (:meth:`local_newton`): ``(J_P dense,
+        J_theta sparse, dR/dH0, load row)``."""
+        a_p, d_h, a_t = self.local_newton(u, e, cj)
         j_pp = np.asarray(d_h @ self.kernel())
         j_pp += a_p.toarray()
         j_h0 = np.asarray(d_h.sum(axis=1)).ravel()
-        if cj:
-            f = self.flat
-            rho, drho, T, H = (e[k].ravel()[f] for k in ("rho", "drho", "T", "H"))
-            j_pp -= (cj * rho * T)[:, None] * self.kernel()[f]
-            j_pp[np.arange(self.n), np.arange(self.n)] -= cj * drho * T * H
-            a_t = a_t - sp.diags(cj * rho * H)
-            j_h0 = j_h0 - cj * rho * T
         return j_pp, a_t, j_h0, self.weight / self.load

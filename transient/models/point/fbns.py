@@ -12,39 +12,59 @@ scaled residual norm with the film kept positive.
 
 from __future__ import annotations
 
+import time
+
 import numpy as np
 import scipy.linalg as sla
-import scipy.sparse as sp
+
+from transient.models.point.krylov import KrylovSolver, coarsening_factor, inject, prolong_state
+from transient.models.point.reduced import dense_reduced, schur
+
+#: the largest nodal unknown count (half grid) solved by the dense LU; above it, Newton-Krylov
+DENSE_MAX_UNKNOWNS = 600
 
 
-def newton_step(film, u, e, res=None, cj=0.0):
+class DenseSolver:
+    """The reduced system by LAPACK LU (``O(N^3)``, exact)."""
+
+    name = "dense LU"
+
+    def __init__(self, film):
+        self.stats = dict(newton=0)
+
+    def solve(self, film, u, e, local, b_p, b_t, r, cj):
+        self.stats["newton"] += 1
+        A = dense_reduced(film, local, b_p, b_t)
+        return sla.solve(A, r, overwrite_a=True, overwrite_b=True, check_finite=False)
+
+
+def linear_solver(film, method="auto"):
+    """The reduced system's solver: ``"dense"`` (:class:`DenseSolver`), ``"krylov"``
+    (:class:`~transient.models.point.krylov.KrylovSolver`), or ``"auto"``: dense up to
+    :data:`DENSE_MAX_UNKNOWNS` nodal unknowns, Krylov above (and where the grid coarsens)."""
+    if method == "auto":
+        method = "krylov" if film.n > DENSE_MAX_UNKNOWNS and coarsening_factor(film) > 1 else "dense"
+    return KrylovSolver(film) if method == "krylov" else DenseSolver(film)
+
+
+def newton_step(film, u, e, res=None, cj=0.0, solver=None):
     """The full Newton step ``du`` at ``u`` (``e = film.equations(u)``), by the node-wise Schur reduction.
 
     ``res``, ``cj``: the Reynolds rows of a time step, ``R - cj (q - q_hat)``, and their storage coefficient
-    (default: the steady rows ``e["res"]``, ``cj = 0``)."""
+    (default: the steady rows ``e["res"]``, ``cj = 0``); ``solver``: the reduced system's solver
+    (:func:`linear_solver`; default dense)."""
     n = film.n
-    j_pp, a_t, j_h0, w = film.newton_matrix(u, e, cj)
+    local = film.local_newton(u, e, cj)
+    a_pd, d_h, a_t = local
     res = e["res"] if res is None else res
-    alpha, gamma = film.fb_derivatives(u, e)
-    fb = e["fb"]
-    keep_p = np.abs(gamma) >= np.abs(alpha)
-    sg = np.where(keep_p, gamma, 1.0)
-    sa = np.where(keep_p, 1.0, alpha)
-    # dP = a_p + b_p z,  dtheta = a_t + b_t z
-    b_p = np.where(keep_p, 1.0, -gamma / sa)
-    a_p = np.where(keep_p, 0.0, -fb / sa)
-    b_t = np.where(keep_p, -alpha / sg, 1.0)
-    a_th = np.where(keep_p, -fb / sg, 0.0)
-    A = np.empty((n + 1, n + 1))
-    A[:n, :n] = j_pp * b_p[None, :]
-    A[:n, :n] += (a_t @ sp.diags(b_t)).toarray()
-    A[:n, n] = j_h0
-    A[n, :n] = w * b_p
-    A[n, n] = 0.0
+    a_p, b_p, a_th, b_t = schur(film, u, e)
     r = np.empty(n + 1)
-    r[:n] = -res - j_pp @ a_p - a_t @ a_th
-    r[n] = -e["load"] - w @ a_p
-    z = sla.solve(A, r, overwrite_a=True, overwrite_b=True, check_finite=False)
+    r[:n] = -res - a_pd @ a_p - a_t @ a_th
+    if np.any(a_p):
+        r[:n] -= d_h @ film.deformation(a_p)
+    r[n] = -e["load"] - film.weight / film.load @ a_p
+    solver = DenseSolver(film) if solver is None else solver
+    z = solver.solve(film, u, e, local, b_p, b_t, r, cj)
     du = np.empty(2 * n + 1)
     du[:n] = a_p + b_p * z[:n]
     du[n: 2 * n] = a_th + b_t * z[:n]
@@ -67,24 +87,52 @@ def merit(film, e, cj=0.0, q_hat=None):
     return np.concatenate([r / s, e["fb"], [e["load"]]])
 
 
-def fbns(film, u0, tol=1e-8, max_iter=60, load_ratio=1.0, step_max=0.5, cj=0.0, q_hat=None, memory=1):
+def nested_start(film, u0, tol, max_iter, load_ratio, step_max, memory, solver):
+    """Nested iteration (Venner & Lubrecht, *Multilevel Methods in Lubrication*, 2000, the FMG start): the
+    steady problem on every second node from ``u0`` injected there (itself nested while the grid is large),
+    its solution interpolated bilinearly back; None when the coarse Newton fails."""
+    t0 = time.perf_counter()
+    coarse = film.coarsened(2)
+    uc, ok, norms = fbns(coarse, inject(film, coarse, 2, u0), tol, max_iter, load_ratio, step_max, memory=memory)
+    solver.stats.setdefault("coarse_newton", []).append((coarse.nx, len(norms) - 1, ok))
+    solver.stats["coarse_s"] = solver.stats.get("coarse_s", 0.0) + time.perf_counter() - t0
+    return prolong_state(coarse, film, uc) if ok else None
+
+
+def fbns(film, u0, tol=1e-8, max_iter=60, load_ratio=1.0, step_max=0.5, cj=0.0, q_hat=None, memory=1,
+         solver="auto", nested=True):
     """Newton from ``u0`` until the largest scaled residual is below ``tol`` (steady, or one implicit time
     step ``R - cj (q - q_hat) = 0`` when ``cj > 0``).
 
     Returns ``(u, converged, norms)``; ``norms`` the infinity norm of the scaled residual per iteration.
     The step is cut so that the film stays positive and no pressure moves by more than ``step_max`` (of
     p_h) plus half its value in one step, then halved until the residual norm decreases below the largest of
-    the last ``memory`` norms (1: monotone; more: the non-monotone rule of Grippo, Lampariello & Lucidi, 1986)."""
+    the last ``memory`` norms (1: monotone; more: the non-monotone rule of Grippo, Lampariello & Lucidi, 1986).
+    ``solver``: ``"auto"``, ``"dense"``, ``"krylov"`` (:func:`linear_solver`) or a solver object; its ``stats``
+    count the Newton steps (and for Krylov the GMRES iterations and times). ``nested``: a steady solve on a
+    grid above the dense size that starts far from the solution (scaled residual above 1e-2) starts from
+    the solution on every second node (:func:`nested_start`) when that converges."""
     u = np.array(u0, float)
     e = film.equations(u, load_ratio)
     f = merit(film, e, cj, q_hat)
     norms = [float(np.max(np.abs(f)))]
     merits = [float(np.sqrt(f @ f))]
     n = film.n
+    if isinstance(solver, str):
+        solver = linear_solver(film, solver)
+    if (nested and not cj and norms[0] > 1e-2 and film.n > DENSE_MAX_UNKNOWNS and (film.nx - 1) % 2 == 0
+            and (film.m - 1) % 2 == 0):
+        start = nested_start(film, u, tol, max_iter, load_ratio, step_max, memory, solver)
+        if start is not None:
+            u = start
+            e = film.equations(u, load_ratio)
+            f = merit(film, e, cj, q_hat)
+            norms = [float(np.max(np.abs(f)))]
+            merits = [float(np.sqrt(f @ f))]
     for _ in range(max_iter):
         if norms[-1] < tol:
             return u, True, norms
-        du = newton_step(film, u, e, rows(film, e, cj, q_hat)[0], cj)
+        du = newton_step(film, u, e, rows(film, e, cj, q_hat)[0], cj, solver)
         big = np.max(np.abs(du[:n]) / (step_max + 0.5 * np.abs(u[:n])))
         s = min(1.0, 1.0 / big) if big > 0 else 1.0
         phi0 = max(v * v for v in merits[-memory:])
