@@ -1,4 +1,4 @@
-"""The Schur-reduced FBNS Newton system of the point film: the node-wise elimination of the
+"""The Schur-reduced FBNS Newton system of the point film (and of the line film, :mod:`~transient.models.roller.line_newton`): the node-wise elimination of the
 Fischer-Burmeister rows and the dense reduced matrix (Woloszynski, Podsiadlo & Stachowiak, *Tribol. Lett.*
 58, 2015). Each FB row ``a dP + g dtheta = -FB`` is diagonal, so one unknown per node is eliminated; what is
 left is ``(N + 1)`` square (one unknown per node and ``dH0``), dense through the elasticity::

@@ -43,7 +43,7 @@ def content_residual(p_full, t_full, x, props, lam, order2, res, scale, dp, dh, 
     respect to the full-node pressure, film and content; ``props`` from :func:`node_properties`
     (film-free quantities: rho, drho, eps, deps/dp, deps/dh, rho h, drho/dp h)."""
     nf = x.size
-    rho, drho, eps, deps_p, deps_h, rh, drh = props[0], props[1], props[2], props[3], props[4], props[5], props[6]
+    rho, eps, deps_p, deps_h, rh, drh = props[0], props[2], props[3], props[4], props[5], props[6]
     dE = np.zeros(N_LOCAL)
     dM = np.zeros(N_LOCAL)
     dP = np.zeros(N_LOCAL)

@@ -24,6 +24,8 @@ import numpy as np
 import scipy.linalg as sla
 import scipy.sparse.linalg as spla
 
+from transient.models.point.reduced import schur
+
 #: GMRES iterations above which the preconditioner is refreshed at the next Newton iteration
 REFACTOR_ITERS = 12
 #: below this many unknowns each step is a direct LAPACK solve (cheaper than GMRES there)
@@ -55,15 +57,7 @@ class _Preconditioner:
 def schur_system(film, u, e):
     """``(S, r, (a_p, b_p, a_th, b_t))``: the Schur matrix and right-hand side of the Newton step at ``u``
     (Reynolds rows divided by their scales) and the node-wise back-substitution ``dp = a_p + b_p z``, ``dtheta = a_th + b_t z``."""
-    alpha, gamma = film.fb_derivatives(u, e)
-    fb = e["fb"]
-    keep_p = np.abs(gamma) >= np.abs(alpha)
-    sg = np.where(keep_p, gamma, 1.0)
-    sa = np.where(keep_p, 1.0, alpha)
-    b_p = np.where(keep_p, 1.0, -gamma / sa)
-    a_p = np.where(keep_p, 0.0, -fb / sa)
-    b_t = np.where(keep_p, -alpha / sg, 1.0)
-    a_th = np.where(keep_p, -fb / sg, 0.0)
+    a_p, b_p, a_th, b_t = schur(film, u, e)
     S = film.schur_matrix(e, b_p, b_t)
     r = np.empty(film.n + 1)
     r[:-1] = -e["res"] - film.jacobian_product(e, a_p, a_th)
