@@ -138,7 +138,9 @@ class RotorColumns(NamedTuple):
 
 class ContentScratch(NamedTuple):
     """The content formulation's scratch: the universal variable ``u`` of the cells, ``theta = m / H``,
-    ``du/dm``, ``du/dX``, ``du/dY`` and the CSC column pointers of the pattern."""
+    ``du/dm``, ``du/dX``, ``du/dY``, the CSC column pointers of the pattern, and the journal position ``(X, Y)``
+    whose cell fields the BDF2 Newton variables left in :class:`Scratch` (NaN: none;
+    :func:`~transient.models.journal.content_newton.fields_of`)."""
 
     u: np.ndarray
     theta: np.ndarray
@@ -146,6 +148,7 @@ class ContentScratch(NamedTuple):
     ux: np.ndarray
     uy: np.ndarray
     indptr: np.ndarray
+    xy: np.ndarray
 
 
 class Rotor(NamedTuple):
