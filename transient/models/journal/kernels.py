@@ -198,7 +198,8 @@ def stencil_flux_jacobian(switch, geo, fields, extras, fv, data, speed_ratio):
     if speed_ratio != 1.0:
         c *= speed_ratio
         dc_dq *= speed_ratio
-    jacobian_kernel(P, dP, C, D, k, zero, k, zero, c, zero, dk_dq, dk_dq, dc_dq, no_dq, True,
+    q = min(dk_dq.shape[0], 2)  # the stencil has no velocity terms: extra columns 2, 3 (VX, VY) stay zero
+    jacobian_kernel(P, dP, C, D, k, zero, k, zero, c, zero, dk_dq[:q], dk_dq[:q], dc_dq[:q], no_dq[:q], True,
                     faces, boundary, cells, face_k, pos_col, data)
     add_bulk_jacobian(P, dP, H, cosp, sinp, cells.free, bulk, pos_col, dk_dq.shape[0], data)
 
