@@ -162,3 +162,33 @@ def test_half_bearing_bdf2_orbit_equals_the_whole_length():
     assert np.allclose(mass_h, mass_w, rtol=1e-12, atol=0)
     cells_h = np.array([mirror(half, whole, y)[:2 * n] for y in sh.y])
     assert np.max(np.abs(cells_h - sw.y[:, :2 * n])) <= 1e-10 * np.max(np.abs(sh.y[:, :n]))
+
+
+@pytest.mark.parametrize("film", FILMS)
+def test_newton_pattern_drops_only_zeros(film):
+    """The BDF2 Newton's pattern leaves out only entries that are exactly zero in the Jacobian (a prescribed cell's
+    couplings), its Jacobian is the operator-pattern one gathered, and the full-length axial groove cuts the
+    periodic wrap: the band of the film block halves."""
+    from transient.models.journal.content_newton import newton_jacobian
+    from transient.solvers.bandlu import BorderedBandLU
+
+    o = orbit(grid=(24, 5), film=film, switch_width=1e5)
+    args = o.bdf2_model().args
+    z, b = moving_state(o)
+    y = np.empty_like(z)
+    bdf2_to_state(z, y, args)
+    full = np.zeros(o.film.op.nnz)
+    bdf2_jacobian(TAU, y, CJ * y + b, CJ, full, args)
+    pattern, gather = o.newton_pattern()
+    data = np.zeros(pattern.nnz)
+    newton_jacobian(TAU, y, CJ * y + b, CJ, data, args)
+    assert np.array_equal(data, full[gather])
+    dropped = np.ones(full.size, bool)
+    dropped[gather] = False
+    assert dropped.sum() > 0 and np.all(full[dropped] == 0.0)
+    J = o.film.op.matrix(full).toarray()
+    kept = np.zeros_like(J)
+    kept[pattern.nonzero()] = 1.0
+    assert np.array_equal(J * kept, J)
+    bands = BorderedBandLU(o.film.op.pattern, 4).kl, BorderedBandLU(pattern, 4).kl  # 11, 5 (Gecim's 9 points: 19, 9)
+    assert bands[1] <= 0.5 * bands[0], bands

@@ -9,6 +9,8 @@ regime) is built by :meth:`~transient.models.journal.orbit.JournalOrbit.bdf2_mod
 
 from __future__ import annotations
 
+import numpy as np
+import scipy.sparse as sp
 from numba import njit
 
 from transient.models.journal.kernels import (N_ROTOR, content_rows, content_universal, film_force, state_fields,
@@ -19,8 +21,45 @@ from transient.solvers.integrate.bdf2 import newton_step
 @njit  # not cacheable: numba counts the kernels handed to newton_step as dynamic globals (compiled once per process)
 def bdf2_newton(args, t, cj, b, y, yp, F, dz, data, lu, y_pred, z, pick, err_idx, err_w, state, counts):
     """:func:`~transient.solvers.integrate.bdf2.newton_step` on the content film + rotor, iterating on ``[u, X, Y, VX, VY]``."""
-    return newton_step(bdf2_residual, bdf2_jacobian, film_newton_norm, bdf2_to_state, bdf2_from_state, args, t,
+    return newton_step(bdf2_residual, newton_jacobian, film_newton_norm, bdf2_to_state, bdf2_from_state, args, t,
                        cj, b, y, yp, F, dz, data, lu, y_pred, z, pick, err_idx, err_w, state, counts)
+
+
+def decoupled_pattern(pattern, free):
+    """The arrow ``pattern`` (CSC) without the entries that couple a prescribed cell (``free`` False) to another
+    unknown, and the position in ``pattern``'s data of each entry kept (``gather``, CSC order).
+
+    A prescribed (groove) cell's fields are its sharp prescribed values whatever its state
+    (:func:`~transient.physics.cavitation.sharp_fixed_cells`: P' = D = 0), so its column holds only the diagonal;
+    its row is ``m' = cj m + b``: so those entries are exactly zero in every Jacobian of :func:`bdf2_jacobian`. An
+    axial groove over the whole length then cuts the film's periodic wrap in phi: on the paper's 151 x 21 grid the
+    reverse Cuthill-McKee band of the film block narrows from 43 to 21 and LAPACK's band LU is 2.3x faster."""
+    pat = sp.csc_matrix(pattern)
+    pat.sort_indices()
+    N = pat.shape[0]
+    is_free = np.ones(N, dtype=bool)
+    is_free[:free.size] = free
+    rows = pat.indices
+    cols = np.repeat(np.arange(N), np.diff(pat.indptr))
+    keep = (rows == cols) | (is_free[rows] & is_free[cols])
+    gather = np.flatnonzero(keep).astype(np.int64)
+    indptr = np.concatenate([[0], np.cumsum(np.bincount(cols[keep], minlength=N))])
+    kept = sp.csc_matrix((np.ones(gather.size), rows[keep], indptr), shape=pat.shape)
+    return kept, gather
+
+
+@njit(cache=True)
+def newton_jacobian(t, y, yp, cj, data, args):
+    """:func:`bdf2_jacobian` in the pattern of the problem: the operator's (``data`` of its size) or the decoupled
+    one of :func:`decoupled_pattern` (gathered from the operator's, ``work.jac``, by ``work.gather``)."""
+    work = args[6]
+    full, gather = work.jac, work.gather
+    if data.size == gather.size and data.size != full.size:  # the decoupled pattern
+        bdf2_jacobian(t, y, yp, cj, full, args)
+        for k in range(gather.size):
+            data[k] = full[gather[k]]
+    else:
+        bdf2_jacobian(t, y, yp, cj, data, args)
 
 
 @njit(cache=True)
