@@ -176,8 +176,9 @@ class JournalOrbit:
         return self._problem(y0, tau0, touch_gap, formulation)
 
     def _problem(self, y0, tau0, touch_gap, formulation, pattern=None) -> Problem:
-        """:meth:`problem` with ``y0`` already in the formulation's own layout (``pattern``: the Jacobian's, default
-        the operator's)."""
+        """:meth:`problem` with ``y0`` already in the formulation's own layout; ``pattern``: the BDF2 Newton's
+        (:meth:`newton_pattern`; the problem then has no Jacobian callbacks: its Jacobian is :meth:`bdf2_model`'s),
+        default the operator's."""
         f = self.film
         n = f.n
         switch, geo, fields, extras, fv, work = f.switch, f.geo, f.fields, f.extras, f.fv, f.work
@@ -213,9 +214,8 @@ class JournalOrbit:
         if self.bearing.shear_thinning:  # the Gecim faces on all cores first (film.prefetch)
             rhs, jac_rhs, residual, jac_residual = (_prefetching(f, cb, formulation) for cb in
                                                     (rhs, jac_rhs, residual, jac_residual))
-        if pattern is not None:  # the Jacobians in the operator's pattern, gathered into this one
-            gather = self.newton_pattern()[1]
-            jac_rhs, jac_residual = (_gathering(j, gather, f.op.nnz) for j in (jac_rhs, jac_residual))
+        if pattern is not None:  # the BDF2 Newton's pattern: its Jacobian is the Bdf2Model's, none of these
+            jac_rhs = jac_residual = None
         yp0 = np.empty(self.n)
         rhs(tau0, read_only(y0), yp0)  # the array type SUNDIALS passes: one compiled signature
         events = None
@@ -649,18 +649,6 @@ def _state_array(y) -> np.ndarray:
         return np.array(y, dtype=float)
     except (TypeError, ValueError):
         raise ValueError(f"the initial state y0 must be an array of numbers, got {type(y).__name__}") from None
-
-
-def _gathering(jacobian, gather, nnz):
-    """``jacobian`` (its CSC data the last argument) filling the operator's pattern, the entries ``gather`` handed
-    on (:meth:`JournalOrbit.newton_pattern`)."""
-    full = np.zeros(nnz)
-
-    def wrapped(*args):
-        jacobian(*args[:-1], full)
-        args[-1][:] = full[gather]
-
-    return wrapped
 
 
 def _prefetching(film, callback, formulation):
