@@ -100,14 +100,20 @@ def sharp_fixed_cells(free, u_fixed, beta_bar, P, dP, C, D, dD):
 def elrod_inverse(theta, width, content_scale, beta_bar, u):
     """``u = C^-1(theta)`` elementwise for the switch of :func:`elrod_content` (any real ``theta``).
 
-    ``C`` is monotone and concave if ``1/beta_bar < r`` (convex otherwise) and ``C(u0) - theta`` has the sign
-    of ``P(u0) (1/beta_bar - r)`` at ``u0 = (theta - 1) / r``, so Newton from ``u0`` converges monotonically
-    (from the side the curvature allows); it stops when the step is below 1e-14 of ``max(1, |u|)``."""
+    ``C`` is monotone and concave if ``1/beta_bar < r`` (convex otherwise). At both ends of the sharp curve,
+    ``u0 = (theta - 1) / r`` (cavitated) and ``u0 = beta_bar (theta - 1)`` (full film), ``C(u0) - theta`` has the
+    sign of ``1/beta_bar - r`` (``P(u0)`` and ``P(u0) - u0`` are positive), so Newton from either converges
+    monotonically, from the side the curvature allows; it starts from the one nearer the root on that side (the
+    larger if concave, else the smaller): the full film's pressure in one or two steps rather than the 5-12 it takes
+    to climb out of the switch from the cavitated end. It stops when the step is below 1e-14 of ``max(1, |u|)``."""
     r = content_scale
     inv = 1.0 / beta_bar
+    concave = r > inv
     for i in range(theta.size):
         t = theta[i]
         x = (t - 1.0) / r
+        x_full = (t - 1.0) * beta_bar
+        x = max(x, x_full) if concave else min(x, x_full)
         for _ in range(200):
             s = x / width
             if s > 30.0:

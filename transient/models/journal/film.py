@@ -94,7 +94,8 @@ class Film(FilmBlock):
         self.bulk = bulk_tables(op, law, s.clearance, s.omega * s.radius) if self.shear_thinning else no_bulk()
         self.fv = operator_tables(op, self.bulk if self.shear_thinning else None)  # None: no Gecim code compiled
         self.work = ContentScratch(np.zeros(n), np.zeros(n), np.zeros(n), np.zeros(n), np.zeros(n),
-                                   np.ascontiguousarray(op.stencil.indptr, dtype=np.int64))
+                                   np.ascontiguousarray(op.stencil.indptr, dtype=np.int64), np.full(2, np.nan),
+                                   np.zeros(0), np.zeros(0, dtype=np.int64))
 
     # residual / Jacobian of the prescribed-motion film equations G(u) = 0 --------------------------
     def prefetch(self, u, X, Y):

@@ -158,9 +158,15 @@ def state_fields(u, X, Y, switch, geo, fields, fv):
 def stencil_residual(u, X, Y, switch, geo, fields, fv, R, speed_ratio):
     """The film's net outflow ``R`` at the position ``(X, Y)``, its Couette part scaled by ``speed_ratio``
     (``Omega / omega_ref``: 1 here, the shaft's speed function in :mod:`transient.models.rotor.kernels`)."""
+    state_fields(u, X, Y, switch, geo, fields, fv)
+    stencil_flux(u, fields, fv, R, speed_ratio)
+
+
+@njit(cache=True)
+def stencil_flux(u, fields, fv, R, speed_ratio):
+    """:func:`stencil_residual` on the cell fields already in ``fields`` (those of ``u``, :func:`state_fields`)."""
     H, P, dP, C, D, dD, k, c, zero, _ = fields
     faces, boundary, cells, face_k, bulk = fv
-    state_fields(u, X, Y, switch, geo, fields, fv)
     if gecim_bulk(bulk):  # the Poiseuille flux is the Gecim bulk's (gecim_film), not k grad P
         k[:] = 0.0
     if speed_ratio != 1.0:
@@ -172,12 +178,18 @@ def stencil_residual(u, X, Y, switch, geo, fields, fv, R, speed_ratio):
 @njit(cache=True)
 def stencil_jacobian(u, X, Y, switch, geo, fields, extras, fv, data, speed_ratio):
     """The Jacobian of :func:`stencil_residual` into the arrow pattern ``data`` (cell block, position columns)."""
+    state_fields(u, X, Y, switch, geo, fields, fv)
+    stencil_flux_jacobian(switch, geo, fields, extras, fv, data, speed_ratio)
+
+
+@njit(cache=True)
+def stencil_flux_jacobian(switch, geo, fields, extras, fv, data, speed_ratio):
+    """:func:`stencil_jacobian` on the cell fields already in ``fields`` (:func:`state_fields`)."""
     layer_gap, darcy = switch.layer_gap, switch.darcy
     cosp, sinp, area = geo
     H, P, dP, C, D, dD, k, c, zero, _ = fields
     dk_dq, dc_dq, no_dq, pos_row, pos_col, indices, scale = extras
     faces, boundary, cells, face_k, bulk = fv
-    state_fields(u, X, Y, switch, geo, fields, fv)
     if dk_dq.shape[0] > 0:
         position_derivatives(H, cosp, sinp, layer_gap, darcy, dk_dq, dc_dq)
     if gecim_bulk(bulk):
@@ -186,7 +198,8 @@ def stencil_jacobian(u, X, Y, switch, geo, fields, extras, fv, data, speed_ratio
     if speed_ratio != 1.0:
         c *= speed_ratio
         dc_dq *= speed_ratio
-    jacobian_kernel(P, dP, C, D, k, zero, k, zero, c, zero, dk_dq, dk_dq, dc_dq, no_dq, True,
+    q = min(dk_dq.shape[0], 2)  # the stencil has no velocity terms: extra columns 2, 3 (VX, VY) stay zero
+    jacobian_kernel(P, dP, C, D, k, zero, k, zero, c, zero, dk_dq[:q], dk_dq[:q], dc_dq[:q], no_dq[:q], True,
                     faces, boundary, cells, face_k, pos_col, data)
     add_bulk_jacobian(P, dP, H, cosp, sinp, cells.free, bulk, pos_col, dk_dq.shape[0], data)
 
@@ -396,12 +409,15 @@ def _content_film(y, switch, geo, fields, fv, work, sym):
 @njit(cache=True)
 def content_residual(tau, y, yp, out, switch, rotor, geo, fields, fv, work):
     """IDA residual of the content formulation (block comment above); groove cells: ``m' = 0``."""
+    fx, fy = _content_film(y, switch, geo, fields, fv, work, rotor.sym)
+    content_rows(tau, y, yp, out, rotor, geo.area, fields.R, fv.cells.free, fx, fy)
+
+
+@njit(cache=True)
+def content_rows(tau, y, yp, out, rotor, area, R, free, fx, fy):
+    """The rows of :func:`content_residual` from the film's net outflow ``R`` and force ``(fx, fy)``."""
     kappa, wbar, ebar, sym = rotor
-    area = geo.area
-    R = fields.R
-    free = fv.cells.free
     n = free.size
-    fx, fy = _content_film(y, switch, geo, fields, fv, work, sym)
     for i in range(n):
         out[i] = area[i] * yp[i] + R[i] if free[i] else yp[i]
     ax, ay = rotor_accelerations(tau, fx, fy, kappa, wbar, ebar)
@@ -440,7 +456,7 @@ def content_jacobian(tau, y, yp, cj, data, switch, rotor, geo, fields, extras, f
     H, P, dP, C, D, dD, k, c, zero, R = fields
     dk_dq, dc_dq, no_dq, pos_row, pos_col, indices, scale = extras
     free, u_fixed, pos_c = fv.cells
-    u, theta, E, ux, uy, indptr = work
+    u, theta, E, ux, uy, indptr = work.u, work.theta, work.E, work.ux, work.uy, work.indptr
     n = free.size
     content_universal(y, switch, geo, free, u_fixed, theta, u)
     stencil_jacobian(u, y[n], y[n + 1], switch, geo, fields, extras, fv, data, 1.0)

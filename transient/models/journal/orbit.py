@@ -38,7 +38,7 @@ from transient.models.journal.kernels import (N_ROTOR, content_jacobian, content
 from transient.models.journal.results import OrbitResult
 from transient.models.journal.scales import Rotor
 from transient.models.journal.rk4 import FilmStageSolver
-from transient.models.journal.content_newton import bdf2_newton
+from transient.models.journal.content_newton import bdf2_newton, decoupled_pattern
 from transient.solvers.integrate.bdf2 import Bdf2Model
 from transient.solvers.integrate import Problem, Stats
 from transient.solvers.longrun import run_long
@@ -91,6 +91,7 @@ class JournalOrbit:
         self.wbar = self.load / mc_w2
         self.ebar = self.unbalance / bearing.clearance
         self._equilibrium = None
+        self._newton_pattern = None
 
     # ---------------------------------------------------------------------------------------------
     @property
@@ -174,8 +175,10 @@ class JournalOrbit:
             y0 = self.content_state(y0)
         return self._problem(y0, tau0, touch_gap, formulation)
 
-    def _problem(self, y0, tau0, touch_gap, formulation) -> Problem:
-        """:meth:`problem` with ``y0`` already in the formulation's own layout."""
+    def _problem(self, y0, tau0, touch_gap, formulation, pattern=None) -> Problem:
+        """:meth:`problem` with ``y0`` already in the formulation's own layout; ``pattern``: the BDF2 Newton's
+        (:meth:`newton_pattern`; the problem then has no Jacobian callbacks: its Jacobian is :meth:`bdf2_model`'s),
+        default the operator's."""
         f = self.film
         n = f.n
         switch, geo, fields, extras, fv, work = f.switch, f.geo, f.fields, f.extras, f.fv, f.work
@@ -211,6 +214,8 @@ class JournalOrbit:
         if self.bearing.shear_thinning:  # the Gecim faces on all cores first (film.prefetch)
             rhs, jac_rhs, residual, jac_residual = (_prefetching(f, cb, formulation) for cb in
                                                     (rhs, jac_rhs, residual, jac_residual))
+        if pattern is not None:  # the BDF2 Newton's pattern: its Jacobian is the Bdf2Model's, none of these
+            jac_rhs = jac_residual = None
         yp0 = np.empty(self.n)
         rhs(tau0, read_only(y0), yp0)  # the array type SUNDIALS passes: one compiled signature
         events = None
@@ -220,7 +225,8 @@ class JournalOrbit:
             def events(t, y, out):
                 out[0] = limit - (y[n] ** 2 + y[n + 1] ** 2)
 
-        return Problem(y0=y0, yp0=yp0, rhs=rhs, residual=residual, jac_pattern=f.op.pattern, jac_rhs=jac_rhs,
+        return Problem(y0=y0, yp0=yp0, rhs=rhs, residual=residual,
+                       jac_pattern=f.op.pattern if pattern is None else pattern, jac_rhs=jac_rhs,
                        jac_residual=jac_residual, events=events, n_events=1 if events else 0,
                        event_terminal=[True], event_direction=[-1], name=f"journal orbit ({formulation})")
 
@@ -228,12 +234,23 @@ class JournalOrbit:
         """The compiled kernels of the content formulation for ``method="bdf2"``
         (:class:`~transient.solvers.integrate.bdf2.Bdf2Model`, kernels in :mod:`~transient.models.journal.content_newton`):
         error test on the rotor, the film solved by Newton to ``BDF2_FILM_TOL`` in pressure (p0) and content per
-        cell."""
+        cell. Its Jacobian fills the problem's pattern: the operator's (:meth:`problem`) or, faster to factor, the
+        one without the prescribed cells' couplings (:meth:`newton_pattern`, what ``run(method="bdf2")`` uses)."""
         f = self.film
-        args = (f.switch, Rotor(self.kappa, self.wbar, self.ebar, f.sym), f.geo, f.fields, f.extras, f.fv, f.work,
+        pattern, gather = self.newton_pattern()
+        work = f.work._replace(jac=np.zeros(f.op.nnz), gather=gather)
+        args = (f.switch, Rotor(self.kappa, self.wbar, self.ebar, f.sym), f.geo, f.fields, f.extras, f.fv, work,
                 (BDF2_FILM_TOL, BDF2_FILM_TOL), np.zeros(f.n, dtype=np.int8))
         return Bdf2Model(newton=bdf2_newton, args=args,
                          error_components=np.arange(f.n, self.n), n_border=N_ROTOR)
+
+    def newton_pattern(self):
+        """The content problem's Jacobian pattern without the entries that are zero by construction (a prescribed
+        cell's couplings) and their positions in the operator's pattern
+        (:func:`~transient.models.journal.content_newton.decoupled_pattern`; computed once)."""
+        if self._newton_pattern is None:
+            self._newton_pattern = decoupled_pattern(self.film.op.pattern, self.film.op.free)
+        return self._newton_pattern
 
     def parameters(self) -> dict:
         """Every parameter of the bearing and the rotor that changes an orbit (SI), e.g. to key a checkpoint."""
@@ -398,7 +415,9 @@ class JournalOrbit:
         atol = self.absolute_tolerance(ig.atol, formulation)
         if ig.method == "bdf2":
             spr = BDF2_MIN_STEPS if ig.steps_per_revolution is None else ig.steps_per_revolution
-            return _Step(problem_at, rtol=ig.rtol, atol=atol, max_step=two_pi / spr, first_step=two_pi * 1e-4,
+            pattern = self.newton_pattern()[0]
+            return _Step(lambda y_, t_: self._problem(y_, t_, touch_gap, formulation, pattern), rtol=ig.rtol,
+                         atol=atol, max_step=two_pi / spr, first_step=two_pi * 1e-4,
                          options={"bdf2": self.bdf2_model()})
         return _Step(problem_at, rtol=ig.rtol * (CONTENT_RTOL_FACTOR if formulation == "content" else 1.0), atol=atol)
 

@@ -138,7 +138,12 @@ class RotorColumns(NamedTuple):
 
 class ContentScratch(NamedTuple):
     """The content formulation's scratch: the universal variable ``u`` of the cells, ``theta = m / H``,
-    ``du/dm``, ``du/dX``, ``du/dY`` and the CSC column pointers of the pattern."""
+    ``du/dm``, ``du/dX``, ``du/dY``, the CSC column pointers of the pattern, and the journal position ``(X, Y)``
+    whose cell fields the BDF2 Newton variables left in :class:`Scratch` (NaN: none;
+    :func:`~transient.models.journal.content_newton.fields_of`); for the BDF2 Newton's own pattern
+    (:func:`~transient.models.journal.content_newton.decoupled_pattern`; empty until
+    :meth:`~transient.models.journal.orbit.JournalOrbit.bdf2_model`): the Jacobian's data in the operator's pattern
+    and the position there of each entry of the Newton's pattern."""
 
     u: np.ndarray
     theta: np.ndarray
@@ -146,6 +151,9 @@ class ContentScratch(NamedTuple):
     ux: np.ndarray
     uy: np.ndarray
     indptr: np.ndarray
+    xy: np.ndarray
+    jac: np.ndarray
+    gather: np.ndarray
 
 
 class Rotor(NamedTuple):
