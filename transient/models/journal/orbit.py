@@ -50,9 +50,9 @@ from transient.units import rpm_to_hz
 #: the orbit accuracy of the universal form (docs/journal.md, section 5).
 CONTENT_RTOL_FACTOR = 0.1
 #: ``method="bdf2"``: at least this many steps per revolution by default (the step cap: the rotor's local error
-#: does not see the film's fronts, whose error the cap bounds; 48 x 8, 0.3 C: 1.1e-4 C at 500), and the film's
+#: does not see the film's fronts, whose error the cap bounds; 151 x 21, 0.3 C: 9.5e-5 C at 550, 1.15e-4 C at 500), and the film's
 #: Newton tolerance on the pressure (p0) and the content H theta of every cell.
-BDF2_MIN_STEPS = 500
+BDF2_MIN_STEPS = 550
 BDF2_FILM_TOL = 1e-8
 RECORDABLE = ("force", "pressure", "film_content", "min_film", "mass", "outflow", "supply_flow", "side_leakage")
 FIELD_SERIES = ("pressure", "film_content")
@@ -292,7 +292,7 @@ class JournalOrbit:
             the journal position and velocity (units of C and C omega) and, per cell, the film content
             theta and the pressure p / p0 (see :meth:`absolute_tolerance`).
         steps_per_revolution : fixed steps of ``"rk4"`` (default 3000, the paper's); for ``"bdf2"`` the least
-            number of steps per revolution (its step cap; default ``BDF2_MIN_STEPS`` = 500), rtol refining further
+            number of steps per revolution (its step cap; default ``BDF2_MIN_STEPS`` = 550), rtol refining further
             where the rotor's local error asks for it.
         inner_tolerance : ``"rk4"`` only: the per-stage film criterion sum|d theta| / sum theta (paper: 1e-6).
         outputs_per_revolution : output (sampling) rate.

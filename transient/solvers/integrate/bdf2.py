@@ -72,8 +72,9 @@ class Bdf2Model(NamedTuple):
     """What a model hands the BDF2 stepper.
 
     ``newton(args, t, cj, b, y, yp, F, dz, data, lu, y_pred, z, pick, err_idx, err_w, state, counts) -> int``: the model's
-    own ``@njit(cache=True)`` function returning :func:`newton_step` called with its kernels (numba caches a
-    function whose kernels are globals, not one that receives them as arguments)::
+    own ``@njit`` function returning :func:`newton_step` called with its kernels (compiled once per process: numba
+    cannot cache a function that receives kernels as arguments, their keys never match in a new process and each
+    process would add an index entry until saving the index fails)::
 
         residual(t, y, yp, out, args)          out = F(t, y, y')
         jacobian(t, y, yp, cj, data, args)     CSC data (Problem.jac_pattern order) of (dF/dy + cj dF/dy') dy/dz
@@ -96,7 +97,7 @@ class Bdf2Model(NamedTuple):
     n_border: int
 
 
-@njit(cache=True)
+@njit  # not cacheable: takes the model's kernels as arguments (Bdf2Model)
 def _refactor(jacobian, to_state, args, t, cj, b, z, y, yp, data, lu, state, counts):
     """Jacobian ``dF/dz`` (with ``y' = cj y + b``) at the Newton variables ``z`` and its factorisation; False if
     singular."""
@@ -113,7 +114,7 @@ def _refactor(jacobian, to_state, args, t, cj, b, z, y, yp, data, lu, state, cou
     return True
 
 
-@njit(cache=True)
+@njit  # not cacheable: takes the model's kernels as arguments (Bdf2Model)
 def _update(residual, norm, to_state, args, lu, t, cj, b, z, y, yp, F, dz, scale, err_idx, err_w, counts):
     """Residual at ``z`` and the chord update ``dz``; returns (its size in tolerance units, switched components),
     size = inf if the residual is not finite."""
@@ -129,7 +130,7 @@ def _update(residual, norm, to_state, args, lu, t, cj, b, z, y, yp, F, dz, scale
     return _chord(norm, args, lu, z, F, dz, scale, err_idx, err_w)
 
 
-@njit(cache=True)
+@njit  # not cacheable: takes the model's kernels as arguments (Bdf2Model)
 def _chord(norm, args, lu, z, F, dz, scale, err_idx, err_w):
     """The update ``dz = scale M^-1 F`` on the current factorisation for the residual ``F`` at ``z``, its size and
     switched components (:func:`_update`)."""
@@ -144,7 +145,7 @@ def _chord(norm, args, lu, z, F, dz, scale, err_idx, err_w):
     return size, switched
 
 
-@njit(cache=True)
+@njit  # not cacheable: takes the model's kernels as arguments (Bdf2Model)
 def newton_step(residual, jacobian, norm, to_state, from_state, args, t, cj, b, y, yp, F, dz, data, lu, y_pred, z,
                 pick, err_idx, err_w, state, counts):
     """Solve one implicit step ``F(t, y, cj y + b) = 0`` (the result in ``y``, ``yp`` and, in the Newton variables,
