@@ -53,6 +53,8 @@ from transient.physics.lubricant import DOWSON_HIGGINSON_PARK, Lubricant
 from transient.solvers.newton import NewtonError
 
 PAPER_GRID = (94, 45)
+#: Couette flux of the Reynolds equation (:mod:`transient.models.roller.kernels`)
+SCHEMES = ("upwind2", "upwind1", "limited")
 #: above this mid-plane Moes load the coarsest level is reached by load continuation
 M_EASY_2D = 3.2
 
@@ -105,8 +107,8 @@ class RollerContact:
         self.domain = (check_range("domain[0] (inlet)", domain[0], "c", -50.0, -1.5),
                        check_range("domain[1] (outlet)", domain[1], "c", 1.2, 50.0),
                        check_range("domain[2] (half-length)", domain[2], "d", 0.5, 2.0, low_open=True))
-        if scheme not in ("upwind2", "upwind1"):
-            raise ValueError(f"scheme = {scheme!r} is not one of ('upwind2', 'upwind1')")
+        if scheme not in SCHEMES:
+            raise ValueError(f"scheme = {scheme!r} is not one of {SCHEMES}")
         self.scheme = scheme
         self.grid_spec = self._parse_grid(grid)
         self._options = dict(speed=speed, viscosity=viscosity, pressure_viscosity=pressure_viscosity, modulus=modulus,
@@ -282,7 +284,8 @@ class RollerContact:
         X, Y = grid.x * B, grid.y * B
         rigid = ro.gap(X[None, :], Y[:, None]) / (B * B)
         return EHLFilm(grid, rigid, ro.radius_ratio(Y), s["lam"], s["w_bar"], self.lubricant, s["p_scale"],
-                       elastic=elastic, elastic_factor=1.0 / (2.0 * math.pi), order2=(self.scheme == "upwind2"))
+                       elastic=elastic, elastic_factor=1.0 / (2.0 * math.pi), order2=(self.scheme == "upwind2"),
+                       limiter=(self.scheme == "limited"))
 
     def initial_guess(self, film: EHLFilm) -> np.ndarray:
         """The dry pressure on ``film``'s grid (plus a small inlet ramp) and ``h0`` giving the
