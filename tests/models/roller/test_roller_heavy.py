@@ -9,14 +9,15 @@ import pytest
 
 from transient.models.roller import RollerContact, TaperedRoller
 from transient.models.roller.contact import END_WIDTH
+from transient.models.roller.results import EHLConvergenceError
 from transient.params import park
 from transient.physics.line_formulas import moes_central
 
 
-def contact(factor, grid="paper", tilt=0.002):
+def contact(factor, grid="paper", tilt=0.002, scheme="auto"):
     kw = dict(park.DIMENSIONLESS, W=park.DIMENSIONLESS["W"] * factor)
     return RollerContact.from_dimensionless(**kw, roller=TaperedRoller(**dict(park.ROLLER, tilt_deg=tilt)),
-                                            speed=park.SPEED, grid=grid)
+                                            speed=park.SPEED, grid=grid, scheme=scheme)
 
 
 @pytest.mark.parametrize("factor", [1.0, 10.0])
@@ -90,3 +91,25 @@ def test_local_resolution_reads_each_row_as_a_hertzian_line_contact():
     assert r["spacing"][:2] == pytest.approx(dx / b0[:2], rel=1e-3)
     assert np.isnan(r["ratio"][2]) and r["M"][2] == 0.0  # an unloaded row
     assert r["worst_y"] == y[1] and r["worst_ratio"] == pytest.approx(r["spacing"][1] * r["M"][1] / 4.0, rel=1e-12)
+
+
+@pytest.mark.slow
+def test_five_times_the_paper_load_stops_at_the_loaded_ends_outlet_when_x_is_too_coarse_there():
+    c = contact(5.0, ("clustered", 40, 25))
+    with pytest.raises(EHLConvergenceError) as err:
+        c.steady()
+    s = err.value.result
+    # the path stops with one node closed at the small end's outlet, in a row beyond 4 b/M of its own load
+    assert s.h_min < 1e-2 * s.h_central and s.y_of_h_min < -c.roller.profile_start and s.x_of_h_min > 0
+    assert "4 b/M" in str(err.value) and s.solver_info["local_resolution"]["worst_ratio"] > 1.0
+    assert s.solver_info["local_resolution"]["worst_y"] < -c.roller.profile_start
+
+
+@pytest.mark.slow
+def test_five_times_the_paper_load_converges_on_47_by_45():
+    c = contact(5.0, ("clustered", 47, 45))
+    assert c.flux_scheme == "limited"
+    s = c.steady()
+    _checks(c, s)
+    assert s.solver_info["continuation"]["loads"][-1] == pytest.approx(c.load)
+    assert s.p_max == pytest.approx(c.dry().p_max, rel=0.1)
