@@ -62,7 +62,7 @@ class EHLFilm:
     """
 
     def __init__(self, grid: TensorGrid, rigid, rs, lam: float, w_bar: float, lubricant: Lubricant, p_scale: float,
-                 elastic: str = "dense", elastic_factor: float = 1.0, order2: bool = True, kernel=None,
+                 elastic: str = "dense", elastic_factor: float = 1.0, order2: bool = True, kernel=None, *,
                  limiter: bool = False):
         if elastic not in ELASTIC:
             raise ValueError(f"elastic = {elastic!r} is not one of {ELASTIC}")
