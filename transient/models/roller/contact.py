@@ -25,8 +25,9 @@ uniform, elasticity by DC-FFT and Newton-Krylov (:mod:`transient.models.roller.k
 load (mid-plane M > 3.2) the clustered x axes put 75 % of their nodes on the contact and 10 % on its outlet
 (``X_HEAVY``), and the default ``scheme="auto"`` limits the Couette flux (van Albada): the loaded end of the
 tilted roller carries ~2.5x the mid-plane's load per length, and where a row's x spacing exceeds 4 b/M of its
-own load the unlimited flux pinches the outlet constriction onto one node and closes it
-(:meth:`RollerContact.local_resolution`; docs/ehl.md, section 8).
+own load the outlet constriction collapses onto one node and closes (:meth:`RollerContact.local_resolution`;
+docs/ehl.md, section 8). This moves 5x the paper's load on 47 x 45 from failing to converging; on the paper
+grid the 10x path still stops near 7x.
 
 Steady solve: nested iteration from the dry pressure on coarse grids to the requested one (above the paper
 case's load: load continuation on the coarsest level whose x spacing resolves the load); Newton on the
