@@ -11,7 +11,8 @@
    solve of the same problem: the line contact (401 nodes) and a coarse 2-D grid.
 4. Service loads: the paper's case tilted +0.002 deg at 1x, 2x, 10x and 50x its load (W = 2e-5 ... 1e-3)
    on the paper grid, side by side: converged or not (the named failure's message), wall time, Newton
-   iterations, continuation steps, h_c, h_min and p_max against the dry contact's.
+   iterations, continuation steps, h_c, h_min and p_max against the dry contact's, the Couette flux used
+   and the worst row's x spacing against 4 b/M of its own load (``RollerContact.local_resolution``).
 
 ``main(out, quick)`` writes ``ehl.json`` into ``out`` and returns the markdown section.
 """
@@ -24,6 +25,8 @@ import os
 import platform
 import time
 from pathlib import Path
+
+import numpy as np
 
 from transient.models.roller import LineContact, RollerContact, TaperedRoller
 from transient.models.roller.ehl_problem import solve_steady
@@ -105,8 +108,8 @@ def _time_fine_level(grid) -> float:
 
 
 def service_loads(quick: bool) -> list:
-    """The tilted paper case at multiples of its load on the paper grid (``quick``: 1x and 2x only).
-    10x and 50x do not converge today (docs/ehl.md, section 8): the table gives the named failure."""
+    """The tilted paper case at multiples of its load on the paper grid (``quick``: 1x and 2x only);
+    a load that does not converge gives the named failure's message (docs/ehl.md, section 8)."""
     out = []
     grid = "paper"
     for factor in (1.0, 2.0) if quick else (1.0, 2.0, 10.0, 50.0):
@@ -121,7 +124,8 @@ def service_loads(quick: bool) -> list:
                         success=bool(s.success), wall_s=time.perf_counter() - t0, iterations=int(s.iterations),
                         steps=cont.get("steps", 0), rejected=cont.get("rejected", 0), message=s.message,
                         h_central=s.h_central, h_min=s.h_min, y_of_h_min=s.y_of_h_min / c.roller.mean_radius,
-                        p_max=s.p_max, p_dry=dry.p_max, load_error=s.load_error))
+                        p_max=s.p_max, p_dry=dry.p_max, load_error=s.load_error, scheme=c.flux_scheme,
+                        worst_ratio=c.local_resolution(s)["worst_ratio"] if np.any(s.pressure > 0) else float("nan")))
     return out
 
 
@@ -219,13 +223,14 @@ def main(out, quick: bool = False) -> str:
     base = service[0]["wall_s"]
     lines += ["", f"### Service loads: the paper's case tilted +0.002 deg at multiples of its load "
               f"({service[0]['grid'][0]} x {service[0]['grid'][1]} nodes)", "",
-              "| load | W | mid-plane M | converged | wall [s] | x paper case | Newton its | continuation steps "
-              "(rejected) | h_c [nm] | h_min [nm] (Y/R_m) | p_max / dry p_max |", "|---|---|---|---|---|---|---|---|---|---|---|"]
+              "| load | W | mid-plane M | flux | converged | wall [s] | x paper case | Newton its | continuation steps "
+              "(rejected) | h_c [nm] | h_min [nm] (Y/R_m) | p_max / dry p_max | worst row: spacing / (4 b/M) |",
+              "|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in service:
-        lines.append(f"| {r['factor']:g}x | {r['W']:.0e} | {r['M']:.1f} | {'yes' if r['success'] else 'NO'} | "
+        lines.append(f"| {r['factor']:g}x | {r['W']:.0e} | {r['M']:.1f} | {r['scheme']} | {'yes' if r['success'] else 'NO'} | "
                      f"{r['wall_s']:.1f} | {r['wall_s'] / base:.1f} | {r['iterations']} | {r['steps']} "
                      f"({r['rejected']}) | {r['h_central'] * 1e9:.1f} | {r['h_min'] * 1e9:.2f} "
-                     f"({r['y_of_h_min']:+.4f}) | {r['p_max'] / r['p_dry']:.3f} |")
+                     f"({r['y_of_h_min']:+.4f}) | {r['p_max'] / r['p_dry']:.3f} | {r['worst_ratio']:.2f} |")
     for r in service:
         if not r["success"]:
             lines.append(f"\n{r['factor']:g}x (film numbers of the last converged load): {r['message']}")

@@ -21,7 +21,13 @@ gives the central film within 0.7 % of its grid-converged value, the uniform 94-
 Y at each end 25 % of the nodes on the profiled part of the footprint and 15 % on the footprint's end
 (where the film's side lobes close under load: ``END_WIDTH``); nodes on ``X = 0`` and ``Y = 0, +-Y_d``;
 elasticity by the dense influence matrix. ``("clustered", nx, ny)``: the same law with other node counts. ``(nx, ny)``:
-uniform, elasticity by DC-FFT and Newton-Krylov (:mod:`transient.models.roller.krylov`).
+uniform, elasticity by DC-FFT and Newton-Krylov (:mod:`transient.models.roller.krylov`). Above the paper case's
+load (mid-plane M > 3.2) the clustered x axes put 75 % of their nodes on the contact and 10 % on its outlet
+(``X_HEAVY``), and the default ``scheme="auto"`` limits the Couette flux (van Albada): the loaded end of the
+tilted roller carries ~2.5x the mid-plane's load per length, and where a row's x spacing exceeds 4 b/M of its
+own load the outlet constriction collapses onto one node and closes (:meth:`RollerContact.local_resolution`;
+docs/ehl.md, section 8). This moves 5x the paper's load on 47 x 45 from failing to converging; on the paper
+grid the 10x path still stops near 7x.
 
 Steady solve: nested iteration from the dry pressure on coarse grids to the requested one (above the paper
 case's load: load continuation on the coarsest level whose x spacing resolves the load); Newton on the
@@ -53,6 +59,8 @@ from transient.physics.lubricant import DOWSON_HIGGINSON_PARK, Lubricant
 from transient.solvers.newton import NewtonError
 
 PAPER_GRID = (94, 45)
+#: Couette flux of the Reynolds equation (:mod:`transient.models.roller.kernels`)
+SCHEMES = ("auto", "upwind2", "upwind1", "limited")
 #: above this mid-plane Moes load the coarsest level is reached by load continuation
 M_EASY_2D = 3.2
 
@@ -68,6 +76,15 @@ def _two_level(coarse, film, u, shift):
 #: nodes each. The film's end constriction (the side lobes of the horseshoe) lies within ~0.3 c of the
 #: footprint's end and narrows as the load grows (docs/ehl.md, section 6)
 END_WIDTH, END_FRACTION = 0.15, 0.15
+#: x clusters (centre [c], sech^2 width [c], share of the nodes) of the clustered grids: the paper's load
+#: (inlet side of the contact) and above it (mid-plane M > M_EASY_2D), where the contact and its outlet need
+#: the nodes: the loaded end of a tilted roller carries ~2.5x the mid-plane's load per length, and its outlet
+#: constriction collapses onto one node when the x spacing exceeds 4 b/M of that row (local_resolution)
+X_PAPER = [(-0.5, 1.8, 0.6)]
+X_HEAVY = [(-0.2, 1.3, 0.75), (1.1, 0.25, 0.1)]
+#: Newton iterations allowed per continuation step (accepted steps took 7-19 on 40 x 25 and 47 x 45 and 26-29 on
+#: the paper grid; a step that needs more is halved rather than iterated to the 60 of a cold start)
+STEP_ITERATIONS = 40
 #: above this many unknowns the dense path solves its linear systems by GMRES + a reused LU
 KRYLOV_ABOVE = 600
 #: first level (and two-level coarse grid) of the uniform-grid solves
@@ -87,12 +104,14 @@ class RollerContact:
     the mid-plane), ``viscosity`` eta0 [Pa s], ``pressure_viscosity`` alpha [1/Pa], ``modulus`` E' [Pa],
     ``density``, ``viscosity_law``, ``dh_constants`` as in :class:`~transient.physics.lubricant.Lubricant`;
     ``grid``: ``"paper"``, ``("clustered", nx, ny)`` or ``(nx, ny)`` (uniform); ``domain``: (inlet,
-    outlet) in units of c and the half-length of the domain in units of d.
+    outlet) in units of c and the half-length of the domain in units of d; ``scheme``: the Couette flux,
+    ``"upwind2"``, ``"upwind1"``, ``"limited"`` (second order, van Albada's limiter) or ``"auto"``
+    (:attr:`flux_scheme`).
     """
 
     def __init__(self, roller: TaperedRoller, load, speed, viscosity, pressure_viscosity, modulus,
                  density: str = "dowson-higginson", viscosity_law: str = "barus", grid="paper",
-                 domain=(-5.0, 2.5, 0.55), scheme: str = "upwind2", dh_constants=DOWSON_HIGGINSON_PARK):
+                 domain=(-5.0, 2.5, 0.55), scheme: str = "auto", dh_constants=DOWSON_HIGGINSON_PARK):
         if not isinstance(roller, TaperedRoller):
             raise TypeError(f"roller must be a TaperedRoller, got {type(roller).__name__}")
         self.roller = roller
@@ -105,8 +124,8 @@ class RollerContact:
         self.domain = (check_range("domain[0] (inlet)", domain[0], "c", -50.0, -1.5),
                        check_range("domain[1] (outlet)", domain[1], "c", 1.2, 50.0),
                        check_range("domain[2] (half-length)", domain[2], "d", 0.5, 2.0, low_open=True))
-        if scheme not in ("upwind2", "upwind1"):
-            raise ValueError(f"scheme = {scheme!r} is not one of ('upwind2', 'upwind1')")
+        if scheme not in SCHEMES:
+            raise ValueError(f"scheme = {scheme!r} is not one of {SCHEMES}")
         self.scheme = scheme
         self.grid_spec = self._parse_grid(grid)
         self._options = dict(speed=speed, viscosity=viscosity, pressure_viscosity=pressure_viscosity, modulus=modulus,
@@ -115,8 +134,25 @@ class RollerContact:
 
     def with_load(self, load: float) -> "RollerContact":
         """The same roller, lubricant and grid specification at another total load [N] (its own dry
-        footprint and scaled grid): the steps of the load continuation."""
-        return RollerContact(self.roller, load, **self._options)
+        footprint and scaled grid): the steps of the load continuation, which keep this contact's grid
+        law and Couette flux (:attr:`heavy`)."""
+        c = RollerContact(self.roller, load, **self._options)
+        c.__dict__["heavy"] = self.heavy  # the cached property, fixed to the path's target
+        return c
+
+    @cached_property
+    def heavy(self) -> bool:
+        """Above the paper case's mid-plane load (M > M_EASY_2D): the clustered grids put their x nodes on the
+        contact and its outlet (``X_HEAVY``) and ``scheme="auto"`` limits the Couette flux."""
+        return self.mid_plane_M > M_EASY_2D
+
+    @property
+    def flux_scheme(self) -> str:
+        """The Couette flux used: ``scheme``, with ``"auto"`` read as ``"upwind2"`` up to the paper case's
+        load and ``"limited"`` above it (:attr:`heavy`)."""
+        if self.scheme == "auto":
+            return "limited" if self.heavy else "upwind2"
+        return self.scheme
 
     @classmethod
     def from_dimensionless(cls, U: float, G: float, W: float, modulus: float, roller: TaperedRoller,
@@ -223,7 +259,8 @@ class RollerContact:
         if kind == "uniform":
             return TensorGrid(np.linspace(x0, x1, nx), np.linspace(y0, y1, ny))
         s = self.scales
-        x = clustered_axis(x0, x1, nx, _weights(x1 - x0, [(-0.5, 1.8, 0.6)]), snap=[0.0])
+        x = clustered_axis(x0, x1, nx, _weights(x1 - x0, X_HEAVY if self.heavy else X_PAPER),
+                           snap=[0.0])
         yd = self.roller.y_d / s["B"]
         cl = []
         for start, end in ((-yd, s["y_lo"]), (yd, s["y_hi"])):
@@ -282,7 +319,8 @@ class RollerContact:
         X, Y = grid.x * B, grid.y * B
         rigid = ro.gap(X[None, :], Y[:, None]) / (B * B)
         return EHLFilm(grid, rigid, ro.radius_ratio(Y), s["lam"], s["w_bar"], self.lubricant, s["p_scale"],
-                       elastic=elastic, elastic_factor=1.0 / (2.0 * math.pi), order2=(self.scheme == "upwind2"))
+                       elastic=elastic, elastic_factor=1.0 / (2.0 * math.pi), order2=(self.flux_scheme == "upwind2"),
+                       limiter=(self.flux_scheme == "limited"))
 
     def initial_guess(self, film: EHLFilm) -> np.ndarray:
         """The dry pressure on ``film``'s grid (plus a small inlet ramp) and ``h0`` giving the
@@ -339,7 +377,7 @@ class RollerContact:
                 path = self.continuation(spec, tol=math.sqrt(tol) if not last else tol, max_iter=max_iter,
                                          penalty=penalty)
                 info["continuation"] = dict(message=path.message, steps=path.steps, rejected=path.rejected,
-                                            loads=[p[0] for p in path.path])
+                                            loads=[p[0] for p in path.path], attempts=path.attempts)
                 iters += path.iterations
                 jac = None
                 nr = SimpleNamespace(x=path.state, iterations=0, residual_norms=path.residual_norms)
@@ -380,6 +418,14 @@ class RollerContact:
         if ok:
             msg = f"converged: {iters} Newton iterations over {len(specs)} grid level(s)"
         res = owner.result(film, u, ok, msg, iters, nr.residual_norms, time.perf_counter() - t0, info)
+        if not ok and np.any(res.pressure > 0.0):
+            r = owner.local_resolution(res)
+            info["local_resolution"] = dict(worst_y=r["worst_y"], worst_ratio=r["worst_ratio"])
+            if r["worst_ratio"] > 1.0:
+                k = int(np.nanargmax(r["ratio"]))
+                msg += (f"; the row at y = {1e3 * r['worst_y']:.3f} mm carries a local M = {r['M'][k]:.3g}: its x spacing "
+                        f"is {r['worst_ratio']:.2f} times 4 b/M there (under-resolved, refine x)")
+                res = owner.result(film, u, ok, msg, iters, nr.residual_norms, time.perf_counter() - t0, info)
         if not ok and raise_on_failure:
             raise EHLConvergenceError(msg, res)
         return res
@@ -391,6 +437,30 @@ class RollerContact:
         x = grid.x
         near = (x[1:] > -1.5) & (x[:-1] < 1.5)
         return float(np.max(np.diff(x)[near]))
+
+    def local_resolution(self, steady: RollerSteady) -> dict:
+        """The x resolution of ``steady``'s grid row by row against the load each row carries.
+
+        Every y row is read as a line contact carrying its own load per length ``w'(y) = int p dx`` on the
+        local radius ``R(y) = R_m Rs(y)`` (Moes' ``M(y) = w'/(E' R) (2 U_m)^-1/2``, Hertz half-width
+        ``b(y) = (8 w' R/(pi E'))^1/2``); the line contact has discrete solutions while the x spacing within
+        1.5 b(y) of the centre line is <= 4 b(y)/M(y) (docs/ehl.md, section 7). Returns the arrays ``y`` [m],
+        ``M``, ``spacing`` (in units of b(y)) and ``ratio = spacing M/4`` (> 1: under-resolved; nan where
+        the row carries no load), and the worst row's ``worst_y`` [m] and ``worst_ratio``."""
+        x, y, p = steady.x, steady.y, steady.pressure
+        w = np.trapezoid(p, x, axis=1)
+        R = self.roller.mean_radius * self.roller.radius_ratio(y / self.roller.mean_radius)
+        loaded = w > 0.0
+        M = np.where(loaded, w / (self.modulus * R) / math.sqrt(2.0 * self.U), 0.0)
+        b = np.sqrt(8.0 * np.maximum(w, 0.0) * R / (math.pi * self.modulus))
+        dx, mid = np.diff(x), 0.5 * (x[1:] + x[:-1])
+        spacing = np.full(y.size, np.nan)
+        for j in np.flatnonzero(loaded):
+            near = np.abs(mid) < 1.5 * b[j] + 0.5 * dx
+            spacing[j] = dx[near].max() / b[j]
+        ratio = spacing * M / 4.0
+        k = int(np.nanargmax(ratio))
+        return dict(y=y, M=M, spacing=spacing, ratio=ratio, worst_y=float(y[k]), worst_ratio=float(ratio[k]))
 
     @property
     def mid_plane_M(self) -> float:
@@ -438,7 +508,8 @@ class RollerContact:
         def solve(s, u0):
             f = at(s)[1]
             jac = NewtonKrylov(f, _dense_lu) if f.n > KRYLOV_ABOVE else None
-            return solve_steady(f, u0, tol=tol, max_iter=max_iter, jacobian=jac, name="RollerContact continuation")
+            return solve_steady(f, u0, tol=tol, max_iter=min(max_iter, STEP_ITERATIONS), jacobian=jac,
+                                name="RollerContact continuation")
 
         c0, f0 = at(0.0)
         try:

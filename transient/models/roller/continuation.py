@@ -34,6 +34,8 @@ class PathResult:
     rejected: int = 0
     residual_norms: list = field(default_factory=list)
     path: list = field(default_factory=list)
+    #: every attempted step: (s, accepted, Newton iterations)
+    attempts: list = field(default_factory=list)
     #: the discrete problem at ``s`` and the contact it belongs to (set by the caller)
     film: object = None
     contact: object = None
@@ -59,12 +61,14 @@ def follow(solve, predict, central_film, u0, *, first_step: float = 0.25, max_ch
                 nr = solve(s_new, start)
             hc_new = central_film(s_new, nr.x)
             ok = bool(np.isfinite(hc_new) and hc_new > 0 and abs(math.log(hc_new / hc)) <= max_change)
-            out.iterations += nr.iterations
+            its = nr.iterations
             out.residual_norms = list(nr.residual_norms)
         except NewtonError as exc:
             ok = False
-            out.iterations += exc.result.iterations
+            its = exc.result.iterations
             out.residual_norms = list(exc.result.residual_norms)
+        out.iterations += its
+        out.attempts.append((s_new, ok, int(its)))
         if ok:
             u, s, hc = nr.x, s_new, hc_new
             out.steps += 1

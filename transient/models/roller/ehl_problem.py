@@ -56,11 +56,14 @@ class EHLFilm:
     ``rigid``: the rigid gap at every full node (flat, full grid); ``rs``: the local radius ratio
     (entrainment speed and curvature) per full y row; ``lam``: the wedge coefficient; ``w_bar``: the
     scaled load; ``p_scale`` [Pa]: the pressure unit (for the lubricant laws); ``elastic``: ``"dense"``
-    (influence matrix), ``"fft"`` (uniform grids) or ``"rigid"``; ``elastic_factor``: ``k_el``.
+    (influence matrix), ``"fft"`` (uniform grids) or ``"rigid"``; ``elastic_factor``: ``k_el``;
+    ``order2``: second-order upwind Couette flux (else first order); ``limiter``: second order with van
+    Albada's limiter (:mod:`transient.models.roller.kernels`).
     """
 
     def __init__(self, grid: TensorGrid, rigid, rs, lam: float, w_bar: float, lubricant: Lubricant, p_scale: float,
-                 elastic: str = "dense", elastic_factor: float = 1.0, order2: bool = True, kernel=None):
+                 elastic: str = "dense", elastic_factor: float = 1.0, order2: bool = True, kernel=None, *,
+                 limiter: bool = False):
         if elastic not in ELASTIC:
             raise ValueError(f"elastic = {elastic!r} is not one of {ELASTIC}")
         if elastic == "fft" and not (grid.two_d and grid.uniform):
@@ -80,6 +83,8 @@ class EHLFilm:
         self.elastic = elastic
         self.k_el = float(elastic_factor)
         self.order2 = bool(order2)
+        #: Couette flux of the kernel: 0 first-order upwind, 1 second-order, 2 second-order with van Albada's limiter
+        self.scheme_code = 2 if limiter else int(self.order2)
         self.area = grid.area
         self.area_w = self.area / self.w_bar
         self.colp, self.colh = slot_maps(grid)
@@ -156,7 +161,7 @@ class EHLFilm:
         """Reynolds residual ``F`` (per unit area) at the interior nodes; ``jac``: also ``Sp``, ``Sh``."""
         v, al, ln0, d, c1, c2 = self.rheo_args
         reynolds_kernel(self.full_pressure(p), h.reshape(self.grid.shape_full), self.grid.x, self.y_nodes, self.rs,
-                        self.lam, self.grid.two_d, self.order2, v, al, ln0, d, c1, c2, self.p_scale, jac,
+                        self.lam, self.grid.two_d, self.scheme_code, v, al, ln0, d, c1, c2, self.p_scale, jac,
                         self.F, self.Sp, self.Sh, self.props)
         return self.F
 

@@ -11,7 +11,13 @@ half-width, pressure ``p`` in units of ``p_h``, film ``h`` in units of ``b^2/R``
 
     e = rho h^3 / eta (face value: arithmetic mean of the two nodes),  q = rho h at the face, upwind
     (U > 0): q_{I+1/2} = m_I + (x_{I+1} - x_I)/(2 (x_I - x_{I-1})) (m_I - m_{I-1}),  m = rho h
-    (second-order linear upwind extrapolation; ``order2=False``: first-order q = m_I).
+    (second-order linear upwind extrapolation, ``scheme = 1``; ``scheme = 0``: first-order q = m_I;
+    ``scheme = 2``: the extrapolation's slope limited by van Albada's limiter (van Albada, van Leer &
+    Roberts, *Astron. Astrophys.* 108, 1982), ``q_{I+1/2} = m_I + (x_{I+1} - x_I)/2 s(a, b)`` with
+    ``b = (m_I - m_{I-1})/(x_I - x_{I-1})`` the upwind and ``a = (m_{I+1} - m_I)/(x_{I+1} - x_I)`` the
+    downwind slope, ``s = a b (a + b)/(a^2 + b^2)`` where ``a b > 0``, else 0: second order where ``m``
+    is smooth, first order at its extrema -- the outlet constriction, where the unlimited extrapolation
+    leaves a coarse grid without a discrete solution of positive film under heavy load).
 
 which is eq. (1) of the paper, ``div(rho H^3/eta grad P) = 12 U d(rho H)/dX``, in these units
 (``lam = 12 eta0 u_m R^2 / (b^3 p_h)``). Boundary nodes carry ``p = 0``.
@@ -64,7 +70,19 @@ def node_properties(p_full, h_full, vcode, alpha, ln_eta0, dcode, c1, c2, p_scal
 
 
 @njit(cache=True, error_model="numpy")
-def reynolds_kernel(p_full, h_full, x, y, rs, lam, two_d, order2, vcode, alpha, ln_eta0, dcode, c1, c2, p_scale,
+def van_albada(a, b):
+    """Limited slope ``s(a, b)`` (module docstring) and its derivatives ``ds/da``, ``ds/db``."""
+    if a * b <= 0.0:
+        return 0.0, 0.0, 0.0
+    num = a * b * (a + b)
+    den = a * a + b * b
+    s = num / den
+    return s, ((2.0 * a * b + b * b) * den - 2.0 * a * num) / (den * den), \
+        ((a * a + 2.0 * a * b) * den - 2.0 * b * num) / (den * den)
+
+
+@njit(cache=True, error_model="numpy")
+def reynolds_kernel(p_full, h_full, x, y, rs, lam, two_d, scheme, vcode, alpha, ln_eta0, dcode, c1, c2, p_scale,
                     jac, F, Sp, Sh, props):
     """Residual ``F`` (interior nodes, flat) and, if ``jac``, the local Jacobian ``Sp``, ``Sh`` (n, 6)."""
     nyf, nxf = p_full.shape
@@ -97,14 +115,24 @@ def reynolds_kernel(p_full, h_full, x, y, rs, lam, two_d, order2, vcode, alpha, 
             gR = (pf[e] - pf[c]) / dxR
             gL = (pf[c] - pf[w]) / dxL
             fx = dy * (eR * gR - eL * gL)
+            order2 = scheme == 1
             fR = 0.5 * dxR / dxL if order2 else 0.0
             fL = 0.0
             qL = m[w]
-            if I >= 2:
-                if order2:
-                    fL = 0.5 * dxL / (x[I - 1] - x[I - 2])
-                qL = m[w] + fL * (m[w] - m[c - 2])
-            qR = m[c] + fR * (m[c] - m[w])
+            if scheme == 2:
+                sR, sRa, sRb = van_albada((m[e] - m[c]) / dxR, (m[c] - m[w]) / dxL)
+                qR = m[c] + 0.5 * dxR * sR
+                sL, sLa, sLb, dxLL = 0.0, 0.0, 0.0, 1.0
+                if I >= 2:
+                    dxLL = x[I - 1] - x[I - 2]
+                    sL, sLa, sLb = van_albada((m[c] - m[w]) / dxL, (m[w] - m[c - 2]) / dxLL)
+                    qL = m[w] + 0.5 * dxL * sL
+            else:
+                if I >= 2:
+                    if order2:
+                        fL = 0.5 * dxL / (x[I - 1] - x[I - 2])
+                    qL = m[w] + fL * (m[w] - m[c - 2])
+                qR = m[c] + fR * (m[c] - m[w])
             fc = -coef * (qR - qL)
             fy = 0.0
             if two_d:
@@ -132,11 +160,20 @@ def reynolds_kernel(p_full, h_full, x, y, rs, lam, two_d, order2, vcode, alpha, 
             dP[E] += dy * eR / dxR
             dP[C] -= dy * (eR / dxR + eL / dxL)
             dP[W] += dy * eL / dxL
-            dM[C] -= coef * (1.0 + fR)
-            dM[W] += coef * (1.0 + fR + fL)
-            if I >= 2:
-                nb[WW] = c - 2
-                dM[WW] -= coef * fL
+            if scheme == 2:
+                # q_R(m_W, m_C, m_E) and q_L(m_WW, m_W, m_C) through the limited slopes
+                dM[E] -= coef * 0.5 * sRa
+                dM[C] -= coef * (1.0 - 0.5 * sRa + 0.5 * dxR / dxL * sRb - 0.5 * sLa)
+                dM[W] -= coef * (-0.5 * dxR / dxL * sRb - 1.0 + 0.5 * sLa - 0.5 * dxL / dxLL * sLb)
+                if I >= 2:
+                    nb[WW] = c - 2
+                    dM[WW] -= coef * 0.5 * dxL / dxLL * sLb
+            else:
+                dM[C] -= coef * (1.0 + fR)
+                dM[W] += coef * (1.0 + fR + fL)
+                if I >= 2:
+                    nb[WW] = c - 2
+                    dM[WW] -= coef * fL
             if two_d:
                 nb[S], nb[N] = c - nxf, c + nxf
                 dE[N] += 0.5 * dx * gN
