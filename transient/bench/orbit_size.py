@@ -250,7 +250,7 @@ def markdown(res) -> str:
     short = [f"{k} = {c[k]} (the benchmark's {FULL[k]})" for k in ("whip_timed", "small_revs")
              if not c["quick"] and c[k] != FULL[k]]
     if short:
-        L.append("**Shortened long runs** (the machine was shared: 2 cores, load 11-14): " + ", ".join(short) + ".")
+        L.append("**Shortened long runs** (a shared 2-core machine; the per-revolution figures above are unaffected): " + ", ".join(short) + ".")
     return "\n".join(L)
 
 
