@@ -224,3 +224,14 @@ def test_bdf2_without_a_model_is_refused():
     p = Problem(y0=np.ones(2), residual=lambda t, y, yp, out: None, name="two states")
     with pytest.raises(ValueError, match="Bdf2Model"):
         solve(p, [0.0, 1.0], method="bdf2")
+
+
+def test_switch_refresh_weighs_the_iterations_it_saves():
+    """A refresh for switched cells: always for many cells or at no cost; else only when the chord iterations it
+    saves (``log(size max(0.3, r / (1 - r))) / -log r`` left, one after a refresh) exceed its cost."""
+    pays = bdf2._switch_pays
+    assert pays(2.0, 0.05, 1, 0.0)  # no cost given: every switch refreshes
+    assert pays(2.0, 0.05, bdf2.SWITCH_ALWAYS + 1, 6.0)  # many switched cells: always
+    assert not pays(2.0, 0.05, 1, 6.0)  # fast chord: converges in about one iteration
+    # r = 0.5, size 1e3: log(1e3) / log(2) = 9.97 iterations left, 8.97 saved
+    assert pays(1e3, 0.5, 1, 8.9) and not pays(1e3, 0.5, 1, 9.0)

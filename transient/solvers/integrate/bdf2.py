@@ -18,10 +18,11 @@ whichever was clearly closer (by ``PICK_RATIO``) to the converged ``z`` in the p
 pressure extrapolated where it stays in the full film, its content where it cavitates or crosses). Chord iterations
 on the last factorisation (the model's Jacobian ``(dF/dy + cj dF/dy') dy/dz``, factored by
 :class:`~transient.solvers.bandlu.BorderedBandLU`), the update scaled by ``2 / (1 + cj / cj_J)`` when cj changed
-since the factorisation (as SUNDIALS IDA does). A fresh Jacobian at the current iterate when the model reports
-components that switched regime since the last one or the contraction rate exceeds 0.3 (at most 10 per solve; the
-residual at that iterate is solved again, not re-evaluated), and before a step whose cj moved by more than 30 % or
-whose last Newton contracted slowly; an update larger than the previous one halves the previous update instead
+since the factorisation (as SUNDIALS IDA does). A fresh Jacobian at the current iterate when the contraction
+rate exceeds 0.3, or when the model reports components that switched regime since the last one and the refresh
+pays (more than 3 of them, or the chord iterations it saves at the chord's contraction rate exceed its cost in
+iterations, taken proportional to the band width); at most 10 per solve, the residual at that iterate solved
+again, not re-evaluated; and before a step whose cj moved by more than 30 % or whose last Newton contracted slowly; an update larger than the previous one halves the previous update instead
 (damping down to 1/16). Convergence is judged on the update in the model's own units: the error components
 against ``0.1 (rtol |y| + atol)``, the others by the model's ``norm`` kernel (e.g. the film's pressure and content
 updates): an update within tolerance, or one whose remaining error the chord's contraction rate ``r`` bounds,
@@ -53,6 +54,10 @@ NEWTON_FACTOR = 0.1  # Newton tolerance on the error components, as a fraction o
 MAX_ITER = 25
 MAX_REFRESH = 10  # Jacobian re-evaluations inside one Newton solve
 RATE_REFRESH = 0.3  # a step after a Newton that contracted slower than this starts with a fresh Jacobian
+SWITCH_ALWAYS = 3  # more switched components than this always refresh the Jacobian
+#: a refresh (Jacobian + band factorisation) costs this many chord iterations (residual + band solve) per band width
+#: ``kl + ku + 1`` (measured on the journal's content film, 151 x 21: 1.38 ms against 0.215 ms at width 43)
+REFRESH_PER_BAND = 0.15
 CJ_REFRESH = 0.3  # ... and so does a step whose cj moved by more than this fraction since the factorisation
 RATE_FLOOR = 0.3  # an update is accepted if max(rate / (1 - rate), RATE_FLOOR) times its size is within tolerance
 PICK_RATIO = 0.5  # a component starts from the extrapolation in z if that was this much closer than the one in y
@@ -64,8 +69,9 @@ MIN_RATIO, MAX_RATIO, SAFETY = 0.2, 2.0, 0.9
 RESIDUALS, J_EVALS, ITERATIONS, J_SWITCH, J_RATE, J_START, DAMPED, SOLVES, SWITCHED = range(9)
 N_COUNTS = 9
 #: slots of the Newton's ``state``: cj of the factorisation (0: none), refresh flag, last contraction rate, iterations
-#: of the last solve, the iteration start z given (1) or from the predictor y_pred (0)
-CJ_J, REFRESH, RATE, ITERS, Z_GIVEN = range(5)
+#: of the last solve, the iteration start z given (1) or from the predictor y_pred (0), a refresh's cost in chord
+#: iterations (0: every switch refreshes)
+CJ_J, REFRESH, RATE, ITERS, Z_GIVEN, REFRESH_COST = range(6)
 
 
 class Bdf2Model(NamedTuple):
@@ -145,6 +151,19 @@ def _chord(norm, args, lu, z, F, dz, scale, err_idx, err_w):
     return size, switched
 
 
+@njit(cache=True)
+def _switch_pays(size, rate, switched, cost):
+    """Whether a Jacobian refresh for ``switched`` components pays: always for more than ``SWITCH_ALWAYS`` of them,
+    else when the chord iterations still needed at contraction ``rate`` from an update of ``size`` (tolerance
+    units), ``log(size max(RATE_FLOOR, r / (1 - r))) / -log r``, exceed the one a fresh Jacobian needs by more than
+    ``cost`` (a refresh in chord iterations)."""
+    if switched > SWITCH_ALWAYS or cost <= 0.0:
+        return True
+    r = min(max(rate, 0.01), 0.9)
+    left = math.log(size * max(RATE_FLOOR, r / (1.0 - r))) / -math.log(r)
+    return left - 1.0 > cost
+
+
 @njit  # not cacheable: takes the model's kernels as arguments (Bdf2Model)
 def newton_step(residual, jacobian, norm, to_state, from_state, args, t, cj, b, y, yp, F, dz, data, lu, y_pred, z,
                 pick, err_idx, err_w, state, counts):
@@ -154,8 +173,9 @@ def newton_step(residual, jacobian, norm, to_state, from_state, args, t, cj, b, 
     z; on convergence ``pick[i]`` says whether the extrapolation in z was closer (by ``PICK_RATIO``).
 
     Chord iterations on the current factorisation. The Jacobian is re-evaluated at the current iterate (and
-    factored) when the contraction rate exceeds ``RATE_REFRESH`` or the model reports components that switched
-    regime since the Jacobian (cells crossing the cavitation switch), at most ``MAX_REFRESH`` times; the residual
+    factored) when the contraction rate exceeds ``RATE_REFRESH``, or the model reports components that switched
+    regime since the Jacobian (cells crossing the cavitation switch) and :func:`_switch_pays` (the refresh's cost
+    ``state[REFRESH_COST]`` against the chord iterations it saves), at most ``MAX_REFRESH`` times; the residual
     at that iterate is solved again on the new factorisation (not re-evaluated). An update larger than the previous
     one (no contraction) halves the previous update instead (damping, down to 1/16). Converged when the update
     is within tolerance, or (Hairer & Wanner II, IV.8; SUNDIALS) when the contraction rate ``r`` of the chord
@@ -194,8 +214,10 @@ def newton_step(residual, jacobian, norm, to_state, from_state, args, t, cj, b, 
             for i in range(n):
                 z[i] = z_base[i] - lam * d_base[i]
             continue
+        slow = it > 0 and size > RATE_REFRESH * prev
         if (1.0 < size < np.inf and refreshed < MAX_REFRESH
-                and (switched > 0 or (it > 0 and size > RATE_REFRESH * prev))):
+                and (slow or (switched > 0 and _switch_pays(size, size / prev if it > 0 else state[RATE], switched,
+                                                            state[REFRESH_COST])))):
             refreshed += 1
             fresh = it
             counts[J_SWITCH if switched > 0 else J_RATE] += 1
@@ -263,7 +285,8 @@ def integrate_bdf2(problem, t_eval, out, guard, rtol, atol, max_step, first_step
     lu = BorderedBandLU(problem.jac_pattern, model.n_border)
     data = np.zeros(problem.jac_pattern.nnz)
     F, dy, yp, y_new = (np.empty(n) for _ in range(4))
-    state = np.zeros(5)
+    state = np.zeros(6)
+    state[REFRESH_COST] = REFRESH_PER_BAND * (lu.kl + lu.ku + 1)
     pick = np.zeros(n, dtype=np.bool_)
     z_new = np.empty(n)
     counts = np.zeros(N_COUNTS, dtype=np.int64)
