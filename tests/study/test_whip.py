@@ -8,7 +8,7 @@ import pytest
 
 from transient.models.journal import JournalBearing, JournalOrbit, OrbitResult
 from transient.params.rho_kim import BEARING, ROTOR
-from transient.study.whip import carry_state, whirl_numbers
+from transient.study.whip import METHOD, carry_state, long_whip, run_up, whirl_numbers
 
 
 def test_whip_scenario_quick_and_resumed(tmp_path, scenario_loader):
@@ -89,3 +89,37 @@ def test_a_whirl_is_a_limit_cycle_only_when_its_envelope_stops_moving():
     assert not growing["settled"] and growing["envelope_growth_per_rev"] == pytest.approx(0.01, rel=0.05)
     assert growing["envelope_growth_per_rev"] > ENVELOPE_TOL
     assert settled_text(growing).startswith("NOT settled")
+
+
+@pytest.mark.parametrize("method", ["bdf2", "ida"])
+def test_the_whip_method_reaches_the_orbit_run(monkeypatch, method):
+    """run_up and long_whip hand their ``method`` to every JournalOrbit.run; without one they use METHOD.
+    (The spied runs themselves go by IDA: this checks the hand-over, not the integrator.)"""
+    seen = []
+    real = JournalOrbit.run
+
+    def spy(self, *args, **kwargs):
+        seen.append(kwargs.pop("method", None))
+        return real(self, *args, method="ida", **kwargs)
+
+    monkeypatch.setattr(JournalOrbit, "run", spy)
+    b = JournalBearing(**BEARING, grid=(16, 4))
+    make = lambda rpm: JournalOrbit(b, speed_rpm=rpm, **ROTOR)  # noqa: E731
+    run_up(make, [4000.0, 5000.0], 1.0, outputs_per_revolution=16, method=method)
+    long_whip(make(4000.0), 1.0, outputs_per_revolution=16, method=method, progress=False)
+    run_up(make, [4000.0], 1.0, outputs_per_revolution=16)
+    assert seen == [method, method, method, METHOD]
+
+
+def test_bdf2_and_ida_give_the_same_whip():
+    """12700 rpm (about 1.5x the threshold of the 32 x 4 grid), 8 revolutions from the equilibrium at rtol 1e-4:
+    BDF2 on the content film and IDA give the same whirl -- ratio near 0.5, amplitudes and e/C range within
+    0.005 C, the same envelope growth within 0.005 C/rev and the same verdict (measured: agreement to ~1e-4 C)."""
+    b = JournalBearing(**BEARING, grid=(32, 4))
+    w = {m: long_whip(JournalOrbit(b, speed_rpm=12700.0, **ROTOR), 8.0, method=m, progress=False,
+                      last_revolutions=8)[1] for m in ("bdf2", "ida")}
+    assert 0.4 < w["ida"]["whirl_ratio"] < 0.6 and w["ida"]["eps_max"] > 0.5  # oil whip, large orbit
+    assert w["bdf2"]["whirl_ratio"] == pytest.approx(w["ida"]["whirl_ratio"], abs=0.005)
+    for k in ("amp_x", "amp_y", "eps_min", "eps_max", "envelope_growth_per_rev"):
+        assert w["bdf2"][k] == pytest.approx(w["ida"][k], abs=0.005), k
+    assert w["bdf2"]["settled"] == w["ida"]["settled"] and w["bdf2"]["touched_at_s"] is None

@@ -16,6 +16,8 @@ with a mass-conserving cavitation algorithm"): a run-up through the Lund thresho
   numbers of every segment.
 * :func:`long_whip` -- a long run at one speed with a checkpoint (``JournalOrbit.run(checkpoint=, resume=)``):
   killed at any moment, the same call continues from the last chunk.
+
+Both integrate with ``method=`` :data:`METHOD` (``"bdf2"``) unless given ``"ida"``.
 """
 
 from __future__ import annotations
@@ -31,6 +33,11 @@ from transient.results import StatusResult, quantity, result_type
 ENVELOPE_TOL = 1e-3
 #: revolutions per block of :func:`envelope_growth` (two whirl periods at a whirl frequency ratio of 0.5)
 ENVELOPE_BLOCK = 4
+#: the integrators of the whip runs (``JournalOrbit.run(method=)``) and the default: BDF2 on the content film,
+#: ~10-15x less CPU per whip revolution than IDA at equal error on 151 x 21 (docs/bench/orbit_size.md), and the same
+#: whirl numbers and verdicts as IDA on the scenario's quick grid (docs/journal.md)
+METHODS = ("bdf2", "ida")
+METHOD = "bdf2"
 
 
 def envelope_growth(eps_max_per_rev, eps_min_per_rev, block: int = ENVELOPE_BLOCK) -> tuple[float, int]:
@@ -126,9 +133,10 @@ def carry_state(old, new, y):
 
 
 def run_up(make_orbit, speeds, revolutions_per_speed, rtol=1e-4, outputs_per_revolution=64,
-           last_revolutions=4, threshold_rpm=0.0, touch_gap=1e-3, progress=False) -> RunUp:
+           last_revolutions=4, threshold_rpm=0.0, touch_gap=1e-3, progress=False, method=METHOD) -> RunUp:
     """Step the speed through ``speeds`` [rpm], ``revolutions_per_speed`` at each, every segment continuing
-    the previous one (:func:`carry_state`; the first starts from the static equilibrium).
+    the previous one (:func:`carry_state`; the first starts from the static equilibrium), integrated by
+    ``JournalOrbit.run(method=)`` (``"bdf2"`` or ``"ida"``, :data:`METHOD`).
     ``make_orbit(speed_rpm) -> JournalOrbit``. Stops at the first touch or failure."""
     opr = int(outputs_per_revolution)
     t_all, x_all, y_all, s_all = [], [], [], []
@@ -143,7 +151,7 @@ def run_up(make_orbit, speeds, revolutions_per_speed, rtol=1e-4, outputs_per_rev
             # the new orbit's tau = omega_new t: start at the time whose phase is the old one's
             state = carry_state(prev, o, state)
             start = (tau_end / o.film.omega, state)
-        r = o.run(revolutions_per_speed, rtol=rtol, outputs_per_revolution=opr, start=start,
+        r = o.run(revolutions_per_speed, method=method, rtol=rtol, outputs_per_revolution=opr, start=start,
                   touch_gap=touch_gap, progress=progress)
         t0 = r.t[0]
         keep = slice(0 if prev is None else 1, None)
@@ -175,9 +183,10 @@ def run_up(make_orbit, speeds, revolutions_per_speed, rtol=1e-4, outputs_per_rev
 
 
 def long_whip(orbit, revolutions, rtol=1e-4, outputs_per_revolution=64, checkpoint=None, resume=True,
-              chunk_revolutions=10.0, last_revolutions=20, touch_gap=1e-3, progress=True):
-    """``revolutions`` at the orbit's speed from the static equilibrium, checkpointed; returns (result,
+              chunk_revolutions=10.0, last_revolutions=20, touch_gap=1e-3, progress=True, method=METHOD):
+    """``revolutions`` at the orbit's speed from the static equilibrium, checkpointed, integrated by
+    ``JournalOrbit.run(method=)`` (``"bdf2"`` or ``"ida"``, :data:`METHOD`); returns (result,
     :func:`whirl_numbers`)."""
-    r = orbit.run(revolutions, rtol=rtol, outputs_per_revolution=outputs_per_revolution, checkpoint=checkpoint,
+    r = orbit.run(revolutions, method=method, rtol=rtol, outputs_per_revolution=outputs_per_revolution, checkpoint=checkpoint,
                   resume=resume, chunk_revolutions=chunk_revolutions, touch_gap=touch_gap, progress=progress)
     return r, whirl_numbers(r, outputs_per_revolution, last_revolutions)
