@@ -27,7 +27,8 @@ again, not re-evaluated; and before a step whose cj moved by more than 30 % or w
 against ``0.1 (rtol |y| + atol)``, the others by the model's ``norm`` kernel (e.g. the film's pressure and content
 updates): an update within tolerance, or one whose remaining error the chord's contraction rate ``r`` bounds,
 ``max(r / (1 - r), 0.3) |dz| <= 1`` (Hairer & Wanner II, IV.8; SUNDIALS). A Newton failure (25 iterations, no
-convergence) cuts the step by 4. The cost by operation (residuals, Jacobians, iterations, refreshes and why) is
+convergence) is retried once with every switch refreshing the Jacobian (the weighed refresh can starve a hard
+step), then cuts the step by 4. The cost by operation (residuals, Jacobians, iterations, refreshes and why) is
 added to ``options["newton_counts"]`` (an int64 array of ``N_COUNTS``) if given.
 
 The Newton iteration (residual, solves, Jacobian, factorisation, norm) is one numba kernel; Python runs once per
@@ -286,7 +287,8 @@ def integrate_bdf2(problem, t_eval, out, guard, rtol, atol, max_step, first_step
     data = np.zeros(problem.jac_pattern.nnz)
     F, dy, yp, y_new = (np.empty(n) for _ in range(4))
     state = np.zeros(6)
-    state[REFRESH_COST] = REFRESH_PER_BAND * (lu.kl + lu.ku + 1)
+    refresh_cost = REFRESH_PER_BAND * (lu.kl + lu.ku + 1)
+    state[REFRESH_COST] = refresh_cost
     pick = np.zeros(n, dtype=np.bool_)
     z_new = np.empty(n)
     counts = np.zeros(N_COUNTS, dtype=np.int64)
@@ -352,6 +354,11 @@ def integrate_bdf2(problem, t_eval, out, guard, rtol, atol, max_step, first_step
         code = model.newton(model.args, t_new, cj, np.ascontiguousarray(b), y_new, yp, F, dy, data, lu.arrays,
                             np.ascontiguousarray(y_pred), z_new, pick, err_idx, err_w, state, counts)
         interrupt()
+        if code != 0 and state[REFRESH_COST] > 0.0:  # the same step again, every switch refreshing the Jacobian
+            state[REFRESH_COST] = 0.0
+            state[REFRESH] = 1.0
+            continue
+        state[REFRESH_COST] = refresh_cost
         if code != 0:
             n_nlf += 1
             if fixed > 0:
