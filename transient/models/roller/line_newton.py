@@ -25,6 +25,7 @@ import scipy.linalg as sla
 import scipy.sparse.linalg as spla
 
 from transient.models.point.reduced import schur
+from transient.models.roller.krylov import DenseLU
 
 #: GMRES iterations above which the preconditioner is refreshed at the next Newton iteration
 REFACTOR_ITERS = 12
@@ -42,16 +43,6 @@ class ContentNewtonStats:
     factorisations: int = 0
     krylov: int = 0
     norms: list = field(default_factory=list)
-
-
-class _Preconditioner:
-    """The single-precision LU factors of a Schur matrix, applied as ``S_old^-1 r``."""
-
-    def __init__(self, S):
-        self.lu = sla.lu_factor(S.astype(np.float32), check_finite=False)
-
-    def solve(self, r):
-        return sla.lu_solve(self.lu, r.astype(np.float32), check_finite=False).astype(float)
 
 
 def schur_system(film, u, e):
@@ -86,7 +77,7 @@ def _krylov_step(S, r, pre, stats):
     z, ok, its = _gmres(S, r, pre)
     stats.krylov += its
     if not ok:
-        pre = _Preconditioner(S)
+        pre = DenseLU(S)
         stats.factorisations += 1
         z, ok, its2 = _gmres(S, r, pre)
         stats.krylov += its2
@@ -126,7 +117,7 @@ def content_newton(film, u0, tol: float = 1e-10, max_iter: int = 60, step_max: f
             stats.factorisations += 1
         else:
             if refresh or pre is None:
-                pre = _Preconditioner(S)
+                pre = DenseLU(S)
                 stats.factorisations += 1
             z, pre, refresh = _krylov_step(S, r, pre, stats)
         du = np.empty(2 * n + 1)
