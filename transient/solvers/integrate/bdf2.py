@@ -22,8 +22,8 @@ since the factorisation (as SUNDIALS IDA does). A fresh Jacobian at the current 
 rate exceeds 0.3, or when the model reports components that switched regime since the last one and the refresh
 pays (more than 3 of them, or the chord iterations it saves at the chord's contraction rate exceed its cost in
 iterations, taken proportional to the band width); at most 10 per solve, the residual at that iterate solved
-again, not re-evaluated; and before a step whose cj moved by more than 30 % or whose last Newton contracted slowly; an update larger than the previous one halves the previous update instead
-(damping down to 1/16). Convergence is judged on the update in the model's own units: the error components
+again, not re-evaluated; and before a step whose cj moved by more than 30 % or whose last Newton contracted
+slowly. An update larger than the previous one halves the previous update instead (damping down to 1/16). Convergence is judged on the update in the model's own units: the error components
 against ``0.1 (rtol |y| + atol)``, the others by the model's ``norm`` kernel (e.g. the film's pressure and content
 updates): an update within tolerance, or one whose remaining error the chord's contraction rate ``r`` bounds,
 ``max(r / (1 - r), 0.3) |dz| <= 1`` (Hairer & Wanner II, IV.8; SUNDIALS). A Newton failure (25 iterations, no
@@ -355,6 +355,7 @@ def integrate_bdf2(problem, t_eval, out, guard, rtol, atol, max_step, first_step
                             np.ascontiguousarray(y_pred), z_new, pick, err_idx, err_w, state, counts)
         interrupt()
         if code != 0 and state[REFRESH_COST] > 0.0:  # the same step again, every switch refreshing the Jacobian
+            n_nlf += 1
             state[REFRESH_COST] = 0.0
             state[REFRESH] = 1.0
             continue
