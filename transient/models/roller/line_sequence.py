@@ -5,8 +5,9 @@ of :meth:`LineContact.levels` (every other node of the next finer one), coarse t
 path of :meth:`LineContact.continuation`: ``s = 0`` is the contact with the load scaled to
 ``M0 = min(M, 10)`` and ``alpha`` to ``L0 = min(L, 5)``, solved from the Hertz pressure (:func:`cold_start`);
 ``s = 1`` is the contact itself (``w = w0 (w1/w0)^s``, ``alpha = a0 + s (a1 - a0)``). Level ``k`` carries
-the load up to ``M_k = min(M, RESOLVED / dx_k)`` (``dx_k`` its node spacing in the Hertz zone: a grid
-resolves the outlet constriction, of width ~ 1/M, only so far; where its path stops earlier, the next
+the load up to ``M_k = min(M, RESOLVED / dx_k, RESOLVED_INLET / dx_in)`` (``dx_k`` its node spacing in the
+Hertz zone, ``dx_in`` at the inlet edge: a grid resolves the inlet build-up and the outlet constriction,
+both narrowing with M, only so far; where its path stops earlier, the next
 level continues from there), by continuation steps
 (:func:`transient.models.roller.continuation.follow`) started from the previous step's solution; the
 next, finer level starts from it interpolated (nested iteration). On the coarse levels a Newton
@@ -30,8 +31,10 @@ from transient.solvers.newton import NewtonError, NewtonResult
 
 #: the corner of the Moes chart solved from the Hertz pressure
 M_START, L_START = 10.0, 5.0
-#: a level carries the load up to M = RESOLVED / (its node spacing in the Hertz zone, units of b)
+#: a level carries the load up to M = RESOLVED / (its node spacing in the Hertz zone, units of b) ...
 RESOLVED = 8.0
+#: ... and up to M = RESOLVED_INLET / (its node spacing at the inlet edge x = -b, where the film is set)
+RESOLVED_INLET = 3.5
 #: amplitude (units of p_h, at most; 0.5/(alpha p_h) when smaller) of the inlet pressure ramp of the start
 INLET_RAMP = 0.05
 #: the coarsest level keeps at least this many nodes, this many of them in the loaded zone
@@ -94,6 +97,20 @@ def grid_levels(contact) -> list[TensorGrid]:
     return out
 
 
+def inlet_spacing(grid: TensorGrid) -> float:
+    """Node spacing (units of b) of the interval that contains the inlet edge ``x = -1``."""
+    x = grid.x
+    k = int(np.clip(np.searchsorted(x, -1.0), 1, x.size - 1))
+    return float(x[k] - x[k - 1])
+
+
+def resolved_load(contact, grid: TensorGrid) -> float:
+    """The largest Moes load M a level carries (module docstring): ``RESOLVED`` over the largest spacing
+    in the Hertz zone, ``RESOLVED_INLET`` over the spacing at the inlet edge (measured: on uniform grids the
+    load path stalls near ``M dx = 4-6`` at the inlet edge, each stalled path costing its rejected steps)."""
+    return min(contact.M, RESOLVED / contact._contact_spacing(grid), RESOLVED_INLET / inlet_spacing(grid))
+
+
 def solve_sequence(contact, tol: float = 1e-10, max_iter: int = 60) -> SequenceResult:
     """The film-content solution of ``contact`` (module docstring) on its finest grid. BLAS runs on one
     thread (``transient`` sets ``OPENBLAS_NUM_THREADS=1`` at import, too late when numpy was imported
@@ -145,7 +162,7 @@ def _solve_sequence(contact, tol, max_iter) -> SequenceResult:
             return w
 
         last = k == len(levels) - 1
-        s_target = 1.0 if last else max(s, s_of(min(contact.M, RESOLVED / contact._contact_spacing(grid))))
+        s_target = 1.0 if last else max(s, s_of(resolved_load(contact, grid)))
         if k == 0:
             u0 = cold_start(at(0.0)[0], at(0.0)[1].base)
             u, ok, st = newton_at(0.0, u0, max_iter)
