@@ -22,8 +22,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 import scipy.linalg as sla
-import scipy.sparse.linalg as spla
 
+from transient.models.point.krylov import gmres_solve
 from transient.models.point.reduced import schur
 from transient.models.roller.krylov import DenseLU
 
@@ -33,6 +33,8 @@ REFACTOR_ITERS = 12
 DIRECT_BELOW = 400
 #: GMRES relative tolerance of a Newton step
 GMRES_RTOL = 1e-8
+#: GMRES restart length (a step allows two cycles)
+GMRES_RESTART = 40
 
 
 @dataclass
@@ -60,15 +62,21 @@ def schur_system(film, u, e):
 
 
 def _gmres(S, r, pre):
-    """GMRES on ``S z = r`` preconditioned by ``pre``: ``(z, converged, iterations)``."""
-    count = [0]
+    """GMRES on ``S z = r`` right-preconditioned by ``pre`` (the point film's
+    :func:`~transient.models.point.krylov.gmres_solve`: its tolerance is on the true residual):
+    ``(z, converged, iterations)``."""
+    z, its, ok = gmres_solve(_Dense(S), r, pre, GMRES_RTOL, restart=GMRES_RESTART, max_iter=2 * GMRES_RESTART)
+    return z, ok, its
 
-    def tick(_):
-        count[0] += 1
 
-    z, info = spla.gmres(S, r, rtol=GMRES_RTOL, atol=0.0, restart=40, maxiter=2,
-                         M=spla.LinearOperator(S.shape, matvec=pre.solve), callback=tick, callback_type="pr_norm")
-    return z, info == 0, count[0]
+class _Dense:
+    """A dense matrix with the ``matvec`` of a linear operator."""
+
+    def __init__(self, S):
+        self.S = S
+
+    def matvec(self, v):
+        return self.S @ v
 
 
 def _krylov_step(S, r, pre, stats):
