@@ -206,6 +206,11 @@ def _solve_sequence(contact, tol, max_iter) -> SequenceResult:
             u, s = path.state, param(path.s)
             if not path.success and last:
                 out.message = f"{grid.x.size} nodes: {path.message}"
+                m_res = resolved_load(contact, grid)
+                if m_res < contact.M:
+                    out.message += (f"; this grid resolves the inlet and the contact up to M ~ {m_res:.3g} (node "
+                                    f"spacing {inlet_spacing(grid):.3g} b at the inlet edge x = -b, "
+                                    f"{contact._contact_spacing(grid):.3g} b in the contact): refine it there")
                 ok = False
                 break
             # a coarse level that cannot carry the load further hands over to the finer one where it stopped
