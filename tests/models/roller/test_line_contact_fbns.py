@@ -121,3 +121,48 @@ def test_whole_moes_chart_on_1025_nodes_converges_with_the_film_content_newton()
             r = chart_point(M, L, nodes=1025)
             assert r["success"] and "film-content Newton" in r["message"], (M, L, r["message"])
             assert r["residual"] <= 1e-9 and r["H_min"] > 0
+
+
+def test_overflowed_viscosity_gives_the_vanishing_flow_limit_not_nan():
+    """Roelands with the chart's largest alpha (Z = 1.8) overflows exp near 2.5 GPa: eps and its derivatives
+    there are 0 (their limit), not inf/inf, and the Jacobian stays finite."""
+    c = chart_contact(1000.0, 25.0, nodes=257, viscosity_law="roelands")
+    lf = LineContentFilm(c.film_problem())
+    u = cold_start(c, lf.base)
+    u[: lf.n] *= 1.0 + (u[: lf.n] > 0.5)  # pressures up to 2 p_h = 11.7 GPa: eta/eta0 beyond the double range
+    with np.errstate(over="ignore", invalid="ignore"):
+        eta = c.lubricant.eta(u[: lf.n].max() * c.p_h)[0]
+        e = lf.equations(u)
+    assert not np.isfinite(eta)
+    for key in ("res", "dp", "dh", "dt"):
+        assert np.all(np.isfinite(e[key])), key
+    hot = lf.x[1:-1][u[: lf.n] * c.p_h > 3e9]
+    assert hot.size and np.all(lf.props[2][1:-1][u[: lf.n] * c.p_h > 3e9] == 0.0)
+
+
+@pytest.mark.parametrize("law,density,grid", [("roelands", "incompressible", "clustered"),
+                                              ("roelands", "dowson-higginson", "clustered"),
+                                              ("barus", "dowson-higginson", "clustered"),
+                                              ("barus", "incompressible", "uniform"),
+                                              ("roelands", "dowson-higginson", "uniform")])
+def test_heaviest_chart_corner_converges_for_every_lubricant_and_grid(law, density, grid):
+    """M = 1000, L = 25 from a cold start on 1025 nodes (Roelands there reaches eta/eta0 = inf)."""
+    r = chart_point(1000.0, 25.0, nodes=1025, grid=grid, density=density, viscosity_law=law)
+    assert r["success"] and "film-content Newton" in r["message"], r["message"]
+    assert r["residual"] <= 1e-9 and r["H_min"] > 0
+
+
+@pytest.mark.parametrize("M,L", [(1000.0, 0.0), (1.0, 0.0)])
+def test_uniform_grid_chart_corners_converge(M, L):
+    r = chart_point(M, L, nodes=1025, grid="uniform")
+    assert r["success"] and "film-content Newton" in r["message"], r["message"]
+    assert r["residual"] <= 1e-9 and r["H_min"] > 0
+
+
+def test_clustered_chart_grid_puts_h_c_near_its_grid_limit_at_m_1000():
+    """The chart grid's inlet cluster: H_c on 1025 nodes against 2049 nodes at M = 1000, L = 10 (the
+    Richardson limit from 1025/2049/4097 is 3.266, docs/validation.md): within 0.5 %."""
+    a = chart_point(1000.0, 10.0, nodes=1025)
+    b = chart_point(1000.0, 10.0, nodes=2049)
+    assert a["success"] and b["success"]
+    assert abs(a["H_c"] / b["H_c"] - 1.0) < 5e-3

@@ -109,3 +109,13 @@ def test_a_film_that_closes_on_a_too_coarse_grid_is_a_named_failure_not_a_result
 def test_moes_formula_tends_to_its_isoviscous_branch_as_L_vanishes():
     """No overflow for a vanishing pressure-viscosity group: the piezoviscous part tends to zero."""
     assert moes_central(30.0, 1e-290) == pytest.approx(moes_central(30.0, 0.0), rel=1e-12)
+
+
+def test_load_path_stopped_by_the_grid_names_the_resolution_and_keeps_the_history():
+    """513 uniform nodes cannot carry M = 1000 (the inlet edge needs M dx <~ 4): a named error whose message
+    says how far the grid resolves, with the residual history of the last attempt."""
+    c = chart_contact(1000.0, 0.0, nodes=513, grid="uniform")
+    with pytest.raises(EHLConvergenceError, match=r"resolves the inlet and the contact up to M ~") as e:
+        c.steady()
+    r = e.value.result
+    assert r.success is False and len(r.residual_norms) >= 2 and np.all(np.isfinite(r.residual_norms))
