@@ -8,7 +8,8 @@ solved from a cold start by LineContact.steady (Fischer-Burmeister-Newton-Schur 
 form -- Woloszynski, Podsiadlo & Stachowiak, Tribol. Lett. 58 (2015) -- over grid levels and a load path
 from the easy corner M <= 10, L <= 5) on a fully flooded domain (transient.study.ehl_chart). Moes' formula: Moes,
 "Optimum similarity analysis with applications to elastohydrodynamic lubrication", Wear 159 (1992), as
-quoted by Venner & Lubrecht, "Multilevel Methods in Lubrication" (2000). Writes moes_chart.png and
+quoted by Venner & Lubrecht, "Multilevel Methods in Lubrication" (2000). Writes moes_chart.png (H_c and H_min against M
+per L with Moes' formula and its four asymptotes; H_c and H_min contours over the (M, L) plane) and
 ehl_chart.json (every point: converged or not, H_c, H_min, deviation from Moes, iterations, wall time)
 into transient_out/ehl_chart/.
 """

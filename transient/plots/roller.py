@@ -106,11 +106,12 @@ def moes_chart(rows: list[dict], curves: dict, title: str = ""):
     """The Moes chart of the line contact from :func:`transient.study.ehl_chart.run_chart` rows and
     :func:`transient.study.ehl_chart.moes_curves`: (a) the central film ``H_c = (h_c/R)(2U)^-1/2``
     against M for each L (markers: solved; lines: Moes' formula; dotted: the four asymptotes, the
-    piezoviscous ones at the largest L; x: not converged), (b) the minimum film."""
+    piezoviscous ones at the largest L; x: not converged), (b) the minimum film; (c), (d) contours of
+    ``H_c`` and ``H_min`` over the (M, L) plane (filled: solved points; dashed in (c): Moes' formula)."""
     Ls = sorted({r["L"] for r in rows})
     Mf = curves["M"]
-    fig = Figure(figsize=(12, 5.5), layout="constrained")
-    ax_c, ax_m = fig.add_subplot(1, 2, 1), fig.add_subplot(1, 2, 2)
+    fig = Figure(figsize=(12, 10), layout="constrained")
+    ax_c, ax_m = fig.add_subplot(2, 2, 1), fig.add_subplot(2, 2, 2)
     for k, L in enumerate(Ls):
         col = f"C{k}"
         pts = sorted((r for r in rows if r["L"] == L and r["success"]), key=lambda r: r["M"])
@@ -133,5 +134,23 @@ def moes_chart(rows: list[dict], curves: dict, title: str = ""):
         ax.legend(fontsize=8)
     ax_c.set_title("(a) markers: this solver; lines: Moes' formula; dotted: asymptotes", fontsize=9)
     ax_m.set_title("(b) minimum film (outlet constriction)", fontsize=9)
+    good = [r for r in rows if r["success"]]
+    for pos, key, label in ((3, "H_c", "(c) central film $H_c$"), (4, "H_min", "(d) minimum film $H_{min}$")):
+        ax = fig.add_subplot(2, 2, pos)
+        if len({r["M"] for r in good}) >= 2 and len({r["L"] for r in good}) >= 2:
+            lm = np.log10([r["M"] for r in good])
+            lv = np.array([r["L"] for r in good])
+            val = np.log10([r[key] for r in good])
+            cs = ax.tricontourf(lm, lv, val, levels=14, cmap="viridis")
+            fig.colorbar(cs, ax=ax, label=f"log10 {key} [-]")
+            lines = ax.tricontour(lm, lv, val, levels=cs.levels[::2], colors="w", linewidths=0.6)
+            ax.clabel(lines, fmt=lambda v: f"{10 ** v:.3g}", fontsize=7)
+            if key == "H_c":
+                moes = np.log10([r["moes"] for r in good])
+                ax.tricontour(lm, lv, moes, levels=cs.levels[::2], colors="k", linewidths=0.8, linestyles="--")
+            ax.plot(lm, lv, "k.", ms=3)
+        ax.set_xlabel(r"$\log_{10} M$ [-]")
+        ax.set_ylabel(r"$L = G (2U)^{1/4}$ [-]")
+        ax.set_title(label + (" (dashed: Moes' formula)" if key == "H_c" else ""), fontsize=9)
     fig.suptitle(title)
     return fig
