@@ -86,15 +86,20 @@ def iteration_cost(n: int, repeat: int = 3) -> dict:
 
 
 def summary(rows: list[dict]) -> dict:
-    """Converged count, slowest point (by CPU), median and largest CPU, largest |H_c/Moes - 1|."""
+    """Converged and resolved counts, slowest point (by CPU), median and largest CPU, largest |H_c/Moes - 1|
+    over the converged and over the resolved points."""
     ok = [r for r in rows if r["success"]]
     slow = max(rows, key=lambda r: r["cpu_s"])
-    worst = max(ok, key=lambda r: abs(r["deviation"]), default=None)
-    return dict(converged=len(ok), points=len(rows), slowest=dict(M=slow["M"], L=slow["L"], cpu_s=slow["cpu_s"],
-                                                                 wall_s=slow["wall_s"]),
+
+    def largest(sel):
+        w = max(sel, key=lambda r: abs(r["deviation"]), default=None)
+        return None if w is None else dict(M=w["M"], L=w["L"], value=w["deviation"])
+
+    return dict(converged=len(ok), points=len(rows), resolved=sum(1 for r in ok if r["resolved"]),
+                slowest=dict(M=slow["M"], L=slow["L"], cpu_s=slow["cpu_s"], wall_s=slow["wall_s"]),
                 median_cpu=float(np.median([r["cpu_s"] for r in rows])), max_cpu=slow["cpu_s"],
                 median_wall=float(np.median([r["wall_s"] for r in rows])),
-                max_deviation=None if worst is None else dict(M=worst["M"], L=worst["L"], value=worst["deviation"]),
+                max_deviation=largest(ok), max_deviation_resolved=largest([r for r in ok if r["resolved"]]),
                 failures=[dict(M=r["M"], L=r["L"], message=r["message"]) for r in rows if not r["success"]])
 
 
@@ -163,9 +168,9 @@ def main(out, quick: bool = False) -> str:
                                             iterations=new.iterations), old=old, film_difference=diff))
     costs = [iteration_cost(n) for n in ((257, 513, 1025) if quick else (257, 513, 1025, 2049, 4097))]
     threads = os.environ.get("OPENBLAS_NUM_THREADS", "unset")
-    (out / "ehl_line.json").write_text(json.dumps(dict(nodes=nodes, charts=charts, summaries=sums, grid_convergence=conv,
-                                                       gmres=gm, side_by_side=side, iteration_cost=costs,
-                                                       openblas_threads=threads), indent=1, default=float))
+    record = dict(nodes=nodes, charts=charts, summaries=sums, grid_convergence=conv, gmres=gm, side_by_side=side,
+                  iteration_cost=costs, openblas_threads=threads)
+    (out / "ehl_line.json").write_text(json.dumps(record, indent=1, default=float))
     return _markdown(quick, nodes, Ms, Ls, charts, sums, conv, gm, side, costs, threads)
 
 
@@ -181,14 +186,18 @@ def _markdown(quick, nodes, Ms, Ls, charts, sums, conv, gm, side, costs, threads
              f"**{total[0]} of {total[1]} chart points converged** over the four lubricant variants and both grid "
              f"kinds. Slowest point: {slow[0]}, M = {slow[1]['slowest']['M']:g}, L = {slow[1]['slowest']['L']:g} "
              f"({slow[1]['slowest']['cpu_s']:.2f} s CPU, {slow[1]['slowest']['wall_s']:.2f} s wall).", "",
-             "| viscosity / density / grid | converged | slowest point (M, L) | its CPU [s] | its wall [s] | "
-             "median CPU [s] | median wall [s] | largest abs(H_c/Moes - 1) (M, L) |", "|---|---|---|---|---|---|---|---|"]
+             "| viscosity / density / grid | converged | resolved | slowest point (M, L) | its CPU [s] | "
+             "its wall [s] | "
+             "median CPU [s] | median wall [s] | largest abs(H_c/Moes - 1) (M, L) | the same over resolved points |",
+             "|---|---|---|---|---|---|---|---|---|---|"]
     for key, s in sums.items():
-        d = s["max_deviation"]
-        lines.append(f"| {key} | {s['converged']}/{s['points']} | {s['slowest']['M']:g}, {s['slowest']['L']:g} | "
+        d, dr = s["max_deviation"], s["max_deviation_resolved"]
+        lines.append(f"| {key} | {s['converged']}/{s['points']} | {s['resolved']} | "
+                     f"{s['slowest']['M']:g}, {s['slowest']['L']:g} | "
                      f"{s['slowest']['cpu_s']:.2f} | {s['slowest']['wall_s']:.2f} | {s['median_cpu']:.2f} | "
                      f"{s['median_wall']:.2f} | "
-                     + (f"{100 * d['value']:+.1f} % ({d['M']:g}, {d['L']:g})" if d else "-") + " |")
+                     + " | ".join(f"{100 * v['value']:+.1f} % ({v['M']:g}, {v['L']:g})" if v else "-" for v in (d, dr))
+                     + " |")
     fails = [(k, f) for k, s in sums.items() for f in s["failures"]]
     lines += ["", "Failures: " + ("none." if not fails else "; ".join(
         f"{k} M = {f['M']:g}, L = {f['L']:g}: {f['message'][:200]}" for k, f in fails)), "",
@@ -196,7 +205,10 @@ def _markdown(quick, nodes, Ms, Ls, charts, sums, conv, gm, side, costs, threads
               "measures the formula (at M = 1 its rigid-isoviscous branch 3/M is 22.5 % above Martin's 2.448/M) and "
               "the grid (uniform grids do not resolve the inlet at M >= 300); with Roelands or Dowson-Higginson "
               "it is mostly the rheology's effect.", "",
-              "H_c / Moes - 1 [%] and CPU [s] per point:", ""]
+              "*resolved*: converged points whose grid spacing at the inlet edge x = -b is at most 0.6/M "
+              "(`LineContact.steady` otherwise warns `FilmResolutionWarning` and says so in its message: the "
+              "film is the discrete one, not within ~1 % of the grid limit).", "",
+              "H_c / Moes - 1 [%] and CPU [s] per point (u: under-resolved, flagged):", ""]
     for key, rows in charts.items():
         lines += [f"*{key}*", "", "| M \\ L | " + " | ".join(f"{L:g}" for L in Ls) + " |",
                   "|---|" + "---|" * len(Ls)]
@@ -204,7 +216,8 @@ def _markdown(quick, nodes, Ms, Ls, charts, sums, conv, gm, side, costs, threads
             cells = []
             for L in Ls:
                 r = next(r for r in rows if r["M"] == M and r["L"] == L)
-                cells.append(f"{100 * r['deviation']:+.1f} ({r['cpu_s']:.2f})" if r["success"] else
+                flag = "" if r["resolved"] else " u"
+                cells.append(f"{100 * r['deviation']:+.1f}{flag} ({r['cpu_s']:.2f})" if r["success"] else
                              f"**NO** ({r['cpu_s']:.2f})")
             lines.append(f"| {M:g} | " + " | ".join(cells) + " |")
         lines.append("")
@@ -229,7 +242,8 @@ def _markdown(quick, nodes, Ms, Ls, charts, sums, conv, gm, side, costs, threads
         lines.append(f"| {g['grid']} | {g['M']:g} | {g['L']:g} | {' / '.join(f'{v:.2f}' for v in g['own'])} | "
                      f"{' / '.join(f'{v:.2f}' for v in g['scipy'])} | {g['own_its']} / {g['scipy_its']} | "
                      f"{g['own_H_c']:.6g} / {g['scipy_H_c']:.6g} |")
-    lines += ["", "Side by side on the same contacts (interleaved, clustered grid, Barus, incompressible): film-content "
+    lines += ["", "Side by side on the same contacts (interleaved, clustered grid, Barus, incompressible): "
+              "film-content "
               "FBNS (`steady`) and the Reynolds-condition Newton with load continuation (`steady_reynolds`); max "
               "abs(h_new/h_old - 1) over the nodes:", "",
               "| M | L | FBNS wall [s] | CPU [s] | its | Reynolds-condition: converged | wall [s] | CPU [s] | its | "

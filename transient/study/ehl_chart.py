@@ -6,22 +6,25 @@ A chart point fixes ``U`` (default 1e-11, as in Venner & Lubrecht's charts), ``R
 ``W = M (2U)^1/2`` and ``G = L (2U)^-1/4`` give the load and ``alpha``. The domain is fully flooded at
 every M: inlet ``-max(4, 28/M) b``, outlet ``max(1.5, 14/M) b`` (below M ~ 7 the pressure spreads over
 the hydrodynamic length ``sqrt(2 R h) ~ 2.8 b/M``). ``grid="clustered"`` concentrates the nodes in the
-Hertz zone and at the outlet spike (for M >= 10), ``"uniform"`` spaces them evenly.
+Hertz zone, at the inlet edge and at the outlet spike (for M >= 10; :data:`CLUSTERS`), ``"uniform"`` spaces
+them evenly (at M >= 300 too coarse at the inlet edge on 1025 nodes: ``resolved`` False).
 """
 
 from __future__ import annotations
 
 import math
 import time
+import warnings
 
 import numpy as np
 
 from transient.models.roller import LineContact
+from transient.models.roller.line_contact import FilmResolutionWarning
 from transient.models.roller.grid import clustered_axis
 from transient.physics.line_formulas import moes_asymptotes, moes_central
 
 RADIUS, MODULUS, VISCOSITY = 0.01, 220e9, 0.02
-#: node-density clusters ``(centre, width, weight)`` in units of b (:func:`~transient.models.roller.grid.clustered_axis`):
+#: node-density clusters ``(centre, width, weight)``, units of b (:func:`transient.models.roller.grid.clustered_axis`):
 #: the Hertz zone, the inlet edge (where the film is set: at M = 1000 its pressure build-up spans ~0.01 b) and
 #: the outlet spike. The inlet cluster is what brings H_c on 1025 nodes to within 0.2 % of the grid limit at
 #: M = 1000 (a wider, weaker one left it 8 % below; docs/validation.md)
@@ -54,16 +57,21 @@ def chart_contact(M: float, L: float, nodes: int = 1025, grid: str = "clustered"
 
 def chart_point(M: float, L: float, **kw) -> dict:
     """Solve one chart point: Moes-scaled ``H_c = (h_c/R)(2U)^-1/2`` and ``H_min`` against Moes' formula,
-    iterations, wall and CPU time [s] (CPU: this process, all its threads)."""
+    iterations, wall and CPU time [s] (CPU: this process, all its threads); ``resolved``: False where
+    ``steady`` warned that the grid is too coarse at the inlet edge for this M (:class:`FilmResolutionWarning`)."""
     c = chart_contact(M, L, **kw)
     t0, c0 = time.perf_counter(), time.process_time()
-    s = c.steady(raise_on_failure=False)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always", FilmResolutionWarning)
+        s = c.steady(raise_on_failure=False)
     wall, cpu = time.perf_counter() - t0, time.process_time() - c0
+    resolved = not any(issubclass(w.category, FilmResolutionWarning) for w in caught)
     unit = c.radius * math.sqrt(2.0 * c.U)
     moes = moes_central(M, L)
     return dict(M=M, L=L, success=bool(s.success), H_c=s.h_central / unit, H_min=s.h_min / unit, moes=moes,
                 deviation=s.h_central / unit / moes - 1.0, asymptotes=moes_asymptotes(M, L),
-                p_max=s.p_max / c.p_h, iterations=s.iterations, wall_s=wall, cpu_s=cpu, nodes=int(c.grid.x.size),
+                resolved=resolved, p_max=s.p_max / c.p_h, iterations=s.iterations, wall_s=wall, cpu_s=cpu,
+                nodes=int(c.grid.x.size),
                 residual=float(s.residual_norms[-1]) if s.residual_norms else float("nan"), message=s.message)
 
 

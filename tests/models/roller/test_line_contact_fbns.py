@@ -2,10 +2,12 @@
 discrete film as the Reynolds-condition solver, cold starts at the corners of the Moes chart, the whole chart."""
 
 import math
+import warnings
 
 import numpy as np
 import pytest
 
+from transient.models.roller.line_contact import FilmResolutionWarning
 from transient.models.roller.line_fbns import LineContentFilm
 from transient.models.roller.line_newton import content_newton, schur_system
 from transient.models.roller.line_sequence import cold_start, solve_sequence
@@ -154,9 +156,21 @@ def test_heaviest_chart_corner_converges_for_every_lubricant_and_grid(law, densi
 
 @pytest.mark.parametrize("M,L", [(1000.0, 0.0), (1.0, 0.0)])
 def test_uniform_grid_chart_corners_converge(M, L):
+    """Both converge; at M = 1000 the uniform grid (0.0054 b) is too coarse at the inlet edge: flagged."""
     r = chart_point(M, L, nodes=1025, grid="uniform")
     assert r["success"] and "film-content Newton" in r["message"], r["message"]
     assert r["residual"] <= 1e-9 and r["H_min"] > 0
+    assert r["resolved"] is (M < 100.0)
+
+
+def test_under_resolved_film_warns_and_says_so_in_its_message():
+    c = chart_contact(1000.0, 10.0, nodes=1025, grid="uniform")
+    with pytest.warns(FilmResolutionWarning, match="inlet edge"):
+        s = c.steady()
+    assert s.success and "under-resolved" in s.message
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", FilmResolutionWarning)
+        assert "under-resolved" not in chart_contact(1000.0, 10.0, nodes=1025).steady().message
 
 
 def test_clustered_chart_grid_puts_h_c_near_its_grid_limit_at_m_1000():

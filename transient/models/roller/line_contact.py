@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import math
 import time
+import warnings
 
 import numpy as np
 
@@ -27,7 +28,7 @@ from transient.checks import check_positive, check_range
 from transient.models.roller.continuation import PathResult, follow
 from transient.models.roller.ehl_problem import EHLFilm, interpolate_state, solve_steady
 from transient.models.roller.grid import TensorGrid
-from transient.models.roller.line_sequence import solve_sequence
+from transient.models.roller.line_sequence import inlet_spacing, solve_sequence
 from transient.models.roller.dry import edge_positions, polonsky_keer
 from transient.models.roller.results import EHLConvergenceError, LineDry, LineSteady, LineTransient
 from transient.models.roller.transient import load_ratio, run_squeeze
@@ -42,6 +43,15 @@ SCHEMES = ("upwind2", "upwind1")
 M_EASY, L_EASY = 10.0, 5.0
 #: Newton iterations allowed per continuation step (a step needing more is too long: it is halved)
 PATH_MAX_ITER = 25
+#: largest M dx_in (dx_in: the node spacing at the inlet edge x = -b) at which the central film is resolved to
+#: about 1 %; measured against grid limits (Barus, incompressible): M dx_in = 0.4 -> -0.2 %, 0.54 -> -0.9 %,
+#: 1.6 -> -5 %, 2.4 -> -8 %, 5.4 -> -57 % (docs/validation.md)
+INLET_RESOLUTION = 0.6
+
+
+class FilmResolutionWarning(UserWarning):
+    """A converged film on a grid too coarse at the inlet edge for its load: the discrete equations are
+    solved, but the film is not that of the continuous problem to ~1 % (:data:`INLET_RESOLUTION`)."""
 
 
 class _DenseOperator:
@@ -235,13 +245,25 @@ class LineContact:
             if ok:
                 res = self._result(film, u, True, msg, its, norms, time.perf_counter() - t0)
                 if res.h_min > 0.0:
-                    return res
+                    return self._check_resolution(res)
         fallback = self.steady_reynolds(None, tol, max_iter, False, None)
         fallback.message = f"film-content Newton: {seq.message or 'no physical film'}; then {fallback.message}"
         fallback.wall_time = time.perf_counter() - t0
         if not fallback.success and raise_on_failure:
             raise EHLConvergenceError(fallback.message, fallback)
-        return fallback
+        return self._check_resolution(fallback) if fallback.success else fallback
+
+    def _check_resolution(self, res: LineSteady) -> LineSteady:
+        """``res``, its message noting (and a :class:`FilmResolutionWarning` raised) when the grid's spacing
+        at the inlet edge exceeds ``INLET_RESOLUTION / M``."""
+        dx = inlet_spacing(self.grid)
+        if self.M * dx > INLET_RESOLUTION:
+            note = (f"under-resolved: node spacing {dx:.3g} b at the inlet edge x = -b, above "
+                    f"{INLET_RESOLUTION}/M = {INLET_RESOLUTION / self.M:.3g} b: the film is that of the discrete "
+                    "equations, not within ~1 % of the grid limit (cluster the nodes at x = -b)")
+            res.message += "; " + note
+            warnings.warn(f"LineContact.steady at M = {self.M:.3g}: {note}", FilmResolutionWarning, stacklevel=3)
+        return res
 
     def steady_reynolds(self, initial=None, tol: float = 1e-9, max_iter: int = 60, raise_on_failure: bool = True,
                         penalty: float | None = None) -> LineSteady:
