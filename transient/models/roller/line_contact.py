@@ -221,7 +221,9 @@ class LineContact:
         equations of :meth:`film_problem`, so the discrete film is the same. Where that fails, and for
         ``initial`` or ``penalty``, :meth:`steady_reynolds`. Raises :class:`EHLConvergenceError` (its
         ``result`` flagged ``success=False`` with the residual history) if no path reaches the contact,
-        unless ``raise_on_failure=False``."""
+        unless ``raise_on_failure=False``. A converged film on a grid too coarse at the inlet edge for this
+        load (spacing above ``INLET_RESOLUTION / M``) warns :class:`FilmResolutionWarning` and says so in its
+        message."""
         if initial is not None or penalty is not None:
             return self.steady_reynolds(initial, tol, max_iter, raise_on_failure, penalty)
         t0 = time.perf_counter()

@@ -5,9 +5,10 @@ Newton on the film-content equations of :class:`~transient.models.roller.line_fb
 each Fischer-Burmeister row ``a dp + g dtheta = -FB`` is diagonal, so one unknown per node is eliminated
 (theta where ``|g| >= |a|``, the pressure otherwise), leaving the exact ``(n + 1)`` Schur matrix ``S``
 (dense: the elastic coupling). ``S`` is assembled every iteration (``O(n^2)``) but factorised only now and
-then: the step solves ``S dz = r`` by GMRES (Saad & Schultz, 1986) preconditioned with the LU factors of
-an earlier ``S`` in single precision; a new factorisation is made when GMRES needs more than
-:data:`REFACTOR_ITERS` iterations or does not reach its tolerance. Near the solution ``S`` changes
+then: the step solves ``S dz = r`` by right-preconditioned GMRES (Saad & Schultz, 1986; the point film's
+:func:`~transient.models.point.krylov.gmres_solve`) with the LU factors of an earlier ``S`` in single
+precision; a new factorisation is made when GMRES needs more than :data:`REFACTOR_ITERS` iterations or does
+not reach its tolerance. Near the solution ``S`` changes
 little, so most Newton iterations cost a few ``O(n^2)`` products instead of an ``O(n^3)`` LU.
 
 Globalisation as :func:`transient.models.point.fbns.fbns`: the step is cut so that the film stays
