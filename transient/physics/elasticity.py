@@ -19,8 +19,8 @@ exact (Love, 1929)::
       int_patch ln|x - s| ds = [u ln|u| - u] over the patch ends,   u = s - x
 
 :func:`surface_influence` and :func:`line_influence` return the dense matrices of these raw integrals
-(any tensor grid, exact); :class:`SurfaceConvolution` applies the same coefficients on a uniform grid
-by one zero-padded FFT product (Liu, Wang & Liu, *Wear* 243, 2000: "DC-FFT"), exact (no periodic
+(any tensor grid, exact); :class:`SurfaceConvolution` (point) and :class:`LineConvolution` (line) apply the
+same coefficients on a uniform grid by one zero-padded FFT product (Liu, Wang & Liu, *Wear* 243, 2000: "DC-FFT"), exact (no periodic
 wrap-around error), ``O(N log N)``. Models multiply by their own constant (``2/(pi E')`` in SI, or the
 scaled factor of their units). Used by the EHL of the tapered roller (Park).
 """
@@ -115,3 +115,34 @@ class SurfaceConvolution:
         pad = np.zeros((2 * self.ny, 2 * self.nx))
         pad[: self.ny, : self.nx] = p
         return np.fft.irfft2(np.fft.rfft2(pad) * self.kernel_hat, s=pad.shape)[: self.ny, : self.nx]
+
+
+class LineConvolution:
+    """``K p`` for the coefficients of :func:`line_influence` on ``n`` uniform nodes spaced ``dx`` (patches
+    of width ``dx`` centred on the nodes), by a zero-padded FFT product (DC-FFT): ``K[i, k] = c(i - k)``
+    (Toeplitz), so the product is a linear convolution, exact, ``O(n log n)``.
+
+    ``apply(p)`` takes ``p`` of length ``n`` and returns ``scale * K p``."""
+
+    def __init__(self, n: int, dx: float, scale: float = 1.0):
+        from scipy.fft import next_fast_len
+
+        self.n = int(n)
+        c = line_influence(np.arange(-(self.n - 1), self.n) * dx, np.array([-0.5 * dx, 0.5 * dx]))[:, 0] * scale
+        self.length = next_fast_len(2 * self.n - 1, real=True)
+        ext = np.zeros(self.length)
+        # wrap-around order: offset d >= 0 at index d, offset d < 0 at index length + d
+        ext[: self.n] = c[self.n - 1:]
+        ext[self.length - (self.n - 1):] = c[: self.n - 1]
+        self.kernel_hat = np.fft.rfft(ext)
+        self._offsets = c
+
+    def coefficient(self, d: int) -> float:
+        """``scale * K`` between two nodes ``d`` apart."""
+        return float(self._offsets[self.n - 1 + d])
+
+    def apply(self, p: np.ndarray) -> np.ndarray:
+        p = np.asarray(p, float)
+        if p.shape != (self.n,):
+            raise ValueError(f"p must have shape ({self.n},), got {p.shape}")
+        return np.fft.irfft(np.fft.rfft(p, self.length) * self.kernel_hat, self.length)[: self.n]

@@ -28,6 +28,7 @@ from transient.checks import check_positive, check_range
 from transient.models.roller.continuation import PathResult, follow
 from transient.models.roller.ehl_problem import EHLFilm, interpolate_state, solve_steady
 from transient.models.roller.grid import TensorGrid
+from transient.models.roller.line_fft import LineFFTFilm, matrix_free
 from transient.models.roller.line_sequence import inlet_spacing, solve_sequence
 from transient.models.roller.dry import edge_positions, polonsky_keer
 from transient.models.roller.results import EHLConvergenceError, LineDry, LineSteady, LineTransient
@@ -158,11 +159,19 @@ class LineContact:
         """Film unit ``b^2 / R`` [m]."""
         return self.b * self.b / self.radius
 
-    def film_problem(self, grid: TensorGrid | None = None, lubricant: Lubricant | None = None, kernel=None) -> EHLFilm:
+    def film_problem(self, grid: TensorGrid | None = None, lubricant: Lubricant | None = None, kernel=None,
+                     matrix_free: bool = False) -> EHLFilm:
         """The scaled discrete problem (:class:`~transient.models.roller.ehl_problem.EHLFilm`) on ``grid``
-        (default: the contact's grid); ``kernel``: its influence matrix if already computed."""
+        (default: the contact's grid); ``kernel``: its influence matrix if already computed.
+        ``matrix_free`` (elastic, uniform grid): the DC-FFT film :class:`~transient.models.roller.line_fft.LineFFTFilm`
+        instead (``kernel`` then its :class:`~transient.physics.elasticity.LineConvolution`), for the
+        film-content iteration only (it has no dense Jacobian)."""
         grid = self.grid if grid is None else grid
         x = grid.x
+        if matrix_free and self.elastic:
+            return LineFFTFilm(grid, 0.5 * x * x, np.ones(1), self.lam, self.load_per_length / (self.b * self.p_h),
+                               lubricant or self.lubricant, self.p_h, -1.0 / math.pi, self.scheme == "upwind2",
+                               conv=kernel)
         return EHLFilm(grid, 0.5 * x * x, np.ones(1), self.lam, self.load_per_length / (self.b * self.p_h),
                        lubricant or self.lubricant, self.p_h, elastic="dense" if self.elastic else "rigid",
                        elastic_factor=-1.0 / math.pi, order2=(self.scheme == "upwind2"), kernel=kernel)
@@ -237,6 +246,10 @@ class LineContact:
             its = seq.iterations
             ok = norms[-1] <= tol
             msg = f"converged (film-content Newton, {seq.factorisations} LU factorisations): {seq.message}"
+            if not ok and seq.content.matrix_free:  # no dense Jacobian to finish with: the film-content solution
+                ok = True
+                msg += (f"; the Reynolds-condition residual of this film-content solution is {norms[-1]:.3g} "
+                        "(the two discrete problems differ in the rupture node)")
             if not ok:  # a different rupture node: finish on the Reynolds-condition equations
                 nr, k, hist = self._newton(film, u, tol, PATH_MAX_ITER, [None])
                 its += k
@@ -248,6 +261,13 @@ class LineContact:
                 res = self._result(film, u, True, msg, its, norms, time.perf_counter() - t0)
                 if res.h_min > 0.0:
                     return self._check_resolution(res)
+        if matrix_free(self.grid) and self.elastic:  # the fallback's dense matrices would not fit
+            res = self._result(seq.content.base, np.append(seq.state[: seq.content.n], seq.state[-1]), False,
+                               f"film-content Newton: {seq.message or 'no physical film'}", seq.iterations,
+                               seq.residual_norms, time.perf_counter() - t0)
+            if raise_on_failure:
+                raise EHLConvergenceError(res.message, res)
+            return res
         fallback = self.steady_reynolds(None, tol, max_iter, False, None)
         fallback.message = f"film-content Newton: {seq.message or 'no physical film'}; then {fallback.message}"
         fallback.wall_time = time.perf_counter() - t0

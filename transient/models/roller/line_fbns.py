@@ -119,13 +119,14 @@ class LineContentFilm:
 
     def __init__(self, film: EHLFilm):
         if film.grid.two_d or film.elastic == "fft":
-            raise ValueError("LineContentFilm: a line contact (1-D grid, dense or rigid elasticity)")
+            raise ValueError("LineContentFilm: a line contact (1-D grid; dense, DC-FFT or rigid elasticity)")
         self.base = film
         self.x = film.grid.x
         self.nf = self.x.size
         self.n = self.nf - 2
-        n = self.n
-        self.K = film.K if film.elastic == "dense" else np.zeros((self.nf, n))
+        #: the dense influence matrix (None on the matrix-free DC-FFT film of :mod:`~transient.models.roller.line_fft`)
+        self.K = film.K if film.elastic == "dense" else None
+        self.matrix_free = film.elastic == "line-fft"
         self.weight = film.area_w
         self.props = np.empty((7, self.nf))
 
@@ -168,14 +169,17 @@ class LineContentFilm:
         """Dense ``S = [[J_p diag(b_p) + J_theta diag(b_t), dR/dh0], [load row diag(b_p), 0]]``: the Newton
         matrix of the Reynolds rows and the load balance after the node-wise substitution
         ``dp = b_p z``, ``dtheta = b_t z`` (``J_p = dR/dp`` local plus through the film, ``J_theta = dR/dtheta``)."""
+        if self.matrix_free:
+            raise ValueError(f"{self.nf} nodes, DC-FFT elasticity: the Schur matrix is matrix-free (line_fft.SchurOperator)")
         S = np.empty((self.n + 1, self.n + 1))
-        schur_kernel(e["dp"], e["dh"], e["dt"], self.K, b_p, b_t, self.weight, S)
+        K = self.K if self.K is not None else np.zeros((self.nf, self.n))
+        schur_kernel(e["dp"], e["dh"], e["dt"], K, b_p, b_t, self.weight, S)
         return S
 
     def jacobian_product(self, e, v_p, v_t) -> np.ndarray:
         """``J_p v_p + J_theta v_t`` (the Reynolds rows' response to pressure and content changes)."""
         out = np.zeros(self.n)
-        local_product(e["dh"], self.K @ v_p, out)
+        local_product(e["dh"], self.base.deformation(v_p), out)
         pad = np.zeros(self.nf)
         pad[1:-1] = v_p
         local_product(e["dp"], pad, out)

@@ -27,6 +27,7 @@ import scipy.linalg as sla
 from transient.models.point.krylov import gmres_solve
 from transient.models.point.reduced import schur
 from transient.models.roller.krylov import DenseLU
+from transient.models.roller.line_fft import MatrixFreeStep
 
 #: GMRES iterations above which the preconditioner is refreshed at the next Newton iteration
 REFACTOR_ITERS = 12
@@ -53,13 +54,17 @@ def schur_system(film, u, e):
     (Reynolds rows divided by their scales) and the node-wise back-substitution ``dp = a_p + b_p z``, ``dtheta = a_th + b_t z``."""
     a_p, b_p, a_th, b_t = schur(film, u, e)
     S = film.schur_matrix(e, b_p, b_t)
-    r = np.empty(film.n + 1)
-    r[:-1] = -e["res"] - film.jacobian_product(e, a_p, a_th)
-    r[-1] = -e["load"] - film.weight @ a_p
     # rows by their scales (the step is unchanged; the conditioning of S improves by many decades)
     S[:-1] /= e["scale"][:, None]
-    r[:-1] /= e["scale"]
-    return S, r, (a_p, b_p, a_th, b_t)
+    return S, schur_rhs(film, e, a_p, a_th), (a_p, b_p, a_th, b_t)
+
+
+def schur_rhs(film, e, a_p, a_th):
+    """The right-hand side of the Schur system (Reynolds rows divided by their scales)."""
+    r = np.empty(film.n + 1)
+    r[:-1] = (-e["res"] - film.jacobian_product(e, a_p, a_th)) / e["scale"]
+    r[-1] = -e["load"] - film.weight @ a_p
+    return r
 
 
 def _gmres(S, r, pre):
@@ -114,17 +119,24 @@ def content_newton(film, u0, tol: float = 1e-10, max_iter: int = 60, step_max: f
     f = merit(e, e["scale"])
     stats = ContentNewtonStats(norms=[float(np.max(np.abs(f)))])
     m2 = float(f @ f)
-    pre, refresh = None, True
+    pre, refresh, step = None, True, None
     for _ in range(max_iter):
         if stats.norms[-1] < tol:
             return u, True, stats
-        S, r, (a_p, b_p, a_th, b_t) = schur_system(film, u, e)
-        if n < DIRECT_BELOW:
+        if film.matrix_free:
+            a_p, b_p, a_th, b_t = schur(film, u, e)
+            r = schur_rhs(film, e, a_p, a_th)
+            if step is None:
+                step = MatrixFreeStep(film)
+            z = step.solve(film, u, e, b_p, b_t, r, stats)
+        elif n < DIRECT_BELOW:
+            S, r, (a_p, b_p, a_th, b_t) = schur_system(film, u, e)
             with warnings.catch_warnings():  # an ill-conditioned step is judged by the line search
                 warnings.simplefilter("ignore", sla.LinAlgWarning)
                 z = sla.solve(S, r, check_finite=False)
             stats.factorisations += 1
         else:
+            S, r, (a_p, b_p, a_th, b_t) = schur_system(film, u, e)
             if refresh or pre is None:
                 pre = DenseLU(S)
                 stats.factorisations += 1

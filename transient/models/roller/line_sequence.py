@@ -11,7 +11,9 @@ both narrowing with M, only so far; where its path stops earlier, the next
 level continues from there), by continuation steps
 (:func:`transient.models.roller.continuation.follow`) started from the previous step's solution; the
 next, finer level starts from it interpolated (nested iteration). On the coarse levels a Newton
-iteration costs little; on the finest one, a few iterations with a reused factorisation.
+iteration costs little; on the finest one, a few iterations with a reused factorisation. Uniform levels
+finer than :data:`~transient.models.roller.line_fft.MATRIX_FREE_ABOVE` nodes take the matrix-free DC-FFT
+path of :mod:`transient.models.roller.line_fft`.
 """
 
 from __future__ import annotations
@@ -25,6 +27,7 @@ from threadpoolctl import threadpool_limits
 from transient.models.roller.continuation import follow
 from transient.models.roller.grid import TensorGrid
 from transient.models.roller.line_fbns import LineContentFilm
+from transient.models.roller.line_fft import matrix_free
 from transient.models.roller.line_newton import content_newton
 from transient.physics.line_formulas import moes_central
 from transient.solvers.newton import NewtonError, NewtonResult
@@ -133,13 +136,15 @@ def _solve_sequence(contact, tol, max_iter) -> SequenceResult:
 
     u, s, grid_prev = None, 0.0, None
     for k, grid in enumerate(levels):
-        kernel = contact.film_problem(grid).K
+        mf = contact.elastic and matrix_free(grid)  # DC-FFT elasticity (line_fft), else the dense matrix
+        first = contact.film_problem(grid, matrix_free=mf)
+        kernel = first.conv if mf else first.K
         cache = {}
 
-        def at(t, grid=grid, kernel=kernel, cache=cache):
+        def at(t, grid=grid, kernel=kernel, cache=cache, mf=mf):
             if t not in cache:
                 c = contact if t >= 1.0 else contact.with_load(w0 * (w1 / w0) ** t, a0 + t * (a1 - a0), nodes=grid.x)
-                cache[t] = (c, LineContentFilm(c.film_problem(grid, kernel=kernel)))
+                cache[t] = (c, LineContentFilm(c.film_problem(grid, kernel=kernel, matrix_free=mf)))
             return cache[t]
 
         def newton_at(t, u_start, iters):
