@@ -26,16 +26,19 @@ from __future__ import annotations
 import json
 import os
 import time
+import warnings
 from pathlib import Path
 
 import numpy as np
 import scipy.sparse.linalg as spla
+from threadpoolctl import threadpool_limits
 
 from transient.bench import best_of
 from transient.models.roller import line_newton
 from transient.models.roller.krylov import DenseLU
 from transient.models.roller.line_fbns import LineContentFilm
-from transient.models.roller.line_newton import GMRES_RESTART, GMRES_RTOL, _gmres, schur_system
+from transient.models.roller.line_contact import FilmResolutionWarning
+from transient.models.roller.line_newton import GMRES_RESTART, GMRES_RTOL, _gmres, content_newton, schur_system
 from transient.models.roller.line_sequence import carry, solve_sequence
 from transient.study.ehl_chart import chart_contact, chart_point
 
@@ -83,6 +86,56 @@ def iteration_cost(n: int, repeat: int = 3) -> dict:
                 schur=best_of(lambda: schur_system(lf, u, e), repeat)[0],
                 lu=best_of(lambda: DenseLU(S), repeat)[0],
                 gmres=best_of(lambda: _gmres(S, r, pre), repeat)[0])
+
+
+def richardson(values) -> tuple[float, float]:
+    """``(limit, observed order)`` from three values on grids each twice as fine (nan without a monotone
+    decrease of the differences)."""
+    a, b, d = values
+    ratio = (b - a) / (d - b) if d != b else float("inf")
+    if not ratio > 1.0:
+        return float("nan"), float("nan")
+    return d + (d - b) / (ratio - 1.0), float(np.log2(ratio))
+
+
+def newton_cost(n: int, M: float = 1000.0, L: float = 0.0, matrix_free: bool = True) -> dict:
+    """The finest level's film-content Newton on ``n`` uniform nodes, from the converged ``(n - 1)/2 + 1``-node
+    solution carried over (what :func:`solve_sequence` does last): iterations, GMRES iterations,
+    factorisations, wall and CPU seconds, seconds per iteration. ``matrix_free``: the DC-FFT path
+    (:mod:`transient.models.roller.line_fft`), else the dense Schur matrix with a reused LU."""
+    half = chart_contact(M, L, nodes=(n - 1) // 2 + 1, grid="uniform")
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", FilmResolutionWarning)
+        seq = solve_sequence(half)
+    c = chart_contact(M, L, nodes=n, grid="uniform")
+    lf = LineContentFilm(c.film_problem(matrix_free=matrix_free))
+    u0 = carry(seq.content.base.grid, seq.state, lf.base.grid)
+    with threadpool_limits(limits=1, user_api="blas"):
+        t0, c0 = time.perf_counter(), time.process_time()
+        u, ok, st = content_newton(lf, u0, tol=1e-10)
+        wall, cpu = time.perf_counter() - t0, time.process_time() - c0
+    return dict(nodes=n, matrix_free=matrix_free, converged=bool(ok), iterations=st.iterations, gmres=st.krylov,
+                factorisations=st.factorisations, wall_s=wall, cpu_s=cpu,
+                s_per_iteration=cpu / max(st.iterations, 1))
+
+
+def uniform_high_m(limits: dict, Ms=(300.0, 1000.0), Ls=(0.0, 10.0, 25.0),
+                   nodes=(1025, 2049, 4097, 8193, 16385)) -> list[dict]:
+    """``LineContact.steady`` on uniform grids at high M against the clustered grids' Richardson limits
+    ``limits[(M, L)] = (H_c, H_min)``: converged, resolved, wall, CPU, Newton iterations (all levels),
+    seconds per iteration, H_c and H_min error."""
+    out = []
+    for M in Ms:
+        for L in Ls:
+            for n in nodes:
+                r = chart_point(M, L, nodes=n, grid="uniform")
+                hc, hm = limits[(M, L)]
+                out.append(dict(M=M, L=L, nodes=n, success=r["success"], resolved=r["resolved"], wall_s=r["wall_s"],
+                                cpu_s=r["cpu_s"], iterations=r["iterations"],
+                                s_per_iteration=r["cpu_s"] / max(r["iterations"], 1), H_c=r["H_c"],
+                                H_min=r["H_min"], H_c_error=r["H_c"] / hc - 1.0, H_min_error=r["H_min"] / hm - 1.0,
+                                spacing_M=M * 5.5 / (n - 1)))
+    return out
 
 
 def summary(rows: list[dict]) -> dict:

@@ -33,17 +33,20 @@ from transient.models.roller.ehl_problem import EHLFilm
 from transient.models.roller.grid import TensorGrid
 from transient.physics.elasticity import LineConvolution
 
-#: uniform line grids with more nodes than this take the matrix-free path (a dense Schur matrix of 4097
-#: nodes is 134 MB and its LU ~50 GFlop)
-MATRIX_FREE_ABOVE = 2049
-#: the preconditioner's coarse grid has at most this many nodes
+#: uniform line grids with more nodes than this take the matrix-free path (measured at M = 1000, L = 0, the
+#: finest level's Newton: 0.029 s CPU per iteration against 0.077 s dense at 2049 nodes, 0.032 against 0.32 s
+#: at 4097; docs/bench/ehl_line.md)
+MATRIX_FREE_ABOVE = 1025
+#: the preconditioner's coarse grid has at most this many nodes (16385 nodes, M = 1000, one step: 30, 22, 12
+#: GMRES iterations with 513, 1025, 2049 coarse nodes; set-up 0.05, 0.16, 0.5 s)
 COARSE_MAX_NODES = 1025
-#: near field of the banded correction (nodes either side)
-NEAR = 2
+#: near field of the banded correction (nodes either side): 0, the self-influence, needs the fewest GMRES
+#: iterations (measured at 2049-16385 nodes, M = 1000: near 2, 8, 32 need 1-10x more or do not converge)
+NEAR = 0
 #: GMRES relative tolerance and restart length of a matrix-free Newton step
 RTOL, RESTART = 1e-8, 40
 #: GMRES iterations above which the coarse factorisation is refreshed at the next Newton iteration
-REFRESH_ITERS = 15
+REFRESH_ITERS = 30
 
 
 def matrix_free(grid: TensorGrid) -> bool:
