@@ -195,17 +195,22 @@ def main(out, quick: bool = False) -> str:
             charts[f"{law}/{density}/{grid}"] = rows
     sums = {k: summary(v) for k, v in charts.items()}
     conv = []
-    for L in ((0.0,) if quick else (0.0, 10.0, 25.0)):
-        rs = [chart_point(1000.0, L, nodes=n) for n in ((513, 1025) if quick else (1025, 2049, 4097))]
-        conv.append(dict(L=L, nodes=[r["nodes"] for r in rs], H_c=[r["H_c"] for r in rs],
-                         H_min=[r["H_min"] for r in rs], cpu_s=[r["cpu_s"] for r in rs]))
+    for M in ((1000.0,) if quick else (300.0, 1000.0)):
+        for L in ((0.0,) if quick else (0.0, 10.0, 25.0)):
+            rs = [chart_point(M, L, nodes=n) for n in ((513, 1025) if quick else (1025, 2049, 4097))]
+            conv.append(dict(M=M, L=L, nodes=[r["nodes"] for r in rs], H_c=[r["H_c"] for r in rs],
+                             H_min=[r["H_min"] for r in rs], cpu_s=[r["cpu_s"] for r in rs]))
     for c in conv:
         for key in ("H_c", "H_min"):
             if len(c[key]) == 3:
-                a, b, d = c[key]
-                ratio = (b - a) / (d - b) if d != b else float("inf")
-                c[key + "_limit"] = d + (d - b) / (ratio - 1.0) if ratio > 1.0 else float("nan")
-                c[key + "_order"] = float(np.log2(ratio)) if ratio > 0 else float("nan")
+                c[key + "_limit"], c[key + "_order"] = richardson(c[key])
+    high = []
+    if not quick:  # uniform grids at M >= 300 against the clustered grids' limits
+        limits = {(c["M"], c["L"]): (c["H_c_limit"], c["H_min_limit"]) for c in conv}
+        high = uniform_high_m(limits)
+    newton = [newton_cost(n, matrix_free=mf) for n, mf in
+              (((1025, True), (2049, True), (2049, False)) if quick else
+               ((2049, True), (2049, False), (4097, True), (4097, False), (8193, True), (16385, True), (32769, True)))]
     gm_points = ([("clustered", 100.0, 10.0)] if quick else
                  [(g, M, L) for g in GRIDS for M in (10.0, 100.0, 1000.0) for L in (0.0, 10.0, 25.0)])
     gm = gmres_side_by_side(gm_points, nodes)
@@ -222,9 +227,38 @@ def main(out, quick: bool = False) -> str:
     costs = [iteration_cost(n) for n in ((257, 513, 1025) if quick else (257, 513, 1025, 2049, 4097))]
     threads = os.environ.get("OPENBLAS_NUM_THREADS", "unset")
     record = dict(nodes=nodes, charts=charts, summaries=sums, grid_convergence=conv, gmres=gm, side_by_side=side,
-                  iteration_cost=costs, openblas_threads=threads)
+                  iteration_cost=costs, uniform_high_m=high, matrix_free_newton=newton, openblas_threads=threads)
     (out / "ehl_line.json").write_text(json.dumps(record, indent=1, default=float))
-    return _markdown(quick, nodes, Ms, Ls, charts, sums, conv, gm, side, costs, threads)
+    return (_markdown(quick, nodes, Ms, Ls, charts, sums, conv, gm, side, costs, threads)
+            + "\n" + _markdown_uniform(high, newton))
+
+
+def _markdown_uniform(high, newton) -> str:
+    lines = ["", "### Fine uniform grids: DC-FFT elasticity and matrix-free Newton steps", "",
+             "Uniform grids above 1025 nodes take the matrix-free path (`transient.models.roller.line_fft`: the "
+             "elastic film by a zero-padded FFT product, the Newton steps by GMRES with a coarse-grid dense LU "
+             "(at most 1025 nodes) and the self-influence near field). The finest level's Newton at M = 1000, L = 0, "
+             "from the converged solution of the half grid carried over (what `steady` does last), side by side "
+             "with the dense Schur matrix and its reused single-precision LU (one process, BLAS on one thread):", "",
+             "| nodes | path | converged | Newton its | GMRES its | factorisations | CPU [s] | wall [s] | "
+             "CPU per iteration [s] |", "|---|---|---|---|---|---|---|---|---|"]
+    for r in newton:
+        lines.append(f"| {r['nodes']} | {'DC-FFT, matrix-free' if r['matrix_free'] else 'dense'} | "
+                     f"{'yes' if r['converged'] else 'NO'} | {r['iterations']} | {r['gmres']} | {r['factorisations']} | "
+                     f"{r['cpu_s']:.3f} | {r['wall_s']:.3f} | {r['s_per_iteration']:.4f} |")
+    if high:
+        lines += ["", "`LineContact.steady` on uniform grids (Barus, incompressible, domain [-4 b, 1.5 b], cold starts, "
+                  "all grid levels and the load path) against the Richardson limit of the clustered grids 1025 / 2049 "
+                  "/ 4097 (table above); M dx: the Moes load times the spacing (units of b), resolved where <= 0.6:", "",
+                  "| M | L | nodes | M dx | converged | wall [s] | CPU [s] | Newton its | CPU per it [s] | H_c | "
+                  "H_c error | H_min | H_min error |", "|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+        for r in high:
+            lines.append(f"| {r['M']:g} | {r['L']:g} | {r['nodes']} | {r['spacing_M']:.2f} | "
+                         f"{'yes' if r['success'] else 'NO'}{'' if r['resolved'] else ' (warned)'} | "
+                         f"{r['wall_s']:.2f} | {r['cpu_s']:.2f} | {r['iterations']} | {r['s_per_iteration']:.4f} | "
+                         f"{r['H_c']:.4f} | {100 * r['H_c_error']:+.2f} % | {r['H_min']:.4f} | "
+                         f"{100 * r['H_min_error']:+.2f} % |")
+    return "\n".join(lines)
 
 
 def _markdown(quick, nodes, Ms, Ls, charts, sums, conv, gm, side, costs, threads) -> str:
@@ -274,13 +308,13 @@ def _markdown(quick, nodes, Ms, Ls, charts, sums, conv, gm, side, costs, threads
                              f"**NO** ({r['cpu_s']:.2f})")
             lines.append(f"| {M:g} | " + " | ".join(cells) + " |")
         lines.append("")
-    lines += ["Grid convergence at M = 1000 (Barus, incompressible, clustered grids; Richardson from the last three):",
-              "", "| L | nodes | H_c | H_min | CPU [s] | H_c limit (order) | H_min limit (order) |",
-              "|---|---|---|---|---|---|---|"]
+    lines += ["Grid convergence at M = 300 and 1000 (Barus, incompressible, clustered grids; Richardson from the "
+              "last three):", "", "| M | L | nodes | H_c | H_min | CPU [s] | H_c limit (order) | H_min limit (order) |",
+              "|---|---|---|---|---|---|---|---|"]
     for c in conv:
         lim = (f"{c['H_c_limit']:.4f} ({c['H_c_order']:.1f}) | {c['H_min_limit']:.4f} ({c['H_min_order']:.1f})"
                if "H_c_limit" in c else "- | -")
-        lines.append(f"| {c['L']:g} | {' / '.join(map(str, c['nodes']))} | "
+        lines.append(f"| {c['M']:g} | {c['L']:g} | {' / '.join(map(str, c['nodes']))} | "
                      f"{' / '.join(f'{v:.4f}' for v in c['H_c'])} | {' / '.join(f'{v:.4f}' for v in c['H_min'])} | "
                      f"{' / '.join(f'{v:.2f}' for v in c['cpu_s'])} | {lim} |")
     own = sum(sum(g["own"]) for g in gm)

@@ -89,7 +89,9 @@ class LineContact:
     entrainment), ``viscosity`` eta0 [Pa s], ``pressure_viscosity`` alpha [1/Pa], ``modulus`` E' [Pa];
     ``density`` ``"dowson-higginson"`` (the paper's constants 0.58, 1.68 /GPa unless ``dh_constants``)
     or ``"incompressible"``; ``viscosity_law`` ``"barus"``, ``"roelands"`` or ``"isoviscous"``;
-    ``grid``: number of nodes (uniform, boundary nodes included) or the node positions in units of b;
+    ``grid``: number of nodes (uniform, boundary nodes included), the node positions in units of b, or
+    ``"resolved"``: uniform, at least 401 nodes and :meth:`resolving_nodes` (uniform grids above 1025 nodes
+    are solved with DC-FFT elasticity, :mod:`transient.models.roller.line_fft`);
     ``domain`` (inlet, outlet) in units of b; ``scheme`` ``"upwind2"`` or ``"upwind1"``;
     ``elastic=False`` for a rigid cylinder.
     """
@@ -113,6 +115,13 @@ class LineContact:
         hi = check_range("domain[1] (outlet)", domain[1], "b", 1.0, 1e5)
         self.domain = (lo, hi)
         self.b, self.p_h = hertz_line(self.load_per_length, self.radius, self.modulus)
+        self.U, self.G, self.W = line_groups(self.lubricant.viscosity, self.speed, self.lubricant.pressure_viscosity,
+                                             self.load_per_length, self.modulus, self.radius)
+        self.M, self.L = moes_groups(self.U, self.G, self.W)
+        if isinstance(grid, str):
+            if grid != "resolved":
+                raise ValueError(f"grid = {grid!r}: a number of nodes, the node positions (units of b) or 'resolved'")
+            grid = max(401, self.resolving_nodes())
         if np.ndim(grid) == 0:
             n = int(check_range("grid", grid, "nodes", 11, 100001))
             nodes = np.linspace(lo, hi, n)
@@ -126,9 +135,6 @@ class LineContact:
             if nodes[0] != lo or nodes[-1] != hi:
                 raise ValueError(f"grid nodes must start at the inlet {lo} and end at the outlet {hi} (units of b)")
         self.grid = TensorGrid(nodes)
-        self.U, self.G, self.W = line_groups(self.lubricant.viscosity, self.speed, self.lubricant.pressure_viscosity,
-                                             self.load_per_length, self.modulus, self.radius)
-        self.M, self.L = moes_groups(self.U, self.G, self.W)
         # the loaded zone: the Hertz contact, or below M = 2.5 the hydrodynamic length ~ sqrt(2 R h) ~ 2.5 b / M
         zone = max(1.0, 2.5 / self.M)
         inside = np.count_nonzero(np.abs(nodes) < zone)
@@ -275,6 +281,12 @@ class LineContact:
             raise EHLConvergenceError(fallback.message, fallback)
         return self._check_resolution(fallback) if fallback.success else fallback
 
+    def resolving_nodes(self) -> int:
+        """The smallest uniform node count ``2^k + 1`` over :attr:`domain` whose spacing resolves the inlet edge,
+        ``dx <= INLET_RESOLUTION / M`` (the film to ~1 %; a power of two for the grid levels)."""
+        intervals = (self.domain[1] - self.domain[0]) * self.M / INLET_RESOLUTION
+        return 2 ** max(4, math.ceil(math.log2(intervals))) + 1
+
     def _check_resolution(self, res: LineSteady) -> LineSteady:
         """``res``, its message noting (and a :class:`FilmResolutionWarning` raised) when the grid's spacing
         at the inlet edge exceeds ``INLET_RESOLUTION / M``."""
@@ -282,7 +294,8 @@ class LineContact:
         if self.M * dx > INLET_RESOLUTION:
             note = (f"under-resolved: node spacing {dx:.3g} b at the inlet edge x = -b, above "
                     f"{INLET_RESOLUTION}/M = {INLET_RESOLUTION / self.M:.3g} b: the film is that of the discrete "
-                    "equations, not within ~1 % of the grid limit (cluster the nodes at x = -b)")
+                    f"equations, not within ~1 % of the grid limit: use {self.resolving_nodes()} uniform nodes "
+                    "(grid='resolved') or cluster the nodes at x = -b")
             res.message += "; " + note
             warnings.warn(f"LineContact.steady at M = {self.M:.3g}: {note}", FilmResolutionWarning, stacklevel=3)
         return res
