@@ -7,8 +7,8 @@ In one run (fully flooded domains of :mod:`transient.study.ehl_chart`, 1025 node
   uniform and the clustered grid: converged count, slowest point (CPU and wall), median and largest CPU,
   largest |H_c / Moes - 1| (Moes' formula is for Barus, incompressible: for the other variants the
   deviation is the rheology's effect, not an error);
-* grid convergence of H_c and H_min at M = 1000 on the clustered grids (1025, 2049, 4097 nodes) and the
-  Richardson limit;
+* grid convergence of H_c and H_min at M = 300 and 1000 on the clustered grids (1025, 2049, 4097 nodes)
+  and the Richardson limits;
 * side by side, interleaved, on the same chart points: the Newton steps' GMRES by the point film's
   right-preconditioned :func:`transient.models.point.krylov.gmres_solve` (used) and by scipy's ``gmres``;
 * side by side at a few points: :meth:`LineContact.steady_reynolds` (semismooth Newton on the
@@ -16,7 +16,11 @@ In one run (fully flooded domains of :mod:`transient.study.ehl_chart`, 1025 node
   of the two films (the same discrete problem);
 * the cost of the pieces of one Newton iteration against the node count n: residual, Schur matrix
   assembly (both O(n^2), dense elasticity), single-precision LU (O(n^3), made only when the reused one
-  stops preconditioning), one preconditioned GMRES solve.
+  stops preconditioning), one preconditioned GMRES solve;
+* fine uniform grids (:mod:`transient.models.roller.line_fft`): the finest level's Newton with DC-FFT
+  elasticity and matrix-free steps against N (2049 ... 32769 nodes), side by side with the dense path where
+  it fits; ``steady`` on uniform grids of 1025 ... 16385 nodes at M = 300 and 1000 against the clustered
+  grids' Richardson limits (wall, CPU, Newton iterations, CPU per iteration, H_c and H_min errors).
 
 ``main(out, quick)`` writes ``ehl_line.json`` into ``out`` and returns the markdown section.
 """

@@ -238,7 +238,11 @@ class LineContact:
         ``result`` flagged ``success=False`` with the residual history) if no path reaches the contact,
         unless ``raise_on_failure=False``. A converged film on a grid too coarse at the inlet edge for this
         load (spacing above ``INLET_RESOLUTION / M``) warns :class:`FilmResolutionWarning` and says so in its
-        message."""
+        message, naming the uniform node count that resolves it (:meth:`resolving_nodes`; the grid is the
+        user's: ``grid="resolved"`` asks for that count). Uniform grids above 1025 nodes are solved matrix-free
+        (DC-FFT elasticity, :mod:`transient.models.roller.line_fft`): there a film-content solution that
+        differs from the Reynolds-condition one in the rupture node is returned as it is (with a note), and
+        there is no dense fallback."""
         if initial is not None or penalty is not None:
             return self.steady_reynolds(initial, tol, max_iter, raise_on_failure, penalty)
         t0 = time.perf_counter()

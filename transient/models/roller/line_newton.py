@@ -9,7 +9,10 @@ then: the step solves ``S dz = r`` by right-preconditioned GMRES (Saad & Schultz
 :func:`~transient.models.point.krylov.gmres_solve`) with the LU factors of an earlier ``S`` in single
 precision; a new factorisation is made when GMRES needs more than :data:`REFACTOR_ITERS` iterations or does
 not reach its tolerance. Near the solution ``S`` changes
-little, so most Newton iterations cost a few ``O(n^2)`` products instead of an ``O(n^3)`` LU.
+little, so most Newton iterations cost a few ``O(n^2)`` products instead of an ``O(n^3)`` LU. On the
+DC-FFT film of fine uniform grids (``film.matrix_free``) ``S`` is never formed: its products and the
+two-level preconditioner of :mod:`transient.models.roller.line_fft` take the step (``O(n log n)`` per
+product).
 
 Globalisation as :func:`transient.models.point.fbns.fbns`: the step is cut so that the film stays
 positive and no pressure moves by more than ``step_max`` plus half its value, then halved until the
