@@ -40,9 +40,9 @@ from threadpoolctl import threadpool_limits
 from transient.bench import best_of
 from transient.models.roller import line_newton
 from transient.models.roller.krylov import DenseLU
-from transient.models.roller.line_fbns import LineContentFilm
 from transient.models.roller.line_contact import FilmResolutionWarning
-from transient.models.roller.line_newton import GMRES_RESTART, GMRES_RTOL, _gmres, content_newton, schur_system
+from transient.models.roller.line_fbns import LineContentFilm, schur_system
+from transient.models.roller.line_newton import GMRES_RESTART, GMRES_RTOL, _gmres, content_newton
 from transient.models.roller.line_sequence import carry, solve_sequence
 from transient.study.ehl_chart import chart_contact, chart_point
 

@@ -8,8 +8,8 @@ import numpy as np
 import pytest
 
 from transient.models.roller.line_contact import FilmResolutionWarning
-from transient.models.roller.line_fbns import LineContentFilm
-from transient.models.roller.line_newton import content_newton, schur_system
+from transient.models.roller.line_fbns import LineContentFilm, schur_system
+from transient.models.roller.line_newton import content_newton
 from transient.models.roller.line_sequence import cold_start, solve_sequence
 from transient.physics.line_formulas import moes_central
 from transient.study.ehl_chart import chart_contact, chart_point

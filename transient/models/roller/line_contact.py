@@ -26,11 +26,11 @@ import numpy as np
 
 from transient.checks import check_positive, check_range
 from transient.models.roller.continuation import PathResult, follow
+from transient.models.roller.dry import edge_positions, polonsky_keer
 from transient.models.roller.ehl_problem import EHLFilm, interpolate_state, solve_steady
 from transient.models.roller.grid import TensorGrid
 from transient.models.roller.line_fft import LineFFTFilm, matrix_free
 from transient.models.roller.line_sequence import inlet_spacing, solve_sequence
-from transient.models.roller.dry import edge_positions, polonsky_keer
 from transient.models.roller.results import EHLConvergenceError, LineDry, LineSteady, LineTransient
 from transient.models.roller.transient import load_ratio, run_squeeze
 from transient.physics.elasticity import line_influence

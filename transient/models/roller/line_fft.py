@@ -31,6 +31,7 @@ import scipy.sparse.linalg as spla
 from transient.models.point.krylov import gmres_solve
 from transient.models.roller.ehl_problem import EHLFilm
 from transient.models.roller.grid import TensorGrid
+from transient.models.roller.line_fbns import OFFSETS, LineContentFilm, schur_system
 from transient.physics.elasticity import LineConvolution
 
 #: uniform line grids with more nodes than this take the matrix-free path (measured at M = 1000, L = 0, the
@@ -83,8 +84,6 @@ class LineFFTFilm(EHLFilm):
 def local_matrix(d, nf: int) -> sp.csr_matrix:
     """The local slots ``d`` (n, 4: centre, west, east, west-west) of the Reynolds rows as a sparse
     ``(n, nf)`` matrix over the full nodes."""
-    from transient.models.roller.line_fbns import OFFSETS
-
     n = d.shape[0]
     rows = np.repeat(np.arange(n), OFFSETS.size)
     cols = (np.arange(n)[:, None] + 1 + OFFSETS[None, :]).ravel()
@@ -171,9 +170,6 @@ class TwoLevel:
     """The two-level preconditioner (module docstring) of the Schur operator ``A`` at the fine state ``u``."""
 
     def __init__(self, A: SchurOperator, u, factor: int, near: int = NEAR, coarse_kernel=None):
-        from transient.models.roller.line_fbns import LineContentFilm
-        from transient.models.roller.line_newton import schur_system
-
         fine = A.c
         base = fine.base
         xf = base.grid.x

@@ -30,6 +30,7 @@ import scipy.linalg as sla
 from transient.models.point.krylov import gmres_solve
 from transient.models.point.reduced import schur
 from transient.models.roller.krylov import DenseLU
+from transient.models.roller.line_fbns import schur_rhs, schur_system
 from transient.models.roller.line_fft import MatrixFreeStep
 
 #: GMRES iterations above which the preconditioner is refreshed at the next Newton iteration
@@ -50,24 +51,6 @@ class ContentNewtonStats:
     factorisations: int = 0
     krylov: int = 0
     norms: list = field(default_factory=list)
-
-
-def schur_system(film, u, e):
-    """``(S, r, (a_p, b_p, a_th, b_t))``: the Schur matrix and right-hand side of the Newton step at ``u``
-    (Reynolds rows divided by their scales) and the node-wise back-substitution ``dp = a_p + b_p z``, ``dtheta = a_th + b_t z``."""
-    a_p, b_p, a_th, b_t = schur(film, u, e)
-    S = film.schur_matrix(e, b_p, b_t)
-    # rows by their scales (the step is unchanged; the conditioning of S improves by many decades)
-    S[:-1] /= e["scale"][:, None]
-    return S, schur_rhs(film, e, a_p, a_th), (a_p, b_p, a_th, b_t)
-
-
-def schur_rhs(film, e, a_p, a_th):
-    """The right-hand side of the Schur system (Reynolds rows divided by their scales)."""
-    r = np.empty(film.n + 1)
-    r[:-1] = (-e["res"] - film.jacobian_product(e, a_p, a_th)) / e["scale"]
-    r[-1] = -e["load"] - film.weight @ a_p
-    return r
 
 
 def _gmres(S, r, pre):
