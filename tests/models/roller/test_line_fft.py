@@ -48,11 +48,12 @@ def test_fft_film_and_schur_operator_equal_the_dense_ones():
     A = SchurOperator(fft, ef, b_p, b_t)
     v = np.random.default_rng(0).standard_normal(dense.n + 1)
     assert np.max(np.abs(A.matvec(v) - S @ v)) <= 1e-9 * np.max(np.abs(S @ v))
-    # the two-level preconditioner: GMRES on the Newton step converges, in a fraction of the unpreconditioned
-    # iterations (which do not reach the tolerance in 200)
-    z, its, ok = gmres_solve(A, r, TwoLevel(A, u, factor=2), 1e-8, restart=200, max_iter=200)
-    _, its_none, _ = gmres_solve(A, r, _Identity(), 1e-8, restart=200, max_iter=200)
-    assert ok and its < its_none / 4
+    # the two-level preconditioner: GMRES on the Newton step converges in at most 30 iterations (measured 24);
+    # without it,
+    # not in 60
+    z, its, ok = gmres_solve(A, r, TwoLevel(A, u, factor=2), 1e-8, restart=60, max_iter=60)
+    _, _, ok_none = gmres_solve(A, r, _Identity(), 1e-8, restart=60, max_iter=60)
+    assert ok and its <= 30 and not ok_none
     assert np.linalg.norm(S @ z - r) <= 1e-7 * np.linalg.norm(r)
 
 
