@@ -49,8 +49,7 @@ def test_fft_film_and_schur_operator_equal_the_dense_ones():
     v = np.random.default_rng(0).standard_normal(dense.n + 1)
     assert np.max(np.abs(A.matvec(v) - S @ v)) <= 1e-9 * np.max(np.abs(S @ v))
     # the two-level preconditioner: GMRES on the Newton step converges in at most 30 iterations (measured 24);
-    # without it,
-    # not in 60
+    # without it, not in 60
     z, its, ok = gmres_solve(A, r, TwoLevel(A, u, factor=2), 1e-8, restart=60, max_iter=60)
     _, _, ok_none = gmres_solve(A, r, _Identity(), 1e-8, restart=60, max_iter=60)
     assert ok and its <= 30 and not ok_none
