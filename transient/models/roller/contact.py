@@ -53,6 +53,7 @@ from transient.models.roller.geometry import TaperedRoller
 from transient.models.roller.grid import TensorGrid, clustered_axis
 from transient.models.roller.krylov import DenseLU, NewtonKrylov, NewtonMatrix, TwoLevel
 from transient.models.roller.results import EHLConvergenceError, RollerSteady, RollerTransient
+from transient.models.roller.roller_fbns import RollerContentFilm, carry_content, content_path, content_start, solve_content
 from transient.models.roller.transient import load_ratio, run_squeeze
 from transient.physics.line_formulas import dowson_toyoda_central
 from transient.physics.lubricant import DOWSON_HIGGINSON_PARK, Lubricant
@@ -61,6 +62,8 @@ from transient.solvers.newton import NewtonError
 PAPER_GRID = (94, 45)
 #: Couette flux of the Reynolds equation (:mod:`transient.models.roller.kernels`)
 SCHEMES = ("auto", "upwind2", "upwind1", "limited")
+#: steady forms: the mass-conserving film content (FBNS) and the Reynolds condition
+METHODS = ("fbns", "reynolds")
 #: above this mid-plane Moes load the coarsest level is reached by load continuation
 M_EASY_2D = 3.2
 
@@ -345,8 +348,95 @@ class RollerContact:
 
     # -- steady ---------------------------------------------------------------------------------------
     def steady(self, tol: float = 1e-8, max_iter: int = 60, raise_on_failure: bool = True,
-               penalty: float | None = None) -> RollerSteady:
-        """Steady EHL film (module docstring). The coarsest level starts from the dry pressure with
+               penalty: float | None = None, method: str = "fbns") -> RollerSteady:
+        """Steady EHL film. ``method="fbns"`` (default): the mass-conserving film-content form by
+        Fischer-Burmeister-Newton-Schur (:meth:`steady_content`); ``"reynolds"``: the Reynolds-condition form
+        (:meth:`steady_reynolds`), which ``penalty`` (the transient's limit) needs."""
+        if method not in METHODS:
+            raise ValueError(f"method = {method!r} is not one of {METHODS}")
+        if penalty is not None or method == "reynolds":
+            return self.steady_reynolds(tol, max_iter, raise_on_failure, penalty)
+        return self.steady_content(tol, max_iter, raise_on_failure)
+
+    def steady_content(self, tol: float = 1e-8, max_iter: int = 60, raise_on_failure: bool = True) -> RollerSteady:
+        """Steady film of the mass-conserving form (:mod:`transient.models.roller.roller_fbns`) by FBNS Newton
+        with a reused single-precision factorisation. Nested iteration over :meth:`levels`: the coarsest level
+        starts from the dry pressure (:func:`content_start`) -- above the paper case's mid-plane M (3.2) by load
+        continuation from it (:func:`content_path`) on the coarsest level whose x spacing resolves the load --
+        finer levels from the coarser solution interpolated. ``tol``: the largest scaled residual (Reynolds
+        rows by their diagonal, Fischer-Burmeister rows, load balance). Raises :class:`EHLConvergenceError`
+        (with the last iterate) unless ``raise_on_failure=False``; a failure above the paper load names the
+        row whose x spacing does not resolve its own load (:meth:`local_resolution`)."""
+        t0, c0 = time.perf_counter(), time.process_time()
+        specs = self._level_specs()
+        info = {"method": "fbns", "levels": []}
+        owner, u, g_prev, iters, ok, msg, norms = self, None, None, 0, True, "", []
+        for k, spec in enumerate(specs):
+            g = self.grid if k == len(specs) - 1 else self.make_grid(*spec)
+            cf = RollerContentFilm(self.film_problem(g, "fft" if spec[0] == "uniform" else "dense"))
+            level = {"grid": [int(g.x.size), int(g.y.size)]}
+            if k == 0 and self.mid_plane_M > M_EASY_2D:
+                path = content_path(self, spec, self.load * M_EASY_2D / self.mid_plane_M, tol, STEP_ITERATIONS)
+                info["continuation"] = dict(message=path.message, steps=path.steps, rejected=path.rejected,
+                                            loads=[p[0] for p in path.path], attempts=path.attempts)
+                u, ok, its, norms = path.state, path.success, path.iterations, path.residual_norms
+                if not ok:
+                    cf, owner = path.film, path.contact
+                    msg = f"level 1/{len(specs)} ({g.x.size} x {g.y.size} nodes): {path.message}"
+                    if path.path:
+                        msg += f" (last converged load {path.path[-1][0]:.4g} N of {self.load:.4g} N)"
+            else:
+                u0 = content_start(self, cf) if k == 0 else carry_content(g_prev, u, g)
+                try:
+                    nr = solve_content(cf, u0, tol, max_iter if k == 0 else STEP_ITERATIONS,
+                                       f"RollerContact.steady FBNS Newton ({g.x.size} x {g.y.size})")
+                    ok = True
+                except NewtonError as exc:
+                    nr, ok = exc.result, False
+                    msg = f"level {k + 1}/{len(specs)} ({g.x.size} x {g.y.size} nodes): {exc}"
+                u, its, norms = nr.x, nr.iterations, nr.residual_norms
+                level["factorisations"] = int(nr.factorisations)
+                level["gmres_iterations"] = int(nr.krylov)
+            level["iterations"] = int(its)
+            info["levels"].append(level)
+            iters += its
+            g_prev = g
+            if not ok:
+                break
+        info["cpu_s"] = time.process_time() - c0
+        if ok:
+            msg = f"converged: {iters} Newton iterations over {len(specs)} grid level(s)"
+        return owner._finish(cf, u, ok, msg, iters, norms, t0, info, raise_on_failure)
+
+    def _level_specs(self):
+        """:meth:`levels`, above the paper case's load from the coarsest one whose x spacing resolves the
+        mid-plane's load (``contact_spacing M <= 4``)."""
+        specs = self.levels()
+        if self.mid_plane_M > M_EASY_2D and specs[0][0] == "clustered":
+            fine_enough = [self.contact_spacing(self.make_grid(*sp)) * self.mid_plane_M <= 4.0 for sp in specs]
+            specs = specs[fine_enough.index(True) if any(fine_enough) else -1:]
+        return specs
+
+    def _finish(self, cf, u, ok, msg, iters, norms, t0, info, raise_on_failure):
+        """The :class:`RollerSteady` of a film-content state; a failure names an under-resolved row."""
+        n = cf.n
+        state = np.append(u[:n], u[-1])
+        res = self.result(cf.base, state, ok, msg, iters, norms, time.perf_counter() - t0, info, content=u[n: 2 * n])
+        if not ok and np.any(res.pressure > 0.0):
+            r = self.local_resolution(res)
+            info["local_resolution"] = dict(worst_y=r["worst_y"], worst_ratio=r["worst_ratio"])
+            if r["worst_ratio"] > 1.0:
+                k = int(np.nanargmax(r["ratio"]))
+                res.message = msg + (f"; the row at y = {1e3 * r['worst_y']:.3f} mm carries a local M = {r['M'][k]:.3g}: "
+                                     f"its x spacing is {r['worst_ratio']:.2f} times 4 b/M there (under-resolved, "
+                                     "refine x)")
+        if not ok and raise_on_failure:
+            raise EHLConvergenceError(res.message, res)
+        return res
+
+    def steady_reynolds(self, tol: float = 1e-8, max_iter: int = 60, raise_on_failure: bool = True,
+                        penalty: float | None = None) -> RollerSteady:
+        """Steady film of the Reynolds-condition form (module docstring). The coarsest level starts from the dry pressure with
         pseudo-transient continuation (backward-Euler steps of the squeeze-film transient, first step
         0.3 c/u) and is solved to ``sqrt(tol)`` -- above the paper case's mid-plane M (3.2) it is reached by
         load continuation instead (:meth:`continuation`; ``solver_info["continuation"]``); finer levels
@@ -358,11 +448,7 @@ class RollerContact:
         grid = self.grid
         u, g_prev, iters, ok, msg, info = None, None, 0, True, "", {"levels": []}
         owner = self  # the contact whose scales the state is in (a failed path's last converged load)
-        specs = self.levels()
-        if self.mid_plane_M > M_EASY_2D and specs[0][0] == "clustered":
-            # the path runs on the coarsest level fine enough for this load (as LineContact.steady)
-            fine_enough = [self.contact_spacing(self.make_grid(*sp)) * self.mid_plane_M <= 4.0 for sp in specs]
-            specs = specs[fine_enough.index(True) if any(fine_enough) else -1:]
+        specs = self._level_specs()
         for k, spec in enumerate(specs):
             last = k == len(specs) - 1
             g = grid if last else self.make_grid(*spec)
@@ -585,7 +671,7 @@ class RollerContact:
                                message=sol.message, stats=sol.stats, n_steps=sol.stats.n_steps, n_jacobians=sol.stats.n_jac,
                                wall_time=wall, final_state=sol.y[-1].copy(), final_time=float(sol.t[-1] * t_ref))
 
-    def result(self, film: EHLFilm, u, ok, msg, iters, norms, wall, info=None) -> RollerSteady:
+    def result(self, film: EHLFilm, u, ok, msg, iters, norms, wall, info=None, content=None) -> RollerSteady:
         s = self.scales
         g = film.grid
         rm = self.roller.mean_radius
@@ -604,4 +690,5 @@ class RollerContact:
                             footprint_length=s["d"] * s["B"] * rm, profile_start=self.roller.profile_start,
                             success=ok, message=msg, iterations=int(iters),
                             wall_time=wall, residual_norms=list(map(float, norms)), state=np.array(u, float),
-                            solver_info=info or {})
+                            solver_info=info or {},
+                            content=np.ones(g.shape_full) if content is None else g.full(content, boundary=1.0))

@@ -139,6 +139,8 @@ class RollerSteady(SteadyResult):
     wall_time: float = quantity("s", 0.0)
     state: np.ndarray = quantity("-", default_factory=lambda: np.zeros(0))
     solver_info: dict = field(default_factory=dict)
+    #: film content theta (1: full film; < 1: cavitated, the fraction of the gap filled), shaped like ``film``
+    content: np.ndarray = quantity("-", default_factory=lambda: np.zeros((0, 0)))
 
     @property
     def X(self):
