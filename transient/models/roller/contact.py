@@ -63,7 +63,7 @@ PAPER_GRID = (94, 45)
 #: Couette flux of the Reynolds equation (:mod:`transient.models.roller.kernels`)
 SCHEMES = ("auto", "upwind2", "upwind1", "limited")
 #: steady forms: the mass-conserving film content (FBNS) and the Reynolds condition
-METHODS = ("fbns", "reynolds")
+METHODS = ("auto", "fbns", "reynolds")
 #: above this mid-plane Moes load the coarsest level is reached by load continuation
 M_EASY_2D = 3.2
 
@@ -348,12 +348,15 @@ class RollerContact:
 
     # -- steady ---------------------------------------------------------------------------------------
     def steady(self, tol: float = 1e-8, max_iter: int = 60, raise_on_failure: bool = True,
-               penalty: float | None = None, method: str = "fbns") -> RollerSteady:
-        """Steady EHL film. ``method="fbns"`` (default): the mass-conserving film-content form by
-        Fischer-Burmeister-Newton-Schur (:meth:`steady_content`); ``"reynolds"``: the Reynolds-condition form
-        (:meth:`steady_reynolds`), which ``penalty`` (the transient's limit) needs."""
+               penalty: float | None = None, method: str = "auto") -> RollerSteady:
+        """Steady EHL film. ``method="fbns"``: the mass-conserving film-content form by
+        Fischer-Burmeister-Newton-Schur (:meth:`steady_content`; dense elasticity); ``"reynolds"``: the
+        Reynolds-condition form (:meth:`steady_reynolds`), which ``penalty`` (the transient's limit) and the
+        uniform DC-FFT grids (Newton-Krylov) use; ``"auto"``: FBNS on clustered grids, else Reynolds."""
         if method not in METHODS:
             raise ValueError(f"method = {method!r} is not one of {METHODS}")
+        if method == "auto":
+            method = "reynolds" if self.grid_spec[0] == "uniform" else "fbns"
         if penalty is not None or method == "reynolds":
             return self.steady_reynolds(tol, max_iter, raise_on_failure, penalty)
         return self.steady_content(tol, max_iter, raise_on_failure)
@@ -372,11 +375,13 @@ class RollerContact:
         info = {"method": "fbns", "levels": []}
         owner, u, g_prev, iters, ok, msg, norms = self, None, None, 0, True, "", []
         for k, spec in enumerate(specs):
-            g = self.grid if k == len(specs) - 1 else self.make_grid(*spec)
+            last = k == len(specs) - 1
+            g = self.grid if last else self.make_grid(*spec)
+            tol_k = tol if last else math.sqrt(tol)
             cf = RollerContentFilm(self.film_problem(g, "fft" if spec[0] == "uniform" else "dense"))
             level = {"grid": [int(g.x.size), int(g.y.size)]}
             if k == 0 and self.mid_plane_M > M_EASY_2D:
-                path = content_path(self, spec, self.load * M_EASY_2D / self.mid_plane_M, tol, STEP_ITERATIONS)
+                path = content_path(self, spec, self.load * M_EASY_2D / self.mid_plane_M, tol_k, STEP_ITERATIONS)
                 info["continuation"] = dict(message=path.message, steps=path.steps, rejected=path.rejected,
                                             loads=[p[0] for p in path.path], attempts=path.attempts)
                 u, ok, its, norms = path.state, path.success, path.iterations, path.residual_norms
@@ -388,7 +393,7 @@ class RollerContact:
             else:
                 u0 = content_start(self, cf) if k == 0 else carry_content(g_prev, u, g)
                 try:
-                    nr = solve_content(cf, u0, tol, max_iter if k == 0 else STEP_ITERATIONS,
+                    nr = solve_content(cf, u0, tol_k, max_iter if k == 0 else STEP_ITERATIONS,
                                        f"RollerContact.steady FBNS Newton ({g.x.size} x {g.y.size})")
                     ok = True
                 except NewtonError as exc:
@@ -533,7 +538,18 @@ class RollerContact:
         1.5 b(y) of the centre line is <= 4 b(y)/M(y) (docs/ehl.md, section 7). Returns the arrays ``y`` [m],
         ``M``, ``spacing`` (in units of b(y)) and ``ratio = spacing M/4`` (> 1: under-resolved; nan where
         the row carries no load), and the worst row's ``worst_y`` [m] and ``worst_ratio``."""
-        x, y, p = steady.x, steady.y, steady.pressure
+        return self._row_resolution(steady.x, steady.y, steady.pressure)
+
+    def dry_resolution(self, grid: TensorGrid | None = None) -> dict:
+        """:meth:`local_resolution` of ``grid`` (default: this contact's) with the dry pressure for the
+        EHL one (the rows carry nearly the same loads): known before any Newton iteration."""
+        g = self.grid if grid is None else grid
+        d, B = self.dry(), self.scales["B"] * self.roller.mean_radius
+        f = RegularGridInterpolator((d.y, d.x), d.pressure, bounds_error=False, fill_value=0.0)
+        yy, xx = np.meshgrid(g.y * B, g.x * B, indexing="ij")
+        return self._row_resolution(g.x * B, g.y * B, f(np.stack([yy.ravel(), xx.ravel()], axis=1)).reshape(yy.shape))
+
+    def _row_resolution(self, x, y, p) -> dict:
         w = np.trapezoid(p, x, axis=1)
         R = self.roller.mean_radius * self.roller.radius_ratio(y / self.roller.mean_radius)
         loaded = w > 0.0

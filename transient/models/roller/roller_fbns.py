@@ -29,6 +29,7 @@ from types import SimpleNamespace
 
 import numpy as np
 
+from transient.checks import check_memory
 from transient.models.roller.continuation import PathResult, follow
 from transient.models.roller.ehl_problem import EHLFilm
 from transient.models.roller.grid import TensorGrid
@@ -48,6 +49,10 @@ class RollerContentFilm:
         self.base = film
         self.grid = film.grid
         self.n = film.n
+        if film.elastic != "dense":
+            check_memory(f"the dense influence matrix of this {film.grid.nx} x {film.grid.ny} grid",
+                         dict(influence=8.0 * film.n_full * film.n, schur=12.0 * (film.n + 1) ** 2),
+                         "use a clustered grid or method='reynolds' (Newton-Krylov with DC-FFT products)")
         self.K = film.K if film.elastic == "dense" else film.influence_matrix()
         self.weight = film.area_w
         self.colp, self.colh = film.colp, film.colh
