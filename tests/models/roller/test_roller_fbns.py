@@ -7,7 +7,7 @@ import pytest
 
 from transient.models.point.reduced import schur
 from transient.models.roller import RollerContact, TaperedRoller
-from transient.models.roller.results import EHLConvergenceError
+from transient.models.roller.results import UnderResolvedGridError
 from transient.models.roller.roller_fbns import RollerContentFilm, content_start
 from transient.params import park
 
@@ -92,3 +92,32 @@ def test_method_is_validated():
     c = RollerContact.from_dimensionless(**CASE, roller=roller(), grid=("clustered", 40, 25))
     with pytest.raises(ValueError, match="method"):
         c.steady(method="newton")
+
+
+@pytest.mark.parametrize("factor, worst", [(10.0, 2.5), (50.0, 10.0)])
+def test_loads_beyond_the_paper_grid_are_refused_before_newton(factor, worst):
+    c = paper(factor)
+    with pytest.raises(UnderResolvedGridError, match="4 b/M") as err:
+        c.steady()
+    r = err.value.resolution
+    # the worst row is the loaded (small) end's, near its profile start, its x spacing beyond the rule
+    assert r["worst_ratio"] > worst and r["worst_y"] < -0.6 * c.roller.mean_radius
+    assert "nx >=" in str(err.value)
+
+
+def _checks(c, s):
+    assert s.success and abs(s.load_error) < 1e-6
+    assert s.film[1:-1, 1:-1].min() > 0 and s.pressure.min() > -1e-9 * s.p_max
+    assert s.content.min() >= 0.0 and s.content.max() <= 1.0 + 1e-9
+    w = np.trapezoid(np.trapezoid(s.pressure, s.x, axis=1), s.y)
+    assert w == pytest.approx(c.load, rel=0.02)
+    assert s.y_of_h_min < -c.roller.profile_start and s.h_min < 0.5 * s.h_central
+
+
+@pytest.mark.slow
+def test_five_times_the_paper_load_on_the_paper_grid_from_the_dry_pressure():
+    c = paper(5.0)
+    s = c.steady()
+    _checks(c, s)
+    assert "continuation" not in s.solver_info  # Newton from the dry pressure, no load path
+    assert s.p_max == pytest.approx(c.dry().p_max, rel=0.25)

@@ -52,7 +52,7 @@ from transient.models.roller.ehl_problem import EHLFilm, interpolate_state, solv
 from transient.models.roller.geometry import TaperedRoller
 from transient.models.roller.grid import TensorGrid, clustered_axis
 from transient.models.roller.krylov import DenseLU, NewtonKrylov, NewtonMatrix, TwoLevel
-from transient.models.roller.results import EHLConvergenceError, RollerSteady, RollerTransient
+from transient.models.roller.results import EHLConvergenceError, RollerSteady, RollerTransient, UnderResolvedGridError
 from transient.models.roller.roller_fbns import RollerContentFilm, carry_content, content_path, content_start, solve_content
 from transient.models.roller.transient import load_ratio, run_squeeze
 from transient.physics.line_formulas import dowson_toyoda_central
@@ -64,6 +64,11 @@ PAPER_GRID = (94, 45)
 SCHEMES = ("auto", "upwind2", "upwind1", "limited")
 #: steady forms: the mass-conserving film content (FBNS) and the Reynolds condition
 METHODS = ("auto", "fbns", "reynolds")
+#: largest worst-row ratio of x spacing to 4 b/M (:meth:`RollerContact.dry_resolution`) that the film-content
+#: solve attempts. Measured on the tilted paper case: the paper grid converges up to 6.7x the paper's load (dry
+#: ratio ~2.0) and no further; 47 x 45 at 5x (ratio 3.3) converges to a film whose h_min is 1/46 of the paper
+#: grid's (its loaded end's outlet closed onto a node): beyond ~2 a converged film is not to be trusted
+RESOLUTION_LIMIT = 2.0
 #: above this mid-plane Moes load the coarsest level is reached by load continuation
 M_EASY_2D = 3.2
 
@@ -363,15 +368,21 @@ class RollerContact:
 
     def steady_content(self, tol: float = 1e-8, max_iter: int = 60, raise_on_failure: bool = True) -> RollerSteady:
         """Steady film of the mass-conserving form (:mod:`transient.models.roller.roller_fbns`) by FBNS Newton
-        with a reused single-precision factorisation. Nested iteration over :meth:`levels`: the coarsest level
-        starts from the dry pressure (:func:`content_start`) -- above the paper case's mid-plane M (3.2) by load
-        continuation from it (:func:`content_path`) on the coarsest level whose x spacing resolves the load --
-        finer levels from the coarser solution interpolated. ``tol``: the largest scaled residual (Reynolds
+        with a reused single-precision factorisation. Nested iteration over :meth:`levels` (above the paper case's
+        mid-plane M, 3.2, from the coarsest level that passes :meth:`check_resolution`'s rule): the coarsest level starts
+        from the dry pressure (:func:`content_start`; no pseudo-time or continuation needed up to 5x the paper's
+        load) -- if that fails above M = 3.2, by load continuation from the paper case's M
+        (:func:`content_path`) -- finer levels from the coarser solution interpolated. The grid is checked
+        first (:meth:`check_resolution`). ``tol``: the largest scaled residual (Reynolds
         rows by their diagonal, Fischer-Burmeister rows, load balance). Raises :class:`EHLConvergenceError`
         (with the last iterate) unless ``raise_on_failure=False``; a failure above the paper load names the
         row whose x spacing does not resolve its own load (:meth:`local_resolution`)."""
         t0, c0 = time.perf_counter(), time.process_time()
-        specs = self._level_specs()
+        self.check_resolution()
+        specs = self.levels()
+        if self.mid_plane_M > M_EASY_2D:  # from the coarsest level that resolves the loaded rows
+            fine = [self.dry_resolution(self.make_grid(*sp))["worst_ratio"] <= RESOLUTION_LIMIT for sp in specs[:-1]]
+            specs = specs[fine.index(True) if any(fine) else -1:]
         info = {"method": "fbns", "levels": []}
         owner, u, g_prev, iters, ok, msg, norms = self, None, None, 0, True, "", []
         for k, spec in enumerate(specs):
@@ -380,28 +391,28 @@ class RollerContact:
             tol_k = tol if last else math.sqrt(tol)
             cf = RollerContentFilm(self.film_problem(g, "fft" if spec[0] == "uniform" else "dense"))
             level = {"grid": [int(g.x.size), int(g.y.size)]}
-            if k == 0 and self.mid_plane_M > M_EASY_2D:
+            u0 = content_start(self, cf) if k == 0 else carry_content(g_prev, u, g)
+            try:
+                nr = solve_content(cf, u0, tol_k, max_iter if k == 0 else STEP_ITERATIONS,
+                                   f"RollerContact.steady FBNS Newton ({g.x.size} x {g.y.size})")
+                ok = True
+            except NewtonError as exc:
+                nr, ok = exc.result, False
+                msg = f"level {k + 1}/{len(specs)} ({g.x.size} x {g.y.size} nodes): {exc}"
+            u, its, norms = nr.x, nr.iterations, nr.residual_norms
+            level.update(factorisations=int(nr.factorisations), gmres_iterations=int(nr.krylov))
+            if not ok and k == 0 and self.mid_plane_M > M_EASY_2D:
                 path = content_path(self, spec, self.load * M_EASY_2D / self.mid_plane_M, tol_k, STEP_ITERATIONS)
                 info["continuation"] = dict(message=path.message, steps=path.steps, rejected=path.rejected,
                                             loads=[p[0] for p in path.path], attempts=path.attempts)
-                u, ok, its, norms = path.state, path.success, path.iterations, path.residual_norms
+                u, ok, norms = path.state, path.success, path.residual_norms
+                its += path.iterations
                 if not ok:
                     cf, owner = path.film, path.contact
-                    msg = f"level 1/{len(specs)} ({g.x.size} x {g.y.size} nodes): {path.message}"
+                    msg = (f"level 1/{len(specs)} ({g.x.size} x {g.y.size} nodes): Newton from the dry pressure "
+                           f"did not converge, and the load continuation from the paper case's M: {path.message}")
                     if path.path:
                         msg += f" (last converged load {path.path[-1][0]:.4g} N of {self.load:.4g} N)"
-            else:
-                u0 = content_start(self, cf) if k == 0 else carry_content(g_prev, u, g)
-                try:
-                    nr = solve_content(cf, u0, tol_k, max_iter if k == 0 else STEP_ITERATIONS,
-                                       f"RollerContact.steady FBNS Newton ({g.x.size} x {g.y.size})")
-                    ok = True
-                except NewtonError as exc:
-                    nr, ok = exc.result, False
-                    msg = f"level {k + 1}/{len(specs)} ({g.x.size} x {g.y.size} nodes): {exc}"
-                u, its, norms = nr.x, nr.iterations, nr.residual_norms
-                level["factorisations"] = int(nr.factorisations)
-                level["gmres_iterations"] = int(nr.krylov)
             level["iterations"] = int(its)
             info["levels"].append(level)
             iters += its
@@ -412,6 +423,23 @@ class RollerContact:
         if ok:
             msg = f"converged: {iters} Newton iterations over {len(specs)} grid level(s)"
         return owner._finish(cf, u, ok, msg, iters, norms, t0, info, raise_on_failure)
+
+    def check_resolution(self) -> dict:
+        """:meth:`dry_resolution` of this contact's grid; raises :class:`UnderResolvedGridError` when its worst
+        row's ratio exceeds :data:`RESOLUTION_LIMIT` (no discrete film there: the outlet constriction of that
+        row would collapse onto one node), naming the row, its local M and the x node count that would do."""
+        r = self.dry_resolution()
+        if r["worst_ratio"] > RESOLUTION_LIMIT:
+            k = int(np.nanargmax(r["ratio"]))
+            kind, nx, ny = self.grid_spec
+            need = int(math.ceil(nx * r["worst_ratio"] / RESOLUTION_LIMIT))
+            raise UnderResolvedGridError(
+                f"grid {kind} {nx} x {ny} is too coarse in x for load = {self.load:g} N: the row at y = "
+                f"{1e3 * r['worst_y']:.3f} mm carries a local M = {r['M'][k]:.3g} and its x spacing is "
+                f"{r['worst_ratio']:.2f} times 4 b/M there (allowed: <= {RESOLUTION_LIMIT:g}); the x spacing alone needs "
+                f"about nx >= {need} (grid=('clustered', {need}, {ny})), and the loaded end's profiled part may need "
+                "more y nodes too", r)
+        return r
 
     def _level_specs(self):
         """:meth:`levels`, above the paper case's load from the coarsest one whose x spacing resolves the

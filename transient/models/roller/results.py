@@ -22,6 +22,15 @@ class EHLConvergenceError(RuntimeError):
         self.result = result
 
 
+class UnderResolvedGridError(ValueError):
+    """The grid's x spacing cannot carry the load of its most loaded row (no Newton iteration was made):
+    ``resolution`` is :meth:`RollerContact.dry_resolution`'s answer."""
+
+    def __init__(self, message: str, resolution: dict):
+        super().__init__(message)
+        self.resolution = resolution
+
+
 @result_type
 class LineSteady(SteadyResult):
     """Steady EHL line contact (:class:`~transient.models.roller.line_contact.LineContact`).
