@@ -29,7 +29,11 @@ own load the outlet constriction collapses onto one node and closes (:meth:`Roll
 docs/ehl.md, section 8). This moves 5x the paper's load on 47 x 45 from failing to converging; on the paper
 grid the 10x path still stops near 7x.
 
-Steady solve: nested iteration from the dry pressure on coarse grids to the requested one (above the paper
+Steady solve (``method="auto"``): on clustered grids the mass-conserving film-content form by
+Fischer-Burmeister-Newton-Schur (:mod:`transient.models.roller.roller_fbns`; Woloszynski et al. 2015, Hansen et
+al. 2022), Newton from the dry pressure on nested grids, a grid whose loaded rows are too coarse in x refused
+first (:meth:`RollerContact.check_resolution`); on uniform grids and for the transient's penalty form the
+Reynolds-condition form: nested iteration from the dry pressure on coarse grids to the requested one (above the paper
 case's load: load continuation on the coarsest level whose x spacing resolves the load); Newton on the
 Fischer-Burmeister system with the dense matrix (small grids) or GMRES with a single-precision LU
 preconditioner kept across iterations (the paper grid) or a two-level preconditioner (uniform grids).
@@ -53,7 +57,7 @@ from transient.models.roller.geometry import TaperedRoller
 from transient.models.roller.grid import TensorGrid, clustered_axis
 from transient.models.roller.krylov import DenseLU, NewtonKrylov, NewtonMatrix, TwoLevel
 from transient.models.roller.results import EHLConvergenceError, RollerSteady, RollerTransient, UnderResolvedGridError
-from transient.models.roller.roller_fbns import RollerContentFilm, carry_content, content_path, content_start, solve_content
+from transient.models.roller.roller_fbns import RollerContentFilm, carry_content, content_start, solve_content
 from transient.models.roller.transient import load_ratio, run_squeeze
 from transient.physics.line_formulas import dowson_toyoda_central
 from transient.physics.lubricant import DOWSON_HIGGINSON_PARK, Lubricant
@@ -65,10 +69,11 @@ SCHEMES = ("auto", "upwind2", "upwind1", "limited")
 #: steady forms: the mass-conserving film content (FBNS) and the Reynolds condition
 METHODS = ("auto", "fbns", "reynolds")
 #: largest worst-row ratio of x spacing to 4 b/M (:meth:`RollerContact.dry_resolution`) that the film-content
-#: solve attempts. Measured on the tilted paper case: the paper grid converges up to 6.7x the paper's load (dry
-#: ratio ~2.0) and no further; 47 x 45 at 5x (ratio 3.3) converges to a film whose h_min is 1/46 of the paper
-#: grid's (its loaded end's outlet closed onto a node): beyond ~2 a converged film is not to be trusted
-RESOLUTION_LIMIT = 2.0
+#: solve attempts. Measured on the tilted paper case (Newton from the dry pressure): 47 x 45 converges at 5x the
+#: paper's load (ratio 3.3) and fails at 6x (4.0); 94 x 89 converges at 10x (2.9). A necessary condition only:
+#: 94 x 45 and 188 x 45 fail at 10x (2.9 and 1.5) where the film closes at the loaded end's profiled part,
+#: 0.15 c between y nodes there (94 x 89: 0.02 c)
+RESOLUTION_LIMIT = 4.0
 #: above this mid-plane Moes load the coarsest level is reached by load continuation
 M_EASY_2D = 3.2
 
@@ -370,9 +375,9 @@ class RollerContact:
         """Steady film of the mass-conserving form (:mod:`transient.models.roller.roller_fbns`) by FBNS Newton
         with a reused single-precision factorisation. Nested iteration over :meth:`levels` (above the paper case's
         mid-plane M, 3.2, from the coarsest level that passes :meth:`check_resolution`'s rule): the coarsest level starts
-        from the dry pressure (:func:`content_start`; no pseudo-time or continuation needed up to 5x the paper's
-        load) -- if that fails above M = 3.2, by load continuation from the paper case's M
-        (:func:`content_path`) -- finer levels from the coarser solution interpolated. The grid is checked
+        from the dry pressure (:func:`content_start`; no pseudo-time and no load continuation: on the paper grid
+        Newton converges from it up to 6x the paper's load, and a load path from the paper's load stopped at
+        6.7x, docs/ehl.md section 8), finer levels from the coarser solution interpolated. The grid is checked
         first (:meth:`check_resolution`). ``tol``: the largest scaled residual (Reynolds
         rows by their diagonal, Fischer-Burmeister rows, load balance). Raises :class:`EHLConvergenceError`
         (with the last iterate) unless ``raise_on_failure=False``; a failure above the paper load names the
@@ -384,7 +389,7 @@ class RollerContact:
             fine = [self.dry_resolution(self.make_grid(*sp))["worst_ratio"] <= RESOLUTION_LIMIT for sp in specs[:-1]]
             specs = specs[fine.index(True) if any(fine) else -1:]
         info = {"method": "fbns", "levels": []}
-        owner, u, g_prev, iters, ok, msg, norms = self, None, None, 0, True, "", []
+        u, g_prev, iters, ok, msg, norms = None, None, 0, True, "", []
         for k, spec in enumerate(specs):
             last = k == len(specs) - 1
             g = self.grid if last else self.make_grid(*spec)
@@ -401,18 +406,6 @@ class RollerContact:
                 msg = f"level {k + 1}/{len(specs)} ({g.x.size} x {g.y.size} nodes): {exc}"
             u, its, norms = nr.x, nr.iterations, nr.residual_norms
             level.update(factorisations=int(nr.factorisations), gmres_iterations=int(nr.krylov))
-            if not ok and k == 0 and self.mid_plane_M > M_EASY_2D:
-                path = content_path(self, spec, self.load * M_EASY_2D / self.mid_plane_M, tol_k, STEP_ITERATIONS)
-                info["continuation"] = dict(message=path.message, steps=path.steps, rejected=path.rejected,
-                                            loads=[p[0] for p in path.path], attempts=path.attempts)
-                u, ok, norms = path.state, path.success, path.residual_norms
-                its += path.iterations
-                if not ok:
-                    cf, owner = path.film, path.contact
-                    msg = (f"level 1/{len(specs)} ({g.x.size} x {g.y.size} nodes): Newton from the dry pressure "
-                           f"did not converge, and the load continuation from the paper case's M: {path.message}")
-                    if path.path:
-                        msg += f" (last converged load {path.path[-1][0]:.4g} N of {self.load:.4g} N)"
             level["iterations"] = int(its)
             info["levels"].append(level)
             iters += its
@@ -422,7 +415,7 @@ class RollerContact:
         info["cpu_s"] = time.process_time() - c0
         if ok:
             msg = f"converged: {iters} Newton iterations over {len(specs)} grid level(s)"
-        return owner._finish(cf, u, ok, msg, iters, norms, t0, info, raise_on_failure)
+        return self._finish(cf, u, ok, msg, iters, norms, t0, info, raise_on_failure)
 
     def check_resolution(self) -> dict:
         """:meth:`dry_resolution` of this contact's grid; raises :class:`UnderResolvedGridError` when its worst
@@ -458,11 +451,13 @@ class RollerContact:
         if not ok and np.any(res.pressure > 0.0):
             r = self.local_resolution(res)
             info["local_resolution"] = dict(worst_y=r["worst_y"], worst_ratio=r["worst_ratio"])
-            if r["worst_ratio"] > 1.0:
-                k = int(np.nanargmax(r["ratio"]))
-                res.message = msg + (f"; the row at y = {1e3 * r['worst_y']:.3f} mm carries a local M = {r['M'][k]:.3g}: "
-                                     f"its x spacing is {r['worst_ratio']:.2f} times 4 b/M there (under-resolved, "
-                                     "refine x)")
+            k = int(np.nanargmax(r["ratio"]))
+            j = int(np.argmin(np.abs(res.y - res.y_of_h_min)))
+            dy = np.diff(res.y)[min(j, res.y.size - 2)] / (self.scales["B"] * self.roller.mean_radius)
+            res.message = msg + (f"; the row at y = {1e3 * r['worst_y']:.3f} mm carries a local M = {r['M'][k]:.3g}, "
+                                 f"its x spacing {r['worst_ratio']:.2f} times 4 b/M there; the film closes at "
+                                 f"y = {1e3 * res.y_of_h_min:.3f} mm, {dy:.3f} c between y nodes there (under-resolved: "
+                                 "refine x where the ratio exceeds ~3, y at the loaded end)")
         if not ok and raise_on_failure:
             raise EHLConvergenceError(res.message, res)
         return res

@@ -1,5 +1,5 @@
 """numba kernels of the EHL film (Park): finite-volume Reynolds residual, its local Jacobian,
-Fischer-Burmeister complementarity, dense Jacobian assembly.
+Fischer-Burmeister complementarity, dense Jacobian and Schur matrix assembly.
 
 Scaled variables (see :mod:`transient.models.roller.ehl_problem`): lengths ``x, y`` in units of the contact
 half-width, pressure ``p`` in units of ``p_h``, film ``h`` in units of ``b^2/R``. Per interior node
@@ -9,8 +9,9 @@ half-width, pressure ``p`` in units of ``p_h``, film ``h`` in units of ``b^2/R``
           + dx [same along y]
           - lam Rs(y) dy (q_{I+1/2} - q_{I-1/2}) } / A  [ - kappa d(rho h)_I/dt  in the transient ]
 
-    e = rho h^3 / eta (face value: arithmetic mean of the two nodes),  q = rho h at the face, upwind
-    (U > 0): q_{I+1/2} = m_I + (x_{I+1} - x_I)/(2 (x_I - x_{I-1})) (m_I - m_{I-1}),  m = rho h
+    e = rho h^3 / eta (face value: arithmetic mean of the two nodes),  q = m at the face, upwind
+    (U > 0): q_{I+1/2} = m_I + (x_{I+1} - x_I)/(2 (x_I - x_{I-1})) (m_I - m_{I-1}),  m = rho theta h
+    (theta the film content: 1 in the Reynolds-condition form, an unknown in the mass-conserving one)
     (second-order linear upwind extrapolation, ``scheme = 1``; ``scheme = 0``: first-order q = m_I;
     ``scheme = 2``: the extrapolation's slope limited by van Albada's limiter (van Albada, van Leer &
     Roberts, *Astron. Astrophys.* 108, 1982), ``q_{I+1/2} = m_I + (x_{I+1} - x_I)/2 s(a, b)`` with

@@ -30,7 +30,6 @@ from types import SimpleNamespace
 import numpy as np
 
 from transient.checks import check_memory
-from transient.models.roller.continuation import PathResult, follow
 from transient.models.roller.ehl_problem import EHLFilm
 from transient.models.roller.grid import TensorGrid
 from transient.models.roller.kernels import assemble_schur
@@ -170,56 +169,3 @@ def solve_content(cfilm: RollerContentFilm, u0, tol: float, max_iter: int, name:
         raise NewtonError(f"{name}: no convergence in {st.iterations} iterations (scaled residual "
                           f"{st.norms[-1]:.3g} > {tol:g})", out)
     return out
-
-
-def content_path(contact, spec, w0: float, tol: float, step_iterations: int):
-    """Steady film-content state of ``contact`` on the grid ``spec`` by load continuation
-    (:func:`transient.models.roller.continuation.follow`) from the load ``w0`` [N] (solved from its
-    :func:`content_start`) up to ``contact.load``, ``w = w0 (w1/w0)^s``. Each contact on the path has its
-    own dry footprint and scaled grid (:meth:`RollerContact.with_load`): a step carries the pressure in
-    pascals, the content, and the central film in metres. Returns the
-    :class:`~transient.models.roller.continuation.PathResult` (``contact``, ``film``: the last converged)."""
-    w1 = contact.load
-    cache = {}
-
-    def at(s):
-        if s not in cache:
-            c = contact if s >= 1.0 else contact.with_load(w0 * (w1 / w0) ** s)
-            g = c.make_grid(*spec)
-            cache[s] = (c, RollerContentFilm(c.film_problem(g, "fft" if spec[0] == "uniform" else "dense")))
-        return cache[s]
-
-    def centre(cf, u):
-        h = cf.film(u).reshape(cf.grid.shape_full)
-        return h, h[int(np.argmin(np.abs(cf.grid.y))), int(np.argmin(np.abs(cf.grid.x)))]
-
-    def central(s, u):
-        c, cf = at(s)
-        h, hc = centre(cf, u)
-        ok = np.all(np.isfinite(h)) and h[1:-1, 1:-1].min() > 0
-        return float(hc * c.scales["film"]) if ok else float("nan")
-
-    def predict(s_from, u, s_to):
-        (c0, f0), (c1, f1) = at(s_from), at(s_to)
-        k = c0.scales["B"] / c1.scales["B"]
-        g0 = TensorGrid(f0.grid.x * k, f0.grid.y * k)
-        v = carry_content(g0, u, f1.grid, c0.scales["p_scale"] / c1.scales["p_scale"])
-        v[-1] = 0.0
-        v[-1] = central(s_from, u) / c1.scales["film"] - centre(f1, v)[1]
-        return v
-
-    def solve(s, u0):
-        return solve_content(at(s)[1], u0, tol, step_iterations, "RollerContact continuation")
-
-    c0, f0 = at(0.0)
-    try:
-        nr = solve_content(f0, content_start(c0, f0), tol, 100, "RollerContact continuation start")
-    except NewtonError as exc:
-        return PathResult(state=exc.result.x, s=0.0, success=False, iterations=exc.result.iterations,
-                          residual_norms=list(exc.result.residual_norms), film=f0, contact=c0,
-                          message=f"Newton failed at the start of the path (load {w0:.4g} N)")
-    path = follow(solve, predict, central, nr.x)
-    path.iterations += nr.iterations
-    path.contact, path.film = at(path.s)
-    path.path = [(at(s)[0].load, hc) for s, hc in path.path]
-    return path
