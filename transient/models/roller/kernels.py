@@ -234,6 +234,29 @@ def penalty(a, b, phi, da, db, gamma):
 
 
 @njit(cache=True, error_model="numpy")
+def reynolds_row(Sp, Sh, colp, colh, K, elastic, r, row):
+    """Row ``r`` of the Reynolds rows' Newton matrix in the pressures, ``Sp + Sh K`` (``K`` not read for a rigid
+    body, ``elastic=False``), into ``row[:n]`` (zeroed first); returns its ``h0`` entry, the sum of ``Sh``."""
+    n = Sp.shape[0]
+    for q in range(n):
+        row[q] = 0.0
+    s_h0 = 0.0
+    for s in range(N_SLOTS):
+        ch = colh[r, s]
+        if ch >= 0:
+            v = Sh[r, s]
+            s_h0 += v
+            if elastic and v != 0.0:
+                krow = K[ch]
+                for q in range(n):
+                    row[q] += v * krow[q]
+        cp = colp[r, s]
+        if cp >= 0:
+            row[cp] += Sp[r, s]
+    return s_h0
+
+
+@njit(cache=True, error_model="numpy")
 def assemble_dense(Sp, Sh, colp, colh, K, elastic, fb_a, fb_b, area_w, J):
     """Dense Newton matrix of ``[phi(p, -F); (sum A p - W)/W]`` in the unknowns ``[p, h0]``.
 
@@ -242,22 +265,7 @@ def assemble_dense(Sp, Sh, colp, colh, K, elastic, fb_a, fb_b, area_w, J):
     n = Sp.shape[0]
     for r in range(n):
         row = J[r]
-        for q in range(n + 1):
-            row[q] = 0.0
-        s_h0 = 0.0
-        for s in range(N_SLOTS):
-            ch = colh[r, s]
-            if ch >= 0:
-                v = Sh[r, s]
-                s_h0 += v
-                if elastic and v != 0.0:
-                    krow = K[ch]
-                    for q in range(n):
-                        row[q] += v * krow[q]
-            cp = colp[r, s]
-            if cp >= 0:
-                row[cp] += Sp[r, s]
-        row[n] = s_h0
+        row[n] = reynolds_row(Sp, Sh, colp, colh, K, elastic, r, row)
         b = -fb_b[r]
         for q in range(n + 1):
             row[q] *= b
@@ -276,21 +284,7 @@ def assemble_schur(Sp, Sh, St, colp, colh, K, b_p, b_t, area_w, S):
     n = Sp.shape[0]
     for r in range(n):
         row = S[r]
-        for q in range(n + 1):
-            row[q] = 0.0
-        s_h0 = 0.0
-        for s in range(N_SLOTS):
-            ch = colh[r, s]
-            if ch >= 0:
-                v = Sh[r, s]
-                s_h0 += v
-                if v != 0.0:
-                    krow = K[ch]
-                    for q in range(n):
-                        row[q] += v * krow[q]
-            cp = colp[r, s]
-            if cp >= 0:
-                row[cp] += Sp[r, s]
+        s_h0 = reynolds_row(Sp, Sh, colp, colh, K, True, r, row)
         for q in range(n):
             row[q] *= b_p[q]
         for s in range(N_SLOTS):
