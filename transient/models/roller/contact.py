@@ -29,7 +29,11 @@ own load the outlet constriction collapses onto one node and closes (:meth:`Roll
 docs/ehl.md, section 8). This moves 5x the paper's load on 47 x 45 from failing to converging; on the paper
 grid the 10x path still stops near 7x.
 
-Steady solve: nested iteration from the dry pressure on coarse grids to the requested one (above the paper
+Steady solve (``method="auto"``): on clustered grids the mass-conserving film-content form by
+Fischer-Burmeister-Newton-Schur (:mod:`transient.models.roller.roller_fbns`; Woloszynski et al. 2015, Hansen et
+al. 2022), Newton from the dry pressure on nested grids, a grid whose loaded rows are too coarse in x refused
+first (:meth:`RollerContact.check_resolution`); on uniform grids and for the transient's penalty form the
+Reynolds-condition form: nested iteration from the dry pressure on coarse grids to the requested one (above the paper
 case's load: load continuation on the coarsest level whose x spacing resolves the load); Newton on the
 Fischer-Burmeister system with the dense matrix (small grids) or GMRES with a single-precision LU
 preconditioner kept across iterations (the paper grid) or a two-level preconditioner (uniform grids).
@@ -52,7 +56,8 @@ from transient.models.roller.ehl_problem import EHLFilm, interpolate_state, solv
 from transient.models.roller.geometry import TaperedRoller
 from transient.models.roller.grid import TensorGrid, clustered_axis
 from transient.models.roller.krylov import DenseLU, NewtonKrylov, NewtonMatrix, TwoLevel
-from transient.models.roller.results import EHLConvergenceError, RollerSteady, RollerTransient
+from transient.models.roller.results import EHLConvergenceError, RollerSteady, RollerTransient, UnderResolvedGridError
+from transient.models.roller.roller_fbns import RollerContentFilm, carry_content, content_start, solve_content
 from transient.models.roller.transient import load_ratio, run_squeeze
 from transient.physics.line_formulas import dowson_toyoda_central
 from transient.physics.lubricant import DOWSON_HIGGINSON_PARK, Lubricant
@@ -61,6 +66,14 @@ from transient.solvers.newton import NewtonError
 PAPER_GRID = (94, 45)
 #: Couette flux of the Reynolds equation (:mod:`transient.models.roller.kernels`)
 SCHEMES = ("auto", "upwind2", "upwind1", "limited")
+#: steady forms: the mass-conserving film content (FBNS) and the Reynolds condition
+METHODS = ("auto", "fbns", "reynolds")
+#: largest worst-row ratio of x spacing to 4 b/M (:meth:`RollerContact.dry_resolution`) that the film-content
+#: solve attempts. Measured on the tilted paper case (Newton from the dry pressure): 47 x 45 converges at 5x the
+#: paper's load (ratio 3.3) and fails at 6x (4.0); 94 x 89 converges at 10x (2.9). A necessary condition only:
+#: 94 x 45 and 188 x 45 fail at 10x (2.9 and 1.5) where the film closes at the loaded end's profiled part,
+#: 0.15 c between y nodes there (94 x 89: 0.02 c)
+RESOLUTION_LIMIT = 4.0
 #: above this mid-plane Moes load the coarsest level is reached by load continuation
 M_EASY_2D = 3.2
 
@@ -345,8 +358,113 @@ class RollerContact:
 
     # -- steady ---------------------------------------------------------------------------------------
     def steady(self, tol: float = 1e-8, max_iter: int = 60, raise_on_failure: bool = True,
-               penalty: float | None = None) -> RollerSteady:
-        """Steady EHL film (module docstring). The coarsest level starts from the dry pressure with
+               penalty: float | None = None, method: str = "auto") -> RollerSteady:
+        """Steady EHL film. ``method="fbns"``: the mass-conserving film-content form by
+        Fischer-Burmeister-Newton-Schur (:meth:`steady_content`; dense elasticity); ``"reynolds"``: the
+        Reynolds-condition form (:meth:`steady_reynolds`), which ``penalty`` (the transient's limit) and the
+        uniform DC-FFT grids (Newton-Krylov) use; ``"auto"``: FBNS on clustered grids, else Reynolds."""
+        if method not in METHODS:
+            raise ValueError(f"method = {method!r} is not one of {METHODS}")
+        if method == "auto":
+            method = "reynolds" if self.grid_spec[0] == "uniform" else "fbns"
+        if penalty is not None or method == "reynolds":
+            return self.steady_reynolds(tol, max_iter, raise_on_failure, penalty)
+        return self.steady_content(tol, max_iter, raise_on_failure)
+
+    def steady_content(self, tol: float = 1e-8, max_iter: int = 60, raise_on_failure: bool = True) -> RollerSteady:
+        """Steady film of the mass-conserving form (:mod:`transient.models.roller.roller_fbns`) by FBNS Newton
+        with a reused single-precision factorisation. Nested iteration over :meth:`levels` (above the paper case's
+        mid-plane M, 3.2, from the coarsest level that passes :meth:`check_resolution`'s rule): the coarsest level starts
+        from the dry pressure (:func:`content_start`; no pseudo-time and no load continuation: on the paper grid
+        Newton converges from it up to 6x the paper's load, and a load path from the paper's load stopped at
+        6.7x, docs/ehl.md section 8), finer levels from the coarser solution interpolated. The grid is checked
+        first (:meth:`check_resolution`). ``tol``: the largest scaled residual (Reynolds
+        rows by their diagonal, Fischer-Burmeister rows, load balance). Raises :class:`EHLConvergenceError`
+        (with the last iterate) unless ``raise_on_failure=False``; a failure above the paper load names the
+        row whose x spacing does not resolve its own load (:meth:`local_resolution`)."""
+        t0, c0 = time.perf_counter(), time.process_time()
+        self.check_resolution()
+        specs = self.levels()
+        if self.mid_plane_M > M_EASY_2D:  # from the coarsest level that resolves the loaded rows
+            fine = [self.dry_resolution(self.make_grid(*sp))["worst_ratio"] <= RESOLUTION_LIMIT for sp in specs[:-1]]
+            specs = specs[fine.index(True) if any(fine) else -1:]
+        info = {"method": "fbns", "levels": []}
+        u, g_prev, iters, ok, msg, norms = None, None, 0, True, "", []
+        for k, spec in enumerate(specs):
+            last = k == len(specs) - 1
+            g = self.grid if last else self.make_grid(*spec)
+            tol_k = tol if last else math.sqrt(tol)
+            cf = RollerContentFilm(self.film_problem(g, "fft" if spec[0] == "uniform" else "dense"))
+            level = {"grid": [int(g.x.size), int(g.y.size)]}
+            u0 = content_start(self, cf) if k == 0 else carry_content(g_prev, u, g)
+            try:
+                nr = solve_content(cf, u0, tol_k, max_iter if k == 0 else STEP_ITERATIONS,
+                                   f"RollerContact.steady FBNS Newton ({g.x.size} x {g.y.size})")
+                ok = True
+            except NewtonError as exc:
+                nr, ok = exc.result, False
+                msg = f"level {k + 1}/{len(specs)} ({g.x.size} x {g.y.size} nodes): {exc}"
+            u, its, norms = nr.x, nr.iterations, nr.residual_norms
+            level.update(factorisations=int(nr.factorisations), gmres_iterations=int(nr.krylov))
+            level["iterations"] = int(its)
+            info["levels"].append(level)
+            iters += its
+            g_prev = g
+            if not ok:
+                break
+        info["cpu_s"] = time.process_time() - c0
+        if ok:
+            msg = f"converged: {iters} Newton iterations over {len(specs)} grid level(s)"
+        return self._finish(cf, u, ok, msg, iters, norms, t0, info, raise_on_failure)
+
+    def check_resolution(self) -> dict:
+        """:meth:`dry_resolution` of this contact's grid; raises :class:`UnderResolvedGridError` when its worst
+        row's ratio exceeds :data:`RESOLUTION_LIMIT` (no discrete film there: the outlet constriction of that
+        row would collapse onto one node), naming the row, its local M and the x node count that would do."""
+        r = self.dry_resolution()
+        if r["worst_ratio"] > RESOLUTION_LIMIT:
+            k = int(np.nanargmax(r["ratio"]))
+            kind, nx, ny = self.grid_spec
+            need = int(math.ceil(nx * r["worst_ratio"] / RESOLUTION_LIMIT))
+            raise UnderResolvedGridError(
+                f"grid {kind} {nx} x {ny} is too coarse in x for load = {self.load:g} N: the row at y = "
+                f"{1e3 * r['worst_y']:.3f} mm carries a local M = {r['M'][k]:.3g} and its x spacing is "
+                f"{r['worst_ratio']:.2f} times 4 b/M there (allowed: <= {RESOLUTION_LIMIT:g}); the x spacing alone needs "
+                f"about nx >= {need} (grid=('clustered', {need}, {ny})), and the loaded end's profiled part may need "
+                "more y nodes too", r)
+        return r
+
+    def _level_specs(self):
+        """:meth:`levels`, above the paper case's load from the coarsest one whose x spacing resolves the
+        mid-plane's load (``contact_spacing M <= 4``)."""
+        specs = self.levels()
+        if self.mid_plane_M > M_EASY_2D and specs[0][0] == "clustered":
+            fine_enough = [self.contact_spacing(self.make_grid(*sp)) * self.mid_plane_M <= 4.0 for sp in specs]
+            specs = specs[fine_enough.index(True) if any(fine_enough) else -1:]
+        return specs
+
+    def _finish(self, cf, u, ok, msg, iters, norms, t0, info, raise_on_failure):
+        """The :class:`RollerSteady` of a film-content state; a failure names an under-resolved row."""
+        n = cf.n
+        state = np.append(u[:n], u[-1])
+        res = self.result(cf.base, state, ok, msg, iters, norms, time.perf_counter() - t0, info, content=u[n: 2 * n])
+        if not ok and np.any(res.pressure > 0.0):
+            r = self.local_resolution(res)
+            info["local_resolution"] = dict(worst_y=r["worst_y"], worst_ratio=r["worst_ratio"])
+            k = int(np.nanargmax(r["ratio"]))
+            j = int(np.argmin(np.abs(res.y - res.y_of_h_min)))
+            dy = np.diff(res.y)[min(j, res.y.size - 2)] / (self.scales["B"] * self.roller.mean_radius)
+            res.message = msg + (f"; the row at y = {1e3 * r['worst_y']:.3f} mm carries a local M = {r['M'][k]:.3g}, "
+                                 f"its x spacing {r['worst_ratio']:.2f} times 4 b/M there; the film closes at "
+                                 f"y = {1e3 * res.y_of_h_min:.3f} mm, {dy:.3f} c between y nodes there (under-resolved: "
+                                 "refine x where the ratio exceeds ~3, y at the loaded end)")
+        if not ok and raise_on_failure:
+            raise EHLConvergenceError(res.message, res)
+        return res
+
+    def steady_reynolds(self, tol: float = 1e-8, max_iter: int = 60, raise_on_failure: bool = True,
+                        penalty: float | None = None) -> RollerSteady:
+        """Steady film of the Reynolds-condition form (module docstring). The coarsest level starts from the dry pressure with
         pseudo-transient continuation (backward-Euler steps of the squeeze-film transient, first step
         0.3 c/u) and is solved to ``sqrt(tol)`` -- above the paper case's mid-plane M (3.2) it is reached by
         load continuation instead (:meth:`continuation`; ``solver_info["continuation"]``); finer levels
@@ -358,11 +476,7 @@ class RollerContact:
         grid = self.grid
         u, g_prev, iters, ok, msg, info = None, None, 0, True, "", {"levels": []}
         owner = self  # the contact whose scales the state is in (a failed path's last converged load)
-        specs = self.levels()
-        if self.mid_plane_M > M_EASY_2D and specs[0][0] == "clustered":
-            # the path runs on the coarsest level fine enough for this load (as LineContact.steady)
-            fine_enough = [self.contact_spacing(self.make_grid(*sp)) * self.mid_plane_M <= 4.0 for sp in specs]
-            specs = specs[fine_enough.index(True) if any(fine_enough) else -1:]
+        specs = self._level_specs()
         for k, spec in enumerate(specs):
             last = k == len(specs) - 1
             g = grid if last else self.make_grid(*spec)
@@ -447,7 +561,18 @@ class RollerContact:
         1.5 b(y) of the centre line is <= 4 b(y)/M(y) (docs/ehl.md, section 7). Returns the arrays ``y`` [m],
         ``M``, ``spacing`` (in units of b(y)) and ``ratio = spacing M/4`` (> 1: under-resolved; nan where
         the row carries no load), and the worst row's ``worst_y`` [m] and ``worst_ratio``."""
-        x, y, p = steady.x, steady.y, steady.pressure
+        return self._row_resolution(steady.x, steady.y, steady.pressure)
+
+    def dry_resolution(self, grid: TensorGrid | None = None) -> dict:
+        """:meth:`local_resolution` of ``grid`` (default: this contact's) with the dry pressure for the
+        EHL one (the rows carry nearly the same loads): known before any Newton iteration."""
+        g = self.grid if grid is None else grid
+        d, B = self.dry(), self.scales["B"] * self.roller.mean_radius
+        f = RegularGridInterpolator((d.y, d.x), d.pressure, bounds_error=False, fill_value=0.0)
+        yy, xx = np.meshgrid(g.y * B, g.x * B, indexing="ij")
+        return self._row_resolution(g.x * B, g.y * B, f(np.stack([yy.ravel(), xx.ravel()], axis=1)).reshape(yy.shape))
+
+    def _row_resolution(self, x, y, p) -> dict:
         w = np.trapezoid(p, x, axis=1)
         R = self.roller.mean_radius * self.roller.radius_ratio(y / self.roller.mean_radius)
         loaded = w > 0.0
@@ -585,7 +710,7 @@ class RollerContact:
                                message=sol.message, stats=sol.stats, n_steps=sol.stats.n_steps, n_jacobians=sol.stats.n_jac,
                                wall_time=wall, final_state=sol.y[-1].copy(), final_time=float(sol.t[-1] * t_ref))
 
-    def result(self, film: EHLFilm, u, ok, msg, iters, norms, wall, info=None) -> RollerSteady:
+    def result(self, film: EHLFilm, u, ok, msg, iters, norms, wall, info=None, content=None) -> RollerSteady:
         s = self.scales
         g = film.grid
         rm = self.roller.mean_radius
@@ -604,4 +729,5 @@ class RollerContact:
                             footprint_length=s["d"] * s["B"] * rm, profile_start=self.roller.profile_start,
                             success=ok, message=msg, iterations=int(iters),
                             wall_time=wall, residual_norms=list(map(float, norms)), state=np.array(u, float),
-                            solver_info=info or {})
+                            solver_info=info or {},
+                            content=np.ones(g.shape_full) if content is None else g.full(content, boundary=1.0))

@@ -100,6 +100,9 @@ class EHLFilm:
         self.F = np.empty(self.n)
         self.Sp = np.zeros((self.n, N_SLOTS))
         self.Sh = np.zeros((self.n, N_SLOTS))
+        self.St = np.zeros((self.n, N_SLOTS))
+        self.scale = np.empty(self.n)
+        self._t_ones = np.ones(grid.shape_full)
         self.props = np.empty((7, self.n_full))
         self.fb_a = np.empty(self.n)
         self.fb_b = np.empty(self.n)
@@ -157,12 +160,15 @@ class EHLFilm:
             pf[0, 1:-1] = p
         return pf
 
-    def reynolds(self, p, h, jac: bool = False) -> np.ndarray:
-        """Reynolds residual ``F`` (per unit area) at the interior nodes; ``jac``: also ``Sp``, ``Sh``."""
+    def reynolds(self, p, h, jac: bool = False, content=None) -> np.ndarray:
+        """Reynolds residual ``F`` (per unit area) at the interior nodes and the row scales ``scale``; ``jac``:
+        also ``Sp``, ``Sh`` (and ``St``). ``content``: the film content theta at every full node (flat or
+        ``shape_full``; None: a full film, the Reynolds-condition form)."""
         v, al, ln0, d, c1, c2 = self.rheo_args
-        reynolds_kernel(self.full_pressure(p), h.reshape(self.grid.shape_full), self.grid.x, self.y_nodes, self.rs,
-                        self.lam, self.grid.two_d, self.scheme_code, v, al, ln0, d, c1, c2, self.p_scale, jac,
-                        self.F, self.Sp, self.Sh, self.props)
+        t = self._t_ones if content is None else np.asarray(content, float).reshape(self.grid.shape_full)
+        reynolds_kernel(self.full_pressure(p), h.reshape(self.grid.shape_full), t, self.grid.x, self.y_nodes,
+                        self.rs, self.lam, self.grid.two_d, self.scheme_code, v, al, ln0, d, c1, c2, self.p_scale,
+                        jac, self.F, self.Sp, self.Sh, self.St, self.scale, self.props)
         return self.F
 
     def set_row_scale(self, u) -> None:

@@ -1,5 +1,5 @@
 """numba kernels of the EHL film (Park): finite-volume Reynolds residual, its local Jacobian,
-Fischer-Burmeister complementarity, dense Jacobian assembly.
+Fischer-Burmeister complementarity, dense Jacobian and Schur matrix assembly.
 
 Scaled variables (see :mod:`transient.models.roller.ehl_problem`): lengths ``x, y`` in units of the contact
 half-width, pressure ``p`` in units of ``p_h``, film ``h`` in units of ``b^2/R``. Per interior node
@@ -9,8 +9,9 @@ half-width, pressure ``p`` in units of ``p_h``, film ``h`` in units of ``b^2/R``
           + dx [same along y]
           - lam Rs(y) dy (q_{I+1/2} - q_{I-1/2}) } / A  [ - kappa d(rho h)_I/dt  in the transient ]
 
-    e = rho h^3 / eta (face value: arithmetic mean of the two nodes),  q = rho h at the face, upwind
-    (U > 0): q_{I+1/2} = m_I + (x_{I+1} - x_I)/(2 (x_I - x_{I-1})) (m_I - m_{I-1}),  m = rho h
+    e = rho h^3 / eta (face value: arithmetic mean of the two nodes),  q = m at the face, upwind
+    (U > 0): q_{I+1/2} = m_I + (x_{I+1} - x_I)/(2 (x_I - x_{I-1})) (m_I - m_{I-1}),  m = rho theta h
+    (theta the film content: 1 in the Reynolds-condition form, an unknown in the mass-conserving one)
     (second-order linear upwind extrapolation, ``scheme = 1``; ``scheme = 0``: first-order q = m_I;
     ``scheme = 2``: the extrapolation's slope limited by van Albada's limiter (van Albada, van Leer &
     Roberts, *Astron. Astrophys.* 108, 1982), ``q_{I+1/2} = m_I + (x_{I+1} - x_I)/2 s(a, b)`` with
@@ -82,12 +83,19 @@ def van_albada(a, b):
 
 
 @njit(cache=True, error_model="numpy")
-def reynolds_kernel(p_full, h_full, x, y, rs, lam, two_d, scheme, vcode, alpha, ln_eta0, dcode, c1, c2, p_scale,
-                    jac, F, Sp, Sh, props):
-    """Residual ``F`` (interior nodes, flat) and, if ``jac``, the local Jacobian ``Sp``, ``Sh`` (n, 6)."""
+def reynolds_kernel(p_full, h_full, t_full, x, y, rs, lam, two_d, scheme, vcode, alpha, ln_eta0, dcode, c1, c2,
+                    p_scale, jac, F, Sp, Sh, St, scale, props):
+    """Residual ``F`` (interior nodes, flat), the row scales ``scale`` (Poiseuille diagonal plus the Couette
+    coefficient ``lam Rs rho h/dx``, per unit area) and, if ``jac``, the local Jacobian ``Sp``, ``Sh``,
+    ``St`` (n, 6: with respect to the pressure, film and film content of the slot's node). ``t_full``: the
+    film content theta at every full node (ones: the Reynolds-condition form, the Couette flux carries
+    ``m = rho h``; else ``m = rho theta h``, the mass-conserving form of
+    :mod:`transient.models.roller.roller_fbns`)."""
     nyf, nxf = p_full.shape
     node_properties(p_full, h_full, vcode, alpha, ln_eta0, dcode, c1, c2, p_scale, props)
-    rho, eps, deps_p, deps_h, m, dm_p = props[0], props[2], props[3], props[4], props[5], props[6]
+    rho, eps, deps_p, deps_h, rh, dm_p = props[0], props[2], props[3], props[4], props[5], props[6]
+    tf = t_full.ravel()
+    m = rh * tf
     pf = p_full.ravel()
     nx = nxf - 2
     j0, j1 = (1, nyf - 1) if two_d else (0, 1)
@@ -146,6 +154,9 @@ def reynolds_kernel(p_full, h_full, x, y, rs, lam, two_d, scheme, vcode, alpha, 
                 gS = (pf[c] - pf[s_]) / dyS
                 fy = dx * (eN * gN - eS * gS)
             F[r] = (fx + fy + fc) / A
+            scale[r] = (dy * (eR / dxR + eL / dxL) + coef * rh[c]) / A
+            if two_d:
+                scale[r] += dx * (eN / dyN + eS / dyS) / A
             if not jac:
                 continue
             for s in range(N_SLOTS):
@@ -187,9 +198,11 @@ def reynolds_kernel(p_full, h_full, x, y, rs, lam, two_d, scheme, vcode, alpha, 
                 if k < 0:
                     Sp[r, s] = 0.0
                     Sh[r, s] = 0.0
+                    St[r, s] = 0.0
                     continue
-                Sh[r, s] = (dE[s] * deps_h[k] + dM[s] * rho[k]) / A
-                Sp[r, s] = (dP[s] + dE[s] * deps_p[k] + dM[s] * dm_p[k]) / A
+                Sh[r, s] = (dE[s] * deps_h[k] + dM[s] * rho[k] * tf[k]) / A
+                Sp[r, s] = (dP[s] + dE[s] * deps_p[k] + dM[s] * dm_p[k] * tf[k]) / A
+                St[r, s] = dM[s] * rh[k] / A
 
 
 @njit(cache=True, error_model="numpy")
@@ -221,6 +234,29 @@ def penalty(a, b, phi, da, db, gamma):
 
 
 @njit(cache=True, error_model="numpy")
+def reynolds_row(Sp, Sh, colp, colh, K, elastic, r, row):
+    """Row ``r`` of the Reynolds rows' Newton matrix in the pressures, ``Sp + Sh K`` (``K`` not read for a rigid
+    body, ``elastic=False``), into ``row[:n]`` (zeroed first); returns its ``h0`` entry, the sum of ``Sh``."""
+    n = Sp.shape[0]
+    for q in range(n):
+        row[q] = 0.0
+    s_h0 = 0.0
+    for s in range(N_SLOTS):
+        ch = colh[r, s]
+        if ch >= 0:
+            v = Sh[r, s]
+            s_h0 += v
+            if elastic and v != 0.0:
+                krow = K[ch]
+                for q in range(n):
+                    row[q] += v * krow[q]
+        cp = colp[r, s]
+        if cp >= 0:
+            row[cp] += Sp[r, s]
+    return s_h0
+
+
+@njit(cache=True, error_model="numpy")
 def assemble_dense(Sp, Sh, colp, colh, K, elastic, fb_a, fb_b, area_w, J):
     """Dense Newton matrix of ``[phi(p, -F); (sum A p - W)/W]`` in the unknowns ``[p, h0]``.
 
@@ -229,22 +265,7 @@ def assemble_dense(Sp, Sh, colp, colh, K, elastic, fb_a, fb_b, area_w, J):
     n = Sp.shape[0]
     for r in range(n):
         row = J[r]
-        for q in range(n + 1):
-            row[q] = 0.0
-        s_h0 = 0.0
-        for s in range(N_SLOTS):
-            ch = colh[r, s]
-            if ch >= 0:
-                v = Sh[r, s]
-                s_h0 += v
-                if elastic and v != 0.0:
-                    krow = K[ch]
-                    for q in range(n):
-                        row[q] += v * krow[q]
-            cp = colp[r, s]
-            if cp >= 0:
-                row[cp] += Sp[r, s]
-        row[n] = s_h0
+        row[n] = reynolds_row(Sp, Sh, colp, colh, K, elastic, r, row)
         b = -fb_b[r]
         for q in range(n + 1):
             row[q] *= b
@@ -252,3 +273,25 @@ def assemble_dense(Sp, Sh, colp, colh, K, elastic, fb_a, fb_b, area_w, J):
     for q in range(n):
         J[n, q] = area_w[q]
     J[n, n] = 0.0
+
+
+@njit(cache=True, error_model="numpy")
+def assemble_schur(Sp, Sh, St, colp, colh, K, b_p, b_t, area_w, S):
+    """Dense Schur matrix of the film-content Newton step (:mod:`transient.models.roller.roller_fbns`):
+    ``S = [[(Sp + Sh K) diag(b_p) + St diag(b_t), Sh 1], [area_w diag(b_p), 0]]``, the Reynolds rows' Newton
+    matrix after the node-wise substitution ``dp = b_p z``, ``dtheta = b_t z``. ``K`` (n_full, n): film change
+    per unit interior pressure; ``colp`` / ``colh`` map the slots to interior / full node indices (-1: none)."""
+    n = Sp.shape[0]
+    for r in range(n):
+        row = S[r]
+        s_h0 = reynolds_row(Sp, Sh, colp, colh, K, True, r, row)
+        for q in range(n):
+            row[q] *= b_p[q]
+        for s in range(N_SLOTS):
+            cp = colp[r, s]
+            if cp >= 0:
+                row[cp] += St[r, s] * b_t[cp]
+        row[n] = s_h0
+    for q in range(n):
+        S[n, q] = area_w[q] * b_p[q]
+    S[n, n] = 0.0

@@ -22,6 +22,15 @@ class EHLConvergenceError(RuntimeError):
         self.result = result
 
 
+class UnderResolvedGridError(ValueError):
+    """The grid's x spacing cannot carry the load of its most loaded row (no Newton iteration was made):
+    ``resolution`` is :meth:`RollerContact.dry_resolution`'s answer."""
+
+    def __init__(self, message: str, resolution: dict):
+        super().__init__(message)
+        self.resolution = resolution
+
+
 @result_type
 class LineSteady(SteadyResult):
     """Steady EHL line contact (:class:`~transient.models.roller.line_contact.LineContact`).
@@ -139,6 +148,8 @@ class RollerSteady(SteadyResult):
     wall_time: float = quantity("s", 0.0)
     state: np.ndarray = quantity("-", default_factory=lambda: np.zeros(0))
     solver_info: dict = field(default_factory=dict)
+    #: film content theta (1: full film; < 1: cavitated, the fraction of the gap filled), shaped like ``film``
+    content: np.ndarray = quantity("-", default_factory=lambda: np.zeros((0, 0)))
 
     @property
     def X(self):
