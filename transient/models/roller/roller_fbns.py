@@ -42,6 +42,9 @@ class RollerContentFilm:
     h0]``, interior nodes x fastest. The Schur matrix needs the dense influence matrix: a uniform grid's
     DC-FFT film gets it built (``K``, ``n_full x n`` doubles)."""
 
+    #: the Schur matrix is formed (``content_newton``'s dense path)
+    matrix_free = False
+
     def __init__(self, film: EHLFilm):
         if not film.grid.two_d or film.elastic == "rigid":
             raise ValueError("RollerContentFilm: a 2-D grid with an elastic film")
