@@ -203,7 +203,7 @@ class PointContact:
         return u
 
     def steady(self, initial=None, tol: float = 1e-8, max_iter: int = 150, raise_on_failure: bool = True,
-               check_grid: bool = True) -> PointSteady:
+               check_grid: bool | None = None) -> PointSteady:
         """Steady film by FBNS Newton from the dry Hertz pressure (or ``initial``: a :class:`PointSteady`
         of the same grid, for this or another inlet layer: :meth:`layer_start`); when Newton fails from there
         (starved inlets), by pseudo-transient continuation
@@ -213,10 +213,11 @@ class PointContact:
         a starved inlet whose film collapses (``h_min`` below 1 % of ``h_central``: the layer is thinner than
         the contact carries on this grid) the message names ``inlet_film``.
 
-        ``check_grid``: the converged films are solved again on every second node (:meth:`grid_check`); the
-        result's ``grid_change`` holds both grids' ``h_central`` and ``h_min`` and their relative changes,
-        ``grid_settled`` whether both changed by less than :data:`GRID_SETTLED_CHANGE`; when not, a
-        ``UserWarning`` names the grid and a grid that would settle the films."""
+        ``check_grid`` (default: for a solve from the Hertz start, ``initial`` None; continuation in a parameter
+        from ``initial`` is not checked again): the converged films are solved again on every second node
+        (:meth:`grid_check`); the result's ``grid_change`` holds both grids' ``h_central`` and ``h_min`` and
+        their relative changes, ``grid_settled`` whether both changed by less than :data:`GRID_SETTLED_CHANGE`;
+        when not, a ``UserWarning`` names the grid and the next finer one."""
         check_range("tol", tol, "-", 1e-14, 1e-2)
         max_iter = check_int("max_iter", max_iter, "-", 1, 10000)
         t0 = time.perf_counter()
@@ -237,6 +238,8 @@ class PointContact:
         res = self._result(film, u, ok, norms, time.perf_counter() - t0, info)
         if not ok and raise_on_failure:
             raise EHLConvergenceError(self.failure_message(res), res)
+        if check_grid is None:
+            check_grid = initial is None
         if ok and check_grid:
             res.grid_change = self.grid_check(film, res, tol, max_iter)
             res.grid_settled = bool(res.grid_change.get("settled", False))
