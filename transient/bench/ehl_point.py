@@ -163,13 +163,15 @@ def grid_point(w, u, grid, domain) -> dict:
 
 
 def richardson(values) -> dict:
-    """Observed order ``p = log2((f1 - f2)/(f2 - f3))`` of three grids halving the spacing, and the
-    extrapolations ``f3 + (f3 - f2)/(2^p - 1)`` at that order (only when the changes have one sign and
-    shrink) and at the scheme's first order (``2 f3 - f2``)."""
+    """Observed order ``p = log2((f1 - f2)/(f2 - f3))`` of three grids halving the spacing (when the changes
+    have one sign and shrink), and the extrapolations ``f3 + (f3 - f2)/(2^p - 1)`` at that order (only for
+    ``p >= 0.5``: below it the grids are not in the asymptotic range and the extrapolation runs away) and at
+    the scheme's first order (``2 f3 - f2``)."""
     f1, f2, f3 = values
     d1, d2 = f1 - f2, f2 - f3
     p = math.log2(d1 / d2) if d1 * d2 > 0 and abs(d1) > abs(d2) else None
-    return dict(order=p, extrapolated=f3 + (f3 - f2) / (2.0 ** p - 1.0) if p else None, first_order=2 * f3 - f2)
+    extrapolated = f3 + (f3 - f2) / (2.0 ** p - 1.0) if p is not None and p >= 0.5 else None
+    return dict(order=p, extrapolated=extrapolated, first_order=2 * f3 - f2)
 
 
 def grid_convergence(quick: bool) -> list:
@@ -215,9 +217,9 @@ def grid_report(cases) -> list:
                          f"{r['h_min'] * 1e9:.2f} | {r['h_min'] / c['hd_minimum']:.3f} | "
                          f"({r['x_of_h_min']:.2f}, {r['y_of_h_min']:.2f}) |")
     lines += ["", "Richardson extrapolation over the three grids of each domain (observed order p from the "
-              "changes; extrapolated at p only where the changes have one sign and shrink; the scheme's "
-              "first order: 2 f_513 - f_257). Domain: h_c on the compact domain's 257-node spacing with the inlet "
-              "or the sides grown, relative to the compact domain.", "",
+              "changes where they have one sign and shrink; extrapolated at p only for p >= 0.5; the scheme's "
+              "first order: 2 f_513 - f_257). Domain: h_c and h_min on the compact domain's 257-node spacing with "
+              "the inlet or the sides grown, relative to the compact domain.", "",
               "| M | domain | h_c: p | h_c extrap. [nm] | h_c first-order [nm] | h_min: p | h_min extrap. [nm] | "
               "h_min first-order [nm] | h_min first-order / HD |", "|---|---|---|---|---|---|---|---|---|"]
     fmt = lambda v, k=1e9: "-" if v is None else f"{v * k:.2f}"
