@@ -38,10 +38,11 @@ def test_elastic_film_fft_equals_dense_kernel():
     assert np.allclose(f.film(P, 0.0) - f.rigid, dense, rtol=1e-10, atol=1e-12)
 
 
+@pytest.mark.parametrize("upwind", ["first", "second", "limited"])
 @pytest.mark.parametrize("inlet_film", [None, 1.5e-7])
-def test_newton_matrix_matches_finite_differences(fd_jacobian, inlet_film):
+def test_newton_matrix_matches_finite_differences(fd_jacobian, inlet_film, upwind):
     pc = PointContact(0.01, 0.02, grid=(25, 25), density="dowson-higginson", viscosity_law="roelands",
-                      inlet_film=inlet_film, **BASE)
+                      inlet_film=inlet_film, upwind=upwind, **BASE)
     f = pc.film_problem()
     rng = np.random.default_rng(2)
     u = pc.hertz_start(f)

@@ -37,6 +37,10 @@ from transient.results import Stats
 #: nodes required inside the Hertz semi-axis b along the rolling direction
 MIN_NODES_PER_B = 4
 
+#: the Couette flux of the Reynolds rows (:func:`~transient.models.point.kernels.face_flux`): first-order upwind,
+#: second-order linear upwind, or second order with van Albada's limiter
+UPWIND = {"first": 0, "second": 1, "limited": 2}
+
 #: the largest relative change of h_central and h_min between the grid and every second node of it for which
 #: :meth:`PointContact.steady` calls its films grid-settled (the Couette flux is first-order upwind: at first
 #: order the change equals the fine grid's own error)
@@ -57,7 +61,9 @@ class PointContact:
 
     def __init__(self, radius_x, radius_y=None, *, load, speed, viscosity, pressure_viscosity, modulus,
                  density: str = "dowson-higginson", viscosity_law: str = "barus", inlet_film=None,
-                 grid=(65, 65), domain=None, dh_constants=DOWSON_HIGGINSON_PARK):
+                 grid=(65, 65), domain=None, dh_constants=DOWSON_HIGGINSON_PARK, upwind: str = "second"):
+        check_choice("upwind", upwind, tuple(UPWIND))
+        self.upwind = upwind
         self.radius_x = check_range("radius_x", radius_x, "m", 1e-5, 10.0)
         ry = self.radius_x if radius_y is None else radius_y
         self.radius_y = check_range("radius_y", ry, "m", self.radius_x, 1e4,
@@ -139,7 +145,7 @@ class PointContact:
         h_oil = math.inf if h_in is None else h_in / self.film_scale
         return PointFilm(self.x_nodes, self.y_nodes, self.radius_x / self.radius_y, self.lam,
                          2.0 * c.p_max * self.radius_x / (math.pi * self.modulus * c.b), c.p_max,
-                         self.lubricant.kernel_args(), h_oil, 2.0 * math.pi * c.k / 3.0)
+                         self.lubricant.kernel_args(), h_oil, 2.0 * math.pi * c.k / 3.0, UPWIND[self.upwind])
 
     def hertz_start(self, film: PointFilm) -> np.ndarray:
         """The dry Hertz pressure, ``h0`` putting the central film at Hamrock-Dowson's, full content (starved:

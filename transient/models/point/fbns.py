@@ -20,6 +20,10 @@ import scipy.linalg as sla
 from transient.models.point.krylov import KrylovSolver, coarsening_factor, inject, prolong_state
 from transient.models.point.reduced import dense_reduced, schur
 
+#: a Newton step near the solution (largest scaled residual below 1e-3) that keeps more than this fraction of the
+#: residual's norm tightens an inexact linear solver (:meth:`~transient.models.point.krylov.KrylovSolver.tighten`)
+STAGNATION = 0.5
+
 #: the largest nodal unknown count (half grid) solved by the dense LU; above it, Newton-Krylov
 DENSE_MAX_UNKNOWNS = 600
 
@@ -151,4 +155,6 @@ def fbns(film, u0, tol=1e-8, max_iter=60, load_ratio=1.0, step_max=0.5, cj=0.0, 
         u, e, f = ut, et, ft
         norms.append(float(np.max(np.abs(f))))
         merits.append(float(np.sqrt(f @ f)))
+        if merits[-1] > STAGNATION * merits[-2] and norms[-1] < 1e-3 and hasattr(solver, "tighten"):
+            solver.tighten()  # an inexact linear solve that no longer reduces the residual: solve it tighter
     return u, norms[-1] < tol, norms
