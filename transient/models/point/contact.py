@@ -37,8 +37,10 @@ from transient.results import Stats
 #: nodes required inside the Hertz semi-axis b along the rolling direction
 MIN_NODES_PER_B = 4
 
-#: the Couette flux of the Reynolds rows (:func:`~transient.models.point.kernels.face_flux`): first-order upwind,
-#: second-order linear upwind, or second order with van Albada's limiter
+#: the Couette flux of the Reynolds rows (:func:`~transient.models.point.kernels.face_flux`): first-order upwind
+#: (the default: the second-order fluxes fail Newton on coarse grids, 17 x 17 to 65 x 65, where the nested start,
+#: the preconditioner's coarse grid and the grid check solve; docs/validation.md), second-order linear upwind, or
+#: second order with van Albada's limiter
 UPWIND = {"first": 0, "second": 1, "limited": 2}
 
 #: the largest relative change of h_central and h_min between the grid and every second node of it for which
@@ -54,14 +56,14 @@ class PointContact:
     (>= Rx; None: circular), ``load`` [N], ``speed`` [m/s], ``viscosity`` eta0 [Pa s],
     ``pressure_viscosity`` alpha [1/Pa], ``modulus`` E' [Pa], ``density`` ``"dowson-higginson"`` or
     ``"incompressible"``, ``viscosity_law`` ``"barus"`` or ``"roelands"``, ``inlet_film`` [m] or None,
-    ``grid`` (nx, ny) nodes (boundary included, ny odd), ``domain`` (x_in, x_out, y_half) in units of b
+    ``grid`` (nx, ny) nodes (boundary included, ny odd), ``upwind`` the Couette flux (:data:`UPWIND`: ``"first"``, ``"second"``, ``"limited"``), ``domain`` (x_in, x_out, y_half) in units of b
     (default (-4.5, 1.5, 1 + 1.5 k), the inlet moved upstream of Hamrock-Dowson's critical meniscus when that
     lies further out), ``dh_constants`` Dowson-Higginson's (c1, c2) [1/Pa].
     """
 
     def __init__(self, radius_x, radius_y=None, *, load, speed, viscosity, pressure_viscosity, modulus,
                  density: str = "dowson-higginson", viscosity_law: str = "barus", inlet_film=None,
-                 grid=(65, 65), domain=None, dh_constants=DOWSON_HIGGINSON_PARK, upwind: str = "second"):
+                 grid=(65, 65), domain=None, dh_constants=DOWSON_HIGGINSON_PARK, upwind: str = "first"):
         check_choice("upwind", upwind, tuple(UPWIND))
         self.upwind = upwind
         self.radius_x = check_range("radius_x", radius_x, "m", 1e-5, 10.0)
