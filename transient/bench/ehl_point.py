@@ -21,7 +21,9 @@ Hamrock-Dowson and Nijenbanning-Venner-Moes.
 4. Grid convergence of h_c and h_min (circular, Dowson-Higginson density) at M = 31 ... 1726: 129, 257 and
    513 nodes per side on the default domain and on a compact one around the contact (the same nodes, finer
    spacing), the observed order and Richardson's extrapolation; the compact domain's inlet and sides grown
-   at the same spacing to show the films do not depend on them.
+   at the same spacing to show the films do not depend on them; on the default domain the same grids with the
+   second-order upwind Couette flux (``upwind="second"``) in the same run, interleaved per grid, with the
+   Newton iterations and wall times of both fluxes side by side.
 
 ``main(out, quick)`` writes ``ehl_point.json`` into ``out`` and returns the markdown section
 (:func:`report` of that data).
@@ -152,26 +154,32 @@ def compact_domain(pc: PointContact) -> tuple:
     return (-max(2.5, 1.25 * pc.m_c), 1.5, 1.6)
 
 
-def grid_point(w, u, grid, domain) -> dict:
+def grid_point(w, u, grid, domain, upwind="first") -> dict:
     pc = PointContact(radius_x=0.01, load=w, speed=u, viscosity=0.04, pressure_viscosity=2e-8, modulus=2.2e11,
-                      grid=grid, domain=domain)
+                      grid=grid, domain=domain, upwind=upwind)
     t0 = time.perf_counter()
     s = pc.steady(raise_on_failure=False, check_grid=False)
     return dict(grid=list(grid), domain=list(pc.domain), dx=float(pc.x_nodes[1] - pc.x_nodes[0]),
                 success=s.success, wall_s=time.perf_counter() - t0, h_central=s.h_central, h_min=s.h_min,
+                newton=s.iterations, upwind=upwind,
                 x_of_h_min=s.x_of_h_min / pc.b, y_of_h_min=s.y_of_h_min / pc.b, flooded=s.flooded_inlet)
 
 
-def richardson(values) -> dict:
+def richardson(values, scheme_order: int = 1) -> dict:
     """Observed order ``p = log2((f1 - f2)/(f2 - f3))`` of three grids halving the spacing (when the changes
     have one sign and shrink), and the extrapolations ``f3 + (f3 - f2)/(2^p - 1)`` at that order (only for
     ``p >= 0.5``: below it the grids are not in the asymptotic range and the extrapolation runs away) and at
-    the scheme's first order (``2 f3 - f2``)."""
+    the scheme's formal order ``k`` (``f3 + (f3 - f2)/(2^k - 1)``: ``2 f3 - f2`` at first order)."""
     f1, f2, f3 = values
     d1, d2 = f1 - f2, f2 - f3
     p = math.log2(d1 / d2) if d1 * d2 > 0 and abs(d1) > abs(d2) else None
     extrapolated = f3 + (f3 - f2) / (2.0 ** p - 1.0) if p is not None and p >= 0.5 else None
-    return dict(order=p, extrapolated=extrapolated, first_order=2 * f3 - f2)
+    return dict(order=p, extrapolated=extrapolated, at_scheme_order=f3 + (f3 - f2) / (2.0 ** scheme_order - 1.0),
+                scheme_order=scheme_order)
+
+
+#: the name of the default domain's rows with the second-order upwind Couette flux
+SECOND = "default, 2nd-order upwind"
 
 
 def grid_convergence(quick: bool) -> list:
@@ -186,16 +194,19 @@ def grid_convergence(quick: bool) -> list:
         for name, dom in (("default", None), ("compact", compact)):
             for n in sizes:
                 case["rows"].append(dict(grid_point(w, u, (n, n), dom), domain_name=name))
+                if name == "default":  # the second-order flux interleaved
+                    case["rows"].append(dict(grid_point(w, u, (n, n), dom, "second"), domain_name=SECOND))
         # the compact domain grown at its 257-node spacing: the inlet by half the length, the sides by 0.4 b
         n = sizes[1]
         length = compact[1] - compact[0]
         case["inlet_grown"] = grid_point(w, u, (n + (n - 1) // 2, n), (compact[0] - 0.5 * length, 1.5, 1.6))
         case["sides_grown"] = grid_point(w, u, (n, n + (n - 1) // 4), (compact[0], 1.5, 2.0))
         case["compact_257"] = next(r for r in case["rows"] if r["domain_name"] == "compact" and r["grid"][0] == n)
-        for name in ("default", "compact"):
+        for name in ("default", "compact", SECOND):
             rows = [r for r in case["rows"] if r["domain_name"] == name]
             if len(rows) == 3:
-                case[f"richardson_{name}"] = {k: richardson([r[k] for r in rows]) for k in ("h_central", "h_min")}
+                k = 2 if name == SECOND else 1
+                case[f"richardson_{name}"] = {q: richardson([r[q] for r in rows], k) for q in ("h_central", "h_min")}
         out.append(case)
     return out
 
@@ -217,21 +228,34 @@ def grid_report(cases) -> list:
                          f"{r['h_min'] * 1e9:.2f} | {r['h_min'] / c['hd_minimum']:.3f} | "
                          f"({r['x_of_h_min']:.2f}, {r['y_of_h_min']:.2f}) |")
     lines += ["", "Richardson extrapolation over the three grids of each domain (observed order p from the "
-              "changes where they have one sign and shrink; extrapolated at p only for p >= 0.5; the scheme's "
-              "first order: 2 f_513 - f_257). Domain: h_c and h_min on the compact domain's 257-node spacing with "
+              "changes where they have one sign and shrink; extrapolated at p only for p >= 0.5; at the scheme's "
+              "formal order k: f_513 + (f_513 - f_257)/(2^k - 1), k = 1 or 2). Domain: h_c and h_min on the compact domain's 257-node spacing with "
               "the inlet or the sides grown, relative to the compact domain.", "",
-              "| M | domain | h_c: p | h_c extrap. [nm] | h_c first-order [nm] | h_min: p | h_min extrap. [nm] | "
-              "h_min first-order [nm] | h_min first-order / HD |", "|---|---|---|---|---|---|---|---|---|"]
+              "| M | domain | h_c: p | h_c extrap. [nm] | h_c at order k [nm] | h_min: p | h_min extrap. [nm] | "
+              "h_min at order k [nm] | h_min at order k / HD |", "|---|---|---|---|---|---|---|---|---|"]
     fmt = lambda v, k=1e9: "-" if v is None else f"{v * k:.2f}"
     for c in cases:
-        for name in ("default", "compact"):
+        for name in ("default", "compact", SECOND):
             rc = c.get(f"richardson_{name}")
             if rc is None:
                 continue
             a, b = rc["h_central"], rc["h_min"]
             lines.append(f"| {c['M']:.0f} | {name} | {fmt(a['order'], 1)} | {fmt(a['extrapolated'])} | "
-                         f"{fmt(a['first_order'])} | {fmt(b['order'], 1)} | {fmt(b['extrapolated'])} | "
-                         f"{fmt(b['first_order'])} | {b['first_order'] / c['hd_minimum']:.3f} |")
+                         f"{fmt(a['at_scheme_order'])} | {fmt(b['order'], 1)} | {fmt(b['extrapolated'])} | "
+                         f"{fmt(b['at_scheme_order'])} | {b['at_scheme_order'] / c['hd_minimum']:.3f} |")
+    lines += ["", "First- against second-order upwind Couette flux on the default domain (the same run, interleaved "
+              "per grid; ratios second/first):", "",
+              "| M | grid | h_c 1st [nm] | h_c 2nd [nm] | h_min 1st [nm] | h_min 2nd [nm] | Newton its 1st / 2nd | "
+              "wall 1st / 2nd [s] | wall ratio |", "|---|---|---|---|---|---|---|---|---|"]
+    for c in cases:
+        first = [r for r in c["rows"] if r["domain_name"] == "default"]
+        second = [r for r in c["rows"] if r["domain_name"] == SECOND]
+        for a, b in zip(first, second):
+            lines.append(f"| {c['M']:.0f} | {a['grid'][0]} | {a['h_central'] * 1e9:.2f} | "
+                         + (f"{b['h_central'] * 1e9:.2f}" if b["success"] else "not converged") +
+                         f" | {a['h_min'] * 1e9:.2f} | " + (f"{b['h_min'] * 1e9:.2f}" if b["success"] else "-") +
+                         f" | {a.get('newton', '-')} / {b.get('newton', '-')} | {a['wall_s']:.1f} / {b['wall_s']:.1f} | "
+                         f"{b['wall_s'] / a['wall_s']:.2f} |")
     lines += [""]
     for c in cases:
         base = c["compact_257"]
@@ -273,7 +297,9 @@ def report(data: dict) -> str:
     lines = [f"## {TITLE}", "",
              "Circular contact, M = 205, L = 7.2, fully flooded, Hertz start, tolerance 1e-8; the methods in one "
              "run, interleaved per grid. Newton its: on the grid itself (in brackets: on the coarser grids of "
-             "the nested start). s per Newton it: the time on the grid itself over its Newton iterations.", "",
+             "the nested start). s per Newton it: the time on the grid itself over its Newton iterations. "
+             "Couette flux: PointContact's default, upwind=\"auto\" (first order up to 65 x 65 on this domain, "
+             "second order from 129 x 129, dx <= 0.05 b), in every section unless named.", "",
              "| grid | unknowns | method | converged | wall [s] | CPU [s] | Newton its | GMRES its | "
              "set-up [s] | GMRES [s] | s per Newton it | h_c [nm] | h_min [nm] | state vs first |",
              "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]

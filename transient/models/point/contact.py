@@ -37,15 +37,20 @@ from transient.results import Stats
 #: nodes required inside the Hertz semi-axis b along the rolling direction
 MIN_NODES_PER_B = 4
 
-#: the Couette flux of the Reynolds rows (:func:`~transient.models.point.kernels.face_flux`): first-order upwind
-#: (the default: the second-order fluxes fail Newton on coarse grids, 17 x 17 to 65 x 65, where the nested start,
-#: the preconditioner's coarse grid and the grid check solve; docs/validation.md), second-order linear upwind, or
-#: second order with van Albada's limiter
-UPWIND = {"first": 0, "second": 1, "limited": 2}
+#: the Couette flux of the Reynolds rows (:func:`~transient.models.point.kernels.face_flux`): first-order upwind,
+#: second-order linear upwind, second order with van Albada's limiter, or ``"auto"`` (the default): second order
+#: where the spacing along x is at most :data:`SECOND_ORDER_MAX_DX`, first order on coarser grids
+UPWIND = {"first": 0, "second": 1, "limited": 2, "auto": -1}
+
+#: the largest spacing along the rolling direction [units of b] at which ``upwind="auto"`` takes the second-order
+#: flux. Measured (docs/validation.md): at dx = 0.047 b (129 nodes on 6 b) its central film is within 1 % of the
+#: extrapolated one where first order's is 4-8 % off; at dx = 0.094 b and coarser its error is larger than first
+#: order's (-13 % against +10 % at M = 100) and Newton fails from the Hertz start at M = 205 on 25 x 25 and 33 x 33
+SECOND_ORDER_MAX_DX = 0.05
 
 #: the largest relative change of h_central and h_min between the grid and every second node of it for which
-#: :meth:`PointContact.steady` calls its films grid-settled (the Couette flux is first-order upwind: at first
-#: order the change equals the fine grid's own error)
+#: :meth:`PointContact.steady` calls its films grid-settled (at first order the change equals the fine grid's own
+#: error, at second order three times it)
 GRID_SETTLED_CHANGE = 0.05
 
 
@@ -56,14 +61,14 @@ class PointContact:
     (>= Rx; None: circular), ``load`` [N], ``speed`` [m/s], ``viscosity`` eta0 [Pa s],
     ``pressure_viscosity`` alpha [1/Pa], ``modulus`` E' [Pa], ``density`` ``"dowson-higginson"`` or
     ``"incompressible"``, ``viscosity_law`` ``"barus"`` or ``"roelands"``, ``inlet_film`` [m] or None,
-    ``grid`` (nx, ny) nodes (boundary included, ny odd), ``upwind`` the Couette flux (:data:`UPWIND`: ``"first"``, ``"second"``, ``"limited"``), ``domain`` (x_in, x_out, y_half) in units of b
+    ``grid`` (nx, ny) nodes (boundary included, ny odd), ``upwind`` the Couette flux (:data:`UPWIND`: ``"auto"``, ``"first"``, ``"second"``, ``"limited"``), ``domain`` (x_in, x_out, y_half) in units of b
     (default (-4.5, 1.5, 1 + 1.5 k), the inlet moved upstream of Hamrock-Dowson's critical meniscus when that
     lies further out), ``dh_constants`` Dowson-Higginson's (c1, c2) [1/Pa].
     """
 
     def __init__(self, radius_x, radius_y=None, *, load, speed, viscosity, pressure_viscosity, modulus,
                  density: str = "dowson-higginson", viscosity_law: str = "barus", inlet_film=None,
-                 grid=(65, 65), domain=None, dh_constants=DOWSON_HIGGINSON_PARK, upwind: str = "first"):
+                 grid=(65, 65), domain=None, dh_constants=DOWSON_HIGGINSON_PARK, upwind: str = "auto"):
         check_choice("upwind", upwind, tuple(UPWIND))
         self.upwind = upwind
         self.radius_x = check_range("radius_x", radius_x, "m", 1e-5, 10.0)
@@ -118,6 +123,13 @@ class PointContact:
                              "a smaller domain)")
         self.grid = (nx, ny)
 
+    @property
+    def scheme(self) -> int:
+        """The Couette flux's kernel code (:data:`UPWIND`; ``"auto"`` resolved by the grid's spacing)."""
+        if self.upwind != "auto":
+            return UPWIND[self.upwind]
+        return 1 if self.x_nodes[1] - self.x_nodes[0] <= SECOND_ORDER_MAX_DX * (1.0 + 1e-9) else 0
+
     # -- scales ------------------------------------------------------------------------------------------
     @property
     def b(self) -> float:
@@ -147,7 +159,7 @@ class PointContact:
         h_oil = math.inf if h_in is None else h_in / self.film_scale
         return PointFilm(self.x_nodes, self.y_nodes, self.radius_x / self.radius_y, self.lam,
                          2.0 * c.p_max * self.radius_x / (math.pi * self.modulus * c.b), c.p_max,
-                         self.lubricant.kernel_args(), h_oil, 2.0 * math.pi * c.k / 3.0, UPWIND[self.upwind])
+                         self.lubricant.kernel_args(), h_oil, 2.0 * math.pi * c.k / 3.0, self.scheme)
 
     def hertz_start(self, film: PointFilm) -> np.ndarray:
         """The dry Hertz pressure, ``h0`` putting the central film at Hamrock-Dowson's, full content (starved:
@@ -259,8 +271,8 @@ class PointContact:
     def grid_check(self, film: PointFilm, res: PointSteady, tol: float = 1e-8, max_iter: int = 150) -> dict:
         """The films of ``res`` against the same problem on every second node (Newton from the converged state
         injected there): ``{"coarse_grid", "h_central_coarse", "h_min_coarse", "change_h_central",
-        "change_h_min", "settled", "note"}``. The Couette flux is first-order upwind, so at first order the
-        change equals the grid's own error (``e(2 dx) - e(dx) = e(dx)``); when it is above
+        "change_h_min", "settled", "note"}``, the coarse grid with the same Couette flux. At first order the
+        change equals the grid's own error (``e(2 dx) - e(dx) = e(dx)``; at second order ``3 e(dx)``); when it is above
         :data:`GRID_SETTLED_CHANGE`, ``note`` advises the next finer grid or a smaller domain with the same nodes
         (on coarse grids h_min converges faster than first order: docs/validation.md). The coarse Newton starts
         from the injected state, else from the Hertz pressure; unmeasured (``settled`` False, said in ``note``)

@@ -208,14 +208,16 @@ class PointFilm:
         """The film content ``q = rho theta H`` at the unknowns (the transient's stored mass)."""
         return (e["rho"] * e["T"] * e["H"]).ravel()[self.flat]
 
-    def coarsened(self, factor: int = 2) -> "PointFilm":
-        """The same problem on every ``factor``-th node (``nx - 1`` and ``(ny - 1)/2`` divisible by it; cached)."""
+    def coarsened(self, factor: int = 2, scheme: int | None = None) -> "PointFilm":
+        """The same problem on every ``factor``-th node (``nx - 1`` and ``(ny - 1)/2`` divisible by it; cached),
+        with this film's Couette flux or ``scheme``."""
         if (self.nx - 1) % factor or (self.m - 1) % factor:
             raise ValueError(f"factor = {factor}: the grid {self.nx} x {self.y_full.size} does not coarsen by it")
-        if factor not in self._coarse:
-            self._coarse[factor] = PointFilm(self.x[::factor], self.y_full[::factor], self.ratio, self.lam,
-                                             self.c_el, self.p_h, self.lub, self.h_oil, self.load, self.scheme)
-        return self._coarse[factor]
+        scheme = self.scheme if scheme is None else int(scheme)
+        if (factor, scheme) not in self._coarse:
+            self._coarse[factor, scheme] = PointFilm(self.x[::factor], self.y_full[::factor], self.ratio, self.lam,
+                                                     self.c_el, self.p_h, self.lub, self.h_oil, self.load, scheme)
+        return self._coarse[factor, scheme]
 
     def local_newton(self, u, e, cj=0.0):
         """The sparse pieces of the Jacobian of the Reynolds rows ``R - cj q`` (``cj = 0``: steady):

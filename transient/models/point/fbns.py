@@ -94,10 +94,14 @@ def merit(film, e, cj=0.0, q_hat=None):
 def nested_start(film, u0, tol, max_iter, load_ratio, step_max, memory, solver):
     """Nested iteration (Venner & Lubrecht, *Multilevel Methods in Lubrication*, 2000, the FMG start): the
     steady problem on every second node from ``u0`` injected there (itself nested while the grid is large),
-    its solution interpolated bilinearly back; None when the coarse Newton fails."""
+    its solution interpolated bilinearly back (a second-order Couette flux that fails there: the first-order one);
+    None when the coarse Newton fails."""
     t0 = time.perf_counter()
     coarse = film.coarsened(2)
     uc, ok, norms = fbns(coarse, inject(film, coarse, 2, u0), tol, max_iter, load_ratio, step_max, memory=memory)
+    if not ok and coarse.scheme != 0:
+        coarse = film.coarsened(2, scheme=0)
+        uc, ok, norms = fbns(coarse, inject(film, coarse, 2, u0), tol, max_iter, load_ratio, step_max, memory=memory)
     solver.stats.setdefault("coarse_newton", []).append((coarse.nx, len(norms) - 1, ok))
     solver.stats["coarse_s"] = solver.stats.get("coarse_s", 0.0) + time.perf_counter() - t0
     return prolong_state(coarse, film, uc) if ok else None
