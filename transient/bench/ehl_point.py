@@ -298,8 +298,7 @@ def report(data: dict) -> str:
              "Circular contact, M = 205, L = 7.2, fully flooded, Hertz start, tolerance 1e-8; the methods in one "
              "run, interleaved per grid. Newton its: on the grid itself (in brackets: on the coarser grids of "
              "the nested start). s per Newton it: the time on the grid itself over its Newton iterations. "
-             "Couette flux: PointContact's default, upwind=\"auto\" (first order up to 65 x 65 on this domain, "
-             "second order from 129 x 129, dx <= 0.05 b), in every section unless named.", "",
+             "Couette flux: first-order upwind (PointContact's default) in every section unless named.", "",
              "| grid | unknowns | method | converged | wall [s] | CPU [s] | Newton its | GMRES its | "
              "set-up [s] | GMRES [s] | s per Newton it | h_c [nm] | h_min [nm] | state vs first |",
              "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]

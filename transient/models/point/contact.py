@@ -37,16 +37,13 @@ from transient.results import Stats
 #: nodes required inside the Hertz semi-axis b along the rolling direction
 MIN_NODES_PER_B = 4
 
-#: the Couette flux of the Reynolds rows (:func:`~transient.models.point.kernels.face_flux`): first-order upwind,
-#: second-order linear upwind, second order with van Albada's limiter, or ``"auto"`` (the default): second order
-#: where the spacing along x is at most :data:`SECOND_ORDER_MAX_DX`, first order on coarser grids
-UPWIND = {"first": 0, "second": 1, "limited": 2, "auto": -1}
-
-#: the largest spacing along the rolling direction [units of b] at which ``upwind="auto"`` takes the second-order
-#: flux. Measured (docs/validation.md): at dx = 0.047 b (129 nodes on 6 b) its central film is within 1 % of the
-#: extrapolated one where first order's is 4-8 % off; at dx = 0.094 b and coarser its error is larger than first
-#: order's (-13 % against +10 % at M = 100) and Newton fails from the Hertz start at M = 205 on 25 x 25 and 33 x 33
-SECOND_ORDER_MAX_DX = 0.05
+#: the Couette flux of the Reynolds rows (:func:`~transient.models.point.kernels.face_flux`): first-order upwind
+#: (the default), second-order linear upwind, or second order with van Albada's limiter. Measured
+#: (docs/validation.md): the second-order fluxes converge at order ~2 once the outlet constriction is resolved
+#: (M = 31: within 1 % of the extrapolated h_c on 129 x 129, first order 4 % off), but on the grids in use they
+#: are the less accurate ones at higher M (M = 518: h_c 27 % / 12 % below first order's on 129 / 257 nodes,
+#: first order within ~5 % of the extrapolated value) and Newton fails with them at M = 205 on 25 x 25 and 33 x 33
+UPWIND = {"first": 0, "second": 1, "limited": 2}
 
 #: the largest relative change of h_central and h_min between the grid and every second node of it for which
 #: :meth:`PointContact.steady` calls its films grid-settled (at first order the change equals the fine grid's own
@@ -61,14 +58,14 @@ class PointContact:
     (>= Rx; None: circular), ``load`` [N], ``speed`` [m/s], ``viscosity`` eta0 [Pa s],
     ``pressure_viscosity`` alpha [1/Pa], ``modulus`` E' [Pa], ``density`` ``"dowson-higginson"`` or
     ``"incompressible"``, ``viscosity_law`` ``"barus"`` or ``"roelands"``, ``inlet_film`` [m] or None,
-    ``grid`` (nx, ny) nodes (boundary included, ny odd), ``upwind`` the Couette flux (:data:`UPWIND`: ``"auto"``, ``"first"``, ``"second"``, ``"limited"``), ``domain`` (x_in, x_out, y_half) in units of b
+    ``grid`` (nx, ny) nodes (boundary included, ny odd), ``upwind`` the Couette flux (:data:`UPWIND`: ``"first"``, ``"second"``, ``"limited"``), ``domain`` (x_in, x_out, y_half) in units of b
     (default (-4.5, 1.5, 1 + 1.5 k), the inlet moved upstream of Hamrock-Dowson's critical meniscus when that
     lies further out), ``dh_constants`` Dowson-Higginson's (c1, c2) [1/Pa].
     """
 
     def __init__(self, radius_x, radius_y=None, *, load, speed, viscosity, pressure_viscosity, modulus,
                  density: str = "dowson-higginson", viscosity_law: str = "barus", inlet_film=None,
-                 grid=(65, 65), domain=None, dh_constants=DOWSON_HIGGINSON_PARK, upwind: str = "auto"):
+                 grid=(65, 65), domain=None, dh_constants=DOWSON_HIGGINSON_PARK, upwind: str = "first"):
         check_choice("upwind", upwind, tuple(UPWIND))
         self.upwind = upwind
         self.radius_x = check_range("radius_x", radius_x, "m", 1e-5, 10.0)
@@ -123,13 +120,6 @@ class PointContact:
                              "a smaller domain)")
         self.grid = (nx, ny)
 
-    @property
-    def scheme(self) -> int:
-        """The Couette flux's kernel code (:data:`UPWIND`; ``"auto"`` resolved by the grid's spacing)."""
-        if self.upwind != "auto":
-            return UPWIND[self.upwind]
-        return 1 if self.x_nodes[1] - self.x_nodes[0] <= SECOND_ORDER_MAX_DX * (1.0 + 1e-9) else 0
-
     # -- scales ------------------------------------------------------------------------------------------
     @property
     def b(self) -> float:
@@ -159,7 +149,7 @@ class PointContact:
         h_oil = math.inf if h_in is None else h_in / self.film_scale
         return PointFilm(self.x_nodes, self.y_nodes, self.radius_x / self.radius_y, self.lam,
                          2.0 * c.p_max * self.radius_x / (math.pi * self.modulus * c.b), c.p_max,
-                         self.lubricant.kernel_args(), h_oil, 2.0 * math.pi * c.k / 3.0, self.scheme)
+                         self.lubricant.kernel_args(), h_oil, 2.0 * math.pi * c.k / 3.0, UPWIND[self.upwind])
 
     def hertz_start(self, film: PointFilm) -> np.ndarray:
         """The dry Hertz pressure, ``h0`` putting the central film at Hamrock-Dowson's, full content (starved:
