@@ -31,6 +31,7 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
+from transient.models.roller.kernels import van_albada
 from transient.physics.lubricant import density_point, viscosity_point
 
 
@@ -64,25 +65,14 @@ def node_properties(P, H, lam, p_h, lub):
 def face_flux(scheme, qm, qc, qp, dx):
     """Couette flux ``F`` at the face downstream of the node with content ``qc`` (upstream ``qm``, downstream
     ``qp``) and ``(dF/dqm, dF/dqc, dF/dqp)``: ``scheme`` 0 first order ``F = qc``; 1 linear upwind
-    ``F = qc + (qc - qm)/2``; 2 the slope limited by van Albada's limiter (module docstring)."""
+    ``F = qc + (qc - qm)/2``; 2 the slope limited by van Albada's limiter (module docstring; the roller's
+    :func:`~transient.models.roller.kernels.van_albada`)."""
     if scheme == 0:
         return qc, 0.0, 1.0, 0.0
     if scheme == 1:
         return 1.5 * qc - 0.5 * qm, -0.5, 1.5, 0.0
     s, sa, sb = van_albada((qp - qc) / dx, (qc - qm) / dx)
     return qc + 0.5 * dx * s, -0.5 * sb, 1.0 + 0.5 * (sb - sa), 0.5 * sa
-
-
-@njit(cache=True, error_model="numpy")
-def van_albada(a, b):
-    """Limited slope ``s(a, b) = a b (a + b)/(a^2 + b^2)`` where ``a b > 0``, else 0, and ``ds/da``, ``ds/db``
-    (van Albada, van Leer & Roberts, *Astron. Astrophys.* 108, 1982)."""
-    if a * b <= 0.0:
-        return 0.0, 0.0, 0.0
-    num = a * b * (a + b)
-    den = a * a + b * b
-    return num / den, ((2.0 * a * b + b * b) * den - 2.0 * a * num) / (den * den), \
-        ((a * a + 2.0 * a * b) * den - 2.0 * b * num) / (den * den)
 
 
 @njit(cache=True, error_model="numpy")
