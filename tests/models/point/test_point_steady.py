@@ -38,10 +38,11 @@ def test_elastic_film_fft_equals_dense_kernel():
     assert np.allclose(f.film(P, 0.0) - f.rigid, dense, rtol=1e-10, atol=1e-12)
 
 
+@pytest.mark.parametrize("upwind", ["first", "second", "limited"])
 @pytest.mark.parametrize("inlet_film", [None, 1.5e-7])
-def test_newton_matrix_matches_finite_differences(fd_jacobian, inlet_film):
+def test_newton_matrix_matches_finite_differences(fd_jacobian, inlet_film, upwind):
     pc = PointContact(0.01, 0.02, grid=(25, 25), density="dowson-higginson", viscosity_law="roelands",
-                      inlet_film=inlet_film, **BASE)
+                      inlet_film=inlet_film, upwind=upwind, **BASE)
     f = pc.film_problem()
     rng = np.random.default_rng(2)
     u = pc.hertz_start(f)
@@ -118,6 +119,45 @@ def test_result_saves_and_loads(flooded, tmp_path):
     (dict(inlet_film=1e-12), "inlet_film"), (dict(radius_y=0.001), "radius_y"),
 ])
 def test_bad_input_names_parameter(kw, match):
+    args = dict(BASE, radius_x=0.01)
+    args.update(kw)
+    with pytest.raises(ValueError, match=match):
+        PointContact(**args)
+
+
+def test_grid_check_is_the_solution_on_every_second_node():
+    """steady()'s grid check: the films on every second node are those of the contact solved on that grid."""
+    low_m = dict(BASE, load=10.0)  # M = 31, L = 10.8: the films settle on 65 x 65 (1.5 % and 1.2 % measured)
+    s = PointContact(0.01, grid=(65, 65), **low_m).steady()
+    g = s.grid_change
+    assert g["coarse_grid"] == (33, 33)
+    half = PointContact(0.01, grid=(33, 33), **low_m).steady(check_grid=False)
+    assert g["h_central_coarse"] == pytest.approx(half.h_central, rel=1e-6)
+    assert g["h_min_coarse"] == pytest.approx(half.h_min, rel=1e-6)
+    assert g["change_h_min"] == pytest.approx(abs(s.h_min - half.h_min) / s.h_min, rel=1e-5)
+    assert s.grid_settled and max(g["change_h_central"], g["change_h_min"]) < 0.05
+
+
+def test_grid_check_flags_an_unresolved_minimum_film():
+    """M = 173 on 65 x 65: h_min changes by 25 % from 33 x 33 -> not grid-settled, a warning naming the grid."""
+    pc = PointContact(0.01, grid=(65, 65), **dict(BASE, load=10.0, speed=0.1))
+    with pytest.warns(UserWarning, match=r"NOT grid-settled on 65 x 65 nodes.*grid = \(129, 129\)"):
+        s = pc.steady()
+    assert s.success and not s.grid_settled
+    assert s.grid_change["change_h_min"] > 0.05
+    assert pc.steady(check_grid=False).grid_change == {}
+
+
+@pytest.mark.parametrize("kw, match", [
+    (dict(radius_x=0.0), r"radius_x = 0.0 \[m\]"), (dict(radius_x=-0.01), r"radius_x = -0.01 \[m\]"),
+    (dict(radius_y=-0.02), r"radius_y = -0.02 \[m\]"), (dict(load=-5.0), r"load = -5.0 \[N\]"),
+    (dict(speed=0.0), r"speed = 0.0 \[m/s\]"), (dict(viscosity=-0.04), r"viscosity = -0.04 \[Pa s\]"),
+    (dict(modulus=-2.2e11), r"modulus = -220000000000.0 \[Pa\]"),
+    (dict(pressure_viscosity=-2e-8), r"pressure_viscosity = -2e-08 \[1/Pa\]"),
+    (dict(load=float("nan")), r"load = nan \[N\]"), (dict(grid=(33.5, 33)), "whole number"),
+    (dict(inlet_film=-1e-7), r"inlet_film = -1e-07 \[m\].*allowed"),
+])
+def test_bad_input_names_parameter_value_and_unit(kw, match):
     args = dict(BASE, radius_x=0.01)
     args.update(kw)
     with pytest.raises(ValueError, match=match):

@@ -48,3 +48,20 @@ def test_load_step_squeezes_to_the_steady_film_at_the_new_load(contact):
     s2 = twice.steady()
     assert r.h_central[-1] == pytest.approx(s2.h_central, rel=1e-4)
     assert r.load[-1] == pytest.approx(2 * BASE["load"])
+
+
+@pytest.mark.slow
+def test_load_ramp_given_as_a_function_of_time_ends_on_the_steady_film(contact):
+    # 20 -> 40 N over 10 b/u, held to 60 b/u: measured 3.2e-8 (h_c) and 1.9e-8 (h_min) from the steady film
+    s1 = contact.steady()
+    ramp = lambda t: BASE["load"] * (1.0 + min(t / (10 * contact.time_scale), 1.0))
+    r = contact.transient(t_end=60 * contact.time_scale, load=ramp, start=s1, rtol=1e-3)
+    assert r.success
+    assert np.allclose(r.load, [ramp(t) for t in r.t], rtol=1e-12)
+    assert np.all(np.diff(r.load) >= 0.0) and r.load[-1] == pytest.approx(2 * BASE["load"])
+    f = contact.b / PointContact(0.01, grid=GRID, **dict(BASE, load=2 * BASE["load"])).b
+    twice = PointContact(0.01, grid=GRID, domain=tuple(v * f for v in contact.domain),
+                         **dict(BASE, load=2 * BASE["load"]))
+    s2 = twice.steady()
+    assert r.h_central[-1] == pytest.approx(s2.h_central, rel=1e-6)
+    assert r.h_min[-1] == pytest.approx(s2.h_min, rel=1e-6)

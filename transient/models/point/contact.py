@@ -17,12 +17,14 @@ from __future__ import annotations
 
 import math
 import time
+import warnings
 
 import numpy as np
 
 from transient.checks import check_choice, check_int, check_positive, check_range
 from transient.models.point.fbns import fbns
 from transient.models.point.ehl_problem import PointFilm
+from transient.models.point.krylov import inject
 from transient.models.point.results import PointDry, PointSteady, PointTransient
 from transient.models.point.stepping import march, steady_by_time_steps
 from transient.models.roller.dry import edge_positions, polonsky_keer
@@ -35,6 +37,19 @@ from transient.results import Stats
 #: nodes required inside the Hertz semi-axis b along the rolling direction
 MIN_NODES_PER_B = 4
 
+#: the Couette flux of the Reynolds rows (:func:`~transient.models.point.kernels.face_flux`): first-order upwind
+#: (the default), second-order linear upwind, or second order with van Albada's limiter. Measured
+#: (docs/validation.md): the second-order fluxes converge at order ~2 once the outlet constriction is resolved
+#: (M = 31: within 1 % of the extrapolated h_c on 129 x 129, first order 4 % off), but on the grids in use they
+#: are the less accurate ones at higher M (M = 518: h_c 27 % / 12 % below first order's on 129 / 257 nodes,
+#: first order within ~5 % of the extrapolated value) and Newton fails with them at M = 205 on 25 x 25 and 33 x 33
+UPWIND = {"first": 0, "second": 1, "limited": 2}
+
+#: the largest relative change of h_central and h_min between the grid and every second node of it for which
+#: :meth:`PointContact.steady` calls its films grid-settled (at first order the change equals the fine grid's own
+#: error, at second order three times it)
+GRID_SETTLED_CHANGE = 0.05
+
 
 class PointContact:
     """Steady and transient EHL point contact (module docstring).
@@ -43,14 +58,16 @@ class PointContact:
     (>= Rx; None: circular), ``load`` [N], ``speed`` [m/s], ``viscosity`` eta0 [Pa s],
     ``pressure_viscosity`` alpha [1/Pa], ``modulus`` E' [Pa], ``density`` ``"dowson-higginson"`` or
     ``"incompressible"``, ``viscosity_law`` ``"barus"`` or ``"roelands"``, ``inlet_film`` [m] or None,
-    ``grid`` (nx, ny) nodes (boundary included, ny odd), ``domain`` (x_in, x_out, y_half) in units of b
+    ``grid`` (nx, ny) nodes (boundary included, ny odd), ``upwind`` the Couette flux (:data:`UPWIND`: ``"first"``, ``"second"``, ``"limited"``), ``domain`` (x_in, x_out, y_half) in units of b
     (default (-4.5, 1.5, 1 + 1.5 k), the inlet moved upstream of Hamrock-Dowson's critical meniscus when that
     lies further out), ``dh_constants`` Dowson-Higginson's (c1, c2) [1/Pa].
     """
 
     def __init__(self, radius_x, radius_y=None, *, load, speed, viscosity, pressure_viscosity, modulus,
                  density: str = "dowson-higginson", viscosity_law: str = "barus", inlet_film=None,
-                 grid=(65, 65), domain=None, dh_constants=DOWSON_HIGGINSON_PARK):
+                 grid=(65, 65), domain=None, dh_constants=DOWSON_HIGGINSON_PARK, upwind: str = "first"):
+        check_choice("upwind", upwind, tuple(UPWIND))
+        self.upwind = upwind
         self.radius_x = check_range("radius_x", radius_x, "m", 1e-5, 10.0)
         ry = self.radius_x if radius_y is None else radius_y
         self.radius_y = check_range("radius_y", ry, "m", self.radius_x, 1e4,
@@ -132,7 +149,7 @@ class PointContact:
         h_oil = math.inf if h_in is None else h_in / self.film_scale
         return PointFilm(self.x_nodes, self.y_nodes, self.radius_x / self.radius_y, self.lam,
                          2.0 * c.p_max * self.radius_x / (math.pi * self.modulus * c.b), c.p_max,
-                         self.lubricant.kernel_args(), h_oil, 2.0 * math.pi * c.k / 3.0)
+                         self.lubricant.kernel_args(), h_oil, 2.0 * math.pi * c.k / 3.0, UPWIND[self.upwind])
 
     def hertz_start(self, film: PointFilm) -> np.ndarray:
         """The dry Hertz pressure, ``h0`` putting the central film at Hamrock-Dowson's, full content (starved:
@@ -195,7 +212,8 @@ class PointContact:
         u[n: 2 * n][dry] = film.h_oil / H[dry]
         return u
 
-    def steady(self, initial=None, tol: float = 1e-8, max_iter: int = 150, raise_on_failure: bool = True) -> PointSteady:
+    def steady(self, initial=None, tol: float = 1e-8, max_iter: int = 150, raise_on_failure: bool = True,
+               check_grid: bool | None = None) -> PointSteady:
         """Steady film by FBNS Newton from the dry Hertz pressure (or ``initial``: a :class:`PointSteady`
         of the same grid, for this or another inlet layer: :meth:`layer_start`); when Newton fails from there
         (starved inlets), by pseudo-transient continuation
@@ -203,7 +221,13 @@ class PointContact:
         ``initial``, both again from the Hertz start. Raises
         :class:`EHLConvergenceError` (``raise_on_failure``) with the last iterate flagged ``success=False``; for
         a starved inlet whose film collapses (``h_min`` below 1 % of ``h_central``: the layer is thinner than
-        the contact carries on this grid) the message names ``inlet_film``."""
+        the contact carries on this grid) the message names ``inlet_film``.
+
+        ``check_grid`` (default: for a solve from the Hertz start, ``initial`` None; continuation in a parameter
+        from ``initial`` is not checked again): the converged films are solved again on every second node
+        (:meth:`grid_check`); the result's ``grid_change`` holds both grids' ``h_central`` and ``h_min`` and
+        their relative changes, ``grid_settled`` whether both changed by less than :data:`GRID_SETTLED_CHANGE`;
+        when not, a ``UserWarning`` names the grid and the next finer one."""
         check_range("tol", tol, "-", 1e-14, 1e-2)
         max_iter = check_int("max_iter", max_iter, "-", 1, 10000)
         t0 = time.perf_counter()
@@ -224,7 +248,56 @@ class PointContact:
         res = self._result(film, u, ok, norms, time.perf_counter() - t0, info)
         if not ok and raise_on_failure:
             raise EHLConvergenceError(self.failure_message(res), res)
+        if check_grid is None:
+            check_grid = initial is None
+        if ok and check_grid:
+            res.grid_change = self.grid_check(film, res, tol, max_iter)
+            res.grid_settled = bool(res.grid_change.get("settled", False))
+            if not res.grid_settled:
+                warnings.warn(res.grid_change["note"], UserWarning, stacklevel=2)
+            res.wall_time = time.perf_counter() - t0
         return res
+
+    def grid_check(self, film: PointFilm, res: PointSteady, tol: float = 1e-8, max_iter: int = 150) -> dict:
+        """The films of ``res`` against the same problem on every second node (Newton from the converged state
+        injected there): ``{"coarse_grid", "h_central_coarse", "h_min_coarse", "change_h_central",
+        "change_h_min", "settled", "note"}``, the coarse grid with the same Couette flux. At first order the
+        change equals the grid's own error (``e(2 dx) - e(dx) = e(dx)``; at second order ``3 e(dx)``); when it is above
+        :data:`GRID_SETTLED_CHANGE`, ``note`` advises the next finer grid or a smaller domain with the same nodes
+        (on coarse grids h_min converges faster than first order: docs/validation.md). The coarse Newton starts
+        from the injected state, else from the Hertz pressure; unmeasured (``settled`` False, said in ``note``)
+        when the grid does not halve or both fail."""
+        nx, ny = self.grid
+        if (film.nx - 1) % 2 or (film.m - 1) % 2:
+            return dict(settled=False, note=f"point contact: grid {nx} x {ny} is not grid-checked (nx - 1 and "
+                                            f"(ny - 1)/2 must be even to halve it)")
+        coarse = film.coarsened(2)
+        uc, ok, _ = fbns(coarse, inject(film, coarse, 2, res.state), tol, max_iter)
+        if not ok:
+            uc, ok, _ = fbns(coarse, self.hertz_start(coarse), tol, max_iter)
+        cgrid = ((nx + 1) // 2, (ny + 1) // 2)
+        if not ok:
+            return dict(coarse_grid=cgrid, settled=False,
+                        note=f"point contact: grid {nx} x {ny} NOT grid-checked (Newton failed on every second "
+                             f"node, {cgrid[0]} x {cgrid[1]}): refine to check h_min")
+        P, _, h0 = coarse.split(uc)
+        H = coarse.film(P, h0) * self.film_scale
+        hc, hm = float(H[0, int(np.argmin(np.abs(coarse.x)))]), float(H.min())
+        ch_c, ch_m = abs(res.h_central - hc) / res.h_central, abs(res.h_min - hm) / res.h_min
+        worst = max(ch_c, ch_m)
+        settled = worst < GRID_SETTLED_CHANGE
+        out = dict(coarse_grid=cgrid, h_central_coarse=hc, h_min_coarse=hm, change_h_central=ch_c,
+                   change_h_min=ch_m, settled=settled)
+        if settled:
+            out["note"] = (f"point contact: grid {nx} x {ny} settled: h_central and h_min change by {ch_c:.1%} and "
+                           f"{ch_m:.1%} from {cgrid[0]} x {cgrid[1]}")
+        else:
+            out["note"] = (f"point contact: h_min = {res.h_min:.4g} m NOT grid-settled on {nx} x {ny} nodes (dx = "
+                           f"{film.dx:.3g} b): h_central and h_min change by {ch_c:.1%} and {ch_m:.1%} from "
+                           f"{cgrid[0]} x {cgrid[1]} (allowed: {GRID_SETTLED_CHANGE:.0%}); refine (grid = "
+                           f"{(2 * nx - 1, 2 * ny - 1)}) or take a smaller domain around the contact with the same "
+                           f"nodes, and check again")
+        return out
 
     def failure_message(self, res: PointSteady) -> str:
         """Why ``res`` did not converge, in one line: the residual history, and for a starved inlet whose film

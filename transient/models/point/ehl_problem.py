@@ -64,9 +64,10 @@ class PointFilm:
 
     ``x`` (nx nodes) and ``y`` (n nodes, symmetric, odd count) in units of b; ``ratio`` = Rx/Ry;
     ``lam``, ``c_el``, ``p_h`` [Pa]; ``lub`` the lubricant's kernel arguments; ``h_oil`` the scaled
-    inlet layer (``inf``: flooded); ``load`` = iint P dX dY at the reference load (2 pi k/3)."""
+    inlet layer (``inf``: flooded); ``load`` = iint P dX dY at the reference load (2 pi k/3); ``scheme`` the
+    Couette flux (0 first-order upwind, 1 second-order linear upwind, 2 van Albada limited)."""
 
-    def __init__(self, x, y, ratio, lam, c_el, p_h, lub, h_oil, load):
+    def __init__(self, x, y, ratio, lam, c_el, p_h, lub, h_oil, load, scheme=1):
         self.x = np.asarray(x, float)
         self.y_full = np.asarray(y, float)
         ny = self.y_full.size
@@ -80,6 +81,7 @@ class PointFilm:
         self.lub = tuple(float(v) for v in lub)
         self.h_oil = float(h_oil)
         self.load = float(load)
+        self.scheme = int(scheme)
         m, nx = self.m, self.nx
         self.n = (m - 1) * (nx - 2)
         yy, xx = np.meshgrid(self.y, self.x, indexing="ij")
@@ -140,11 +142,11 @@ class PointFilm:
         unknown = -np.ones(m * nx, dtype=np.int64)
         unknown[self.flat] = np.arange(self.n)
         js = np.where(j == 0, j + 1, j - 1)
-        nodes = np.stack([j * nx + i, j * nx + i - 1, j * nx + i + 1, js * nx + i, (j + 1) * nx + i], axis=1)
+        nodes = np.stack([j * nx + i, j * nx + i - 1, j * nx + i + 1, js * nx + i, (j + 1) * nx + i,
+                          j * nx + np.maximum(i - 2, 0)], axis=1)
         nodes[j == 0, 3] = nodes[j == 0, 4]  # the south slot is unused on the symmetry row (zeros)
-        self.col_h = nodes
+        self.col_h = nodes  # centre, west, east, south, north, west-west (unused, zero, at column 1)
         self.col_p = unknown[nodes]
-        self.col_t = self.col_p[:, :2]
 
     def equations(self, u, load_ratio=1.0):
         """Residual pieces at ``u``: dict with the scaled fields and the kernel's local derivatives."""
@@ -153,8 +155,9 @@ class PointFilm:
         rho, drho, eps, deps, depsh = node_properties(P, H, self.lam, self.p_h, self.lub)
         n = self.n
         res, scale = np.empty(n), np.empty(n)
-        dp, dh, dt = np.empty((n, 5)), np.empty((n, 5)), np.empty((n, 2))
-        reynolds(P, T, H, rho, drho, eps, deps, depsh, self.dx, self.dy, self.h_oil, res, scale, dp, dh, dt)
+        dp, dh, dt = np.empty((n, 6)), np.empty((n, 6)), np.empty((n, 6))
+        reynolds(P, T, H, rho, drho, eps, deps, depsh, self.dx, self.dy, self.h_oil, self.scheme, res, scale,
+                 dp, dh, dt)
         p, t = u[:n], u[n: 2 * n]
         b = 1.0 - t
         rad = np.sqrt(p * p + b * b)
@@ -173,7 +176,9 @@ class PointFilm:
         ew = 0.5 * (eps[:-1, 0] + eps[:-1, 1])
         inlet = np.minimum(self.h_oil, H[:-1, 0]) - ew * (P[:-1, 1] - P[:-1, 0]) / self.dx
         ee = 0.5 * (eps[:-1, -2] + eps[:-1, -1])
-        outlet = rho[:-1, -2] * T[:-1, -2] * H[:-1, -2] - ee * (P[:-1, -1] - P[:-1, -2]) / self.dx
+        q = rho[:-1] * T[:-1] * H[:-1]
+        carried = q[:, -2] if self.scheme == 0 else 1.5 * q[:, -2] - 0.5 * q[:, -3]  # the kernel's outlet face
+        outlet = carried - ee * (P[:-1, -1] - P[:-1, -2]) / self.dx
         en = 0.5 * (eps[-2, 1:-1] + eps[-1, 1:-1])
         sides = -en * (P[-1, 1:-1] - P[-2, 1:-1]) / self.dy
         return dict(inlet=float(inlet @ wy), outlet=float(outlet @ wy), sides=2.0 * float(sides.sum()) * self.dx)
@@ -181,15 +186,12 @@ class PointFilm:
     def local_matrices(self, e):
         """Sparse ``(dR/dP local, dR/dH on the half-grid nodes, dR/dtheta)`` from the kernel's slots."""
         n, nn = self.n, self.m * self.nx
-        rows = np.repeat(np.arange(n), 5)
+        rows = np.repeat(np.arange(n), self.col_p.shape[1])
         cp = self.col_p.ravel()
         keep = cp >= 0
         a_p = sp.csr_matrix((e["dp"].ravel()[keep], (rows[keep], cp[keep])), shape=(n, n))
         d_h = sp.csr_matrix((e["dh"].ravel(), (rows, self.col_h.ravel())), shape=(n, nn))
-        rows2 = np.repeat(np.arange(n), 2)
-        ct = self.col_t.ravel()
-        keep2 = ct >= 0
-        a_t = sp.csr_matrix((e["dt"].ravel()[keep2], (rows2[keep2], ct[keep2])), shape=(n, n))
+        a_t = sp.csr_matrix((e["dt"].ravel()[keep], (rows[keep], cp[keep])), shape=(n, n))
         return a_p, d_h, a_t
 
     def fb_derivatives(self, u, e):
@@ -206,14 +208,16 @@ class PointFilm:
         """The film content ``q = rho theta H`` at the unknowns (the transient's stored mass)."""
         return (e["rho"] * e["T"] * e["H"]).ravel()[self.flat]
 
-    def coarsened(self, factor: int = 2) -> "PointFilm":
-        """The same problem on every ``factor``-th node (``nx - 1`` and ``(ny - 1)/2`` divisible by it; cached)."""
+    def coarsened(self, factor: int = 2, scheme: int | None = None) -> "PointFilm":
+        """The same problem on every ``factor``-th node (``nx - 1`` and ``(ny - 1)/2`` divisible by it; cached),
+        with this film's Couette flux or ``scheme``."""
         if (self.nx - 1) % factor or (self.m - 1) % factor:
             raise ValueError(f"factor = {factor}: the grid {self.nx} x {self.y_full.size} does not coarsen by it")
-        if factor not in self._coarse:
-            self._coarse[factor] = PointFilm(self.x[::factor], self.y_full[::factor], self.ratio, self.lam,
-                                             self.c_el, self.p_h, self.lub, self.h_oil, self.load)
-        return self._coarse[factor]
+        scheme = self.scheme if scheme is None else int(scheme)
+        if (factor, scheme) not in self._coarse:
+            self._coarse[factor, scheme] = PointFilm(self.x[::factor], self.y_full[::factor], self.ratio, self.lam,
+                                                     self.c_el, self.p_h, self.lub, self.h_oil, self.load, scheme)
+        return self._coarse[factor, scheme]
 
     def local_newton(self, u, e, cj=0.0):
         """The sparse pieces of the Jacobian of the Reynolds rows ``R - cj q`` (``cj = 0``: steady):

@@ -241,7 +241,8 @@ class KrylovSolver:
     iterations, matrix-vector products and the seconds spent in the preconditioner's set-up and in GMRES.
     The preconditioner of an earlier Newton step is kept while GMRES needs at most ``refresh_after``
     iterations with it (0: rebuilt at every step); a kept one that does not converge within
-    ``2 refresh_after`` iterations is rebuilt and the solve repeated."""
+    ``2 refresh_after`` iterations is rebuilt and the solve repeated. :meth:`tighten` (called by
+    :func:`~transient.models.point.fbns.fbns` when Newton stagnates near the solution) lowers ``rtol``."""
 
     name = "Newton-Krylov"
 
@@ -292,6 +293,13 @@ class KrylovSolver:
         s["matvecs"] += A.matvecs
         s["failures"] += not ok
         return x
+
+    def tighten(self, factor: float = 1e-3, floor: float = 1e-10):
+        """Lower GMRES's relative tolerance by ``factor`` (not below ``floor``): near the solution the inexact
+        step with ``rtol = 1e-3`` can leave the residual of the complementarity rows at a cavitation boundary
+        where it was (Newton stagnating at ~1e-4), the exact step converges quadratically."""
+        self.rtol = max(self.rtol * factor, floor)
+        self.stats["tightened"] = self.stats.get("tightened", 0) + 1
 
     def _build(self, film, u, A, cj):
         t0 = time.perf_counter()
