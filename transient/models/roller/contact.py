@@ -399,7 +399,7 @@ class RollerContact:
             last = k == len(specs) - 1
             g = self.grid if last else self.make_grid(*spec)
             tol_k = tol if last else math.sqrt(tol)
-            cf = RollerContentFilm(self.film_problem(g, "fft" if spec[0] == "uniform" else "dense"))
+            cf = self.content_film(g, spec[0] == "uniform")
             level = {"grid": [int(g.x.size), int(g.y.size)]}
             u0 = content_start(self, cf) if k == 0 else carry_content(g_prev, u, g)
             try:
@@ -421,6 +421,15 @@ class RollerContact:
         if ok:
             msg = f"converged: {iters} Newton iterations over {len(specs)} grid level(s)"
         return self._finish(cf, u, ok, msg, iters, norms, t0, info, raise_on_failure)
+
+    def content_film(self, g: TensorGrid, uniform: bool) -> RollerContentFilm:
+        """The film-content form on ``g``: dense elasticity, or (``uniform``) DC-FFT products with matrix-free
+        Newton steps preconditioned on the clustered ``COARSE`` grid (:mod:`transient.models.roller.roller_fft`),
+        which resolves the profiled ends."""
+        if not uniform:
+            return RollerContentFilm(self.film_problem(g, "dense"))
+        coarse = RollerContentFilm(self.film_problem(self.make_grid(*COARSE), "dense"))
+        return RollerContentFilm(self.film_problem(g, "fft"), coarse=coarse)
 
     def check_resolution(self) -> dict:
         """:meth:`dry_resolution` of this contact's grid; raises :class:`UnderResolvedGridError` when its worst

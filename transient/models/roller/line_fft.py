@@ -136,7 +136,7 @@ class NearField:
         self._factor((sp.diags(A.inv_scale) @ B).tocsc(), A)
 
     @classmethod
-    def of_matrix(cls, B: sp.csc_matrix, A: SchurOperator, permc_spec: str = "NATURAL") -> "NearField":
+    def of_matrix(cls, B: sp.csc_matrix, A: SchurOperator, permc_spec: str = "NATURAL") -> NearField:
         """The bordered solve with a given near-field matrix ``B`` (n x n, rows by their scales) of ``A``."""
         out = cls.__new__(cls)
         out._factor(B, A, permc_spec)

@@ -42,7 +42,7 @@ class RollerContentFilm:
     h0]``, interior nodes x fastest. The Schur matrix needs the dense influence matrix: a uniform grid's
     DC-FFT film gets it built (``K``, ``n_full x n`` doubles)."""
 
-    def __init__(self, film: EHLFilm, coarse: "RollerContentFilm | None" = None):
+    def __init__(self, film: EHLFilm, coarse: RollerContentFilm | None = None):
         if not film.grid.two_d or film.elastic == "rigid":
             raise ValueError("RollerContentFilm: a 2-D grid with an elastic film")
         self.base = film
