@@ -34,6 +34,7 @@ from transient.models.roller.ehl_problem import EHLFilm
 from transient.models.roller.grid import TensorGrid
 from transient.models.roller.kernels import assemble_schur
 from transient.models.roller.line_newton import content_newton
+from transient.models.roller.roller_fft import RollerTwoLevel
 from transient.solvers.newton import NewtonError
 
 
@@ -105,9 +106,7 @@ class RollerContentFilm:
 
     def two_level(self, A, u):
         """The matrix-free step's preconditioner (:class:`~transient.models.roller.roller_fft.RollerTwoLevel`)."""
-        from transient.models.roller.roller_fft import RollerTwoLevel
-
-        return RollerTwoLevel(A, u, self.coarse)
+        return RollerTwoLevel(A, carry_content(self.grid, u, self.coarse.grid), self.coarse)
 
     def jacobian_product(self, e, v_p, v_t) -> np.ndarray:
         """``J_p v_p + J_theta v_t``: the Reynolds rows' response to pressure and content changes."""

@@ -59,15 +59,12 @@ def coarse_grid(grid: TensorGrid, max_unknowns: int = COARSE_MAX_UNKNOWNS) -> Te
 
 
 class RollerTwoLevel:
-    """The two-level preconditioner (module docstring) of the Schur operator ``A`` at the fine state ``u``;
-    ``coarse``: the roller's dense content film on the coarse grid (:class:`RollerContentFilm`)."""
+    """The two-level preconditioner (module docstring) of the Schur operator ``A``; ``coarse``: the roller's dense
+    content film on the coarse grid (:class:`~transient.models.roller.roller_fbns.RollerContentFilm`), ``uc``: the
+    fine state on it."""
 
-    def __init__(self, A: SchurOperator, u, coarse):
-        from transient.models.roller.roller_fbns import carry_content
-
-        fine = A.c
-        gf, gc = fine.grid, coarse.grid
-        uc = carry_content(gf, u, gc)
+    def __init__(self, A: SchurOperator, uc, coarse):
+        gf, gc = A.c.grid, coarse.grid
         ec = coarse.equations(uc)
         Sc, _, _ = schur_system(coarse, uc, ec)
         self.lu = sla.lu_factor(Sc.astype(np.float32), check_finite=False, overwrite_a=True)
