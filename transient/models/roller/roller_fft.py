@@ -9,8 +9,9 @@ Fischer-Burmeister rows) is then solved by GMRES with the products of
 the line contact's two-level preconditioner (:class:`~transient.models.roller.line_fft.TwoLevel`) on the
 roller's tensor grid:
 
-* a coarse-grid correction: the dense Schur matrix of the same problem on a coarser uniform grid over the
-  same domain at the interpolated state (:func:`~transient.models.roller.roller_fbns.carry_content`),
+* a coarse-grid correction: the dense Schur matrix of the same problem on a coarser grid over the same domain
+  (``RollerContact`` takes its clustered 47 x 45 grid, which resolves the profiled ends; :func:`coarse_grid`, a
+  uniform one) at the interpolated state (:func:`~transient.models.roller.roller_fbns.carry_content`),
   LU-factorised in single precision; residuals restricted by the transposed bilinear interpolation (rows
   averaged, Reynolds rows unscaled to the fine and scaled to the coarse rows), steps interpolated back;
 * then a near-field correction: the Schur matrix with ``K`` cut to its self-influence (the 5-point stencil
@@ -28,7 +29,7 @@ from transient.models.roller.grid import TensorGrid
 from transient.models.roller.line_fbns import schur_system
 from transient.models.roller.line_fft import NearField, SchurOperator, prolongation
 
-#: the coarse grid of the preconditioner has at most this many interior nodes (dense Schur matrix, float32 LU)
+#: :func:`coarse_grid` keeps at most this many interior nodes (dense Schur matrix, float32 LU)
 COARSE_MAX_UNKNOWNS = 2500
 
 
