@@ -7,6 +7,7 @@ import pytest
 
 from transient.models.point.reduced import schur
 from transient.models.roller import RollerContact, TaperedRoller
+from transient.models.roller.contact import M_EASY_2D
 from transient.models.roller.results import EHLConvergenceError, UnderResolvedGridError
 from transient.models.roller.roller_fbns import RollerContentFilm, content_start
 from transient.params import park
@@ -67,7 +68,7 @@ def test_schur_matrix_is_the_newton_matrix_after_the_node_wise_substitution():
 def both_forms():
     """The tilted roller at the paper's loading by both forms (40 x 25 clustered grid)."""
     c = RollerContact.from_dimensionless(**CASE, roller=roller(tilt=0.002), grid=("clustered", 40, 25))
-    return c.steady(method="reynolds", tol=1e-10), c.steady(tol=1e-10)
+    return c.steady(method="reynolds", tol=1e-10), c.steady(method="fbns", tol=1e-10)
 
 
 def test_content_form_gives_the_reynolds_condition_film_at_the_paper_load(both_forms):
@@ -80,9 +81,24 @@ def test_content_form_gives_the_reynolds_condition_film_at_the_paper_load(both_f
     assert np.all(b.pressure[b.content < 1.0 - 1e-9] <= 1e-9 * b.p_max)
 
 
+def test_auto_takes_the_reynolds_condition_form_up_to_the_paper_load_and_fbns_above(both_forms):
+    c = RollerContact.from_dimensionless(**CASE, roller=roller(tilt=0.002), grid=("clustered", 40, 25))
+    assert c.mid_plane_M <= M_EASY_2D
+    s = c.steady(tol=1e-10)
+    assert s.solver_info["method"] == "reynolds"
+    assert np.max(np.abs(s.pressure - both_forms[1].pressure)) < 1e-8 * s.p_max
+    heavy = paper(5.0)
+    assert heavy.mid_plane_M > M_EASY_2D
+    info = {}
+    heavy.steady_content = lambda *a: info.setdefault("method", "fbns")
+    heavy.steady_reynolds = lambda *a: info.setdefault("method", "reynolds")
+    heavy.steady()
+    assert info["method"] == "fbns"
+
+
 def test_untilted_symmetric_roller_gives_a_symmetric_film():
     c = RollerContact.from_dimensionless(**CASE, roller=roller(0.0, 0.0), grid=("clustered", 40, 25))
-    s = c.steady(tol=1e-10)
+    s = c.steady(method="fbns", tol=1e-10)
     assert np.max(np.abs(c.grid.y + c.grid.y[::-1])) < 1e-9 * c.grid.y[-1]
     assert np.max(np.abs(s.pressure - s.pressure[::-1])) < 1e-8 * s.p_max
     assert np.max(np.abs(s.content - s.content[::-1])) < 1e-7

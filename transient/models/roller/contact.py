@@ -29,11 +29,11 @@ own load the outlet constriction collapses onto one node and closes (:meth:`Roll
 docs/ehl.md, section 8). This moves 5x the paper's load on 47 x 45 from failing to converging; on the paper
 grid the 10x path still stops near 7x.
 
-Steady solve (``method="auto"``): on clustered grids the mass-conserving film-content form by
+Steady solve (``method="auto"``): on clustered grids above the paper case's mid-plane M the mass-conserving film-content form by
 Fischer-Burmeister-Newton-Schur (:mod:`transient.models.roller.roller_fbns`; Woloszynski et al. 2015, Hansen et
 al. 2022), Newton from the dry pressure on nested grids, a grid whose loaded rows are too coarse in x refused
-first (:meth:`RollerContact.check_resolution`); on uniform grids and for the transient's penalty form the
-Reynolds-condition form: nested iteration from the dry pressure on coarse grids to the requested one (above the paper
+first (:meth:`RollerContact.check_resolution`); at and below the paper case's load (the same film, faster), on
+uniform grids and for the transient's penalty form the Reynolds-condition form: nested iteration from the dry pressure on coarse grids to the requested one (above the paper
 case's load: load continuation on the coarsest level whose x spacing resolves the load); Newton on the
 Fischer-Burmeister system with the dense matrix (small grids) or GMRES with a single-precision LU
 preconditioner kept across iterations (the paper grid) or a two-level preconditioner (uniform grids).
@@ -362,11 +362,16 @@ class RollerContact:
         """Steady EHL film. ``method="fbns"``: the mass-conserving film-content form by
         Fischer-Burmeister-Newton-Schur (:meth:`steady_content`; dense elasticity); ``"reynolds"``: the
         Reynolds-condition form (:meth:`steady_reynolds`), which ``penalty`` (the transient's limit) and the
-        uniform DC-FFT grids (Newton-Krylov) use; ``"auto"``: FBNS on clustered grids, else Reynolds."""
+        uniform DC-FFT grids (Newton-Krylov) use; ``"auto"``: FBNS on clustered grids above the paper case's
+        mid-plane M (:data:`M_EASY_2D`), else Reynolds. At and below it both forms give the same pressure and film
+        (paper grid: within 1.3e-9 of P_max, H_c to 13 digits) and the Reynolds-condition form is the faster one
+        there (docs/validation.md); its result carries no film content (``content`` is 1 everywhere): ask for
+        ``method="fbns"`` to get the cavitated zone's content."""
         if method not in METHODS:
             raise ValueError(f"method = {method!r} is not one of {METHODS}")
         if method == "auto":
-            method = "reynolds" if self.grid_spec[0] == "uniform" else "fbns"
+            easy = self.grid_spec[0] == "uniform" or self.mid_plane_M <= M_EASY_2D
+            method = "reynolds" if easy else "fbns"
         if penalty is not None or method == "reynolds":
             return self.steady_reynolds(tol, max_iter, raise_on_failure, penalty)
         return self.steady_content(tol, max_iter, raise_on_failure)
@@ -394,7 +399,7 @@ class RollerContact:
             last = k == len(specs) - 1
             g = self.grid if last else self.make_grid(*spec)
             tol_k = tol if last else math.sqrt(tol)
-            cf = RollerContentFilm(self.film_problem(g, "fft" if spec[0] == "uniform" else "dense"))
+            cf = self.content_film(g, spec[0] == "uniform")
             level = {"grid": [int(g.x.size), int(g.y.size)]}
             u0 = content_start(self, cf) if k == 0 else carry_content(g_prev, u, g)
             try:
@@ -416,6 +421,15 @@ class RollerContact:
         if ok:
             msg = f"converged: {iters} Newton iterations over {len(specs)} grid level(s)"
         return self._finish(cf, u, ok, msg, iters, norms, t0, info, raise_on_failure)
+
+    def content_film(self, g: TensorGrid, uniform: bool) -> RollerContentFilm:
+        """The film-content form on ``g``: dense elasticity, or (``uniform``) DC-FFT products with matrix-free
+        Newton steps preconditioned on the clustered ``COARSE`` grid (:mod:`transient.models.roller.roller_fft`),
+        which resolves the profiled ends."""
+        if not uniform:
+            return RollerContentFilm(self.film_problem(g, "dense"))
+        coarse = RollerContentFilm(self.film_problem(self.make_grid(*COARSE), "dense"))
+        return RollerContentFilm(self.film_problem(g, "fft"), coarse=coarse)
 
     def check_resolution(self) -> dict:
         """:meth:`dry_resolution` of this contact's grid; raises :class:`UnderResolvedGridError` when its worst
@@ -474,7 +488,7 @@ class RollerContact:
         unless ``raise_on_failure=False``."""
         t0 = time.perf_counter()
         grid = self.grid
-        u, g_prev, iters, ok, msg, info = None, None, 0, True, "", {"levels": []}
+        u, g_prev, iters, ok, msg, info = None, None, 0, True, "", {"method": "reynolds", "levels": []}
         owner = self  # the contact whose scales the state is in (a failed path's last converged load)
         specs = self._level_specs()
         for k, spec in enumerate(specs):

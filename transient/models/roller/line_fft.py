@@ -133,12 +133,22 @@ class NearField:
         Kn = sp.csr_matrix((np.concatenate(vals), (np.concatenate(rows), np.concatenate(cols))), shape=(nf, n))
         Dh, Dp, Dt = (local_matrix(e[k], nf) for k in ("dh", "dp", "dt"))
         B = (Dh @ Kn + Dp[:, 1:-1]) @ sp.diags(A.b_p) + Dt[:, 1:-1] @ sp.diags(A.b_t)
-        B = (sp.diags(A.inv_scale) @ B).tocsc()
-        self.lu = spla.splu(B, permc_spec="NATURAL")
+        self._factor((sp.diags(A.inv_scale) @ B).tocsc(), A)
+
+    @classmethod
+    def of_matrix(cls, B: sp.csc_matrix, A: SchurOperator, permc_spec: str = "NATURAL") -> NearField:
+        """The bordered solve with a given near-field matrix ``B`` (n x n, rows by their scales) of ``A``."""
+        out = cls.__new__(cls)
+        out._factor(B, A, permc_spec)
+        return out
+
+    def _factor(self, B, A, permc_spec="NATURAL"):
+        c = A.c
+        self.lu = spla.splu(B, permc_spec=permc_spec)
         self.cvec = self.lu.solve(A.j_h0 * A.inv_scale)
         self.w = c.weight * A.b_p
         self.wc = float(self.w @ self.cvec)
-        self.n = n
+        self.n = c.n
 
     def solve(self, b):
         x = self.lu.solve(np.ascontiguousarray(b[: self.n]))
@@ -209,19 +219,25 @@ class TwoLevel:
 
 class MatrixFreeStep:
     """Newton steps of one matrix-free solve: ``solve(content, u, e, b_p, b_t, r, stats)`` -> ``z`` by GMRES
-    with :class:`TwoLevel`, whose coarse factors are kept while GMRES needs at most ``REFRESH_ITERS``."""
+    with a two-level preconditioner, whose coarse factors are kept while GMRES needs at most ``REFRESH_ITERS``:
+    ``content.two_level(A, u)`` where the film has one (the roller's), else the line's :class:`TwoLevel`."""
 
     def __init__(self, content):
-        self.factor = coarsening_factor(content.nf)
+        self.two_level = getattr(content, "two_level", None) or self._line_two_level
+        self.factor = None if hasattr(content, "two_level") else coarsening_factor(content.nf)
         self.pre = None
         self.refresh = True
         self.coarse_kernel = None
 
+    def _line_two_level(self, A, u):
+        pre = TwoLevel(A, u, self.factor, coarse_kernel=self.coarse_kernel)
+        self.coarse_kernel = pre.coarse_kernel
+        return pre
+
     def solve(self, content, u, e, b_p, b_t, r, stats):
         A = SchurOperator(content, e, b_p, b_t)
         if self.refresh or self.pre is None:
-            self.pre = TwoLevel(A, u, self.factor, coarse_kernel=self.coarse_kernel)
-            self.coarse_kernel = self.pre.coarse_kernel
+            self.pre = self.two_level(A, u)
             stats.factorisations += 1
             fresh = True
         else:
@@ -230,7 +246,7 @@ class MatrixFreeStep:
         z, its, ok = gmres_solve(A, r, self.pre, RTOL, restart=RESTART, max_iter=2 * RESTART)
         stats.krylov += its
         if not ok and not fresh:
-            self.pre = TwoLevel(A, u, self.factor, coarse_kernel=self.coarse_kernel)
+            self.pre = self.two_level(A, u)
             stats.factorisations += 1
             z, more, ok = gmres_solve(A, r, self.pre, RTOL, restart=RESTART, max_iter=4 * RESTART)
             stats.krylov += more

@@ -34,6 +34,7 @@ from transient.models.roller.ehl_problem import EHLFilm
 from transient.models.roller.grid import TensorGrid
 from transient.models.roller.kernels import assemble_schur
 from transient.models.roller.line_newton import content_newton
+from transient.models.roller.roller_fft import RollerTwoLevel
 from transient.solvers.newton import NewtonError
 
 
@@ -42,20 +43,23 @@ class RollerContentFilm:
     h0]``, interior nodes x fastest. The Schur matrix needs the dense influence matrix: a uniform grid's
     DC-FFT film gets it built (``K``, ``n_full x n`` doubles)."""
 
-    #: the Schur matrix is formed (``content_newton``'s dense path)
-    matrix_free = False
-
-    def __init__(self, film: EHLFilm):
+    def __init__(self, film: EHLFilm, coarse: RollerContentFilm | None = None):
         if not film.grid.two_d or film.elastic == "rigid":
             raise ValueError("RollerContentFilm: a 2-D grid with an elastic film")
         self.base = film
         self.grid = film.grid
         self.n = film.n
-        if film.elastic != "dense":
+        #: ``coarse`` given (a DC-FFT film): the Schur matrix is never formed; ``content_newton`` takes matrix-free
+        #: steps (:mod:`transient.models.roller.roller_fft`) preconditioned on ``coarse`` (a dense content film)
+        self.matrix_free = coarse is not None
+        self.coarse = coarse
+        if self.matrix_free and film.elastic != "fft":
+            raise ValueError(f"RollerContentFilm: matrix-free steps need a DC-FFT film, got elastic = {film.elastic!r}")
+        if film.elastic != "dense" and not self.matrix_free:
             check_memory(f"the dense influence matrix of this {film.grid.nx} x {film.grid.ny} grid",
                          dict(influence=8.0 * film.n_full * film.n, schur=12.0 * (film.n + 1) ** 2),
                          "use a clustered grid or method='reynolds' (Newton-Krylov with DC-FFT products)")
-        self.K = film.K if film.elastic == "dense" else film.influence_matrix()
+        self.K = None if self.matrix_free else film.K if film.elastic == "dense" else film.influence_matrix()
         self.weight = film.area_w
         self.colp, self.colh = film.colp, film.colh
         self._hp = self.colh >= 0
@@ -99,6 +103,10 @@ class RollerContentFilm:
         S = np.empty((self.n + 1, self.n + 1))
         assemble_schur(e["dp"], e["dh"], e["dt"], self.colp, self.colh, self.K, b_p, b_t, self.weight, S)
         return S
+
+    def two_level(self, A, u):
+        """The matrix-free step's preconditioner (:class:`~transient.models.roller.roller_fft.RollerTwoLevel`)."""
+        return RollerTwoLevel(A, carry_content(self.grid, u, self.coarse.grid), self.coarse)
 
     def jacobian_product(self, e, v_p, v_t) -> np.ndarray:
         """``J_p v_p + J_theta v_t``: the Reynolds rows' response to pressure and content changes."""
