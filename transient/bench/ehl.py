@@ -119,7 +119,7 @@ def _time_fine_level(grid) -> float:
 
 def service_loads(quick: bool) -> list:
     """The tilted paper case at multiples of its load on the paper grid (``quick``: 1x and 5x on 62 x 45), side
-    by side: the film-content FBNS solve (the default) at 1x, 5x, 10x and 50x, and the Reynolds-condition solve
+    by side: the film-content FBNS solve (the default above the paper case's load) at 1x, 5x, 10x and 50x, and the Reynolds-condition solve
     at 1x. Wall and CPU time, Newton iterations; a load that is refused or does not converge gives the named
     error's message (docs/ehl.md, section 8)."""
     out = []
@@ -207,11 +207,11 @@ def main(out, quick: bool = False) -> str:
         f"({p['unknowns']} unknowns)", "",
         "| method | wall [s] | Newton iterations | factorisations | H_central | H_min | P_max |",
         "|---|---|---|---|---|---|---|",
-        f"| this package, film-content FBNS (default): x levels {' -> '.join(str(v['grid'][0]) for v in levels)}, "
+        f"| this package, film-content FBNS (`method=\"fbns\"`; the default above the paper case's load): x levels {' -> '.join(str(v['grid'][0]) for v in levels)}, "
         f"GMRES + reused float32 LU | {p['ours_s']:.1f} | {ours_its} | "
         f"{sum(v.get('factorisations', 0) for v in levels)} | "
         f"{p['ours']['H_central']:.4e} | {p['ours']['H_min']:.4e} | {p['ours']['P_max']:.4e} |",
-        f"| this package, Reynolds-condition form (`method=\"reynolds\"`), same levels and linear algebra | "
+        f"| this package, Reynolds-condition form (`method=\"reynolds\"`; the default at and below the paper case's load), same levels and linear algebra | "
         f"{p['reynolds_s']:.1f} | {rc_its} | {sum(v.get('preconditioners', 0) for v in rlev)} | "
         f"{p['reynolds']['H_central']:.4e} | {p['reynolds']['H_min']:.4e} | {p['reynolds']['P_max']:.4e} |",
         f"| paper's method: full Newton, dense LU every iteration | {p['paper_s']:.1f} | {p['paper_iterations']} | "
@@ -255,7 +255,7 @@ def main(out, quick: bool = False) -> str:
               "grid."]
     base = next(r for r in service if r["method"] == "fbns" and r["factor"] == 1.0)
     lines += ["", "### Service loads: the paper's case tilted +0.002 deg at multiples of its load", "",
-              "fbns: the mass-conserving film-content form by Fischer-Burmeister-Newton-Schur (the default); "
+              "fbns: the mass-conserving film-content form by Fischer-Burmeister-Newton-Schur (the default above the paper case's load); "
               "reynolds: the Reynolds-condition form (Fischer-Burmeister exit condition, pseudo-time and load "
               "continuation). Times include the dry contact that sizes the domain.", "",
               "| load | W | mid-plane M | grid | method | converged | wall [s] | CPU [s] | wall / fbns 1x | Newton its | "
