@@ -51,7 +51,9 @@ N_SLOTS = 6
 def node_properties(p_full, h_full, vcode, alpha, ln_eta0, dcode, c1, c2, p_scale, out):
     """Per full node: rho, drho/dp, eps = rho h^3/eta, deps/dp, deps/dh, m = rho h, dm/dp (scaled p).
 
-    ``out`` has shape (7, n_full)."""
+    ``out`` has shape (7, n_full). Where ``eta`` overflowed (Roelands with ``Z > 1`` passes ``exp(709)`` near
+    2.5 GPa at the Moes chart's largest ``alpha``) ``eps`` underflows to 0 and ``deps/dp`` would be
+    ``inf/inf``: a non-finite ``eps``, ``deps/dp`` or ``deps/dh`` takes its limit 0 there."""
     pf, hf = p_full.ravel(), h_full.ravel()
     for k in range(pf.size):
         pp = pf[k] * p_scale
@@ -63,9 +65,12 @@ def node_properties(p_full, h_full, vcode, alpha, ln_eta0, dcode, c1, c2, p_scal
         h3 = h * h * h
         out[0, k] = rho
         out[1, k] = drho
-        out[2, k] = rho * h3 / eta
-        out[3, k] = h3 * (drho * eta - rho * deta) / (eta * eta)
-        out[4, k] = 3.0 * rho * h * h / eta
+        eps = rho * h3 / eta
+        deps_p = h3 * (drho * eta - rho * deta) / (eta * eta)
+        deps_h = 3.0 * rho * h * h / eta
+        out[2, k] = eps if math.isfinite(eps) else 0.0
+        out[3, k] = deps_p if math.isfinite(deps_p) else 0.0
+        out[4, k] = deps_h if math.isfinite(deps_h) else 0.0
         out[5, k] = rho * h
         out[6, k] = drho * h
 

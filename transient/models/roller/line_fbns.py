@@ -25,8 +25,6 @@ meaningful from the Hertz pressure at any load.
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
 from numba import njit
 
@@ -37,19 +35,6 @@ from transient.models.roller.kernels import node_properties
 #: local Jacobian slots: centre, west, east, west-west, and their offsets in full nodes
 N_LOCAL = 4
 OFFSETS = np.array([0, -1, 1, -2])
-
-
-@njit(cache=True)
-def overflow_limits(props):
-    """Where ``eta`` overflowed (Roelands with ``Z > 1`` passes ``exp(709)`` near 2.5 GPa at the
-    chart's largest ``alpha``), :func:`node_properties` gives ``eps = rho h^3/eta = 0`` and
-    ``deps/dp = h^3 (rho' eta - rho eta')/eta^2 = inf/inf``: replace a non-finite ``deps/dp`` by its limit
-    ``eps (rho'/rho - (ln eta)') = 0`` (the same for ``eps`` and ``deps/dh``), as ``eps`` underflows there."""
-    for row in (2, 3, 4):
-        v = props[row]
-        for k in range(v.size):
-            if not math.isfinite(v[k]):
-                v[k] = 0.0
 
 
 @njit(cache=True, error_model="numpy")
@@ -147,7 +132,6 @@ class LineContentFilm:
         H = b.film(u[: self.n], h0)
         v, al, ln0, d, c1, c2 = b.rheo_args
         node_properties(pf, H, v, al, ln0, d, c1, c2, b.p_scale, self.props)
-        overflow_limits(self.props)
         n = self.n
         res, scale = np.empty(n), np.empty(n)
         dp, dh, dt = np.empty((n, N_LOCAL)), np.empty((n, N_LOCAL)), np.empty((n, N_LOCAL))
