@@ -176,7 +176,37 @@ def coarsening_factor(nf: int, coarse_max: int = COARSE_MAX_NODES) -> int:
     return f
 
 
-class TwoLevel:
+class CoarseCorrection:
+    """The coarse-grid part of a two-level preconditioner of a Schur operator ``A``: the coarse content film's
+    Schur matrix by a single-precision LU, interpolation ``P`` to the fine grid and the row-sum-scaled
+    restriction ``P^T`` between the two row scalings; ``solve`` adds the near field's correction of the residual
+    the coarse step leaves. The line's :class:`TwoLevel` and the roller's
+    :class:`~transient.models.roller.roller_fft.RollerTwoLevel` build it from their own coarse grids and near fields."""
+
+    def _set_coarse(self, coarse, uc, P):
+        """Factorise ``coarse``'s Schur matrix at ``uc``; ``P`` the fine-from-coarse interpolation of the nodes."""
+        ec = coarse.equations(uc)
+        Sc, _, _ = schur_system(coarse, uc, ec)
+        self.lu = sla.lu_factor(Sc.astype(np.float32), check_finite=False, overwrite_a=True)
+        R = P.T.tocsr()
+        R = sp.diags(1.0 / np.maximum(np.asarray(R.sum(axis=1)).ravel(), 1e-300)) @ R
+        self.P = sp.block_diag([P, sp.identity(1)], format="csr")
+        self.R_unscaled = sp.block_diag([R, sp.identity(1)], format="csr")
+        self.coarse_scale = ec["scale"]
+
+    def _set_scales(self, A: SchurOperator):
+        """Take the row scales of the operator ``A`` (the coarse factors kept)."""
+        self.A = A
+        self.R = (sp.diags(np.append(1.0 / self.coarse_scale, 1.0)) @ self.R_unscaled
+                  @ sp.diags(np.append(1.0 / A.inv_scale, 1.0)))
+
+    def solve(self, b):
+        zc = sla.lu_solve(self.lu, (self.R @ b).astype(np.float32), check_finite=False).astype(float)
+        z = self.P @ zc
+        return z + self.near.solve(b - self.A.matvec(z))
+
+
+class TwoLevel(CoarseCorrection):
     """The two-level preconditioner (module docstring) of the Schur operator ``A`` at the fine state ``u``."""
 
     def __init__(self, A: SchurOperator, u, factor: int, near: int = NEAR, coarse_kernel=None):
@@ -191,30 +221,13 @@ class TwoLevel:
         self.coarse_kernel = cf.K
         pf, tf, h0 = fine.expand(u)
         uc = np.concatenate([pf[::factor][1:-1], tf[::factor][1:-1], [h0]])
-        ec = cf.equations(uc)
-        Sc, _, _ = schur_system(cf, uc, ec)
-        self.lu = sla.lu_factor(Sc.astype(np.float32), check_finite=False, overwrite_a=True)
-        P = prolongation(xf, xc)
-        R = P.T.tocsr()
-        R = sp.diags(1.0 / np.maximum(np.asarray(R.sum(axis=1)).ravel(), 1e-300)) @ R
-        self.P = sp.block_diag([P, sp.identity(1)], format="csr")
-        self.R_unscaled = sp.block_diag([R, sp.identity(1)], format="csr")
-        self.coarse_scale = ec["scale"]
-        self.A = A
+        self._set_coarse(cf, uc, prolongation(xf, xc))
         self.set_operator(A, near)
 
     def set_operator(self, A: SchurOperator, near: int = NEAR):
         """Keep the coarse factors, take the near field (cheap) and the row scales of a new operator."""
-        self.A = A
-        unscale = np.append(A.c.base.grid.x[1:-1] * 0.0 + 1.0 / A.inv_scale, 1.0)
-        rescale = np.append(1.0 / self.coarse_scale, 1.0)
-        self.R = sp.diags(rescale) @ self.R_unscaled @ sp.diags(unscale)
+        self._set_scales(A)
         self.near = NearField(A, near)
-
-    def solve(self, b):
-        zc = sla.lu_solve(self.lu, (self.R @ b).astype(np.float32), check_finite=False).astype(float)
-        z = self.P @ zc
-        return z + self.near.solve(b - self.A.matvec(z))
 
 
 class MatrixFreeStep:

@@ -22,12 +22,10 @@ roller's tensor grid:
 from __future__ import annotations
 
 import numpy as np
-import scipy.linalg as sla
 import scipy.sparse as sp
 
 from transient.models.roller.grid import TensorGrid
-from transient.models.roller.line_fbns import schur_system
-from transient.models.roller.line_fft import NearField, SchurOperator, prolongation
+from transient.models.roller.line_fft import CoarseCorrection, NearField, SchurOperator, prolongation
 
 #: :func:`coarse_grid` keeps at most this many interior nodes (dense Schur matrix, float32 LU)
 COARSE_MAX_UNKNOWNS = 2500
@@ -59,32 +57,17 @@ def coarse_grid(grid: TensorGrid, max_unknowns: int = COARSE_MAX_UNKNOWNS) -> Te
     return TensorGrid(np.linspace(grid.x[0], grid.x[-1], nx), np.linspace(grid.y[0], grid.y[-1], ny))
 
 
-class RollerTwoLevel:
+class RollerTwoLevel(CoarseCorrection):
     """The two-level preconditioner (module docstring) of the Schur operator ``A``; ``coarse``: the roller's dense
     content film on the coarse grid (:class:`~transient.models.roller.roller_fbns.RollerContentFilm`), ``uc``: the
     fine state on it."""
 
     def __init__(self, A: SchurOperator, uc, coarse):
         gf, gc = A.c.grid, coarse.grid
-        ec = coarse.equations(uc)
-        Sc, _, _ = schur_system(coarse, uc, ec)
-        self.lu = sla.lu_factor(Sc.astype(np.float32), check_finite=False, overwrite_a=True)
-        P = sp.kron(prolongation(gf.y, gc.y), prolongation(gf.x, gc.x), format="csr")
-        R = P.T.tocsr()
-        R = sp.diags(1.0 / np.maximum(np.asarray(R.sum(axis=1)).ravel(), 1e-300)) @ R
-        self.P = sp.block_diag([P, sp.identity(1)], format="csr")
-        self.R_unscaled = sp.block_diag([R, sp.identity(1)], format="csr")
-        self.coarse_scale = ec["scale"]
+        self._set_coarse(coarse, uc, sp.kron(prolongation(gf.y, gc.y), prolongation(gf.x, gc.x), format="csr"))
         self.set_operator(A)
 
     def set_operator(self, A: SchurOperator):
         """Keep the coarse factors, take the near field and the row scales of a new operator."""
-        self.A = A
-        self.R = (sp.diags(np.append(1.0 / self.coarse_scale, 1.0)) @ self.R_unscaled
-                  @ sp.diags(np.append(1.0 / A.inv_scale, 1.0)))
+        self._set_scales(A)
         self.near = NearField.of_matrix(near_matrix(A), A, "COLAMD")
-
-    def solve(self, b):
-        zc = sla.lu_solve(self.lu, (self.R @ b).astype(np.float32), check_finite=False).astype(float)
-        z = self.P @ zc
-        return z + self.near.solve(b - self.A.matvec(z))
