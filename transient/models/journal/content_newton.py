@@ -15,14 +15,19 @@ from numba import njit
 
 from transient.models.journal.kernels import (N_ROTOR, content_rows, content_universal, film_force, state_fields,
                                               stencil_flux, stencil_flux_jacobian)
+import transient.solvers.integrate.bdf2 as stepper
 from transient.solvers.integrate.bdf2 import newton_step
+from transient.solvers.integrate.cache_guard import drop_stale_cache
 
 
-@njit  # not cacheable: numba counts the kernels handed to newton_step as dynamic globals (compiled once per process)
+@njit(cache=True)  # newton_step is inlined (its kernels are this module's globals): cached on disk like a kernel
 def bdf2_newton(args, t, cj, b, y, yp, F, dz, data, lu, y_pred, z, pick, err_idx, err_w, state, counts):
     """:func:`~transient.solvers.integrate.bdf2.newton_step` on the content film + rotor, iterating on ``[u, X, Y, VX, VY]``."""
     return newton_step(bdf2_residual, newton_jacobian, film_newton_norm, bdf2_to_state, bdf2_from_state, args, t,
                        cj, b, y, yp, F, dz, data, lu, y_pred, z, pick, err_idx, err_w, state, counts)
+
+
+drop_stale_cache(bdf2_newton, stepper.__file__)  # numba keys the cache on this file only; newton_step is inlined
 
 
 def decoupled_pattern(pattern, free):

@@ -79,9 +79,12 @@ class Bdf2Model(NamedTuple):
     """What a model hands the BDF2 stepper.
 
     ``newton(args, t, cj, b, y, yp, F, dz, data, lu, y_pred, z, pick, err_idx, err_w, state, counts) -> int``: the model's
-    own ``@njit`` function returning :func:`newton_step` called with its kernels (compiled once per process: numba
-    cannot cache a function that receives kernels as arguments, their keys never match in a new process and each
-    process would add an index entry until saving the index fails)::
+    own ``@njit(cache=True)`` function returning :func:`newton_step` called with its kernels as module globals.
+    :func:`newton_step` and its helpers are ``inline="always"``: inlined there, the kernels are static calls and the
+    caller is cached on disk like any kernel (a dispatcher handed to a non-inlined function is lowered as a dynamic
+    address, which numba's cache refuses: every process compiled the Newton again, ~40 s CPU). numba keys the cache
+    on the caller's file only, so the caller's module guards it against edits of this one
+    (:func:`~transient.solvers.integrate.cache_guard.drop_stale_cache`)::
 
         residual(t, y, yp, out, args)          out = F(t, y, y')
         jacobian(t, y, yp, cj, data, args)     CSC data (Problem.jac_pattern order) of (dF/dy + cj dF/dy') dy/dz
@@ -104,7 +107,7 @@ class Bdf2Model(NamedTuple):
     n_border: int
 
 
-@njit  # not cacheable: takes the model's kernels as arguments (Bdf2Model)
+@njit(inline="always")  # inlined into the model's cached caller (Bdf2Model.newton), where its kernels are globals
 def _refactor(jacobian, to_state, args, t, cj, b, z, y, yp, data, lu, state, counts):
     """Jacobian ``dF/dz`` (with ``y' = cj y + b``) at the Newton variables ``z`` and its factorisation; False if
     singular."""
@@ -121,7 +124,7 @@ def _refactor(jacobian, to_state, args, t, cj, b, z, y, yp, data, lu, state, cou
     return True
 
 
-@njit  # not cacheable: takes the model's kernels as arguments (Bdf2Model)
+@njit(inline="always")  # inlined into the model's cached caller (Bdf2Model.newton), where its kernels are globals
 def _update(residual, norm, to_state, args, lu, t, cj, b, z, y, yp, F, dz, scale, err_idx, err_w, counts):
     """Residual at ``z`` and the chord update ``dz``; returns (its size in tolerance units, switched components),
     size = inf if the residual is not finite."""
@@ -137,7 +140,7 @@ def _update(residual, norm, to_state, args, lu, t, cj, b, z, y, yp, F, dz, scale
     return _chord(norm, args, lu, z, F, dz, scale, err_idx, err_w)
 
 
-@njit  # not cacheable: takes the model's kernels as arguments (Bdf2Model)
+@njit(inline="always")  # inlined into the model's cached caller (Bdf2Model.newton), where its kernels are globals
 def _chord(norm, args, lu, z, F, dz, scale, err_idx, err_w):
     """The update ``dz = scale M^-1 F`` on the current factorisation for the residual ``F`` at ``z``, its size and
     switched components (:func:`_update`)."""
@@ -165,7 +168,7 @@ def _switch_pays(size, rate, switched, cost):
     return left - 1.0 > cost
 
 
-@njit  # not cacheable: takes the model's kernels as arguments (Bdf2Model)
+@njit(inline="always")  # inlined into the model's cached caller (Bdf2Model.newton), where its kernels are globals
 def newton_step(residual, jacobian, norm, to_state, from_state, args, t, cj, b, y, yp, F, dz, data, lu, y_pred, z,
                 pick, err_idx, err_w, state, counts):
     """Solve one implicit step ``F(t, y, cj y + b) = 0`` (the result in ``y``, ``yp`` and, in the Newton variables,
