@@ -1,8 +1,7 @@
 """The variable-step BDF2 stepper (solvers/integrate/bdf2.py) on the journal orbit's content formulation: its Newton Jacobian
 against finite differences, second-order convergence at fixed steps against a tight IDA reference, the discrete
 mass balance of every step, bulk moduli 1e7 and 1e12, dense output between steps, checkpoint/resume, the touch
-event. The stepper's driver is compiled per process (it takes the model's kernels), so these tests share orbits
-and are slow except the Jacobian and mass-balance checks."""
+event. These tests share orbits; the long ones are marked slow."""
 
 import os
 

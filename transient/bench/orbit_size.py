@@ -101,7 +101,7 @@ def _side_by_side(case, o, rtols, bdf2, revs, ref, start=None, opr=20, log=print
 
 
 def _warm(o):
-    for form in ("ida", "bdf2"):  # JIT warm-up (the BDF2 driver compiles once per process), not timed
+    for form in ("ida", "bdf2"):  # warm-up (a cold numba cache compiles here), not timed
         _run(o, form, 1e-3 if form == "ida" else (500, 1e-4), 0.05, 20)
 
 

@@ -143,7 +143,7 @@ def test_half_bearing_ida_residual_and_jacobian_mirror_the_whole_length():
     assert np.max(np.abs(Jw_folded - Jh)) <= 1e-12 * scale
 
 
-@pytest.mark.slow  # the BDF2 driver compiles once per process (~1 min)
+@pytest.mark.slow  # two fixed-step orbits of 50 steps each
 def test_half_bearing_bdf2_orbit_equals_the_whole_length(monkeypatch):
     """A fixed-step BDF2 orbit of the half bearing and of the whole length from the mirrored state: journal
     path and velocity, film content and mass equal to 1e-10 (same Newton decisions on the same cells). The
