@@ -350,7 +350,7 @@ _RHO_KIM = dict(**rho_kim.BEARING, **rho_kim.ROTOR, speed_rpm=rho_kim.REPORTED["
 KINDS = {
     "journal_orbit": Kind(
         "journal_orbit", {"rho_kim": _RHO_KIM}, _JOURNAL_UNITS,
-        dict(revolutions=Option("rev", 20.0, 1e-3, 1e6), method=Option("", "ida", choices=("ida", "cvode", "bdf")),
+        dict(revolutions=Option("rev", 20.0, 1e-3, 1e6), method=Option("", "ida", choices=("ida", "cvode", "bdf", "bdf2")),
              rtol=Option("-", 1e-5, 1e-12, 1e-2), outputs_per_revolution=Option("1/rev", 64, 1, 1e5, integer=True),
              settle_tol=Option("-", 0.01, 1e-9, 1.0)),
         _journal_orbit_point, _journal_build, _figures(dict(curves=("semi_major_C", "eps_max"))),

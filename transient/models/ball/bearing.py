@@ -46,6 +46,7 @@ from transient.models.ball.numerical_film import LayerTooThin, NumericalFilms
 from transient.models.ball.track import FrontTrack, UniformTrack
 from transient.checks import check_choice, check_int, check_memory, check_range
 from transient.results import StatusResult, quantity, record_type, result_type
+from transient.solvers.integrate import check_method
 from transient.solvers.settings import DEFAULT, Integration, Recording, from_keywords
 from transient.units import rpm_to_rad_s
 
@@ -302,6 +303,7 @@ class ThrustBallBearing:
         """
         ig = from_keywords(Integration, integration, "integration", dict(method="cvode", atol=1e-10), method=method,
                            rtol=rtol, atol=atol, dt=dt, linear_solver=linear_solver)
+        check_method("ThrustBallBearing.sequence", ig.method)
         rc = from_keywords(Recording, recording, "recording",
                            record=DEFAULT if record_profiles is DEFAULT else (("profiles",) if record_profiles else ()))
         rc.check_names(("profiles",))

@@ -72,7 +72,7 @@ from transient.fv.grid import Axis, Grid2D
 from transient.fv.reynolds import ReynoldsOperator, residual_kernel
 from transient.surfaces.roughness import RoughSurface
 from transient.results import RunResult, quantity, result_type
-from transient.solvers.integrate import METHODS, Problem, solve
+from transient.solvers.integrate import Problem, check_method, solve
 from transient.checks import check_int, check_memory, check_positive, check_range
 
 __all__ = ["ThrustPad", "DescentResult", "pressure_flow_clamped", "rect_shape_factor"]
@@ -381,8 +381,7 @@ class ThrustPad:
         t_end = check_range("t_end", t_end, "s", 0.0, 1e6, low_open=True)
         M = check_range("mass", mass, "kg", 0.0, 1e6)
         check_range("rtol", rtol, "-", 1e-14, 0.1)
-        if method not in METHODS:
-            raise ValueError(f"method = {method!r}; allowed: {', '.join(METHODS)}")
+        check_method("ThrustPad.descent", method)
         if path not in PATHS:
             raise ValueError(f"path must be one of {PATHS}, got {path!r}")
         if t_eval is None:

@@ -54,7 +54,8 @@ from transient.solvers.integrate.outputs import Output
 from transient.solvers.integrate.problem import Problem, Settings, Solution, Stats
 from transient.solvers.integrate.sundials import LINEAR_SOLVERS
 
-__all__ = ["BACKENDS", "LINEAR_SOLVERS", "METHODS", "Backend", "Problem", "Settings", "Solution", "Stats", "solve"]
+__all__ = ["BACKENDS", "LINEAR_SOLVERS", "METHODS", "Backend", "Problem", "Settings", "Solution", "Stats", "check_method",
+           "methods_for", "solve"]
 
 
 @dataclass(frozen=True)
@@ -62,11 +63,14 @@ class Backend:
     """One integration method: ``solve(problem, t_eval, out, guard, settings) -> (success, message)``.
 
     ``fixed_step``: takes the step ``dt`` (required) and has no error test (its failure counts are 0);
-    ``outputs_yp``: also returns ``y'`` at the outputs (``Solution.yp``)."""
+    ``outputs_yp``: also returns ``y'`` at the outputs (``Solution.yp``); ``step_solve``: integrates only a model
+    that hands it its own compiled step solve (``options={"bdf2": Bdf2Model}``), so a model offers it by saying so
+    (:func:`check_method`)."""
 
     solve: Callable
     fixed_step: bool = False
     outputs_yp: bool = False
+    step_solve: bool = False
 
 
 #: The methods :func:`solve` knows, in the order of :data:`METHODS`: a new back end is one entry here.
@@ -77,9 +81,29 @@ BACKENDS: dict[str, Backend] = {
     "radau": Backend(scipy_backend.solve),
     "lsoda": Backend(scipy_backend.solve),
     "rk4": Backend(rk4.solve, fixed_step=True),
-    "bdf2": Backend(bdf2.solve),
+    "bdf2": Backend(bdf2.solve, step_solve=True),
 }
 METHODS = tuple(BACKENDS)
+
+
+def methods_for(step_solve: bool = False, among=METHODS) -> tuple:
+    """The methods of ``among`` that can integrate a model: every back end, except those that need the model's own
+    step solve when the model has none (``step_solve`` False)."""
+    return tuple(m for m in among if step_solve or not BACKENDS[m].step_solve)
+
+
+def check_method(owner: str, method, *, step_solve: bool = False, among=METHODS) -> str:
+    """``method`` if ``owner`` (the model's entry point, e.g. ``"ThrustPad.descent"``) can be integrated by it,
+    else a ``ValueError`` before any work naming the entry point, the method and the methods it takes
+    (:func:`methods_for`): a capability check at the door, not a failure inside the integrator."""
+    offered = methods_for(step_solve, among)
+    if isinstance(method, str) and method in offered:
+        return method
+    why = ""
+    if isinstance(method, str) and method in BACKENDS and BACKENDS[method].step_solve and method in among:
+        why = f" ({method!r} integrates only models that hand it their own step solve; {owner} has none)"
+    raise ValueError(f"{owner}: method = {short_repr(method)} is not available{why}; it takes one of "
+                     f"{', '.join(offered)}")
 
 
 def solve(problem: Problem, t_eval, method: str = "cvode", rtol: float = 1e-6, atol=1e-8, *,
