@@ -4,18 +4,9 @@ import numpy as np
 import pytest
 
 from transient.models.point import PointContact
-from transient.models.point.stepping import bdf_coefficients
 
 BASE = dict(load=20.0, speed=1.0, viscosity=0.04, pressure_viscosity=2e-8, modulus=2.2e11)
 GRID = (33, 33)
-
-
-def test_bdf2_coefficients_are_exact_for_quadratics():
-    q = lambda t: 1.0 + 2.0 * t - 3.0 * t * t
-    dq = lambda t: 2.0 - 6.0 * t
-    t_prev, t_n, h = 0.0, 0.3, 0.5
-    cj, q_hat = bdf_coefficients(h, t_n - t_prev, q(t_n), q(t_prev))
-    assert cj * (q(t_n + h) - q_hat) == pytest.approx(dq(t_n + h), rel=1e-12)
 
 
 @pytest.fixture(scope="module")

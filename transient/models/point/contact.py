@@ -2,7 +2,7 @@
 
 Equations and scaling: :mod:`transient.models.point.ehl_problem` (mass-conserving fractional film, Fischer-Burmeister
 complementarity, DC-FFT elasticity, load balance by ``h0``); steady solve:
-:mod:`transient.models.point.fbns`; transient: :mod:`transient.models.point.transient`. SI at the API::
+:mod:`transient.models.point.fbns`; transient: :mod:`transient.models.point.step_solve`. SI at the API::
 
     pc = PointContact(radius_x=0.01, load=20.0, speed=1.0, viscosity=0.04, pressure_viscosity=2e-8,
                       modulus=2.2e11, inlet_film=None, grid=(65, 65))
@@ -26,13 +26,13 @@ from transient.models.point.fbns import fbns
 from transient.models.point.ehl_problem import PointFilm
 from transient.models.point.krylov import inject
 from transient.models.point.results import PointDry, PointSteady, PointTransient
-from transient.models.point.stepping import march, steady_by_time_steps
+from transient.models.point.step_solve import ATOL_PER_RTOL, FilmStep, steady_by_time_steps
 from transient.models.roller.dry import edge_positions, polonsky_keer
 from transient.models.roller.results import EHLConvergenceError
 from transient.physics import film_formulas as hd
 from transient.physics.hertz import hertz_contact
 from transient.physics.lubricant import DOWSON_HIGGINSON_PARK, Lubricant
-from transient.results import Stats
+from transient.solvers.integrate import Problem, solve
 
 #: nodes required inside the Hertz semi-axis b along the rolling direction
 MIN_NODES_PER_B = 4
@@ -217,7 +217,7 @@ class PointContact:
         """Steady film by FBNS Newton from the dry Hertz pressure (or ``initial``: a :class:`PointSteady`
         of the same grid, for this or another inlet layer: :meth:`layer_start`); when Newton fails from there
         (starved inlets), by pseudo-transient continuation
-        (:func:`~transient.models.point.stepping.steady_by_time_steps`) from the same start; when both fail from
+        (:func:`~transient.models.point.step_solve.steady_by_time_steps`) from the same start; when both fail from
         ``initial``, both again from the Hertz start. Raises
         :class:`EHLConvergenceError` (``raise_on_failure``) with the last iterate flagged ``success=False``; for
         a starved inlet whose film collapses (``h_min`` below 1 % of ``h_central``: the layer is thinner than
@@ -319,17 +319,21 @@ class PointContact:
         """``b/u`` [s], the unit of the scaled time."""
         return self.hertz.b / self.speed
 
-    def transient(self, t_end: float, load=None, start="dry", rtol: float = 1e-4, max_steps: int = 5000) -> PointTransient:
-        """The film in time (:mod:`transient.models.point.stepping`: BDF2 with FBNS Newton per step).
+    def transient(self, t_end: float, load=None, start="dry", rtol: float = 1e-4, max_steps: int = 5000,
+                  n_out: int = 201, time_budget: float | None = None) -> PointTransient:
+        """The film in time: BDF2 with FBNS Newton per step (:mod:`transient.models.point.step_solve`) through the
+        integrator facade (:func:`~transient.solvers.integrate.solve`, ``method="bdf2"``).
 
         ``t_end`` [s]; ``load`` [N]: a number or a function of ``t`` [s] (default: the contact's load);
         ``start``: ``"dry"`` (the dry Hertz pressure with the film lifted to Hamrock-Dowson's central film,
         the content full, or for a starved inlet the layer where it does not fill the gap) or a
         :class:`PointSteady` / :class:`PointTransient` of this contact's grid; ``rtol`` the relative local
-        error per step. Series at every accepted step; the final fields and state (``start=`` of a next run)."""
+        error per step; ``n_out`` outputs equally spaced on [0, t_end]; ``time_budget`` [s] of wall clock (None:
+        none). Series at the outputs; the final fields and state (``start=`` of a next run)."""
         t_end = check_range("t_end", t_end, "s", 0.0, 1e6, low_open=True)
         rtol = check_range("rtol", rtol, "-", 1e-8, 0.5)
         max_steps = check_int("max_steps", max_steps, "-", 1, 10 ** 7)
+        n_out = check_int("n_out", n_out, "-", 2, 10 ** 7)
         if load is None:
             load = self.load
         if callable(load):
@@ -357,21 +361,18 @@ class PointContact:
             H = film.film(P, h0)
             rows.append((T * ts, H[jc, ic] * hs, H.min() * hs, P.max() * c.p_max, h0 * hs, ratio(T) * self.load))
 
-        observe(0.0, u0)
-        t0 = time.perf_counter()
-        T, u, ok, msg, counts = march(film, u0, t_end / ts, ratio, rtol=rtol, h0=1e-3, max_steps=max_steps,
-                                      observe=observe)
-        wall = time.perf_counter() - t0
+        problem = Problem(y0=u0, step_solve=FilmStep(film, u0, ratio), name="point contact (FBNS)")
+        sol = solve(problem, np.linspace(0.0, t_end / ts, n_out), method="bdf2", rtol=rtol, atol=ATOL_PER_RTOL * rtol,
+                    first_step=1e-3, max_steps=max_steps, store=False, observer=observe, time_budget=time_budget)
         a = np.array(rows)
+        T, u = problem.step_solve.last
         P, Th, h0 = film.split(u)
         H = film.film(P, h0)
-        stats = Stats(n_steps=counts["steps"], n_jac=counts["newton"], n_error_test_failures=counts["rejected"],
-                      wall_time=wall)
         return PointTransient(t=a[:, 0], h_central=a[:, 1], h_min=a[:, 2], p_max=a[:, 3], h0=a[:, 4], load=a[:, 5],
                               x=film.x * c.b, y=film.y_full * c.b, pressure=film.full(P) * c.p_max,
-                              film=film.full(H) * hs, theta=film.full(Th), wall_time=wall, stats=stats,
-                              final_state=u, final_time=T * ts, success=bool(ok),
-                              message="completed" if ok else msg)
+                              film=film.full(H) * hs, theta=film.full(Th), wall_time=sol.stats.wall_time,
+                              stats=sol.stats, final_state=u, final_time=T * ts,
+                              success=bool(sol.success), message="completed" if sol.success else sol.message)
 
     def _result(self, film: PointFilm, u, ok, norms, wall, info) -> PointSteady:
         P, T, h0 = film.split(u)

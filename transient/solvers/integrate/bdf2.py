@@ -1,18 +1,13 @@
 """Variable-step BDF2 with its own Newton on a bordered band LU, for DAEs ``F(t, y, y') = 0`` whose step size is
 set by a few declared components (a rotor) while the others (a film) are only solved to a Newton tolerance.
 
-With ``h = t_(n+1) - t_n`` and ``w = h / h_(n-1)`` the variable-step BDF2 derivative (the first step of every
-solve is backward Euler) is::
+The time discretisation, error test, step control, dense output and the step loop are the
+:class:`~transient.solvers.integrate.stepper.BDF2` stepper's (:mod:`transient.solvers.integrate.stepper`); this
+module is the step solve of a model that hands its kernels as a :class:`Bdf2Model` (:class:`BandNewton`), and
+the back end ``method="bdf2"`` of the integrator facade, which also takes a model's own
+:class:`~transient.solvers.integrate.stepper.StepSolve` as ``Problem.step_solve`` (the point contact's FBNS).
 
-    y'_(n+1) = cj y_(n+1) + b,   cj = (1 + 2 w) / (h (1 + w)),   b = -(1 + w) / h y_n + w^2 / (h (1 + w)) y_(n-1)
-
-Its local error ``h^3 y''' (1 + w)^2 / (6 w (1 + 2 w))`` is estimated from the distance between the converged
-step and the quadratic predictor through the last three points (Hermite with y'(t_0) after the first step),
-on the declared ``error_components`` only, in the weighted RMS norm of ``rtol |y| + atol``. The step follows a
-PI controller (Gustafsson; Hairer & Wanner, Solving ODEs II, IV.2: exponents 0.7/3 and 0.4/3), its ratio kept
-in [0.2, 2] (BDF2 is zero-stable for ratios below 1 + sqrt 2) and the step below ``max_step``.
-
-Newton, iterated on the model's Newton variables ``z`` (``y = to_state(z)``): it starts, component by component,
+The Newton, iterated on the model's Newton variables ``z`` (``y = to_state(z)``): it starts, component by component,
 from the quadratic extrapolation of ``z`` through the last three steps or from that of ``y`` mapped to ``z``,
 whichever was clearly closer (by ``PICK_RATIO``) to the converged ``z`` in the previous step (a film cell: its
 pressure extrapolated where it stays in the full film, its content where it cavitates or crosses). Chord iterations
@@ -32,8 +27,7 @@ step), then cuts the step by 4. The cost by operation (residuals, Jacobians, ite
 added to ``options["newton_counts"]`` (an int64 array of ``N_COUNTS``) if given.
 
 The Newton iteration (residual, solves, Jacobian, factorisation, norm) is one numba kernel; Python runs once per
-step (predictor, error test, step control, dense output, events). Outputs at ``t_eval`` come from the step's
-quadratic interpolant (dense output); events are located on it with Brent's method.
+step (predictor, error test, step control, dense output, events).
 
 The model hands the kernels as a :class:`Bdf2Model` in ``solve(..., options={"bdf2": model})``;
 ``options["fixed_step"] = h`` takes steps of exactly h with no error test (convergence studies).
@@ -50,6 +44,7 @@ from numba import njit
 from transient.solvers.bandlu import BorderedBandLU, band_factor, band_solve
 from transient.solvers.integrate.guard import SIGINT
 from transient.solvers.integrate.outputs import Events, step_events
+from transient.solvers.integrate.stepper import BDF2, StepSolve, drive, quadratic
 
 NEWTON_FACTOR = 0.1  # Newton tolerance on the error components, as a fraction of rtol |y| + atol
 MAX_ITER = 25
@@ -62,7 +57,6 @@ REFRESH_PER_BAND = 0.15
 CJ_REFRESH = 0.3  # ... and so does a step whose cj moved by more than this fraction since the factorisation
 RATE_FLOOR = 0.3  # an update is accepted if max(rate / (1 - rate), RATE_FLOOR) times its size is within tolerance
 PICK_RATIO = 0.5  # a component starts from the extrapolation in z if that was this much closer than the one in y
-MIN_RATIO, MAX_RATIO, SAFETY = 0.2, 2.0, 0.9
 #: slots of the Newton's ``counts`` (the stepper's cost by operation, ``options["newton_counts"]``): residuals,
 #: Jacobians (each one factored), Newton iterations, Jacobians refreshed inside a solve because components switched
 #: regime / because the contraction was slow / at a solve's start, damped updates, Newton solves, switched
@@ -257,165 +251,90 @@ def newton_step(residual, jacobian, norm, to_state, from_state, args, t, cj, b, 
     return 1
 
 
-def _quadratic(ts, ys, t, slope=None):
-    """The quadratic through the points ``(ts[k], ys[k])`` (3 of them), or through 2 points with the slope at
-    the first (Hermite), or the line through 1 point with its slope, at ``t``."""
-    if len(ts) == 3:
-        t0, t1, t2 = ts
-        return (ys[0] * ((t - t1) * (t - t2) / ((t0 - t1) * (t0 - t2)))
-                + ys[1] * ((t - t0) * (t - t2) / ((t1 - t0) * (t1 - t2)))
-                + ys[2] * ((t - t0) * (t - t1) / ((t2 - t0) * (t2 - t1))))
-    if len(ts) == 2:
-        h1 = ts[1] - ts[0]
-        c = (ys[1] - ys[0] - slope * h1) / (h1 * h1)
-        s = t - ts[0]
-        return ys[0] + slope * s + c * (s * s)
-    return ys[0] + slope * (t - ts[0])
+class BandNewton(StepSolve):
+    """The step solve of a :class:`Bdf2Model`: its compiled Newton (:func:`newton_step`) on a bordered band LU of
+    the problem's Jacobian pattern, the Newton tolerance of the error components ``NEWTON_FACTOR (rtol |y_pred| +
+    atol)``, the extrapolation of the Newton variables through the last three steps, and one retry of a failed
+    solve with every switch refreshing the Jacobian (the weighed refresh can starve a hard step)."""
 
+    def __init__(self, model: Bdf2Model, pattern, n, rtol, atol, tally=None):
+        self.model = model
+        self.error_components = np.ascontiguousarray(model.error_components, dtype=np.int64)
+        self.rtol = rtol
+        self.atol = np.broadcast_to(np.asarray(atol, dtype=float), (n,))[self.error_components]
+        self.lu = BorderedBandLU(pattern, model.n_border)
+        self.data = np.zeros(pattern.nnz)
+        self.F, self.dz, self.yp = (np.empty(n) for _ in range(3))
+        self.state = np.zeros(6)
+        self.refresh_cost = REFRESH_PER_BAND * (self.lu.kl + self.lu.ku + 1)
+        self.state[REFRESH_COST] = self.refresh_cost
+        self.pick = np.zeros(n, dtype=np.bool_)
+        self.z = np.empty(n)
+        self.zs = [None]  # the Newton variables at the accepted points, aligned with the stepper's
+        self.newton_counts = np.zeros(N_COUNTS, dtype=np.int64)
+        self.tally = tally
+        self.may_retry = False
 
-def integrate_bdf2(problem, t_eval, out, guard, rtol, atol, max_step, first_step, max_steps, options, step_events,
-                   interrupt):
-    """The step loop (module docstring). ``out``/``guard``/``step_events``/``interrupt`` are the integrator facade's
-    output collector, callback guard, per-step event helper and Ctrl-C check. Returns (success, message)."""
-    model = options.get("bdf2")
-    if not isinstance(model, Bdf2Model):
-        raise ValueError(f"method 'bdf2' needs options={{'bdf2': Bdf2Model(...)}} from the model (its compiled residual, "
-                         f"Jacobian and Newton norm); problem '{problem.name}' gave {type(model).__name__}")
-    if problem.jac_pattern is None:
-        raise ValueError(f"method 'bdf2' needs the sparse Jacobian pattern; problem '{problem.name}' has none")
-    n = problem.n
-    err_idx = np.ascontiguousarray(model.error_components, dtype=np.int64)
-    atol_v = np.broadcast_to(np.asarray(atol, dtype=float), (n,))[err_idx]
-    lu = BorderedBandLU(problem.jac_pattern, model.n_border)
-    data = np.zeros(problem.jac_pattern.nnz)
-    F, dy, yp, y_new = (np.empty(n) for _ in range(4))
-    state = np.zeros(6)
-    refresh_cost = REFRESH_PER_BAND * (lu.kl + lu.ku + 1)
-    state[REFRESH_COST] = refresh_cost
-    pick = np.zeros(n, dtype=np.bool_)
-    z_new = np.empty(n)
-    counts = np.zeros(N_COUNTS, dtype=np.int64)
-    events = out.events
-    t_end = float(t_eval[-1])
-    t = float(t_eval[0])
-    y = problem.y0.copy()
-    slope = np.zeros(n) if problem.yp0 is None else problem.yp0.copy()
-    out.put(y)
-    g_prev = events.values(t, y) if events is not None else None
-    span = t_end - t
-    fixed = float(options.get("fixed_step", 0.0))
-    h = fixed if fixed > 0 else (first_step if first_step > 0 else 1e-4 * span)
-    t_start, k_step = t, 0
-    h_cap = max_step if max_step > 0 else span
-    ts, ys, zs = [t], [y], [None]  # the last (up to 3) accepted points, oldest first
-    err_prev = 1.0
-    n_etf = n_nlf = 0
-    message = "reached the final time"
-
-    def finish(success, msg):
-        guard.n_rhs += int(counts[RESIDUALS])
-        guard.n_jac += int(counts[J_EVALS])
-        tally = options.get("newton_counts")
-        if tally is not None:
-            tally += counts
-        guard.n_error_test_failures = n_etf
-        guard.n_nonlinear_failures = n_nlf
-        return success, msg
-
-    while out.k < t_eval.size:
-        if fixed > 0:  # step k ends at t_start + k h exactly (no drift), the last one at t_end
-            t_new = min(t_end, t_start + (k_step + 1) * fixed)
-            h = t_new - t
-        else:
-            h = min(h, h_cap)
-            if t + h >= t_end - 1e-9 * h:
-                h = t_end - t
-            t_new = t + h
-        if t_new <= t or h <= 1e-14 * max(1.0, abs(t)):
-            return finish(False, f"bdf2: the step size collapsed to {h:.3g} at t={t:.9g} ({n_nlf} Newton failures, "
-                                 f"{n_etf} error-test failures)")
-        if len(ts) == 1:  # backward Euler
-            cj = 1.0 / h
-            b = -y / h
-            y_pred = _quadratic(ts, ys, t_new, slope)
-            h1 = h2 = 0.0
-        else:
-            h1 = t - ts[-2]
-            w = h / h1
-            cj = (1.0 + 2.0 * w) / (h * (1.0 + w))
-            b = (-(1.0 + w) / h) * y + (w * w / (h * (1.0 + w))) * ys[-2]
-            y_pred = _quadratic(ts, ys, t_new, slope)
-            h2 = ts[-2] - ts[-3] if len(ts) == 3 else 0.0
+    def solve(self, t, cj, history, ts, ys, y_pred):
+        state, z = self.state, self.z
         if state[CJ_J] != 0.0 and abs(cj / state[CJ_J] - 1.0) > CJ_REFRESH:
             state[REFRESH] = 1.0
-        err_w = 1.0 / (NEWTON_FACTOR * (rtol * np.abs(y_pred[err_idx]) + atol_v))
-        if len(ts) == 3 and zs[0] is not None:
-            z_new[:] = _quadratic(ts, zs, t_new)
+        idx = self.error_components
+        err_w = 1.0 / (NEWTON_FACTOR * (self.rtol * np.abs(y_pred[idx]) + self.atol))
+        if len(ts) == 3 and self.zs[0] is not None:
+            z[:] = quadratic(ts, self.zs, t)
             state[Z_GIVEN] = 1.0
         else:
             state[Z_GIVEN] = 0.0
-        code = model.newton(model.args, t_new, cj, np.ascontiguousarray(b), y_new, yp, F, dy, data, lu.arrays,
-                            np.ascontiguousarray(y_pred), z_new, pick, err_idx, err_w, state, counts)
-        interrupt()
-        if code != 0 and state[REFRESH_COST] > 0.0:  # the same step again, every switch refreshing the Jacobian
-            n_nlf += 1
-            state[REFRESH_COST] = 0.0
-            state[REFRESH] = 1.0
-            continue
-        state[REFRESH_COST] = refresh_cost
-        if code != 0:
-            n_nlf += 1
-            if fixed > 0:
-                return finish(False, f"bdf2: Newton failed at t={t_new:.9g} with the fixed step {fixed:.4g}")
-            h *= 0.25
-            continue
-        d = (y_new - y_pred)[err_idx]
-        if len(ts) == 1:
-            est = 0.5 * d
-        else:
-            est = d * (h * h * (1.0 + w) ** 2 / (w * (1.0 + 2.0 * w)) / ((h + h1) * (h + h1 + h2)))
-        err = math.sqrt(float(np.mean((est / (rtol * np.abs(y_new[err_idx]) + atol_v)) ** 2)))
-        if not math.isfinite(err):
-            n_nlf += 1
-            h *= 0.25
-            continue
-        if err > 1.0 and fixed == 0:
-            n_etf += 1
-            h *= max(MIN_RATIO, SAFETY * err ** (-1.0 / 3.0))
-            continue
-        # accepted
-        guard.n_steps += 1
-        k_step += 1
-        y_acc = y_new.copy()
-        pts_t, pts_y = (ts[-2:] + [t_new], ys[-2:] + [y_acc]) if len(ts) >= 2 else ([t, t_new], [y, y_acc])
+        y = np.empty(z.size)
+        code = self.model.newton(self.model.args, t, cj, np.ascontiguousarray(history(ys)), y, self.yp, self.F,
+                                 self.dz, self.data, self.lu.arrays, np.ascontiguousarray(y_pred), z, self.pick, idx,
+                                 err_w, state, self.newton_counts)
+        self.may_retry = code != 0 and state[REFRESH_COST] > 0.0
+        if not self.may_retry:
+            state[REFRESH_COST] = self.refresh_cost
+        return code, y
 
-        def state_at(s, pts_t=pts_t, pts_y=pts_y, y_acc=y_acc, t_new=t_new):
-            return y_acc if s >= t_new else _quadratic(pts_t, pts_y, s, slope)
+    def retry(self) -> bool:
+        if not self.may_retry:
+            return False
+        self.state[REFRESH_COST] = 0.0
+        self.state[REFRESH] = 1.0
+        return True
 
-        t_old = t
-        ts, ys, zs = (ts + [t_new])[-3:], (ys + [y_acc])[-3:], (zs + [z_new.copy()])[-3:]
-        t, y = t_new, y_acc
-        if events is not None:
-            g_prev, te = step_events(events, state_at, t_old, t_new, g_prev, y_acc, out)
-            if te is not None:
-                return finish(True, f"terminal event at t={te:.9g}")
-        while out.k < t_eval.size and out.pending <= t_new + 1e-9 * h:
-            out.put(state_at(out.pending) if out.pending < t_new - 1e-9 * h else y_acc)
-        late = guard.over_budget(t_new)
-        if late:
-            return finish(False, late)
-        if guard.n_steps >= max_steps and out.k < t_eval.size:
-            return finish(False, f"bdf2: max_steps={max_steps} reached at t={t:.9g}")
-        e = max(err, 1e-10)
-        ratio = SAFETY * e ** (-0.7 / 3.0) * err_prev ** (0.4 / 3.0)
-        h *= min(MAX_RATIO, max(MIN_RATIO, ratio))
-        err_prev = e
-    return finish(True, message)
+    def accepted(self, t, y):
+        self.zs = (self.zs + [self.z.copy()])[-3:]
+
+    def counts(self):
+        if self.tally is not None:
+            self.tally += self.newton_counts
+        return int(self.newton_counts[RESIDUALS]), int(self.newton_counts[J_EVALS])
+
+
+def step_solve(problem, s) -> StepSolve:
+    """The model's step solve for :func:`solve`: the problem's own (``problem.step_solve``, a :class:`StepSolve`) or
+    ``s.options["bdf2"]``, a :class:`Bdf2Model` (wrapped in :class:`BandNewton`, which needs the problem's
+    Jacobian pattern)."""
+    if isinstance(problem.step_solve, StepSolve):
+        return problem.step_solve
+    model = s.options.get("bdf2")
+    if not isinstance(model, Bdf2Model):
+        raise ValueError(f"method 'bdf2' needs the model's step solve: Problem(step_solve=StepSolve) or "
+                         f"options={{'bdf2': Bdf2Model(...)}} (its compiled residual, Jacobian and Newton norm); "
+                         f"problem '{problem.name}' gave {type(model).__name__}")
+    if problem.jac_pattern is None:
+        raise ValueError(f"method 'bdf2' needs the sparse Jacobian pattern; problem '{problem.name}' has none")
+    return BandNewton(model, problem.jac_pattern, problem.n, s.rtol, s.atol, s.options.get("newton_counts"))
 
 
 def solve(problem, t_eval, out, guard, s):
-    """The back end of :func:`~transient.solvers.integrate.solve`: :func:`integrate_bdf2` with the facade's
-    settings ``s``, events located on the step's quadratic; returns ``(success, message)``."""
+    """The back end of :func:`~transient.solvers.integrate.solve`: :class:`~transient.solvers.integrate.stepper.BDF2`
+    on the model's step solve (:func:`step_solve`), run by :func:`~transient.solvers.integrate.stepper.drive`
+    (events located on the step's quadratic); returns ``(success, message)``."""
+    solver = step_solve(problem, s)
     out.events = Events(problem, guard, poison=False) if problem.n_events else None
-    return integrate_bdf2(problem, t_eval, out, guard, s.rtol, s.atol, s.max_step, s.first_step, s.max_steps,
-                          s.options, step_events, SIGINT.check)
+    stepper = BDF2(solver, problem.y0, t_eval[0], t_eval[-1], rtol=s.rtol, atol=s.atol,
+                   error_components=solver.error_components, yp0=problem.yp0, first_step=s.first_step,
+                   max_step=s.max_step, fixed_step=float(s.options.get("fixed_step", 0.0)),
+                   test_first_step=solver.test_first_step)
+    return drive(stepper, out, guard, SIGINT.check, s.max_steps, step_events)

@@ -33,6 +33,8 @@ class Problem:
       solved for the given differential part (the per-stage inner solve).
     * ``step_begin(t, y)``: for ``rk4``, called at the start of every step (e.g. to store the history
       a time-discretised inner solve needs).
+    * ``step_solve``: for ``bdf2``, the model's own solve of one implicit step
+      (:class:`~transient.solvers.integrate.stepper.StepSolve`); a problem with one needs no other callback.
     """
 
     y0: np.ndarray
@@ -50,6 +52,7 @@ class Problem:
     event_direction: Sequence[int] | None = None
     algebraic_solve: Callable | None = None
     step_begin: Callable | None = None
+    step_solve: object | None = None
     name: str = "problem"
 
     def __post_init__(self):
@@ -59,8 +62,8 @@ class Problem:
         self.y0 = np.ascontiguousarray(self.y0, dtype=float)
         if self.y0.ndim != 1 or self.y0.size == 0:
             raise ValueError(f"Problem '{self.name}': y0 must be a non-empty 1-D array, got shape {self.y0.shape}")
-        if self.rhs is None and self.residual is None:
-            raise ValueError(f"Problem '{self.name}': give rhs (ODE) or residual (DAE), or both")
+        if self.rhs is None and self.residual is None and self.step_solve is None:
+            raise ValueError(f"Problem '{self.name}': give rhs (ODE) or residual (DAE), or both, or a step_solve")
         if self.yp0 is not None:
             if np.ndim(self.yp0) != 1:
                 raise ValueError(f"Problem '{self.name}': yp0 must be a 1-D array like y0, got {short_repr(self.yp0)}")

@@ -1,0 +1,94 @@
+"""The stepper contract (solvers/integrate/stepper.py) on a linear test problem with an exact step solve: the BDF2
+history is exact for quadratics, the fixed-step error falls at second order, the adaptive error follows rtol, and
+the one loop (drive, through the integrator facade) gives outputs at the requested times, events on the dense
+output, max_steps, the time budget and a refused non-finite state."""
+
+import math
+
+import numpy as np
+import pytest
+
+from transient.solvers.integrate import Problem, solve
+from transient.solvers.integrate.stepper import BDF2, StepSolve, _history
+
+LAM = -2.0  # y' = LAM y + sin(t), exact step solve
+
+
+def exact(t, y0=1.0):
+    a = LAM
+    c = y0 + 1.0 / (1.0 + a * a)
+    return c * math.exp(a * t) - (a * math.sin(t) + math.cos(t)) / (1.0 + a * a)
+
+
+class LinearStep(StepSolve):
+    """cj y + b = LAM y + sin(t): y = (sin t - b) / (cj - LAM) (one "Newton" that is exact)."""
+
+    error_components = None
+
+    def __init__(self, fail_at=None):
+        self.fail_at, self.n = fail_at, 0
+
+    def solve(self, t, cj, history, ts, ys, y_pred):
+        self.n += 1
+        y = (math.sin(t) - history(ys)) / (cj - LAM)
+        if self.fail_at is not None and t > self.fail_at:
+            y = y * np.nan
+        return 0, y
+
+    def counts(self):
+        return self.n, 0
+
+
+def test_history_is_exact_for_quadratics():
+    q = lambda t: 1.0 + 2.0 * t - 3.0 * t * t
+    dq = lambda t: 2.0 - 6.0 * t
+    t_prev, t_n, h = 0.0, 0.3, 0.5
+    w = h / (t_n - t_prev)
+    cj = (1.0 + 2.0 * w) / (h * (1.0 + w))
+    assert cj * q(t_n + h) + _history(h, w, 2)([q(t_prev), q(t_n)]) == pytest.approx(dq(t_n + h), rel=1e-12)
+    assert (1.0 / h) * q(h) + _history(h, 0.0, 1)([q(0.0)]) == pytest.approx((q(h) - q(0.0)) / h, rel=1e-12)
+
+
+def test_fixed_steps_converge_at_second_order():
+    errors = []
+    for n in (40, 80, 160):
+        s = BDF2(LinearStep(), np.array([1.0]), 0.0, 2.0, rtol=1e-3, atol=1e-6, fixed_step=2.0 / n)
+        while s.t < 2.0:
+            assert s.step() is None
+        assert s.t == 2.0 and s.n_steps == n
+        errors.append(abs(s.y[0] - exact(2.0)))
+    orders = np.log2(np.array(errors[:-1]) / np.array(errors[1:]))
+    assert np.all(orders > 1.8) and np.all(orders < 2.2), orders
+
+
+def test_adaptive_error_follows_rtol_and_outputs_come_at_the_requested_times():
+    t_eval = np.linspace(0.0, 3.0, 7)
+    errs = []
+    for rtol in (1e-3, 1e-5):
+        step = LinearStep()
+        sol = solve(Problem(y0=np.array([1.0]), step_solve=step, name="linear"), t_eval, method="bdf2",
+                    rtol=rtol, atol=1e-9)
+        assert sol.success and np.array_equal(sol.t, t_eval)
+        errs.append(max(abs(sol.y[k, 0] - exact(t)) for k, t in enumerate(t_eval)))
+        assert sol.stats.n_rhs == step.n >= sol.stats.n_steps
+    assert errs[1] < errs[0] / 10.0, errs
+
+
+def test_event_located_on_the_dense_output():
+    def events(t, y, out):
+        out[0] = y[0] - 0.5
+    sol = solve(Problem(y0=np.array([1.0]), step_solve=LinearStep(), events=events, n_events=1,
+                        event_terminal=[True], event_direction=[-1], name="linear"),
+                np.linspace(0.0, 3.0, 31), method="bdf2", rtol=1e-6, atol=1e-10)
+    assert sol.success and "terminal event" in sol.message
+    te = sol.t_events[0]
+    assert exact(te) == pytest.approx(0.5, abs=1e-4)
+
+
+def test_max_steps_and_non_finite_state_stop_the_run_with_a_message():
+    p = Problem(y0=np.array([1.0]), step_solve=LinearStep(), name="linear")
+    sol = solve(p, np.linspace(0.0, 3.0, 4), method="bdf2", rtol=1e-8, atol=1e-12, max_steps=5)
+    assert not sol.success and "max_steps=5" in sol.message
+    p = Problem(y0=np.array([1.0]), step_solve=LinearStep(fail_at=1.0), name="linear")
+    sol = solve(p, np.linspace(0.0, 3.0, 31), method="bdf2", rtol=1e-4, atol=1e-8)
+    assert not sol.success and sol.t[-1] <= 1.0 + 1e-12
