@@ -278,7 +278,12 @@ _KINDS = ((stat.S_ISDIR, "a folder"), (stat.S_ISCHR, "a character device"), (sta
 
 
 class NotARegularFile(ValueError):
-    """A path that is not a regular file (a device, a FIFO, a folder): never opened for reading."""
+    """A path that is not a regular file (a device, a FIFO, a folder): never opened for reading. ``kind``
+    says what it is (e.g. ``"a FIFO (named pipe)"``)."""
+
+    def __init__(self, kind: str):
+        super().__init__(f"not a regular file but {kind}")
+        self.kind = kind
 
 
 def open_regular(path):
@@ -290,12 +295,12 @@ def open_regular(path):
 
     mode = os.stat(path).st_mode
     if not stat.S_ISREG(mode):
-        raise NotARegularFile(f"not a regular file but {kind(mode)}")
+        raise NotARegularFile(kind(mode))
     fd = os.open(path, os.O_RDONLY | os.O_NONBLOCK | getattr(os, "O_CLOEXEC", 0))
     mode = os.fstat(fd).st_mode
     if not stat.S_ISREG(mode):
         os.close(fd)
-        raise NotARegularFile(f"not a regular file but {kind(mode)}")
+        raise NotARegularFile(kind(mode))
     return os.fdopen(fd, "rb")
 
 
@@ -536,7 +541,13 @@ def _build(cls, fields: dict, data: dict, path):
     if unknown:
         raise FieldError(f"field {unknown[0]!r} is not a field of {cls.__name__}")
     init = {f.name for f in dataclasses.fields(cls) if f.init}
-    kwargs = {name: _decode(enc, data, path) for name, enc in fields.items() if name in init}
+    kwargs = {}
+    for name, enc in fields.items():
+        if name in init:
+            try:
+                kwargs[name] = _decode(enc, data, path)
+            except FieldError as e:  # in a nested result or record
+                raise FieldError(f"in field {name!r}: {e}") from None
     _check_fields(cls, kwargs)
     obj = cls(**kwargs)
     for f in dataclasses.fields(cls):  # non-init fields (derived at construction) are set as saved
@@ -616,7 +627,7 @@ def _merged(cls, name: str) -> dict:
 def check_result(obj):
     """Check a result (or a record) against its class: every field of its annotated type (:func:`_type_ok`),
     the time axis one-dimensional and real (on a run also finite and non-decreasing), the declared ``shapes``
-    (the series finite on a run) and ``labels``. Raises :class:`FieldError` naming the field."""
+    (the series of a successful run finite) and ``labels``. Raises :class:`FieldError` naming the field."""
     cls = type(obj)
     for f in dataclasses.fields(cls):
         v = getattr(obj, f.name)
@@ -644,7 +655,11 @@ def check_result(obj):
         if shape is None:
             raise FieldError(f"field {name!r} holds {_kind(v)}, not an array")
         if len(shape) != len(axes):
-            raise FieldError(f"field {name!r} has shape {list(shape)}, declared {_axes(axes)}")
+            first = getattr(obj, axes[0], None) if isinstance(axes[0], str) and axes[0] in obj.__dataclass_fields__ \
+                else None
+            if shape and shape[0] == 0 and first is not None and len(first) == 0:
+                continue  # an empty series (a run without outputs) may have lost its trailing axes
+            raise FieldError(f"field {name!r} has {len(shape)} axes {list(shape)}, declared {len(axes)}: {_axes(axes)}")
         for i, (n, want) in enumerate(zip(shape, axes)):
             if want is None:
                 continue
@@ -662,9 +677,9 @@ def check_result(obj):
             if want_n is not None and n != want_n:
                 raise FieldError(f"field {name!r} has shape {list(shape)}, declared {_axes(axes)}: axis {i} is "
                                  f"{n}, {what}")
-        if run and axes and axes[0] == axis and isinstance(v, np.ndarray) and v.dtype.kind in "fc" \
+        if run and obj.ok and axes and axes[0] == axis and isinstance(v, np.ndarray) and v.dtype.kind in "fc" \
                 and not np.all(np.isfinite(v)):
-            raise FieldError(f"series {name!r} holds {_first_bad(v)}")
+            raise FieldError(f"series {name!r} of a successful run holds {_first_bad(v)}")
     labels = _merged(cls, "labels")
     for name, among in labels.items():
         v = getattr(obj, name, None)
@@ -690,7 +705,7 @@ def _first_bad(a: np.ndarray) -> str:
 
 
 def _axes(axes) -> str:
-    return "(" + ", ".join("any" if a is None else str(a) for a in axes) + ")"
+    return "(" + ", ".join("any length" if a is None else str(a) for a in axes) + ")"
 
 
 def _kind(v) -> str:
