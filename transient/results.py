@@ -11,7 +11,9 @@ by :class:`StatusResult`; a run in time derives from :class:`RunResult` (``t``, 
 Files: :meth:`Result.save` writes one ``.npz`` (a zip of ``.npy`` arrays, readable by any numpy without
 this package) holding every array field and a JSON document ``__meta__`` with the class, the scalar fields,
 the units and the package version; :func:`load_result` reads it back with ``allow_pickle=False``, so a
-crafted file cannot run code, and rebuilds only classes registered here (subclasses of :class:`Result`).
+crafted file cannot run code, and rebuilds only classes registered here (subclasses of :class:`Result`),
+reading a regular file only, every array bounded by its declared size, and the result checked against its
+class's fields, their types and its declared ``shapes`` and ``labels`` (:func:`check_result`).
 """
 
 from __future__ import annotations
@@ -291,7 +293,7 @@ def open_regular(path):
     it is. Checked before opening (a device or FIFO is never opened) and again on the opened descriptor, which
     is opened non-blocking (a FIFO swapped in between cannot block)."""
     def kind(mode):
-        return next((name for test, name in _KINDS if test(mode)), "not a regular file")
+        return next((name for test, name in _KINDS if test(mode)), "a special file")
 
     mode = os.stat(path).st_mode
     if not stat.S_ISREG(mode):

@@ -9,11 +9,13 @@ intervals. After every chunk it
   one ``.npz`` without pickle, keyed on ``key`` -- every parameter and setting that changes the result.
   ``resume=True`` continues from it; a checkpoint written with other parameters is refused with the name
   of the first parameter that differs, a truncated or corrupted one with the file name and how to start
-  afresh. Before resuming, its contents are checked against each other and the code: the format and code
-  version (the package version and a hash of its sources: a state layout may change between versions), a
-  SHA-256 digest of every array, each array's declared dtype and shape (read from the headers before
-  anything is decompressed, under a size cap), a finite state of the run's size, the output count and the
-  state's time, and the recorder's own consistency (``restore`` raises ``ValueError`` on inconsistent
+  afresh, a path that is not a regular file (a FIFO, a device) by what it is, without opening it. Before
+  resuming, its contents are checked against each other and the code: the format and code version (the
+  package version and a hash of its sources: a state layout may change between versions), the state's
+  declared size against the run's (before any array is read), each array's declared dtype and shape (read
+  from the headers before anything is decompressed, under a size cap), a SHA-256 digest of every array
+  (streamed, no copies), a finite state, finite recorded series, the output count and the state's time, and
+  the recorder's own consistency (``restore`` raises ``ValueError`` on inconsistent
   arrays; an optional ``times()`` must give the output times ``t0 + k dt_out``). An advisory lock
   (``PATH.lock``, removed when the run ends) keeps two runs off one checkpoint. An OS fault while writing
   (full disk, read-only folder) raises :class:`CheckpointWriteError` naming the file and where the last
