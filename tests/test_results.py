@@ -338,3 +338,18 @@ def test_an_equilibrium_still_loads_as_itself(tmp_path):
                          bearing_nodes=[0, 2], speed_rpm=3000.0, state=np.zeros(6))
     q = load_result(r.save(tmp_path / "e"))
     assert q.nodes == [0, 1, 2] and q.position(2)[0] == 0.0
+
+
+def test_every_declared_shape_and_label_names_a_field_of_its_class():
+    import dataclasses
+
+    import transient.models.rotor.results  # noqa: F401 - registers the rotor's results
+    from transient.results import _REGISTRY, _merged
+
+    for cls in _REGISTRY.values():
+        names = {f.name for f in dataclasses.fields(cls)} if dataclasses.is_dataclass(cls) else set()
+        for what in ("shapes", "labels"):
+            for name, spec in _merged(cls, what).items():
+                assert name in names, f"{cls.__name__}.{what} names {name!r}, not a field"
+                axes = spec if isinstance(spec, tuple) else (spec,)
+                assert all(a is None or isinstance(a, (int, str)) for a in axes), (cls.__name__, name, spec)

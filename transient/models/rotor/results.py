@@ -11,7 +11,7 @@ from transient.results import RunResult, StatusResult, SteadyResult, quantity, r
 class _Nodes:
     """``position(node)``: the (x, y) of one node from the ``displacement`` array (last axis: x, y)."""
 
-    labels = {"nodes": None, "bearing_nodes": "nodes"}
+    labels = {"nodes": None}
 
     def _index(self, node) -> int:
         nodes = list(self.nodes)
@@ -39,6 +39,7 @@ class RotorRunResult(_Nodes, RunResult):
 
     shapes = {"displacement": ("t", "nodes", 2), "speed_rpm": ("t",), "bearing_force": ("t", "bearing_nodes", 2),
               "clearance": ("bearing_nodes",)}
+    labels = {"bearing_nodes": "nodes"}
 
     displacement: np.ndarray = quantity("m", None)
     speed_rpm: np.ndarray = quantity("rpm", None)
@@ -71,6 +72,7 @@ class RotorEquilibrium(_Nodes, SteadyResult):
 
     shapes = {"displacement": ("nodes", 2), "bearing_force": ("bearing_nodes", 2), "bearing_load": ("bearing_nodes",),
               "eccentricity_ratio": ("bearing_nodes",), "attitude_angle_deg": ("bearing_nodes",), "state": (None,)}
+    labels = {"bearing_nodes": "nodes"}
 
     displacement: np.ndarray = quantity("m", None)
     bearing_force: np.ndarray = quantity("N", None)
@@ -91,6 +93,7 @@ class UnbalanceResponse(_Nodes, StatusResult):
 
     time_axis = None
     shapes = {"displacement": ("nodes", 2), "stiffness": ("bearing_nodes", 2, 2), "damping": ("bearing_nodes", 2, 2)}
+    labels = {"bearing_nodes": "nodes"}
     displacement: np.ndarray = quantity("m", None)
     stiffness: np.ndarray = quantity("N/m", None)
     damping: np.ndarray = quantity("N s/m", None)
