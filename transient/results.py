@@ -719,29 +719,36 @@ def _kind(v) -> str:
 _REAL = (int, float, np.integer, np.floating)
 
 
+def _real(v) -> bool:
+    """A real number: int or float (not bool), or a 0-d real array."""
+    if isinstance(v, np.ndarray):
+        return v.ndim == 0 and v.dtype.kind in "iuf"
+    return isinstance(v, _REAL) and not isinstance(v, (bool, np.bool_))
+
+
 def _type_ok(v, annotation, default) -> str:
     """'' if ``v`` fits the field's annotation (a string such as ``"np.ndarray | None"``, ``"float"``,
-    ``"tuple[float, float]"``, ``"Stats | None"``), else what it should be; annotations it does not know
-    (``object``, ``Any``, ...) accept anything. None fits a field whose default is None."""
+    ``"tuple[float, float]"``, ``"Stats | None"``), else what it should be. The check tells kinds apart (a
+    number, a string, an array, a list, a dictionary, a record) rather than Python types: ``int`` and ``float``
+    both take any real number, and a scalar, list, dictionary or record may be None (an unset value); an
+    array may be None only if the annotation or the default says so. Annotations it does not know
+    (``object``, ``Any``, ...) accept anything."""
     text = annotation if isinstance(annotation, str) else getattr(annotation, "__name__", str(annotation))
     kinds = [k.strip() for k in text.split("|")]
-    if v is None and ("None" in kinds or default is None):
+    array_kinds = ("np.ndarray", "numpy.ndarray", "ndarray")
+    if v is None and ("None" in kinds or default is None or not any(k in array_kinds for k in kinds)):
         return ""
     wants = []
     for k in kinds:
         base = k.split("[", 1)[0].strip()
-        if base in ("np.ndarray", "numpy.ndarray", "ndarray"):
+        if base in array_kinds:
             if isinstance(v, np.ndarray):
                 return ""
             wants.append("an array")
-        elif base == "float":
-            if isinstance(v, _REAL) and not isinstance(v, (bool, np.bool_)):
+        elif base in ("float", "int"):
+            if _real(v):
                 return ""
             wants.append("a number")
-        elif base == "int":
-            if isinstance(v, (int, np.integer)) and not isinstance(v, (bool, np.bool_)):
-                return ""
-            wants.append("an integer")
         elif base == "bool":
             if isinstance(v, (bool, np.bool_)):
                 return ""
@@ -755,15 +762,15 @@ def _type_ok(v, annotation, default) -> str:
                 return ""
             wants.append("a dictionary")
         elif base in ("list", "tuple"):
-            if isinstance(v, (list, tuple)):
+            if isinstance(v, (list, tuple)) or (isinstance(v, np.ndarray) and v.ndim == 1):
                 n = _tuple_length(k)
-                if n is None or (len(v) == n and all(isinstance(x, _REAL) and not isinstance(x, bool) for x in v)):
+                if n is None or (len(v) == n and all(_real(x) for x in v)):
                     return ""
                 wants.append(f"{n} numbers")
             else:
                 wants.append(f"a {base}")
         elif base in _REGISTRY or base in _RECORDS:
-            if type(v).__name__ == base or isinstance(v, _REGISTRY.get(base) or _RECORDS[base]):
+            if isinstance(v, _REGISTRY.get(base) or _RECORDS[base]):
                 return ""
             wants.append(f"a {base}")
         elif base != "None":
