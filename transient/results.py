@@ -70,7 +70,7 @@ class Result:
     #: declared shapes of array (and list) fields, merged over the class's bases: ``field -> axes``, each axis
     #: an int (that length), the name of a field (that field's length, e.g. the time axis ``"t"`` or
     #: ``"nodes"``), another name (a length every field naming it shares) or None (any length). A field whose
-    #: first axis is the time axis is a series; on a run (:class:`RunResult`) the series are finite.
+    #: first axis is the time axis is a series; the series of a successful run (:class:`RunResult`) are finite.
     #: Checked by :func:`check_result` when a file is loaded.
     shapes: ClassVar[dict] = {}
     #: fields holding labels (distinct integers), merged over the bases: ``field -> None``, or the name of the
