@@ -132,3 +132,95 @@ def test_orbit_checkpoint_names_a_changed_run_setting(tmp_path):
         other.run(1.0, outputs_per_revolution=8, chunk_revolutions=0.5, checkpoint=path, resume=True)
     assert not any(f.name.endswith(".tmp") for f in tmp_path.iterdir())
     assert not os.path.exists(str(path) + ".lock")  # a finished run removes its lock file
+
+
+# checkpoint files read safely -------------------------------------------------------------------------------------
+
+def _rewrite(path, change):
+    """Rewrite a checkpoint with ``change(arrays, meta)`` applied and its digest and declarations recomputed
+    (a consistently crafted file: only the content checks can refuse it)."""
+    import json
+
+    from transient.results import _content_digest
+
+    with np.load(path, allow_pickle=False) as z:
+        data = {k: z[k] for k in z.files}
+    meta = json.loads(str(data.pop("__meta__")))
+    keep_digest = change(data, meta)
+    if not keep_digest:
+        meta["digest"] = _content_digest(data)
+    meta["arrays"] = {k: [v.dtype.str, list(v.shape)] for k, v in data.items()}
+    data["__meta__"] = np.array(json.dumps(meta))
+    np.savez(path, **data)
+
+
+def test_a_fifo_checkpoint_is_refused_without_blocking(tmp_path):
+    import threading
+
+    path = tmp_path / "ck.npz"
+    os.mkfifo(path)
+    out = {}
+
+    def target():
+        try:
+            drive(path, resume=True)
+        except BaseException as e:  # noqa: BLE001 - handed to the test
+            out["error"] = e
+
+    th = threading.Thread(target=target, daemon=True)
+    th.start()
+    th.join(5)
+    blocked = th.is_alive()
+    if blocked:  # release the reader: open and close the writing end
+        os.close(os.open(path, os.O_WRONLY | os.O_NONBLOCK))
+        th.join(5)
+    assert not blocked, "resuming waited on a FIFO"
+    assert isinstance(out.get("error"), CheckpointError), out
+    assert f"checkpoint {path} is a FIFO (named pipe), not a regular file" in str(out["error"])
+
+
+@pytest.mark.parametrize("value", [np.nan, np.inf])
+def test_a_non_finite_recorded_series_is_refused_on_resume(tmp_path, value):
+    path = tmp_path / "ck.npz"
+    drive(path, n=20)
+    _rewrite(path, lambda d, m: d["rec.y"].__setitem__((3, 1), value))
+    with pytest.raises(CheckpointError, match=rf"checkpoint {path} holds {value} in its recorded series 'y' at "
+                                              r"index \[3, 1\] .*resume=False to start afresh"):
+        drive(path, resume=True)
+
+
+def test_a_state_of_another_size_is_refused_before_the_arrays_are_read(tmp_path, monkeypatch):
+    from transient.results import NpzReader
+
+    path = tmp_path / "ck.npz"
+    drive(path, n=20)
+    _rewrite(path, lambda d, m: d.update(state=np.zeros(3)))
+    read = NpzReader.read
+
+    def only_the_metadata(self, name):
+        if name != "__meta__":
+            pytest.fail(f"array {name!r} read before the state's declaration was checked")
+        return read(self, name)
+
+    monkeypatch.setattr(NpzReader, "read", only_the_metadata)
+    with pytest.raises(CheckpointError, match=r"holds a state of <f8 \[3\], this run has \[2\] states"):
+        drive(path, resume=True)
+
+
+def test_the_digest_of_a_large_checkpoint_is_streamed(tmp_path):
+    """A checkpoint whose recorder holds 80 MB and whose digest does not match is refused having read the
+    80 MB once: the digest is computed over the arrays in place, without a copy of each."""
+    import tracemalloc
+
+    path = tmp_path / "ck.npz"
+    drive(path, n=20)
+    big = 10_000_000
+    _rewrite(path, lambda d, m: d.update({"rec.big": np.ones(big)}) or True)  # declared, digest left as it was
+    tracemalloc.start()
+    try:
+        with pytest.raises(CheckpointError, match="does not match its digest"):
+            drive(path, resume=True)
+        peak = tracemalloc.get_traced_memory()[1]
+    finally:
+        tracemalloc.stop()
+    assert peak < 1.4 * 8 * big, f"refusing took {peak / 1e6:.0f} MB for {8 * big / 1e6:.0f} MB of arrays"

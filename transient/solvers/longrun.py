@@ -9,11 +9,13 @@ intervals. After every chunk it
   one ``.npz`` without pickle, keyed on ``key`` -- every parameter and setting that changes the result.
   ``resume=True`` continues from it; a checkpoint written with other parameters is refused with the name
   of the first parameter that differs, a truncated or corrupted one with the file name and how to start
-  afresh. Before resuming, its contents are checked against each other and the code: the format and code
-  version (the package version and a hash of its sources: a state layout may change between versions), a
-  SHA-256 digest of every array, each array's declared dtype and shape (read from the headers before
-  anything is decompressed, under a size cap), a finite state of the run's size, the output count and the
-  state's time, and the recorder's own consistency (``restore`` raises ``ValueError`` on inconsistent
+  afresh, a path that is not a regular file (a FIFO, a device) by what it is, without opening it. Before
+  resuming, its contents are checked against each other and the code: the format and code version (the
+  package version and a hash of its sources: a state layout may change between versions), the state's
+  declared size against the run's (before any array is read), each array's declared dtype and shape (read
+  from the headers before anything is decompressed, under a size cap), a SHA-256 digest of every array
+  (streamed, no copies), a finite state, finite recorded series, the output count and the state's time, and
+  the recorder's own consistency (``restore`` raises ``ValueError`` on inconsistent
   arrays; an optional ``times()`` must give the output times ``t0 + k dt_out``). An advisory lock
   (``PATH.lock``, removed when the run ends) keeps two runs off one checkpoint. An OS fault while writing
   (full disk, read-only folder) raises :class:`CheckpointWriteError` naming the file and where the last
@@ -39,7 +41,8 @@ from typing import Callable
 
 import numpy as np
 
-from transient.results import FileFault, _content_digest, atomic_savez, code_version, npz_headers, read_npz
+from transient.results import (FileFault, NotARegularFile, NpzReader, _content_digest, atomic_savez, code_version,
+                               read_npz)
 from transient.solvers.integrate import Stats, solve
 from transient.solvers.progress import FRACTIONAL, progress_bar
 
@@ -201,6 +204,9 @@ def _accumulate(total: Stats, part: Stats):
 class _Checkpoint:
     """A checkpoint file, its advisory lock and its key."""
 
+    #: what to do with a checkpoint that cannot be resumed
+    FRESH = "delete it or run with resume=False to start afresh"
+
     def __init__(self, path, key: dict, label: str):
         self.path = Path(path)
         if self.path.suffix != ".npz":
@@ -287,16 +293,28 @@ class _Checkpoint:
         self.saved_outputs = int(k)
 
     def load(self, recorder, n_outputs, y0, t0, dt_out):
-        fresh = "delete it or run with resume=False to start afresh"
+        try:
+            z = NpzReader(self.path)
+        except NotARegularFile as e:
+            raise CheckpointError(f"checkpoint {self.path} is {e.kind}, not a regular file; give the checkpoint "
+                                  "a file name of its own") from None
+        except Exception as e:
+            raise CheckpointError(f"checkpoint {self.path} cannot be read ({type(e).__name__}: {e}); "
+                                  f"{self.FRESH}") from None
+        with z:
+            return self._load(z, recorder, n_outputs, y0, t0, dt_out)
+
+    def _load(self, z, recorder, n_outputs, y0, t0, dt_out):
+        fresh = self.FRESH
 
         def refuse(why):
             return CheckpointError(f"checkpoint {self.path} {why}; {fresh}")
 
         try:
-            heads = npz_headers(self.path)
+            heads = z.headers()
             if "__meta__" not in heads or heads["__meta__"][0].kind != "U" or heads["__meta__"][1] != ():
                 raise ValueError("no metadata")
-            meta = json.loads(str(read_npz(self.path, wanted=["__meta__"])["__meta__"]))
+            meta = json.loads(str(read_npz(z, wanted=["__meta__"])["__meta__"]))
             if not isinstance(meta, dict):
                 raise ValueError("the metadata is not a JSON object")
         except Exception as e:
@@ -328,18 +346,29 @@ class _Checkpoint:
         declared = meta.get("arrays")
         if not isinstance(declared, dict) or "state" not in declared:
             raise refuse("declares no arrays")
+        y0 = np.asarray(y0)
         try:
             declared = {name: (np.dtype(d[0]), tuple(d[1])) for name, d in declared.items()}
             extra = sorted(set(heads) - set(declared) - {"__meta__"})
             if extra:
                 raise ValueError(f"array {extra[0]!r} is not declared")
-            data = read_npz(self.path, wanted=list(declared), declared=declared)
+        except Exception as e:
+            raise refuse(f"has inconsistent arrays ({type(e).__name__}: {e})") from None
+        s_dtype, s_shape = declared["state"]
+        if s_shape != y0.shape or s_dtype.kind != "f":  # before anything is read
+            raise refuse(f"holds a state of {s_dtype.str} {list(s_shape)}, this run has {list(y0.shape)} states")
+        try:
+            data = read_npz(z, wanted=list(declared), declared=declared)
         except Exception as e:
             raise refuse(f"has inconsistent arrays ({type(e).__name__}: {e})") from None
         if _content_digest(data) != meta.get("digest"):
             raise refuse("does not match its digest (the file was altered or damaged)")
+        for name, a in data.items():
+            if name.startswith("rec.") and a.dtype.kind in "fc" and not np.all(np.isfinite(a)):
+                i = np.unravel_index(int(np.argmin(np.isfinite(a))), a.shape)
+                raise refuse(f"holds {a[i]} in its recorded series {name[4:]!r} at index {list(map(int, i))} (a "
+                             "checkpoint of a run records finite outputs only: it was altered or damaged)")
         y = data.pop("state")
-        y0 = np.asarray(y0)
         if y.shape != y0.shape or y.dtype.kind != "f":
             raise refuse(f"holds a state of {y.dtype.str} {list(y.shape)}, this run has {list(y0.shape)} states")
         if not np.all(np.isfinite(y)):

@@ -118,6 +118,10 @@ class OrbitResult(RunResult):
     why) if the integrator failed; the outputs up to the failure are kept.
     """
 
+    shapes = {"x": ("t",), "y": ("t",), "force": ("t", 2), "min_film": ("t",), "mass": ("t",), "outflow": ("t", 2),
+              "supply_flow": ("t", None), "side_leakage": ("t", 2), "pressure": ("pressure_t", "nz", "ntheta"),
+              "pressure_t": (None,), "film_content": ("film_content_t", "nz", "ntheta"), "film_content_t": (None,)}
+
     x: np.ndarray = quantity("m")
     y: np.ndarray = quantity("m")
     method: str = "ida"

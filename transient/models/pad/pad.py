@@ -143,6 +143,8 @@ class DescentResult(RunResult):
     ``success``, ``message``; ``pressure`` [Pa] (ny, nx) at the last output (full IDA path only).
     """
 
+    shapes = {"h0": ("t",), "dh0_dt": ("t",), "w_hyd": ("t",), "w_asp": ("t",), "contact_area": ("t",)}
+
     h0: np.ndarray = quantity("m")
     dh0_dt: np.ndarray = quantity("m/s")
     w_hyd: np.ndarray = quantity("N")

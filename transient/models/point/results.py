@@ -96,6 +96,7 @@ class PointTransient(RunResult):
     """Transient of the point contact: series at the output times ``t``, final fields."""
 
     snapshot_fields = ("x", "y", "pressure", "film", "theta")
+    shapes = {"h_central": ("t",), "h_min": ("t",), "p_max": ("t",), "h0": ("t",), "load": ("t",)}
     h_central: np.ndarray = quantity("m")
     h_min: np.ndarray = quantity("m")
     p_max: np.ndarray = quantity("Pa")

@@ -104,6 +104,7 @@ class LineTransient(RunResult):
     """Transient of the line contact (IDA): series at the output times ``t``, final fields."""
 
     snapshot_fields = ("x", "pressure", "film")
+    shapes = {"h_central": ("t",), "h_min": ("t",), "p_max": ("t",), "h0": ("t",), "load": ("t",)}
     h_central: np.ndarray = quantity("m")
     h_min: np.ndarray = quantity("m")
     p_max: np.ndarray = quantity("Pa")
@@ -203,6 +204,7 @@ class RollerTransient(RunResult):
     """Transient of the roller contact (IDA): series at the output times ``t``, final fields."""
 
     snapshot_fields = ("x", "y", "pressure", "film")
+    shapes = {"h_central": ("t",), "h_min": ("t",), "p_max": ("t",), "h0": ("t",), "load": ("t",)}
     h_central: np.ndarray = quantity("m")
     h_min: np.ndarray = quantity("m")
     p_max: np.ndarray = quantity("Pa")

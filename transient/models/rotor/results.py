@@ -11,6 +11,8 @@ from transient.results import RunResult, StatusResult, SteadyResult, quantity, r
 class _Nodes:
     """``position(node)``: the (x, y) of one node from the ``displacement`` array (last axis: x, y)."""
 
+    labels = {"nodes": None}
+
     def _index(self, node) -> int:
         nodes = list(self.nodes)
         if node not in nodes:
@@ -34,6 +36,10 @@ class RotorRunResult(_Nodes, RunResult):
     reached its bearing (the run stopped there); ``reference_speed_rpm`` [rpm] the speed of the state's pressure
     unit; ``final_state`` (the system's dimensionless state) at
     ``final_time`` [s], from which ``run(..., start=result)`` continues."""
+
+    shapes = {"displacement": ("t", "nodes", 2), "speed_rpm": ("t",), "bearing_force": ("t", "bearing_nodes", 2),
+              "clearance": ("bearing_nodes",)}
+    labels = {"bearing_nodes": "nodes"}
 
     displacement: np.ndarray = quantity("m", None)
     speed_rpm: np.ndarray = quantity("rpm", None)
@@ -64,6 +70,10 @@ class RotorEquilibrium(_Nodes, SteadyResult):
     load each bearing carries), ``eccentricity_ratio`` and ``attitude_angle_deg`` per bearing (from the bearing's
     load line to the line of centres, in the direction of rotation), ``state`` the system's dimensionless state."""
 
+    shapes = {"displacement": ("nodes", 2), "bearing_force": ("bearing_nodes", 2), "bearing_load": ("bearing_nodes",),
+              "eccentricity_ratio": ("bearing_nodes",), "attitude_angle_deg": ("bearing_nodes",), "state": (None,)}
+    labels = {"bearing_nodes": "nodes"}
+
     displacement: np.ndarray = quantity("m", None)
     bearing_force: np.ndarray = quantity("N", None)
     bearing_load: np.ndarray = quantity("N", None)
@@ -82,6 +92,8 @@ class UnbalanceResponse(_Nodes, StatusResult):
     (n_bearings, 2, 2) the linearised bearing coefficients used."""
 
     time_axis = None
+    shapes = {"displacement": ("nodes", 2), "stiffness": ("bearing_nodes", 2, 2), "damping": ("bearing_nodes", 2, 2)}
+    labels = {"bearing_nodes": "nodes"}
     displacement: np.ndarray = quantity("m", None)
     stiffness: np.ndarray = quantity("N/m", None)
     damping: np.ndarray = quantity("N s/m", None)
@@ -101,6 +113,8 @@ class PeriodicResponse(_Nodes, StatusResult):
     ``displacement`` [m] (n_t, n_nodes, 2) (``position(node)``), ``multipliers`` the dominant Floquet
     multipliers (stable inside the unit circle), ``error_estimate`` [smallest clearance] of the fixed point,
     ``periods`` integrated, ``state`` the system's state at angle 0 (a run's ``start=(0, state)``)."""
+
+    shapes = {"displacement": ("t", "nodes", 2), "state": (None,)}
 
     t: np.ndarray = quantity("s", None)
     displacement: np.ndarray = quantity("m", None)
