@@ -225,7 +225,13 @@ def test_hole_shrinking_to_zero_tends_to_the_ungrooved_film():
 
 
 def test_hole_smaller_than_a_cell_warns():
-    with pytest.warns(UserWarning, match=r"groove\.diameter = 0\.0005 m covers no cell centre"):
+    """48 x 8 cells of 6.54 x 5 mm: a 3 mm hole is modelled as whole cells (warned); a 0.5 mm hole, less than a
+    quarter of a cell, is refused (it would be modelled 13 times too wide)."""
+    with pytest.warns(UserWarning, match=r"groove\.diameter = 0\.003 m is smaller than a cell of the grid of 48 x 8 "
+                                         r"cells .*modelled as 1 whole cell"):
+        bearing(OilHole(90.0, 3e-3))
+    with pytest.raises(ValueError, match=r"groove\.diameter = 0\.0005 \[m\] is less than 0\.25 cell of the grid of "
+                                         r"48 x 8 cells .*allowed on this grid: \[0\.00164, 0\.08\] m"):
         bearing(OilHole(90.0, 5e-4))
 
 
