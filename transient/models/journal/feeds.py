@@ -189,10 +189,12 @@ MIN_CELL_FRACTION = 0.25
 
 def check_resolution(feeds, labels, grid_shape, length, radius, symmetric):
     """Each feed on the bearing's grid (``grid_shape`` (n_theta, n_axial) cells over the whole circumference and the
-    modelled length, the half with ``symmetric``; ``labels`` from :func:`feed_labels`): refused when it is narrower
-    than :data:`MIN_CELL_FRACTION` of a cell in a direction it is modelled by whole cells, or when a circumferential
-    groove leaves no land row between it and an end (the film there would have no cells); a hole smaller than a cell
-    warns (it is modelled as the cells whose centres it covers, or the nearest one)."""
+    modelled length, the half with ``symmetric``; ``labels`` from :func:`feed_labels`): a partial groove's length, a
+    hole's diameter or a circumferential groove's width less than :data:`MIN_CELL_FRACTION` of a cell is refused, and
+    so is a circumferential groove that leaves no land row between it and an end (the film there would have no
+    cells); an axial groove narrower than that fraction of a cell (modelled as one column, as a cell pinned at a
+    pressure is meant to be) and a hole smaller than a cell (modelled as the cells whose centres it covers, or the
+    nearest one) warn, naming the grid."""
     n_theta, n_axial = grid_shape
     cell_deg, cell_s = 360.0 / n_theta, 2.0 * np.pi * radius / n_theta
     cell_z = (0.5 * length if symmetric else length) / n_axial
@@ -202,8 +204,11 @@ def check_resolution(feeds, labels, grid_shape, length, radius, symmetric):
     for k, f in enumerate(feeds):
         name = feed_name(feeds, k)
         if isinstance(f, Groove):
-            _resolved(f"{name}.width_deg", f.width_deg, "deg", q * cell_deg, 90.0, grid, "n_theta",
-                      math.ceil(q * 360.0 / f.width_deg), " (an angle in radians? 0.52 rad is 30 deg)")
+            if f.width_deg < q * cell_deg:  # a groove of one column (e.g. a cell pinned at p_c) is a valid model
+                warnings.warn(f"{name}.width_deg = {f.width_deg!r} deg is less than {q:g} cell of {grid}: the groove is "
+                              f"modelled as one column {cell_deg:.3g} deg wide (a width in radians? 0.52 rad is 30 deg; "
+                              f"resolved from n_theta >= {math.ceil(q * 360.0 / f.width_deg)})", UserWarning,
+                              stacklevel=3)
             if f.length is not None:
                 _resolved(f"{name}.length", f.length, "m", q * cell_z, length, grid, "n_axial",
                           math.ceil(q * n_axial * cell_z / f.length))
