@@ -107,8 +107,9 @@ def test_partial_groove_shorter_than_a_quarter_cell_is_refused():
 
 
 def test_oil_hole_smaller_than_a_cell_warns_and_one_far_smaller_is_refused():
-    """The 24 x 4 grid's cells are 10.5 mm round and 5 mm along: a 4 mm hole off the mid-plane (the whole length then, 24 x 8
-    cells) at a cell centre covers that centre (it was silently one whole cell); a 1 mm hole is less than a quarter cell."""
+    """The 24 x 4 grid's cells are 10.5 mm round and 5 mm along: a 4 mm hole off the mid-plane (the whole length then,
+    24 x 8 cells) at a cell centre covers that centre (it was silently one whole cell); a 1 mm hole is less than a
+    quarter cell."""
     with pytest.warns(UserWarning, match=r"groove\.diameter = 0\.004 m is smaller than a cell of the grid of 24 x 8 "
                                          r"cells.*modelled as 1 whole cell"):
         JournalBearing(0.08, 0.04, 8e-5, 0.03, grid=(24, 4), groove=OilHole(0.0, 4e-3, axial_position=0.0025))
@@ -120,7 +121,8 @@ def test_circumferential_groove_covering_every_row_is_refused_at_construction():
     """39 mm of a 40 mm bearing covers all 4 rows of the half grid: no land is left (it used to end in "film solve did
     not converge ... residual 0"). 20 mm leaves two rows."""
     with pytest.raises(ValueError, match=r"groove\.width = 0\.039 \[m\] at axial_position = 0\.0 m "
-                                         r"covers cell rows 0 to 3 of the grid of 24 x 4 cells.*leaving no land row") as e:
+                                         r"covers cell rows 0 to 3 of the grid of 24 x 4 cells.*leaving no land row"
+                       ) as e:
         bearing(groove=CircumferentialGroove(0.039))
     one_line(e)
     assert np.isfinite(bearing(groove=CircumferentialGroove(0.02)).steady_state(0.5, 3000.0).load)

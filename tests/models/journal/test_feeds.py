@@ -1,8 +1,8 @@
 """Oil feeds of the journal bearing (partial and multiple axial grooves, oil holes, a circumferential groove) and the
 flows they set (transient/models/journal/feeds.py, flows.py).
 
-Expected values are closed forms, the recipe of the code before the feeds existed (computed in the same run), or equalities between two different
-set-ups of the same physics -- never the code's own output. Numbers measured on these grids: docs/validation.md.
+Expected values are closed forms, the recipe of the code before the feeds existed (computed in the same run), or
+equalities between two different set-ups of the same physics -- never the code's own output. Numbers measured on these grids: docs/validation.md.
 """
 
 import warnings
@@ -42,8 +42,9 @@ def single_groove_film(b, speed_rpm):
     fixed = np.tile(in_groove, z.n)
     grid = Grid2D(x, z, fixed=fixed, fixed_values=0.0)
     scales = film_scales(b, speed_rpm)
-    scales = scales._replace(u_supply=np.full(int(fixed.sum()), (b.supply_pressure - b.cavitation_pressure) / scales.p0),
-                             feed_cells=np.where(fixed, 0, -1), feed_edges=np.array([False]))
+    u_supply = (b.supply_pressure - b.cavitation_pressure) / scales.p0
+    scales = scales._replace(u_supply=np.full(int(fixed.sum()), u_supply), feed_cells=np.where(fixed, 0, -1),
+                             feed_edges=np.array([False]))
     kind = ReynoldsFilm if b.cavitation == "reynolds" else Film
     return kind(grid, scales, b.flow_law), fixed
 

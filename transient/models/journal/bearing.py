@@ -179,9 +179,9 @@ class JournalBearing:
         check_resolution(self.feeds, self.feed_cells, self.grid_shape, self.length, self.radius, self.symmetric)
 
     def _check_ring_supply(self):
-        """Circumferential grooves alone at the cavitation pressure (within 1 Pa), with the ends there too, supply no oil
-        to an Elrod film (no pressure drives oil out of a groove that runs all round): refused, as the steady film of a
-        bearing without feeds is (it has no unique steady state; the Newton iteration stalls)."""
+        """Circumferential grooves alone at the cavitation pressure (within 1 Pa), with the ends there too, supply no
+        oil to an Elrod film (no pressure drives oil out of a groove that runs all round): refused, as the steady film
+        of a bearing without feeds is (it has no unique steady state; the Newton iteration stalls)."""
         if (self.cavitation == "elrod" and self.feeds and self.ambient_pressure <= self.cavitation_pressure
                 and all(isinstance(f, CircumferentialGroove) for f in self.feeds)
                 and np.all(self.feed_pressures <= self.cavitation_pressure + 1.0)):

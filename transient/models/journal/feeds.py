@@ -205,10 +205,10 @@ def check_resolution(feeds, labels, grid_shape, length, radius, symmetric):
         name = feed_name(feeds, k)
         if isinstance(f, Groove):
             if f.width_deg < q * cell_deg:  # a groove of one column (e.g. a cell pinned at p_c) is a valid model
-                warnings.warn(f"{name}.width_deg = {f.width_deg!r} deg is less than {q:g} cell of {grid}: the groove is "
-                              f"modelled as one column {cell_deg:.3g} deg wide (a width in radians? 0.52 rad is 30 deg; "
-                              f"resolved from n_theta >= {math.ceil(q * 360.0 / f.width_deg)})", UserWarning,
-                              stacklevel=3)
+                warnings.warn(f"{name}.width_deg = {f.width_deg!r} deg is less than {q:g} cell of {grid}: the "
+                              f"groove is modelled as one column {cell_deg:.3g} deg wide (a width in radians? 0.52 rad "
+                              f"is 30 deg; resolved from n_theta >= {math.ceil(q * 360.0 / f.width_deg)})",
+                              UserWarning, stacklevel=3)
             if f.length is not None:
                 _resolved(f"{name}.length", f.length, "m", q * cell_z, length, grid, "n_axial",
                           math.ceil(q * n_axial * cell_z / f.length))

@@ -152,8 +152,8 @@ class PointContact:
         if per_b < MIN_NODES_PER_B or c.k / (self.y_nodes[1] - self.y_nodes[0]) < MIN_NODES_PER_B:
             raise ValueError(
                 f"grid = {grid!r} puts {per_b:.3g} x {c.k / (self.y_nodes[1] - self.y_nodes[0]):.3g} nodes per Hertz "
-                f"semi-axes b x a over the {'given' if given else 'default'} domain = {tuple(round(v, 3) for v in self.domain)} "
-                f"b; allowed: at least {MIN_NODES_PER_B} (more nodes or a smaller domain). b = {c.b:.3g} m and a = "
+                f"semi-axes b x a over the {'given' if given else 'default'} domain = "
+                f"{tuple(round(v, 3) for v in self.domain)} b; allowed: at least {MIN_NODES_PER_B} (more nodes or a smaller domain). b = {c.b:.3g} m and a = "
                 f"{c.a:.3g} m from radius_x = {self.radius_x!r} m, radius_y = {self.radius_y!r} m, load = "
                 f"{self.load!r} N, modulus = {self.modulus!r} Pa" + ("" if given else "; the default domain's inlet "
                 f"from Hamrock-Dowson's critical meniscus of speed = {self.speed!r} m/s, viscosity = {viscosity!r} "
