@@ -93,7 +93,7 @@ def test_groove_width_in_radians_warns_naming_the_grid():
     at the supply pressure (the Raimondi-Boyd and short-bearing validations)."""
     with pytest.warns(UserWarning, match=r"groove\.width_deg = 0\.52 deg is less than 0\.25 cell of the grid of 151 x "
                                          r"21 cells \(2\.38 deg .*modelled as one column 2\.38 deg wide \(a width in "
-                                         r"radians\? .*n_theta >= 174\)"):
+                                         r"radians\? .*resolved by a finer grid, n_theta >= 174\)"):
         JournalBearing(0.08, 0.04, 8e-5, 0.03, groove=Groove(0.0, 0.52))
     with warnings.catch_warnings():
         warnings.simplefilter("error")

@@ -185,6 +185,8 @@ def check_feeds(feeds, length, radius, supply_pressure, cavitation_pressure):
 #: a feed narrower than this fraction of a cell is refused: the grid models it by whole cells, so at least this many
 #: times too wide (a width in radians given as degrees is 57 times too narrow)
 MIN_CELL_FRACTION = 0.25
+#: the largest grid a bearing takes (JournalBearing's grid check), for the advice on a finer one
+N_THETA_MAX, N_AXIAL_MAX = 20000, 5000
 
 
 def check_resolution(feeds, labels, grid_shape, length, radius, symmetric):
@@ -207,22 +209,22 @@ def check_resolution(feeds, labels, grid_shape, length, radius, symmetric):
             if f.width_deg < q * cell_deg:  # a groove of one column (e.g. a cell pinned at p_c) is a valid model
                 warnings.warn(f"{name}.width_deg = {f.width_deg!r} deg is less than {q:g} cell of {grid}: the "
                               f"groove is modelled as one column {cell_deg:.3g} deg wide (a width in radians? 0.52 rad "
-                              f"is 30 deg; resolved from n_theta >= {math.ceil(q * 360.0 / f.width_deg)})",
+                              f"is 30 deg; resolved by {_finer('n_theta', q * 360.0 / f.width_deg, N_THETA_MAX)})",
                               UserWarning, stacklevel=3)
             if f.length is not None:
-                _resolved(f"{name}.length", f.length, "m", q * cell_z, length, grid, "n_axial",
-                          math.ceil(q * n_axial * cell_z / f.length))
+                _resolved(f"{name}.length", f.length, "m", q * cell_z, length, grid,
+                          _finer("n_axial", q * n_axial * cell_z / f.length, N_AXIAL_MAX))
         elif isinstance(f, OilHole):
             cell = max(cell_s, cell_z)
             _resolved(f"{name}.diameter", f.diameter, "m", q * cell, min(length, np.pi * radius), grid,
-                      "n_theta and n_axial", None)
+                      "a finer grid (more cells, n_theta and n_axial)")
             if f.diameter < cell:
                 warnings.warn(f"{name}.diameter = {f.diameter:g} m is smaller than a cell of {grid}: the hole is "
                               f"modelled as {int(np.sum(labels == k))} whole cell(s) (refine the grid to resolve it)",
                               UserWarning, stacklevel=3)
         else:
-            _resolved(f"{name}.width", f.width, "m", q * cell_z, length, grid, "n_axial",
-                      math.ceil(q * n_axial * cell_z / f.width))
+            _resolved(f"{name}.width", f.width, "m", q * cell_z, length, grid,
+                      _finer("n_axial", q * n_axial * cell_z / f.width, N_AXIAL_MAX))
             rows = np.flatnonzero((np.asarray(labels).reshape(n_axial, n_theta) == k).all(axis=1))
             ends = [rows.max() < n_axial - 1] + ([] if symmetric else [rows.min() > 0])
             if not all(ends):
@@ -231,11 +233,15 @@ def check_resolution(feeds, labels, grid_shape, length, radius, symmetric):
                                  "and an end; allowed: a narrower groove, or more rows (n_axial)")
 
 
-def _resolved(name, value, unit, low, high, grid, count, finer, why=""):
+def _finer(count, needed, most) -> str:
+    """Advice: the cell count ``count`` that resolves a feed (``needed`` cells), or that no grid does."""
+    return f"a finer grid, {count} >= {math.ceil(needed)}" if needed <= most else f"no grid ({count} at most {most})"
+
+
+def _resolved(name, value, unit, low, high, grid, finer):
     if value < low:
-        more = f", or a finer grid ({count} >= {finer})" if finer is not None else f", or a finer grid ({count})"
         raise ValueError(f"{name} = {value!r} [{unit}] is less than {MIN_CELL_FRACTION:g} cell of {grid}; "
-                         f"allowed on this grid: [{low:.3g}, {high:.3g}] {unit}{more}{why}")
+                         f"allowed on this grid: [{low:.3g}, {high:.3g}] {unit}; resolved by {finer}")
 
 
 def feed_labels(feeds, phi, z, radius) -> np.ndarray:
