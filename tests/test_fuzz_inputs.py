@@ -1,5 +1,6 @@
 """Property-based fuzzing of the public constructors and run methods (hypothesis): every input gets a named
-error (the parameter's name in a one-line ValueError/TypeError) or a correct, finite result; no hang, no crash.
+error (the parameter's name in a one-line ValueError/TypeError; for the rotor, the rotor on bearings, the oil feeds
+and the point contact a ValueError) or a correct, finite result; no hang, no crash.
 
 Each case replaces ONE argument of a valid call by a hostile value (NaN, +-inf, zero, negative, huge, tiny,
 strings, booleans, None, containers, non-integers); the counts of named errors and finite results are
