@@ -1,5 +1,6 @@
 """Property-based fuzzing of the public constructors and run methods (hypothesis): every input gets a named
-error (the parameter's name in a one-line ValueError/TypeError) or a correct, finite result; no hang, no crash.
+error (the parameter's name in a one-line ValueError/TypeError; for the rotor, the rotor on bearings, the oil feeds
+and the point contact a ValueError) or a correct, finite result; no hang, no crash.
 
 Each case replaces ONE argument of a valid call by a hostile value (NaN, +-inf, zero, negative, huge, tiny,
 strings, booleans, None, containers, non-integers); the counts of named errors and finite results are
@@ -12,15 +13,18 @@ from collections import Counter
 
 import numpy as np
 import pytest
-from hypothesis import HealthCheck, assume, given, settings
+from hypothesis import HealthCheck, assume, example, given, settings
 from hypothesis import strategies as st
 
 from transient import AsperityContact, DiscreteDensity, RoughSurface, ThrustPad, steel_asperity_contact
 from transient.models.ball import ThrustBallBearing
-from transient.models.journal import Groove, JournalBearing, JournalOrbit
+from transient.models.journal import CircumferentialGroove, Groove, JournalBearing, JournalOrbit, OilHole
+from transient.models.point import PointContact
+from transient.models.rotor import Rotor, RotorBearingSystem
 from transient.physics.layered import BoundaryLayers, Gecim, LayeredFilm
 
 COUNTS = Counter()
+VALID = Counter()  # valid inputs whose results a target checked, by target
 
 hostile = st.one_of(
     st.floats(allow_nan=True, allow_infinity=True), st.integers(-10**6, 10**6),
@@ -144,7 +148,7 @@ def test_boundary_layers(key, value):
 
 JOURNAL = dict(diameter=0.08, length=0.04, clearance=8e-5, viscosity=0.03, bulk_modulus=1e9, supply_pressure=101325.0,
                cavitation_pressure=0.0, ambient_pressure=0.0, switch_content_width=1e-2, grid=(24, 4), symmetric=True,
-               groove=Groove(), cavitation="elrod")
+               groove=Groove(), cavitation="elrod", switch_width=None)
 
 
 @SETTINGS
@@ -277,14 +281,159 @@ def test_tapered_roller(key, value):
              lambda r: _finite(r.half_length, r.length, r.profile_start))
 
 
+ROLLER_CONTACT = dict(U=1e-11, G=2500.0, W=2e-5, modulus=220e9, speed=1.0, grid=("clustered", 24, 24))
+
+
 @FAST
 @given(key=st.sampled_from(["U", "G", "W", "modulus", "speed", "grid"]), value=hostile)
+@example(key="U", value=2e-11)  # valid inputs: the check below runs on a built contact every time
+@example(key="W", value=5e-5)
+@example(key="speed", value=2.0)
 def test_roller_contact(key, value):
     from transient import RollerContact, TaperedRoller
     from transient.params import park
 
-    kw = dict(park.DIMENSIONLESS, roller=TaperedRoller(**park.ROLLER), grid=("clustered", 24, 12)) | {key: value}
-    _outcome(key, lambda: RollerContact.from_dimensionless(**kw), lambda c: _finite(c.load, c.rheology.viscosity))
+    kw = dict(ROLLER_CONTACT, roller=TaperedRoller(**park.ROLLER)) | {key: value}
+
+    def check(c):
+        """The contact carries the groups it was built from (load W E' R_m^2, viscosity U E' R_m / speed)."""
+        _finite(c.load, c.lubricant.viscosity, c.lubricant.pressure_viscosity)
+        assert c.U == pytest.approx(kw["U"], rel=1e-12) and c.W == pytest.approx(kw["W"], rel=1e-12)
+        assert c.lubricant.pressure_viscosity * c.modulus == pytest.approx(kw["G"], rel=1e-12)
+        VALID["roller contact"] += 1
+
+    _outcome(key, lambda: RollerContact.from_dimensionless(**kw), check)
+
+
+def test_roller_target_checks_a_valid_contact():
+    """The explicit examples above build valid contacts, so the roller target's check runs (and can fail)."""
+    before = VALID["roller contact"]
+    test_roller_contact()
+    assert VALID["roller contact"] >= before + 3
+
+
+# --------------------------------------------------------------------------------------------------
+# the rotor, the rotor on bearings, the oil feeds and the EHL point contact: every bad input a named ValueError
+# --------------------------------------------------------------------------------------------------
+
+def _named_value_error(name, call, check=None):
+    """As :func:`_outcome`, but the error must be a ``ValueError`` (naming ``name``): these constructors check every
+    argument with the vocabulary of transient.checks."""
+    try:
+        r = call()
+    except ValueError as e:
+        msg = str(e)
+        assert name.split(".")[-1].split("[")[0] in msg, f"error does not name {name!r}: {msg}"
+        assert "\n" not in msg.strip(), f"multi-line error for {name!r}: {msg}"
+        COUNTS["named error"] += 1
+        return None
+    if check is not None:
+        check(r)
+    COUNTS["finite result"] += 1
+    return r
+
+
+def _rigid_rotor():
+    return Rotor.rigid(20.0, 0.5, 0.3)
+
+
+ROTOR_KEYS = ["mass", "stiffness", "damping", "gyroscopic", "nodes", "dofs", "basis", "gravity_load"]
+
+
+@FAST
+@given(key=st.sampled_from(ROTOR_KEYS), value=hostile)
+@example(key="damping", value=None)  # valid
+@example(key="nodes", value=[3, 7])
+def test_rotor(key, value):
+    r = _rigid_rotor()
+    kw = dict(mass=r.mass, stiffness=r.stiffness, nodes=[0, 1]) | {key: value}
+
+    def check(rotor):
+        assert rotor.total_mass == pytest.approx(20.0, rel=1e-12)  # the rigid rotor's mass, whatever the labels
+
+    _named_value_error(key, lambda: Rotor(**kw), check)
+
+
+def _bearing():
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        return JournalBearing(**JOURNAL)
+
+
+@FAST
+@given(key=st.sampled_from(["rotor", "bearings", "unbalance", "gravity"]), value=hostile)
+@example(key="gravity", value=(0.0, 9.81))  # valid
+@example(key="unbalance", value=5)  # was "'int' object is not iterable"
+def test_rotor_bearing_system(key, value):
+    b = _bearing()
+    kw = dict(rotor=_rigid_rotor(), bearings={0: b, 1: b}, unbalance=[(0, 1e-4, 0.0)], gravity=9.81) | {key: value}
+
+    def check(s):
+        """The shaft on rigid supports: the bearing loads carry the weight."""
+        W = np.array(list(s.static_loads().values())).sum(axis=0)
+        np.testing.assert_allclose(W, 20.0 * s.gravity_vector, rtol=1e-9, atol=1e-9 * 20.0 * 9.81)
+
+    _named_value_error(key, lambda: RotorBearingSystem(**kw), check)
+
+
+@FAST
+@given(index=st.sampled_from([0, 1, 2]), value=hostile)
+@example(index=1, value=20.0)  # 20 kg m on a 20 kg rotor: refused as implausible
+def test_rotor_unbalance_items(index, value):
+    b = _bearing()
+    item = [0, 1e-4, 0.0]
+    item[index] = value
+    _named_value_error("unbalance", lambda: RotorBearingSystem(_rigid_rotor(), {0: b, 1: b}, unbalance=[tuple(item)]))
+
+
+FEED_FIELDS = [(Groove, "angle_deg"), (Groove, "width_deg"), (Groove, "length"), (Groove, "pressure"),
+               (OilHole, "angle_deg"), (OilHole, "diameter"), (OilHole, "axial_position"), (OilHole, "pressure"),
+               (CircumferentialGroove, "width"), (CircumferentialGroove, "axial_position"),
+               (CircumferentialGroove, "pressure")]
+FEED_VALID = {OilHole: dict(diameter=0.012), Groove: {}, CircumferentialGroove: {}}  # a hole of at least a cell
+
+
+@FAST
+@given(field=st.sampled_from(FEED_FIELDS), value=hostile)
+@example(field=(Groove, "width_deg"), value=0.52)  # a width in radians: warned (one column of a 15-deg cell)
+@example(field=(CircumferentialGroove, "width"), value=0.039)  # covers every row of the 40 mm bearing's half
+@example(field=(CircumferentialGroove, "pressure"), value=0.0)  # at the cavitation pressure: supplies nothing
+@example(field=(Groove, "length"), value=0.02)  # valid
+def test_oil_feeds(field, value):
+    kind, key = field
+
+    def run():
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")  # a hole smaller than a cell warns
+            feed = kind(**(FEED_VALID[kind] | {key: value}))
+            return JournalBearing(**dict(JOURNAL, groove=feed)).steady_state(0.5, 3000.0)
+
+    _named_value_error(key, run, lambda s: _finite(s.force, s.supply_flow, s.side_leakage, s.pressure))
+
+
+@FAST
+@given(value=hostile)
+def test_groove_argument(value):
+    _named_value_error("groove", lambda: JournalBearing(**dict(JOURNAL, groove=value)))
+
+
+POINT = dict(radius_x=0.01, radius_y=None, load=20.0, speed=1.0, viscosity=0.04, pressure_viscosity=2e-8,
+             modulus=2.2e11, density="dowson-higginson", viscosity_law="barus", inlet_film=None, grid=(25, 25),
+             domain=None, dh_constants=(0.58e-9, 1.68e-9), upwind="first")
+
+
+@FAST
+@given(key=st.sampled_from(sorted(POINT)), value=hostile)
+@example(key="domain", value=5)  # was "'int' object is not subscriptable"
+@example(key="grid", value=(128, 129))  # an even node count: the dense Newton matrix
+@example(key="radius_y", value=0.03)  # valid
+def test_point_contact(key, value):
+    def check(c):
+        _finite(c.hd_central, c.hd_minimum, c.x_nodes, c.y_nodes)
+        assert c.hd_central >= 0 and c.x_nodes.size == c.grid[0]  # 0 for an isoviscous oil (valid: alpha = 0)
+        assert np.min(np.abs(c.x_nodes)) == 0.0  # a node at the centre
+
+    _named_value_error(key, lambda: PointContact(**(POINT | {key: value})), check)
 
 
 @FAST

@@ -213,3 +213,42 @@ def check_memory(what: str, parts: dict, advice: str) -> float:
         raise MemoryLimitError(f"{what} would need about {_gb(total)} of memory ({shown}), more than "
                                f"{MEMORY_SHARE:.0%} of this machine's {_gb(machine_memory())}; {advice}")
     return total
+
+
+# --------------------------------------------------------------------------------------------------
+# objects and short vectors of numbers (constructors' structured arguments)
+# --------------------------------------------------------------------------------------------------
+
+class ParameterTypeError(ValueError, TypeError):
+    """A parameter of the wrong kind (e.g. a number where a bearing is expected): a ``ValueError`` like every bad
+    input, and a ``TypeError`` for callers that catch that."""
+
+
+def check_instance(name, value, types, allowed: str):
+    """``value`` if it is an instance of ``types``, else a one-line :class:`ParameterTypeError` naming the parameter,
+    its value and ``allowed`` (what it must be, in words)."""
+    if not isinstance(value, types):
+        raise ParameterTypeError(f"{name} = {short_repr(value)} ({type(value).__name__}); allowed: {allowed}")
+    return value
+
+
+def check_items(name, value, allowed: str, length=None) -> tuple:
+    """``value`` as a tuple if it is a sequence (list, tuple, 1-D array; not a string, a mapping or a set) of
+    ``length`` items (any number if None), else a one-line ``ValueError`` naming the parameter and ``allowed``."""
+    if isinstance(value, np.ndarray):
+        items = tuple(value) if value.ndim == 1 else None
+    elif isinstance(value, (list, tuple)):
+        items = tuple(value)
+    else:
+        items = None
+    if items is None or (length is not None and len(items) != length):
+        count = "" if items is None else f" ({len(items)} items)"
+        raise ValueError(f"{name} = {short_repr(value)}{count}; allowed: {allowed}")
+    return items
+
+
+def check_vector(name, value, unit, length, low=-math.inf, high=math.inf, *, why="") -> tuple:
+    """A sequence of ``length`` finite numbers, each in [low, high] (:func:`check_items`, :func:`check_range`);
+    returns them as a tuple of floats."""
+    items = check_items(name, value, f"{length} numbers [{unit}]" + (f" {why}" if why else ""), length)
+    return tuple(check_range(f"{name}[{k}]", v, unit, low, high, why=why) for k, v in enumerate(items))

@@ -18,7 +18,8 @@ from scipy.optimize import brentq
 
 from transient.checks import check_bool, check_int, check_positive, check_range
 from transient.fv.grid import Axis, Grid2D, interpolate_cells
-from transient.models.journal.feeds import Groove, as_feeds, check_feeds, feed_labels
+from transient.models.journal.feeds import (CircumferentialGroove, Groove, as_feeds, check_feeds, check_resolution,
+                                            feed_labels, feed_name)
 from transient.models.journal.film import Film
 from transient.models.journal.gecim_film import flow_law
 from transient.physics.layered import BoundaryLayers, Gecim, Newtonian
@@ -148,7 +149,9 @@ class JournalBearing:
                                             why="(absolute; at least cavitation_pressure)")
         self.supply_pressure = check_range("supply_pressure", supply_pressure, "Pa", cavitation_pressure, 1e9,
                                            why="(absolute; at least cavitation_pressure)")
-        self.switch_width = None if switch_width is None else check_positive("switch_width", switch_width, "Pa")
+        self.switch_width = None if switch_width is None else check_range(
+            "switch_width", switch_width, "Pa", 1e-6, 1e9, why="(narrower, the switch is the sharp Elrod switch to "
+            "rounding; wider than the largest pressure a bearing takes, it smears the cavitated zone away)")
         self.switch_content_width = check_range("switch_content_width", switch_content_width, "-", 0.0, 0.1,
                                                 low_open=True, why="(a content deficit; above 0.1 the switch "
                                                 "smears the cavitated zone)")
@@ -157,6 +160,7 @@ class JournalBearing:
         self.feed_pressures = check_feeds(self.feeds, self.length, 0.5 * self.diameter, self.supply_pressure,
                                           self.cavitation_pressure)
         self.unsupplied = cavitation == "elrod" and not self.feeds and self.ambient_pressure <= self.cavitation_pressure
+        self._check_ring_supply()
         if self.unsupplied:
             warnings.warn("JournalBearing: the Elrod film has no oil supply (groove=None and ambient_pressure <= "
                           "cavitation_pressure: nothing drives oil into the film, which starves); add a Groove, "
@@ -172,6 +176,21 @@ class JournalBearing:
         self.grid_shape = (n_theta, n_axial)
         self.radius = 0.5 * self.diameter
         self._build_grid()
+        check_resolution(self.feeds, self.feed_cells, self.grid_shape, self.length, self.radius, self.symmetric)
+
+    def _check_ring_supply(self):
+        """Circumferential grooves alone at the cavitation pressure (within 1 Pa), with the ends there too, supply no
+        oil to an Elrod film (no pressure drives oil out of a groove that runs all round): refused, as the steady film
+        of a bearing without feeds is (it has no unique steady state; the Newton iteration stalls)."""
+        if (self.cavitation == "elrod" and self.feeds and self.ambient_pressure <= self.cavitation_pressure
+                and all(isinstance(f, CircumferentialGroove) for f in self.feeds)
+                and np.all(self.feed_pressures <= self.cavitation_pressure + 1.0)):
+            name = feed_name(self.feeds, 0) + ".pressure" if self.feeds[0].pressure is not None else "supply_pressure"
+            raise ValueError(f"{name} = {float(self.feed_pressures[0])!r} [Pa] with ambient_pressure = "
+                             f"{self.ambient_pressure!r} Pa: a circumferential groove at the cavitation pressure "
+                             "feeds no oil into an Elrod film whose ends are at it too; allowed: a feed pressure more "
+                             f"than 1 Pa above cavitation_pressure = {self.cavitation_pressure:g} Pa, an ambient "
+                             "pressure above it, or an axial groove or hole")
 
     def __repr__(self):
         return (f"JournalBearing(diameter={self.diameter:g} m, length={self.length:g} m, clearance={self.clearance:g} m, "

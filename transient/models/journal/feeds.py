@@ -15,12 +15,13 @@ Angles are from the top of the bearing (opposite the load) in the direction of r
 
 from __future__ import annotations
 
+import math
 import warnings
 from dataclasses import dataclass
 
 import numpy as np
 
-from transient.checks import check_range
+from transient.checks import ParameterTypeError, check_range
 
 
 def _pressure(name, value):
@@ -102,12 +103,7 @@ class OilHole:
         s = radius * np.angle(np.exp(1j * (phi - np.radians(self.angle_deg))))
         r = np.hypot(s, z - self.axial_position)
         inside = r <= 0.5 * self.diameter * (1.0 + 1e-12)
-        if inside.any():
-            return inside
-        warnings.warn(f"{name}.diameter = {self.diameter:g} m covers no cell centre: the hole is smaller than a cell "
-                      "of this grid and is modelled as the nearest cell (refine the grid to resolve it)", UserWarning,
-                      stacklevel=5)
-        return np.arange(r.size) == np.argmin(r)
+        return inside if inside.any() else np.arange(r.size) == np.argmin(r)
 
     def area(self, length, radius):
         return 0.25 * np.pi * self.diameter ** 2
@@ -158,12 +154,13 @@ def as_feeds(groove) -> tuple:
         return ()
     feeds = (groove,) if isinstance(groove, FEED_TYPES) else groove
     if isinstance(feeds, (str, bytes)) or not hasattr(feeds, "__iter__"):
-        raise TypeError(f"groove must be a Groove, OilHole, CircumferentialGroove, a sequence of them or None, got "
-                        f"{type(groove).__name__}")
+        raise ParameterTypeError(f"groove must be a Groove, OilHole, CircumferentialGroove, a sequence of them or "
+                                 f"None, got {type(groove).__name__}")
     feeds = tuple(feeds)
     for k, f in enumerate(feeds):
         if not isinstance(f, FEED_TYPES):
-            raise TypeError(f"groove[{k}] must be a Groove, OilHole or CircumferentialGroove, got {type(f).__name__}")
+            raise ParameterTypeError(f"groove[{k}] must be a Groove, OilHole or CircumferentialGroove, got "
+                                     f"{type(f).__name__}")
     return feeds
 
 
@@ -183,6 +180,68 @@ def check_feeds(feeds, length, radius, supply_pressure, cavitation_pressure):
             f"cavitation_pressure = {cavitation_pressure:g} Pa)")
         pressures.append(p)
     return np.array(pressures, dtype=float)
+
+
+#: a feed narrower than this fraction of a cell is refused: the grid models it by whole cells, so at least this many
+#: times too wide (a width in radians given as degrees is 57 times too narrow)
+MIN_CELL_FRACTION = 0.25
+#: the largest grid a bearing takes (JournalBearing's grid check), for the advice on a finer one
+N_THETA_MAX, N_AXIAL_MAX = 20000, 5000
+
+
+def check_resolution(feeds, labels, grid_shape, length, radius, symmetric):
+    """Each feed on the bearing's grid (``grid_shape`` (n_theta, n_axial) cells over the whole circumference and the
+    modelled length, the half with ``symmetric``; ``labels`` from :func:`feed_labels`): a partial groove's length, a
+    hole's diameter or a circumferential groove's width less than :data:`MIN_CELL_FRACTION` of a cell is refused, and
+    so is a circumferential groove that leaves no land row between it and an end (the film there would have no
+    cells); an axial groove narrower than that fraction of a cell (modelled as one column, as a cell pinned at a
+    pressure is meant to be) and a hole smaller than a cell (modelled as the cells whose centres it covers, or the
+    nearest one) warn, naming the grid."""
+    n_theta, n_axial = grid_shape
+    cell_deg, cell_s = 360.0 / n_theta, 2.0 * np.pi * radius / n_theta
+    cell_z = (0.5 * length if symmetric else length) / n_axial
+    grid = (f"the grid of {n_theta} x {n_axial} cells ({cell_deg:.3g} deg = {cell_s:.3g} m round, {cell_z:.3g} m "
+            f"along{' the half length' if symmetric else ''})")
+    q = MIN_CELL_FRACTION
+    for k, f in enumerate(feeds):
+        name = feed_name(feeds, k)
+        if isinstance(f, Groove):
+            if f.width_deg < q * cell_deg:  # a groove of one column (e.g. a cell pinned at p_c) is a valid model
+                warnings.warn(f"{name}.width_deg = {f.width_deg!r} deg is less than {q:g} cell of {grid}: the "
+                              f"groove is modelled as one column {cell_deg:.3g} deg wide (a width in radians? 0.52 rad "
+                              f"is 30 deg; resolved by {_finer('n_theta', q * 360.0 / f.width_deg, N_THETA_MAX)})",
+                              UserWarning, stacklevel=3)
+            if f.length is not None:
+                _resolved(f"{name}.length", f.length, "m", q * cell_z, length, grid,
+                          _finer("n_axial", q * n_axial * cell_z / f.length, N_AXIAL_MAX))
+        elif isinstance(f, OilHole):
+            cell = max(cell_s, cell_z)
+            _resolved(f"{name}.diameter", f.diameter, "m", q * cell, min(length, np.pi * radius), grid,
+                      "a finer grid (more cells, n_theta and n_axial)")
+            if f.diameter < cell:
+                warnings.warn(f"{name}.diameter = {f.diameter:g} m is smaller than a cell of {grid}: the hole is "
+                              f"modelled as {int(np.sum(labels == k))} whole cell(s) (refine the grid to resolve it)",
+                              UserWarning, stacklevel=3)
+        else:
+            _resolved(f"{name}.width", f.width, "m", q * cell_z, length, grid,
+                      _finer("n_axial", q * n_axial * cell_z / f.width, N_AXIAL_MAX))
+            rows = np.flatnonzero((np.asarray(labels).reshape(n_axial, n_theta) == k).all(axis=1))
+            ends = [rows.max() < n_axial - 1] + ([] if symmetric else [rows.min() > 0])
+            if not all(ends):
+                raise ValueError(f"{name}.width = {f.width!r} [m] at axial_position = {f.axial_position!r} m covers "
+                                 f"cell rows {rows.min()} to {rows.max()} of {grid}, leaving no land row between it "
+                                 "and an end; allowed: a narrower groove, or more rows (n_axial)")
+
+
+def _finer(count, needed, most) -> str:
+    """Advice: the cell count ``count`` that resolves a feed (``needed`` cells), or that no grid does."""
+    return f"a finer grid, {count} >= {math.ceil(needed)}" if needed <= most else f"no grid ({count} at most {most})"
+
+
+def _resolved(name, value, unit, low, high, grid, finer):
+    if value < low:
+        raise ValueError(f"{name} = {value!r} [{unit}] is less than {MIN_CELL_FRACTION:g} cell of {grid}; "
+                         f"allowed on this grid: [{low:.3g}, {high:.3g}] {unit}; resolved by {finer}")
 
 
 def feed_labels(feeds, phi, z, radius) -> np.ndarray:

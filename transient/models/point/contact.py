@@ -18,13 +18,14 @@ from __future__ import annotations
 import math
 import time
 import warnings
+from types import SimpleNamespace
 
 import numpy as np
 
-from transient.checks import check_choice, check_int, check_positive, check_range
-from transient.models.point.fbns import fbns
+from transient.checks import check_choice, check_int, check_items, check_positive, check_range, check_vector
+from transient.models.point.fbns import DENSE_MAX_UNKNOWNS, fbns
 from transient.models.point.ehl_problem import PointFilm
-from transient.models.point.krylov import inject
+from transient.models.point.krylov import coarsening_factor, inject
 from transient.models.point.results import PointDry, PointSteady, PointTransient
 from transient.models.point.step_solve import ATOL_PER_RTOL, FilmStep, steady_by_time_steps
 from transient.models.roller.dry import edge_positions, polonsky_keer
@@ -49,6 +50,34 @@ UPWIND = {"first": 0, "second": 1, "limited": 2}
 #: :meth:`PointContact.steady` calls its films grid-settled (at first order the change equals the fine grid's own
 #: error, at second order three times it)
 GRID_SETTLED_CHANGE = 0.05
+
+
+def check_fast_path(nx, ny):
+    """Refuse a grid whose Newton steps would take the dense LU of the reduced system above its size: the iterative
+    solver (:class:`~transient.models.point.krylov.KrylovSolver`) needs a grid that coarsens by a power of two
+    (``nx - 1`` and ``(ny - 1)/2`` divisible by it) to at most
+    :data:`~transient.models.point.krylov.COARSE_MAX_UNKNOWNS` unknowns; otherwise every Newton step is an
+    O(N^3) dense LU of (N + 1)^2 numbers. The message names the nearest grids that do coarsen."""
+    grid = SimpleNamespace(nx=nx, m=(ny + 1) // 2)
+    n = (grid.m - 1) * (nx - 2)  # nodal unknowns of the half grid (PointFilm.n)
+    if n <= DENSE_MAX_UNKNOWNS or coarsening_factor(grid) > 1:
+        return
+    nearest = _coarsening_grid(nx, ny)
+    raise ValueError(f"grid = ({nx}, {ny}) nodes does not coarsen by a power of two (nx - 1 = {nx - 1} and (ny - 1)/2 "
+                     f"= {(ny - 1) // 2} must share one), so its {n} unknowns would take a dense LU of "
+                     f"{8 * (n + 1) ** 2 / 1e9:.3g} GB and O(N^3) work per Newton step; allowed: a grid that coarsens "
+                     f"(nodes 2^k j + 1), e.g. grid = {nearest} (or at most {DENSE_MAX_UNKNOWNS} unknowns)")
+
+
+def _coarsening_grid(nx, ny):
+    """The grid of fewest extra nodes at or above (nx, ny) that :func:`check_fast_path` accepts."""
+    for k in range(1, 12):
+        f = 2 ** k
+        gx = -(-(nx - 1) // f) * f + 1
+        gm = -(-((ny + 1) // 2 - 1) // f) * f + 1
+        if coarsening_factor(SimpleNamespace(nx=gx, m=gm)) > 1:
+            return gx, 2 * gm - 1
+    return (2 ** 7 + 1, 2 ** 7 + 1)
 
 
 class PointContact:
@@ -80,7 +109,8 @@ class PointContact:
         check_choice("density", density, ("dowson-higginson", "incompressible"))
         self.lubricant = Lubricant(viscosity=check_positive("viscosity", viscosity, "Pa s"),
                                    pressure_viscosity=pressure_viscosity, viscosity_law=viscosity_law,
-                                   density=density, dh_constants=tuple(dh_constants))
+                                   density=density, dh_constants=check_vector("dh_constants", dh_constants, "1/Pa", 2,
+                                                                              why="(Dowson-Higginson's c1, c2)"))
         self.hertz = hertz_contact(self.load, self.radius_x, self.radius_y, self.modulus)
         c = self.hertz
         self.U, self.G, self.W = hd.dimensionless_groups(viscosity, self.speed, pressure_viscosity, self.load,
@@ -94,17 +124,22 @@ class PointContact:
                         why=f"(at least 5 % of the flooded central film {self.hd_central:.3g} m (Hamrock-Dowson): "
                             "a thinner layer cannot carry the load as a film)")
         self.inlet_film = inlet_film
+        given = domain is not None
         if domain is None:
             domain = (-max(4.5, 1.25 * self.m_c), 1.5, 1.0 + 1.5 * c.k)
+            if not domain[0] >= -1e4:
+                raise ValueError(f"the default domain's inlet, 1.25 x Hamrock-Dowson's critical meniscus = "
+                                 f"{-domain[0]:.3g} b upstream, is out of range; allowed: at most 1e4 b (set by load = "
+                                 f"{self.load!r} N, speed = {self.speed!r} m/s, viscosity = {viscosity!r} Pa s, "
+                                 f"pressure_viscosity = {pressure_viscosity!r} 1/Pa, radius_x = {self.radius_x!r} m, "
+                                 f"modulus = {self.modulus!r} Pa: check their units)")
+        domain = check_vector("domain", domain, "b", 3, why="(x_in, x_out, y_half)")
         x_in = check_range("domain[0] (inlet)", domain[0], "b", -1e4, -1.5)
         x_out = check_range("domain[1] (outlet)", domain[1], "b", 1.2, 1e4)
         y_half = check_range("domain[2] (half width)", domain[2], "b", 1.2 * c.k, 1e4,
                              why=f"(beyond the Hertz semi-axis a = {c.k:.3g} b)")
         self.domain = (x_in, x_out, y_half)
-        try:
-            nx, ny = grid
-        except (TypeError, ValueError):
-            raise ValueError(f"grid = {grid!r}: (nx, ny) node counts") from None
+        nx, ny = check_items("grid", grid, "(nx, ny) node counts", 2)
         nx = check_int("grid[0]", nx, "nodes", 17, 2049)
         ny = check_int("grid[1]", ny, "nodes", 17, 2049)
         if ny % 2 == 0:
@@ -115,9 +150,15 @@ class PointContact:
         self.y_nodes = np.linspace(-y_half, y_half, ny)
         per_b = 1.0 / dx
         if per_b < MIN_NODES_PER_B or c.k / (self.y_nodes[1] - self.y_nodes[0]) < MIN_NODES_PER_B:
-            raise ValueError(f"grid = {grid!r} puts {per_b:.3g} x {c.k / (self.y_nodes[1] - self.y_nodes[0]):.3g} "
-                             f"nodes per Hertz semi-axes b x a; allowed: at least {MIN_NODES_PER_B} (more nodes or "
-                             "a smaller domain)")
+            raise ValueError(
+                f"grid = {grid!r} puts {per_b:.3g} x {c.k / (self.y_nodes[1] - self.y_nodes[0]):.3g} nodes per Hertz "
+                f"semi-axes b x a over the {'given' if given else 'default'} domain = "
+                f"{tuple(round(v, 3) for v in self.domain)} b; allowed: at least {MIN_NODES_PER_B} (more nodes or a smaller domain). b = {c.b:.3g} m and a = "
+                f"{c.a:.3g} m from radius_x = {self.radius_x!r} m, radius_y = {self.radius_y!r} m, load = "
+                f"{self.load!r} N, modulus = {self.modulus!r} Pa" + ("" if given else "; the default domain's inlet "
+                f"from Hamrock-Dowson's critical meniscus of speed = {self.speed!r} m/s, viscosity = {viscosity!r} "
+                f"Pa s, pressure_viscosity = {pressure_viscosity!r} 1/Pa") + ": check their units")
+        check_fast_path(nx, ny)
         self.grid = (nx, ny)
 
     # -- scales ------------------------------------------------------------------------------------------

@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from transient.checks import check_int, check_positive
+from transient.checks import check_int, check_items, check_positive, short_repr
 
 DOF_LAYOUTS = (("x", "y"), ("x", "y", "tx", "ty"))
 
@@ -33,6 +33,18 @@ def _square(name, a, n=None, unit=""):
     if not np.all(np.isfinite(arr)):
         i, j = np.argwhere(~np.isfinite(arr))[0]
         raise ValueError(f"{name}[{i}, {j}] = {arr[i, j]!r} [{unit}]; allowed: finite numbers")
+    return arr
+
+
+def _matrix(name, a, allowed, shape=None):
+    """``a`` as a finite 2-D float array (of ``shape`` if given), else a one-line ValueError naming ``allowed``."""
+    try:
+        arr = np.array(a, dtype=float)
+    except (TypeError, ValueError):
+        raise ValueError(f"{name} = {short_repr(a)} ({type(a).__name__}); allowed: {allowed}") from None
+    if arr.ndim != 2 or 0 in arr.shape or (shape is not None and arr.shape != shape) or not np.all(np.isfinite(arr)):
+        raise ValueError(f"{name} has shape {arr.shape}{'' if np.all(np.isfinite(arr)) else ' and non-finite entries'}"
+                         f"; allowed: {allowed}")
     return arr
 
 
@@ -71,22 +83,24 @@ class Rotor:
         self.damping = np.zeros((n, n)) if damping is None else _square("damping", damping, n, "N s/m")
         self.gyroscopic = np.zeros((n, n)) if gyroscopic is None else _square("gyroscopic", gyroscopic, n,
                                                                               "N s/m per rad/s")
-        dofs = tuple(dofs) if not isinstance(dofs, str) else (dofs,)
+        allowed = f"{DOF_LAYOUTS[0]!r} or {DOF_LAYOUTS[1]!r}"
+        dofs = (dofs,) if isinstance(dofs, str) else check_items("dofs", dofs, allowed)
         if dofs not in DOF_LAYOUTS:
-            raise ValueError(f"dofs = {dofs!r}; allowed: {DOF_LAYOUTS[0]!r} or {DOF_LAYOUTS[1]!r}")
-        self.dofs = dofs
+            raise ValueError(f"dofs = {dofs!r}; allowed: {allowed}")
+        self.dofs = dofs = DOF_LAYOUTS[DOF_LAYOUTS.index(dofs)]
         n_full = n if basis is None else None
         if basis is not None:
-            basis = np.array(basis, dtype=float)
-            if basis.ndim != 2 or basis.shape[1] != n or not np.all(np.isfinite(basis)):
-                raise ValueError(f"basis has shape {basis.shape}; allowed: finite (n_full, {n}) with {n} the size "
-                                 "of mass")
+            basis = _matrix("basis", basis, f"a finite (n_full, {n}) matrix with {n} the size of mass")
+            if basis.shape[1] != n:
+                raise ValueError(f"basis has shape {basis.shape}; allowed: a finite (n_full, {n}) matrix with {n} the "
+                                 "size of mass")
             n_full = basis.shape[0]
         if nodes is None:
             if n_full % len(dofs):
                 raise ValueError(f"mass has {n_full} degrees of freedom, not a multiple of {len(dofs)} (dofs={dofs})")
             nodes = list(range(n_full // len(dofs)))
-        nodes = [check_int(f"nodes[{k}]", v, "-") for k, v in enumerate(nodes)]
+        nodes = [check_int(f"nodes[{k}]", v, "-") for k, v in enumerate(check_items("nodes", nodes, "a list of "
+                                                                                      "integer node labels"))]
         if len(set(nodes)) != len(nodes):
             raise ValueError(f"nodes = {nodes!r} repeats a label; allowed: distinct integers")
         if len(nodes) * len(dofs) != n_full:
@@ -99,7 +113,8 @@ class Rotor:
             if self.reduced:
                 raise ValueError("a reduced rotor needs gravity_load (the generalised forces of a unit acceleration)")
             gravity_load = np.vstack([self.mass @ self._rigid(0), self.mass @ self._rigid(1)])
-        self.gravity_load = np.array(gravity_load, dtype=float).reshape(2, n)
+        self.gravity_load = _matrix("gravity_load", gravity_load, f"a finite (2, {n}) matrix [N per m/s^2]: the "
+                                    "generalised forces of a unit acceleration along x and y", shape=(2, n))
 
     def _rigid(self, axis) -> np.ndarray:
         """The nodal translation field of a unit rigid displacement along x (0) or y (1)."""

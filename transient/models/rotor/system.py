@@ -27,8 +27,8 @@ import scipy.sparse.linalg as spla
 from scipy.integrate import quad
 from scipy.optimize import brentq
 
-from transient.checks import (check_choice, check_int, check_memory, check_positive, check_range, check_rtol,
-                              short_repr)
+from transient.checks import (check_choice, check_instance, check_int, check_items, check_memory, check_positive,
+                              check_range, check_rtol, check_vector, short_repr)
 from transient.models.journal.bearing import JournalBearing, NoEquilibriumError, check_speed
 from transient.models.journal.film import read_only
 from transient.models.rotor.model import SystemDAE
@@ -43,6 +43,10 @@ RUN_METHODS = ("ida",)
 #: a shaft node's bearing support in the start of the equilibrium: this many times the largest of the rotor's
 #: stiffness and its gravity load per clearance (the reactions are those of rigid supports to about 1e-6)
 SUPPORT_STIFFNESS = 1e6
+#: the largest total unbalance sum(m e) a system takes, in rotor mass x smallest bearing clearance (the mass centre's
+#: distance from the shaft axis, in clearances; balanced rotors are far below one, test rigs' deliberate
+#: unbalances about one)
+MAX_UNBALANCE_CLEARANCES = 10.0
 
 
 class RotorBearingSystem:
@@ -58,16 +62,14 @@ class RotorBearingSystem:
     """
 
     def __init__(self, rotor: Rotor, bearings: dict, unbalance=(), gravity=9.81):
-        if not isinstance(rotor, Rotor):
-            raise TypeError(f"rotor must be a transient Rotor, got {type(rotor).__name__}")
-        self.rotor = rotor
+        self.rotor = check_instance("rotor", rotor, Rotor, "a transient Rotor (Rotor(...), Rotor.example(), "
+                                    "Rotor.from_ross(...))")
         if not isinstance(bearings, dict) or not bearings:
             raise ValueError(f"bearings = {short_repr(bearings)}; allowed: a non-empty dict {{node: JournalBearing}}")
         for node, b in bearings.items():
-            if node not in rotor.nodes:
+            if isinstance(node, (bool, np.bool_)) or node not in rotor.nodes:
                 raise ValueError(f"bearings: node = {node!r} is not a node of the rotor; allowed: {rotor.nodes}")
-            if not isinstance(b, JournalBearing):
-                raise TypeError(f"bearings[{node!r}] must be a JournalBearing, got {type(b).__name__}")
+            check_instance(f"bearings[{node!r}]", b, JournalBearing, "a JournalBearing")
             if not np.any(rotor.translation(node)):
                 raise ValueError(f"bearings: node {node!r} does not move in this rotor's coordinates")
         for node, b in bearings.items():
@@ -76,31 +78,44 @@ class RotorBearingSystem:
                                  "system couples the mass-conserving films; the Reynolds-condition film serves the "
                                  "single bearing's steady and linear analyses)")
         self.bearings = dict(bearings)
-        self.unbalance = []
-        for k, item in enumerate(unbalance):
-            try:
-                node, me, phase = item
-            except (TypeError, ValueError):
-                raise ValueError(f"unbalance[{k}] = {short_repr(item)}; allowed: (node, m e [kg m], phase [deg])") from None
-            if node not in rotor.nodes:
-                raise ValueError(f"unbalance[{k}]: node = {node!r} is not a node of the rotor; allowed: {rotor.nodes}")
-            me = check_range(f"unbalance[{k}] m e", me, "kg m", 0.0, 1e3)
-            phase = check_range(f"unbalance[{k}] phase", phase, "deg", -360.0, 360.0)
-            self.unbalance.append((node, me, phase))
+        self.length_scale = min(b.clearance for b in self.bearings.values())
+        self.unbalance = self._check_unbalance(unbalance)
         if np.ndim(gravity) == 0:
             g = np.array([check_range("gravity", gravity, "m/s^2", -1e4, 1e4), 0.0])
         else:
-            g = np.array(gravity, dtype=float)
-            if g.shape != (2,) or not np.all(np.isfinite(g)) or np.max(np.abs(g)) > 1e4:
-                raise ValueError(f"gravity = {short_repr(gravity)} [m/s^2]; allowed: a number or an (x, y) vector, "
-                                 "each in [-1e4, 1e4]")
+            g = np.array(check_vector("gravity", gravity, "m/s^2", 2, -1e4, 1e4, why="(a number along x or an "
+                                      "(x, y) vector)"))
         self.gravity_vector = g
-        self.length_scale = min(b.clearance for b in self.bearings.values())
         self._check_units()
 
     @property
     def bearing_nodes(self) -> list:
         return list(self.bearings)
+
+    def _check_unbalance(self, unbalance) -> list:
+        """``[(node, m e, phase), ...]`` checked: each a rotor node, ``m e`` in [0, 1e3] kg m, the phase in
+        [-360, 360] deg; and together at most :data:`MAX_UNBALANCE_CLEARANCES` smallest clearances times the rotor's
+        mass (above the critical speeds a rotor turns about its mass centre, whose distance from the shaft axis is
+        sum(m e) / mass: beyond that many clearances the journals could not stay inside their bearings)."""
+        rotor = self.rotor
+        out = []
+        items = check_items("unbalance", unbalance, "a list of (node, m e [kg m], phase [deg])")
+        for k, item in enumerate(items):
+            node, me, phase = check_items(f"unbalance[{k}]", item, "(node, m e [kg m], phase [deg])", 3)
+            if isinstance(node, (bool, np.bool_, list, dict, set, np.ndarray)) or node not in rotor.nodes:
+                raise ValueError(f"unbalance[{k}]: node = {short_repr(node)} is not a node of the rotor; allowed: "
+                                 f"{rotor.nodes}")
+            me = check_range(f"unbalance[{k}] m e", me, "kg m", 0.0, 1e3)
+            phase = check_range(f"unbalance[{k}] phase", phase, "deg", -360.0, 360.0)
+            out.append((node, me, phase))
+        total, mass = sum(me for _, me, _ in out), rotor.total_mass
+        limit = MAX_UNBALANCE_CLEARANCES * mass * self.length_scale
+        if total > limit:
+            raise ValueError(f"unbalance: sum of m e = {total:.6g} [kg m] is out of range; allowed: [0, {limit:.3g}] "
+                             f"kg m ({MAX_UNBALANCE_CLEARANCES:g} x rotor mass {mass:.4g} kg x smallest clearance "
+                             f"{self.length_scale:.3g} m: above the critical speeds the rotor turns about its mass "
+                             "centre, which this unbalance puts further than that from the shaft axis)")
+        return out
 
     def _check_units(self):
         """A rotor whose gravity deflection on rigid supports is larger than a thousand clearances is in other
