@@ -29,8 +29,9 @@ from typing import Callable
 
 import numpy as np
 
-from transient.checks import ATOL_FLOOR, ATOL_WHY, check_choice, check_memory, check_positive, check_range
-from transient.models.journal.bearing import JournalBearing, check_speed
+from transient.checks import (ATOL_FLOOR, ATOL_WHY, check_choice, check_memory, check_positive, check_range,
+                              memory_limit)
+from transient.models.journal.bearing import GRID_ADVICE, JournalBearing, check_speed
 from transient.models.journal.film import read_only
 from transient.models.journal.flows import film_flows
 from transient.models.journal.kernels import (N_ROTOR, content_jacobian, content_ode_jacobian, content_residual,
@@ -84,6 +85,7 @@ class JournalOrbit:
                                      why="(mass eccentricity, must be below the clearance)")
         self.load = check_range("load", load, "N", 0.0, np.inf, high_open=True)
         self.speed_rpm = check_speed(speed_rpm)
+        check_orbit_grid_memory(bearing.n_cells)
         self.film = bearing.film(speed_rpm)
         f = self.film
         mc_w2 = self.rotor_mass * bearing.clearance * f.omega ** 2
@@ -309,8 +311,10 @@ class JournalOrbit:
             from it; it is keyed on every parameter and setting of the run and refused (naming the one
             that differs) if any changed. Ctrl-C says where it is and how to resume.
         progress : a progress bar over the chunks (default: when the run has more than one chunk).
-        touch_gap : stop with a clear message when the eccentricity ratio reaches ``1 - touch_gap`` (with
-            boundary layers ``1 - 2 delta / C - touch_gap``: "boundary layers touch at t = ...").
+        touch_gap : stop (``success=False``, ``touched_at``) with a clear message when the eccentricity ratio
+            reaches ``1 - touch_gap`` (with boundary layers ``1 - 2 delta / C - touch_gap``: "boundary layers touch
+            at t = ..."); 0 turns the detection off, but a run whose journal reaches the wall (a negative film) is
+            still never a success: its message says when and how far.
         stop : ``stop(result_so_far) -> str | None`` called after every chunk; a non-empty string ends
             the run early and becomes its message (e.g. "settled").
         time_budget : wall-clock seconds the whole run may take (None: no limit); past it the run stops with
@@ -330,6 +334,9 @@ class JournalOrbit:
         lr = from_keywords(LongRun, long_run, "long_run", chunk_revolutions=chunk_revolutions, checkpoint=checkpoint,
                            resume=resume, progress=progress, stop=stop, time_budget=time_budget)
         method = ig.method
+        if ig.dt is not None:
+            raise ValueError(f"dt = {ig.dt!r} [-] is not used by the orbit; allowed: steps_per_revolution (the fixed "
+                             "steps of method \"rk4\" per revolution), or leave dt out")
         formulation = ig.formulation or ("content" if method == "bdf2" else "universal")
         rc.check_names(RECORDABLE)
         if method == "bdf2" and formulation != "content":
@@ -384,16 +391,20 @@ class JournalOrbit:
                        stop=user_stop, time_budget=lr.time_budget)
         if method == "rk4":
             out.stats.n_jac = sum(s.n_factorisations for s in step.steppers)
-        touched, message = None, out.message
+        touched, message, success = None, out.message, out.success
+        what = "journal touches the bearing" if self.bearing.layers is None else "boundary layers touch"
         if out.event is not None:
             touched = out.event[0] / self.film.omega
-            what = "journal touches the bearing" if self.bearing.layers is None else "boundary layers touch"
             message = (f"{what} (eccentricity ratio {self.bearing.max_eccentricity_ratio - touch_gap:.4f}) at t = "
                        f"{touched:.6g} s ({touched * rpm_to_hz(self.speed_rpm):.2f} revolutions)")
+            success = False
         # the driver's last state, also when a finished checkpoint is resumed and nothing was left to run
         rec.last_y = self.universal_state(out.y) if formulation == "content" else np.array(out.y)
         r = rec.result(method, out.stats, touched, message, out.t)
-        r.success = out.success
+        through = wall_crossing(r.t, np.hypot(r.x, r.y) / self.bearing.clearance, self.bearing.max_eccentricity_ratio)
+        if through and out.event is None:
+            success, r.message = False, f"the journal {through}"
+        r.success = success
         return r
 
     def _stepper(self, ig: Integration, formulation: str, touch_gap: float) -> "_Step":
@@ -512,11 +523,24 @@ def orbit_memory(cells, revolutions, outputs_per_revolution=100, record=(), reco
 
 def check_orbit_memory(cells, revolutions, outputs_per_revolution=100, record=(), record_from_revolution=0.0):
     """Refuse (one line, :class:`~transient.checks.MemoryLimitError`) an orbit run whose :func:`orbit_memory`
-    exceeds the stated share of the machine's memory, naming the parameters to change."""
+    exceeds the stated share of the machine's memory, naming the parameters to change: the grid when the film and
+    its solver alone do not fit, else the run's length and recordings."""
+    parts = orbit_memory(cells, revolutions, outputs_per_revolution, record, record_from_revolution)
+    if parts["model"] + parts["solver"] > memory_limit():
+        advice = GRID_ADVICE
+    else:
+        advice = ("lower revolutions or outputs_per_revolution, or record fewer series (record=, "
+                  "record_from_revolution=) (a long run can go on in parts with start=)")
     check_memory(f"this orbit run ({revolutions:g} rev x {outputs_per_revolution} outputs/rev on {cells} cells)",
-                 orbit_memory(cells, revolutions, outputs_per_revolution, record, record_from_revolution),
-                 "lower revolutions or outputs_per_revolution, record fewer series (record=, record_from_revolution=), "
-                 "or use a coarser grid (a long run can go on in parts with start=)")
+                 parts, advice)
+
+
+def check_orbit_grid_memory(cells):
+    """Refuse, before its film is built, an orbit whose film and integrator alone (:func:`orbit_memory` of a run of
+    one output) do not fit this machine, naming the grid."""
+    parts = orbit_memory(cells, 0.0, 1)
+    parts.pop("recordings")
+    check_memory(f"an orbit on {cells} film cells", parts, GRID_ADVICE)
 
 
 @dataclass
@@ -639,6 +663,17 @@ class _Recorder:
         return OrbitResult(t=np.array(self.t), x=np.array(self.x), y=np.array(self.y), method=method, stats=stats,
                            speed_rpm=o.speed_rpm, clearance=o.bearing.clearance, touched_at=touched, message=message,
                            final_state=self.last_y, final_time=float(tau_end) / o.film.omega, **extra)
+
+
+def wall_crossing(t, eps, limit) -> str:
+    """Where a run's journal reached ``limit`` (e/C = 1, less any boundary layers) or beyond -- a negative film,
+    no result (the touch event, ``touch_gap`` > 0, stops a run before it): "" if it never did, else a phrase with
+    the first output time [s] there and the largest e/C."""
+    over = np.flatnonzero(np.asarray(eps) >= limit)
+    if over.size == 0:
+        return ""
+    return (f"reaches e/C = {float(np.max(eps)):.4f} from t = {float(t[over[0]]):.6g} s (allowed: below "
+            f"{limit:.4g}): a negative film, not a result; touch_gap > 0 stops the run at the wall")
 
 
 def _state_array(y) -> np.ndarray:

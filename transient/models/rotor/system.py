@@ -27,10 +27,12 @@ import scipy.sparse.linalg as spla
 from scipy.integrate import quad
 from scipy.optimize import brentq
 
-from transient.checks import (check_choice, check_int, check_memory, check_positive, check_range, check_rtol,
-                              short_repr)
-from transient.models.journal.bearing import JournalBearing, NoEquilibriumError, check_speed
+from transient.checks import (check_bool, check_choice, check_int, check_memory, check_positive, check_range,
+                              check_rtol, memory_limit, short_repr)
+from transient.models.journal.bearing import (FILM_BYTES_PER_CELL, GRID_ADVICE, JournalBearing, NoEquilibriumError,
+                                              bearing_memory, check_speed)
 from transient.models.journal.film import read_only
+from transient.models.journal.orbit import wall_crossing
 from transient.models.rotor.model import SystemDAE
 from transient.models.rotor.results import RotorEquilibrium, RotorRunResult, UnbalanceResponse
 from transient.models.rotor.rotor import Rotor
@@ -40,6 +42,9 @@ from transient.solvers.newton import NewtonError, newton
 from transient.units import rpm_to_rad_s
 
 RUN_METHODS = ("ida",)
+#: How :meth:`RotorBearingSystem.unbalance_response` linearised the bearings, by ``film_states``
+#: (``UnbalanceResponse.linearisation``).
+LINEARISATIONS = {True: "film states", False: "K and C"}
 #: a shaft node's bearing support in the start of the equilibrium: this many times the largest of the rotor's
 #: stiffness and its gravity load per clearance (the reactions are those of rigid supports to about 1e-6)
 SUPPORT_STIFFNESS = 1e6
@@ -149,6 +154,7 @@ class RotorBearingSystem:
         speed = check_speed(speed_rpm)
         for node, b in self.bearings.items():
             b._check_supplied()
+        self._check_steady_memory()
         dae = self.dae(speed)
         y = self._steady(dae, 1.0)
         return self._equilibrium_result(dae, y, speed)
@@ -288,12 +294,15 @@ class RotorBearingSystem:
             bearings.append((int(unit[0][0]), int(unit[1][0]), kb, cb))
         return r.mass, r.damping, r.gyroscopic, r.stiffness, bearings
 
-    def unbalance_response(self, speed_rpm, film_states=False) -> UnbalanceResponse:
+    def unbalance_response(self, speed_rpm, film_states=True) -> UnbalanceResponse:
         """The linear unbalance response at ``speed_rpm``: complex amplitudes per node (``position(node)``,
-        ``x(t) = Re(X e^{i Omega t})``). Default: the rotor with each bearing's K and C at its static load
-        (:meth:`coefficients`, :mod:`transient.models.rotor.linear`); ``film_states=True``: the system linearised
-        with the films' own states (:meth:`linearisation`), ``(A + i B) Z = F`` in the time ``tau = Omega t``."""
+        ``x(t) = Re(X e^{i Omega t})``). Default (``film_states=True``): the system linearised with the films' own
+        states (:meth:`linearisation`), ``(A + i B) Z = F`` in the time ``tau = Omega t``, which the time domain
+        settles to; ``film_states=False``: the rotor with each bearing's quasi-static K and C at its static load
+        (:meth:`coefficients`, :mod:`transient.models.rotor.linear`; Lund's method, which leaves out the films' own
+        dynamics). The result's ``linearisation`` says which (``"film states"`` or ``"K and C"``)."""
         speed = check_speed(speed_rpm)
+        film_states = check_bool("film_states", film_states)
         w = rpm_to_rad_s(speed)
         eq = self.equilibrium(speed)
         coef = self.coefficients(speed, eq)
@@ -315,7 +324,8 @@ class RotorBearingSystem:
                                  stiffness=np.array([coef[n][0] for n in self.bearing_nodes]),
                                  damping=np.array([coef[n][1] for n in self.bearing_nodes]),
                                  nodes=list(r.nodes), bearing_nodes=self.bearing_nodes, speed_rpm=speed,
-                                 success=True, message="linear, film states" if film_states else "linear, K and C")
+                                 linearisation=LINEARISATIONS[film_states], success=True,
+                                 message=f"linear, {LINEARISATIONS[film_states]}")
 
     def linearisation(self, speed_rpm, equilibrium=None) -> "Linearisation":
         """The system linearised at its static equilibrium with the film states included
@@ -378,7 +388,7 @@ class RotorBearingSystem:
 
     # ------------------------------------------------------------------------------------------
     def run(self, revolutions, speed_rpm, method="ida", rtol=1e-6, start=None, checkpoint=None, *, atol=1e-9,
-            outputs_per_revolution=100, chunk_revolutions=None, resume=False, progress=None, touch_gap=0.0,
+            outputs_per_revolution=100, chunk_revolutions=None, resume=False, progress=None, touch_gap=1e-3,
             time_budget=None, reference_speed_rpm=None) -> RotorRunResult:
         """Integrate the rotor on its films over ``revolutions`` shaft revolutions.
 
@@ -396,7 +406,10 @@ class RotorBearingSystem:
             run's constant speed).
         checkpoint : path of an ``.npz`` rewritten after every chunk (``resume=True`` continues from it).
         outputs_per_revolution : outputs per revolution at the reference speed.
-        touch_gap : > 0 stops the run when a journal reaches e/C = 1 - touch_gap.
+        touch_gap : > 0 stops the run (``success=False``, ``touched_at``, the message naming the bearing node, the
+            time and e/C) when a journal reaches e/C = 1 - touch_gap (with boundary layers 1 - 2 delta / C -
+            touch_gap); 0 turns the detection off, but a run whose journal reaches the wall (a negative film) is
+            still never a success.
         reference_speed_rpm : the speed of the films' pressure unit (default: the largest speed of the run;
             a continued run keeps its start's).
         """
@@ -405,7 +418,13 @@ class RotorBearingSystem:
         rtol = check_rtol(rtol)
         atol = check_range("atol", atol, "-", 1e-30, 1.0)
         opr = check_int("outputs_per_revolution", outputs_per_revolution, "1/rev", 1, 1_000_000)
-        touch_gap = check_range("touch_gap", touch_gap, "-", 0.0, 1.0, high_open=True)
+        touch_gap = check_range("touch_gap", touch_gap, "-", 0.0, 1.0, high_open=True,
+                                why="(0 turns touch detection off)")
+        resume = check_bool("resume", resume)
+        if progress is not None:
+            progress = check_bool("progress", progress)
+        n_out = max(1, int(round(revolutions * opr)))
+        self._check_run_memory(n_out)
         t0, y = 0.0, None
         if start is not None:
             if isinstance(start, RotorRunResult):
@@ -424,11 +443,11 @@ class RotorBearingSystem:
         w = rpm_to_rad_s(ref)
 
         def speed(tau):
-            t = tau / w
-            n = speed_fn(t)
+            t = min(max(tau / w, t0), t_end)  # the speed function is taken only inside the run [t0, t_end] (an
+            n = speed_fn(t)                   # integrator may try a step past the end)
             h = 1e-6 * max(t_end - t0, 1e-9)
-            lo = max(t - h, t0)  # the speed function is taken only inside the run
-            dn = (speed_fn(t + h) - speed_fn(lo)) / (t + h - lo) if callable(speed_rpm) else 0.0
+            lo, hi = max(t - h, t0), min(t + h, t_end)
+            dn = (speed_fn(hi) - speed_fn(lo)) / (hi - lo) if callable(speed_rpm) else 0.0
             return n / ref, rpm_to_rad_s(dn) / w ** 2
 
         dae = self.dae(ref, speed)
@@ -441,12 +460,7 @@ class RotorBearingSystem:
         if y.shape != (dae.n,) or not np.all(np.isfinite(y)):
             raise ValueError(f"start state has shape {y.shape} or non-finite entries; this system has {dae.n} finite "
                              "states")
-        n_out = max(1, int(round(revolutions * opr)))
         tau0, tau_end = t0 * w, t_end * w
-        check_memory(f"this rotor run ({n_out} outputs, {dae.n} states)",
-                     dict(model=1100.0 * dae.n_film, solver=5500.0 * dae.n,
-                          recordings=8.0 * n_out * (2 * len(self.rotor.nodes) + 2 * len(self.bearings) + 2)),
-                     "lower revolutions or outputs_per_revolution, or use coarser bearing grids")
         rec = _Recorder(self, dae, speed)
         limits = [(b.bearing.max_eccentricity_ratio - touch_gap) ** 2 for b in dae.blocks]
 
@@ -476,14 +490,45 @@ class RotorBearingSystem:
                        checkpoint=checkpoint, resume=resume, key=key, progress=progress,
                        unit=("rev", (tau_end - tau0) / revolutions),
                        label="rotor run", status=rec.status, time_budget=time_budget)
-        touched, message = None, out.message
+        touched, message, success = None, out.message, out.success
         if out.event is not None:
             touched = out.event[0] / w
-            message = f"a journal touches its bearing (e/C = 1 - {touch_gap:g}) at t = {touched:.6g} s"
+            q = np.asarray(out.event[1])[dae.Q0:dae.V0]
+            gaps = [limits[k] - np.sum(np.square(b.position(q))) for k, b in enumerate(dae.blocks)]
+            b = dae.blocks[int(np.argmin(gaps))]
+            message = (f"the journal at bearing node {b.node} touches its bearing (e/C = "
+                       f"{np.hypot(*b.position(q)):.4f}, 1 - touch_gap = {touch_gap:g}) at t = {touched:.6g} s")
+            success = False
         rec.last_y = np.array(out.y)
         r = rec.result(method, out.stats, touched, message, out.t / w, ref)
-        r.success = out.success
+        for k, (node, b) in enumerate(zip(self.bearing_nodes, dae.blocks)):
+            through = wall_crossing(r.t, r.eccentricity_ratio(node), b.bearing.max_eccentricity_ratio)
+            if through and out.event is None:
+                success, r.message = False, f"the journal at bearing node {node} {through}"
+                break
+        r.success = success
         return r
+
+    def _check_steady_memory(self):
+        """Refuse, before the films are built, a static equilibrium (the whole system's Newton) that does not fit
+        this machine: each film's grid, film and steady solve (:func:`~transient.models.journal.bearing.bearing_memory`)."""
+        n_film = sum(b.n_cells for b in self.bearings.values())
+        grids = " + ".join(f"{b.grid_shape[0]} x {b.grid_shape[1]}" for b in self.bearings.values())
+        check_memory(f"the static equilibrium of this rotor ({n_film} film cells on bearing grids {grids})",
+                     bearing_memory(n_film), GRID_ADVICE)
+
+    def _check_run_memory(self, n_outputs):
+        """Refuse, before the films, the equilibrium or the integrator are built, a run whose memory exceeds the
+        machine's share (:func:`~transient.checks.check_memory`): per film cell the film (``FILM_BYTES_PER_CELL``)
+        and the integrator's sparse Jacobian and LU (the orbit's measured 5.5 kB per state), the recordings."""
+        n_film = sum(b.n_cells for b in self.bearings.values())
+        n = n_film + 2 * self.rotor.n + 1
+        grids = " + ".join(f"{b.grid_shape[0]} x {b.grid_shape[1]}" for b in self.bearings.values())
+        outputs = 8.0 * n_outputs * (2 * len(self.rotor.nodes) + 2 * len(self.bearings) + 2)
+        parts = dict(model=FILM_BYTES_PER_CELL * n_film, solver=5500.0 * n, recordings=outputs)
+        check_memory(f"this rotor run ({n_outputs} outputs, {n} states on bearing grids {grids})", parts,
+                     GRID_ADVICE if parts["model"] + parts["solver"] > memory_limit() else
+                     "lower revolutions or outputs_per_revolution")
 
     def periodic_response(self, speed_rpm, rtol=1e-6, tol=None, modes=2, outputs_per_revolution=64, max_iter=25):
         """The settled unbalance orbit at ``speed_rpm`` by shooting (Newton-Picard on the ``modes`` least damped
