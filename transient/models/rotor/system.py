@@ -29,8 +29,8 @@ from scipy.optimize import brentq
 
 from transient.checks import (check_bool, check_choice, check_int, check_memory, check_positive, check_range,
                               check_rtol, memory_limit, short_repr)
-from transient.models.journal.bearing import (FILM_BYTES_PER_CELL, GRID_ADVICE, JournalBearing, NoEquilibriumError,
-                                              bearing_memory, check_speed)
+from transient.models.journal.bearing import (FILM_BYTES_PER_CELL, GRID_ADVICE, SPEED_RANGE_RPM, JournalBearing,
+                                              NoEquilibriumError, bearing_memory, check_speed)
 from transient.models.journal.film import read_only
 from transient.models.journal.orbit import wall_crossing
 from transient.models.rotor.model import SystemDAE
@@ -48,6 +48,8 @@ LINEARISATIONS = {True: "film states", False: "K and C"}
 #: a shaft node's bearing support in the start of the equilibrium: this many times the largest of the rotor's
 #: stiffness and its gravity load per clearance (the reactions are those of rigid supports to about 1e-6)
 SUPPORT_STIFFNESS = 1e6
+#: the longest run of a speed function [s] (a year): a shaft that has not turned its revolutions by then never will
+MAX_RUN_SECONDS = 3.2e7
 
 
 class RotorBearingSystem:
@@ -625,31 +627,49 @@ def _diagonal_positions(pattern, rows) -> np.ndarray:
 
 def _speed_schedule(speed_rpm, t0, revolutions):
     """``(speed(t) [rpm], t_end [s], largest speed [rpm])`` of a constant speed or a speed function over the
-    run: a function's run ends when the shaft has turned ``revolutions`` times since ``t0``."""
+    run: a function's run ends when the shaft has turned ``revolutions`` times since ``t0`` (:func:`_run_end`)."""
     if not callable(speed_rpm):
         n = check_speed(speed_rpm)
         return (lambda t: n), t0 + revolutions * 60.0 / n, n
 
     def fn(t):
         v = float(speed_rpm(t))
-        if not np.isfinite(v) or v < 0 or v > 1e6:
-            raise ValueError(f"speed_rpm(t = {t:.6g} s) = {v!r} [rpm]; allowed: [0, 1e6]")
+        if not np.isfinite(v) or v < 0 or v > SPEED_RANGE_RPM[1]:
+            raise ValueError(f"speed_rpm(t = {t:.6g} s) = {v!r} [rpm]; allowed: [0, {SPEED_RANGE_RPM[1]:g}]")
         return v
 
-    n0 = fn(t0)
-    turns = lambda T: quad(fn, t0, T, limit=200)[0] / 60.0 - revolutions  # noqa: E731
-    T = t0 + revolutions * 60.0 / max(n0, 1.0)
-    for _ in range(60):
-        if turns(T) >= 0:
-            break
-        T = t0 + 2 * (T - t0)
-    else:
-        raise ValueError(f"speed_rpm(t): the shaft does not turn {revolutions:g} times in {T - t0:.3g} s")
-    t_end = brentq(turns, t0, T, xtol=1e-12 * max(T, 1.0))
+    t_end = _run_end(fn, t0, revolutions)
     n_max = max(fn(t) for t in np.linspace(t0, t_end, 257))
     if n_max <= 0:
         raise ValueError("speed_rpm(t) is zero over the whole run; allowed: a shaft that turns")
     return fn, t_end, check_speed(n_max)
+
+
+def _run_end(fn, t0, revolutions, max_steps=100_000) -> float:
+    """The time [s] at which a shaft turning at ``fn(t)`` [rpm] from ``t0`` has turned ``revolutions`` times, found
+    from below without evaluating ``fn`` after it (a run-up written for the run's own span may be undefined
+    beyond). Each step turns at most the revolutions left at the fastest speed allowed, or half of them at twice the
+    fastest speed seen, and at most doubles the time since ``t0``; it ends within 1e-12 of the revolutions."""
+    left, t, n_seen = float(revolutions), float(t0), fn(t0)
+    for _ in range(max_steps):
+        if left <= 1e-12 * revolutions:
+            return t
+        if t - t0 > MAX_RUN_SECONDS:
+            break
+        dt = max(60.0 * left / SPEED_RANGE_RPM[1], min(30.0 * left / max(n_seen, 1e-300), t - t0))
+        peak = [0.0]
+
+        def seen(x):
+            v = fn(x)
+            peak[0] = max(peak[0], v)
+            return v
+
+        turned = quad(seen, t, t + dt, limit=200)[0] / 60.0
+        if turned > left:  # the speed rose faster than the step allowed for: back to the end inside the step
+            return brentq(lambda T: quad(fn, t, T, limit=200)[0] / 60.0 - left, t, t + dt, xtol=1e-12 * max(t, 1.0))
+        t, left, n_seen = t + dt, left - turned, max(n_seen, peak[0], fn(t + dt))
+    raise ValueError(f"speed_rpm(t): the shaft does not turn {revolutions:g} times in {t - t0:.3g} s (it turned "
+                     f"{revolutions - left:.6g} times); allowed: a speed that turns the shaft")
 
 
 def _speed_key(fn, t0, t_end) -> str:
