@@ -462,6 +462,11 @@ class RotorBearingSystem:
         if y.shape != (dae.n,) or not np.all(np.isfinite(y)):
             raise ValueError(f"start state has shape {y.shape} or non-finite entries; this system has {dae.n} finite "
                              "states")
+        for b in dae.blocks:
+            e = float(np.hypot(*b.position(y[dae.Q0:dae.V0])))
+            if e >= b.bearing.max_eccentricity_ratio:
+                raise ValueError(f"start: the journal at bearing node {b.node} is outside the clearance: e/C = {e:.4g} "
+                                 f"[-]; allowed: [0, {b.bearing.max_eccentricity_ratio:.4g})")
         tau0, tau_end = t0 * w, t_end * w
         rec = _Recorder(self, dae, speed)
         limits = [(b.bearing.max_eccentricity_ratio - touch_gap) ** 2 for b in dae.blocks]
