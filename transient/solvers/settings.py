@@ -85,13 +85,13 @@ class Integration:
         if self.dt is not None:
             _set(self, "dt", check_positive("dt", self.dt, "-"))
         check_choice("linear_solver", self.linear_solver, LINEAR_SOLVERS)
-        for name, unused in (("steps_per_revolution", self.steps_per_revolution is None),
-                             ("inner_tolerance", self.inner_tolerance is None), ("dt", self.dt is None),
-                             ("linear_solver", self.linear_solver == "auto")):
+        for name, unit, unused in (("steps_per_revolution", " [1/rev]", self.steps_per_revolution is None),
+                                   ("inner_tolerance", " [-]", self.inner_tolerance is None),
+                                   ("dt", " [-]", self.dt is None), ("linear_solver", "", self.linear_solver == "auto")):
             if not unused and name not in METHOD_SETTINGS.get(self.method, ()):
                 users = [m for m in METHODS if name in METHOD_SETTINGS.get(m, ())]
-                raise ValueError(f"{name} = {getattr(self, name)!r} is not used by method {self.method!r}; allowed: "
-                                 f"{name} with method {' or '.join(map(repr, users))}, or leave it out")
+                raise ValueError(f"{name} = {getattr(self, name)!r}{unit} is not used by method {self.method!r}; "
+                                 f"allowed: {name} with method {' or '.join(map(repr, users))}, or leave it out")
         if self.method == "rk4" and self.inner_tolerance is None:
             _set(self, "inner_tolerance", RK4_INNER_TOLERANCE)
 
