@@ -403,7 +403,7 @@ class JournalOrbit:
         r = rec.result(method, out.stats, touched, message, out.t)
         through = wall_crossing(r.t, np.hypot(r.x, r.y) / self.bearing.clearance, self.bearing.max_eccentricity_ratio)
         if through and out.event is None:
-            success, r.message = False, f"the journal {through}"
+            success, r.message = False, f"the journal {through}" + ("" if out.success else f"; then {out.message}")
         r.success = success
         return r
 

@@ -511,7 +511,9 @@ class RotorBearingSystem:
         for k, (node, b) in enumerate(zip(self.bearing_nodes, dae.blocks)):
             through = wall_crossing(r.t, r.eccentricity_ratio(node), b.bearing.max_eccentricity_ratio)
             if through and out.event is None:
-                success, r.message = False, f"the journal at bearing node {node} {through}"
+                success = False
+                r.message = f"the journal at bearing node {node} {through}" + ("" if out.success else
+                                                                                 f"; then {out.message}")
                 break
         r.success = success
         return r
