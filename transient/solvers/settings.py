@@ -87,7 +87,8 @@ class Integration:
         check_choice("linear_solver", self.linear_solver, LINEAR_SOLVERS)
         for name, unit, unused in (("steps_per_revolution", " [1/rev]", self.steps_per_revolution is None),
                                    ("inner_tolerance", " [-]", self.inner_tolerance is None),
-                                   ("dt", " [-]", self.dt is None), ("linear_solver", "", self.linear_solver == "auto")):
+                                   ("dt", " [-]", self.dt is None),
+                                   ("linear_solver", "", self.linear_solver == "auto")):
             if not unused and name not in METHOD_SETTINGS.get(self.method, ()):
                 users = [m for m in METHODS if name in METHOD_SETTINGS.get(m, ())]
                 raise ValueError(f"{name} = {getattr(self, name)!r}{unit} is not used by method {self.method!r}; "

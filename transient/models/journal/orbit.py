@@ -392,9 +392,9 @@ class JournalOrbit:
         if method == "rk4":
             out.stats.n_jac = sum(s.n_factorisations for s in step.steppers)
         touched, message, success = None, out.message, out.success
-        what = "journal touches the bearing" if self.bearing.layers is None else "boundary layers touch"
         if out.event is not None:
             touched = out.event[0] / self.film.omega
+            what = "journal touches the bearing" if self.bearing.layers is None else "boundary layers touch"
             message = (f"{what} (eccentricity ratio {self.bearing.max_eccentricity_ratio - touch_gap:.4f}) at t = "
                        f"{touched:.6g} s ({touched * rpm_to_hz(self.speed_rpm):.2f} revolutions)")
             success = False

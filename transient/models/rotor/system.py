@@ -504,11 +504,11 @@ class RotorBearingSystem:
             gaps = [limits[k] - np.sum(np.square(b.position(q))) for k, b in enumerate(dae.blocks)]
             b = dae.blocks[int(np.argmin(gaps))]
             message = (f"the journal at bearing node {b.node} touches its bearing (e/C = "
-                       f"{np.hypot(*b.position(q)):.4f}, 1 - touch_gap = {touch_gap:g}) at t = {touched:.6g} s")
+                       f"{np.hypot(*b.position(q)):.4f}, touch_gap = {touch_gap:g}) at t = {touched:.6g} s")
             success = False
         rec.last_y = np.array(out.y)
         r = rec.result(method, out.stats, touched, message, out.t / w, ref)
-        for k, (node, b) in enumerate(zip(self.bearing_nodes, dae.blocks)):
+        for node, b in zip(self.bearing_nodes, dae.blocks):
             through = wall_crossing(r.t, r.eccentricity_ratio(node), b.bearing.max_eccentricity_ratio)
             if through and out.event is None:
                 success = False
@@ -520,7 +520,8 @@ class RotorBearingSystem:
 
     def _check_steady_memory(self):
         """Refuse, before the films are built, a static equilibrium (the whole system's Newton) that does not fit
-        this machine: each film's grid, film and steady solve (:func:`~transient.models.journal.bearing.bearing_memory`)."""
+        this machine: each film's grid, film and steady solve
+        (:func:`~transient.models.journal.bearing.bearing_memory`)."""
         n_film = sum(b.n_cells for b in self.bearings.values())
         grids = " + ".join(f"{b.grid_shape[0]} x {b.grid_shape[1]}" for b in self.bearings.values())
         check_memory(f"the static equilibrium of this rotor ({n_film} film cells on bearing grids {grids})",
