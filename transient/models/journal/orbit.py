@@ -403,7 +403,8 @@ class JournalOrbit:
         r = rec.result(method, out.stats, touched, message, out.t)
         through = wall_crossing(r.t, np.hypot(r.x, r.y) / self.bearing.clearance, self.bearing.max_eccentricity_ratio)
         if through and out.event is None:
-            success, r.message = False, f"the journal {through}" + ("" if out.success else f"; then {out.message}")
+            success, r.message = False, (f"the journal {through} (touch_gap > 0 stops a run there)"
+                                         + ("" if out.success else f"; then {out.message}"))
         r.success = success
         return r
 
@@ -438,10 +439,15 @@ class JournalOrbit:
 
     def periodic_response(self, **kwargs):
         """The periodic orbit of this rotor at its speed by shooting, with its Floquet multipliers:
-        :func:`transient.models.journal.periodic.periodic_response` (its arguments)."""
+        :func:`transient.models.journal.periodic.periodic_response` (its arguments); an orbit that reaches the
+        bearing wall is no success."""
         from transient.models.journal.periodic import periodic_response
 
-        return periodic_response(self, **kwargs)
+        p = periodic_response(self, **kwargs)
+        through = wall_crossing(p.t, np.hypot(p.x, p.y) / self.bearing.clearance, self.bearing.max_eccentricity_ratio)
+        if through:  # a periodic orbit through the wall is no result, converged or not
+            p.success, p.message = False, f"the journal {through}; {p.message}"
+        return p
 
     def response_curve(self, speeds_rpm, **kwargs):
         """Periodic orbits along ``speeds_rpm`` by continuation (amplitude, phase, multipliers, unstable speeds):
@@ -673,7 +679,7 @@ def wall_crossing(t, eps, limit) -> str:
     if over.size == 0:
         return ""
     return (f"reaches e/C = {float(np.max(eps)):.4f} from t = {float(t[over[0]]):.6g} s (allowed: below "
-            f"{limit:.4g}): a negative film, not a result; touch_gap > 0 stops the run at the wall")
+            f"{limit:.4g}): a negative film, not a result")
 
 
 def _state_array(y) -> np.ndarray:

@@ -512,8 +512,8 @@ class RotorBearingSystem:
             through = wall_crossing(r.t, r.eccentricity_ratio(node), b.bearing.max_eccentricity_ratio)
             if through and out.event is None:
                 success = False
-                r.message = f"the journal at bearing node {node} {through}" + ("" if out.success else
-                                                                                 f"; then {out.message}")
+                r.message = (f"the journal at bearing node {node} {through} (touch_gap > 0 stops a run there)"
+                             + ("" if out.success else f"; then {out.message}"))
                 break
         r.success = success
         return r
@@ -552,7 +552,14 @@ class RotorBearingSystem:
         tol = rtol if tol is None else check_positive("tol", tol, "-")
         modes = check_int("modes", modes, "-", 1, 20)
         opr = check_int("outputs_per_revolution", outputs_per_revolution, "1/rev", 4, 100000)
-        return periodic_response(self, speed, rtol, tol, modes, opr, check_int("max_iter", max_iter, "-", 1, 1000))
+        p = periodic_response(self, speed, rtol, tol, modes, opr, check_int("max_iter", max_iter, "-", 1, 1000))
+        for node, b in self.bearings.items():  # an orbit through the wall is no result, converged or not
+            x, y = p.position(node)
+            through = wall_crossing(p.t, np.hypot(x, y) / b.clearance, b.max_eccentricity_ratio)
+            if through:
+                p.success, p.message = False, f"the journal at bearing node {node} {through}; {p.message}"
+                break
+        return p
 
     def parameters(self) -> dict:
         """Every parameter of the system (SI), e.g. to key a checkpoint (the rotor's matrices as a digest)."""
