@@ -61,3 +61,20 @@ def test_a_fixed_step_the_orbit_does_not_take_is_refused():
     o = JournalOrbit(JournalBearing(**BEARING, grid=(8, 2)), 100.0, 1e-6, 981.0, 6000.0)
     with pytest.raises(ValueError, match=r"dt = 0\.01 \[-\] is not used by the orbit; allowed: steps_per_revolution"):
         o.run(0.1, integration=Integration(method="rk4", dt=0.01), progress=False)
+
+
+def test_the_bdf2_band_lu_counts_and_is_refused_before_it_is_built(monkeypatch):
+    """The bordered band LU of method "bdf2" stores about 6 min(n_theta, n_axial) rows per cell: on a square grid it
+    outgrows what IDA needs, and a run it does not fit is refused naming the grid before anything is built."""
+    o = JournalOrbit(JournalBearing(**BEARING, grid=(48, 48)), 100.0, 1e-6, 981.0, 6000.0)
+    ida, bdf2 = o.memory_estimate(1.0), o.memory_estimate(1.0, method="bdf2")
+    assert bdf2["band LU"] == pytest.approx(8.0 * (6.2 * 48 + 1) * o.film.n)
+    monkeypatch.setenv("TRANSIENT_MEMORY_BYTES", str(2 * sum(ida.values()) + 1e4))  # IDA's run fits, bdf2's not
+
+    def no_work(*args, **kwargs):
+        raise AssertionError("the run was built before the memory check")
+
+    monkeypatch.setattr(o, "bdf2_model", no_work)
+    monkeypatch.setattr(o, "initial_state", no_work)
+    with pytest.raises(MemoryLimitError, match=r"band LU .*coarser grid \(JournalBearing\(grid="):
+        o.run(1.0, method="bdf2", progress=False)

@@ -55,6 +55,10 @@ CONTENT_RTOL_FACTOR = 0.1
 #: Newton tolerance on the pressure (p0) and the content H theta of every cell.
 BDF2_MIN_STEPS = 550
 BDF2_FILM_TOL = 1e-8
+#: ``method="bdf2"``: rows of LAPACK band storage (2 kl + ku + 1) of its bordered band LU per cell of the grid's
+#: smaller dimension, reverse Cuthill-McKee on the Newton pattern: 3.0 with a full-length groove, up to 6.2 with a
+#: partial one (measured on 151 x 21, 64 x 64, 100 x 30, 40 x 100 and 300 x 42); 8 bytes each per film cell.
+BDF2_BAND_ROWS = 6.2
 RECORDABLE = ("force", "pressure", "film_content", "min_film", "mass", "outflow", "supply_flow", "side_leakage")
 FIELD_SERIES = ("pressure", "film_content")
 
@@ -260,9 +264,16 @@ class JournalOrbit:
                     load=self.load, speed_rpm=self.speed_rpm)
 
     # ---------------------------------------------------------------------------------------------
-    def memory_estimate(self, revolutions, outputs_per_revolution=100, record=(), record_from_revolution=0.0) -> dict:
-        """Bytes a :meth:`run` will need, by part (:func:`orbit_memory`)."""
-        return orbit_memory(self.film.n, revolutions, outputs_per_revolution, record, record_from_revolution)
+    def memory_estimate(self, revolutions, outputs_per_revolution=100, record=(), record_from_revolution=0.0, *,
+                        method="ida") -> dict:
+        """Bytes a :meth:`run` will need, by part (:func:`orbit_memory`; ``method="bdf2"`` adds its band LU)."""
+        return orbit_memory(self.film.n, revolutions, outputs_per_revolution, record, record_from_revolution,
+                            band_rows=self._band_rows(method))
+
+    def _band_rows(self, method) -> float:
+        """Band storage rows per film cell of ``method``'s linear solver (``bdf2``: ``BDF2_BAND_ROWS`` times the
+        grid's smaller dimension, plus the diagonal; the others: none)."""
+        return BDF2_BAND_ROWS * min(self.bearing.grid_shape) + 1.0 if method == "bdf2" else 0.0
 
     def run(self, revolutions, method=DEFAULT, rtol=DEFAULT, atol=DEFAULT, steps_per_revolution=DEFAULT,
             outputs_per_revolution=DEFAULT, *, record=DEFAULT, record_from_revolution=DEFAULT,
@@ -348,7 +359,8 @@ class JournalOrbit:
         if revolutions * opr < 1.0 - 1e-9:
             raise ValueError(f"revolutions = {revolutions!r} [rev] is less than one output interval; allowed: >= "
                              f"{1 / opr:g} rev at outputs_per_revolution = {opr}")
-        check_orbit_memory(self.film.n, revolutions, opr, rc.record, rc.record_from_revolution)
+        check_orbit_memory(self.film.n, revolutions, opr, rc.record, rc.record_from_revolution,
+                           band_rows=self._band_rows(method))
         touch_gap = check_range("touch_gap", touch_gap, "-", 0.0, 1.0, high_open=True,
                                 why="(0 turns touch detection off)")
         chunk_revolutions = lr.chunk_revolutions
@@ -512,27 +524,33 @@ class JournalOrbit:
         return {k: np.array(v) for k, v in out.items()}
 
 
-def orbit_memory(cells, revolutions, outputs_per_revolution=100, record=(), record_from_revolution=0.0) -> dict:
+def orbit_memory(cells, revolutions, outputs_per_revolution=100, record=(), record_from_revolution=0.0, *,
+                 band_rows=0.0) -> dict:
     """Bytes an orbit run on ``cells`` film cells will need, by part: ``model`` (the film's arrays and operator
     tables, 1.1 kB per cell) and ``solver`` (sparse Jacobian, LU factors, integrator workspace, 5.5 kB per
     cell) -- both measured (peak resident memory of a 0.02-revolution IDA run on the 151 x 21, 300 x 42 and
     600 x 84 grids: 4.8, 6.6 and 6.4 kB per cell in all, docs/validation.md) -- and ``recordings`` (per output:
     40 bytes per recorded number while running, then the arrays; fields 8 bytes per cell from
-    ``record_from_revolution`` on)."""
+    ``record_from_revolution`` on); ``band_rows`` > 0 (``method="bdf2"``) adds the band LU, 8 bytes per row and
+    cell."""
     outputs = revolutions * outputs_per_revolution + 1
     scalars = 3 + sum(dict(force=2, min_film=1, mass=1, outflow=2).get(k, 0) for k in record)
     fields = sum(k in FIELD_SERIES for k in record)
     field_outputs = max(0.0, revolutions - record_from_revolution) * outputs_per_revolution + 1
-    return dict(model=1100.0 * cells, solver=5500.0 * (cells + N_ROTOR),
-                recordings=40.0 * scalars * outputs + 8.0 * cells * fields * field_outputs)
+    parts = dict(model=1100.0 * cells, solver=5500.0 * (cells + N_ROTOR))
+    if band_rows:
+        parts["band LU"] = 8.0 * band_rows * cells
+    return dict(parts, recordings=40.0 * scalars * outputs + 8.0 * cells * fields * field_outputs)
 
 
-def check_orbit_memory(cells, revolutions, outputs_per_revolution=100, record=(), record_from_revolution=0.0):
+def check_orbit_memory(cells, revolutions, outputs_per_revolution=100, record=(), record_from_revolution=0.0, *,
+                       band_rows=0.0):
     """Refuse (one line, :class:`~transient.checks.MemoryLimitError`) an orbit run whose :func:`orbit_memory`
     exceeds the stated share of the machine's memory, naming the parameters to change: the grid when the film and
     its solver alone do not fit, else the run's length and recordings."""
-    parts = orbit_memory(cells, revolutions, outputs_per_revolution, record, record_from_revolution)
-    if parts["model"] + parts["solver"] > memory_limit():
+    parts = orbit_memory(cells, revolutions, outputs_per_revolution, record, record_from_revolution,
+                         band_rows=band_rows)
+    if sum(v for k, v in parts.items() if k != "recordings") > memory_limit():
         advice = GRID_ADVICE
     else:
         advice = ("lower revolutions or outputs_per_revolution, or record fewer series (record=, "
