@@ -121,7 +121,8 @@ def main(argv: list[str] | None = None) -> int:
     except (ValueError, TypeError, OSError, RuntimeError, ImportError, MemoryError) as e:
         if a.traceback:
             raise
-        print(f"transient: error: {_one_line(e)}", file=sys.stderr)
+        shell = getattr(e, "command_line", "")  # an error with advice for the shell (a checkpoint: --fresh)
+        print(f"transient: error: {' '.join(shell.split()) if shell else _one_line(e)}", file=sys.stderr)
         return 2
 
 

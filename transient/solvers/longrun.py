@@ -41,6 +41,7 @@ from typing import Callable
 
 import numpy as np
 
+from transient.checks import check_bool
 from transient.results import (FileFault, NotARegularFile, NpzReader, _content_digest, atomic_savez, code_version,
                                read_npz)
 from transient.solvers.integrate import Stats, solve
@@ -59,9 +60,19 @@ class Interrupted(KeyboardInterrupt):
         self.command_line = command_line or message
 
 
+#: How a refused checkpoint is set aside: from Python (``resume=False``) and from the shell (the scenarios' flag).
+FRESH_PYTHON = "run with resume=False to start afresh"
+FRESH_SHELL = "run the same command with --fresh to start afresh"
+
+
 class CheckpointError(ValueError):
     """A checkpoint that cannot be used: other parameters or code, inconsistent, unreadable, or in use by
-    another process."""
+    another process. The message advises Python's ``resume=False``; ``command_line`` the same for the shell
+    (``--fresh``)."""
+
+    def __init__(self, message: str, command_line: str = ""):
+        super().__init__(message)
+        self.command_line = command_line or message.replace(FRESH_PYTHON, FRESH_SHELL)
 
 
 class CheckpointWriteError(FileFault):
@@ -109,6 +120,9 @@ def run_long(problem_at: Callable, y0, t0: float, dt_out: float, n_outputs: int,
     if -(-n_outputs // chunk_outputs) > MAX_CHUNKS:
         raise ValueError(f"{n_outputs} outputs in chunks of {chunk_outputs} make more than {MAX_CHUNKS} chunks; "
                          "use longer chunks")
+    resume = check_bool("resume", resume)
+    if progress is not None:
+        progress = check_bool("progress", progress)
     uname, ulen = unit
     ckpt = _Checkpoint(checkpoint, key or {}, label) if checkpoint else None
     y = np.array(y0, dtype=float)
@@ -205,7 +219,7 @@ class _Checkpoint:
     """A checkpoint file, its advisory lock and its key."""
 
     #: what to do with a checkpoint that cannot be resumed
-    FRESH = "delete it or run with resume=False to start afresh"
+    FRESH = f"delete it or {FRESH_PYTHON}"
 
     def __init__(self, path, key: dict, label: str):
         self.path = Path(path)

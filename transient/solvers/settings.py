@@ -38,6 +38,13 @@ DEFAULT = _Default()
 
 #: Film formulations of the journal orbit: the universal variable (every method) or the content ``H theta``.
 FORMULATIONS = ("content", "universal")
+#: The per-stage film criterion of ``rk4`` when ``inner_tolerance`` is left out (Rho & Kim's eq. 6).
+RK4_INNER_TOLERANCE = 1e-6
+#: The settings of :class:`Integration` that only some methods use, by method (the others are refused when given):
+#: ``linear_solver`` the SUNDIALS methods, ``dt`` and ``inner_tolerance`` the fixed-step ``rk4``,
+#: ``steps_per_revolution`` ``rk4`` (its steps) and ``bdf2`` (its least number of steps).
+METHOD_SETTINGS = {"cvode": ("linear_solver",), "ida": ("linear_solver",), "bdf": (), "radau": (), "lsoda": (),
+                   "rk4": ("dt", "inner_tolerance", "steps_per_revolution"), "bdf2": ("steps_per_revolution",)}
 
 
 @dataclass(frozen=True)
@@ -48,15 +55,19 @@ class Integration:
     the model's dimensionless states) in [1e-30, 1]; ``formulation`` ``None`` (the model's default),
     ``"universal"`` or ``"content"``; ``steps_per_revolution`` [1/rev] ``None`` (the method's default) or in
     [4, 1e7] (``rk4``: its fixed steps; ``bdf2``: its least number of steps); ``inner_tolerance`` [-] > 0
-    (``rk4``: the per-stage film criterion); ``dt`` [-] ``None`` or > 0 (a fixed step in the model's time
-    unit); ``linear_solver`` one of :data:`~transient.solvers.integrate.LINEAR_SOLVERS`."""
+    (``rk4``: the per-stage film criterion; default ``RK4_INNER_TOLERANCE``); ``dt`` [-] ``None`` or > 0 (the
+    fixed step of ``rk4`` in the model's time unit); ``linear_solver`` one of
+    :data:`~transient.solvers.integrate.LINEAR_SOLVERS` (the SUNDIALS methods ``cvode`` and ``ida``).
+
+    A setting the chosen method does not use is refused, naming the setting and the method
+    (:data:`METHOD_SETTINGS`): ``Integration(method="bdf2", dt=0.5)`` is an error, not a silent no-op."""
 
     method: str = "ida"
     rtol: float = 1e-6
     atol: float = 1e-9
     formulation: str | None = None
     steps_per_revolution: float | None = None
-    inner_tolerance: float = 1e-6
+    inner_tolerance: float | None = None
     dt: float | None = None
     linear_solver: str = "auto"
 
@@ -69,10 +80,21 @@ class Integration:
         if self.steps_per_revolution is not None:
             _set(self, "steps_per_revolution", check_range("steps_per_revolution", self.steps_per_revolution,
                                                            "1/rev", 4, 1e7))
-        _set(self, "inner_tolerance", check_positive("inner_tolerance", self.inner_tolerance, "-"))
+        if self.inner_tolerance is not None:
+            _set(self, "inner_tolerance", check_positive("inner_tolerance", self.inner_tolerance, "-"))
         if self.dt is not None:
             _set(self, "dt", check_positive("dt", self.dt, "-"))
         check_choice("linear_solver", self.linear_solver, LINEAR_SOLVERS)
+        for name, unit, unused in (("steps_per_revolution", " [1/rev]", self.steps_per_revolution is None),
+                                   ("inner_tolerance", " [-]", self.inner_tolerance is None),
+                                   ("dt", " [-]", self.dt is None),
+                                   ("linear_solver", "", self.linear_solver == "auto")):
+            if not unused and name not in METHOD_SETTINGS.get(self.method, ()):
+                users = [m for m in METHODS if name in METHOD_SETTINGS.get(m, ())]
+                raise ValueError(f"{name} = {getattr(self, name)!r}{unit} is not used by method {self.method!r}; "
+                                 f"allowed: {name} with method {' or '.join(map(repr, users))}, or leave it out")
+        if self.method == "rk4" and self.inner_tolerance is None:
+            _set(self, "inner_tolerance", RK4_INNER_TOLERANCE)
 
     def key(self) -> dict:
         """The settings that change a run of this method (the others ``None``), to key a checkpoint."""

@@ -16,7 +16,7 @@ import numpy as np
 import scipy.linalg as sla
 from scipy.optimize import brentq
 
-from transient.checks import check_bool, check_int, check_positive, check_range
+from transient.checks import check_bool, check_int, check_memory, check_positive, check_range
 from transient.fv.grid import Axis, Grid2D, interpolate_cells
 from transient.models.journal.feeds import (CircumferentialGroove, Groove, as_feeds, check_feeds, check_resolution,
                                             feed_labels, feed_name)
@@ -45,6 +45,32 @@ SPEED_RANGE_RPM = (1e-3, 1e6)
 #: film puts the fronts too far from the finer one's: 50 x 102 -> 100 x 102 took 36 Newton iterations, 15 from rest).
 SEQUENCE_CELLS = 10_000
 SEQUENCE_MIN_THETA = 100
+
+
+#: Memory per film cell [bytes], peak resident memory measured on the 200 x 50 and 400 x 100 grids
+#: (docs/validation.md, "Memory before a run"): the grid's arrays (what the constructor builds: 60-75), the film at one
+#: speed (operator tables and scratch arrays: 1020-1030) and a steady solve or equilibrium with it (Jacobian of
+#: 13 entries per cell, SuperLU's factors, Newton's work: 6.3-6.5 kB in all).
+GRID_BYTES_PER_CELL = 100.0
+FILM_BYTES_PER_CELL = 1100.0
+STEADY_BYTES_PER_CELL = 6500.0
+#: The advice of every refusal for the size of a bearing's grid.
+GRID_ADVICE = "use a coarser grid (JournalBearing(grid=(n_theta, n_axial)) with fewer cells)"
+
+
+def bearing_memory(n_cells) -> dict:
+    """Bytes a bearing of ``n_cells`` film cells needs to be built and have its film solved once (a steady state, an
+    equilibrium), by part: ``grid``, ``film`` and ``steady solve`` (the per-cell costs above)."""
+    return {"grid": GRID_BYTES_PER_CELL * n_cells, "film": FILM_BYTES_PER_CELL * n_cells,
+            "steady solve": (STEADY_BYTES_PER_CELL - FILM_BYTES_PER_CELL) * n_cells}
+
+
+def check_bearing_memory(grid_shape) -> float:
+    """Refuse, before any array is allocated, a grid whose film this machine cannot build and solve
+    (:func:`~transient.checks.check_memory`, :func:`bearing_memory`), naming the grid."""
+    n = int(grid_shape[0]) * int(grid_shape[1])
+    return check_memory(f"a journal bearing on grid = ({grid_shape[0]}, {grid_shape[1]}) ({n} cells)",
+                        bearing_memory(n), GRID_ADVICE)
 
 
 def check_speed(speed_rpm) -> float:
@@ -200,6 +226,7 @@ class JournalBearing:
 
     # ---------------------------------------------------------------------------------------------
     def _build_grid(self):
+        check_bearing_memory(self.grid_shape)
         n_theta, n_axial = self.grid_shape
         R = self.radius
         half = 0.5 * self.length / R

@@ -29,8 +29,9 @@ from typing import Callable
 
 import numpy as np
 
-from transient.checks import ATOL_FLOOR, ATOL_WHY, check_choice, check_memory, check_positive, check_range
-from transient.models.journal.bearing import JournalBearing, check_speed
+from transient.checks import (ATOL_FLOOR, ATOL_WHY, check_choice, check_memory, check_positive, check_range,
+                              memory_limit)
+from transient.models.journal.bearing import GRID_ADVICE, JournalBearing, check_speed
 from transient.models.journal.film import read_only
 from transient.models.journal.flows import film_flows
 from transient.models.journal.kernels import (N_ROTOR, content_jacobian, content_ode_jacobian, content_residual,
@@ -54,6 +55,10 @@ CONTENT_RTOL_FACTOR = 0.1
 #: Newton tolerance on the pressure (p0) and the content H theta of every cell.
 BDF2_MIN_STEPS = 550
 BDF2_FILM_TOL = 1e-8
+#: ``method="bdf2"``: rows of LAPACK band storage (2 kl + ku + 1) of its bordered band LU per cell of the grid's
+#: smaller dimension, reverse Cuthill-McKee on the Newton pattern: 3.0 with a full-length groove, up to 6.2 with a
+#: partial one (measured on 151 x 21, 64 x 64, 100 x 30, 40 x 100 and 300 x 42); 8 bytes each per film cell.
+BDF2_BAND_ROWS = 6.2
 RECORDABLE = ("force", "pressure", "film_content", "min_film", "mass", "outflow", "supply_flow", "side_leakage")
 FIELD_SERIES = ("pressure", "film_content")
 
@@ -84,6 +89,7 @@ class JournalOrbit:
                                      why="(mass eccentricity, must be below the clearance)")
         self.load = check_range("load", load, "N", 0.0, np.inf, high_open=True)
         self.speed_rpm = check_speed(speed_rpm)
+        check_orbit_grid_memory(bearing.n_cells)
         self.film = bearing.film(speed_rpm)
         f = self.film
         mc_w2 = self.rotor_mass * bearing.clearance * f.omega ** 2
@@ -258,9 +264,16 @@ class JournalOrbit:
                     load=self.load, speed_rpm=self.speed_rpm)
 
     # ---------------------------------------------------------------------------------------------
-    def memory_estimate(self, revolutions, outputs_per_revolution=100, record=(), record_from_revolution=0.0) -> dict:
-        """Bytes a :meth:`run` will need, by part (:func:`orbit_memory`)."""
-        return orbit_memory(self.film.n, revolutions, outputs_per_revolution, record, record_from_revolution)
+    def memory_estimate(self, revolutions, outputs_per_revolution=100, record=(), record_from_revolution=0.0, *,
+                        method="ida") -> dict:
+        """Bytes a :meth:`run` will need, by part (:func:`orbit_memory`; ``method="bdf2"`` adds its band LU)."""
+        return orbit_memory(self.film.n, revolutions, outputs_per_revolution, record, record_from_revolution,
+                            band_rows=self._band_rows(method))
+
+    def _band_rows(self, method) -> float:
+        """Band storage rows per film cell of ``method``'s linear solver (``bdf2``: ``BDF2_BAND_ROWS`` times the
+        grid's smaller dimension, plus the diagonal; the others: none)."""
+        return BDF2_BAND_ROWS * min(self.bearing.grid_shape) + 1.0 if method == "bdf2" else 0.0
 
     def run(self, revolutions, method=DEFAULT, rtol=DEFAULT, atol=DEFAULT, steps_per_revolution=DEFAULT,
             outputs_per_revolution=DEFAULT, *, record=DEFAULT, record_from_revolution=DEFAULT,
@@ -309,8 +322,10 @@ class JournalOrbit:
             from it; it is keyed on every parameter and setting of the run and refused (naming the one
             that differs) if any changed. Ctrl-C says where it is and how to resume.
         progress : a progress bar over the chunks (default: when the run has more than one chunk).
-        touch_gap : stop with a clear message when the eccentricity ratio reaches ``1 - touch_gap`` (with
-            boundary layers ``1 - 2 delta / C - touch_gap``: "boundary layers touch at t = ...").
+        touch_gap : stop (``success=False``, ``touched_at``) with a clear message when the eccentricity ratio
+            reaches ``1 - touch_gap`` (with boundary layers ``1 - 2 delta / C - touch_gap``: "boundary layers touch
+            at t = ..."); 0 turns the detection off, but a run whose journal reaches the wall (a negative film) is
+            still never a success: its message says when and how far.
         stop : ``stop(result_so_far) -> str | None`` called after every chunk; a non-empty string ends
             the run early and becomes its message (e.g. "settled").
         time_budget : wall-clock seconds the whole run may take (None: no limit); past it the run stops with
@@ -330,6 +345,9 @@ class JournalOrbit:
         lr = from_keywords(LongRun, long_run, "long_run", chunk_revolutions=chunk_revolutions, checkpoint=checkpoint,
                            resume=resume, progress=progress, stop=stop, time_budget=time_budget)
         method = ig.method
+        if ig.dt is not None:
+            raise ValueError(f"dt = {ig.dt!r} [-] is not used by the orbit; allowed: steps_per_revolution (the fixed "
+                             "steps of method \"rk4\" per revolution), or leave dt out")
         formulation = ig.formulation or ("content" if method == "bdf2" else "universal")
         rc.check_names(RECORDABLE)
         if method == "bdf2" and formulation != "content":
@@ -341,7 +359,8 @@ class JournalOrbit:
         if revolutions * opr < 1.0 - 1e-9:
             raise ValueError(f"revolutions = {revolutions!r} [rev] is less than one output interval; allowed: >= "
                              f"{1 / opr:g} rev at outputs_per_revolution = {opr}")
-        check_orbit_memory(self.film.n, revolutions, opr, rc.record, rc.record_from_revolution)
+        check_orbit_memory(self.film.n, revolutions, opr, rc.record, rc.record_from_revolution,
+                           band_rows=self._band_rows(method))
         touch_gap = check_range("touch_gap", touch_gap, "-", 0.0, 1.0, high_open=True,
                                 why="(0 turns touch detection off)")
         chunk_revolutions = lr.chunk_revolutions
@@ -384,16 +403,21 @@ class JournalOrbit:
                        stop=user_stop, time_budget=lr.time_budget)
         if method == "rk4":
             out.stats.n_jac = sum(s.n_factorisations for s in step.steppers)
-        touched, message = None, out.message
+        touched, message, success = None, out.message, out.success
         if out.event is not None:
             touched = out.event[0] / self.film.omega
             what = "journal touches the bearing" if self.bearing.layers is None else "boundary layers touch"
             message = (f"{what} (eccentricity ratio {self.bearing.max_eccentricity_ratio - touch_gap:.4f}) at t = "
                        f"{touched:.6g} s ({touched * rpm_to_hz(self.speed_rpm):.2f} revolutions)")
+            success = False
         # the driver's last state, also when a finished checkpoint is resumed and nothing was left to run
         rec.last_y = self.universal_state(out.y) if formulation == "content" else np.array(out.y)
         r = rec.result(method, out.stats, touched, message, out.t)
-        r.success = out.success
+        through = wall_crossing(r.t, np.hypot(r.x, r.y) / self.bearing.clearance, self.bearing.max_eccentricity_ratio)
+        if through and out.event is None:
+            success, r.message = False, (f"the journal {through} (touch_gap > 0 stops a run there)"
+                                         + ("" if out.success else f"; then {out.message}"))
+        r.success = success
         return r
 
     def _stepper(self, ig: Integration, formulation: str, touch_gap: float) -> "_Step":
@@ -427,10 +451,15 @@ class JournalOrbit:
 
     def periodic_response(self, **kwargs):
         """The periodic orbit of this rotor at its speed by shooting, with its Floquet multipliers:
-        :func:`transient.models.journal.periodic.periodic_response` (its arguments)."""
+        :func:`transient.models.journal.periodic.periodic_response` (its arguments); an orbit that reaches the
+        bearing wall is no success."""
         from transient.models.journal.periodic import periodic_response
 
-        return periodic_response(self, **kwargs)
+        p = periodic_response(self, **kwargs)
+        through = wall_crossing(p.t, np.hypot(p.x, p.y) / self.bearing.clearance, self.bearing.max_eccentricity_ratio)
+        if through:  # a periodic orbit through the wall is no result, converged or not
+            p.success, p.message = False, f"the journal {through}; {p.message}"
+        return p
 
     def response_curve(self, speeds_rpm, **kwargs):
         """Periodic orbits along ``speeds_rpm`` by continuation (amplitude, phase, multipliers, unstable speeds):
@@ -495,28 +524,47 @@ class JournalOrbit:
         return {k: np.array(v) for k, v in out.items()}
 
 
-def orbit_memory(cells, revolutions, outputs_per_revolution=100, record=(), record_from_revolution=0.0) -> dict:
+def orbit_memory(cells, revolutions, outputs_per_revolution=100, record=(), record_from_revolution=0.0, *,
+                 band_rows=0.0) -> dict:
     """Bytes an orbit run on ``cells`` film cells will need, by part: ``model`` (the film's arrays and operator
     tables, 1.1 kB per cell) and ``solver`` (sparse Jacobian, LU factors, integrator workspace, 5.5 kB per
     cell) -- both measured (peak resident memory of a 0.02-revolution IDA run on the 151 x 21, 300 x 42 and
     600 x 84 grids: 4.8, 6.6 and 6.4 kB per cell in all, docs/validation.md) -- and ``recordings`` (per output:
     40 bytes per recorded number while running, then the arrays; fields 8 bytes per cell from
-    ``record_from_revolution`` on)."""
+    ``record_from_revolution`` on); ``band_rows`` > 0 (``method="bdf2"``) adds the band LU, 8 bytes per row and
+    cell."""
     outputs = revolutions * outputs_per_revolution + 1
     scalars = 3 + sum(dict(force=2, min_film=1, mass=1, outflow=2).get(k, 0) for k in record)
     fields = sum(k in FIELD_SERIES for k in record)
     field_outputs = max(0.0, revolutions - record_from_revolution) * outputs_per_revolution + 1
-    return dict(model=1100.0 * cells, solver=5500.0 * (cells + N_ROTOR),
-                recordings=40.0 * scalars * outputs + 8.0 * cells * fields * field_outputs)
+    parts = dict(model=1100.0 * cells, solver=5500.0 * (cells + N_ROTOR))
+    if band_rows:
+        parts["band LU"] = 8.0 * band_rows * cells
+    return dict(parts, recordings=40.0 * scalars * outputs + 8.0 * cells * fields * field_outputs)
 
 
-def check_orbit_memory(cells, revolutions, outputs_per_revolution=100, record=(), record_from_revolution=0.0):
+def check_orbit_memory(cells, revolutions, outputs_per_revolution=100, record=(), record_from_revolution=0.0, *,
+                       band_rows=0.0):
     """Refuse (one line, :class:`~transient.checks.MemoryLimitError`) an orbit run whose :func:`orbit_memory`
-    exceeds the stated share of the machine's memory, naming the parameters to change."""
+    exceeds the stated share of the machine's memory, naming the parameters to change: the grid when the film and
+    its solver alone do not fit, else the run's length and recordings."""
+    parts = orbit_memory(cells, revolutions, outputs_per_revolution, record, record_from_revolution,
+                         band_rows=band_rows)
+    if sum(v for k, v in parts.items() if k != "recordings") > memory_limit():
+        advice = GRID_ADVICE
+    else:
+        advice = ("lower revolutions or outputs_per_revolution, or record fewer series (record=, "
+                  "record_from_revolution=) (a long run can go on in parts with start=)")
     check_memory(f"this orbit run ({revolutions:g} rev x {outputs_per_revolution} outputs/rev on {cells} cells)",
-                 orbit_memory(cells, revolutions, outputs_per_revolution, record, record_from_revolution),
-                 "lower revolutions or outputs_per_revolution, record fewer series (record=, record_from_revolution=), "
-                 "or use a coarser grid (a long run can go on in parts with start=)")
+                 parts, advice)
+
+
+def check_orbit_grid_memory(cells):
+    """Refuse, before its film is built, an orbit whose film and integrator alone (:func:`orbit_memory` of a run of
+    one output) do not fit this machine, naming the grid."""
+    parts = orbit_memory(cells, 0.0, 1)
+    parts.pop("recordings")
+    check_memory(f"an orbit on {cells} film cells", parts, GRID_ADVICE)
 
 
 @dataclass
@@ -639,6 +687,17 @@ class _Recorder:
         return OrbitResult(t=np.array(self.t), x=np.array(self.x), y=np.array(self.y), method=method, stats=stats,
                            speed_rpm=o.speed_rpm, clearance=o.bearing.clearance, touched_at=touched, message=message,
                            final_state=self.last_y, final_time=float(tau_end) / o.film.omega, **extra)
+
+
+def wall_crossing(t, eps, limit) -> str:
+    """Where a run's journal reached ``limit`` (e/C = 1, less any boundary layers) or beyond -- a negative film,
+    no result (the touch event, ``touch_gap`` > 0, stops a run before it): "" if it never did, else a phrase with
+    the first output time [s] there and the largest e/C."""
+    over = np.flatnonzero(np.asarray(eps) >= limit)
+    if over.size == 0:
+        return ""
+    return (f"reaches e/C = {float(np.max(eps)):.4f} from t = {float(t[over[0]]):.6g} s (allowed: below "
+            f"{limit:.4g}): a negative film, not a result")
 
 
 def _state_array(y) -> np.ndarray:

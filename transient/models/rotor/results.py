@@ -89,7 +89,9 @@ class RotorEquilibrium(_Nodes, SteadyResult):
 class UnbalanceResponse(_Nodes, StatusResult):
     """The linear unbalance response at one speed: ``displacement`` [m] (n_nodes, 2) complex amplitudes with
     ``x(t) = Re(X e^{i Omega t})`` (``position(node)``); ``stiffness`` [N/m] and ``damping`` [N s/m]
-    (n_bearings, 2, 2) the linearised bearing coefficients used."""
+    (n_bearings, 2, 2) each bearing's quasi-static coefficients at its static load; ``linearisation`` how the
+    bearings entered: ``"film states"`` (the system linearised with the films' own states, the default) or
+    ``"K and C"`` (the quasi-static coefficients above)."""
 
     time_axis = None
     shapes = {"displacement": ("nodes", 2), "stiffness": ("bearing_nodes", 2, 2), "damping": ("bearing_nodes", 2, 2)}
@@ -100,6 +102,7 @@ class UnbalanceResponse(_Nodes, StatusResult):
     nodes: list = None
     bearing_nodes: list = None
     speed_rpm: float = quantity("rpm", 0.0)
+    linearisation: str | None = None
 
     def amplitude(self, node) -> tuple[float, float]:
         """Peak amplitudes |X|, |Y| [m] of ``node``."""

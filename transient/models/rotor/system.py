@@ -27,10 +27,12 @@ import scipy.sparse.linalg as spla
 from scipy.integrate import quad
 from scipy.optimize import brentq
 
-from transient.checks import (check_choice, check_instance, check_int, check_items, check_memory, check_positive,
-                              check_range, check_rtol, check_vector, short_repr)
-from transient.models.journal.bearing import JournalBearing, NoEquilibriumError, check_speed
+from transient.checks import (check_bool, check_choice, check_instance, check_int, check_items, check_memory,
+                              check_positive, check_range, check_rtol, check_vector, memory_limit, short_repr)
+from transient.models.journal.bearing import (FILM_BYTES_PER_CELL, GRID_ADVICE, SPEED_RANGE_RPM, JournalBearing,
+                                              NoEquilibriumError, bearing_memory, check_speed)
 from transient.models.journal.film import read_only
+from transient.models.journal.orbit import wall_crossing
 from transient.models.rotor.model import SystemDAE
 from transient.models.rotor.results import RotorEquilibrium, RotorRunResult, UnbalanceResponse
 from transient.models.rotor.rotor import Rotor
@@ -40,6 +42,9 @@ from transient.solvers.newton import NewtonError, newton
 from transient.units import rpm_to_rad_s
 
 RUN_METHODS = ("ida",)
+#: How :meth:`RotorBearingSystem.unbalance_response` linearised the bearings, by ``film_states``
+#: (``UnbalanceResponse.linearisation``).
+LINEARISATIONS = {True: "film states", False: "K and C"}
 #: a shaft node's bearing support in the start of the equilibrium: this many times the largest of the rotor's
 #: stiffness and its gravity load per clearance (the reactions are those of rigid supports to about 1e-6)
 SUPPORT_STIFFNESS = 1e6
@@ -47,6 +52,8 @@ SUPPORT_STIFFNESS = 1e6
 #: distance from the shaft axis, in clearances; balanced rotors are far below one, test rigs' deliberate
 #: unbalances about one)
 MAX_UNBALANCE_CLEARANCES = 10.0
+#: the longest run of a speed function [s] (a year): a shaft that has not turned its revolutions by then never will
+MAX_RUN_SECONDS = 3.2e7
 
 
 class RotorBearingSystem:
@@ -164,6 +171,7 @@ class RotorBearingSystem:
         speed = check_speed(speed_rpm)
         for node, b in self.bearings.items():
             b._check_supplied()
+        self._check_steady_memory()
         dae = self.dae(speed)
         y = self._steady(dae, 1.0)
         return self._equilibrium_result(dae, y, speed)
@@ -303,12 +311,15 @@ class RotorBearingSystem:
             bearings.append((int(unit[0][0]), int(unit[1][0]), kb, cb))
         return r.mass, r.damping, r.gyroscopic, r.stiffness, bearings
 
-    def unbalance_response(self, speed_rpm, film_states=False) -> UnbalanceResponse:
+    def unbalance_response(self, speed_rpm, film_states=True) -> UnbalanceResponse:
         """The linear unbalance response at ``speed_rpm``: complex amplitudes per node (``position(node)``,
-        ``x(t) = Re(X e^{i Omega t})``). Default: the rotor with each bearing's K and C at its static load
-        (:meth:`coefficients`, :mod:`transient.models.rotor.linear`); ``film_states=True``: the system linearised
-        with the films' own states (:meth:`linearisation`), ``(A + i B) Z = F`` in the time ``tau = Omega t``."""
+        ``x(t) = Re(X e^{i Omega t})``). Default (``film_states=True``): the system linearised with the films' own
+        states (:meth:`linearisation`), ``(A + i B) Z = F`` in the time ``tau = Omega t``, which the time domain
+        settles to; ``film_states=False``: the rotor with each bearing's quasi-static K and C at its static load
+        (:meth:`coefficients`, :mod:`transient.models.rotor.linear`; Lund's method, which leaves out the films' own
+        dynamics). The result's ``linearisation`` says which (``"film states"`` or ``"K and C"``)."""
         speed = check_speed(speed_rpm)
+        film_states = check_bool("film_states", film_states)
         w = rpm_to_rad_s(speed)
         eq = self.equilibrium(speed)
         coef = self.coefficients(speed, eq)
@@ -330,7 +341,8 @@ class RotorBearingSystem:
                                  stiffness=np.array([coef[n][0] for n in self.bearing_nodes]),
                                  damping=np.array([coef[n][1] for n in self.bearing_nodes]),
                                  nodes=list(r.nodes), bearing_nodes=self.bearing_nodes, speed_rpm=speed,
-                                 success=True, message="linear, film states" if film_states else "linear, K and C")
+                                 linearisation=LINEARISATIONS[film_states], success=True,
+                                 message=f"linear, {LINEARISATIONS[film_states]}")
 
     def linearisation(self, speed_rpm, equilibrium=None) -> "Linearisation":
         """The system linearised at its static equilibrium with the film states included
@@ -393,7 +405,7 @@ class RotorBearingSystem:
 
     # ------------------------------------------------------------------------------------------
     def run(self, revolutions, speed_rpm, method="ida", rtol=1e-6, start=None, checkpoint=None, *, atol=1e-9,
-            outputs_per_revolution=100, chunk_revolutions=None, resume=False, progress=None, touch_gap=0.0,
+            outputs_per_revolution=100, chunk_revolutions=None, resume=False, progress=None, touch_gap=1e-3,
             time_budget=None, reference_speed_rpm=None) -> RotorRunResult:
         """Integrate the rotor on its films over ``revolutions`` shaft revolutions.
 
@@ -411,7 +423,10 @@ class RotorBearingSystem:
             run's constant speed).
         checkpoint : path of an ``.npz`` rewritten after every chunk (``resume=True`` continues from it).
         outputs_per_revolution : outputs per revolution at the reference speed.
-        touch_gap : > 0 stops the run when a journal reaches e/C = 1 - touch_gap.
+        touch_gap : > 0 stops the run (``success=False``, ``touched_at``, the message naming the bearing node, the
+            time and e/C) when a journal reaches e/C = 1 - touch_gap (with boundary layers 1 - 2 delta / C -
+            touch_gap); 0 turns the detection off, but a run whose journal reaches the wall (a negative film) is
+            still never a success.
         reference_speed_rpm : the speed of the films' pressure unit (default: the largest speed of the run;
             a continued run keeps its start's).
         """
@@ -420,7 +435,13 @@ class RotorBearingSystem:
         rtol = check_rtol(rtol)
         atol = check_range("atol", atol, "-", 1e-30, 1.0)
         opr = check_int("outputs_per_revolution", outputs_per_revolution, "1/rev", 1, 1_000_000)
-        touch_gap = check_range("touch_gap", touch_gap, "-", 0.0, 1.0, high_open=True)
+        touch_gap = check_range("touch_gap", touch_gap, "-", 0.0, 1.0, high_open=True,
+                                why="(0 turns touch detection off)")
+        resume = check_bool("resume", resume)
+        if progress is not None:
+            progress = check_bool("progress", progress)
+        n_out = max(1, int(round(revolutions * opr)))
+        self._check_run_memory(n_out)
         t0, y = 0.0, None
         if start is not None:
             if isinstance(start, RotorRunResult):
@@ -439,11 +460,11 @@ class RotorBearingSystem:
         w = rpm_to_rad_s(ref)
 
         def speed(tau):
-            t = tau / w
-            n = speed_fn(t)
+            t = min(max(tau / w, t0), t_end)  # the speed function is taken only inside the run [t0, t_end] (an
+            n = speed_fn(t)                   # integrator may try a step past the end)
             h = 1e-6 * max(t_end - t0, 1e-9)
-            lo = max(t - h, t0)  # the speed function is taken only inside the run
-            dn = (speed_fn(t + h) - speed_fn(lo)) / (t + h - lo) if callable(speed_rpm) else 0.0
+            lo, hi = max(t - h, t0), min(t + h, t_end)
+            dn = (speed_fn(hi) - speed_fn(lo)) / (hi - lo) if callable(speed_rpm) else 0.0
             return n / ref, rpm_to_rad_s(dn) / w ** 2
 
         dae = self.dae(ref, speed)
@@ -456,12 +477,12 @@ class RotorBearingSystem:
         if y.shape != (dae.n,) or not np.all(np.isfinite(y)):
             raise ValueError(f"start state has shape {y.shape} or non-finite entries; this system has {dae.n} finite "
                              "states")
-        n_out = max(1, int(round(revolutions * opr)))
+        for b in dae.blocks:
+            e = float(np.hypot(*b.position(y[dae.Q0:dae.V0])))
+            if e >= b.bearing.max_eccentricity_ratio:
+                raise ValueError(f"start: the journal at bearing node {b.node} is outside the clearance: e/C = {e:.4g} "
+                                 f"[-]; allowed: [0, {b.bearing.max_eccentricity_ratio:.4g})")
         tau0, tau_end = t0 * w, t_end * w
-        check_memory(f"this rotor run ({n_out} outputs, {dae.n} states)",
-                     dict(model=1100.0 * dae.n_film, solver=5500.0 * dae.n,
-                          recordings=8.0 * n_out * (2 * len(self.rotor.nodes) + 2 * len(self.bearings) + 2)),
-                     "lower revolutions or outputs_per_revolution, or use coarser bearing grids")
         rec = _Recorder(self, dae, speed)
         limits = [(b.bearing.max_eccentricity_ratio - touch_gap) ** 2 for b in dae.blocks]
 
@@ -491,14 +512,48 @@ class RotorBearingSystem:
                        checkpoint=checkpoint, resume=resume, key=key, progress=progress,
                        unit=("rev", (tau_end - tau0) / revolutions),
                        label="rotor run", status=rec.status, time_budget=time_budget)
-        touched, message = None, out.message
+        touched, message, success = None, out.message, out.success
         if out.event is not None:
             touched = out.event[0] / w
-            message = f"a journal touches its bearing (e/C = 1 - {touch_gap:g}) at t = {touched:.6g} s"
+            q = np.asarray(out.event[1])[dae.Q0:dae.V0]
+            gaps = [limits[k] - np.sum(np.square(b.position(q))) for k, b in enumerate(dae.blocks)]
+            b = dae.blocks[int(np.argmin(gaps))]
+            message = (f"the journal at bearing node {b.node} touches its bearing (e/C = "
+                       f"{np.hypot(*b.position(q)):.4f}, touch_gap = {touch_gap:g}) at t = {touched:.6g} s")
+            success = False
         rec.last_y = np.array(out.y)
         r = rec.result(method, out.stats, touched, message, out.t / w, ref)
-        r.success = out.success
+        for node, b in zip(self.bearing_nodes, dae.blocks):
+            through = wall_crossing(r.t, r.eccentricity_ratio(node), b.bearing.max_eccentricity_ratio)
+            if through and out.event is None:
+                success = False
+                r.message = (f"the journal at bearing node {node} {through} (touch_gap > 0 stops a run there)"
+                             + ("" if out.success else f"; then {out.message}"))
+                break
+        r.success = success
         return r
+
+    def _check_steady_memory(self):
+        """Refuse, before the films are built, a static equilibrium (the whole system's Newton) that does not fit
+        this machine: each film's grid, film and steady solve
+        (:func:`~transient.models.journal.bearing.bearing_memory`)."""
+        n_film = sum(b.n_cells for b in self.bearings.values())
+        grids = " + ".join(f"{b.grid_shape[0]} x {b.grid_shape[1]}" for b in self.bearings.values())
+        check_memory(f"the static equilibrium of this rotor ({n_film} film cells on bearing grids {grids})",
+                     bearing_memory(n_film), GRID_ADVICE)
+
+    def _check_run_memory(self, n_outputs):
+        """Refuse, before the films, the equilibrium or the integrator are built, a run whose memory exceeds the
+        machine's share (:func:`~transient.checks.check_memory`): per film cell the film (``FILM_BYTES_PER_CELL``)
+        and the integrator's sparse Jacobian and LU (the orbit's measured 5.5 kB per state), the recordings."""
+        n_film = sum(b.n_cells for b in self.bearings.values())
+        n = n_film + 2 * self.rotor.n + 1
+        grids = " + ".join(f"{b.grid_shape[0]} x {b.grid_shape[1]}" for b in self.bearings.values())
+        outputs = 8.0 * n_outputs * (2 * len(self.rotor.nodes) + 2 * len(self.bearings) + 2)
+        parts = dict(model=FILM_BYTES_PER_CELL * n_film, solver=5500.0 * n, recordings=outputs)
+        check_memory(f"this rotor run ({n_outputs} outputs, {n} states on bearing grids {grids})", parts,
+                     GRID_ADVICE if parts["model"] + parts["solver"] > memory_limit() else
+                     "lower revolutions or outputs_per_revolution")
 
     def periodic_response(self, speed_rpm, rtol=1e-6, tol=None, modes=2, outputs_per_revolution=64, max_iter=25):
         """The settled unbalance orbit at ``speed_rpm`` by shooting (Newton-Picard on the ``modes`` least damped
@@ -512,7 +567,14 @@ class RotorBearingSystem:
         tol = rtol if tol is None else check_positive("tol", tol, "-")
         modes = check_int("modes", modes, "-", 1, 20)
         opr = check_int("outputs_per_revolution", outputs_per_revolution, "1/rev", 4, 100000)
-        return periodic_response(self, speed, rtol, tol, modes, opr, check_int("max_iter", max_iter, "-", 1, 1000))
+        p = periodic_response(self, speed, rtol, tol, modes, opr, check_int("max_iter", max_iter, "-", 1, 1000))
+        for node, b in self.bearings.items():  # an orbit through the wall is no result, converged or not
+            x, y = p.position(node)
+            through = wall_crossing(p.t, np.hypot(x, y) / b.clearance, b.max_eccentricity_ratio)
+            if through:
+                p.success, p.message = False, f"the journal at bearing node {node} {through}; {p.message}"
+                break
+        return p
 
     def parameters(self) -> dict:
         """Every parameter of the system (SI), e.g. to key a checkpoint (the rotor's matrices as a digest)."""
@@ -595,31 +657,49 @@ def _diagonal_positions(pattern, rows) -> np.ndarray:
 
 def _speed_schedule(speed_rpm, t0, revolutions):
     """``(speed(t) [rpm], t_end [s], largest speed [rpm])`` of a constant speed or a speed function over the
-    run: a function's run ends when the shaft has turned ``revolutions`` times since ``t0``."""
+    run: a function's run ends when the shaft has turned ``revolutions`` times since ``t0`` (:func:`_run_end`)."""
     if not callable(speed_rpm):
         n = check_speed(speed_rpm)
         return (lambda t: n), t0 + revolutions * 60.0 / n, n
 
     def fn(t):
         v = float(speed_rpm(t))
-        if not np.isfinite(v) or v < 0 or v > 1e6:
-            raise ValueError(f"speed_rpm(t = {t:.6g} s) = {v!r} [rpm]; allowed: [0, 1e6]")
+        if not np.isfinite(v) or v < 0 or v > SPEED_RANGE_RPM[1]:
+            raise ValueError(f"speed_rpm(t = {t:.6g} s) = {v!r} [rpm]; allowed: [0, {SPEED_RANGE_RPM[1]:g}]")
         return v
 
-    n0 = fn(t0)
-    turns = lambda T: quad(fn, t0, T, limit=200)[0] / 60.0 - revolutions  # noqa: E731
-    T = t0 + revolutions * 60.0 / max(n0, 1.0)
-    for _ in range(60):
-        if turns(T) >= 0:
-            break
-        T = t0 + 2 * (T - t0)
-    else:
-        raise ValueError(f"speed_rpm(t): the shaft does not turn {revolutions:g} times in {T - t0:.3g} s")
-    t_end = brentq(turns, t0, T, xtol=1e-12 * max(T, 1.0))
+    t_end = _run_end(fn, t0, revolutions)
     n_max = max(fn(t) for t in np.linspace(t0, t_end, 257))
     if n_max <= 0:
         raise ValueError("speed_rpm(t) is zero over the whole run; allowed: a shaft that turns")
     return fn, t_end, check_speed(n_max)
+
+
+def _run_end(fn, t0, revolutions, max_steps=100_000) -> float:
+    """The time [s] at which a shaft turning at ``fn(t)`` [rpm] from ``t0`` has turned ``revolutions`` times, found
+    from below without evaluating ``fn`` after it (a run-up written for the run's own span may be undefined
+    beyond). Each step turns at most the revolutions left at the fastest speed allowed, or half of them at twice the
+    fastest speed seen, and at most doubles the time since ``t0``; it ends within 1e-12 of the revolutions."""
+    left, t, n_seen = float(revolutions), float(t0), fn(t0)
+    for _ in range(max_steps):
+        if left <= 1e-12 * revolutions:
+            return t
+        if t - t0 > MAX_RUN_SECONDS:
+            break
+        dt = max(60.0 * left / SPEED_RANGE_RPM[1], min(30.0 * left / max(n_seen, 1e-300), t - t0))
+        peak = [0.0]
+
+        def seen(x):
+            v = fn(x)
+            peak[0] = max(peak[0], v)
+            return v
+
+        turned = quad(seen, t, t + dt, limit=200)[0] / 60.0
+        if turned > left:  # the speed rose faster than the step allowed for: back to the end inside the step
+            return brentq(lambda T: quad(fn, t, T, limit=200)[0] / 60.0 - left, t, t + dt, xtol=1e-12 * max(t, 1.0))
+        t, left, n_seen = t + dt, left - turned, max(n_seen, peak[0], fn(t + dt))
+    raise ValueError(f"speed_rpm(t): the shaft does not turn {revolutions:g} times in {t - t0:.3g} s (it turned "
+                     f"{revolutions - left:.6g} times); allowed: a speed that turns the shaft")
 
 
 def _speed_key(fn, t0, t_end) -> str:
