@@ -104,7 +104,7 @@ class Bdf2Model(NamedTuple):
     n_border: int
 
 
-@njit  # not cacheable: takes the model's kernels as arguments (Bdf2Model)
+@njit(inline='always')  # inlined into the model's own cached caller, which holds its kernels as globals
 def _refactor(jacobian, to_state, args, t, cj, b, z, y, yp, data, lu, state, counts):
     """Jacobian ``dF/dz`` (with ``y' = cj y + b``) at the Newton variables ``z`` and its factorisation; False if
     singular."""
@@ -121,7 +121,7 @@ def _refactor(jacobian, to_state, args, t, cj, b, z, y, yp, data, lu, state, cou
     return True
 
 
-@njit  # not cacheable: takes the model's kernels as arguments (Bdf2Model)
+@njit(inline='always')  # inlined into the model's own cached caller, which holds its kernels as globals
 def _update(residual, norm, to_state, args, lu, t, cj, b, z, y, yp, F, dz, scale, err_idx, err_w, counts):
     """Residual at ``z`` and the chord update ``dz``; returns (its size in tolerance units, switched components),
     size = inf if the residual is not finite."""
@@ -137,7 +137,7 @@ def _update(residual, norm, to_state, args, lu, t, cj, b, z, y, yp, F, dz, scale
     return _chord(norm, args, lu, z, F, dz, scale, err_idx, err_w)
 
 
-@njit  # not cacheable: takes the model's kernels as arguments (Bdf2Model)
+@njit(inline='always')  # inlined into the model's own cached caller, which holds its kernels as globals
 def _chord(norm, args, lu, z, F, dz, scale, err_idx, err_w):
     """The update ``dz = scale M^-1 F`` on the current factorisation for the residual ``F`` at ``z``, its size and
     switched components (:func:`_update`)."""
@@ -165,7 +165,7 @@ def _switch_pays(size, rate, switched, cost):
     return left - 1.0 > cost
 
 
-@njit  # not cacheable: takes the model's kernels as arguments (Bdf2Model)
+@njit(inline='always')  # inlined into the model's own cached caller, which holds its kernels as globals
 def newton_step(residual, jacobian, norm, to_state, from_state, args, t, cj, b, y, yp, F, dz, data, lu, y_pred, z,
                 pick, err_idx, err_w, state, counts):
     """Solve one implicit step ``F(t, y, cj y + b) = 0`` (the result in ``y``, ``yp`` and, in the Newton variables,
