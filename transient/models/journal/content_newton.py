@@ -18,7 +18,7 @@ from transient.models.journal.kernels import (N_ROTOR, content_rows, content_uni
 from transient.solvers.integrate.bdf2 import newton_step
 
 
-@njit  # not cacheable: numba counts the kernels handed to newton_step as dynamic globals (compiled once per process)
+@njit(cache=True)  # newton_step is inlined: its kernels are this function's globals
 def bdf2_newton(args, t, cj, b, y, yp, F, dz, data, lu, y_pred, z, pick, err_idx, err_w, state, counts):
     """:func:`~transient.solvers.integrate.bdf2.newton_step` on the content film + rotor, iterating on ``[u, X, Y, VX, VY]``."""
     return newton_step(bdf2_residual, newton_jacobian, film_newton_norm, bdf2_to_state, bdf2_from_state, args, t,
