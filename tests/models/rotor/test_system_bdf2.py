@@ -115,17 +115,16 @@ def test_symmetric_rotor_on_two_bearings_is_the_half_orbit(bearing):
 
 def test_bdf2_agrees_with_ida_on_a_flexible_rotor(bearing):
     """Two films of different clearances and grids on a reduced, gyroscopic, damped shaft with two unbalances:
-    BDF2 and IDA at rtol 1e-6 both within 1e-4 C of IDA at rtol 1e-9, and BDF2's error no more than 3x IDA's."""
+    BDF2 within 1e-6 C (its rtol times the journal positions, below 1 C) of IDA at rtol 1e-9 at rtol 1e-6, and
+    closer at rtol 1e-7 (the error follows the tolerance)."""
     s = flexible_system(bearing)
     kw = dict(outputs_per_revolution=40, atol=1e-10)
     ref = s.run(0.5, 6000, rtol=1e-9, **kw)
-    ida = s.run(0.5, 6000, rtol=1e-6, **kw)
-    bdf2 = s.run(0.5, 6000, method="bdf2", rtol=1e-6, **kw)
-    assert bdf2.success and np.allclose(bdf2.t, ref.t, rtol=1e-12)
-    swing = np.max(np.abs(ref.displacement - ref.displacement[0]))
-    e_ida, e_bdf2 = (np.max(np.abs(r.displacement - ref.displacement)) for r in (ida, bdf2))
-    assert swing > 1e-2 * bearing.clearance
-    assert e_bdf2 < 1e-4 * bearing.clearance and e_bdf2 < max(3 * e_ida, 1e-6 * bearing.clearance), (e_bdf2, e_ida)
+    runs = [s.run(0.5, 6000, method="bdf2", rtol=rtol, **kw) for rtol in (1e-6, 1e-7)]
+    assert all(r.success and np.allclose(r.t, ref.t, rtol=1e-12) for r in runs)
+    assert np.max(np.abs(ref.displacement - ref.displacement[0])) > 1e-2 * bearing.clearance  # it moves
+    err = [np.max(np.abs(r.displacement - ref.displacement)) / bearing.clearance for r in runs]
+    assert err[0] < 1e-6 and err[1] < err[0] / 2, err
 
 
 def test_run_up_agrees_with_ida(bearing):
