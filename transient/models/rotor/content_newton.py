@@ -243,7 +243,8 @@ def rotor_jacobian(t, y, yp, cj, data, args):
 def rotor_norm(z, dz, args):
     """A Newton update of the films (each by :func:`~transient.models.journal.content_newton.film_newton_norm`, which
     may first stop a cell at the switch) and of the angle (``rot.phi_tol``) in units of their tolerances, and the
-    cells that switched regime since the last Jacobian, summed over the films."""
+    cells that switched regime since the last Jacobian in the film with the most: each film's chord degrades with its
+    own switches (the stepper's rule for a refresh counts them as one film's, as the journal orbit's)."""
     films, rot = args
     size = abs(dz[rot.P0]) / rot.phi_tol
     switched = 0
@@ -253,7 +254,8 @@ def rotor_norm(z, dz, args):
         v, w = film_newton_norm(z[o:o + n], dz[o:o + n], f.film)
         if v > size:
             size = v
-        switched += w
+        if w > switched:
+            switched = w
     return size, switched
 
 
