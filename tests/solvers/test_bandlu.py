@@ -57,3 +57,22 @@ def test_random_arrow_needing_pivoting():
 def test_bad_border_is_refused():
     with pytest.raises(ValueError, match="n_border"):
         BorderedBandLU(sp.identity(5, format="csc"), 5)
+
+
+def test_border_partly_outside_the_block():
+    """A wide border of which only a few columns and rows reach the block (a rotor whose films see only its
+    bearing nodes): the same solution as SuperLU, the Schur complement formed on those few."""
+    n, nb = 200, 12
+    rng = np.random.default_rng(1)
+    A = sp.diags([rng.standard_normal(n - abs(k)) for k in (-1, 0, 1)], [-1, 0, 1]) + 4 * sp.identity(n)
+    B, C = np.zeros((n, nb)), np.zeros((nb, n))
+    B[:, [2, 7]] = rng.standard_normal((n, 2))
+    C[[3, 7, 9], :] = rng.standard_normal((3, n))
+    M = sp.bmat([[A, B], [C, rng.standard_normal((nb, nb)) + 5 * np.eye(nb)]]).tocsc()
+    M.eliminate_zeros()
+    M.sort_indices()
+    lu = BorderedBandLU(M, nb)
+    assert lu.arrays.cols.tolist() == [2, 7] and lu.arrays.rows.tolist() == [3, 7, 9]
+    assert lu.factor(M.data) == 0
+    rhs = rng.standard_normal(n + nb)
+    assert np.allclose(lu.solve(rhs), spla.spsolve(M, rhs), rtol=1e-10, atol=1e-12)

@@ -6,6 +6,10 @@ With the unknowns split into the ``n`` block unknowns and the ``nb`` border unkn
     [A  B] [x1]   [r1]        A x1' = r1,   Z = A^-1 B,   S = D - C Z   (nb x nb Schur complement)
     [C  D] [x2] = [r2]   ->   x2 = S^-1 (r2 - C x1'),   x1 = x1' - Z x2
 
+Only the border columns that reach the block (``B``'s nonzero columns) and the border rows that do (``C``'s) enter
+``Z`` and ``C Z`` (a rotor on a few bearings: the films see only the coordinates of the bearing nodes, a few of its
+many); the rest of ``S`` is ``D``.
+
 ``A`` is reordered once per pattern by reverse Cuthill-McKee (``scipy.sparse.csgraph.reverse_cuthill_mckee``)
 and factored by LAPACK's band LU with partial pivoting (``dgbtrf`` / ``dgbtrs``), called from numba through
 the addresses scipy exports in ``scipy.linalg.cython_lapack`` (an intrinsic that calls a function pointer
@@ -57,16 +61,19 @@ def _call11(typingctx, address, a1, a2, a3, a4, a5, a6, a7, a8, a9, a10, a11):
 class BandLU(NamedTuple):
     """The arrays of a bordered band LU (filled by :func:`band_factor`, used by :func:`band_solve`).
 
-    ``ints`` = (n, n, kl, ku, ldab, info, nrhs=1, nrhs=nb, ldb=n) as LAPACK's int32 arguments; ``trans`` = b"N";
-    ``address`` = (dgbtrf, dgbtrs); ``perm[k]`` = original index of band row k; ``kind``/``target``: where each CSC
-    data entry goes (band: flat index into ``ab``; border column: flat index ``e * n + i'`` into ``B``; border row:
-    ``e * n + j'`` into ``C``; corner: ``e * nb + f`` into ``D``). ``ab`` (n, ldab), ``B`` and ``Z`` (nb, n) are
-    stored C-ordered, i.e. as LAPACK's column-major (ldab, n) band and (n, nb) right-hand sides."""
+    ``ints`` = (n, n, kl, ku, ldab, info, nrhs=1, nrhs=len(cols), ldb=n) as LAPACK's int32 arguments; ``trans`` =
+    b"N"; ``address`` = (dgbtrf, dgbtrs); ``perm[k]`` = original index of band row k; ``cols`` / ``rows``: the border
+    columns / rows with entries in the block; ``kind``/``target``: where each CSC data entry goes (band: flat index
+    into ``ab``; border column ``cols[e]``: flat index ``e * n + i'`` into ``B``; border row ``rows[e]``: ``e * n +
+    j'`` into ``C``; corner: ``e * nb + f`` into ``D``). ``ab`` (n, ldab), ``B`` and ``Z`` (len(cols), n) are stored
+    C-ordered, i.e. as LAPACK's column-major (ldab, n) band and (n, len(cols)) right-hand sides."""
 
     ints: np.ndarray
     trans: np.ndarray
     address: np.ndarray
     perm: np.ndarray
+    cols: np.ndarray
+    rows: np.ndarray
     kind: np.ndarray
     target: np.ndarray
     ab: np.ndarray
@@ -131,8 +138,9 @@ def _gbtrs(lu, b, nrhs_slot):
 
 @njit(cache=True)
 def band_factor(data, lu):
-    """Factor the matrix with CSC ``data`` (pattern order): band LU of A, Z = A^-1 B, LU of S = D - C Z.
-    Returns 0, or LAPACK's info > 0 (a zero pivot in A), or -1 (S singular)."""
+    """Factor the matrix with CSC ``data`` (pattern order): band LU of A, Z = A^-1 B, LU of S = D - C Z (on the
+    border rows and columns that reach the block). Returns 0, or LAPACK's info > 0 (a zero pivot in A), or -1 (S
+    singular)."""
     ab, B, C, D = lu.ab, lu.B, lu.C, lu.D
     flat = ab.reshape(-1)
     flat[:] = 0.0
@@ -159,15 +167,18 @@ def band_factor(data, lu):
     nb = D.shape[0]
     if nb == 0:
         return 0
-    Z[:, :] = B
-    _gbtrs(lu, Z, 7)
+    S[:, :] = D
+    cols, rows = lu.cols, lu.rows
+    if cols.size > 0:
+        Z[:, :] = B
+        _gbtrs(lu, Z, 7)
     n = Z.shape[1]
-    for e in range(nb):
-        for f in range(nb):
-            s = D[e, f]
+    for a in range(rows.size):
+        for b in range(cols.size):
+            s = S[rows[a], cols[b]]
             for i in range(n):
-                s -= C[e, i] * Z[f, i]
-            S[e, f] = s
+                s -= C[a, i] * Z[b, i]
+            S[rows[a], cols[b]] = s
     return 0 if _small_lu(S, lu.spiv) else -1
 
 
@@ -183,16 +194,17 @@ def band_solve(lu, rhs, out):
         x2[e] = rhs[n + e]
     _gbtrs(lu, x1, 6)
     if nb > 0:
-        for e in range(nb):
-            s = x2[e]
+        rows, cols = lu.rows, lu.cols
+        for a in range(rows.size):
+            s = x2[rows[a]]
             for i in range(n):
-                s -= C[e, i] * x1[i]
-            x2[e] = s
+                s -= C[a, i] * x1[i]
+            x2[rows[a]] = s
         _small_solve(lu.S, lu.spiv, x2)
-        for f in range(nb):
-            v = x2[f]
+        for b in range(cols.size):
+            v = x2[cols[b]]
             for i in range(n):
-                x1[i] -= Z[f, i] * v
+                x1[i] -= Z[b, i] * v
     for k in range(n):
         out[perm[k]] = x1[k]
     for e in range(nb):
@@ -229,20 +241,23 @@ class BorderedBandLU:
         kind[in_block] = _BAND
         target[in_block] = ci * ldab + (kl + ku + ri - ci)
         bc = (rows < n) & (cols >= n)
-        kind[bc], target[bc] = _BORDER_COL, (cols[bc] - n) * n + inv[rows[bc]]
+        b_cols = np.unique(cols[bc] - n)  # the border columns / rows that reach the block
+        kind[bc], target[bc] = _BORDER_COL, np.searchsorted(b_cols, cols[bc] - n) * n + inv[rows[bc]]
         br = (rows >= n) & (cols < n)
-        kind[br], target[br] = _BORDER_ROW, (rows[br] - n) * n + inv[cols[br]]
+        b_rows = np.unique(rows[br] - n)
+        kind[br], target[br] = _BORDER_ROW, np.searchsorted(b_rows, rows[br] - n) * n + inv[cols[br]]
         co = (rows >= n) & (cols >= n)
         kind[co], target[co] = _CORNER, (rows[co] - n) * n_border + (cols[co] - n)
         self.n, self.n_border, self.kl, self.ku, self.perm = n, n_border, kl, ku, perm
         address = np.array([get_cython_function_address("scipy.linalg.cython_lapack", name)
                             for name in ("dgbtrf", "dgbtrs")], dtype=np.int64)
         self.arrays = BandLU(
-            ints=np.array([n, n, kl, ku, ldab, 0, 1, n_border, n], dtype=np.int32),
-            trans=np.frombuffer(b"N", dtype=np.uint8).copy(), address=address, perm=perm, kind=kind, target=target,
+            ints=np.array([n, n, kl, ku, ldab, 0, 1, b_cols.size, n], dtype=np.int32),
+            trans=np.frombuffer(b"N", dtype=np.uint8).copy(), address=address, perm=perm,
+            cols=b_cols.astype(np.int64), rows=b_rows.astype(np.int64), kind=kind, target=target,
             ab=np.zeros((n, ldab)), ipiv=np.zeros(n, dtype=np.int32),
-            B=np.zeros((n_border, n)), C=np.zeros((n_border, n)), D=np.zeros((n_border, n_border)),
-            Z=np.zeros((n_border, n)), S=np.zeros((n_border, n_border)),
+            B=np.zeros((b_cols.size, n)), C=np.zeros((b_rows.size, n)), D=np.zeros((n_border, n_border)),
+            Z=np.zeros((b_cols.size, n)), S=np.zeros((n_border, n_border)),
             spiv=np.zeros(n_border, dtype=np.int64), x1=np.zeros(n), x2=np.zeros(n_border))
 
     def factor(self, data) -> int:

@@ -33,15 +33,17 @@ from transient.models.journal.bearing import (FILM_BYTES_PER_CELL, GRID_ADVICE, 
                                               NoEquilibriumError, bearing_memory, check_speed)
 from transient.models.journal.film import read_only
 from transient.models.journal.orbit import wall_crossing
+from transient.models.rotor.content_form import ContentSystem
 from transient.models.rotor.model import SystemDAE
 from transient.models.rotor.results import RotorEquilibrium, RotorRunResult, UnbalanceResponse
 from transient.models.rotor.rotor import Rotor
 from transient.solvers.integrate import Problem, Stats
+from transient.models.journal.orbit import BDF2_MIN_STEPS
 from transient.solvers.longrun import run_long
 from transient.solvers.newton import NewtonError, newton
 from transient.units import rpm_to_rad_s
 
-RUN_METHODS = ("ida",)
+RUN_METHODS = ("ida", "bdf2")
 #: How :meth:`RotorBearingSystem.unbalance_response` linearised the bearings, by ``film_states``
 #: (``UnbalanceResponse.linearisation``).
 LINEARISATIONS = {True: "film states", False: "K and C"}
@@ -415,7 +417,11 @@ class RotorBearingSystem:
             turns that often).
         speed_rpm [rpm] : a number, or a function of the time t [s] (run-up, coast-down): it enters the films'
             Couette flow and the unbalance force (angle = integral of the speed, plus the m e Omega' term).
-        method : ``"ida"`` (SUNDIALS IDA, sparse SuperLU on the block-arrow pattern).
+        method : ``"ida"`` (SUNDIALS IDA, sparse SuperLU on the block-arrow pattern) or ``"bdf2"`` (variable-step
+            BDF2 on the films' content form, a bordered band LU with one band block per film and the rotor as its
+            border, :mod:`~transient.models.rotor.content_form`; rtol and atol act on the rotor's coordinates and
+            velocities, every film is solved to the journal's Newton tolerance each step, at least
+            ``BDF2_MIN_STEPS`` steps per revolution at the reference speed).
         rtol, atol : tolerances (atol on the dimensionless states: p/p0, journal position in clearances).
         start : None (the static equilibrium at the start speed, at rest), a previous :class:`RotorRunResult`
             (continued from its final state and time, at its reference speed) or ``(t [s], state)`` (a state at this
@@ -483,22 +489,33 @@ class RotorBearingSystem:
                 raise ValueError(f"start: the journal at bearing node {b.node} is outside the clearance: e/C = {e:.4g} "
                                  f"[-]; allowed: [0, {b.bearing.max_eccentricity_ratio:.4g})")
         tau0, tau_end = t0 * w, t_end * w
-        rec = _Recorder(self, dae, speed)
         limits = [(b.bearing.max_eccentricity_ratio - touch_gap) ** 2 for b in dae.blocks]
+        events = None
+        if touch_gap > 0:
+            def events(t, yy, out):  # the rotor's states sit at the same places in both layouts
+                q = yy[dae.Q0:dae.V0]
+                for k, b in enumerate(dae.blocks):
+                    X, Y = b.position(q)
+                    out[k] = limits[k] - (X * X + Y * Y)
+        n_events = len(dae.blocks) if events else 0
+        stepping = {}
+        if method == "bdf2":
+            form = ContentSystem(dae)
+            rec = _Recorder(self, dae, speed, form.universal_state)
+            y_run = form.content_state(y)
+            problem_at = lambda y_, tau_: form.problem(y_, tau_, events, n_events)  # noqa: E731
+            stepping = dict(max_step=2 * np.pi / BDF2_MIN_STEPS, first_step=2 * np.pi * 1e-4,
+                            options={"bdf2": form.model()})
+        else:
+            rec = _Recorder(self, dae, speed)
+            y_run = y
 
-        def problem_at(y_, tau_):
-            y_ = np.array(y_, dtype=float)
-            events = None
-            if touch_gap > 0:
-                def events(t, yy, out):
-                    q = yy[dae.Q0:dae.V0]
-                    for k, b in enumerate(dae.blocks):
-                        X, Y = b.position(q)
-                        out[k] = limits[k] - (X * X + Y * Y)
-            return Problem(y0=y_, yp0=dae.consistent_yp(tau_, y_), residual=dae.residual, jac_pattern=dae.pattern,
-                           jac_residual=dae.jacobian, events=events, n_events=len(dae.blocks) if events else 0,
-                           event_terminal=[True] * len(dae.blocks), event_direction=[-1] * len(dae.blocks),
-                           name="rotor on journal bearings")
+            def problem_at(y_, tau_):
+                y_ = np.array(y_, dtype=float)
+                return Problem(y0=y_, yp0=dae.consistent_yp(tau_, y_), residual=dae.residual, jac_pattern=dae.pattern,
+                               jac_residual=dae.jacobian, events=events, n_events=n_events,
+                               event_terminal=[True] * len(dae.blocks), event_direction=[-1] * len(dae.blocks),
+                               name="rotor on journal bearings")
 
         chunk = chunk_revolutions if chunk_revolutions is not None else (10.0 if checkpoint else revolutions)
         chunk = check_range("chunk_revolutions", chunk, "rev", 1.0 / opr, np.inf)
@@ -507,11 +524,11 @@ class RotorBearingSystem:
                    chunk_revolutions=chunk,
                    start_state=hashlib.sha256(np.ascontiguousarray(y).tobytes()).hexdigest()[:16])
         rec.last_y = y
-        out = run_long(problem_at, y, tau0, (tau_end - tau0) / n_out, n_out, rec, method=method, rtol=rtol,
+        out = run_long(problem_at, y_run, tau0, (tau_end - tau0) / n_out, n_out, rec, method=method, rtol=rtol,
                        atol=dae.absolute_tolerance(atol), chunk_outputs=max(1, int(round(chunk * opr))),
                        checkpoint=checkpoint, resume=resume, key=key, progress=progress,
                        unit=("rev", (tau_end - tau0) / revolutions),
-                       label="rotor run", status=rec.status, time_budget=time_budget)
+                       label="rotor run", status=rec.status, time_budget=time_budget, **stepping)
         touched, message, success = None, out.message, out.success
         if out.event is not None:
             touched = out.event[0] / w
@@ -521,7 +538,7 @@ class RotorBearingSystem:
             message = (f"the journal at bearing node {b.node} touches its bearing (e/C = "
                        f"{np.hypot(*b.position(q)):.4f}, touch_gap = {touch_gap:g}) at t = {touched:.6g} s")
             success = False
-        rec.last_y = np.array(out.y)
+        rec.last_y = rec.universal(out.y)
         r = rec.result(method, out.stats, touched, message, out.t / w, ref)
         for node, b in zip(self.bearing_nodes, dae.blocks):
             through = wall_crossing(r.t, r.eccentricity_ratio(node), b.bearing.max_eccentricity_ratio)
@@ -711,15 +728,16 @@ def _speed_key(fn, t0, t_end) -> str:
 class _Recorder:
     """Keeps t, the speed, every node's x, y and every bearing's film force at the outputs (never the state)."""
 
-    def __init__(self, system, dae, speed: Callable):
+    def __init__(self, system, dae, speed: Callable, universal: Callable | None = None):
         self.s, self.dae, self.speed = system, dae, speed
+        self.universal = universal or (lambda y: np.array(y))  # the run's state in the universal layout
         self.t, self.n, self.d, self.f = [], [], [], []
         self.last_y = None
         self.last_tau = -np.inf
 
     def observe(self, tau, y):
         dae = self.dae
-        self.last_y = y = np.array(y)
+        self.last_y = y = self.universal(y)
         if tau <= self.last_tau:
             return
         self.last_tau = tau

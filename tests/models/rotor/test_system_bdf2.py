@@ -1,0 +1,188 @@
+"""``RotorBearingSystem.run(method="bdf2")`` (models/rotor/content_newton.py, content_form.py): the Newton Jacobian
+in the variables z = [u_1, ..., u_k, q, v, phi] against central differences, the band of the whole system equal to one
+film's, the one-node rotor and the symmetric two-bearing rotor against the journal orbit's BDF2, BDF2 against IDA on a
+flexible two-bearing rotor (constant speed and a run-up), the touch event per bearing, checkpoint/resume bitwise."""
+
+import numpy as np
+import pytest
+
+from transient import JournalBearing, JournalOrbit
+from transient.models.rotor import Rotor, RotorBearingSystem
+from transient.models.rotor.content_form import ContentSystem
+from transient.models.rotor.content_newton import rotor_jacobian, rotor_residual, rotor_to_state
+from transient.params.rho_kim import BEARING
+from transient.solvers.bandlu import BorderedBandLU
+from transient.solvers.longrun import Interrupted
+
+from test_system import ECC, G, M_ROTOR, flexible_system
+
+
+@pytest.fixture(scope="module")
+def bearing():
+    return JournalBearing(**BEARING, grid=(48, 8))
+
+
+def one_node(bearing, me=M_ROTOR * ECC):
+    rotor = Rotor(mass=M_ROTOR * np.eye(2), stiffness=np.zeros((2, 2)), nodes=[0])
+    return RotorBearingSystem(rotor, {0: bearing}, unbalance=[(0, me, 0.0)], gravity=G)
+
+
+def test_newton_jacobian_matches_finite_differences(fd_jacobian):
+    """dF/dz of the content residual with y' = cj y + b (as in a BDF2 step), a speed ramp (s, s' != 1, 0), on the
+    flexible rotor's two films of different grids and clearances (one on a reduced basis), at a state with
+    cavitated, full-film and switching cells and a moving, tilted shaft; nothing outside the Newton pattern."""
+    s = flexible_system(JournalBearing(**BEARING, grid=(16, 4)))
+    dae = s.dae(6000.0, lambda tau: (0.8 + 0.01 * tau, 0.01))
+    form = ContentSystem(dae)
+    rng = np.random.default_rng(1)
+    z = s._start_guess(dae, 0.8)
+    z[dae.Q0:dae.P0] += 0.05 * rng.standard_normal(2 * dae.nq)
+    z[dae.P0] = 0.7
+    tau, cj = 0.3, 37.0
+    form.set_speed(tau)
+    args = form.args
+    y = np.empty(dae.n)
+    rotor_to_state(z, y, args)
+    b = -cj * y + 0.01 * rng.standard_normal(dae.n)
+
+    def F(zz):
+        yy = np.empty(dae.n)
+        rotor_to_state(zz, yy, args)
+        out = np.empty(dae.n)
+        rotor_residual(tau, yy, cj * yy + b, out, args)
+        return out
+
+    data = np.zeros(form.pattern.nnz)
+    rotor_to_state(z, y, args)
+    rotor_jacobian(tau, y, cj * y + b, cj, data, args)
+    J = form.pattern.copy()
+    J.data = data
+    J = J.toarray()
+    free = np.ones(dae.n, dtype=bool)
+    for blk in dae.blocks:
+        free[blk.offset:blk.offset + blk.n] = blk.film.op.free
+    cols = np.flatnonzero(free)
+    width = min(blk.film.width for blk in dae.blocks)
+    Jfd = fd_jacobian(F, z, dae.n, step=5e-4 * width)
+    scale = np.max(np.abs(J[:, cols]), axis=0)
+    rel = np.max(np.abs(J[:, cols] - Jfd[:, cols]), axis=0) / scale
+    assert np.max(rel) < 1e-6, (np.max(rel), cols[np.argmax(rel)])
+    outside = form.pattern.toarray() == 0
+    assert np.max(np.abs(Jfd[outside])) < 1e-8 * np.max(np.abs(Jfd))
+    for blk in dae.blocks:  # the arrow is there: films on the rotor's coordinates and back
+        o, n = blk.offset, blk.n
+        assert np.abs(J[dae.V0:dae.P0, o:o + n]).max() > 0 and np.abs(J[o:o + n, dae.Q0:dae.V0]).max() > 0
+    assert J[dae.V0:dae.P0, dae.P0].any()  # the unbalances on the shaft angle
+
+
+def test_the_band_of_two_films_is_one_films(bearing):
+    """One band block per film: the films couple only through the rotor, so the bordered band LU of the two-bearing
+    system has the band of one film's Newton pattern (the journal orbit's)."""
+    s = RotorBearingSystem(Rotor.rigid(M_ROTOR, 3.0, 0.5), {0: bearing, 1: bearing}, gravity=G)
+    form = ContentSystem(s.dae(6000.0))
+    lu = BorderedBandLU(form.pattern, 2 * s.rotor.n + 1)
+    one = BorderedBandLU(JournalOrbit(bearing, M_ROTOR, 0.0, M_ROTOR * G, 6000).newton_pattern()[0], 4)
+    assert (lu.kl, lu.ku) == (one.kl, one.ku)
+    assert lu.n == 2 * one.n
+
+
+def test_one_node_rotor_is_the_journal_orbit(bearing):
+    """The same equations as the journal orbit's content form (the rotor row scaled by its mass, the unbalance on
+    the shaft angle): the same steps, the orbit to 1e-6 C."""
+    r = one_node(bearing).run(2, 6000, method="bdf2", rtol=1e-7, atol=1e-10)
+    o = JournalOrbit(bearing, M_ROTOR, ECC, M_ROTOR * G, 6000).run(2, method="bdf2", rtol=1e-7, atol=1e-10)
+    assert r.success and r.method == "bdf2" and np.array_equal(r.t, o.t)
+    assert r.stats.n_steps == o.stats.n_steps
+    x, y = r.position(0)
+    assert np.max(np.abs(x - o.x)) < 1e-6 * bearing.clearance
+    assert np.max(np.abs(y - o.y)) < 1e-6 * bearing.clearance
+    assert np.max(np.hypot(o.x - o.x[0], o.y - o.y[0])) > 1e-3 * bearing.clearance  # the orbit moves
+    n = bearing.film(6000).n  # the final state in the universal layout, as IDA's
+    assert np.allclose(r.final_state[:n], o.final_state[:n], atol=1e-6)
+
+
+def test_symmetric_rotor_on_two_bearings_is_the_half_orbit(bearing):
+    rotor = Rotor.rigid(M_ROTOR, 3.0, 0.5)
+    s = RotorBearingSystem(rotor, {0: bearing, 1: bearing}, unbalance=[(0, M_ROTOR * ECC / 2, 0.0),
+                                                                       (1, M_ROTOR * ECC / 2, 0.0)], gravity=G)
+    r = s.run(2, 6000, method="bdf2", rtol=1e-7, atol=1e-10)
+    o = JournalOrbit(bearing, M_ROTOR / 2, ECC, M_ROTOR * G / 2, 6000).run(2, method="bdf2", rtol=1e-7, atol=1e-10)
+    assert r.success
+    for node in (0, 1):
+        x, y = r.position(node)
+        assert np.max(np.hypot(x - o.x, y - o.y)) < 1e-6 * bearing.clearance
+
+
+def test_bdf2_agrees_with_ida_on_a_flexible_rotor(bearing):
+    """Two films of different clearances and grids on a reduced, gyroscopic, damped shaft with two unbalances:
+    BDF2 within 1e-6 C (its rtol times the journal positions, below 1 C) of IDA at rtol 1e-9 at rtol 1e-6, and
+    closer at rtol 1e-7 (the error follows the tolerance)."""
+    s = flexible_system(bearing)
+    kw = dict(outputs_per_revolution=40, atol=1e-10)
+    ref = s.run(0.5, 6000, rtol=1e-9, **kw)
+    runs = [s.run(0.5, 6000, method="bdf2", rtol=rtol, **kw) for rtol in (1e-6, 1e-7)]
+    assert all(r.success and np.allclose(r.t, ref.t, rtol=1e-12) for r in runs)
+    assert np.max(np.abs(ref.displacement - ref.displacement[0])) > 1e-2 * bearing.clearance  # it moves
+    err = [np.max(np.abs(r.displacement - ref.displacement)) / bearing.clearance for r in runs]
+    assert err[0] < 1e-6 and err[1] < err[0] / 2, err
+
+
+def test_run_up_agrees_with_ida(bearing):
+    """A speed ramp (the films' Couette flow and the unbalance's s^2 and s' terms): BDF2 and IDA agree."""
+    s = one_node(bearing)
+    ramp = lambda t: 3000.0 + 60000.0 * t  # noqa: E731
+    kw = dict(outputs_per_revolution=20, atol=1e-10)
+    ida = s.run(1, ramp, rtol=1e-8, **kw)
+    bdf2 = s.run(1, ramp, method="bdf2", rtol=1e-6, **kw)
+    assert bdf2.success and np.allclose(bdf2.speed_rpm, ramp(bdf2.t))
+    assert np.max(np.abs(bdf2.displacement - ida.displacement)) < 1e-4 * bearing.clearance
+
+
+def test_touch_event_per_bearing(bearing):
+    """The flexible rotor with a large unbalance at the second node: the run stops when that journal (in its own
+    clearance) reaches the touch limit, located on the step's interpolant."""
+    s = flexible_system(bearing)
+    s.unbalance = [(1, 5e-2, 0.0)]
+    r = s.run(2, 6000, method="bdf2", touch_gap=0.5, outputs_per_revolution=32)
+    assert r.touched_at is not None and "touches its bearing" in r.message, r.message
+    e = [r.eccentricity_ratio(k)[-1] for k in (0, 1)]
+    assert e[1] == pytest.approx(0.5, abs=1e-6) and e[0] < 0.5
+
+
+def test_checkpoint_resume_is_bitwise(bearing, tmp_path, monkeypatch):
+    """A run killed (Ctrl-C) in its third chunk and resumed from its checkpoint ends where the uninterrupted run
+    does, bit for bit."""
+    s = flexible_system(bearing)
+    kw = dict(method="bdf2", outputs_per_revolution=40, chunk_revolutions=0.125, progress=False)
+    full = s.run(0.5, 6000, **kw)
+    path = tmp_path / "rotor.npz"
+    set_speed = ContentSystem.set_speed
+
+    def killed(self, tau):
+        if tau > 2 * np.pi * 0.3:
+            raise KeyboardInterrupt
+        set_speed(self, tau)
+
+    monkeypatch.setattr(ContentSystem, "set_speed", killed)
+    with pytest.raises(Interrupted, match="run again with resume=True"):
+        flexible_system(bearing).run(0.5, 6000, checkpoint=str(path), **kw)
+    monkeypatch.undo()
+    assert path.exists()
+    resumed = flexible_system(bearing).run(0.5, 6000, checkpoint=str(path), resume=True, **kw)
+    assert resumed.success and resumed.stats.n_steps < 2 * full.stats.n_steps
+    for k in ("t", "displacement", "bearing_force", "final_state"):
+        np.testing.assert_array_equal(getattr(resumed, k), getattr(full, k))
+
+
+def test_a_mix_of_film_kinds_is_refused():
+    from transient.models.journal.bearing import omega
+    from transient.physics.layered import BoundaryLayers, Gecim
+
+    cl, mu = BEARING["clearance"], BEARING["viscosity"]
+    gecim = JournalBearing(**BEARING, grid=(16, 4), rheology=Gecim(kappa=0.65 * mu * omega(6000) * 0.5 *
+                                                                     BEARING["diameter"] / cl, viscosity_ratio=0.57),
+                           layers=BoundaryLayers(thickness=0.1 * cl, viscosity=(10 * mu, 20 * mu), alpha=0.05 * cl))
+    s = RotorBearingSystem(Rotor.rigid(M_ROTOR, 3.0, 0.5), {0: JournalBearing(**BEARING, grid=(16, 4)), 1: gecim},
+                           gravity=G)
+    with pytest.raises(ValueError, match='method "bdf2" takes bearings of one film kind'):
+        ContentSystem(s.dae(6000.0))
