@@ -128,3 +128,17 @@ def test_rotor_figures_name_units():
             rotor.waterfall(r, 1, "cascade", window_revolutions=2.0), rotor.orbits(r, {0: "bearing", 1: "disk"}, [1800.0])]
     for fig in figs:
         assert figure_problems(fig) == []
+
+
+def test_feed_pressure_maps_close_the_film_and_name_units():
+    from transient import CircumferentialGroove, Groove, JournalBearing
+
+    bearing = dict(diameter=0.1, length=0.08, clearance=150e-6, viscosity=0.01, supply_pressure=70e3,
+                   ambient_pressure=0.0, cavitation_pressure=0.0, grid=(24, 4))
+    states = {name: JournalBearing(**bearing, groove=feed).equilibrium(load=5000.0, speed_rpm=3000)
+              for name, feed in (("groove", Groove(0.0, 15.0)), ("circumferential", CircumferentialGroove(0.02)))}
+    fig = tp.feeds.pressure_maps(states)
+    assert figure_problems(fig) == []
+    mesh = fig.axes[0].collections[0]
+    assert mesh.get_array().shape == (2 * 4, 24 + 1)  # mirrored to the whole length, closed at 360 deg
+    assert mesh.get_clim() == (0.0, pytest.approx(1e-3 * max(s.pressure.max() for s in states.values())))
