@@ -142,3 +142,21 @@ def test_feed_pressure_maps_close_the_film_and_name_units():
     mesh = fig.axes[0].collections[0]
     assert mesh.get_array().shape == (2 * 4, 24 + 1)  # mirrored to the whole length, closed at 360 deg
     assert mesh.get_clim() == (0.0, pytest.approx(1e-3 * max(s.pressure.max() for s in states.values())))
+
+
+def _inside(fig, artist) -> bool:
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    FigureCanvasAgg(fig)
+    fig.canvas.draw()
+    box, page = artist.get_window_extent(), fig.bbox
+    return box.x0 >= page.x0 - 0.5 and box.x1 <= page.x1 + 0.5 and box.y1 <= page.y1 + 0.5
+
+
+def test_a_long_title_on_a_one_panel_critical_film_figure_fits():
+    from transient.params import jeong
+
+    lines = {"n_balls": (np.array([1, 11]), [226e-6, 300e-6], {"load": 30.0, "speed_rpm": 80.0})}
+    fig = tp.ball.critical_films(lines, 100e-6, jeong.REPORTED)
+    assert _inside(fig, fig._suptitle)
+    assert figure_problems(fig) == []
