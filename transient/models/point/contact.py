@@ -25,6 +25,7 @@ from transient.checks import check_choice, check_int, check_positive, check_rang
 from transient.models.point.fbns import fbns
 from transient.models.point.ehl_problem import PointFilm
 from transient.models.point.krylov import inject
+from transient.models.point.plausibility import grid_message, implausible
 from transient.models.point.results import PointDry, PointSteady, PointTransient
 from transient.models.point.stepping import march, steady_by_time_steps
 from transient.models.roller.dry import edge_positions, polonsky_keer
@@ -115,9 +116,9 @@ class PointContact:
         self.y_nodes = np.linspace(-y_half, y_half, ny)
         per_b = 1.0 / dx
         if per_b < MIN_NODES_PER_B or c.k / (self.y_nodes[1] - self.y_nodes[0]) < MIN_NODES_PER_B:
-            raise ValueError(f"grid = {grid!r} puts {per_b:.3g} x {c.k / (self.y_nodes[1] - self.y_nodes[0]):.3g} "
-                             f"nodes per Hertz semi-axes b x a; allowed: at least {MIN_NODES_PER_B} (more nodes or "
-                             "a smaller domain)")
+            found = implausible(self.radius_x, viscosity, self.speed, self.load, c.p_max)
+            raise ValueError(grid_message(grid, per_b, c.k / (self.y_nodes[1] - self.y_nodes[0]), MIN_NODES_PER_B,
+                                          -x_in, found))
         self.grid = (nx, ny)
 
     # -- scales ------------------------------------------------------------------------------------------
