@@ -86,6 +86,10 @@ def main(argv=None):
 
     speeds = np.linspace(0.3, 2.0, 12 if a.quick else 35) * th
     eig = [s.quasi_static_eigenvalues(n) for n in speeds]
+    top = np.asarray(eig[-1])[np.asarray(eig[-1]).imag > 1e-6]
+    mode_hz = float(top[np.argmax(top.real)].imag / (2 * np.pi))  # the least-damped mode, where whip locks in
+    log(f"[rotor] least-damped mode at {speeds[-1]:.0f} rpm: {mode_hz:.1f} Hz")
+    rec.put("least_damped_mode_hz", mode_hz)
     log(f"written: {save(plots.campbell(speeds, eig, {'threshold, film states': th, 'threshold, K and C': th_qs}), out / 'campbell.png')}")
     lin = {}
     for label, film in (("linear, bearings as K, C", False), ("linear, film states", True)):
@@ -106,7 +110,7 @@ def main(argv=None):
         r.save(out / f"{name}.npz")
         runs[name] = r
         ns, amp = synchronous_amplitude(r.t, r.position(disk)[0], r.speed_rpm, 2.0)
-        window = max(4.0, revs / 25.0)  # revolutions per spectrum: 25 windows over the run
+        window = max(6.0, revs / 25.0)  # revolutions per spectrum (a whirl at 0.25x needs a few periods)
         sp, f, spec = waterfall(r.t, r.position(disk)[0], r.speed_rpm, window)
         peak = f[np.argmax(spec[:, 1:], axis=1) + 1]
         rec.put(name, dict(message=r.message, steps=r.stats.n_steps, wall_s=r.stats.wall_time, speeds_rpm=ns,
@@ -114,12 +118,12 @@ def main(argv=None):
                            dominant_order=peak * 60.0 / sp))
         log(f"  {r.message}; {r.stats.n_steps / revs:.0f} steps per revolution; dominant order of the disk's x "
             f"per window: {np.round(peak * 60.0 / sp, 2).tolist()}")
-        title = f"{name.replace('_', '-')}: spectrum of the disk's x (cascade)"
-        log(f"written: {save(plots.waterfall(r, disk, title, window), out / f'waterfall_{name}.png')}")
+        title = f"{name.replace('_', '-')}: the disk's x"
+        log(f"written: {save(plots.waterfall(r, disk, title, window, critical_hz=mode_hz, threshold_rpm=th), out / f'waterfall_{name}.png')}")
     r = runs["run_up"]
     pts = {f"{k.replace('_', '-')} (transient)": synchronous_amplitude(v.t, v.position(disk)[0], v.speed_rpm, 2.0)
            for k, v in runs.items()}
-    log(f"written: {save(plots.response_curve(lin, pts, 'the disk (x)'), out / 'response.png')}")
+    log(f"written: {save(plots.response_curve(lin, pts, 'the disk (x)', threshold_rpm=th), out / 'response.png')}")
     marks = [n for n in (0.8 * th, 1.2 * th, 1.9 * th) if r.speed_rpm.min() <= n <= r.speed_rpm.max()]
     log(f"written: {save(plots.orbits(r, {bnode: f'bearing (node {bnode})', disk: f'mid-span (node {disk})'}, marks), out / 'orbits.png')}")
     rec.put("wall_s", time.perf_counter() - t0)
