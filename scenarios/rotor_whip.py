@@ -21,9 +21,10 @@ Writes DIR/campbell.png, response.png, waterfall_run_up.png, waterfall_coast_dow
 DIR/run_up.npz, DIR/coast_down.npz (transient.load_result) and every number in DIR/rotor_whip.json.
 A ROSS rotor (``Rotor.from_ross``) runs the same way; this script uses the built-in one.
 
-Duration: ``--quick`` (32 x 6, 30 revolutions each way) takes about 1.5 min of CPU (measured). The default
-(151 x 21, 400 revolutions each way) runs on IDA, which takes thousands of steps per revolution once the rotor
-whips (3,550 on the quick grid): expect hours; it is checkpointed, so it can be stopped and resumed.
+Duration: ``--quick`` (32 x 6, 30 revolutions each way) takes about 3.5 min of CPU (measured: 190-210 s), most
+of it in the coast-down, which starts in whip: IDA takes 3,550 steps per revolution there against 250 in the
+run-up. The default (151 x 21, 400 revolutions each way) takes thousands of steps per revolution once the rotor
+whips: expect hours; it is checkpointed, so it can be stopped and resumed.
 """
 
 from __future__ import annotations
@@ -38,7 +39,7 @@ from transient import JournalBearing, Rotor, RotorBearingSystem
 from transient.analysis.rotor import synchronous_amplitude, waterfall
 from transient.params import rho_kim
 from transient.plots import rotor as plots, save
-from transient.study.scenario import JsonRecord, log, parser
+from transient.study.scenario import JsonRecord, fresh_advice, log, parser
 
 OUT = "rotor_whip"
 STRUCTURAL_DAMPING = 1e-5  # [s]: C = beta K damps the shaft's high bending modes (the stiff part of the system)
@@ -104,9 +105,10 @@ def main(argv=None):
             ckpt.unlink()
         log(f"[rotor] {name.replace('_', '-')} {n0:.0f} -> {n1:.0f} rpm over {revs:g} revolutions; checkpoint {ckpt}")
         t_start = runs[start].final_time if start else 0.0
-        r = s.run(revs, ramp(n0, n1, revs, t_start), rtol=1e-5, start=runs.get(start), checkpoint=ckpt, resume=True,
-                  chunk_revolutions=10.0, outputs_per_revolution=OPR, progress=True, touch_gap=1e-3,
-                  reference_speed_rpm=2.0 * th)
+        with fresh_advice():
+            r = s.run(revs, ramp(n0, n1, revs, t_start), rtol=1e-5, start=runs.get(start), checkpoint=ckpt,
+                      resume=True, chunk_revolutions=10.0, outputs_per_revolution=OPR, progress=True, touch_gap=1e-3,
+                      reference_speed_rpm=2.0 * th)
         r.save(out / f"{name}.npz")
         runs[name] = r
         ns, amp = synchronous_amplitude(r.t, r.position(disk)[0], r.speed_rpm, 2.0)

@@ -98,6 +98,8 @@ def waterfall(result, node, title, window_revolutions=4.0, max_order=1.5, critic
     revolution (:func:`order_spectra`), each row's largest peak marked, with the 1x and 0.5x lines and, if given,
     the frequency ``critical_hz`` [Hz] (the mode that goes unstable, where oil whip locks in) and the whirl
     threshold ``threshold_rpm``."""
+    total = shaft_angle(np.asarray(result.t, float), np.asarray(result.speed_rpm, float))[-1] / (2 * np.pi)
+    window_revolutions = min(window_revolutions, max(total - 2.0, 0.5 * total))  # at least 3 rows where it can
     speeds, orders, amp = order_spectra(result, node, window_revolutions)
     order = np.argsort(speeds)  # a coast-down's windows come in falling speed
     speeds, amp = speeds[order], 1e6 * amp[order]
@@ -127,7 +129,8 @@ def waterfall(result, node, title, window_revolutions=4.0, max_order=1.5, critic
     ax.set(xlabel="order: frequency / shaft frequency [-]", ylabel="shaft speed [rpm]", xlim=(0, max_order),
            title=f"{title}: in shaft orders")
     bx.set(xlabel="frequency [Hz]", xlim=(0, max_order * speeds.max() / 60.0), title="the same in Hz")
-    ax.set_ylim(speeds.min(), speeds.max())
+    if speeds.max() > speeds.min():
+        ax.set_ylim(speeds.min(), speeds.max())
     fig.colorbar(mesh, ax=(ax, bx)).set_label(f"log10 amplitude of x [log10 um] ({rows.size} windows of "
                                              f"{window_revolutions:g} rev)")
     ax.legend(fontsize=8, loc="upper right", framealpha=0.8)
