@@ -64,6 +64,17 @@ def ramp(n0, n1, revolutions, t0=0.0):
     return lambda t: n0 + (n1 - n0) * min(max(t - t0, 0.0), duration) / duration
 
 
+def mostly_synchronous(run, node, speeds_rpm, window_revolutions) -> np.ndarray:
+    """At each of ``speeds_rpm`` along ``run``: whether the motion of the node's x there is mostly at 1x, i.e. the
+    largest peak of its order spectrum between 0.1x and 0.9x (:func:`transient.plots.rotor.order_spectra`, windows
+    of ``window_revolutions``) is below its 1x amplitude. Where it is not, the whirl (or a mode ringing near 1x)
+    is larger than the 1x response and leaks into its least-squares 1x amplitude."""
+    sp, orders, amp = plots.order_spectra(run, node, window_revolutions)
+    sub = (orders >= 0.1) & (orders <= 0.9)
+    ok = amp[:, sub].max(axis=1) < amp[:, int(np.argmin(np.abs(orders - 1.0)))]
+    return ok[np.argmin(np.abs(np.asarray(speeds_rpm)[:, None] - sp[None, :]), axis=1)]
+
+
 def main(argv=None):
     ap = parser(__doc__, OUT)
     ap.add_argument("--grid", type=int, nargs=2, metavar=("NT", "NZ"), help="film grid (default 151 21; quick 32 6)")
@@ -123,8 +134,14 @@ def main(argv=None):
         title = f"{name.replace('_', '-')}: the disk's x"
         log(f"written: {save(plots.waterfall(r, disk, title, window, critical_hz=mode_hz, threshold_rpm=th), out / f'waterfall_{name}.png')}")
     r = runs["run_up"]
-    pts = {f"{k.replace('_', '-')} (transient)": synchronous_amplitude(v.t, v.position(disk)[0], v.speed_rpm, 2.0)
-           for k, v in runs.items()}
+    pts = {}
+    for k, v in runs.items():
+        sp, amp = synchronous_amplitude(v.t, v.position(disk)[0], v.speed_rpm, 2.0)
+        pts[f"{k.replace('_', '-')} (transient)"] = (sp, amp, mostly_synchronous(v, disk, sp, window))
+    for k, (sp, amp, sync) in pts.items():
+        log(f"  {k}: 1x amplitude of the disk's x {1e6 * amp.min():.1f}-{1e6 * amp.max():.1f} um; "
+            f"{int((~sync).sum())} of {sync.size} windows mostly whirl (drawn open)")
+        rec.put(f"{k.split(' ')[0]}_one_x", dict(speeds_rpm=sp, disk_x_m=amp, synchronous=sync))
     log(f"written: {save(plots.response_curve(lin, pts, 'the disk (x)', threshold_rpm=th), out / 'response.png')}")
     marks = [n for n in (0.8 * th, 1.2 * th, 1.9 * th) if r.speed_rpm.min() <= n <= r.speed_rpm.max()]
     log(f"written: {save(plots.orbits(r, {bnode: f'bearing (node {bnode})', disk: f'mid-span (node {disk})'}, marks), out / 'orbits.png')}")

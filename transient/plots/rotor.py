@@ -35,30 +35,31 @@ def campbell(speeds_rpm, eigenvalues, thresholds: dict):
 
 def response_curve(linear: dict, runs: dict, node_label: str, threshold_rpm=None):
     """1x amplitude [um] at one node against the speed: linear curves ``{label: (speeds [rpm], amplitude [m])}``
-    (each its own line style, so curves that agree stay visible; the legend gives their largest difference) and
-    run-derived points ``{label: (speeds, amplitude)}`` (a run-up is transient: not a settled response). Above
-    ``threshold_rpm`` the run whirls and its least-squares 1x amplitude absorbs part of the whirl: those points are
-    drawn open and said so."""
-    fig, ax = figure(size=(8.0, 4.8))
+    (each its own line style, so curves that agree stay visible; the legend gives the largest difference of two)
+    and run-derived points ``{label: (speeds, amplitude[, synchronous])}`` (a run-up is transient: not a settled
+    response). Where ``synchronous`` is False the motion there is mostly not at 1x (a whirl) and the
+    least-squares 1x amplitude absorbs part of it: those points are drawn open and said so. ``threshold_rpm``: the
+    whirl threshold (a vertical line)."""
+    fig, ax = figure(size=(8.0, 6.0))
     curves = [(label, np.asarray(s, float), np.asarray(a, float)) for label, (s, a) in linear.items()]
     for (label, s, a), (style, width) in zip(curves, (("-", 2.5), ("--", 1.5), (":", 1.5), ("-.", 1.5))):
         ax.plot(s, a * 1e6, ls=style, lw=width, label=label)
     if len(curves) == 2 and np.array_equal(curves[0][1], curves[1][1]):
         d = np.max(np.abs(curves[1][2] / curves[0][2] - 1.0))
         ax.plot([], [], " ", label=f"(the two linear curves differ by at most {100 * d:.1f} %)")
-    for (label, (s, a)), marker in zip(runs.items(), ("o", "s", "^", "v")):
-        s, a = np.asarray(s, float), np.asarray(a, float) * 1e6
-        below = np.ones(s.size, bool) if threshold_rpm is None else s < threshold_rpm
-        line, = ax.plot(s[below], a[below], marker, ms=4, ls="none", label=label)
-        if (~below).any():
-            ax.plot(s[~below], a[~below], marker, ms=4, ls="none", mfc="none", color=line.get_color(),
-                    label=f"{label}, above the threshold (whirl in the 1x fit)")
+    for (label, run), marker in zip(runs.items(), ("o", "s", "^", "v")):
+        s, a = np.asarray(run[0], float), np.asarray(run[1], float) * 1e6
+        sync = np.asarray(run[2], bool) if len(run) > 2 else np.ones(s.size, bool)
+        line, = ax.plot(s[sync], a[sync], marker, ms=4, ls="none", label=label)
+        if (~sync).any():
+            ax.plot(s[~sync], a[~sync], marker, ms=4, ls="none", mfc="none", color=line.get_color(),
+                    label=f"{label}, mostly not at 1x (whirl in the 1x fit)")
     if threshold_rpm:
         ax.axvline(threshold_rpm, color="0.4", ls="-.", lw=0.9, label=f"whirl threshold, {threshold_rpm:.0f} rpm")
     ax.set(xlabel="shaft speed [rpm]", ylabel=f"1x amplitude at {node_label} [um]", yscale="log",
            title=f"unbalance response at {node_label}")
     ax.grid(True, which="both", lw=0.3)
-    ax.legend(fontsize=7, loc="best")
+    ax.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.14), ncol=2)  # below: the points stay visible
     return fig
 
 
@@ -133,7 +134,7 @@ def waterfall(result, node, title, window_revolutions=4.0, max_order=1.5, critic
         ax.set_ylim(speeds.min(), speeds.max())
     fig.colorbar(mesh, ax=(ax, bx)).set_label(f"log10 amplitude of x [log10 um] ({rows.size} windows of "
                                              f"{window_revolutions:g} rev)")
-    ax.legend(fontsize=8, loc="upper right", framealpha=0.8)
+    ax.legend(fontsize=8, loc="upper right", facecolor="0.2", labelcolor="w", framealpha=0.85)
     return fig
 
 
