@@ -69,7 +69,7 @@ def mostly_synchronous(run, node, speeds_rpm, window_revolutions) -> np.ndarray:
     largest peak of its order spectrum between 0.1x and 0.9x (:func:`transient.plots.rotor.order_spectra`, windows
     of ``window_revolutions``) is below its 1x amplitude. Where it is not, the whirl (or a mode ringing near 1x)
     is larger than the 1x response and leaks into its least-squares 1x amplitude."""
-    sp, orders, amp = plots.order_spectra(run, node, window_revolutions)
+    sp, orders, amp = plots.order_spectra(run, node, plots.fitting_window(run, window_revolutions))
     sub = (orders >= 0.1) & (orders <= 0.9)
     ok = amp[:, sub].max(axis=1) < amp[:, int(np.argmin(np.abs(orders - 1.0)))]
     return ok[np.argmin(np.abs(np.asarray(speeds_rpm)[:, None] - sp[None, :]), axis=1)]

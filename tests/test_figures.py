@@ -160,3 +160,21 @@ def test_a_long_title_on_a_one_panel_critical_film_figure_fits():
     fig = tp.ball.critical_films(lines, 100e-6, jeong.REPORTED)
     assert _inside(fig, fig._suptitle)
     assert figure_problems(fig) == []
+
+
+def test_order_spectra_track_the_1x_line_and_a_fixed_whirl_frequency():
+    from transient.models.rotor.results import RotorRunResult
+    from transient.plots.rotor import order_spectra
+
+    t = np.linspace(0.0, 2.0, 20001)
+    n = 1500.0 + 1500.0 * t / 2.0  # run-up 1500 -> 3000 rpm
+    phi = np.concatenate([[0.0], np.cumsum(0.5 * (n[1:] + n[:-1]) * np.pi / 30.0 * np.diff(t))])
+    d = np.zeros((t.size, 1, 2))
+    d[:, 0, 0] = 2e-6 * np.cos(phi) + 5e-6 * np.cos(2 * np.pi * 12.0 * t) + 1e-5 * t  # 1x, 12 Hz whirl, a drift
+    r = RotorRunResult(t=t, displacement=d, speed_rpm=n, nodes=[0], bearing_nodes=[0])
+    speeds, orders, amp = order_spectra(r, 0, window_revolutions=8.0)
+    one = np.argmin(np.abs(orders - 1.0))
+    assert np.allclose(amp[:, one], 2e-6, rtol=0.1)  # the 1x amplitude, with the drift taken out
+    low = orders < 0.9
+    whirl_hz = orders[low][np.argmax(amp[:, low], axis=1)] * speeds / 60.0
+    assert np.allclose(whirl_hz, 12.0, atol=1.5)  # at its own frequency while the order falls

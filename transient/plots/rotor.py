@@ -63,6 +63,13 @@ def response_curve(linear: dict, runs: dict, node_label: str, threshold_rpm=None
     return fig
 
 
+def fitting_window(result, window_revolutions) -> float:
+    """``window_revolutions``, shortened on a short run so that :func:`order_spectra` has at least 3 windows
+    (or, on a run of under 4 revolutions, windows of half the run)."""
+    total = shaft_angle(np.asarray(result.t, float), np.asarray(result.speed_rpm, float))[-1] / (2 * np.pi)
+    return min(window_revolutions, max(total - 2.0, 0.5 * total))
+
+
 def order_spectra(result, node, window_revolutions=4.0, step_revolutions=1.0, samples_per_revolution=16,
                   padding=8):
     """Order-tracked spectra of x at ``node`` over a run: ``x`` resampled on the shaft angle, windows of
@@ -99,8 +106,7 @@ def waterfall(result, node, title, window_revolutions=4.0, max_order=1.5, critic
     revolution (:func:`order_spectra`), each row's largest peak marked, with the 1x and 0.5x lines and, if given,
     the frequency ``critical_hz`` [Hz] (the mode that goes unstable, where oil whip locks in) and the whirl
     threshold ``threshold_rpm``."""
-    total = shaft_angle(np.asarray(result.t, float), np.asarray(result.speed_rpm, float))[-1] / (2 * np.pi)
-    window_revolutions = min(window_revolutions, max(total - 2.0, 0.5 * total))  # at least 3 rows where it can
+    window_revolutions = fitting_window(result, window_revolutions)
     speeds, orders, amp = order_spectra(result, node, window_revolutions)
     order = np.argsort(speeds)  # a coast-down's windows come in falling speed
     speeds, amp = speeds[order], 1e6 * amp[order]
