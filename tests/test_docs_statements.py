@@ -31,3 +31,12 @@ def test_the_pages_count_the_same_statements():
     said = re.search(r"(\w+) of the paper's \w+ statements are reproduced on its grid; (\w+) partly",
                      (DOCS / "disagreements.md").read_text())
     assert said and (said[1].lower(), said[2]) == (WORDS[verdicts.count("yes")], WORDS[verdicts.count("partly")])
+
+
+def test_the_recorded_paper_grid_verdicts_are_the_tables():
+    import json
+
+    recorded = json.loads((DOCS / "ehl_94x45" / "roller_ehl.json").read_text())["statements"]
+    table = re.findall(r"^\| ([^|]+) \| \*\*(yes|partly|no)\*\*", (DOCS / "ehl.md").read_text(), re.M)
+    word = {"reproduced": "yes", "partly": "partly", "NOT reproduced": "no"}
+    assert [(v["statement"], word[v["verdict"]]) for v in recorded.values()] == [(s.strip(), v) for s, v in table]
