@@ -33,6 +33,7 @@ autodoc_default_options = {"members": True, "show-inheritance": False}
 autodoc_typehints = "none"
 napoleon_numpy_docstring = True
 napoleon_google_docstring = False
+napoleon_use_param = False  # grouped names ("diameter, length, clearance [m]") stay one entry
 napoleon_custom_sections = ["Failures"]
 templates_path = ["_templates"]
 nitpicky = False
@@ -42,10 +43,19 @@ html_title = "transient"
 
 # -- docstrings --------------------------------------------------------------------------------------------------
 # The package's docstrings are written for reading in the source (and help()): numpy-style sections with units in
-# the header ("Parameters (SI)") and |x| for magnitudes. Two rewrites make them valid reStructuredText for the site.
+# brackets after the names ("viscosity [Pa s] : text"), units in the header ("Parameters (SI)") and |x| for
+# magnitudes. docstrings.fields rewrites the field sections into napoleon's numpy style (docstrings.py says how);
+# two more rewrites make them valid reStructuredText; then docstrings.problems checks the result (a warning, so an
+# error under -W, for every field napoleon would still render garbled).
 import re  # noqa: E402
 
+from sphinx.util import logging  # noqa: E402
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import docstrings  # noqa: E402
+
 _LITERAL = re.compile(r"(``.*?``)")
+_logger = logging.getLogger("transient.docs")
 
 
 def _escape_bars(line: str) -> str:
@@ -59,6 +69,7 @@ def _indent(line: str) -> int:
 
 
 def _docstring(app, what, name, obj, options, lines):
+    docstrings.fields(lines)
     i = 0
     while i + 1 < len(lines):  # "text:" followed directly by a more indented block: a literal block in reST
         a, b = lines[i], lines[i + 1]
@@ -74,11 +85,15 @@ def _docstring(app, what, name, obj, options, lines):
             i += 1
         i += 1
     for i, line in enumerate(lines):
-        if re.fullmatch(r"\s*Parameters \(.*\)\s*", line) and i + 1 < len(lines) and set(lines[i + 1].strip()) == {"-"}:
-            lines[i] = line[: len(line) - len(line.lstrip())] + "Parameters"
         if "|" in line and not line.lstrip().startswith(("+", "|")):
             lines[i] = _escape_bars(lines[i])
 
 
+def _check(app, what, name, obj, options, lines):
+    for problem in docstrings.problems(lines, what, name):
+        _logger.warning(f"docstring of {name}: {problem}", type="transient", subtype="docstring")
+
+
 def setup(app):
     app.connect("autodoc-process-docstring", _docstring, priority=400)
+    app.connect("autodoc-process-docstring", _check, priority=450)  # napoleon's own rewrite runs at 500

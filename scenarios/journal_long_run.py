@@ -21,7 +21,7 @@ from transient import JournalBearing, JournalOrbit
 from transient.compile_notice import announce
 from transient.params import rho_kim
 from transient.plots import journal as plots, save
-from transient.study.scenario import log, parser
+from transient.study.scenario import fresh_advice, log, parser
 
 OUT = "journal_long"  # output folder name: ROOT/journal_long (transient.study.scenario)
 
@@ -49,8 +49,9 @@ def main(argv=None):
     log(f"[long run] {revolutions:g} revolutions at {a.rpm:g} rpm, grid {grid[0]} x {grid[1]}, {a.method} rtol "
         f"{a.rtol:g}; checkpoint {ckpt}" + (" (resuming)" if ckpt.exists() else ""))
     t0 = time.perf_counter()
-    r = o.run(revolutions, method=a.method, rtol=a.rtol, atol=1e-3 * a.rtol, outputs_per_revolution=a.outputs,
-              record=("force",), chunk_revolutions=a.chunk, checkpoint=ckpt, resume=True, progress=True)
+    with fresh_advice():
+        r = o.run(revolutions, method=a.method, rtol=a.rtol, atol=1e-3 * a.rtol, outputs_per_revolution=a.outputs,
+                  record=("force",), chunk_revolutions=a.chunk, checkpoint=ckpt, resume=True, progress=True)
     log(f"[long run] {r.message}; {time.perf_counter() - t0:.1f} s this run, {r.t.size} samples kept")
     r.save(out / "long_run.npz")
     log(f"written: {save(plots.long_run(r, a.outputs), out / 'long_run.png')} and {out / 'long_run.npz'}")

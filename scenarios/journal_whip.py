@@ -35,7 +35,7 @@ from transient import JournalBearing, JournalOrbit
 from transient.compile_notice import announce
 from transient.params import rho_kim
 from transient.plots import save, whip as plots
-from transient.study.scenario import JsonRecord, log, parser
+from transient.study.scenario import JsonRecord, fresh_advice, log, parser
 from transient.study.whip import ENVELOPE_TOL, METHOD, METHODS, long_whip, run_up, settled_text
 
 OUT = "journal_whip"  # output folder name: ROOT/journal_whip (transient.study.scenario)
@@ -86,8 +86,9 @@ def main(argv=None):
             ckpt.unlink()
         o = make(factor * th)
         log(f"[whip] {revs:g} revolutions at {o.speed_rpm:.0f} rpm ({tag} threshold); checkpoint {ckpt}")
-        r, w = long_whip(o, revs, rtol=a.rtol, outputs_per_revolution=OPR, checkpoint=ckpt, chunk_revolutions=10.0,
-                         method=a.method)
+        with fresh_advice():
+            r, w = long_whip(o, revs, rtol=a.rtol, outputs_per_revolution=OPR, checkpoint=ckpt,
+                             chunk_revolutions=10.0, method=a.method)
         r.save(out / f"whirl_{tag}.npz")
         rec.put(f"whirl_{tag}", w)
         touch = "no touch" if w["touched_at_s"] is None else f"touches at t = {w['touched_at_s']:.4f} s"

@@ -21,9 +21,10 @@ Writes DIR/campbell.png, response.png, waterfall_run_up.png, waterfall_coast_dow
 DIR/run_up.npz, DIR/coast_down.npz (transient.load_result) and every number in DIR/rotor_whip.json.
 A ROSS rotor (``Rotor.from_ross``) runs the same way; this script uses the built-in one.
 
-Duration: ``--quick`` (32 x 6, 30 revolutions each way) takes about 1.5 min of CPU (measured). The default
-(151 x 21, 400 revolutions each way) runs on IDA, which takes thousands of steps per revolution once the rotor
-whips (3,550 on the quick grid): expect hours; it is checkpointed, so it can be stopped and resumed.
+Duration: ``--quick`` (32 x 6, 30 revolutions each way) takes about 3.5 min of CPU (measured: 185-210 s), most
+of it in the coast-down, which starts in whip: IDA takes 3,550 steps per revolution there against 250 in the
+run-up. The default (151 x 21, 400 revolutions each way) takes thousands of steps per revolution once the rotor
+whips: expect hours; it is checkpointed, so it can be stopped and resumed.
 """
 
 from __future__ import annotations
@@ -38,7 +39,7 @@ from transient import JournalBearing, Rotor, RotorBearingSystem
 from transient.analysis.rotor import synchronous_amplitude, waterfall
 from transient.params import rho_kim
 from transient.plots import rotor as plots, save
-from transient.study.scenario import JsonRecord, log, parser
+from transient.study.scenario import JsonRecord, fresh_advice, log, parser
 
 OUT = "rotor_whip"
 STRUCTURAL_DAMPING = 1e-5  # [s]: C = beta K damps the shaft's high bending modes (the stiff part of the system)
@@ -61,6 +62,17 @@ def ramp(n0, n1, revolutions, t0=0.0):
     times."""
     duration = 120.0 * revolutions / (n0 + n1)
     return lambda t: n0 + (n1 - n0) * min(max(t - t0, 0.0), duration) / duration
+
+
+def mostly_synchronous(run, node, speeds_rpm, window_revolutions) -> np.ndarray:
+    """At each of ``speeds_rpm`` along ``run``: whether the motion of the node's x there is mostly at 1x, i.e. the
+    largest peak of its order spectrum between 0.1x and 0.9x (:func:`transient.plots.rotor.order_spectra`, windows
+    of ``window_revolutions``) is below its 1x amplitude. Where it is not, the whirl (or a mode ringing near 1x)
+    is larger than the 1x response and leaks into its least-squares 1x amplitude."""
+    sp, orders, amp = plots.order_spectra(run, node, plots.fitting_window(run, window_revolutions))
+    sub = (orders >= 0.1) & (orders <= 0.9)
+    ok = amp[:, sub].max(axis=1) < amp[:, int(np.argmin(np.abs(orders - 1.0)))]
+    return ok[np.argmin(np.abs(np.asarray(speeds_rpm)[:, None] - sp[None, :]), axis=1)]
 
 
 def main(argv=None):
@@ -86,6 +98,10 @@ def main(argv=None):
 
     speeds = np.linspace(0.3, 2.0, 12 if a.quick else 35) * th
     eig = [s.quasi_static_eigenvalues(n) for n in speeds]
+    top = np.asarray(eig[-1])[np.asarray(eig[-1]).imag > 1e-6]
+    mode_hz = float(top[np.argmax(top.real)].imag / (2 * np.pi))  # the least-damped mode, where whip locks in
+    log(f"[rotor] least-damped mode at {speeds[-1]:.0f} rpm: {mode_hz:.1f} Hz")
+    rec.put("least_damped_mode_hz", mode_hz)
     log(f"written: {save(plots.campbell(speeds, eig, {'threshold, film states': th, 'threshold, K and C': th_qs}), out / 'campbell.png')}")
     lin = {}
     for label, film in (("linear, bearings as K, C", False), ("linear, film states", True)):
@@ -100,13 +116,14 @@ def main(argv=None):
             ckpt.unlink()
         log(f"[rotor] {name.replace('_', '-')} {n0:.0f} -> {n1:.0f} rpm over {revs:g} revolutions; checkpoint {ckpt}")
         t_start = runs[start].final_time if start else 0.0
-        r = s.run(revs, ramp(n0, n1, revs, t_start), rtol=1e-5, start=runs.get(start), checkpoint=ckpt, resume=True,
-                  chunk_revolutions=10.0, outputs_per_revolution=OPR, progress=True, touch_gap=1e-3,
-                  reference_speed_rpm=2.0 * th)
+        with fresh_advice():
+            r = s.run(revs, ramp(n0, n1, revs, t_start), rtol=1e-5, start=runs.get(start), checkpoint=ckpt,
+                      resume=True, chunk_revolutions=10.0, outputs_per_revolution=OPR, progress=True, touch_gap=1e-3,
+                      reference_speed_rpm=2.0 * th)
         r.save(out / f"{name}.npz")
         runs[name] = r
         ns, amp = synchronous_amplitude(r.t, r.position(disk)[0], r.speed_rpm, 2.0)
-        window = max(4.0, revs / 25.0)  # revolutions per spectrum: 25 windows over the run
+        window = max(6.0, revs / 25.0)  # revolutions per spectrum (a whirl at 0.25x needs a few periods)
         sp, f, spec = waterfall(r.t, r.position(disk)[0], r.speed_rpm, window)
         peak = f[np.argmax(spec[:, 1:], axis=1) + 1]
         rec.put(name, dict(message=r.message, steps=r.stats.n_steps, wall_s=r.stats.wall_time, speeds_rpm=ns,
@@ -114,12 +131,18 @@ def main(argv=None):
                            dominant_order=peak * 60.0 / sp))
         log(f"  {r.message}; {r.stats.n_steps / revs:.0f} steps per revolution; dominant order of the disk's x "
             f"per window: {np.round(peak * 60.0 / sp, 2).tolist()}")
-        title = f"{name.replace('_', '-')}: spectrum of the disk's x (cascade)"
-        log(f"written: {save(plots.waterfall(r, disk, title, window), out / f'waterfall_{name}.png')}")
+        title = f"{name.replace('_', '-')}: the disk's x"
+        log(f"written: {save(plots.waterfall(r, disk, title, window, critical_hz=mode_hz, threshold_rpm=th), out / f'waterfall_{name}.png')}")
     r = runs["run_up"]
-    pts = {f"{k.replace('_', '-')} (transient)": synchronous_amplitude(v.t, v.position(disk)[0], v.speed_rpm, 2.0)
-           for k, v in runs.items()}
-    log(f"written: {save(plots.response_curve(lin, pts, 'the disk (x)'), out / 'response.png')}")
+    pts = {}
+    for k, v in runs.items():
+        sp, amp = synchronous_amplitude(v.t, v.position(disk)[0], v.speed_rpm, 2.0)
+        pts[f"{k.replace('_', '-')} (transient)"] = (sp, amp, mostly_synchronous(v, disk, sp, window))
+    for k, (sp, amp, sync) in pts.items():
+        log(f"  {k}: 1x amplitude of the disk's x {1e6 * amp.min():.1f}-{1e6 * amp.max():.1f} um; "
+            f"{int((~sync).sum())} of {sync.size} windows mostly whirl (drawn open)")
+        rec.put(f"{k.split(' ')[0]}_one_x", dict(speeds_rpm=sp, disk_x_m=amp, synchronous=sync))
+    log(f"written: {save(plots.response_curve(lin, pts, 'the disk (x)', threshold_rpm=th), out / 'response.png')}")
     marks = [n for n in (0.8 * th, 1.2 * th, 1.9 * th) if r.speed_rpm.min() <= n <= r.speed_rpm.max()]
     log(f"written: {save(plots.orbits(r, {bnode: f'bearing (node {bnode})', disk: f'mid-span (node {disk})'}, marks), out / 'orbits.png')}")
     rec.put("wall_s", time.perf_counter() - t0)

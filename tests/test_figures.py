@@ -128,3 +128,53 @@ def test_rotor_figures_name_units():
             rotor.waterfall(r, 1, "cascade", window_revolutions=2.0), rotor.orbits(r, {0: "bearing", 1: "disk"}, [1800.0])]
     for fig in figs:
         assert figure_problems(fig) == []
+
+
+def test_feed_pressure_maps_close_the_film_and_name_units():
+    from transient import CircumferentialGroove, Groove, JournalBearing
+
+    bearing = dict(diameter=0.1, length=0.08, clearance=150e-6, viscosity=0.01, supply_pressure=70e3,
+                   ambient_pressure=0.0, cavitation_pressure=0.0, grid=(24, 4))
+    states = {name: JournalBearing(**bearing, groove=feed).equilibrium(load=5000.0, speed_rpm=3000)
+              for name, feed in (("groove", Groove(0.0, 15.0)), ("circumferential", CircumferentialGroove(0.02)))}
+    fig = tp.feeds.pressure_maps(states)
+    assert figure_problems(fig) == []
+    mesh = fig.axes[0].collections[0]
+    assert mesh.get_array().shape == (2 * 4, 24 + 1)  # mirrored to the whole length, closed at 360 deg
+    assert mesh.get_clim() == (0.0, pytest.approx(1e-3 * max(s.pressure.max() for s in states.values())))
+
+
+def _inside(fig, artist) -> bool:
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    FigureCanvasAgg(fig)
+    fig.canvas.draw()
+    box, page = artist.get_window_extent(), fig.bbox
+    return box.x0 >= page.x0 - 0.5 and box.x1 <= page.x1 + 0.5 and box.y1 <= page.y1 + 0.5
+
+
+def test_a_long_title_on_a_one_panel_critical_film_figure_fits():
+    from transient.params import jeong
+
+    lines = {"n_balls": (np.array([1, 11]), [226e-6, 300e-6], {"load": 30.0, "speed_rpm": 80.0})}
+    fig = tp.ball.critical_films(lines, 100e-6, jeong.REPORTED)
+    assert _inside(fig, fig._suptitle)
+    assert figure_problems(fig) == []
+
+
+def test_order_spectra_track_the_1x_line_and_a_fixed_whirl_frequency():
+    from transient.models.rotor.results import RotorRunResult
+    from transient.plots.rotor import order_spectra
+
+    t = np.linspace(0.0, 2.0, 20001)
+    n = 1500.0 + 1500.0 * t / 2.0  # run-up 1500 -> 3000 rpm
+    phi = np.concatenate([[0.0], np.cumsum(0.5 * (n[1:] + n[:-1]) * np.pi / 30.0 * np.diff(t))])
+    d = np.zeros((t.size, 1, 2))
+    d[:, 0, 0] = 2e-6 * np.cos(phi) + 5e-6 * np.cos(2 * np.pi * 12.0 * t) + 1e-5 * t  # 1x, 12 Hz whirl, a drift
+    r = RotorRunResult(t=t, displacement=d, speed_rpm=n, nodes=[0], bearing_nodes=[0])
+    speeds, orders, amp = order_spectra(r, 0, window_revolutions=8.0)
+    one = np.argmin(np.abs(orders - 1.0))
+    assert np.allclose(amp[:, one], 2e-6, rtol=0.1)  # the 1x amplitude, with the drift taken out
+    low = orders < 0.9
+    whirl_hz = orders[low][np.argmax(amp[:, low], axis=1)] * speeds / 60.0
+    assert np.allclose(whirl_hz, 12.0, atol=1.5)  # at its own frequency while the order falls

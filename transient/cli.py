@@ -58,7 +58,10 @@ def _parser() -> argparse.ArgumentParser:
 def _run_scenario(path: Path, args: list[str]) -> int:
     if not path.is_file():
         raise FileNotFoundError(f"scenario file not found: {path}")
-    if path.suffix == ".toml":
+    if path.suffix.lower() not in (".py", ".toml"):
+        raise ValueError(f"transient run takes a scenario script (.py) or a scene file (.toml), got {path} "
+                         "(scenarios/ holds the scripts, scenarios/scenes/ the scenes)")
+    if path.suffix.lower() == ".toml":
         from transient.study.scene import load_scene, run_scene
 
         from transient.study.scenario import default_root

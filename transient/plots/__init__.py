@@ -23,13 +23,22 @@ from matplotlib.figure import Figure
 #: the figure modules, one per model family (imported lazily by attribute access)
 FAMILIES = ("ball", "feeds", "journal", "layers", "pad", "point", "reynolds_operator", "roller", "rotor", "surfaces",
             "sweep", "whip")
-__all__ = ["figure", "save", *FAMILIES]
+__all__ = ["figure", "save", "suptitle", *FAMILIES]
 
 
 def figure(nrows=1, ncols=1, size=(7.0, 4.5), **kw):
     """A new figure and its axes (an array when there is more than one)."""
     fig = Figure(figsize=size, layout="constrained")
     return fig, fig.subplots(nrows, ncols, **kw)
+
+
+def suptitle(fig: Figure, text: str, fontsize: float = 10.0):
+    """Set ``text`` as the figure's title, broken into lines that fit its width (a long title on a narrow figure
+    would otherwise run past both edges)."""
+    import textwrap
+
+    chars = max(20, int(fig.get_figwidth() * 72.0 / (0.6 * fontsize)))  # a character is ~0.6 em wide
+    return fig.suptitle("\n".join(textwrap.fill(line, chars) for line in text.split("\n")), fontsize=fontsize)
 
 
 def save(fig: Figure, path, dpi=120, make_folders: bool = True) -> Path:

@@ -10,7 +10,7 @@ import numpy as np
 from matplotlib.lines import Line2D
 from matplotlib.patches import Patch, Rectangle
 
-from transient.plots import figure
+from transient.plots import figure, suptitle
 
 REGIME_COLOURS = {"fully flooded": "tab:green", "starved": "tab:orange", "parched": "tab:red"}
 LABELS = {"n_balls": "number of balls", "speed_rpm": "shaft speed [rpm]", "load": "axial load [N]",
@@ -174,7 +174,7 @@ def critical_films(lines: dict, ambient: float | None = None, paper: dict | None
         ax.set_title(fixed_title(fixed, axis), fontsize=8)
         ax.grid(True, lw=0.3)
     axs[0].legend(fontsize=6, loc="lower left")
-    fig.suptitle(title or "Ambient film needed to keep re-wetting the track (flooded above, parched below)", fontsize=9)
+    suptitle(fig, title or "Ambient film needed to keep re-wetting the track (flooded above, parched below)", 9)
     return fig
 
 

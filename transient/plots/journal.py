@@ -3,6 +3,8 @@ Figs. 3-12, stability runs, long runs."""
 
 from __future__ import annotations
 
+import textwrap
+
 import numpy as np
 
 from transient.analysis.orbits import per_revolution
@@ -21,7 +23,8 @@ def orbit_settling(study, outputs_per_revolution, grid):
     fig, (ax, bx) = figure(1, 2, size=(11, 4.8))
     ax.plot(result.y / C, result.x / C, lw=0.5, color="0.6", label="transient from equilibrium")
     ax.plot(np.append(Y[-1], Y[-1][0]), np.append(X[-1], X[-1][0]), lw=1.8, color="tab:red",
-            label=f"settled orbit (rev {len(dist)})")
+            label=f"{'settled orbit' if study.settled_within_1pct_after_revs else 'last revolution, NOT settled'} "
+                  f"(rev {len(dist)})")
     eq = study.equilibrium
     ax.plot(eq[1], eq[0], "k+", ms=10, label="static equilibrium")
     ax.set(xlabel="y / C (90 deg ahead of the load, with the rotation) [-]", ylabel="x / C (towards the load) [-]",
@@ -32,9 +35,8 @@ def orbit_settling(study, outputs_per_revolution, grid):
     bx.semilogy(np.arange(1, len(dist)), dist[:-1], "o-", ms=3)  # the last revolution is the reference
     bx.axhline(0.01 * amp, color="0.5", ls=":", lw=0.8)
     bx.set(xlabel="revolution [-]", ylabel="max distance from the last revolution [C]",
-           title=f"settling (1 % of the amplitude: dotted): within 1 % after "
-                 f"{study.settled_within_1pct_after_revs} rev")
-    bx.title.set_fontsize(10)
+           title="settling (1 % of the amplitude: dotted):\n" + textwrap.fill(study.settling(), 64))
+    bx.title.set_fontsize(9)
     bx.grid(True, which="both", lw=0.3)
     return fig
 

@@ -33,7 +33,9 @@ class EquilibriumOrbit(StatusResult):
     """The orbit from the static equilibrium (Figs. 3-4) and its numbers: the run (``orbit``), the speed
     [rpm], the revolutions run, the equilibrium (eccentricity ratio, attitude angle [deg], centre [C]), the last
     revolution's shape [C] (:func:`~transient.analysis.orbits.orbit_shape`), the distance of each revolution
-    from the last [C] and the revolution after which it stays within ``settle_fraction`` of the amplitude, and
+    from the last [C] and the revolution from which every later one (the last, the reference, aside) stays within
+    ``settle_fraction`` of the amplitude (``settled_within_1pct_after_revs``; 0: none in the run; in words:
+    :meth:`settling`), and
     the spectrum of x over the last ``fft_revolutions`` (orders of the shaft speed, amplitudes [C], the
     harmonics [C] and the order of the largest peak). :meth:`record` is the JSON-ready record of the numbers."""
 
@@ -58,6 +60,25 @@ class EquilibriumOrbit(StatusResult):
 
     record_skip = ("orbit",)  # the run itself is saved on its own
 
+    def settling(self) -> str:
+        """The settling verdict with its numbers, as the figure and the log state it."""
+        dist = np.asarray(self.settle_distance_per_rev)
+        amp = self.settled_orbit.get("semi_major", float("nan"))
+        if self.settled_within_1pct_after_revs:
+            return f"within 1 % of the amplitude from revolution {self.settled_within_1pct_after_revs} on"
+        if len(dist) < 2:
+            return "not measured (fewer than 2 revolutions)"
+        return (f"NOT within 1 % of the amplitude in {len(dist)} revolutions (revolution {len(dist) - 1}: "
+                f"{100 * dist[-2] / amp:.1f} %)")
+
+
+def settled_from(dist, amplitude, fraction=0.01) -> int:
+    """The first revolution (1-based) from which every later one is within ``fraction * amplitude`` of the last
+    (``dist``: the distance of each revolution from the last); 0 if none is. The last revolution is the reference
+    (distance 0) and does not count."""
+    dist = np.asarray(dist, dtype=float)
+    return next((k + 1 for k in range(len(dist) - 1) if np.all(dist[k:-1] <= fraction * amplitude)), 0)
+
 
 def orbit_from_equilibrium(orbit, revolutions, rtol, outputs_per_revolution=64, fft_revolutions=10,
                            settle_fraction=0.01) -> EquilibriumOrbit:
@@ -71,7 +92,7 @@ def orbit_from_equilibrium(orbit, revolutions, rtol, outputs_per_revolution=64, 
     dist = np.max(np.hypot(X - X[-1], Y - Y[-1]), axis=1)  # each revolution vs the last
     shape = orbit_shape(X[-1], Y[-1])
     amp = shape["semi_major"]
-    settled_at = next((k + 1 for k in range(len(dist)) if np.all(dist[k:-1] <= settle_fraction * amp)), len(dist))
+    settled_at = settled_from(dist, amp, settle_fraction)
     nf = min(fft_revolutions, X.shape[0])
     order, spec, harm, peak = revolution_spectrum(X[-nf:])
     return EquilibriumOrbit(

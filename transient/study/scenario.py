@@ -10,6 +10,7 @@ into ``ROOT/SCENE/``, a sweep into ``ROOT/sweep_KIND/``. ``--out DIR`` replaces 
 from __future__ import annotations
 
 import argparse
+import contextlib
 import json
 import os
 from pathlib import Path
@@ -100,3 +101,18 @@ class JsonRecord:
 
         text = json.dumps(self.data, indent=1).encode()
         atomic_write(self.path, lambda fh: fh.write(text))
+
+
+@contextlib.contextmanager
+def fresh_advice():
+    """Inside it, a checkpoint that cannot be resumed (:class:`~transient.solvers.longrun.CheckpointError`) says
+    what to do on the command line: run the same command with ``--fresh`` (not the Python keyword
+    ``resume=False``)."""
+    from transient.solvers.longrun import CheckpointError
+
+    try:
+        yield
+    except CheckpointError as e:
+        text = str(e).replace("delete it or run with resume=False to start afresh",
+                              "run the same command with --fresh to start afresh")
+        raise CheckpointError(text) from None

@@ -26,6 +26,7 @@ from transient.checks import check_choice, check_int, check_items, check_positiv
 from transient.models.point.fbns import DENSE_MAX_UNKNOWNS, fbns
 from transient.models.point.ehl_problem import PointFilm
 from transient.models.point.krylov import coarsening_factor, inject
+from transient.models.point.plausibility import grid_message, implausible
 from transient.models.point.results import PointDry, PointSteady, PointTransient
 from transient.models.point.step_solve import ATOL_PER_RTOL, FilmStep, steady_by_time_steps
 from transient.models.roller.dry import edge_positions, polonsky_keer
@@ -124,7 +125,6 @@ class PointContact:
                         why=f"(at least 5 % of the flooded central film {self.hd_central:.3g} m (Hamrock-Dowson): "
                             "a thinner layer cannot carry the load as a film)")
         self.inlet_film = inlet_film
-        given = domain is not None
         if domain is None:
             domain = (-max(4.5, 1.25 * self.m_c), 1.5, 1.0 + 1.5 * c.k)
             if not domain[0] >= -1e4:
@@ -150,14 +150,9 @@ class PointContact:
         self.y_nodes = np.linspace(-y_half, y_half, ny)
         per_b = 1.0 / dx
         if per_b < MIN_NODES_PER_B or c.k / (self.y_nodes[1] - self.y_nodes[0]) < MIN_NODES_PER_B:
-            raise ValueError(
-                f"grid = {grid!r} puts {per_b:.3g} x {c.k / (self.y_nodes[1] - self.y_nodes[0]):.3g} nodes per Hertz "
-                f"semi-axes b x a over the {'given' if given else 'default'} domain = "
-                f"{tuple(round(v, 3) for v in self.domain)} b; allowed: at least {MIN_NODES_PER_B} (more nodes or a smaller domain). b = {c.b:.3g} m and a = "
-                f"{c.a:.3g} m from radius_x = {self.radius_x!r} m, radius_y = {self.radius_y!r} m, load = "
-                f"{self.load!r} N, modulus = {self.modulus!r} Pa" + ("" if given else "; the default domain's inlet "
-                f"from Hamrock-Dowson's critical meniscus of speed = {self.speed!r} m/s, viscosity = {viscosity!r} "
-                f"Pa s, pressure_viscosity = {pressure_viscosity!r} 1/Pa") + ": check their units")
+            found = implausible(self.radius_x, viscosity, self.speed, self.load, c.p_max)
+            raise ValueError(grid_message(grid, per_b, c.k / (self.y_nodes[1] - self.y_nodes[0]), MIN_NODES_PER_B,
+                                          -x_in, found))
         check_fast_path(nx, ny)
         self.grid = (nx, ny)
 
