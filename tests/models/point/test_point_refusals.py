@@ -49,7 +49,6 @@ def test_point_contact_grid_that_does_not_coarsen_is_refused_before_the_dense_ma
 def test_point_contact_unit_slip_names_the_parameters_behind_the_grid():
     """radius_x = 5 (m, meant in mm?) shrinks the Hertz zone under the grid's spacing: the message names radius_x
     with the grid, not the grid alone."""
-    with pytest.raises(ValueError, match=r"grid = \(25, 25\) puts 0\.79 x .* from radius_x = 5\.0 m, .*load = 20\.0 N.*"
-                                         r"check their units") as e:
+    with pytest.raises(ValueError, match=r"radius_x = 5 m \(plausible .*grid = \(25, 25\) puts 0\.79 x") as e:
         PointContact(**dict(POINT, radius_x=5), grid=(25, 25))
     one_line(e)
