@@ -1,7 +1,8 @@
 """Oil whirl and whip of a flexible rotor on two plain journal bearings: a run-up through its first critical
 speed to twice the whirl onset, and the coast-down back.
 
-    transient run scenarios/rotor_whip.py [--quick] [--out DIR] [--grid 151 21] [--revolutions 400] [--fresh]
+    transient run scenarios/rotor_whip.py [--quick] [--out DIR] [--grid 151 21] [--revolutions 400] [--method bdf2]
+                                          [--fresh]
 
 The built-in flexible rotor (``Rotor.example()``: an 80 mm steel shaft of 1.2 m with a 400 mm disk at mid-span,
 Timoshenko elements; stiffness-proportional structural damping 1e-5 s) on two bearings of Rho & Kim ("Noise
@@ -79,13 +80,15 @@ def main(argv=None):
     ap = parser(__doc__, OUT)
     ap.add_argument("--grid", type=int, nargs=2, metavar=("NT", "NZ"), help="film grid (default 151 21; quick 32 6)")
     ap.add_argument("--revolutions", type=float, help="revolutions of the run-up and of the coast-down (400; quick 30)")
+    ap.add_argument("--method", choices=("bdf2", "ida"), default="bdf2",
+                    help="integrator of the runs: BDF2 on the films' content form (default) or IDA")
     ap.add_argument("--fresh", action="store_true", help="ignore existing checkpoints")
     a = ap.parse_args(argv)
     grid = tuple(a.grid) if a.grid else ((32, 6) if a.quick else (151, 21))
     revs = a.revolutions or (30.0 if a.quick else 400.0)
     out = Path(a.out)
     out.mkdir(parents=True, exist_ok=True)
-    rec = JsonRecord(out / "rotor_whip.json", dict(grid=grid, revolutions=revs, quick=a.quick))
+    rec = JsonRecord(out / "rotor_whip.json", dict(grid=grid, revolutions=revs, quick=a.quick, method=a.method))
     s, bnode, disk = build(grid)
     t0 = time.perf_counter()
     eq = s.equilibrium(3000.0)
@@ -111,15 +114,15 @@ def main(argv=None):
 
     runs = {}
     for name, (n0, n1), start in (("run_up", (0.3 * th, 2.0 * th), None), ("coast_down", (2.0 * th, 0.3 * th), "run_up")):
-        ckpt = out / f"{name}_checkpoint.npz"
+        ckpt = out / f"{name}_{a.method}_checkpoint.npz"
         if a.fresh and ckpt.exists():
             ckpt.unlink()
         log(f"[rotor] {name.replace('_', '-')} {n0:.0f} -> {n1:.0f} rpm over {revs:g} revolutions; checkpoint {ckpt}")
         t_start = runs[start].final_time if start else 0.0
         with fresh_advice():
-            r = s.run(revs, ramp(n0, n1, revs, t_start), rtol=1e-5, start=runs.get(start), checkpoint=ckpt,
-                      resume=True, chunk_revolutions=10.0, outputs_per_revolution=OPR, progress=True, touch_gap=1e-3,
-                      reference_speed_rpm=2.0 * th)
+            r = s.run(revs, ramp(n0, n1, revs, t_start), method=a.method, rtol=1e-5, start=runs.get(start),
+                      checkpoint=ckpt, resume=True, chunk_revolutions=10.0, outputs_per_revolution=OPR, progress=True,
+                      touch_gap=1e-3, reference_speed_rpm=2.0 * th)
         r.save(out / f"{name}.npz")
         runs[name] = r
         ns, amp = synchronous_amplitude(r.t, r.position(disk)[0], r.speed_rpm, 2.0)
