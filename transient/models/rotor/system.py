@@ -31,12 +31,12 @@ from transient.checks import (check_choice, check_int, check_memory, check_posit
                               short_repr)
 from transient.models.journal.bearing import JournalBearing, NoEquilibriumError, check_speed
 from transient.models.journal.film import read_only
+from transient.models.journal.orbit import BDF2_MIN_STEPS
 from transient.models.rotor.content_form import ContentSystem
 from transient.models.rotor.model import SystemDAE
 from transient.models.rotor.results import RotorEquilibrium, RotorRunResult, UnbalanceResponse
 from transient.models.rotor.rotor import Rotor
 from transient.solvers.integrate import Problem, Stats
-from transient.models.journal.orbit import BDF2_MIN_STEPS
 from transient.solvers.longrun import run_long
 from transient.solvers.newton import NewtonError, newton
 from transient.units import rpm_to_rad_s
