@@ -89,8 +89,8 @@ def test_the_band_of_two_films_is_one_films(bearing):
 def test_one_node_rotor_is_the_journal_orbit(bearing):
     """The same equations as the journal orbit's content form (the rotor row scaled by its mass, the unbalance on
     the shaft angle): the same steps, the orbit to 1e-6 C."""
-    r = one_node(bearing).run(2, 6000, method="bdf2", rtol=1e-7, atol=1e-10)
-    o = JournalOrbit(bearing, M_ROTOR, ECC, M_ROTOR * G, 6000).run(2, method="bdf2", rtol=1e-7, atol=1e-10)
+    r = one_node(bearing).run(1, 6000, method="bdf2", rtol=1e-7, atol=1e-10)
+    o = JournalOrbit(bearing, M_ROTOR, ECC, M_ROTOR * G, 6000).run(1, method="bdf2", rtol=1e-7, atol=1e-10)
     assert r.success and r.method == "bdf2" and np.array_equal(r.t, o.t)
     assert r.stats.n_steps == o.stats.n_steps
     x, y = r.position(0)
@@ -105,8 +105,8 @@ def test_symmetric_rotor_on_two_bearings_is_the_half_orbit(bearing):
     rotor = Rotor.rigid(M_ROTOR, 3.0, 0.5)
     s = RotorBearingSystem(rotor, {0: bearing, 1: bearing}, unbalance=[(0, M_ROTOR * ECC / 2, 0.0),
                                                                        (1, M_ROTOR * ECC / 2, 0.0)], gravity=G)
-    r = s.run(2, 6000, method="bdf2", rtol=1e-7, atol=1e-10)
-    o = JournalOrbit(bearing, M_ROTOR / 2, ECC, M_ROTOR * G / 2, 6000).run(2, method="bdf2", rtol=1e-7, atol=1e-10)
+    r = s.run(1, 6000, method="bdf2", rtol=1e-7, atol=1e-10)
+    o = JournalOrbit(bearing, M_ROTOR / 2, ECC, M_ROTOR * G / 2, 6000).run(1, method="bdf2", rtol=1e-7, atol=1e-10)
     assert r.success
     for node in (0, 1):
         x, y = r.position(node)
@@ -119,10 +119,10 @@ def test_bdf2_agrees_with_ida_on_a_flexible_rotor(bearing):
     closer at rtol 1e-7 (the error follows the tolerance)."""
     s = flexible_system(bearing)
     kw = dict(outputs_per_revolution=40, atol=1e-10)
-    ref = s.run(0.5, 6000, rtol=1e-9, **kw)
-    runs = [s.run(0.5, 6000, method="bdf2", rtol=rtol, **kw) for rtol in (1e-6, 1e-7)]
+    ref = s.run(0.25, 6000, rtol=1e-9, **kw)
+    runs = [s.run(0.25, 6000, method="bdf2", rtol=rtol, **kw) for rtol in (1e-6, 1e-7)]
     assert all(r.success and np.allclose(r.t, ref.t, rtol=1e-12) for r in runs)
-    assert np.max(np.abs(ref.displacement - ref.displacement[0])) > 1e-2 * bearing.clearance  # it moves
+    assert np.max(np.abs(ref.displacement - ref.displacement[0])) > 5e-3 * bearing.clearance  # it moves
     err = [np.max(np.abs(r.displacement - ref.displacement)) / bearing.clearance for r in runs]
     assert err[0] < 1e-6 and err[1] < err[0] / 2, err
 

@@ -32,13 +32,12 @@ from transient.checks import (check_bool, check_choice, check_instance, check_in
 from transient.models.journal.bearing import (FILM_BYTES_PER_CELL, GRID_ADVICE, SPEED_RANGE_RPM, JournalBearing,
                                               NoEquilibriumError, bearing_memory, check_speed)
 from transient.models.journal.film import read_only
-from transient.models.journal.orbit import wall_crossing
+from transient.models.journal.orbit import BDF2_MIN_STEPS, wall_crossing
 from transient.models.rotor.content_form import ContentSystem
 from transient.models.rotor.model import SystemDAE
 from transient.models.rotor.results import RotorEquilibrium, RotorRunResult, UnbalanceResponse
 from transient.models.rotor.rotor import Rotor
 from transient.solvers.integrate import Problem, Stats
-from transient.models.journal.orbit import BDF2_MIN_STEPS
 from transient.solvers.longrun import run_long
 from transient.solvers.newton import NewtonError, newton
 from transient.units import rpm_to_rad_s
