@@ -189,3 +189,31 @@ def test_touch_event_stops_the_run_at_the_bearing(bearing):
     assert r.touched_at is not None and r.t[-1] < 3 * 0.01
     assert "touches its bearing" in r.message
     assert r.eccentricity_ratio(0).max() <= 0.6 + 1e-3
+
+
+def test_equilibrium_by_bordered_band_lu_equals_the_sparse_lu(bearing, monkeypatch):
+    """The equilibrium's Newton solves on the bordered band LU (a band block per film, the rotor the border); the
+    same Newton on SuperLU of the whole system, in the same run, reaches the same state (to the Newton's xtol)."""
+    import scipy.sparse as sp
+    import scipy.sparse.linalg as spla
+
+    from transient.models.rotor import system
+
+    s = flexible_system(bearing, reduced=False)
+    band = s.equilibrium(6000).state
+
+    class SparseLU:
+        def __init__(self, pattern, n_border):
+            self.pattern = pattern
+
+        def factor(self, data):
+            self.lu = spla.splu(sp.csc_matrix((data.copy(), self.pattern.indices, self.pattern.indptr),
+                                              shape=self.pattern.shape))
+            return 0
+
+        def solve(self, rhs):
+            return self.lu.solve(rhs)
+
+    monkeypatch.setattr(system, "BorderedBandLU", SparseLU)
+    sparse = s.equilibrium(6000).state
+    assert np.max(np.abs(band - sparse)) <= 1e-9 * max(1.0, np.max(np.abs(sparse)))

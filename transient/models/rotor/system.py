@@ -37,6 +37,7 @@ from transient.models.rotor.content_form import ContentSystem
 from transient.models.rotor.model import SystemDAE
 from transient.models.rotor.results import RotorEquilibrium, RotorRunResult, UnbalanceResponse
 from transient.models.rotor.rotor import Rotor
+from transient.solvers.bandlu import BorderedBandLU
 from transient.solvers.integrate import Problem, Stats
 from transient.solvers.longrun import run_long
 from transient.solvers.newton import NewtonError, newton
@@ -239,7 +240,9 @@ class RotorBearingSystem:
     def _steady(self, dae, s, y0=None) -> np.ndarray:
         """Newton on the system at rest (``y' = 0``, no unbalance) at speed ratio ``s``: the films' steady
         equations with the groove cells held, the shaft's statics; pseudo-transient continuation if plain
-        Newton fails."""
+        Newton fails. Its linear solves by the bordered band LU (one band block per film, the rotor's states the
+        dense border: :class:`~transient.solvers.bandlu.BorderedBandLU`), whose cost grows linearly with the
+        number of bearings, where a sparse LU of the whole system fills in."""
         y0 = self._start_guess(dae, s) if y0 is None else np.array(y0, dtype=float)
         saved = dae.speed, dae.unbalance
         dae.speed, dae.unbalance = (lambda tau: (s, 0.0)), []
@@ -257,12 +260,16 @@ class RotorBearingSystem:
             out[P0] = y[P0]
             return out
 
+        lu = BorderedBandLU(dae.pattern, dae.n - dae.Q0)  # a band block per film, the rotor as the border
+
         def J(y, shift):
             dae.jacobian(0.0, read_only(y), zero, shift, data)
             data[fixed_diag] = 1.0
             data[dae.rotor_pos[4]] = 0.0
             data[dae.rotor_pos[5]] = 1.0
-            return sp.csc_matrix((data.copy(), dae.pattern.indices, dae.pattern.indptr), shape=dae.pattern.shape)
+            if lu.factor(data) != 0:
+                raise RuntimeError("the bordered band LU met a zero pivot")
+            return lu
 
         try:
             try:
