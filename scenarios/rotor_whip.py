@@ -22,10 +22,11 @@ Writes DIR/campbell.png, response.png, waterfall_run_up.png, waterfall_coast_dow
 DIR/run_up.npz, DIR/coast_down.npz (transient.load_result) and every number in DIR/rotor_whip.json.
 A ROSS rotor (``Rotor.from_ross``) runs the same way; this script uses the built-in one.
 
-Duration: ``--quick`` (32 x 6, 30 revolutions each way) takes about 3.5 min of CPU (measured: 185-210 s), most
-of it in the coast-down, which starts in whip: IDA takes 3,550 steps per revolution there against 250 in the
-run-up. The default (151 x 21, 400 revolutions each way) takes thousands of steps per revolution once the rotor
-whips: expect hours; it is checkpointed, so it can be stopped and resumed.
+Duration: ``--quick`` (32 x 6, 30 revolutions each way) takes about 2.5 min of CPU with ``--method bdf2`` (the
+default; measured 153 s: 965 steps per revolution in the run-up, 2,047 in the coast-down, which starts in whip)
+and about 3.5 min with ``--method ida`` (185-210 s: 3,550 IDA steps per revolution in whip against 250 in the
+run-up). The default (151 x 21, 400 revolutions each way) is checkpointed, so it can be stopped and resumed; it was
+not run to the end (BDF2 on 51 x 11 in whip: 7.3 s of CPU per revolution).
 """
 
 from __future__ import annotations
