@@ -31,6 +31,7 @@ import numpy as np
 
 from transient.checks import (ATOL_FLOOR, ATOL_WHY, check_choice, check_memory, check_positive, check_range,
                               memory_limit)
+from transient.compile_notice import announce
 from transient.models.journal.bearing import GRID_ADVICE, JournalBearing, check_speed
 from transient.models.journal.film import read_only
 from transient.models.journal.flows import film_flows
@@ -438,6 +439,7 @@ class JournalOrbit:
         problem_at = lambda y_, t_: self._problem(y_, t_, touch_gap, formulation)  # noqa: E731
         atol = self.absolute_tolerance(ig.atol, formulation)
         if ig.method == "bdf2":
+            announce("bdf2")  # a cold cache compiles the content kernels and the Newton once (~30 s)
             spr = BDF2_MIN_STEPS if ig.steps_per_revolution is None else ig.steps_per_revolution
             pattern = self.newton_pattern()[0]
             return _Step(lambda y_, t_: self._problem(y_, t_, touch_gap, formulation, pattern), rtol=ig.rtol,

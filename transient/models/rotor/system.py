@@ -31,6 +31,7 @@ from transient.checks import (check_bool, check_choice, check_instance, check_in
                               check_positive, check_range, check_rtol, check_vector, memory_limit, short_repr)
 from transient.models.journal.bearing import (FILM_BYTES_PER_CELL, GRID_ADVICE, SPEED_RANGE_RPM, JournalBearing,
                                               NoEquilibriumError, bearing_memory, check_speed)
+from transient.compile_notice import announce
 from transient.models.journal.film import read_only
 from transient.models.journal.orbit import BDF2_MIN_STEPS, wall_crossing
 from transient.models.rotor.content_form import ContentSystem
@@ -506,6 +507,7 @@ class RotorBearingSystem:
         n_events = len(dae.blocks) if events else 0
         stepping = {}
         if method == "bdf2":
+            announce("rotor_bdf2")  # a cold cache compiles the films' content kernels and the Newton once
             form = ContentSystem(dae)
             rec = _Recorder(self, dae, speed, form.universal_state)
             y_run = form.content_state(y)
