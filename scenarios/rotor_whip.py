@@ -24,7 +24,7 @@ A ROSS rotor (``Rotor.from_ross``) runs the same way; this script uses the built
 
 Duration: ``--quick`` (32 x 6, 30 revolutions each way) takes about 2.5 min of CPU with ``--method bdf2`` (the
 default; measured 153 s: 965 steps per revolution in the run-up, 2,047 in the coast-down, which starts in whip)
-and about 3.5 min with ``--method ida`` (185-210 s: 3,550 IDA steps per revolution in whip against 250 in the
+and about 3 min with ``--method ida`` (172-210 s: 3,550 IDA steps per revolution in whip against 250 in the
 run-up). The default (151 x 21, 400 revolutions each way) is checkpointed, so it can be stopped and resumed; it was
 not run to the end (BDF2 on 51 x 11 in whip: 7.3 s of CPU per revolution).
 """
