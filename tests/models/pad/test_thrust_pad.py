@@ -258,7 +258,7 @@ def test_constructor_validation(kw, match):
     (dict(h0_start=-1e-6), r"h0_start = -1e-06 \[m\]"),
     (dict(t_end=0.0), r"t_end = 0.0 \[s\]"),
     (dict(mass=-1.0), r"mass = -1.0 \[kg\]"),
-    (dict(method="euler"), r"method = .euler.; allowed"),
+    (dict(method="euler"), r"ThrustPad.descent: method = .euler. is not available; it takes one of cvode"),
     (dict(path="fast"), r"path must be one of"),
     (dict(method="rk4"), r"needs dt"),
 ])
