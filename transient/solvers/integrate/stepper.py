@@ -212,7 +212,9 @@ def drive(stepper: Stepper, out, guard, interrupt, max_steps, step_events=None) 
     g_prev = events.values(stepper.t, stepper.y) if events is not None else None
 
     def finish(success, message):
-        guard.n_rhs, guard.n_jac = (guard.n_rhs + k for k in stepper.solver.counts())
+        residuals, jacobians = stepper.solver.counts()
+        guard.n_rhs += residuals
+        guard.n_jac += jacobians
         guard.n_error_test_failures = stepper.n_error_test_failures
         guard.n_nonlinear_failures = stepper.n_nonlinear_failures
         return success, message
