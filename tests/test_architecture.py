@@ -1,6 +1,7 @@
 """The package's import rules (docs/architecture.md), read from the import graph of the source files."""
 
 import ast
+import functools
 from pathlib import Path
 
 PKG = Path(__file__).resolve().parents[1] / "transient"
@@ -69,14 +70,20 @@ def test_solvers_and_results_know_no_model():
 
 
 def _module_imports():
+    """The import edges of the package at ``PKG`` (parsed once per package root)."""
+    return _imports_under(PKG)
+
+
+@functools.lru_cache(maxsize=None)
+def _imports_under(root):
     """(importing module, imported module) for every ``transient.*`` import, as dotted module names; imports inside
     functions count (``ast.walk`` sees them). ``from transient.a import b`` counts as an import of ``transient.a.b``
     when that is a module, else of ``transient.a``."""
-    modules = {".".join(("transient",) + p.relative_to(PKG).with_suffix("").parts).removesuffix(".__init__")
-               for p in PKG.rglob("*.py")}
+    modules = {".".join(("transient",) + p.relative_to(root).with_suffix("").parts).removesuffix(".__init__")
+               for p in root.rglob("*.py")}
     out = []
-    for path in PKG.rglob("*.py"):
-        me = ".".join(("transient",) + path.relative_to(PKG).with_suffix("").parts).removesuffix(".__init__")
+    for path in root.rglob("*.py"):
+        me = ".".join(("transient",) + path.relative_to(root).with_suffix("").parts).removesuffix(".__init__")
         for node in ast.walk(ast.parse(path.read_text())):
             if isinstance(node, ast.ImportFrom) and node.module and node.module.startswith("transient"):
                 for a in node.names:
@@ -91,7 +98,10 @@ def _cycles_in(folder):
     """The import circles among the modules of one package folder (its ``__init__`` re-exports left out)."""
     edges, modules = _module_imports()
     inside = {m for m in modules if m.startswith(folder + ".")}
-    graph = {m: {b for a, b in edges if a == m and b in inside and b != m} for m in inside}
+    graph = {m: set() for m in inside}
+    for a, b in edges:
+        if a in inside and b in inside and b != a:
+            graph[a].add(b)
     cycles, state = [], {}
 
     def visit(m, path):
