@@ -137,6 +137,14 @@ def _gbtrs(lu, b, nrhs_slot):
 
 
 @njit(cache=True)
+def _copy2(src, dst):
+    """``dst[:, :] = src`` for two arrays of the same shape."""
+    for i in range(src.shape[0]):
+        for j in range(src.shape[1]):
+            dst[i, j] = src[i, j]
+
+
+@njit(cache=True)
 def band_factor(data, lu):
     """Factor the matrix with CSC ``data`` (pattern order): band LU of A, Z = A^-1 B, LU of S = D - C Z (on the
     border rows and columns that reach the block). Returns 0, or LAPACK's info > 0 (a zero pivot in A), or -1 (S
@@ -167,10 +175,10 @@ def band_factor(data, lu):
     nb = D.shape[0]
     if nb == 0:
         return 0
-    S[:, :] = D
+    _copy2(D, S)  # element loops: an array assignment compiles numba's shape-mismatch error path (~8 s cold)
     cols, rows = lu.cols, lu.rows
     if cols.size > 0:
-        Z[:, :] = B
+        _copy2(B, Z)
         _gbtrs(lu, Z, 7)
     n = Z.shape[1]
     for a in range(rows.size):

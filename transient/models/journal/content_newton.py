@@ -18,6 +18,7 @@ from transient.models.journal.kernels import (N_ROTOR, content_rows, content_uni
 import transient.solvers.integrate.bdf2 as stepper
 from transient.solvers.integrate.bdf2 import newton_step
 from transient.solvers.integrate.cache_guard import drop_stale_cache
+from transient.solvers.read_only import as_read_only
 
 
 @njit(cache=True)  # newton_step is inlined (its kernels are this module's globals): cached on disk like a kernel
@@ -73,7 +74,7 @@ def bdf2_residual(t, y, yp, out, args):
     :meth:`~transient.models.journal.orbit.JournalOrbit.bdf2_model`, on the cell fields of :func:`fields_of`."""
     switch, rotor, geo, fields, extras, fv, work, tol, regime = args
     fields_of(y, args)
-    stencil_flux(work.u, fields, fv, fields.R, 1.0)
+    stencil_flux(as_read_only(work.u), fields, fv, fields.R, 1.0)
     fx, fy = film_force(fields.P, geo.cosp, geo.sinp, geo.area, rotor.sym)
     content_rows(t, y, yp, out, rotor, geo.area, fields.R, fv.cells.free, fx, fy)
 
@@ -136,8 +137,8 @@ def fields_of(y, args):
                 held = False
                 break
     if not held:
-        content_universal(y, switch, geo, free, u_fixed, work.theta, work.u)
-        state_fields(work.u, y[n], y[n + 1], switch, geo, fields, fv)
+        content_universal(as_read_only(y), switch, geo, free, u_fixed, work.theta, work.u)
+        state_fields(as_read_only(work.u), y[n], y[n + 1], switch, geo, fields, fv)
         work.xy[0] = y[n]
         work.xy[1] = y[n + 1]
 
@@ -150,7 +151,7 @@ def bdf2_to_state(z, y, args):
     switch, rotor, geo, fields, extras, fv, work, tol, regime = args
     free, u_fixed = fv.cells.free, fv.cells.u_fixed
     n = free.size
-    state_fields(z[:n], z[n], z[n + 1], switch, geo, fields, fv)
+    state_fields(as_read_only(z[:n]), z[n], z[n + 1], switch, geo, fields, fv)
     H, C, u = fields.H, fields.C, work.u
     for i in range(n):
         if free[i]:
@@ -172,7 +173,7 @@ def bdf2_from_state(y, z, args):
     switch, rotor, geo, fields, extras, fv, work, tol, regime = args
     free, u_fixed = fv.cells.free, fv.cells.u_fixed
     n = free.size
-    content_universal(y, switch, geo, free, u_fixed, work.theta, z[:n])
+    content_universal(as_read_only(y), switch, geo, free, u_fixed, work.theta, z[:n])
     for i in range(n):
         if not free[i]:
             z[i] = y[i]

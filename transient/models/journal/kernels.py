@@ -36,6 +36,7 @@ from numba.extending import overload
 
 from transient.physics.cavitation import elrod_content, elrod_inverse, sharp_fixed_cells, softplus_pressure
 from transient.fv.reynolds import jacobian_kernel, residual_kernel, scale_rows
+from transient.solvers.read_only import as_read_only
 from transient.models.journal.gecim_film import bulk_jacobian, bulk_residual
 
 N_ROTOR = 4  # X, Y, VX, VY appended after the cells
@@ -402,7 +403,7 @@ def _content_film(y, switch, geo, fields, fv, work, sym):
     u, theta = work.u, work.theta
     n = free.size
     content_universal(y, switch, geo, free, u_fixed, theta, u)
-    stencil_residual(u, y[n], y[n + 1], switch, geo, fields, fv, R, 1.0)
+    stencil_residual(as_read_only(u), y[n], y[n + 1], switch, geo, fields, fv, R, 1.0)
     return film_force(P, cosp, sinp, area, sym)
 
 
@@ -459,7 +460,7 @@ def content_jacobian(tau, y, yp, cj, data, switch, rotor, geo, fields, extras, f
     u, theta, E, ux, uy, indptr = work.u, work.theta, work.E, work.ux, work.uy, work.indptr
     n = free.size
     content_universal(y, switch, geo, free, u_fixed, theta, u)
-    stencil_jacobian(u, y[n], y[n + 1], switch, geo, fields, extras, fv, data, 1.0)
+    stencil_jacobian(as_read_only(u), y[n], y[n + 1], switch, geo, fields, extras, fv, data, 1.0)
     for j in range(n):
         h = H[j]
         if free[j] and h > H_FLOOR:

@@ -229,9 +229,9 @@ def newton_step(residual, jacobian, norm, to_state, from_state, args, t, cj, b, 
         rate = size / prev if it > 0 else 0.0
         r = rate if it > 0 else state[RATE]
         state[RATE] = rate
-        z_base[:] = z
-        d_base[:] = dz
-        for i in range(n):
+        for i in range(n):  # element loops: an array assignment compiles numba's shape-mismatch error path
+            z_base[i] = z[i]
+            d_base[i] = dz[i]
             z[i] -= dz[i]
         done = size <= 1.0
         if not done and fresh != it and 0.0 < r < 0.9:
