@@ -235,7 +235,7 @@ FAST = settings(max_examples=_EXPLORE or 25, deadline=None, derandomize=not _EXP
                 suppress_health_check=[HealthCheck.too_slow, HealthCheck.function_scoped_fixture])
 
 LINE = dict(radius=0.01, load_per_length=1e5, speed=1.0, viscosity=0.04, pressure_viscosity=2e-8, modulus=2.2e11,
-            grid=61)
+            grid=129)
 
 
 @FAST

@@ -155,7 +155,7 @@ def service_loads(quick: bool) -> list:
 
 def transients(quick: bool) -> list:
     out = []
-    lc = LineContact(0.01, 3.1e4, 1.0, 0.022, 2500 / 220e9, 220e9, grid=201 if quick else 401)
+    lc = LineContact(0.01, 3.1e4, 1.0, 0.022, 2500 / 220e9, 220e9, grid=201 if quick else 401, domain=(-5.0, 2.5))
     lc.steady(penalty=GAMMA)  # JIT warm-up
     t0 = time.perf_counter()
     s = lc.steady(penalty=GAMMA)

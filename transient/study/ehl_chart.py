@@ -21,14 +21,13 @@ import numpy as np
 from transient.models.roller import LineContact
 from transient.models.roller.line_contact import FilmResolutionWarning
 from transient.models.roller.grid import clustered_axis
+from transient.models.roller.line_grid import LINE_CLUSTERS
 from transient.physics.line_formulas import moes_asymptotes, moes_central
 
 RADIUS, MODULUS, VISCOSITY = 0.01, 220e9, 0.02
-#: node-density clusters ``(centre, width, weight)``, units of b (:func:`transient.models.roller.grid.clustered_axis`):
-#: the Hertz zone, the inlet edge (where the film is set: at M = 1000 its pressure build-up spans ~0.01 b) and
-#: the outlet spike. The inlet cluster is what brings H_c on 1025 nodes to within 0.2 % of the grid limit at
-#: M = 1000 (a wider, weaker one left it 8 % below; docs/validation.md)
-CLUSTERS = ((0.0, 1.1, 4.0), (-1.0, 0.03, 40.0), (1.0, 0.05, 8.0))
+#: node-density clusters ``(centre, width, weight)``, units of b: the line contact's default clusters
+#: (:data:`transient.models.roller.line_grid.LINE_CLUSTERS`)
+CLUSTERS = LINE_CLUSTERS
 
 
 def chart_domain(M: float) -> tuple[float, float]:

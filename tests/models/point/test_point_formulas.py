@@ -25,11 +25,14 @@ def test_nvm_in_si_uses_moes_groups():
 
 
 def chart_contact(M, L, density, grid):
-    """Rx = 10 mm, E' = 220 GPa, eta0 = 0.04 Pa s, 20 N; the speed from M, alpha from L (Barus)."""
+    """Rx = 10 mm, E' = 220 GPa, eta0 = 0.04 Pa s, 20 N; the speed from M, alpha from L (Barus); the first-order
+    flux, with which the NVM bounds below were measured (docs/validation.md: with the second-order flux the
+    65 x 65 and 129 x 129 films are 14 % and 0.5 % below the incompressible limit)."""
     E, R, w, eta = 2.2e11, 0.01, 20.0, 0.04
     two_u = (w / (E * R * R) / M) ** (4.0 / 3.0)
     pc = PointContact(R, load=w, speed=two_u * E * R / (2.0 * eta), viscosity=eta,
-                      pressure_viscosity=L / (E * two_u ** 0.25), modulus=E, density=density, grid=(grid, grid))
+                      pressure_viscosity=L / (E * two_u ** 0.25), modulus=E, density=density, grid=(grid, grid),
+                      upwind="first")
     assert pc.moes == pytest.approx((M, L), rel=1e-9)
     return pc, nvm_central(M, L) * R * math.sqrt(two_u)
 

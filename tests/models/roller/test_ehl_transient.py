@@ -13,7 +13,7 @@ R, E = 0.01, 220e9
 
 
 def paperlike(n):
-    return LineContact(R, 3.1e4, 1.0, 0.022, 2500 / E, E, grid=n)
+    return LineContact(R, 3.1e4, 1.0, 0.022, 2500 / E, E, grid=n, domain=(-5.0, 2.5))  # the paper's extent
 
 
 def test_rigid_pure_squeeze_matches_closed_form_second_order():

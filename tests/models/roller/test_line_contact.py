@@ -86,7 +86,7 @@ def test_load_balance_and_complementarity():
 
 
 def test_analytic_jacobian_matches_finite_differences(fd_jacobian):
-    c = contact(grid=61)
+    c = contact(grid=61, domain=(-5.0, 2.5))
     f = c.film_problem()
     u = c.initial_guess(f)
     u[:-1] += 0.05 * np.random.default_rng(3).random(u.size - 1)

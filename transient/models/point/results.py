@@ -21,9 +21,9 @@ class PointSteady(SteadyResult):
     ``b`` and ``hertz_pressure`` the Hertz semi-axis along the rolling direction and maximum pressure,
     ``inlet_flux``, ``outlet_flux`` and ``side_flux`` the oil flow rates into the domain at its inlet and out of
     it at its outlet and sides [m^3/s] (volume at ambient density), ``inlet_film`` the prescribed inlet layer
-    (``inf``: fully flooded). ``grid_change`` the films on every second node and their relative changes,
-    ``grid_settled`` whether both changed by less than 5 % (:meth:`PointContact.grid_check`; False when not
-    checked)."""
+    (``inf``: fully flooded). ``grid_change`` the films on every second and fourth node and the
+    error of each film they bound, ``grid_settled`` whether both errors are at most 5 % (:meth:`PointContact.grid_check`;
+    False when not checked)."""
 
     time_axis = None
     x: np.ndarray = quantity("m")

@@ -10,9 +10,11 @@ condition, load balance and the plane-strain elastic film (Johnson eq. 2.25b)::
 Scaled by the Hertz half-width ``b`` and pressure ``p_h`` (:func:`transient.physics.line_formulas.hertz_line`):
 ``x = b X``, ``p = p_h P``, ``h = (b^2/R) H``; then ``H = H0 + X^2/2 - (1/pi) int P ln|X - S| dS``,
 ``int P dX = pi/2`` and the Reynolds equation has the wedge coefficient ``lam = 12 eta0 u R^2/(b^3 p_h)``.
-Domain ``X in [domain[0], domain[1]]`` (default -5 ... 2.5, the paper's extent in the rolling
-direction), uniform nodes by default; finite volumes with second-order upwind wedge flux, the
-complementarity form of the exit condition solved inside Newton (:mod:`transient.models.roller.kernels`).
+Domain ``X in [domain[0], domain[1]]`` and grid by default from the contact's regime
+(:mod:`transient.models.roller.line_grid`: the paper's -5 ... 2.5 where the contact is elastic, longer where the
+rigid inlet wedge ``sqrt(2 R h_c)`` is; clustered nodes from M = 10, else uniform at the resolving spacing);
+finite volumes with second-order upwind wedge flux, the complementarity form of the exit condition solved
+inside Newton (:mod:`transient.models.roller.kernels`).
 ``elastic=False`` gives the rigid cylinder (Martin's limit).
 """
 
@@ -30,6 +32,9 @@ from transient.models.roller.dry import edge_positions, polonsky_keer
 from transient.models.roller.ehl_problem import EHLFilm, interpolate_state, solve_steady
 from transient.models.roller.grid import TensorGrid
 from transient.models.roller.line_fft import LineFFTFilm, matrix_free
+from transient.models.roller.line_grid import (ELASTIC_INLET_WARN, INLET_RESOLUTION, RIGID_INLET_WARN, RIGID_WARN,
+                                               default_domain, default_grid, hydrodynamic_length, resolving_spacing,
+                                               rigid_regime, uniform_nodes)
 from transient.models.roller.line_sequence import inlet_spacing, solve_sequence
 from transient.models.roller.results import EHLConvergenceError, LineDry, LineSteady, LineTransient
 from transient.models.roller.transient import load_ratio, run_squeeze
@@ -44,15 +49,18 @@ SCHEMES = ("upwind2", "upwind1")
 M_EASY, L_EASY = 10.0, 5.0
 #: Newton iterations allowed per continuation step (a step needing more is too long: it is halved)
 PATH_MAX_ITER = 25
-#: largest M dx_in (dx_in: the node spacing at the inlet edge x = -b) at which the central film is resolved to
-#: about 1 %; measured against grid limits (Barus, incompressible): M dx_in = 0.4 -> -0.2 %, 0.54 -> -0.9 %,
-#: 1.6 -> -5 %, 2.4 -> -8 %, 5.4 -> -57 % (docs/validation.md)
-INLET_RESOLUTION = 0.6
 
 
 class FilmResolutionWarning(UserWarning):
-    """A converged film on a grid too coarse at the inlet edge for its load: the discrete equations are
-    solved, but the film is not that of the continuous problem to ~1 % (:data:`INLET_RESOLUTION`)."""
+    """A converged film on a grid too coarse at the inlet edge for its load (or, in the rigid regime, for the
+    inlet wedge): the discrete equations are solved, but the film is not that of the continuous problem to ~1 %
+    (:data:`~transient.models.roller.line_grid.INLET_RESOLUTION`, :data:`~transient.models.roller.line_grid.RIGID_WARN`)."""
+
+
+class StarvedInletWarning(UserWarning):
+    """A domain whose inlet lies within a few hydrodynamic lengths ``sqrt(2 R h_c)`` of the contact: the film is
+    that of a contact fed from there, thinner than the fully flooded one
+    (:mod:`transient.models.roller.line_grid`)."""
 
 
 class _DenseOperator:
@@ -89,15 +97,17 @@ class LineContact:
     entrainment), ``viscosity`` eta0 [Pa s], ``pressure_viscosity`` alpha [1/Pa], ``modulus`` E' [Pa];
     ``density`` ``"dowson-higginson"`` (the paper's constants 0.58, 1.68 /GPa unless ``dh_constants``)
     or ``"incompressible"``; ``viscosity_law`` ``"barus"``, ``"roelands"`` or ``"isoviscous"``;
-    ``grid``: number of nodes (uniform, boundary nodes included), the node positions in units of b, or
-    ``"resolved"``: uniform, at least 401 nodes and :meth:`resolving_nodes` (uniform grids above 1025 nodes
-    are solved with DC-FFT elasticity, :mod:`transient.models.roller.line_fft`);
-    ``domain`` (inlet, outlet) in units of b; ``scheme`` ``"upwind2"`` or ``"upwind1"``;
+    ``grid``: None (default: the grid that resolves this contact's film, :func:`~transient.models.roller.line_grid.default_grid`:
+    clustered nodes for an elastic contact from M = 10, else uniform), a number of nodes (uniform, boundary nodes
+    included), the node positions in units of b, or ``"resolved"``: uniform, at least 401 nodes and
+    :meth:`resolving_nodes` (uniform grids above 1025 nodes are solved with DC-FFT elasticity,
+    :mod:`transient.models.roller.line_fft`); ``domain`` (inlet, outlet) in units of b (None: fully flooded for the
+    regime, :func:`~transient.models.roller.line_grid.default_domain`); ``scheme`` ``"upwind2"`` or ``"upwind1"``;
     ``elastic=False`` for a rigid cylinder.
     """
 
     def __init__(self, radius, load_per_length, speed, viscosity, pressure_viscosity, modulus,
-                 density: str = "dowson-higginson", viscosity_law: str = "barus", grid=401, domain=(-5.0, 2.5),
+                 density: str = "dowson-higginson", viscosity_law: str = "barus", grid=None, domain=None,
                  scheme: str = "upwind2", elastic: bool = True, dh_constants=DOWSON_HIGGINSON_PARK):
         self.radius = check_range("radius", radius, "m", 1e-5, 10.0)
         self.load_per_length = check_range("load_per_length", load_per_length, "N/m", 1e-3, 1e10)
@@ -111,14 +121,24 @@ class LineContact:
             raise ValueError(f"scheme = {scheme!r} is not one of {SCHEMES}")
         self.scheme = scheme
         self.elastic = bool(elastic)
-        lo = check_range("domain[0] (inlet)", domain[0], "b", -1e5, -1.0)
-        hi = check_range("domain[1] (outlet)", domain[1], "b", 1.0, 1e5)
-        self.domain = (lo, hi)
         self.b, self.p_h = hertz_line(self.load_per_length, self.radius, self.modulus)
         self.U, self.G, self.W = line_groups(self.lubricant.viscosity, self.speed, self.lubricant.pressure_viscosity,
                                              self.load_per_length, self.modulus, self.radius)
         self.M, self.L = moes_groups(self.U, self.G, self.W)
-        if isinstance(grid, str):
+        self.explicit_domain = domain is not None
+        if domain is None:
+            domain = default_domain(self.M, self.L, self.elastic)
+            if domain[0] < -1e5:
+                raise ValueError(f"the default domain's inlet, {-domain[0]:.3g} b upstream (26 hydrodynamic lengths "
+                                 f"sqrt(2 R h_c) at M = {self.M:.3g}), is out of range; allowed: at most 1e5 b: the "
+                                 "load is too light for its modulus (check load_per_length, speed, viscosity and "
+                                 "modulus and their units)")
+        lo = check_range("domain[0] (inlet)", domain[0], "b", -1e5, -1.0)
+        hi = check_range("domain[1] (outlet)", domain[1], "b", 1.0, 1e5)
+        self.domain = (lo, hi)
+        if grid is None:
+            grid = default_grid(self.M, self.L, self.elastic, self.domain)
+        elif isinstance(grid, str):
             if grid != "resolved":
                 raise ValueError(f"grid = {grid!r}: a number of nodes, the node positions (units of b) or 'resolved'")
             grid = max(401, self.resolving_nodes())
@@ -236,10 +256,10 @@ class LineContact:
         equations of :meth:`film_problem`, so the discrete film is the same. Where that fails, and for
         ``initial`` or ``penalty``, :meth:`steady_reynolds`. Raises :class:`EHLConvergenceError` (its
         ``result`` flagged ``success=False`` with the residual history) if no path reaches the contact,
-        unless ``raise_on_failure=False``. A converged film on a grid too coarse at the inlet edge for this
-        load (spacing above ``INLET_RESOLUTION / M``) warns :class:`FilmResolutionWarning` and says so in its
-        message, naming the uniform node count that resolves it (:meth:`resolving_nodes`; the grid is the
-        user's: ``grid="resolved"`` asks for that count). Uniform grids above 1025 nodes are solved matrix-free
+        unless ``raise_on_failure=False``. A converged film on an explicit grid too coarse for this load
+        (:meth:`_check_resolution`) warns :class:`FilmResolutionWarning` and says so in its message, naming the
+        uniform node count that resolves it (:meth:`resolving_nodes`; the default grid resolves it); an explicit
+        domain that cuts the inlet off warns :class:`StarvedInletWarning`. Uniform grids above 1025 nodes are solved matrix-free
         (DC-FFT elasticity, :mod:`transient.models.roller.line_fft`): there a film-content solution that
         differs from the Reynolds-condition one in the rupture node is returned as it is (with a note), and
         there is no dense fallback."""
@@ -286,22 +306,45 @@ class LineContact:
         return self._check_resolution(fallback) if fallback.success else fallback
 
     def resolving_nodes(self) -> int:
-        """The smallest uniform node count ``2^k + 1`` over :attr:`domain` whose spacing resolves the inlet edge,
-        ``dx <= INLET_RESOLUTION / M`` (the film to ~1 %; a power of two for the grid levels)."""
-        intervals = (self.domain[1] - self.domain[0]) * self.M / INLET_RESOLUTION
-        return 2 ** max(4, math.ceil(math.log2(intervals))) + 1
+        """The smallest uniform node count ``2^k + 1`` over :attr:`domain` whose spacing resolves the film
+        (:func:`~transient.models.roller.line_grid.resolving_spacing`: ``dx <= INLET_RESOLUTION / M`` at the inlet
+        edge, and in the rigid regime ``dx <= RIGID_RESOLUTION sqrt(2 R h_c)``; the film to a few tenths of a per
+        cent; a power of two for the grid levels)."""
+        return uniform_nodes(self.domain, resolving_spacing(self.M, self.L, self.elastic))
 
     def _check_resolution(self, res: LineSteady) -> LineSteady:
         """``res``, its message noting (and a :class:`FilmResolutionWarning` raised) when the grid's spacing
-        at the inlet edge exceeds ``INLET_RESOLUTION / M``."""
+        at the inlet edge exceeds ``INLET_RESOLUTION / M`` or, in the rigid regime, the largest spacing within
+        ``3 s`` of the centre exceeds ``RIGID_WARN s`` (``s = sqrt(2 R h_c)/b``), and (a
+        :class:`StarvedInletWarning`) when the inlet lies closer than ``RIGID_INLET_WARN s`` (rigid regime) or
+        ``ELASTIC_INLET_WARN s`` (elastic) upstream."""
+        s = hydrodynamic_length(self.M, self.L, self.elastic)
+        rigid = rigid_regime(self.M, self.elastic)
+        notes = []
         dx = inlet_spacing(self.grid)
-        if self.M * dx > INLET_RESOLUTION:
-            note = (f"under-resolved: node spacing {dx:.3g} b at the inlet edge x = -b, above "
-                    f"{INLET_RESOLUTION}/M = {INLET_RESOLUTION / self.M:.3g} b: the film is that of the discrete "
-                    f"equations, not within ~1 % of the grid limit: use {self.resolving_nodes()} uniform nodes "
-                    "(grid='resolved') or cluster the nodes at x = -b")
+        if self.elastic and self.M * dx > INLET_RESOLUTION:
+            notes.append(f"under-resolved: node spacing {dx:.3g} b at the inlet edge x = -b, above "
+                         f"{INLET_RESOLUTION}/M = {INLET_RESOLUTION / self.M:.3g} b")
+        if rigid:
+            x = self.grid.x
+            near = (x[1:] > -3.0 * s) & (x[:-1] < 3.0 * s)
+            dx_s = float(np.max(np.diff(x)[near])) if near.any() else float(x[-1] - x[0])
+            if dx_s > RIGID_WARN * s:
+                notes.append(f"under-resolved: node spacing {dx_s:.3g} b near the contact, above {RIGID_WARN} "
+                             f"sqrt(2 R h_c) = {RIGID_WARN * s:.3g} b (the rigid inlet wedge)")
+        if notes:
+            note = (" and ".join(notes) + ": the film is that of the discrete equations, not within ~1 % of the grid "
+                    f"limit: use {self.resolving_nodes()} uniform nodes (grid='resolved') or the default grid")
             res.message += "; " + note
             warnings.warn(f"LineContact.steady at M = {self.M:.3g}: {note}", FilmResolutionWarning, stacklevel=3)
+        need = RIGID_INLET_WARN if rigid else ELASTIC_INLET_WARN
+        if -self.domain[0] < need * s:
+            note = (f"starved inlet: the domain starts {-self.domain[0]:.3g} b upstream, within {need:g} "
+                    f"hydrodynamic lengths sqrt(2 R h_c) = {s:.3g} b of the contact: the film is thinner than the "
+                    f"fully flooded one (the default domain starts {-default_domain(self.M, self.L, self.elastic)[0]:.3g} b "
+                    "upstream)")
+            res.message += "; " + note
+            warnings.warn(f"LineContact.steady at M = {self.M:.3g}: {note}", StarvedInletWarning, stacklevel=3)
         return res
 
     def steady_reynolds(self, initial=None, tol: float = 1e-9, max_iter: int = 60, raise_on_failure: bool = True,
