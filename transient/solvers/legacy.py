@@ -1,0 +1,59 @@
+"""The deprecated loose keywords of a run, mapped onto its settings objects for one release.
+
+A run takes its settings that are not physics as frozen objects (``integration=Integration(rtol=1e-8)``,
+``steps=Steps(dt=0.01)``); the keywords earlier releases took one by one (``rtol=1e-8``) arrive in the run's
+``**legacy`` and :func:`run_settings` builds the objects from them, with a ``DeprecationWarning`` that names the
+old keyword and its new spelling. A keyword the run never took is a ``TypeError`` naming it, as Python's own.
+"""
+
+from __future__ import annotations
+
+import warnings
+from dataclasses import fields
+
+from transient.checks import short_repr
+
+
+def keyword_table(argument: str, cls, names=None) -> dict:
+    """``{field: (argument, cls, field)}`` for the fields ``names`` of ``cls`` (default: all): the part of a
+    :func:`run_settings` table saying that the old keyword ``field`` now goes in ``argument=cls(field=...)``."""
+    names = [f.name for f in fields(cls)] if names is None else names
+    return {n: (argument, cls, n) for n in names}
+
+
+def run_settings(owner: str, legacy: dict, table: dict, defaults: dict | None = None, **given) -> dict:
+    """The settings objects of a run: ``given`` (argument name -> the object the caller passed, or ``None``)
+    completed from the deprecated loose keywords ``legacy`` and the model's defaults.
+
+    ``table`` maps each old keyword to ``(argument, settings class, field)`` -- or ``(argument, class, field,
+    convert)`` when the old value needs converting (``record_profiles=True`` -> ``record=("profiles",)``), see
+    :func:`keyword_table` -- and so names the class of every argument; ``defaults`` maps an argument to the
+    model's own defaults of its class (``{"integration": {"method": "cvode"}}``). An argument left out is its
+    class built from the old keywords given for it over the defaults.
+
+    An unknown keyword is a ``TypeError`` naming it (as Python's own); every old keyword a
+    ``DeprecationWarning`` naming it and its new spelling; an old keyword beside the object it belongs in a
+    ``ValueError`` naming both; an argument that is not its class a ``ValueError``."""
+    classes = {arg: cls for arg, cls, *_ in table.values()}
+    unknown = [k for k in legacy if k not in table]
+    if unknown:
+        raise TypeError(f"{owner}() got an unexpected keyword argument {unknown[0]!r}")
+    built: dict = {arg: {} for arg in given}
+    for old, value in legacy.items():
+        arg, cls, name, *convert = table[old]
+        spelling = f"{arg}={cls.__name__}({name}=...)"
+        if given[arg] is not None:
+            raise ValueError(f"{owner}: {old}={short_repr(value)} and {arg}={cls.__name__}(...) both given; pass the "
+                             f"setting once, as {spelling}")
+        warnings.warn(f"{owner}: the keyword {old}= is deprecated and will be removed in the next release; "
+                      f"pass {spelling}", DeprecationWarning, stacklevel=3)
+        built[arg][name] = convert[0](value) if convert else value
+    out = {}
+    for arg, obj in given.items():
+        cls = classes[arg]
+        if obj is None:
+            obj = cls(**dict((defaults or {}).get(arg, {}), **built[arg]))
+        elif not isinstance(obj, cls):
+            raise ValueError(f"{arg} = {short_repr(obj)}; allowed: None or {cls.__name__}(...)")
+        out[arg] = obj
+    return out
