@@ -4,8 +4,10 @@ SI units at the API. See docs/architecture.md for how the layers fit together.
 
 Public API (re-exported here):
 
-* integration: :func:`solve`, :class:`Problem`, :class:`Solution`, :class:`Stats`; run settings
-  :class:`Integration`, :class:`Recording`, :class:`LongRun` (``JournalOrbit.run``, ``ThrustBallBearing.sequence``)
+* integration: :func:`solve`, :class:`Problem`, :class:`Solution`, :class:`Stats`, :class:`Steps` (its step
+  control); run settings :class:`Integration`, :class:`Recording`, :class:`LongRun` (``JournalOrbit.run``,
+  ``RotorBearingSystem.run``, ``ThrustBallBearing.sequence``) and :class:`TrackSettings` (the ball sequence's
+  track between passes)
 * results: :class:`Result` (the base of every result: units, save/load, summary), :func:`load_result`
 * journal bearing (Rho & Kim): :class:`JournalBearing`, its oil feeds :class:`Groove`, :class:`OilHole`,
   :class:`CircumferentialGroove`, :class:`JournalOrbit` (with ``periodic_response`` and ``response_curve``:
@@ -37,6 +39,7 @@ _os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 from transient._version import __version__  # noqa: E402,F401
 from transient.analysis.acoustics import a_weighting
 from transient.models.ball import ThrustBallBearing
+from transient.models.ball.settings import TrackSettings
 from transient.models.journal import CircumferentialGroove, Groove, JournalBearing, JournalOrbit, OilHole, stability_onset
 from transient.models.pad import ThrustPad
 from transient.models.point import PointContact
@@ -46,7 +49,7 @@ from transient.physics.asperity import AsperityContact, DiscreteDensity, greenwo
 from transient.physics.flow_factors import contact_factor, pressure_flow_factors, shear_flow_factor
 from transient.physics.layered import BoundaryLayers, Gecim, LayeredFilm, Newtonian
 from transient.results import Result, load_result
-from transient.solvers.integrate import Problem, Solution, Stats, solve
+from transient.solvers.integrate import Problem, Solution, Stats, Steps, solve
 from transient.solvers.settings import Integration, LongRun, Recording
 from transient.study.noise import bearing_noise  # the public API re-exports the noise protocol
 from transient.surfaces.roughness import RoughSurface
@@ -55,6 +58,6 @@ __all__ = [
     "AsperityContact", "BoundaryLayers", "CircumferentialGroove", "DiscreteDensity", "Gecim", "Groove", "Integration",
     "LayeredFilm", "LongRun", "Newtonian", "JournalBearing", "JournalOrbit", "LineContact", "OilHole", "PointContact",
     "Problem", "Recording", "Result", "RollerContact", "Rotor", "RotorBearingSystem", "TaperedRoller",
-    "RoughSurface", "Solution", "Stats", "ThrustBallBearing", "ThrustPad", "a_weighting", "bearing_noise", "contact_factor",
+    "RoughSurface", "Solution", "Stats", "Steps", "ThrustBallBearing", "ThrustPad", "TrackSettings", "a_weighting", "bearing_noise", "contact_factor",
     "greenwood_tripp", "load_result", "pressure_flow_factors", "stability_onset", "shear_flow_factor", "solve", "steel_asperity_contact",
 ]

@@ -46,6 +46,7 @@ import numpy as np
 from transient.params.rho_kim import BEARING as RHO_KIM_BEARING, ROTOR as RHO_KIM_ROTOR
 from transient.models.journal.bearing import JournalBearing
 from transient.models.journal.orbit import JournalOrbit
+from transient.solvers.settings import Integration, LongRun, Recording
 
 BEARING, ROTOR = RHO_KIM_BEARING, RHO_KIM_ROTOR
 CLEARANCE = BEARING["clearance"]
@@ -140,16 +141,18 @@ def run(revolutions=None, grid=(151, 21), quick=False, time_budget_s=300.0, spee
     _log(f"[journal bench] grid {grid[0]} x {grid[1]} ({o.n} states), {speed_rpm:g} rpm, {revs:g} rev; "
          f"equilibrium e/C = {eq.eccentricity_ratio:.4f} ({t_eq:.2f} s)", progress)
     for m in ("cvode", "ida", "bdf", "lsoda"):  # JIT / import warm-up, not timed
-        o.run(0.01, method=m, rtol=1e-3, atol=1e-9, outputs_per_revolution=100)
-    o.run(10 / min(cfg["rk4"] or (500,)), method="rk4", steps_per_revolution=min(cfg["rk4"] or (500,)),
-          outputs_per_revolution=min(cfg["rk4"] or (500,)))
+        o.run(0.01, integration=Integration(method=m, rtol=1e-3, atol=1e-9),
+              recording=Recording(outputs_per_revolution=100))
+    o.run(10 / min(cfg["rk4"] or (500,)),
+          integration=Integration(method="rk4", steps_per_revolution=min(cfg["rk4"] or (500,))),
+          recording=Recording(outputs_per_revolution=min(cfg["rk4"] or (500,))))
 
     common = dict(revolutions=revs, outputs_per_revolution=opr)
     _log(f"  reference: CVODE rtol {REF_RTOL:g} ...", progress)
-    ref = o.run(method="cvode", rtol=REF_RTOL, atol=REF_ATOL, **common)
+    ref = o.run(integration=Integration(method="cvode", rtol=REF_RTOL, atol=REF_ATOL), **common)
     _log(f"  reference: {ref.stats.wall_time:.1f} s, {ref.stats.n_steps} steps; check: IDA rtol {REF_RTOL:g} ...",
          progress)
-    chk = o.run(method="ida", rtol=REF_RTOL, atol=REF_ATOL, **common)
+    chk = o.run(integration=Integration(method="ida", rtol=REF_RTOL, atol=REF_ATOL), **common)
     ref_err = _errors(chk, ref, opr)[:2]
     reference = dict(method="cvode", rtol=REF_RTOL, atol=REF_ATOL, wall=ref.stats.wall_time,
                      n_steps=ref.stats.n_steps, check_wall=chk.stats.wall_time, check_error_final=ref_err[0],
@@ -251,8 +254,9 @@ def _long_run(o, rows, matched, cfg, progress):
         return None
     rtol = float(best["setting"])
     _log(f"  long run: {n:g} revolutions, {best['line'].upper()} rtol {rtol:.0e} ...", progress)
-    res = o.run(n, method=best["line"], rtol=rtol, atol=atol_for(rtol), outputs_per_revolution=cfg["outputs_per_revolution"],
-                chunk_revolutions=max(1.0, n / 10), progress=progress)
+    res = o.run(n, integration=Integration(method=best["line"], rtol=rtol, atol=atol_for(rtol)),
+                recording=Recording(outputs_per_revolution=cfg["outputs_per_revolution"]),
+                long_run=LongRun(chunk_revolutions=max(1.0, n / 10), progress=progress))
     st = res.stats
     return dict(method=best["line"], rtol=rtol, revolutions=n, wall=st.wall_time, per_revolution=st.wall_time / n,
                 n_steps=st.n_steps, callback_share=st.callback_share,

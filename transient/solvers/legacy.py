@@ -34,11 +34,10 @@ def run_settings(owner: str, legacy: dict, table: dict, defaults: dict | None = 
     An unknown keyword is a ``TypeError`` naming it (as Python's own); every old keyword a
     ``DeprecationWarning`` naming it and its new spelling; an old keyword beside the object it belongs in a
     ``ValueError`` naming both; an argument that is not its class a ``ValueError``."""
-    classes = {arg: cls for arg, cls, *_ in table.values()}
     unknown = [k for k in legacy if k not in table]
     if unknown:
         raise TypeError(f"{owner}() got an unexpected keyword argument {unknown[0]!r}")
-    built: dict = {arg: {} for arg in given}
+    built: dict = {}
     for old, value in legacy.items():
         arg, cls, name, *convert = table[old]
         spelling = f"{arg}={cls.__name__}({name}=...)"
@@ -47,13 +46,37 @@ def run_settings(owner: str, legacy: dict, table: dict, defaults: dict | None = 
                              f"setting once, as {spelling}")
         warnings.warn(f"{owner}: the keyword {old}= is deprecated and will be removed in the next release; "
                       f"pass {spelling}", DeprecationWarning, stacklevel=3)
-        built[arg][name] = convert[0](value) if convert else value
+        built.setdefault(arg, {})[name] = convert[0](value) if convert else value
+    return settings_objects(table, built, defaults, given)
+
+
+def settings_objects(table: dict, flat: dict, defaults: dict | None = None, given: dict | None = None) -> dict:
+    """The settings objects that ``table`` (see :func:`run_settings`) names, built from ``flat`` (argument ->
+    ``{field: value}``, already converted) over ``defaults``, or taken from ``given`` (argument -> object or
+    ``None``; an object must be its class)."""
+    classes = {arg: cls for arg, cls, *_ in table.values()}
+    given = given if given is not None else dict.fromkeys(classes)
     out = {}
     for arg, obj in given.items():
         cls = classes[arg]
         if obj is None:
-            obj = cls(**dict((defaults or {}).get(arg, {}), **built[arg]))
+            obj = cls(**dict((defaults or {}).get(arg, {}), **flat.get(arg, {})))
         elif not isinstance(obj, cls):
             raise ValueError(f"{arg} = {short_repr(obj)}; allowed: None or {cls.__name__}(...)")
         out[arg] = obj
     return out
+
+
+def flat_settings(table: dict, flat: dict, defaults: dict | None = None) -> dict:
+    """The settings objects of a flat table of settings (a parameter set, a scene file, a sweep's fixed
+    settings: ``{"grid": "front", "rtol": 1e-3}``), keyed by argument, every argument of ``table`` present; a
+    key ``table`` does not know is a ``ValueError`` naming it. No warning: a flat table is a description, not a
+    call."""
+    unknown = [k for k in flat if k not in table]
+    if unknown:
+        raise ValueError(f"{unknown[0]!r} is not a setting; allowed: {', '.join(table)}")
+    built: dict = {}
+    for key, value in flat.items():
+        arg, cls, name, *convert = table[key]
+        built.setdefault(arg, {})[name] = convert[0](value) if convert else value
+    return settings_objects(table, built, defaults)

@@ -20,6 +20,7 @@ from transient.models.journal.periodic import (PeriodicOrbit, ResponseCurve, flo
 from transient.params import rho_kim
 from transient.results import load_result
 from transient.solvers.shooting import floquet_multipliers, newton_krylov, newton_picard
+from transient import Integration, Recording
 
 GRID = (24, 4)
 ROTOR = rho_kim.ROTOR
@@ -122,7 +123,8 @@ def settled():
     out = {}
     for speed, revs in ((3000.0, 12), (6000.0, 36)):
         o = _orbit(speed)
-        r = o.run(revs, y0=o.linear_start(), rtol=1e-9, atol=1e-12, outputs_per_revolution=64)
+        r = o.run(revs, y0=o.linear_start(), integration=Integration(rtol=1e-9, atol=1e-12),
+                  recording=Recording(outputs_per_revolution=64))
         out[speed] = (o, r)
     return out
 

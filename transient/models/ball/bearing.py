@@ -48,6 +48,7 @@ from transient.checks import check_choice, check_int, check_memory, check_range
 from transient.results import StatusResult, quantity, record_type, result_type
 from transient.solvers.integrate import check_method
 from transient.models.ball.settings import TrackSettings
+from transient.solvers.legacy import flat_settings
 from transient.solvers.settings import Integration, Recording, keyword_table, run_settings
 from transient.units import rpm_to_rad_s
 
@@ -60,6 +61,14 @@ SEQUENCE_KEYWORDS = (keyword_table("track", TrackSettings)
                      | {"record_profiles": ("recording", Recording, "record", lambda on: ("profiles",) if on else ())})
 #: The sequence's own integration defaults (the levelling's film is in units of ``h_inf``).
 SEQUENCE_DEFAULTS = {"integration": dict(method="cvode", atol=1e-10)}
+
+
+def sequence_settings(**flat) -> dict:
+    """The ``track``, ``integration`` and ``recording`` objects of :meth:`ThrustBallBearing.sequence` from a flat
+    table of its settings (``sequence_settings(grid="uniform", rtol=1e-4)``; the sequence's own defaults for the
+    rest), e.g. a parameter set such as :data:`transient.params.jeong.MAP_SETTINGS`:
+    ``bearing.sequence(30, 80, 1e-4, **sequence_settings(**MAP_SETTINGS))``."""
+    return flat_settings(SEQUENCE_KEYWORDS, flat, SEQUENCE_DEFAULTS)
 
 
 
