@@ -270,7 +270,7 @@ def test_time_budget_stops_a_long_run(method):
         _time.sleep(2e-4)  # make every step cost wall time
         out[0] = -y[0]
 
-    kw = dict(dt=1e-4) if method == "rk4" else dict(max_step=1e-4)
+    kw = dict(steps=Steps(dt=1e-4) if method == "rk4" else Steps(max_step=1e-4))
     t0 = _time.perf_counter()
     r = solve(Problem(y0=np.ones(1), rhs=rhs), np.linspace(0.0, 100.0, 11), method=method, time_budget=0.2, **kw)
     wall = _time.perf_counter() - t0

@@ -393,8 +393,9 @@ def oscillator2():
 def test_bad_arguments_are_named_with_value_and_range(kwargs, fragments):
     kwargs = dict(kwargs)
     t_eval = kwargs.pop("t_eval", [0.0, 1.0])
+    steps = {k: kwargs.pop(k) for k in ("dt", "max_step", "first_step", "max_steps") if k in kwargs}
     with pytest.raises(ValueError) as info:
-        solve(oscillator2(), t_eval, **kwargs)
+        solve(oscillator2(), t_eval, **kwargs, **({"steps": Steps(**steps)} if steps else {}))
     msg = str(info.value)
     assert "\n" not in msg
     for frag in fragments:

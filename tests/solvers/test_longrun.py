@@ -45,8 +45,8 @@ def drive(path=None, resume=False, n=40, key=None, chunk=10, stop_after=None, me
     rec = Recorder()
     calls = [0]  # right-hand-side calls over the whole run (all chunks)
     out = run_long(lambda y, t: oscillator(y, t, stop_after, calls), np.array([1.0, 0.0]), 0.0, 0.25, n, rec,
-                   method=method, rtol=1e-9, atol=1e-12, chunk_outputs=chunk, checkpoint=path,
-                   resume=resume, key=key or dict(damping=0.1), progress=False)
+                   solver=dict(method=method, rtol=1e-9, atol=1e-12), chunk_outputs=chunk,
+                   long_run=LongRun(checkpoint=path, resume=resume, progress=False), key=key or dict(damping=0.1))
     return rec, out
 
 

@@ -43,7 +43,7 @@ from transient.results import StatusResult, quantity, result_type
 from transient.solvers.integrate import solve
 from transient.solvers.settling import settled_stop, settles
 from transient.solvers.progress import progress_bar
-from transient.solvers.shooting import floquet_multipliers, newton_krylov, newton_picard
+from transient.solvers.shooting import ShootingSettings, floquet_multipliers, newton_krylov, newton_picard
 from transient.solvers.settings import Integration, LongRun, Recording
 
 METHODS = ("shooting", "newton-krylov")
@@ -272,13 +272,13 @@ def periodic_response(orbit: Orbit, rtol: float = 1e-6, tol: float | None = None
     if y0.shape != (orbit.n,):
         raise ValueError(f"start has shape {y0.shape}; this orbit has {orbit.n} states")
     two_pi = 2.0 * np.pi
-    kw = dict(tol=tol, rtol=rtol, rtol_max=max(rtol, 1e-4), norm=_Flow.norm, fd_step=fd_step, max_iter=max_iter)
+    kw = dict(tol=tol, rtol=rtol, rtol_max=max(rtol, 1e-4), fd_step=fd_step, max_iter=max_iter, relax=relax)
     if method == "shooting":
         V = whirl_basis(orbit, y0) if basis is None else np.asarray(basis, dtype=float)
-        sh = newton_picard(F, F.reduce(y0), two_pi, F.reduce(V), relax=relax,
-                           second_ritz=basis is None, refine_floor=REFINE_FLOOR, **kw)
+        sh = newton_picard(F, F.reduce(y0), two_pi, F.reduce(V), norm=_Flow.norm,
+                           settings=ShootingSettings(second_ritz=basis is None, refine_floor=REFINE_FLOOR, **kw))
     else:
-        sh = newton_krylov(F, F.reduce(y0), two_pi, relax=relax, **kw)
+        sh = newton_krylov(F, F.reduce(y0), two_pi, norm=_Flow.norm, settings=ShootingSettings(**kw))
     C = orbit.bearing.clearance
     state = F.embed(sh.state)
     periods, message, converged = sh.periods, sh.message, sh.success

@@ -42,7 +42,7 @@ from transient.solvers.bandlu import BorderedBandLU
 from transient.solvers.integrate import Problem, Stats, Steps
 from transient.solvers.longrun import Display, run_long
 from transient.solvers.settings import Integration, LongRun, Recording, check_unused, keyword_table, run_settings
-from transient.solvers.newton import NewtonError, newton
+from transient.solvers.newton import NewtonError, NewtonSettings, newton
 from transient.units import rpm_to_rad_s
 
 RUN_METHODS = ("ida", "bdf2")
@@ -280,9 +280,10 @@ class RotorBearingSystem:
 
         try:
             try:
-                res = newton(F, J, y0, xtol=1e-11, ftol=1e-10, max_iter=30, name="rotor equilibrium")
+                res = newton(F, J, y0, settings=NewtonSettings(xtol=1e-11, ftol=1e-10, max_iter=30),
+                             name="rotor equilibrium")
             except NewtonError:
-                res = newton(F, J, y0, xtol=1e-11, ftol=1e-10, max_iter=300, pseudo_time=1.0,
+                res = newton(F, J, y0, settings=NewtonSettings(xtol=1e-11, ftol=1e-10, max_iter=300, pseudo_time=1.0),
                              name="rotor equilibrium")
         except NewtonError as exc:
             raise NoEquilibriumError(f"no static equilibrium of the rotor on its bearings at speed_rpm = "
