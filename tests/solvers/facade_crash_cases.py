@@ -21,8 +21,7 @@ import traceback
 import numpy as np
 import scipy.sparse as sp
 
-from transient import Problem, solve
-from transient import Steps
+from transient import Problem, Steps, solve
 
 
 class Boom(Exception):

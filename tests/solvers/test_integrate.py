@@ -4,8 +4,7 @@ import numpy as np
 import pytest
 import scipy.sparse as sp
 
-from transient import Problem, solve
-from transient import Steps
+from transient import Problem, Steps, solve
 
 ADAPTIVE = ["cvode", "ida", "bdf", "radau", "lsoda"]
 
