@@ -12,7 +12,7 @@ Public API (re-exported here):
 * journal bearing (Rho & Kim): :class:`JournalBearing`, its oil feeds :class:`Groove`, :class:`OilHole`,
   :class:`CircumferentialGroove`, :class:`JournalOrbit` (with ``periodic_response`` and ``response_curve``:
   periodic orbits by shooting), :func:`stability_onset`;
-  bearing noise: :func:`bearing_noise`, :func:`a_weighting`
+  bearing noise: :func:`bearing_noise` (its settling run: :class:`Settling`), :func:`a_weighting`
 * layered boundary films and shear-thinning bulk (Jang): :class:`BoundaryLayers` (``JournalBearing(...,
   layers=)``), :class:`Gecim`, :class:`Newtonian`, :class:`LayeredFilm` (the pointwise flow law)
 * thrust ball bearing starvation (Jeong et al.): :class:`ThrustBallBearing`
@@ -52,12 +52,13 @@ from transient.results import Result, load_result
 from transient.solvers.integrate import Problem, Solution, Stats, Steps, solve
 from transient.solvers.settings import Integration, LongRun, Recording
 from transient.study.noise import bearing_noise  # the public API re-exports the noise protocol
+from transient.study.settle import Settling
 from transient.surfaces.roughness import RoughSurface
 
 __all__ = [
     "AsperityContact", "BoundaryLayers", "CircumferentialGroove", "DiscreteDensity", "Gecim", "Groove", "Integration",
     "LayeredFilm", "LongRun", "Newtonian", "JournalBearing", "JournalOrbit", "LineContact", "OilHole", "PointContact",
     "Problem", "Recording", "Result", "RollerContact", "Rotor", "RotorBearingSystem", "TaperedRoller",
-    "RoughSurface", "Solution", "Stats", "Steps", "ThrustBallBearing", "ThrustPad", "TrackSettings", "a_weighting", "bearing_noise", "contact_factor",
+    "RoughSurface", "Settling", "Solution", "Stats", "Steps", "ThrustBallBearing", "ThrustPad", "TrackSettings", "a_weighting", "bearing_noise", "contact_factor",
     "greenwood_tripp", "load_result", "pressure_flow_factors", "stability_onset", "shear_flow_factor", "solve", "steel_asperity_contact",
 ]

@@ -28,16 +28,6 @@ from transient.checks import (ATOL_FLOOR, ATOL_WHY, check_bool, check_choice, ch
 from transient.solvers.integrate import LINEAR_SOLVERS, METHODS
 from transient.solvers.legacy import keyword_table, run_settings  # noqa: F401 (the models' door)
 
-class _Default:
-    """The value of a settings keyword the caller left out (``None`` is a value: ``chunk_revolutions=None``)."""
-
-    def __repr__(self):
-        return "DEFAULT"
-
-
-#: Default of every settings keyword of a model's run: "not given", so the object or the model's default decides.
-DEFAULT = _Default()
-
 #: Film formulations of the journal orbit: the universal variable (every method) or the content ``H theta``.
 FORMULATIONS = ("content", "universal")
 #: The per-stage film criterion of ``rk4`` when ``inner_tolerance`` is left out (Rho & Kim's eq. 6).

@@ -252,9 +252,11 @@ def _journal_orbit_point(p, run):
 
 def _journal_noise_point(p, run):
     from transient.study.noise import bearing_noise
+    from transient.study.settle import Settling
 
-    n = bearing_noise(_journal_build(p), revolutions=run["revolutions"], harmonics=run["harmonics"], rtol=run["rtol"],
-                      max_settle_revolutions=run["max_settle_revolutions"])
+    n = bearing_noise(_journal_build(p), revolutions=run["revolutions"], harmonics=run["harmonics"],
+                      integration=Integration(rtol=run["rtol"]),
+                      settling=Settling(max_periods=run["max_settle_revolutions"]))
     s = dict(level_db=n.level_db, level_dba=n.level_dba, settle_revolutions=n.settle_revolutions,
              whirl_amplitude_um=float(np.max(np.hypot(n.x - n.x.mean(), n.y - n.y.mean())) * 1e6))
     s.update({f"harmonic_{k + 1}x_db": float(v) for k, v in enumerate(n.harmonic_levels_db)})

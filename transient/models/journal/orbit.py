@@ -298,8 +298,10 @@ class JournalOrbit:
         The same settings as loose keywords (``rtol=1e-7``) are deprecated: they still work for one release, with a
         ``DeprecationWarning`` naming the new spelling (beside the object they belong in: an error).
 
-        Settings (the fields of the objects)
-        ------------------------------------
+        Notes
+        -----
+        The fields of the settings objects:
+
         method : ``"cvode"``, ``"ida"``, ``"bdf"``, ``"radau"``, ``"lsoda"``, ``"rk4"`` or ``"bdf2"`` (variable-step
             BDF2 on the content film with its own Newton and a bordered band LU, error test on the rotor only:
             :mod:`transient.solvers.integrate.bdf2`; rtol and atol act on the rotor states, the film is solved every step to
