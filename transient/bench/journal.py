@@ -80,11 +80,11 @@ def _orbit(grid, speed_rpm, switch_width=None):
     return JournalOrbit(b, speed_rpm=speed_rpm, **ROTOR)
 
 
-def _kwargs(line, setting):
+def _integration(line, setting) -> Integration:
     if line in ("rk4", "rk4_tight"):
-        return dict(method="rk4", steps_per_revolution=int(setting),
-                    inner_tolerance=PAPER_INNER if line == "rk4" else TIGHT_INNER)
-    return dict(method=line, rtol=float(setting), atol=atol_for(setting))
+        return Integration(method="rk4", steps_per_revolution=int(setting),
+                           inner_tolerance=PAPER_INNER if line == "rk4" else TIGHT_INNER)
+    return Integration(method=line, rtol=float(setting), atol=atol_for(setting))
 
 
 def _errors(res, ref, opr):
@@ -147,7 +147,7 @@ def run(revolutions=None, grid=(151, 21), quick=False, time_budget_s=300.0, spee
           integration=Integration(method="rk4", steps_per_revolution=min(cfg["rk4"] or (500,))),
           recording=Recording(outputs_per_revolution=min(cfg["rk4"] or (500,))))
 
-    common = dict(revolutions=revs, outputs_per_revolution=opr)
+    common = dict(revolutions=revs, recording=Recording(outputs_per_revolution=opr))
     _log(f"  reference: CVODE rtol {REF_RTOL:g} ...", progress)
     ref = o.run(integration=Integration(method="cvode", rtol=REF_RTOL, atol=REF_ATOL), **common)
     _log(f"  reference: {ref.stats.wall_time:.1f} s, {ref.stats.n_steps} steps; check: IDA rtol {REF_RTOL:g} ...",
@@ -165,9 +165,9 @@ def run(revolutions=None, grid=(151, 21), quick=False, time_budget_s=300.0, spee
         over = None  # reason the remaining settings are skipped
         per_step = None  # RK4 seconds per step, from its first run
         for s in cfg[line]:
-            kw = _kwargs(line, s)
+            ig = _integration(line, s)
             setting = f"{s:g}" if line in ("rk4", "rk4_tight") else f"{s:.0e}"
-            row = dict(line=line, label=label, setting=setting, method=kw["method"], status="ok",
+            row = dict(line=line, label=label, setting=setting, method=ig.method, status="ok",
                        error_final=math.nan, error_max=math.nan, wall=math.nan, n_steps=0, n_rhs=0, n_jac=0,
                        callback_share=math.nan, note="")
             if line.startswith("rk4") and per_step is not None and over is None:
@@ -179,9 +179,9 @@ def run(revolutions=None, grid=(151, 21), quick=False, time_budget_s=300.0, spee
                 rows.append(row)
                 _log(f"  {label:28s} {setting:>7s}  {row['status']}", progress)
                 continue
-            budget = dict(time_budget=time_budget_s) if line in ("bdf", "lsoda") else {}
+            budget = LongRun(time_budget=time_budget_s) if line in ("bdf", "lsoda") else None
             try:
-                res = o.run(**kw, **common, **budget)
+                res = o.run(integration=ig, long_run=budget, **common)
             except Exception as exc:  # a failed run is a result, not a crash of the benchmark
                 row["status"] = f"failed: {str(exc)[:80]}"
                 over = "a looser setting failed"
