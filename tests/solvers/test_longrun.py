@@ -7,7 +7,7 @@ import os
 import numpy as np
 import pytest
 
-from transient import JournalBearing, JournalOrbit, LongRun, Problem, Recording
+from transient import Integration, JournalBearing, JournalOrbit, LongRun, Problem, Recording
 from transient.params import rho_kim
 from transient.solvers.longrun import CheckpointError, Interrupted, run_long
 
@@ -122,9 +122,12 @@ def test_orbit_checkpoint_names_a_changed_run_setting(tmp_path):
     o = JournalOrbit(JournalBearing(**rho_kim.BEARING, grid=(16, 2)), speed_rpm=6000, **rho_kim.ROTOR)
     path = tmp_path / "orbit.npz"
     o.run(1.0, recording=Recording(outputs_per_revolution=8), long_run=LongRun(chunk_revolutions=0.5, checkpoint=path))
-    for change, name in ((dict(rtol=1e-7), "rtol"), (dict(outputs_per_revolution=4), "outputs_per_revolution"),
-                         (dict(record=("force",)), "record"), (dict(touch_gap=1e-2), "touch_gap")):
-        kw = dict(dict(outputs_per_revolution=8, chunk_revolutions=0.5, checkpoint=path, resume=True), **change)
+    lr = LongRun(chunk_revolutions=0.5, checkpoint=path, resume=True)
+    for change, name in ((dict(integration=Integration(rtol=1e-7)), "rtol"),
+                         (dict(recording=Recording(outputs_per_revolution=4)), "outputs_per_revolution"),
+                         (dict(recording=Recording(outputs_per_revolution=8, record=("force",))), "record"),
+                         (dict(touch_gap=1e-2), "touch_gap")):
+        kw = dict(dict(recording=Recording(outputs_per_revolution=8), long_run=lr), **change)
         with pytest.raises(CheckpointError, match=f"written with {name} = "):
             o.run(1.0, **kw)
     other = JournalOrbit(o.bearing, speed_rpm=6000, **dict(rho_kim.ROTOR, unbalance=1e-6))

@@ -20,9 +20,10 @@ def _orbit():
 def test_objects_and_the_deprecated_keywords_give_bitwise_identical_orbits(method):
     o = _orbit()
     steps = dict(steps_per_revolution=200) if method == "rk4" else {}
-    with pytest.warns(DeprecationWarning, match="integration=Integration"):
+    with pytest.warns(DeprecationWarning) as caught:
         by_keywords = o.run(0.5, method=method, rtol=1e-5, atol=1e-8, outputs_per_revolution=8, record=("force",),
                             chunk_revolutions=0.25, progress=False, **steps)
+    assert any("pass integration=Integration(rtol=...)" in str(w.message) for w in caught)
     by_objects = o.run(0.5, integration=Integration(method=method, rtol=1e-5, atol=1e-8, **steps),
                        recording=Recording(outputs_per_revolution=8, record="force"),
                        long_run=LongRun(chunk_revolutions=0.25, progress=False))
@@ -35,8 +36,10 @@ def test_objects_and_the_deprecated_keywords_give_bitwise_identical_orbits(metho
 def test_objects_and_the_deprecated_keywords_give_identical_ball_sequences():
     b = ThrustBallBearing()
     kw = dict(load=30, speed_rpm=80, ambient_film=50e-6, n_passes=3, stop_at_periodic=False)
-    with pytest.warns(DeprecationWarning, match=r"record_profiles= .*recording=Recording\(record=\.\.\.\)"):
+    with pytest.warns(DeprecationWarning) as caught:
         by_keywords = b.sequence(**kw, rtol=1e-5, atol=1e-9, record_profiles=True, refine=1.5)
+    assert any("record_profiles= is deprecated" in str(w.message) and "recording=Recording(record=...)"
+               in str(w.message) for w in caught)
     by_objects = b.sequence(**kw, integration=Integration(method="cvode", rtol=1e-5, atol=1e-9),
                             recording=Recording(record=("profiles",)), track=TrackSettings(refine=1.5))
     for name in ("h_inlet", "h_central", "profiles", "volume"):
@@ -143,10 +146,10 @@ def _warned(call, old, new):
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
         out = call()
-    ours = [w for w in caught if issubclass(w.category, DeprecationWarning)]
-    assert ours, f"no DeprecationWarning for {old}="
-    text = str(ours[0].message)
-    assert f"the keyword {old}= is deprecated" in text and f"pass {new}" in text, text
+    ours = [w for w in caught if issubclass(w.category, DeprecationWarning)
+            and f"the keyword {old}= is deprecated" in str(w.message)]
+    assert ours, f"no DeprecationWarning for {old}=: {[str(w.message) for w in caught]}"
+    assert f"pass {new}" in str(ours[0].message), str(ours[0].message)
     assert ours[0].filename == __file__, ours[0].filename
     return out
 
@@ -230,8 +233,7 @@ def test_the_old_step_keywords_of_solve_still_work_and_warn():
     (dict(front_level=4.0, front_tau=2e-3, edge_width=1e-6), "track=TrackSettings(front_level=...)"),
     (dict(method="bdf", rtol=1e-4), "integration=Integration(method=...)"),
     (dict(atol=1e-8), "integration=Integration(atol=...)"),
-    (dict(linear_solver="band"), "integration=Integration(linear_solver=...)"),
-    (dict(method="rk4", dt=0.05), "integration=Integration(dt=...)"),
+    (dict(grid="uniform", n_cells=40, linear_solver="band"), "integration=Integration(linear_solver=...)"),
 ])
 def test_every_old_keyword_of_the_ball_sequence_still_works_and_warns(old, spelling):
     """The same inlet films as the new spelling over 2 passes."""
@@ -244,6 +246,20 @@ def test_every_old_keyword_of_the_ball_sequence_still_works_and_warns(old, spell
     assert set(new) == {"track", "integration", "recording"}
     c = b.sequence(**kw, **new)
     assert np.array_equal(a.h_inlet, c.h_inlet) and np.array_equal(a.h_central, c.h_central)
+
+
+def test_the_old_dt_keyword_of_the_sequence_reaches_the_levelling():
+    """An explicit rk4 step of 0.05 levelling times is unstable on this track: the old and the new spelling fail
+    alike, at the first step (t = 0.05: the step was taken)."""
+    b = ThrustBallBearing()
+    kw = dict(load=30, speed_rpm=80, ambient_film=50e-6, n_passes=2, track=TrackSettings(grid="uniform", n_cells=40))
+    with pytest.warns(DeprecationWarning) as caught:
+        with pytest.raises(RuntimeError) as old:
+            b.sequence(**kw, method="rk4", dt=0.05)
+    assert any("pass integration=Integration(dt=...)" in str(w.message) for w in caught)
+    with pytest.raises(RuntimeError) as new:
+        b.sequence(**kw, integration=Integration(method="rk4", dt=0.05))
+    assert str(old.value) == str(new.value) and "at t=0.05" in str(new.value)
 
 
 def test_the_sequence_keeps_its_own_integration_defaults():

@@ -8,10 +8,24 @@ old keyword and its new spelling. A keyword the run never took is a ``TypeError`
 
 from __future__ import annotations
 
+import sys
 import warnings
 from dataclasses import fields
+from pathlib import Path
 
 from transient.checks import short_repr
+
+#: The package's folder: a deprecation warning points at the first frame outside it (the caller's line).
+PACKAGE = str(Path(__file__).resolve().parents[1])
+
+
+def _caller_level() -> int:
+    """The ``stacklevel`` of the first frame outside the package, seen from :func:`run_settings`'s caller's
+    ``warnings.warn`` (level 1: this function's caller)."""
+    frame, level = sys._getframe(1), 1
+    while frame.f_back is not None and frame.f_code.co_filename.startswith(PACKAGE):
+        frame, level = frame.f_back, level + 1
+    return level
 
 
 def keyword_table(argument: str, cls, names=None) -> dict:
@@ -45,7 +59,7 @@ def run_settings(owner: str, legacy: dict, table: dict, defaults: dict | None = 
             raise ValueError(f"{owner}: {old}={short_repr(value)} and {arg}={cls.__name__}(...) both given; pass the "
                              f"setting once, as {spelling}")
         warnings.warn(f"{owner}: the keyword {old}= is deprecated and will be removed in the next release; "
-                      f"pass {spelling}", DeprecationWarning, stacklevel=3)
+                      f"pass {spelling}", DeprecationWarning, stacklevel=_caller_level())
         built.setdefault(arg, {})[name] = convert[0](value) if convert else value
     return settings_objects(table, built, defaults, given)
 

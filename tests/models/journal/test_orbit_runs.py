@@ -61,7 +61,7 @@ def test_an_orbit_too_large_is_refused_before_its_film_is_built(monkeypatch):
 def test_a_fixed_step_the_orbit_does_not_take_is_refused():
     o = JournalOrbit(JournalBearing(**BEARING, grid=(8, 2)), 100.0, 1e-6, 981.0, 6000.0)
     with pytest.raises(ValueError, match=r"dt = 0\.01 \[-\] is not used by the orbit; allowed: steps_per_revolution"):
-        o.run(0.1, integration=Integration(method="rk4", dt=0.01), progress=False)
+        o.run(0.1, integration=Integration(method="rk4", dt=0.01), long_run=LongRun(progress=False))
 
 
 def test_the_bdf2_band_lu_counts_and_is_refused_before_it_is_built(monkeypatch):

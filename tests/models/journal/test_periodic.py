@@ -230,8 +230,8 @@ def test_noise_from_the_periodic_state_equals_the_settled_noise():
     from transient.study.noise import bearing_noise
 
     o = _orbit(4000.0)
-    a = bearing_noise(o, revolutions=2, harmonics=3, periodic=True, tol=1e-6, rtol=1e-7)
-    b = bearing_noise(o, revolutions=2, harmonics=3, periodic=False, tol=1e-6, rtol=1e-7)
+    a = bearing_noise(o, revolutions=2, harmonics=3, periodic=True, tol=1e-6, integration=Integration(rtol=1e-7))
+    b = bearing_noise(o, revolutions=2, harmonics=3, periodic=False, tol=1e-6, integration=Integration(rtol=1e-7))
     assert abs(a.level_db - b.level_db) < 1e-3 and np.allclose(a.harmonic_levels_db, b.harmonic_levels_db, atol=0.02)
     with pytest.raises(NotPeriodicError, match="no stable periodic orbit"):
-        bearing_noise(_orbit(9500.0), revolutions=1, harmonics=2, rtol=1e-5)
+        bearing_noise(_orbit(9500.0), revolutions=1, harmonics=2, integration=Integration(rtol=1e-5))
