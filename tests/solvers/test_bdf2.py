@@ -4,6 +4,7 @@ mass balance of every step, bulk moduli 1e7 and 1e12, dense output between steps
 event. These tests share orbits; the long ones are marked slow."""
 
 import os
+from dataclasses import replace
 
 import numpy as np
 import pytest
@@ -178,13 +179,14 @@ def test_bulk_modulus_extremes(bulk):
 @pytest.mark.slow
 def test_checkpoint_resume_is_bitwise(tmp_path):
     o = orbit(grid=(24, 6), unbalance=0.1)
-    kw = dict(method="bdf2", rtol=1e-4, chunk_revolutions=0.25, outputs_per_revolution=20, record=("force", "mass"),
-              progress=False)
-    full = o.run(0.5, **kw)
+    kw = dict(integration=Integration(method="bdf2", rtol=1e-4),
+              recording=Recording(outputs_per_revolution=20, record=("force", "mass")))
+    lr = LongRun(chunk_revolutions=0.25, progress=False)
+    full = o.run(0.5, long_run=lr, **kw)
     path = str(tmp_path / "orbit.npz")
-    o.run(0.25, long_run=LongRun(checkpoint=path), **kw)  # "crashes" after the first chunk
+    o.run(0.25, long_run=replace(lr, checkpoint=path), **kw)  # "crashes" after the first chunk
     assert os.path.exists(path)
-    resumed = orbit(grid=(24, 6), unbalance=0.1).run(0.5, long_run=LongRun(checkpoint=path, resume=True), **kw)
+    resumed = orbit(grid=(24, 6), unbalance=0.1).run(0.5, long_run=replace(lr, checkpoint=path, resume=True), **kw)
     for k in ("t", "x", "y", "force", "mass"):
         np.testing.assert_array_equal(getattr(resumed, k), getattr(full, k))
 

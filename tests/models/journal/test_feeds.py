@@ -166,9 +166,8 @@ def test_orbit_records_flows_consistent_with_the_mass_balance(method):
                 ambient_pressure=0.0)
     o = JournalOrbit(b, 5.0, 0.01 * C, 400.0, RPM)
     steps = dict(steps_per_revolution=400) if method == "rk4" else {}  # the fixed steps of rk4 (ida takes none)
-    r = o.run(0.05, integration=Integration(method=method),
-              recording=Recording(outputs_per_revolution=100, record=("supply_flow", "side_leakage", "outflow")),
-              **steps)
+    r = o.run(0.05, integration=Integration(method=method, **steps),
+              recording=Recording(outputs_per_revolution=100, record=("supply_flow", "side_leakage", "outflow")))
     assert r.supply_flow.shape == (r.t.size, 2) and r.side_leakage.shape == (r.t.size, 2)
     np.testing.assert_allclose(r.supply_flow.sum(axis=1), -r.outflow[:, 1], rtol=1e-9)
     np.testing.assert_allclose(r.side_leakage.sum(axis=1), r.outflow[:, 0], rtol=1e-9)

@@ -12,6 +12,7 @@ All numbers quoted in the docstrings were measured on the grids used here (docs/
 """
 
 import os
+from dataclasses import replace
 
 import numpy as np
 import pytest
@@ -567,13 +568,15 @@ def test_bad_groove_and_operating_parameters_raise():
 def test_checkpoint_resume_equals_uninterrupted_run(tmp_path):
     b = paper_bearing(grid=(32, 6))
     o = JournalOrbit(b, MASS, 0.01 * CL, W, RPM)
-    kw = dict(rtol=1e-6, atol=1e-9, chunk_revolutions=1.0, outputs_per_revolution=20, record=("force", "mass"),
-              progress=False)
-    full = o.run(2.0, **kw)
+    kw = dict(integration=Integration(rtol=1e-6, atol=1e-9),
+              recording=Recording(outputs_per_revolution=20, record=("force", "mass")))
+    lr = LongRun(chunk_revolutions=1.0, progress=False)
+    full = o.run(2.0, long_run=lr, **kw)
     path = str(tmp_path / "orbit.npz")
-    o.run(1.0, long_run=LongRun(checkpoint=path), **kw)  # "crashes" after the first chunk
+    o.run(1.0, long_run=replace(lr, checkpoint=path), **kw)  # "crashes" after the first chunk
     assert os.path.exists(path)
-    resumed = JournalOrbit(b, MASS, 0.01 * CL, W, RPM).run(2.0, long_run=LongRun(checkpoint=path, resume=True), **kw)
+    resumed = JournalOrbit(b, MASS, 0.01 * CL, W, RPM).run(2.0, long_run=replace(lr, checkpoint=path, resume=True),
+                                                           **kw)
     assert resumed.t.shape == full.t.shape
     for k in ("t", "x", "y"):
         np.testing.assert_allclose(getattr(resumed, k), getattr(full, k), rtol=1e-12, atol=0)
@@ -583,7 +586,7 @@ def test_checkpoint_resume_equals_uninterrupted_run(tmp_path):
     # a checkpoint of another orbit is refused
     other = JournalOrbit(b, MASS, 0.02 * CL, W, RPM)
     with pytest.raises(ValueError, match="checkpoint"):
-        other.run(2.0, long_run=LongRun(checkpoint=path, resume=True), **kw)
+        other.run(2.0, long_run=replace(lr, checkpoint=path, resume=True), **kw)
 
 
 # ---- issue 17: inputs that used to pass silently or fail deep inside -------------------------------------------

@@ -3,6 +3,8 @@ in the variables z = [u_1, ..., u_k, q, v, phi] against central differences, the
 film's, the one-node rotor and the symmetric two-bearing rotor against the journal orbit's BDF2, BDF2 against IDA on a
 flexible two-bearing rotor (constant speed and a run-up), the touch event per bearing, checkpoint/resume bitwise."""
 
+from dataclasses import replace
+
 import numpy as np
 import pytest
 
@@ -120,9 +122,10 @@ def test_bdf2_agrees_with_ida_on_a_flexible_rotor(bearing):
     BDF2 within 1e-6 C (its rtol times the journal positions, below 1 C) of IDA at rtol 1e-9 at rtol 1e-6, and
     closer at rtol 1e-7 (the error follows the tolerance)."""
     s = flexible_system(bearing)
-    kw = dict(outputs_per_revolution=40, atol=1e-10)
-    ref = s.run(0.25, 6000, integration=Integration(rtol=1e-9), **kw)
-    runs = [s.run(0.25, 6000, integration=Integration(method="bdf2", rtol=rtol), **kw) for rtol in (1e-6, 1e-7)]
+    kw = dict(recording=Recording(outputs_per_revolution=40))
+    ref = s.run(0.25, 6000, integration=Integration(rtol=1e-9, atol=1e-10), **kw)
+    runs = [s.run(0.25, 6000, integration=Integration(method="bdf2", rtol=rtol, atol=1e-10), **kw)
+            for rtol in (1e-6, 1e-7)]
     assert all(r.success and np.allclose(r.t, ref.t, rtol=1e-12) for r in runs)
     assert np.max(np.abs(ref.displacement - ref.displacement[0])) > 5e-3 * bearing.clearance  # it moves
     err = [np.max(np.abs(r.displacement - ref.displacement)) / bearing.clearance for r in runs]
@@ -133,9 +136,9 @@ def test_run_up_agrees_with_ida(bearing):
     """A speed ramp (the films' Couette flow and the unbalance's s^2 and s' terms): BDF2 and IDA agree."""
     s = one_node(bearing)
     ramp = lambda t: 3000.0 + 60000.0 * t  # noqa: E731
-    kw = dict(outputs_per_revolution=20, atol=1e-10)
-    ida = s.run(1, ramp, integration=Integration(rtol=1e-8), **kw)
-    bdf2 = s.run(1, ramp, integration=Integration(method="bdf2", rtol=1e-6), **kw)
+    kw = dict(recording=Recording(outputs_per_revolution=20))
+    ida = s.run(1, ramp, integration=Integration(rtol=1e-8, atol=1e-10), **kw)
+    bdf2 = s.run(1, ramp, integration=Integration(method="bdf2", rtol=1e-6, atol=1e-10), **kw)
     assert bdf2.success and np.allclose(bdf2.speed_rpm, ramp(bdf2.t))
     assert np.max(np.abs(bdf2.displacement - ida.displacement)) < 1e-4 * bearing.clearance
 
@@ -156,8 +159,9 @@ def test_checkpoint_resume_is_bitwise(bearing, tmp_path, monkeypatch):
     """A run killed (Ctrl-C) in its third chunk and resumed from its checkpoint ends where the uninterrupted run
     does, bit for bit."""
     s = flexible_system(bearing)
-    kw = dict(method="bdf2", outputs_per_revolution=40, chunk_revolutions=0.125, progress=False)
-    full = s.run(0.5, 6000, **kw)
+    kw = dict(integration=Integration(method="bdf2"), recording=Recording(outputs_per_revolution=40))
+    lr = LongRun(chunk_revolutions=0.125, progress=False)
+    full = s.run(0.5, 6000, long_run=lr, **kw)
     path = tmp_path / "rotor.npz"
     set_speed = ContentSystem.set_speed
 
@@ -168,10 +172,10 @@ def test_checkpoint_resume_is_bitwise(bearing, tmp_path, monkeypatch):
 
     monkeypatch.setattr(ContentSystem, "set_speed", killed)
     with pytest.raises(Interrupted, match="run again with resume=True"):
-        flexible_system(bearing).run(0.5, 6000, long_run=LongRun(checkpoint=str(path)), **kw)
+        flexible_system(bearing).run(0.5, 6000, long_run=replace(lr, checkpoint=str(path)), **kw)
     monkeypatch.undo()
     assert path.exists()
-    resumed = flexible_system(bearing).run(0.5, 6000, long_run=LongRun(checkpoint=str(path), resume=True), **kw)
+    resumed = flexible_system(bearing).run(0.5, 6000, long_run=replace(lr, checkpoint=str(path), resume=True), **kw)
     assert resumed.success and resumed.stats.n_steps < 2 * full.stats.n_steps
     for k in ("t", "displacement", "bearing_force", "final_state"):
         np.testing.assert_array_equal(getattr(resumed, k), getattr(full, k))
