@@ -4,11 +4,10 @@ import math
 
 from transient.bench import journal
 from transient.bench import write_section as _write_bench
-from transient import LongRun
 
 
 def test_bench_journal_quick_structure_and_convergence(tmp_path):
-    res = journal.run(grid=(24, 4), quick=True, time_budget_s=60.0, long_run=LongRun(progress=False))
+    res = journal.run(grid=(24, 4), quick=True, time_budget_s=60.0, progress=False)
     rows = res["rows"]
     lines = {r["line"] for r in rows}
     assert lines == {"cvode", "ida", "bdf", "lsoda", "rk4", "rk4_tight"}
