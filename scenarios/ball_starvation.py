@@ -27,6 +27,7 @@ from types import SimpleNamespace
 import numpy as np
 
 from transient import ThrustBallBearing
+from transient.models.ball.bearing import sequence_settings
 from transient.compile_notice import announce
 from transient.params import jeong
 from transient.plots import ball as plots, save
@@ -62,7 +63,8 @@ def main(argv=None):
              "floor b = 0.03 h_inf": dict(grid="uniform", n_cells=100, mobility_film=3e-6, rtol=1e-4),
              "Chiu linear (the paper's)": dict(replenishment="chiu")}
     seqs = {k: brg.sequence(load=REF["load"], speed_rpm=REF["speed_rpm"], ambient_film=REF["ambient_film"],
-                            n_passes=c["passes"], stop_at_periodic=False, **kw) for k, kw in kinds.items()}
+                            n_passes=c["passes"], stop_at_periodic=False, **sequence_settings(**kw))
+            for k, kw in kinds.items()}
     save(plots.inlet_sequence(seqs, REF), out / "ball_sequence.png")
     rec.put("reference", {k: dict(h_inlet_um=(s.h_inlet * 1e6).tolist(), regime=s.regime) for k, s in seqs.items()})
     log(f"[ball] reference sequence, four ways: {time.perf_counter() - t0:.0f} s")

@@ -17,7 +17,7 @@ import sys
 import time
 from pathlib import Path
 
-from transient import JournalBearing, JournalOrbit
+from transient import Integration, JournalBearing, JournalOrbit, LongRun, Recording
 from transient.compile_notice import announce
 from transient.params import rho_kim
 from transient.plots import journal as plots, save
@@ -50,8 +50,9 @@ def main(argv=None):
         f"{a.rtol:g}; checkpoint {ckpt}" + (" (resuming)" if ckpt.exists() else ""))
     t0 = time.perf_counter()
     with fresh_advice():
-        r = o.run(revolutions, method=a.method, rtol=a.rtol, atol=1e-3 * a.rtol, outputs_per_revolution=a.outputs,
-                  record=("force",), chunk_revolutions=a.chunk, checkpoint=ckpt, resume=True, progress=True)
+        r = o.run(revolutions, integration=Integration(method=a.method, rtol=a.rtol, atol=1e-3 * a.rtol),
+                  recording=Recording(outputs_per_revolution=a.outputs, record=("force",)),
+                  long_run=LongRun(chunk_revolutions=a.chunk, checkpoint=ckpt, resume=True, progress=True))
     log(f"[long run] {r.message}; {time.perf_counter() - t0:.1f} s this run, {r.t.size} samples kept")
     r.save(out / "long_run.npz")
     log(f"written: {save(plots.long_run(r, a.outputs), out / 'long_run.png')} and {out / 'long_run.npz'}")

@@ -22,7 +22,7 @@ from pathlib import Path
 
 import numpy as np
 
-from transient import JournalBearing, JournalOrbit, bearing_noise
+from transient import Integration, JournalBearing, JournalOrbit, Settling, bearing_noise
 from transient.analysis import NotPeriodicError, film_transitions
 from transient.compile_notice import announce
 from transient.params import rho_kim
@@ -90,7 +90,8 @@ def main(argv=None):
         tr = film_transitions(eq)
         try:
             n = bearing_noise(o, revolutions=a.revolutions, harmonics=a.harmonics, transmission=a.transmission,
-                              rtol=a.rtol, max_settle_revolutions=a.max_settle, periodic=not a.settle)
+                              integration=Integration(rtol=a.rtol), settling=Settling(max_periods=a.max_settle),
+                              periodic=not a.settle)
         except NotPeriodicError as exc:
             log(f"{sp:6.0f} rpm: {exc}")
             points.append(dict(speed_rpm=sp, error=str(exc)))

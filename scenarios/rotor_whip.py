@@ -37,7 +37,7 @@ from pathlib import Path
 
 import numpy as np
 
-from transient import JournalBearing, Rotor, RotorBearingSystem
+from transient import Integration, JournalBearing, LongRun, Recording, Rotor, RotorBearingSystem
 from transient.analysis.rotor import synchronous_amplitude, waterfall
 from transient.params import rho_kim
 from transient.plots import rotor as plots, save
@@ -121,9 +121,10 @@ def main(argv=None):
         log(f"[rotor] {name.replace('_', '-')} {n0:.0f} -> {n1:.0f} rpm over {revs:g} revolutions; checkpoint {ckpt}")
         t_start = runs[start].final_time if start else 0.0
         with fresh_advice():
-            r = s.run(revs, ramp(n0, n1, revs, t_start), method=a.method, rtol=1e-5, start=runs.get(start),
-                      checkpoint=ckpt, resume=True, chunk_revolutions=10.0, outputs_per_revolution=OPR, progress=True,
-                      touch_gap=1e-3, reference_speed_rpm=2.0 * th)
+            r = s.run(revs, ramp(n0, n1, revs, t_start), integration=Integration(method=a.method, rtol=1e-5),
+                      long_run=LongRun(checkpoint=ckpt, resume=True, chunk_revolutions=10.0, progress=True),
+                      recording=Recording(outputs_per_revolution=OPR), start=runs.get(start), touch_gap=1e-3,
+                      reference_speed_rpm=2.0 * th)
         r.save(out / f"{name}.npz")
         runs[name] = r
         ns, amp = synchronous_amplitude(r.t, r.position(disk)[0], r.speed_rpm, 2.0)

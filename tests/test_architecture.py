@@ -167,13 +167,14 @@ def test_every_scenario_answers_help_without_running(capsys):
         assert "--quick" in text and "--out" in text, path.name
 
 
-# ---- no option grab-bags: at most 12 positional parameters ------------------------------------------------------
-MAX_POSITIONAL = 12
+# ---- no option grab-bags: at most 12 parameters ------------------------------------------------------------------
+MAX_PARAMETERS = 12
 #: numba kernels take their data as arguments (grouped in named tuples where they are many); ``intrinsic`` is
-#: numba's too. Keyword-only parameters (after ``*``) do not count.
+#: numba's too.
 NUMBA_DECORATORS = {"njit", "jit", "intrinsic", "generated_jit", "vectorize", "guvectorize"}
-#: Constructors of physical parameter sets: each positional parameter is a physical quantity of the element.
-PARAMETER_SETS = {"JournalBearing", "LineContact", "RollerContact"}
+#: Constructors of physical parameter sets: each parameter is a quantity of the element (its geometry, its
+#: lubricant, its load and speed) or of its film's discretisation.
+PARAMETER_SETS = {"JournalBearing", "LineContact", "RollerContact", "PointContact"}
 
 
 def _decorator_name(d):
@@ -181,43 +182,73 @@ def _decorator_name(d):
     return d.attr if isinstance(d, ast.Attribute) else getattr(d, "id", "")
 
 
+def _parameter_count(f) -> int:
+    """Every parameter: positional-only, positional, keyword-only, ``*args`` and ``**kwargs`` (one each)."""
+    a = f.args
+    return (len(a.posonlyargs) + len(a.args) + len(a.kwonlyargs) + (a.vararg is not None)
+            + (a.kwarg is not None))
+
+
+def _public_functions(tree):
+    """``(function, owner class or None)`` for every public function of a module: its top-level functions and the
+    methods of its top-level classes whose names do not start with ``_`` (``__init__`` and ``__call__`` are
+    public), in public classes."""
+    for node in tree.body:
+        if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)) and not node.name.startswith("_"):
+            yield node, None
+        elif isinstance(node, ast.ClassDef) and not node.name.startswith("_"):
+            for f in node.body:
+                if (isinstance(f, (ast.FunctionDef, ast.AsyncFunctionDef))
+                        and (not f.name.startswith("_") or f.name in ("__init__", "__call__"))):
+                    yield f, node.name
+
+
 def _long_signatures(root):
-    """``(file, line, name, positional count)`` of every function over the limit, the exceptions aside (a method
-    is named ``Class.method``)."""
+    """``(file, line, name, parameter count)`` of every public function or method over the limit, ``self`` and
+    ``cls`` not counted, the exceptions aside (a method is named ``Class.method``)."""
     out = []
     for path in sorted(root.rglob("*.py")):
+        if any(part.startswith("_") and part != "__init__.py" for part in path.relative_to(root).parts):
+            continue
         tree = ast.parse(path.read_text())
-        owner = {f: c.name for c in ast.walk(tree) if isinstance(c, ast.ClassDef) for f in c.body}
-        for f in ast.walk(tree):
-            if not isinstance(f, (ast.FunctionDef, ast.AsyncFunctionDef)):
-                continue
-            n = len(f.args.posonlyargs) + len(f.args.args)
-            cls = owner.get(f)
-            if (n <= MAX_POSITIONAL or {_decorator_name(d) for d in f.decorator_list} & NUMBA_DECORATORS
+        for f, cls in _public_functions(tree):
+            n = _parameter_count(f)
+            if cls is not None and f.args.args and f.args.args[0].arg in ("self", "cls") \
+                    and not {_decorator_name(d) for d in f.decorator_list} & {"staticmethod"}:
+                n -= 1
+            if (n <= MAX_PARAMETERS or {_decorator_name(d) for d in f.decorator_list} & NUMBA_DECORATORS
                     or (f.name == "__init__" and cls in PARAMETER_SETS)):
                 continue
             out.append((str(path.relative_to(root)), f.lineno, f.name if cls is None else f"{cls}.{f.name}", n))
     return out
 
 
-def test_no_function_takes_more_than_12_positional_parameters():
-    """Settings travel as objects (``transient.solvers.settings``) or keyword-only parameters; the exceptions
-    are numba kernels and constructors of physical parameter sets (``PARAMETER_SETS``)."""
-    assert _long_signatures(PKG) == []
+def test_no_public_function_takes_more_than_12_parameters():
+    """Settings travel as objects (``transient.solvers.settings``, ``Steps``, ``NewtonSettings``,
+    ``ShootingSettings``, ``TrackSettings``): every parameter counts, keyword-only ones and ``**kwargs`` too; the
+    exceptions are numba kernels and constructors of physical parameter sets (``PARAMETER_SETS``)."""
+    offenders = _long_signatures(PKG)
+    assert offenders == [], "more than 12 parameters: " + "; ".join(f"{name} ({n}, {f}:{line})"
+                                                                   for f, line, name, n in offenders)
 
 
-def test_the_positional_rule_can_fail(tmp_path):
-    """Thirteen positional parameters are caught in a function and a method; keyword-only ones, a numba kernel
-    and a parameter set's constructor are not."""
+def test_the_parameter_rule_can_fail(tmp_path):
+    """Thirteen parameters are caught in a function and a method, keyword-only ones and ``**kwargs`` included;
+    a private function, a nested one, a numba kernel and a parameter set's constructor are not."""
     names = ", ".join(f"a{i}" for i in range(13))
+    eleven, twelve = (", ".join(f"a{i}" for i in range(k)) for k in (11, 12))
     (tmp_path / "m.py").write_text(
         f"from numba import njit\n"
         f"def bag({names}):\n    pass\n"
         f"class Model:\n    def run(self, {names}):\n        pass\n"
-        f"def fine(a0, *, {names}):\n    pass\n"
+        f"    def _private(self, {names}):\n        pass\n"
+        f"def keywords(a0, *, {names}):\n    pass\n"
+        f"def kwargs({twelve}, **legacy):\n    pass\n"
+        f"def fine({eleven}, **legacy):\n    def inner({names}):\n        pass\n"
         f"@njit(cache=True)\ndef kernel({names}):\n    pass\n"
         f"class JournalBearing:\n    def __init__(self, {names}):\n        pass\n")
-    assert [(name, n) for _, _, name, n in _long_signatures(tmp_path)] == [("bag", 13), ("Model.run", 14)]
+    assert [(name, n) for _, _, name, n in _long_signatures(tmp_path)] == [
+        ("bag", 13), ("Model.run", 13), ("keywords", 14), ("kwargs", 13)]
 
 
 TESTS = Path(__file__).resolve().parent

@@ -16,7 +16,8 @@ import pytest
 from hypothesis import HealthCheck, assume, example, given, settings
 from hypothesis import strategies as st
 
-from transient import AsperityContact, DiscreteDensity, RoughSurface, ThrustPad, steel_asperity_contact
+from transient import (AsperityContact, DiscreteDensity, Integration, LongRun, Recording, RoughSurface, ThrustPad,
+                       TrackSettings, steel_asperity_contact)
 from transient.models.ball import ThrustBallBearing
 from transient.models.journal import CircumferentialGroove, Groove, JournalBearing, JournalOrbit, OilHole
 from transient.models.point import PointContact
@@ -199,9 +200,16 @@ def _orbit():
                             "chunk_revolutions"]), value=hostile)
 def test_journal_orbit_run(key, value):
     assume(not (key == "revolutions" and isinstance(value, (int, float)) and value > 0.5))  # valid, but long
-    kw = dict(revolutions=0.05, rtol=1e-4, atol=1e-8, outputs_per_revolution=20, progress=False) | {key: value}
+    kw = dict(revolutions=0.05, rtol=1e-4, atol=1e-8, outputs_per_revolution=20) | {key: value}
     name = {"y0": "initial state"}.get(key, key)
-    _outcome(name, lambda: _orbit().run(**kw), lambda r: _finite(r.x, r.y))
+
+    def run():  # the settings objects are made inside: their refusals count as the run's
+        chunk = {"chunk_revolutions": kw["chunk_revolutions"]} if "chunk_revolutions" in kw else {}
+        return _orbit().run(kw["revolutions"], integration=Integration(rtol=kw["rtol"], atol=kw["atol"]),
+                            recording=Recording(outputs_per_revolution=kw["outputs_per_revolution"]),
+                            long_run=LongRun(progress=False, **chunk), **{k: kw[k] for k in ("touch_gap", "y0") if k in kw})
+
+    _outcome(name, run, lambda r: _finite(r.x, r.y))
 
 
 @SETTINGS
@@ -446,6 +454,9 @@ def test_ball_sequence(key, value):
 
     def run():
         try:
+            if "replenishment" in kw:  # a setting of the track between passes
+                return b.sequence(**{k: v for k, v in kw.items() if k != "replenishment"},
+                                  track=TrackSettings(replenishment=kw["replenishment"]))
             return b.sequence(**kw)
         except RuntimeError as e:  # a valid bearing whose levelling the solver cannot finish: named, counted apart
             assert "levelling failed" in str(e), str(e)

@@ -21,7 +21,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from transient import JournalBearing, JournalOrbit, load_result
+from transient import Integration, JournalBearing, JournalOrbit, LongRun, Recording, load_result
 from transient.checks import MemoryLimitError
 from transient.params import rho_kim
 from transient.results import ResultFileError, atomic_savez
@@ -36,8 +36,8 @@ def orbit():
 
 
 def _run(o, path, revs=1.0, **kw):
-    return o.run(revs, outputs_per_revolution=8, chunk_revolutions=0.25, checkpoint=path, resume=True, progress=False,
-                 **kw)
+    return o.run(revs, recording=Recording(outputs_per_revolution=8),
+                 long_run=LongRun(chunk_revolutions=0.25, checkpoint=path, resume=True, progress=False), **kw)
 
 
 # 1. a finished checkpoint resumed -------------------------------------------------------------------------------
@@ -49,8 +49,9 @@ def test_resuming_a_finished_checkpoint_returns_the_final_state(orbit, tmp_path)
     assert again.final_time == first.final_time
     np.testing.assert_array_equal(again.final_state, first.final_state)
     assert np.hypot(*again.final_state[-2:]) > 0  # the rotor moves (the start state has zero velocity)
-    onward = orbit.run(0.5, outputs_per_revolution=8, start=again, progress=False)
-    whole = orbit.run(1.5, outputs_per_revolution=8, progress=False)
+    onward = orbit.run(0.5, recording=Recording(outputs_per_revolution=8), long_run=LongRun(progress=False),
+                       start=again)
+    whole = orbit.run(1.5, recording=Recording(outputs_per_revolution=8), long_run=LongRun(progress=False))
     np.testing.assert_allclose(onward.x[-1], whole.x[-1], rtol=1e-3)
 
 
@@ -105,12 +106,13 @@ def test_consistent_crafted_metadata_is_still_checked(orbit, tmp_path):
 
 def test_a_run_too_large_for_the_machine_is_refused_before_allocating(orbit, monkeypatch):
     with pytest.raises(MemoryLimitError, match="revolutions or outputs_per_revolution"):
-        orbit.run(1e12, progress=False)
+        orbit.run(1e12, long_run=LongRun(progress=False))
     with pytest.raises(MemoryLimitError, match="record fewer series"):
-        orbit.run(2000, outputs_per_revolution=100000, progress=False)
+        orbit.run(2000, recording=Recording(outputs_per_revolution=100000), long_run=LongRun(progress=False))
     monkeypatch.setenv("TRANSIENT_MEMORY_BYTES", str(2e8))  # plan for a 200 MB machine
     with pytest.raises(MemoryLimitError, match="of this machine's 0.2 GB"):
-        orbit.run(2000, outputs_per_revolution=1000, record=("pressure",), progress=False)
+        orbit.run(2000, recording=Recording(outputs_per_revolution=1000, record=("pressure",)),
+                  long_run=LongRun(progress=False))
 
 
 def test_pad_ball_roller_and_scene_memory_checks(monkeypatch):
@@ -137,7 +139,7 @@ def test_pad_ball_roller_and_scene_memory_checks(monkeypatch):
 # 4. size cap and declared shapes when loading -------------------------------------------------------------------
 
 def test_an_undeclared_huge_array_is_not_read(orbit, tmp_path):
-    r = orbit.run(0.25, outputs_per_revolution=8, progress=False)
+    r = orbit.run(0.25, recording=Recording(outputs_per_revolution=8), long_run=LongRun(progress=False))
     path = r.save(tmp_path / "r.npz")
     with zipfile.ZipFile(path, "a", compression=zipfile.ZIP_DEFLATED) as zf:
         with zf.open("bomb.npy", "w", force_zip64=True) as fh:
@@ -154,7 +156,7 @@ def test_an_undeclared_huge_array_is_not_read(orbit, tmp_path):
 
 
 def test_declared_shapes_and_the_cap_are_checked_before_reading(orbit, tmp_path):
-    r = orbit.run(0.25, outputs_per_revolution=8, progress=False)
+    r = orbit.run(0.25, recording=Recording(outputs_per_revolution=8), long_run=LongRun(progress=False))
     path = r.save(tmp_path / "r.npz")
     with pytest.raises(ResultFileError, match=f"{path}.*cap of"):
         load_result(path, max_bytes=100)
@@ -298,12 +300,13 @@ def test_checkpoint_on_a_full_disk_names_it_and_keeps_the_last_one(orbit, tmp_pa
     monkeypatch.setattr(np, "savez", real)
     assert not [f for f in tmp_path.iterdir() if f.name.endswith(".tmp")]
     resumed = _run(orbit, path)
-    whole = orbit.run(1.0, outputs_per_revolution=8, chunk_revolutions=0.25, progress=False)
+    whole = orbit.run(1.0, recording=Recording(outputs_per_revolution=8),
+                      long_run=LongRun(chunk_revolutions=0.25, progress=False))
     np.testing.assert_array_equal(resumed.x, whole.x)
 
 
 def test_result_save_on_a_read_only_folder_names_the_file(orbit, tmp_path, monkeypatch):
-    r = orbit.run(0.25, outputs_per_revolution=8, progress=False)
+    r = orbit.run(0.25, recording=Recording(outputs_per_revolution=8), long_run=LongRun(progress=False))
     _fault(monkeypatch, errno.EROFS, tmp_path)
     with pytest.raises(OSError, match=f"cannot write {tmp_path / 'r.npz'}: .*read-only"):
         r.save(tmp_path / "r.npz")
@@ -418,16 +421,17 @@ def test_killed_during_a_write_leaves_no_temporary_after_the_next(tmp_path):
 
 
 def test_time_budget_message_gives_the_time_reached(orbit):
-    r = orbit.run(20000, outputs_per_revolution=8, time_budget=1.5, progress=False, rtol=1e-8)
+    r = orbit.run(20000, recording=Recording(outputs_per_revolution=8),
+                  long_run=LongRun(time_budget=1.5, progress=False), integration=Integration(rtol=1e-8))
     assert not r.success
     reached = float(r.message.split(" stopped at ")[1].split()[0])
     assert reached > 0 and abs(reached - r.t[-1] * 100) < 0.2 + 1 / 8, r.message
 
 
 @pytest.mark.parametrize("call, name", [
-    (lambda o: o.run(0.5, record=1.0, progress=False), "record"),
-    (lambda o: o.run(0.5, record_from_revolution=None, progress=False), "record_from_revolution"),
-    (lambda o: o.run(1e12, progress=False), "revolutions"),
+    (lambda o: o.run(0.5, recording=Recording(record=1.0), long_run=LongRun(progress=False)), "record"),
+    (lambda o: o.run(0.5, recording=Recording(record_from_revolution=None), long_run=LongRun(progress=False)), "record_from_revolution"),
+    (lambda o: o.run(1e12, long_run=LongRun(progress=False)), "revolutions"),
 ])
 def test_unnamed_run_errors_are_named(orbit, call, name):
     with pytest.raises(ValueError, match=name):

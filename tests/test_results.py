@@ -21,6 +21,7 @@ from transient.models.rotor.results import RotorEquilibrium, RotorRunResult
 from transient.params import rho_kim
 from transient.results import ResultFileError, SteadyResult, Stats, quantity, result_type
 from transient.solvers.newton import newton
+from transient import Integration, Recording
 
 
 def _same(a, b, path=""):
@@ -58,7 +59,7 @@ def orbit():
 
 
 def test_orbit_result_with_fields(orbit, tmp_path):
-    r = orbit.run(0.5, outputs_per_revolution=8, record=("force", "pressure", "mass", "outflow"))
+    r = orbit.run(0.5, recording=Recording(outputs_per_revolution=8, record=("force", "pressure", "mass", "outflow")))
     q = _round_trip(r, tmp_path, "orbit")
     assert q.pressure.dtype == np.float32 and q.pressure.shape == (5, 2, 16)
     assert q.units()["x"] == "m" and q.units()["force"] == "N"
@@ -70,9 +71,11 @@ def test_orbit_result_with_fields(orbit, tmp_path):
 
 def test_continuing_from_a_loaded_result_equals_one_run(orbit, tmp_path):
     """A run continued from a saved and reloaded result keeps the unbalance phase: same as one run."""
-    whole = orbit.run(1.0, outputs_per_revolution=8, rtol=1e-8)
-    first = load_result(orbit.run(0.5, outputs_per_revolution=8, rtol=1e-8).save(tmp_path / "half"))
-    second = orbit.run(0.5, outputs_per_revolution=8, rtol=1e-8, start=first)
+    whole = orbit.run(1.0, recording=Recording(outputs_per_revolution=8), integration=Integration(rtol=1e-8))
+    first = load_result(orbit.run(0.5, recording=Recording(outputs_per_revolution=8),
+                                  integration=Integration(rtol=1e-8)).save(tmp_path / "half"))
+    second = orbit.run(0.5, recording=Recording(outputs_per_revolution=8), integration=Integration(rtol=1e-8),
+                       start=first)
     np.testing.assert_allclose(second.t, whole.t[4:], rtol=1e-12)
     np.testing.assert_allclose(second.x, whole.x[4:], rtol=0, atol=1e-7 * orbit.bearing.clearance)
 
@@ -114,7 +117,7 @@ def test_a_crafted_pickle_does_not_run(tmp_path):
 
 
 def test_truncated_foreign_and_unknown_files(tmp_path, orbit):
-    p = orbit.run(0.25, outputs_per_revolution=4).save(tmp_path / "r")
+    p = orbit.run(0.25, recording=Recording(outputs_per_revolution=4)).save(tmp_path / "r")
     bad = tmp_path / "truncated.npz"
     bad.write_bytes(p.read_bytes()[: p.stat().st_size // 2])
     with pytest.raises(ResultFileError, match="truncated.npz"):

@@ -4,13 +4,15 @@ SI units at the API. See docs/architecture.md for how the layers fit together.
 
 Public API (re-exported here):
 
-* integration: :func:`solve`, :class:`Problem`, :class:`Solution`, :class:`Stats`; run settings
-  :class:`Integration`, :class:`Recording`, :class:`LongRun` (``JournalOrbit.run``, ``ThrustBallBearing.sequence``)
+* integration: :func:`solve`, :class:`Problem`, :class:`Solution`, :class:`Stats`, :class:`Steps` (its step
+  control); run settings :class:`Integration`, :class:`Recording`, :class:`LongRun` (``JournalOrbit.run``,
+  ``RotorBearingSystem.run``, ``ThrustBallBearing.sequence``) and :class:`TrackSettings` (the ball sequence's
+  track between passes)
 * results: :class:`Result` (the base of every result: units, save/load, summary), :func:`load_result`
 * journal bearing (Rho & Kim): :class:`JournalBearing`, its oil feeds :class:`Groove`, :class:`OilHole`,
   :class:`CircumferentialGroove`, :class:`JournalOrbit` (with ``periodic_response`` and ``response_curve``:
   periodic orbits by shooting), :func:`stability_onset`;
-  bearing noise: :func:`bearing_noise`, :func:`a_weighting`
+  bearing noise: :func:`bearing_noise` (its settling run: :class:`Settling`), :func:`a_weighting`
 * layered boundary films and shear-thinning bulk (Jang): :class:`BoundaryLayers` (``JournalBearing(...,
   layers=)``), :class:`Gecim`, :class:`Newtonian`, :class:`LayeredFilm` (the pointwise flow law)
 * thrust ball bearing starvation (Jeong et al.): :class:`ThrustBallBearing`
@@ -37,6 +39,7 @@ _os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 from transient._version import __version__  # noqa: E402,F401
 from transient.analysis.acoustics import a_weighting
 from transient.models.ball import ThrustBallBearing
+from transient.models.ball.settings import TrackSettings
 from transient.models.journal import CircumferentialGroove, Groove, JournalBearing, JournalOrbit, OilHole, stability_onset
 from transient.models.pad import ThrustPad
 from transient.models.point import PointContact
@@ -46,15 +49,16 @@ from transient.physics.asperity import AsperityContact, DiscreteDensity, greenwo
 from transient.physics.flow_factors import contact_factor, pressure_flow_factors, shear_flow_factor
 from transient.physics.layered import BoundaryLayers, Gecim, LayeredFilm, Newtonian
 from transient.results import Result, load_result
-from transient.solvers.integrate import Problem, Solution, Stats, solve
+from transient.solvers.integrate import Problem, Solution, Stats, Steps, solve
 from transient.solvers.settings import Integration, LongRun, Recording
 from transient.study.noise import bearing_noise  # the public API re-exports the noise protocol
+from transient.study.settle import Settling
 from transient.surfaces.roughness import RoughSurface
 
 __all__ = [
     "AsperityContact", "BoundaryLayers", "CircumferentialGroove", "DiscreteDensity", "Gecim", "Groove", "Integration",
     "LayeredFilm", "LongRun", "Newtonian", "JournalBearing", "JournalOrbit", "LineContact", "OilHole", "PointContact",
     "Problem", "Recording", "Result", "RollerContact", "Rotor", "RotorBearingSystem", "TaperedRoller",
-    "RoughSurface", "Solution", "Stats", "ThrustBallBearing", "ThrustPad", "a_weighting", "bearing_noise", "contact_factor",
+    "RoughSurface", "Settling", "Solution", "Stats", "Steps", "ThrustBallBearing", "ThrustPad", "TrackSettings", "a_weighting", "bearing_noise", "contact_factor",
     "greenwood_tripp", "load_result", "pressure_flow_factors", "stability_onset", "shear_flow_factor", "solve", "steel_asperity_contact",
 ]

@@ -5,7 +5,7 @@ end-to-end bearing_noise run."""
 import numpy as np
 import pytest
 
-from transient import bearing_noise
+from transient import Recording, bearing_noise
 from transient.analysis import (NotPeriodicError, a_weighting, energy_average, find_settled,
                                 film_transitions, harmonic_amplitudes, mean_and_fluctuation, require_periodic,
                                 transmission_coefficient)
@@ -157,7 +157,7 @@ def test_no_field_when_not_asked():
     from transient.models.journal.orbit import JournalOrbit
 
     o = JournalOrbit(JournalBearing(**RHO_KIM_BEARING, grid=(16, 2)), **RHO_KIM_ROTOR, speed_rpm=6000)
-    r = o.run(1, outputs_per_revolution=4)
+    r = o.run(1, recording=Recording(outputs_per_revolution=4))
     assert "pressure" not in r.fields and r.final_state is not None
 
 

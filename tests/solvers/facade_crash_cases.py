@@ -21,7 +21,7 @@ import traceback
 import numpy as np
 import scipy.sparse as sp
 
-from transient import Problem, solve
+from transient import Problem, Steps, solve
 
 
 class Boom(Exception):
@@ -146,7 +146,7 @@ def group_sigint():
                 out[1] = mu * (1.0 - y[0] ** 2) * y[1] - y[0]
 
             p = Problem(y0=np.array([2.0, 0.0]), rhs=rhs, jac_pattern=sp.csc_matrix(np.ones((2, 2))), name="vdp")
-            run(f"sigint-{method}-{when}", lambda: solve(p, t, method=method, dt=1.0))
+            run(f"sigint-{method}-{when}", lambda: solve(p, t, method=method, steps=Steps(dt=1.0)))
             restored = signal.getsignal(signal.SIGINT) is signal.default_int_handler
             print(f"CASE sigint-{method}-{when}-after completed={state['completed_after_signal']} "
                   f"handler_restored={int(restored)}", flush=True)

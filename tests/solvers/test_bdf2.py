@@ -4,6 +4,7 @@ mass balance of every step, bulk moduli 1e7 and 1e12, dense output between steps
 event. These tests share orbits; the long ones are marked slow."""
 
 import os
+from dataclasses import replace
 
 import numpy as np
 import pytest
@@ -13,6 +14,7 @@ from transient.models.journal.content_newton import bdf2_jacobian, bdf2_residual
 from transient.models.journal.orbit import BDF2_FILM_TOL, JournalOrbit
 from transient.params.rho_kim import BEARING, ROTOR
 from transient.solvers.integrate import bdf2, solve
+from transient import Integration, LongRun, Recording
 
 CL, W, MASS, RPM = BEARING["clearance"], ROTOR["load"], ROTOR["rotor_mass"], 6000.0
 TWO_PI = 2 * np.pi
@@ -109,7 +111,8 @@ def test_every_step_conserves_mass_to_the_newton_tolerance():
 @pytest.fixture(scope="module")
 def large_48():
     o = orbit()
-    ref = o.run(1, rtol=1e-8, atol=1e-11, outputs_per_revolution=20, progress=False)
+    ref = o.run(1, integration=Integration(rtol=1e-8, atol=1e-11), recording=Recording(outputs_per_revolution=20),
+                long_run=LongRun(progress=False))
     return o, ref
 
 
@@ -137,7 +140,8 @@ def test_dense_output_between_steps(large_48):
     tau = np.r_[0.0, np.arange(1, 21) / 20 * TWO_PI - 0.5 * h]
     off = fixed_step_run(o, spr, tau)
     assert off.success, off.message
-    fine = o.run(1, rtol=1e-8, atol=1e-11, outputs_per_revolution=2000, progress=False)
+    fine = o.run(1, integration=Integration(rtol=1e-8, atol=1e-11), recording=Recording(outputs_per_revolution=2000),
+                 long_run=LongRun(progress=False))
     t = tau / o.film.omega
     xr, yr = CubicSpline(fine.t, fine.x)(t), CubicSpline(fine.t, fine.y)(t)
     n = o.film.n
@@ -150,7 +154,8 @@ def test_adaptive_run_and_stats(large_48):
     """run(method="bdf2"): the default step cap (500 per revolution) and rtol 1e-4 on the rotor stay within
     2e-4 C of the reference; the statistics are the facade's."""
     o, ref = large_48
-    r = o.run(1, method="bdf2", rtol=1e-4, outputs_per_revolution=20, progress=False)
+    r = o.run(1, integration=Integration(method="bdf2", rtol=1e-4), recording=Recording(outputs_per_revolution=20),
+              long_run=LongRun(progress=False))
     assert r.success and r.method == "bdf2"
     e = float(np.max(np.hypot(r.x - ref.x, r.y - ref.y)) / CL)
     assert e < 2e-4, e
@@ -163,7 +168,8 @@ def test_bulk_modulus_extremes(bulk):
     """A soft (1e7 Pa) and a nearly incompressible (1e12 Pa) liquid: the fixed-step orbit over 0.3 revolution
     agrees with IDA (rtol 1e-8) to the accuracy of 500 steps per revolution."""
     o = orbit(grid=(24, 6), bulk_modulus=bulk)
-    ref = o.run(0.3, rtol=1e-8, atol=1e-11, outputs_per_revolution=20, progress=False)
+    ref = o.run(0.3, integration=Integration(rtol=1e-8, atol=1e-11), recording=Recording(outputs_per_revolution=20),
+                long_run=LongRun(progress=False))
     tau = np.linspace(0, 0.3 * TWO_PI, 7)
     s = fixed_step_run(o, 500, tau)
     assert s.success, s.message
@@ -173,13 +179,14 @@ def test_bulk_modulus_extremes(bulk):
 @pytest.mark.slow
 def test_checkpoint_resume_is_bitwise(tmp_path):
     o = orbit(grid=(24, 6), unbalance=0.1)
-    kw = dict(method="bdf2", rtol=1e-4, chunk_revolutions=0.25, outputs_per_revolution=20, record=("force", "mass"),
-              progress=False)
-    full = o.run(0.5, **kw)
+    kw = dict(integration=Integration(method="bdf2", rtol=1e-4),
+              recording=Recording(outputs_per_revolution=20, record=("force", "mass")))
+    lr = LongRun(chunk_revolutions=0.25, progress=False)
+    full = o.run(0.5, long_run=lr, **kw)
     path = str(tmp_path / "orbit.npz")
-    o.run(0.25, checkpoint=path, **kw)  # "crashes" after the first chunk
+    o.run(0.25, long_run=replace(lr, checkpoint=path), **kw)  # "crashes" after the first chunk
     assert os.path.exists(path)
-    resumed = orbit(grid=(24, 6), unbalance=0.1).run(0.5, checkpoint=path, resume=True, **kw)
+    resumed = orbit(grid=(24, 6), unbalance=0.1).run(0.5, long_run=replace(lr, checkpoint=path, resume=True), **kw)
     for k in ("t", "x", "y", "force", "mass"):
         np.testing.assert_array_equal(getattr(resumed, k), getattr(full, k))
 
@@ -191,7 +198,8 @@ def test_touch_event():
     o = orbit(grid=(24, 6), unbalance=0.01)
     y = o.perturbed_start(0.3)
     y[o.film.n + 2] = 10.0
-    r = o.run(0.5, method="bdf2", rtol=1e-5, y0=y, touch_gap=0.3, progress=False)
+    r = o.run(0.5, integration=Integration(method="bdf2", rtol=1e-5), long_run=LongRun(progress=False), y0=y,
+              touch_gap=0.3)
     assert r.touched_at is not None and "journal touches the bearing" in r.message, r.message
     assert np.hypot(r.x[-1], r.y[-1]) / CL == pytest.approx(0.7, abs=1e-9)
     assert r.t[-1] == pytest.approx(r.touched_at, rel=1e-12)
@@ -199,7 +207,7 @@ def test_touch_event():
 
 def test_bdf2_needs_the_content_formulation():
     with pytest.raises(ValueError, match="content"):
-        orbit(grid=(16, 4)).run(0.1, method="bdf2", formulation="universal")
+        orbit(grid=(16, 4)).run(0.1, integration=Integration(method="bdf2", formulation="universal"))
 
 
 @pytest.mark.slow
@@ -211,7 +219,8 @@ def test_layers_and_gecim_bulk():
     o = orbit(grid=(24, 6), layers=BoundaryLayers(0.1 * CL, 10 * BEARING["viscosity"], 0.05 * CL),
               rheology=Gecim(kappa=0.65 * BEARING["viscosity"] * RPM * np.pi / 30 * BEARING["diameter"] / 2 / CL,
                              viscosity_ratio=0.57))  # Gecim's kappa* = kappa C / (mu omega R) = 0.65
-    ref = o.run(0.2, rtol=1e-8, atol=1e-11, outputs_per_revolution=20, progress=False)
+    ref = o.run(0.2, integration=Integration(rtol=1e-8, atol=1e-11), recording=Recording(outputs_per_revolution=20),
+                long_run=LongRun(progress=False))
     s = fixed_step_run(o, 500, np.linspace(0, 0.2 * TWO_PI, 5))
     assert s.success, s.message
     assert journal_error(o, s, ref) < 2e-4

@@ -11,13 +11,15 @@ from transient.models.journal.orbit import JournalOrbit
 from transient.models.journal.bearing import JournalBearing
 from transient.params.rho_kim import BEARING, ROTOR
 from transient.solvers.integrate.cache_guard import drop_stale_cache
+from transient import Integration
 
 
 def test_journal_bdf2_newton_is_saved_in_the_disk_cache():
     """A dispatcher handed to a non-inlined function is a dynamic global, and numba refuses to cache its caller:
     after a BDF2 run the caller's cache index must hold its compiled signature."""
     b = JournalBearing(**BEARING, grid=(12, 4))
-    r = JournalOrbit(b, ROTOR["rotor_mass"], 0.3 * BEARING["clearance"], ROTOR["load"], 6000.0).run(0.05, method="bdf2")
+    r = JournalOrbit(b, ROTOR["rotor_mass"], 0.3 * BEARING["clearance"], ROTOR["load"], 6000.0).run(
+        0.05, integration=Integration(method="bdf2"))
     assert r.success
     assert bdf2_newton.signatures
     index = bdf2_newton._cache._cache_file._load_index()

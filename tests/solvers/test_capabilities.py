@@ -6,7 +6,7 @@ import time
 
 import pytest
 
-from transient import JournalBearing, JournalOrbit, ThrustBallBearing, ThrustPad
+from transient import Integration, JournalBearing, JournalOrbit, ThrustBallBearing, ThrustPad
 from transient.params.rho_kim import BEARING, ROTOR
 from transient.solvers.integrate import METHODS, check_method, methods_for
 from transient.study.scene import KINDS
@@ -38,11 +38,13 @@ def test_thrust_pad_descent_refuses_bdf2_before_any_work():
 
 def test_ball_sequence_refuses_bdf2_before_any_work():
     with pytest.raises(ValueError, match=r"ThrustBallBearing.sequence: method = 'bdf2' is not available"):
-        ThrustBallBearing().sequence(100.0, 1000.0, 1e-6, n_passes=3, method="bdf2")
+        ThrustBallBearing().sequence(100.0, 1000.0, 1e-6, n_passes=3,
+                                     integration=Integration(method="bdf2", atol=1e-10))
 
 
 def test_journal_orbit_takes_bdf2_and_the_scene_offers_it():
     assert "bdf2" in KINDS["journal_orbit"].run["method"].choices
     b = JournalBearing(**BEARING, grid=(12, 4))
-    r = JournalOrbit(b, ROTOR["rotor_mass"], 0.3 * BEARING["clearance"], ROTOR["load"], 6000.0).run(0.05, method="bdf2")
+    r = JournalOrbit(b, ROTOR["rotor_mass"], 0.3 * BEARING["clearance"], ROTOR["load"], 6000.0).run(
+        0.05, integration=Integration(method="bdf2"))
     assert r.success and r.method == "bdf2"

@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 import scipy.sparse as sp
 
-from transient import Problem, solve
+from transient import Problem, Steps, solve
 
 ADAPTIVE = ["cvode", "ida", "bdf", "radau", "lsoda"]
 
@@ -137,7 +137,7 @@ def test_rk4_is_fourth_order():
     t = np.array([0.0, 10.0])
     errs = []
     for dt in (0.04, 0.02, 0.01):
-        r = solve(oscillator(), t, method="rk4", dt=dt)
+        r = solve(oscillator(), t, method="rk4", steps=Steps(dt=dt))
         errs.append(abs(r.y[-1, 0] - np.cos(10.0)))
         assert r.stats.n_steps == round(10.0 / dt)
         assert r.stats.n_rhs == 4 * r.stats.n_steps
@@ -147,7 +147,7 @@ def test_rk4_is_fourth_order():
 
 def test_rk4_outputs_between_steps_are_rk4_values():
     t = np.array([0.0, 0.33, 1.0])  # 0.33 is not a multiple of dt
-    r = solve(oscillator(), t, method="rk4", dt=0.01)
+    r = solve(oscillator(), t, method="rk4", steps=Steps(dt=0.01))
     np.testing.assert_allclose(r.y[:, 0], np.cos(t), atol=1e-9)
 
 
@@ -155,7 +155,7 @@ def test_rk4_final_output_survives_rounding_of_the_step_count():
     """2 pi / 3000 * 3000 lands one rounding step below 2 pi: the last output must still be produced,
     and outputs on step ends must not cost partial steps."""
     tau = 2 * np.pi * np.linspace(0.0, 1.0, 21)
-    r = solve(oscillator(), tau, method="rk4", dt=2 * np.pi / 3000)
+    r = solve(oscillator(), tau, method="rk4", steps=Steps(dt=2 * np.pi / 3000))
     assert r.success and r.t.size == tau.size
     assert r.stats.n_steps == 3000 and r.stats.n_rhs == 4 * 3000
     np.testing.assert_allclose(r.y[:, 0], np.cos(tau), atol=1e-12)
@@ -176,7 +176,7 @@ def test_rk4_inner_algebraic_solve_per_stage():
         return y
 
     p = Problem(y0=np.array([1.0, 0.0]), rhs=rhs, algebraic=[1], algebraic_solve=algebraic_solve, name="dae")
-    r = solve(p, np.array([0.0, 1.0]), method="rk4", dt=0.01)
+    r = solve(p, np.array([0.0, 1.0]), method="rk4", steps=Steps(dt=0.01))
     assert abs(r.y[-1, 0] - np.exp(-1.0)) < 1e-9
     assert abs(r.y[-1, 1] - r.y[-1, 0]) < 1e-15
     assert len(calls) >= 4 * 100  # one inner solve per stage
@@ -199,7 +199,7 @@ def falling_ball(terminal=True, direction=-1):
 @pytest.mark.parametrize("method", ADAPTIVE + ["rk4"])
 def test_terminal_event_located(method):
     t_hit = np.sqrt(2.0 / 9.81)
-    r = solve(falling_ball(), np.linspace(0.0, 1.0, 11), method=method, rtol=1e-10, atol=1e-12, dt=0.01)
+    r = solve(falling_ball(), np.linspace(0.0, 1.0, 11), method=method, rtol=1e-10, atol=1e-12, steps=Steps(dt=0.01))
     assert r.success, r.message
     assert r.t_events.size == 1
     assert abs(r.t_events[0] - t_hit) < 1e-8
@@ -249,10 +249,10 @@ def test_dae_rejected_by_ode_methods():
 
 @pytest.mark.parametrize("method", ["cvode", "ida", "bdf"])
 def test_max_steps_reported_not_raised(method):
-    r = solve(van_der_pol(), np.array([0.0, 2000.0]), method=method, max_steps=5)
+    r = solve(van_der_pol(), np.array([0.0, 2000.0]), method=method, steps=Steps(max_steps=5))
     assert not r.success and "max_steps=5" in r.message
     with pytest.raises(ValueError, match="max_steps must be an integer >= 1"):
-        solve(van_der_pol(), np.array([0.0, 2000.0]), method=method, max_steps=0)
+        solve(van_der_pol(), np.array([0.0, 2000.0]), method=method, steps=Steps(max_steps=0))
 
 
 def test_t_eval_must_increase():
@@ -269,7 +269,7 @@ def test_time_budget_stops_a_long_run(method):
         _time.sleep(2e-4)  # make every step cost wall time
         out[0] = -y[0]
 
-    kw = dict(dt=1e-4) if method == "rk4" else dict(max_step=1e-4)
+    kw = dict(steps=Steps(dt=1e-4) if method == "rk4" else Steps(max_step=1e-4))
     t0 = _time.perf_counter()
     r = solve(Problem(y0=np.ones(1), rhs=rhs), np.linspace(0.0, 100.0, 11), method=method, time_budget=0.2, **kw)
     wall = _time.perf_counter() - t0
@@ -301,7 +301,7 @@ def test_a_back_end_is_one_entry_in_the_table(monkeypatch):
 
     monkeypatch.setitem(BACKENDS, "euler", Backend(euler, fixed_step=True))
     t = np.linspace(0.0, 1.0, 3)
-    r = solve(Problem(y0=np.ones(1), rhs=decay), t, method="euler", dt=1e-3)
+    r = solve(Problem(y0=np.ones(1), rhs=decay), t, method="euler", steps=Steps(dt=1e-3))
     assert r.success and r.method == "euler" and r.stats.n_steps == 1000 and r.stats.n_rhs == 1000
     assert r.stats.n_error_test_failures == 0
     err = np.abs(r.y[:, 0] - np.exp(-t))

@@ -25,7 +25,7 @@ import numpy as np
 import pytest
 import scipy.sparse as sp
 
-from transient import Problem, solve
+from transient import Problem, Steps, solve
 
 ADAPTIVE = ["cvode", "ida", "bdf", "radau", "lsoda"]
 ALL = ADAPTIVE + ["rk4"]
@@ -146,7 +146,8 @@ def test_callback_exceptions_propagate_from_scipy_and_rk4(method, where, exc_typ
     # its stiff method: a stiff rate and the first call
     when, rate = (1, 1000.0) if where == "jac" else (3, 1.0)
     with pytest.raises(exc_type) as info:
-        solve(decay_problem(where, when, exc, rate=rate), np.linspace(0.0, 5.0, 6), method=method, dt=0.01)
+        solve(decay_problem(where, when, exc, rate=rate), np.linspace(0.0, 5.0, 6), method=method,
+              steps=Steps(dt=0.01))
     assert info.value is exc  # the very object, not a wrapper
     assert any(f.name in ("rhs", "jac", "events") for f in info.traceback)  # raised where it was raised
     assert any("at t=" in note and "[transient.solve]" in note for note in exc.__notes__)
@@ -175,7 +176,7 @@ def test_nonfinite_rhs_stops_at_once_with_time_method_and_component(method, valu
     """Before: CVODE/IDA stalled at h ~ 1e-17 for a million steps (105-163 s; here capped by
     max_steps=5000, which the old facade reached), LSODA returned success=True with NaN states, BDF
     raised from scipy's LU. Measured after: 11-50 steps, milliseconds."""
-    r = solve(nan_at_half(value), np.linspace(0.0, 1.0, 11), method=method, dt=0.01, max_steps=5000)
+    r = solve(nan_at_half(value), np.linspace(0.0, 1.0, 11), method=method, steps=Steps(dt=0.01, max_steps=5000))
     assert not r.success
     m = re.search(r"non-finite value at t=([0-9.e+-]+): f\[1\] = (nan|inf)", r.message)
     assert m, r.message
@@ -192,7 +193,7 @@ def test_nonfinite_residual_of_a_dae_names_the_residual():
         res[1] = y[1] - 2.0 * y[0] if t < 0.5 else np.nan
 
     p = Problem(y0=np.array([1.0, 2.0]), residual=residual, yp0=np.array([-1.0, 0.0]), algebraic=[1], name="dae")
-    r = solve(p, np.linspace(0.0, 1.0, 5), method="ida", max_steps=5000)
+    r = solve(p, np.linspace(0.0, 1.0, 5), method="ida", steps=Steps(max_steps=5000))
     assert not r.success and r.stats.n_steps < 200
     assert re.search(r"^ida: the residual .* at t=0\.5[0-9]*: F\[1\] = nan", r.message), r.message
 
@@ -228,7 +229,7 @@ def test_nonfinite_event_function_is_reported(method):
         g[0] = 1.0 if t < 0.5 else np.nan
 
     p = Problem(y0=np.ones(1), rhs=rhs, events=events, n_events=1, name="ev")
-    r = solve(p, np.linspace(0.0, 3.0, 4), method=method, dt=0.01)
+    r = solve(p, np.linspace(0.0, 3.0, 4), method=method, steps=Steps(dt=0.01))
     assert not r.success
     assert re.search(r"the event functions of problem 'ev' returned a non-finite value at t=0\.5[0-9]*: g\[0\] = nan",
                      r.message), r.message
@@ -244,7 +245,7 @@ def test_finite_time_blowup_stops_quickly(method):
 
     with np.errstate(over="ignore"):
         r = solve(Problem(y0=np.ones(1), rhs=rhs, name="blowup"), np.linspace(0.0, 2.0, 5), method=method,
-                  dt=1e-3, max_steps=20000)
+                  steps=Steps(dt=1e-3, max_steps=20000))
     assert not r.success
     assert r.stats.n_steps < 3000, (r.stats.n_steps, r.message)
     assert np.isfinite(r.y).all() and r.t[-1] <= 1.0
@@ -259,8 +260,8 @@ def test_success_is_never_reported_with_nonfinite_states(method):
         out[0] = y[0]
 
     with np.errstate(over="ignore", invalid="ignore"):
-        r = solve(Problem(y0=np.array([1e300]), rhs=rhs, name="growth"), np.array([0.0, 10.0, 30.0]),
-                  method=method, dt=0.01, max_steps=20000)
+        r = solve(Problem(y0=np.array([1e300]), rhs=rhs, name="growth"), np.array([0.0, 10.0, 30.0]), method=method,
+                  steps=Steps(dt=0.01, max_steps=20000))
     assert np.isfinite(r.y).all()
     assert not r.success and r.t[-1] == 10.0, r.message
 
@@ -313,7 +314,7 @@ def test_failing_solves_do_not_leak(method):
 
     def one(i):
         try:
-            r = solve(problems[i % 2], np.array([0.0, 1.0]), method=method, dt=0.01, max_steps=2000)
+            r = solve(problems[i % 2], np.array([0.0, 1.0]), method=method, steps=Steps(dt=0.01, max_steps=2000))
             assert not r.success
         except Boom:
             pass
@@ -391,8 +392,9 @@ def oscillator2():
 def test_bad_arguments_are_named_with_value_and_range(kwargs, fragments):
     kwargs = dict(kwargs)
     t_eval = kwargs.pop("t_eval", [0.0, 1.0])
+    steps = {k: kwargs.pop(k) for k in ("dt", "max_step", "first_step", "max_steps") if k in kwargs}
     with pytest.raises(ValueError) as info:
-        solve(oscillator2(), t_eval, **kwargs)
+        solve(oscillator2(), t_eval, **kwargs, **({"steps": Steps(**steps)} if steps else {}))
     msg = str(info.value)
     assert "\n" not in msg
     for frag in fragments:

@@ -7,7 +7,7 @@ import os
 import numpy as np
 import pytest
 
-from transient import JournalBearing, JournalOrbit, Problem
+from transient import Integration, JournalBearing, JournalOrbit, LongRun, Problem, Recording
 from transient.params import rho_kim
 from transient.solvers.longrun import CheckpointError, Interrupted, run_long
 
@@ -45,8 +45,8 @@ def drive(path=None, resume=False, n=40, key=None, chunk=10, stop_after=None, me
     rec = Recorder()
     calls = [0]  # right-hand-side calls over the whole run (all chunks)
     out = run_long(lambda y, t: oscillator(y, t, stop_after, calls), np.array([1.0, 0.0]), 0.0, 0.25, n, rec,
-                   method=method, rtol=1e-9, atol=1e-12, chunk_outputs=chunk, checkpoint=path,
-                   resume=resume, key=key or dict(damping=0.1), progress=False)
+                   solver=dict(method=method, rtol=1e-9, atol=1e-12), chunk_outputs=chunk,
+                   long_run=LongRun(checkpoint=path, resume=resume, progress=False), key=key or dict(damping=0.1))
     return rec, out
 
 
@@ -121,15 +121,19 @@ def test_ctrl_c_says_where_the_checkpoint_is(tmp_path):
 def test_orbit_checkpoint_names_a_changed_run_setting(tmp_path):
     o = JournalOrbit(JournalBearing(**rho_kim.BEARING, grid=(16, 2)), speed_rpm=6000, **rho_kim.ROTOR)
     path = tmp_path / "orbit.npz"
-    o.run(1.0, outputs_per_revolution=8, chunk_revolutions=0.5, checkpoint=path)
-    for change, name in ((dict(rtol=1e-7), "rtol"), (dict(outputs_per_revolution=4), "outputs_per_revolution"),
-                         (dict(record=("force",)), "record"), (dict(touch_gap=1e-2), "touch_gap")):
-        kw = dict(dict(outputs_per_revolution=8, chunk_revolutions=0.5, checkpoint=path, resume=True), **change)
+    o.run(1.0, recording=Recording(outputs_per_revolution=8), long_run=LongRun(chunk_revolutions=0.5, checkpoint=path))
+    lr = LongRun(chunk_revolutions=0.5, checkpoint=path, resume=True)
+    for change, name in ((dict(integration=Integration(rtol=1e-7)), "rtol"),
+                         (dict(recording=Recording(outputs_per_revolution=4)), "outputs_per_revolution"),
+                         (dict(recording=Recording(outputs_per_revolution=8, record=("force",))), "record"),
+                         (dict(touch_gap=1e-2), "touch_gap")):
+        kw = dict(dict(recording=Recording(outputs_per_revolution=8), long_run=lr), **change)
         with pytest.raises(CheckpointError, match=f"written with {name} = "):
             o.run(1.0, **kw)
     other = JournalOrbit(o.bearing, speed_rpm=6000, **dict(rho_kim.ROTOR, unbalance=1e-6))
     with pytest.raises(CheckpointError, match="unbalance"):
-        other.run(1.0, outputs_per_revolution=8, chunk_revolutions=0.5, checkpoint=path, resume=True)
+        other.run(1.0, recording=Recording(outputs_per_revolution=8),
+                  long_run=LongRun(chunk_revolutions=0.5, checkpoint=path, resume=True))
     assert not any(f.name.endswith(".tmp") for f in tmp_path.iterdir())
     assert not os.path.exists(str(path) + ".lock")  # a finished run removes its lock file
 

@@ -5,7 +5,7 @@ advises resume=False in Python and --fresh on the command line."""
 import numpy as np
 import pytest
 
-from transient import Integration, Problem
+from transient import Integration, LongRun, Problem
 from transient.cli import main
 from transient.solvers.longrun import CheckpointError, run_long
 
@@ -24,12 +24,13 @@ class Recorder:
         self.t = list(a["t"])
 
 
-def decay(checkpoint=None, key=None, **kw):
+def decay(checkpoint=None, key=None, **long_run):
     def rhs(t, y, out):
         out[0] = -y[0]
 
-    return run_long(lambda y, t: Problem(y0=y, rhs=rhs), np.array([1.0]), 0.0, 0.5, 4, Recorder(), method="bdf",
-                    chunk_outputs=2, checkpoint=checkpoint, key=key or dict(rate=1.0), **kw)
+    return run_long(lambda y, t: Problem(y0=y, rhs=rhs), np.array([1.0]), 0.0, 0.5, 4, Recorder(),
+                    solver=dict(method="bdf"), long_run=LongRun(checkpoint=checkpoint, **long_run), chunk_outputs=2,
+                    key=key or dict(rate=1.0))
 
 
 @pytest.mark.parametrize("name, value", [("resume", "False"), ("resume", 0), ("progress", "no"), ("progress", 1)])
@@ -69,7 +70,7 @@ def test_a_refused_checkpoint_advises_python_and_the_shell_each_their_way(tmp_pa
     assert "--fresh" in e.value.command_line and "resume=False" not in e.value.command_line
     script = tmp_path / "scenario.py"
     script.write_text("import numpy as np\n"
-                      "from transient import Problem\n"
+                      "from transient import LongRun, Problem\n"
                       "from transient.solvers.longrun import run_long\n"
                       "class R:\n"
                       "    t = []\n"
@@ -77,8 +78,9 @@ def test_a_refused_checkpoint_advises_python_and_the_shell_each_their_way(tmp_pa
                       "    def arrays(self): return {}\n"
                       "    def restore(self, a): pass\n"
                       "def rhs(t, y, out): out[0] = -y[0]\n"
-                      f"run_long(lambda y, t: Problem(y0=y, rhs=rhs), np.array([1.0]), 0.0, 0.5, 4, R(), method='bdf',"
-                      f" chunk_outputs=2, checkpoint={str(path)!r}, key=dict(rate=3.0), resume=True)\n")
+                      f"run_long(lambda y, t: Problem(y0=y, rhs=rhs), np.array([1.0]), 0.0, 0.5, 4, R(),"
+                      f" solver=dict(method='bdf'), chunk_outputs=2, key=dict(rate=3.0),"
+                      f" long_run=LongRun(checkpoint={str(path)!r}, resume=True))\n")
     assert main(["run", str(script)]) == 2
     err = capsys.readouterr().err
     assert "rate = 1.0" in err and "--fresh" in err and "resume=False" not in err, err

@@ -10,6 +10,7 @@ import pytest
 
 from transient.solvers.integrate import Problem, solve
 from transient.solvers.integrate.stepper import BDF2, StepSolve, _history
+from transient import Steps
 
 LAM = -2.0  # y' = LAM y + sin(t), exact step solve
 
@@ -87,7 +88,7 @@ def test_event_located_on_the_dense_output():
 
 def test_max_steps_and_non_finite_state_stop_the_run_with_a_message():
     p = Problem(y0=np.array([1.0]), step_solve=LinearStep(), name="linear")
-    sol = solve(p, np.linspace(0.0, 3.0, 4), method="bdf2", rtol=1e-8, atol=1e-12, max_steps=5)
+    sol = solve(p, np.linspace(0.0, 3.0, 4), method="bdf2", rtol=1e-8, atol=1e-12, steps=Steps(max_steps=5))
     assert not sol.success and "max_steps=5" in sol.message
     p = Problem(y0=np.array([1.0]), step_solve=LinearStep(fail_at=1.0), name="linear")
     sol = solve(p, np.linspace(0.0, 3.0, 31), method="bdf2", rtol=1e-4, atol=1e-8)

@@ -2,11 +2,13 @@
 speeds, and the whirl numbers on a synthetic orbit."""
 
 import json
+from dataclasses import replace
 
 import numpy as np
 import pytest
 
 from transient.models.journal import JournalBearing, JournalOrbit, OrbitResult
+from transient.solvers.settings import Integration
 from transient.params.rho_kim import BEARING, ROTOR
 from transient.study.whip import METHOD, carry_state, long_whip, run_up, whirl_numbers
 
@@ -98,9 +100,9 @@ def test_the_whip_method_reaches_the_orbit_run(monkeypatch, method):
     seen = []
     real = JournalOrbit.run
 
-    def spy(self, *args, **kwargs):
-        seen.append(kwargs.pop("method", None))
-        return real(self, *args, method="ida", **kwargs)
+    def spy(self, *args, integration=None, **kwargs):
+        seen.append(None if integration is None else integration.method)
+        return real(self, *args, integration=replace(integration or Integration(), method="ida"), **kwargs)
 
     monkeypatch.setattr(JournalOrbit, "run", spy)
     b = JournalBearing(**BEARING, grid=(16, 4))

@@ -23,7 +23,7 @@ import time
 
 import numpy as np
 
-from transient.models.ball.bearing import ThrustBallBearing
+from transient.models.ball.bearing import ThrustBallBearing, sequence_settings
 from transient.models.ball import track as _track
 from transient.params import jeong
 
@@ -46,7 +46,7 @@ def _timed(n_passes, **kw):
         cls.relax = relax
     try:
         c0, t0 = time.process_time(), time.perf_counter()
-        s = ThrustBallBearing().sequence(**CASE, n_passes=n_passes, stop_at_periodic=False, **kw)
+        s = ThrustBallBearing().sequence(**CASE, n_passes=n_passes, stop_at_periodic=False, **sequence_settings(**kw))
         wall, cpu = time.perf_counter() - t0, time.process_time() - c0
     finally:
         for cls, f in orig.items():
@@ -60,7 +60,7 @@ def run(out_dir: str = "docs", n_passes: int = 200, quick: bool = False) -> dict
 
     os.makedirs(out_dir, exist_ok=True)
     ThrustBallBearing().sequence(**CASE, n_passes=3)                # JIT warm-up (both kernels)
-    ThrustBallBearing().sequence(**CASE, n_passes=2, **OLD)
+    ThrustBallBearing().sequence(**CASE, n_passes=2, **sequence_settings(**OLD))
     ref, (t_ref, _), _ = _timed(n_passes, rtol=1e-6, atol=1e-10)
     plan = [("earlier: uniform 100 cells, floor h_inf/10, band DQ", dict(OLD, rtol=1e-4, atol=1e-8, linear_solver="band")),
             ("earlier: uniform 100 cells, floor h_inf/10, sparse analytic", dict(OLD, rtol=1e-4, atol=1e-8))]
@@ -103,7 +103,7 @@ def run(out_dir: str = "docs", n_passes: int = 200, quick: bool = False) -> dict
                 for w in jeong.RANGES["load"]:
                     t1 = time.perf_counter()
                     s = brg.with_(n_balls=z).sequence(load=w, speed_rpm=rpm, ambient_film=100e-6, n_passes=60,
-                                                      **jeong.MAP_SETTINGS)
+                                                      **sequence_settings(**jeong.MAP_SETTINGS))
                     walls.append(time.perf_counter() - t1)
                     counts[s.final_regime] = counts.get(s.final_regime, 0) + 1
         t_map = time.perf_counter() - t0

@@ -24,6 +24,7 @@ from transient.models.journal.kernels import ode_jacobian, ode_rhs
 from transient.models.journal.orbit import JournalOrbit
 from transient.models.journal.scales import Rotor
 from transient.params.rho_kim import BEARING, ROTOR
+from transient.solvers.settings import Recording
 
 TITLE = "journal kernels with the oil-feed geometry: single full-length groove against partial, multiple and round feeds"
 RPM = 6000.0
@@ -66,7 +67,7 @@ def run(quick=False) -> dict:
     revs = 0.2 if quick else 1.0
     for k, (o, *_) in cases.items():
         o.run(0.02)  # warm-up
-        best[k]["orbit_s"] = best_of(lambda: o.run(revs, outputs_per_revolution=20), 1 if quick else 2)[0]
+        best[k]["orbit_s"] = best_of(lambda: o.run(revs, recording=Recording(outputs_per_revolution=20)), 1 if quick else 2)[0]
     return dict(grid=grid, revolutions=revs, quick=quick, cases=best)
 
 

@@ -26,6 +26,7 @@ from transient.models.journal.orbit import JournalOrbit
 from transient.params import rho_kim
 from transient.physics.layered import BoundaryLayers
 from transient.study import layers as paper
+from transient.solvers.settings import Integration, LongRun
 
 TITLE = "Gecim bulk: steady solve, orbit and kernel cost against the Newtonian bulk"
 FULL = dict(steady_grid=(241, 40), orbit_grid=(151, 21), revolutions=1.0, rtol=1e-4, repeats=3)
@@ -70,11 +71,12 @@ def run(quick=False, log=print) -> dict:
               for name, rh in (("newtonian", None), ("gecim", paper.gecim_bulk(rho_kim.BEARING, rpm)))}
     starts = {name: o.initial_state() for name, o in orbits.items()}
     for name, o in orbits.items():
-        o.run(0.02, y0=starts[name], progress=False)
+        o.run(0.02, y0=starts[name], long_run=LongRun(progress=False))
     revs, rtol = cfg["revolutions"], cfg["rtol"]
     for k in range(reps):
         for name in (("newtonian", "gecim") if k % 2 == 0 else ("gecim", "newtonian")):
-            w, r = best_of(lambda: orbits[name].run(revs, rtol=rtol, y0=starts[name], progress=False), 1)
+            w, r = best_of(lambda: orbits[name].run(revs, integration=Integration(rtol=rtol),
+                                                    long_run=LongRun(progress=False), y0=starts[name]), 1)
             prev = out["orbit"].get(name)
             if prev is None or w < prev["wall"] / revs:
                 out["orbit"][name] = dict(wall=w / revs, steps=r.stats.n_steps / revs, residuals=r.stats.n_rhs / revs,

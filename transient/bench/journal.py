@@ -46,6 +46,7 @@ import numpy as np
 from transient.params.rho_kim import BEARING as RHO_KIM_BEARING, ROTOR as RHO_KIM_ROTOR
 from transient.models.journal.bearing import JournalBearing
 from transient.models.journal.orbit import JournalOrbit
+from transient.solvers.settings import Integration, LongRun, Recording
 
 BEARING, ROTOR = RHO_KIM_BEARING, RHO_KIM_ROTOR
 CLEARANCE = BEARING["clearance"]
@@ -79,11 +80,11 @@ def _orbit(grid, speed_rpm, switch_width=None):
     return JournalOrbit(b, speed_rpm=speed_rpm, **ROTOR)
 
 
-def _kwargs(line, setting):
+def _integration(line, setting) -> Integration:
     if line in ("rk4", "rk4_tight"):
-        return dict(method="rk4", steps_per_revolution=int(setting),
-                    inner_tolerance=PAPER_INNER if line == "rk4" else TIGHT_INNER)
-    return dict(method=line, rtol=float(setting), atol=atol_for(setting))
+        return Integration(method="rk4", steps_per_revolution=int(setting),
+                           inner_tolerance=PAPER_INNER if line == "rk4" else TIGHT_INNER)
+    return Integration(method=line, rtol=float(setting), atol=atol_for(setting))
 
 
 def _errors(res, ref, opr):
@@ -140,16 +141,18 @@ def run(revolutions=None, grid=(151, 21), quick=False, time_budget_s=300.0, spee
     _log(f"[journal bench] grid {grid[0]} x {grid[1]} ({o.n} states), {speed_rpm:g} rpm, {revs:g} rev; "
          f"equilibrium e/C = {eq.eccentricity_ratio:.4f} ({t_eq:.2f} s)", progress)
     for m in ("cvode", "ida", "bdf", "lsoda"):  # JIT / import warm-up, not timed
-        o.run(0.01, method=m, rtol=1e-3, atol=1e-9, outputs_per_revolution=100)
-    o.run(10 / min(cfg["rk4"] or (500,)), method="rk4", steps_per_revolution=min(cfg["rk4"] or (500,)),
-          outputs_per_revolution=min(cfg["rk4"] or (500,)))
+        o.run(0.01, integration=Integration(method=m, rtol=1e-3, atol=1e-9),
+              recording=Recording(outputs_per_revolution=100))
+    o.run(10 / min(cfg["rk4"] or (500,)),
+          integration=Integration(method="rk4", steps_per_revolution=min(cfg["rk4"] or (500,))),
+          recording=Recording(outputs_per_revolution=min(cfg["rk4"] or (500,))))
 
-    common = dict(revolutions=revs, outputs_per_revolution=opr)
+    common = dict(revolutions=revs, recording=Recording(outputs_per_revolution=opr))
     _log(f"  reference: CVODE rtol {REF_RTOL:g} ...", progress)
-    ref = o.run(method="cvode", rtol=REF_RTOL, atol=REF_ATOL, **common)
+    ref = o.run(integration=Integration(method="cvode", rtol=REF_RTOL, atol=REF_ATOL), **common)
     _log(f"  reference: {ref.stats.wall_time:.1f} s, {ref.stats.n_steps} steps; check: IDA rtol {REF_RTOL:g} ...",
          progress)
-    chk = o.run(method="ida", rtol=REF_RTOL, atol=REF_ATOL, **common)
+    chk = o.run(integration=Integration(method="ida", rtol=REF_RTOL, atol=REF_ATOL), **common)
     ref_err = _errors(chk, ref, opr)[:2]
     reference = dict(method="cvode", rtol=REF_RTOL, atol=REF_ATOL, wall=ref.stats.wall_time,
                      n_steps=ref.stats.n_steps, check_wall=chk.stats.wall_time, check_error_final=ref_err[0],
@@ -162,9 +165,9 @@ def run(revolutions=None, grid=(151, 21), quick=False, time_budget_s=300.0, spee
         over = None  # reason the remaining settings are skipped
         per_step = None  # RK4 seconds per step, from its first run
         for s in cfg[line]:
-            kw = _kwargs(line, s)
+            ig = _integration(line, s)
             setting = f"{s:g}" if line in ("rk4", "rk4_tight") else f"{s:.0e}"
-            row = dict(line=line, label=label, setting=setting, method=kw["method"], status="ok",
+            row = dict(line=line, label=label, setting=setting, method=ig.method, status="ok",
                        error_final=math.nan, error_max=math.nan, wall=math.nan, n_steps=0, n_rhs=0, n_jac=0,
                        callback_share=math.nan, note="")
             if line.startswith("rk4") and per_step is not None and over is None:
@@ -176,9 +179,9 @@ def run(revolutions=None, grid=(151, 21), quick=False, time_budget_s=300.0, spee
                 rows.append(row)
                 _log(f"  {label:28s} {setting:>7s}  {row['status']}", progress)
                 continue
-            budget = dict(time_budget=time_budget_s) if line in ("bdf", "lsoda") else {}
+            budget = LongRun(time_budget=time_budget_s) if line in ("bdf", "lsoda") else None
             try:
-                res = o.run(**kw, **common, **budget)
+                res = o.run(integration=ig, long_run=budget, **common)
             except Exception as exc:  # a failed run is a result, not a crash of the benchmark
                 row["status"] = f"failed: {str(exc)[:80]}"
                 over = "a looser setting failed"
@@ -251,8 +254,9 @@ def _long_run(o, rows, matched, cfg, progress):
         return None
     rtol = float(best["setting"])
     _log(f"  long run: {n:g} revolutions, {best['line'].upper()} rtol {rtol:.0e} ...", progress)
-    res = o.run(n, method=best["line"], rtol=rtol, atol=atol_for(rtol), outputs_per_revolution=cfg["outputs_per_revolution"],
-                chunk_revolutions=max(1.0, n / 10), progress=progress)
+    res = o.run(n, integration=Integration(method=best["line"], rtol=rtol, atol=atol_for(rtol)),
+                recording=Recording(outputs_per_revolution=cfg["outputs_per_revolution"]),
+                long_run=LongRun(chunk_revolutions=max(1.0, n / 10), progress=progress))
     st = res.stats
     return dict(method=best["line"], rtol=rtol, revolutions=n, wall=st.wall_time, per_revolution=st.wall_time / n,
                 n_steps=st.n_steps, callback_share=st.callback_share,

@@ -33,6 +33,7 @@ import numpy as np
 from transient.models.journal.bearing import JournalBearing
 from transient.models.journal.orbit import JournalOrbit
 from transient.params.rho_kim import BEARING, ROTOR
+from transient.solvers.settings import Integration, LongRun, Recording
 
 TITLE = "Orbit size: IDA, BDF2 on the content film and RK4 from small orbits to oil whip"
 CLEARANCE = BEARING["clearance"]
@@ -76,9 +77,10 @@ def _run(o, form, setting, revs, opr, start=None):
     """One candidate: IDA universal at rtol ``setting`` or BDF2 at ``setting`` = (step cap, rtol)."""
     if form == "bdf2":
         cap, rtol = setting
-        return o.run(revs, method="bdf2", rtol=rtol, steps_per_revolution=cap, outputs_per_revolution=opr,
-                     start=start, progress=False)
-    return o.run(revs, rtol=setting, atol=atol_for(setting), outputs_per_revolution=opr, start=start, progress=False)
+        return o.run(revs, integration=Integration(method="bdf2", rtol=rtol, steps_per_revolution=cap),
+                     recording=Recording(outputs_per_revolution=opr), long_run=LongRun(progress=False), start=start)
+    return o.run(revs, integration=Integration(rtol=setting, atol=atol_for(setting)),
+                 recording=Recording(outputs_per_revolution=opr), long_run=LongRun(progress=False), start=start)
 
 
 def _label(form, setting):
@@ -120,8 +122,8 @@ def cost_at(rows, form, target, case=None, key="wall_per_rev"):
 
 
 def _reference(o, revs, opr, start=None):
-    return o.run(revs, rtol=REF_RTOL, atol=atol_for(REF_RTOL), outputs_per_revolution=opr, start=start,
-                 progress=False)
+    return o.run(revs, integration=Integration(rtol=REF_RTOL, atol=atol_for(REF_RTOL)),
+                 recording=Recording(outputs_per_revolution=opr), long_run=LongRun(progress=False), start=start)
 
 
 def _long(o, revs, opr, bdf2, rtol, start=None):
@@ -153,9 +155,9 @@ def run(quick=False, log=print) -> dict:
         ref.x - ref.x[0], ref.y - ref.y[0])) / CLEARANCE))
     rows += _side_by_side("large", o, rtols, bdf2, 1.0, ref, opr=opr, log=log)
     n_rk4 = cfg["rk4_steps"]
-    o.run(0.01, method="rk4", steps_per_revolution=n_rk4, progress=False)
-    r, w, c = _timed(lambda: o.run(1, method="rk4", steps_per_revolution=n_rk4, outputs_per_revolution=opr,
-                                   progress=False))
+    o.run(0.01, integration=Integration(method="rk4", steps_per_revolution=n_rk4), long_run=LongRun(progress=False))
+    r, w, c = _timed(lambda: o.run(1, integration=Integration(method="rk4", steps_per_revolution=n_rk4),
+                                   recording=Recording(outputs_per_revolution=opr), long_run=LongRun(progress=False)))
     rows.append(_row("large", f"RK4 {n_rk4} steps/rev (paper)", r, w, c, ref, 1.0) | dict(form="rk4"))
     log(f"  RK4 {n_rk4}: {w:.1f} s, error {rows[-1]['error']:.2e} C")
     e_rk4, w_rk4 = rows[-1]["error"], rows[-1]["wall_per_rev"]
@@ -175,8 +177,9 @@ def run(quick=False, log=print) -> dict:
     log(f"[orbit_size] whip: 1.5 x threshold ({th:.0f} rpm) = {ow.speed_rpm:.0f} rpm; {cfg['spin_up']} revolutions "
         f"from {cfg['whip_offset']} C off the equilibrium (BDF2) ...")
     y0 = ow.perturbed_start(cfg["whip_offset"])
-    sp, w, _ = _timed(lambda: ow.run(cfg["spin_up"], method="bdf2", rtol=BDF2_RTOL, y0=y0, outputs_per_revolution=opr,
-                                     progress=False))
+    sp, w, _ = _timed(lambda: ow.run(cfg["spin_up"], integration=Integration(method="bdf2", rtol=BDF2_RTOL),
+                                     recording=Recording(outputs_per_revolution=opr), long_run=LongRun(progress=False),
+                                     y0=y0))
     eps = sp.eccentricity_ratio
     out["whip_spin_up"] = dict(threshold_rpm=th, speed_rpm=ow.speed_rpm, revolutions=cfg["spin_up"], wall=w,
                                steps=sp.stats.n_steps, eps_last_rev=(float(eps[-opr:].min()), float(eps[-opr:].max())),

@@ -37,6 +37,7 @@ from transient.models.journal.orbit import JournalOrbit
 from transient.models.journal.periodic import floquet_check, periodic_response, response_curve, stability_onset
 from transient.params.rho_kim import BEARING, ROTOR
 from transient.study.journal import settled_unbalance_orbit
+from transient.solvers.settings import Integration, LongRun, Recording
 
 TITLE = "journal periodic orbits: shooting and continuation vs brute-force settling"
 FULL = dict(grid=(151, 21), speeds=tuple(range(1000, 7501, 250)), rtol=1e-5, reference_rtol=1e-7, single=True,
@@ -58,7 +59,7 @@ def curve_part(bearing, cfg, log):
     """Part 1: the settle loop and the continuation over the same speeds, then the onset."""
     C = bearing.clearance
     sp, rtol = cfg["speeds"], cfg["rtol"]
-    _orbit(bearing, sp[0]).run(0.05, rtol=1e-3, progress=False)  # JIT warm-up outside the timings
+    _orbit(bearing, sp[0]).run(0.05, integration=Integration(rtol=1e-3), long_run=LongRun(progress=False))  # JIT warm-up outside the timings
     rows = []
     t0 = time.perf_counter()
     for s in sp:
@@ -121,8 +122,9 @@ def single_part(bearing, speed, tol, log, max_revolutions):
         return "within tol" if np.hypot(r.x[-1] / C - ref[0], r.y[-1] / C - ref[1]) <= 0.5 * tol else None
 
     t = time.perf_counter()
-    b = o.run(max_revolutions, y0=y0, rtol=rtol, atol=1e-3 * rtol, outputs_per_revolution=1, chunk_revolutions=2,
-              stop=close, progress=False)
+    b = o.run(max_revolutions, y0=y0, integration=Integration(rtol=rtol, atol=1e-3 * rtol),
+              recording=Recording(outputs_per_revolution=1),
+              long_run=LongRun(chunk_revolutions=2, stop=close, progress=False))
     bf_wall = time.perf_counter() - t
     d = np.hypot(b.x / C - ref[0], b.y / C - ref[1])
     row = dict(speed_rpm=speed, tol=tol, rtol=rtol, np_wall=np_wall, np_periods=p.revolutions_integrated,

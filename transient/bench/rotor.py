@@ -27,6 +27,7 @@ from transient.models.journal.bearing import JournalBearing
 from transient.models.journal.orbit import JournalOrbit
 from transient.models.rotor import Rotor, RotorBearingSystem
 from transient.params.rho_kim import BEARING, ROTOR
+from transient.solvers.settings import Integration, LongRun, Recording
 
 TITLE = "Rotor on journal bearings: two transient films against one, per revolution, and a run-up"
 FULL = dict(grid=(151, 21), revolutions=2, runup_revolutions=40, rtol=1e-6, atol=1e-9)
@@ -58,13 +59,14 @@ def _timed(fn):
 
 def run(quick=False) -> dict:
     cfg = QUICK if quick else FULL
-    revs, tol = cfg["revolutions"], dict(rtol=cfg["rtol"], atol=cfg["atol"])
+    revs, ig = cfg["revolutions"], Integration(rtol=cfg["rtol"], atol=cfg["atol"])
     orbit, systems = cases(cfg["grid"])
     starts = {k: s._steady(s.dae(SPEED), 1.0) for k, s in systems.items()}
     y_orbit = orbit.initial_state()
-    runners = dict(orbit=lambda: orbit.run(revs, y0=y_orbit, progress=False, **tol))
+    runners = dict(orbit=lambda: orbit.run(revs, y0=y_orbit, integration=ig, long_run=LongRun(progress=False)))
     for k, s in systems.items():
-        runners[k] = (lambda s=s, k=k: s.run(revs, SPEED, start=(0.0, starts[k]), progress=False, **tol))
+        runners[k] = (lambda s=s, k=k: s.run(revs, SPEED, start=(0.0, starts[k]), integration=ig,
+                                             long_run=LongRun(progress=False)))
     rows = {}
     for _ in range(2):
         for k, fn in runners.items():
@@ -82,8 +84,9 @@ def run(quick=False) -> dict:
     flex = systems["flex"]
     runup = lambda t: 3000.0 + 6000.0 * t / t_up  # noqa: E731
     t_up = cfg["runup_revolutions"] * 60.0 / 6000.0  # 3000 -> 9000 rpm: mean 6000 rpm
-    r, wall, cpu = _timed(lambda: flex.run(cfg["runup_revolutions"], runup, outputs_per_revolution=20, progress=False,
-                                      **tol))
+    r, wall, cpu = _timed(lambda: flex.run(cfg["runup_revolutions"], runup,
+                                           recording=Recording(outputs_per_revolution=20),
+                                           long_run=LongRun(progress=False), integration=ig))
     base = rows["orbit"]["cpu_per_rev"]
     return dict(grid=list(cfg["grid"]), revolutions=revs, quick=quick, rows=rows,
                 ratio_two_to_one=rows["two"]["cpu_per_rev"] / rows["one"]["cpu_per_rev"],

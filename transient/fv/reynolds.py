@@ -461,9 +461,15 @@ class ReynoldsOperator:
                         self.no_face_k if face_k is None else face_k, out)
         return out
 
-    def jacobian(self, P, dP, C, dC, kx, dkx, kz, dkz, cx, cz, *, dq=None, data=None, face_k=None) -> np.ndarray:
-        """CSC data (pattern order) of ``dR/du`` and, if ``dq = (dkx_dq, dkz_dq, dcx_dq, dcz_dq)`` (each
-        (n_extra, n_cells)) is given, the dense columns ``dR/dq``. Extra rows are left zero."""
+    def jacobian(self, *fields, dq=None, data=None, face_k=None) -> np.ndarray:
+        """CSC data (pattern order) of ``dR/du`` for the ten per-cell fields ``P, dP, C, dC, kx, dkx, kz, dkz, cx,
+        cz`` (in the order of :class:`Fields`) and, if ``dq = (dkx_dq, dkz_dq, dcx_dq, dcz_dq)`` (each
+        (n_extra, n_cells)) is given, the dense columns ``dR/dq``. Extra rows are left zero. ``face_k``: per-face
+        conductances (:data:`FACE_TUPLES`) instead of the cells' arithmetic mean."""
+        if len(fields) != len(Fields._fields):
+            raise TypeError(f"ReynoldsOperator.jacobian takes the {len(Fields._fields)} fields "
+                            f"{', '.join(Fields._fields)}; got {len(fields)}")
+        P, dP, C, dC, kx, dkx, kz, dkz, cx, cz = fields
         if data is None:
             data = np.empty(self.nnz)
         if dq is None:

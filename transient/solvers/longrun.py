@@ -41,11 +41,13 @@ from typing import Callable
 
 import numpy as np
 
-from transient.checks import check_bool
+from transient.checks import check_positive
 from transient.results import (FileFault, NotARegularFile, NpzReader, _content_digest, atomic_savez, code_version,
                                read_npz)
-from transient.solvers.integrate import Stats, solve
+from transient.solvers.integrate import Stats, Steps, solve
+from transient.solvers.legacy import keyword_table, run_settings
 from transient.solvers.progress import FRACTIONAL, progress_bar
+from transient.solvers.settings import LongRun
 
 CHECKPOINT_FORMAT = "transient-checkpoint/2"
 MAX_CHUNKS = 1_000_000
@@ -96,21 +98,59 @@ class Outcome:
     extra: dict = field(default_factory=dict)
 
 
-def run_long(problem_at: Callable, y0, t0: float, dt_out: float, n_outputs: int, recorder, *, method: str,
-             rtol: float = 1e-6, atol=1e-8, dt: float | None = None, max_step: float = 0.0, first_step: float = 0.0,
-             linear_solver: str = "auto", options: dict | None = None, chunk_outputs: int | None = None, checkpoint=None,
-             resume: bool = False,
-             key: dict | None = None, progress: bool | None = None, unit: tuple[str, float] = ("s", 1.0),
-             label: str = "run", status: Callable | None = None, stop: Callable | None = None,
-             time_budget: float | None = None) -> Outcome:
+@dataclass(frozen=True)
+class Display:
+    """How a long run shows itself: ``label`` names it in the progress bar and messages; ``unit = (name,
+    length)`` is the display unit (e.g. ``("rev", 2 pi)`` for a time in radians of shaft rotation); ``status()``
+    returns a short string for the bar (e.g. the current eccentricity) or is ``None``."""
+
+    label: str = "run"
+    unit: tuple = ("s", 1.0)
+    status: Callable | None = None
+
+    def __post_init__(self):
+        if not isinstance(self.label, str):
+            raise ValueError(f"label = {self.label!r}; allowed: a string")
+        if not (isinstance(self.unit, tuple) and len(self.unit) == 2 and isinstance(self.unit[0], str)):
+            raise ValueError(f"unit = {self.unit!r}; allowed: (name, length), e.g. ('rev', 2 pi)")
+        object.__setattr__(self, "unit", (self.unit[0], check_positive("unit length", self.unit[1], self.unit[0])))
+        if self.status is not None and not callable(self.status):
+            raise ValueError(f"status = {self.status!r} is not callable; allowed: None or status() -> str")
+
+
+#: The loose keywords of :func:`run_long` of earlier releases and where each now goes.
+RUN_LONG_KEYWORDS = ({name: ("solver", dict, name) for name in ("method", "rtol", "atol", "linear_solver", "options")}
+                     | {name: ("steps", Steps, name) for name in ("dt", "max_step", "first_step")}
+                     | {name: ("long_run", LongRun, name) for name in ("checkpoint", "resume", "progress", "stop",
+                                                                        "time_budget")}
+                     | keyword_table("display", Display))
+
+
+def run_long(problem_at: Callable, y0, t0: float, dt_out: float, n_outputs: int, recorder, *, solver: dict | None = None,
+             long_run: LongRun | None = None, chunk_outputs: int | None = None, key: dict | None = None,
+             display: Display | None = None, **legacy) -> Outcome:
     """Integrate ``n_outputs`` output intervals (module docstring).
 
-    ``unit = (name, length)``: the display unit of the progress bar and messages (e.g. ``("rev", 2 pi)``
-    for a time in radians of shaft rotation). ``status()`` returns a short string for the bar (e.g. the
-    current eccentricity). ``method``, ``rtol``, ``atol``, ``dt``, ``max_step``, ``first_step``,
-    ``linear_solver`` and ``options`` are :func:`~transient.solvers.integrate.solve`'s (its defaults); ``rk4``
-    needs ``dt``. ``time_budget`` [s of wall time] bounds the whole run (all chunks): past
-    it the run ends with ``success=False`` and the outputs so far."""
+    ``solver``: the keywords of :func:`~transient.solvers.integrate.solve` for every chunk (``method``,
+    ``rtol``, ``atol``, ``steps``, ``linear_solver``, ``options``; ``method`` is required, ``rk4`` needs
+    ``steps=Steps(dt=...)``). ``long_run`` (:class:`~transient.solvers.settings.LongRun`): the checkpoint and
+    ``resume``, the progress bar (``progress``), ``stop(recorder) -> str | None`` and ``time_budget`` [s of wall
+    time] for the whole run (all chunks: past it the run ends with ``success=False`` and the outputs so far); its
+    ``chunk_revolutions`` is the model's, which hands ``chunk_outputs`` (output intervals per chunk; default:
+    the whole run). ``key``: every parameter and setting that changes the result (keys the checkpoint).
+    ``display`` (:class:`Display`): the label, display unit and status of the bar and messages. The loose
+    keywords of earlier releases (``method=``, ``checkpoint=``, ``label=``, ...) are deprecated."""
+    given = run_settings("run_long", legacy, RUN_LONG_KEYWORDS, solver=solver, long_run=long_run,
+                         display=display, steps=None)
+    solver, long_run, display = given["solver"], given["long_run"], given["display"]
+    if any(RUN_LONG_KEYWORDS[k][0] == "steps" for k in legacy):
+        solver = dict(solver, steps=given["steps"])
+    if "method" not in solver:
+        raise ValueError(f"solver = {solver!r}: the method is required; allowed: solver=dict(method=..., ...)")
+    method = solver["method"]
+    checkpoint, resume, progress = long_run.checkpoint, long_run.resume, long_run.progress
+    stop, time_budget, status = long_run.stop, long_run.time_budget, display.status
+    label = display.label
     n_outputs = int(n_outputs)
     if n_outputs < 1:
         raise ValueError(f"the run must span at least one output interval, got {n_outputs}")
@@ -120,10 +160,7 @@ def run_long(problem_at: Callable, y0, t0: float, dt_out: float, n_outputs: int,
     if -(-n_outputs // chunk_outputs) > MAX_CHUNKS:
         raise ValueError(f"{n_outputs} outputs in chunks of {chunk_outputs} make more than {MAX_CHUNKS} chunks; "
                          "use longer chunks")
-    resume = check_bool("resume", resume)
-    if progress is not None:
-        progress = check_bool("progress", progress)
-    uname, ulen = unit
+    uname, ulen = display.unit
     ckpt = _Checkpoint(checkpoint, key or {}, label) if checkpoint else None
     y = np.array(y0, dtype=float)
     k = 0
@@ -146,9 +183,8 @@ def run_long(problem_at: Callable, y0, t0: float, dt_out: float, n_outputs: int,
                 k_end = min(n_outputs, k + chunk_outputs)
                 tau = t0 + dt_out * np.arange(k, k_end + 1)
                 remaining = None if time_budget is None else max(deadline - time.perf_counter(), 1e-9)
-                res = solve(problem_at(y, tau[0]), tau, method=method, rtol=rtol, atol=atol, dt=dt, max_step=max_step,
-                            first_step=first_step, linear_solver=linear_solver, options=options, store=False,
-                            observer=_Last(recorder, out), time_budget=remaining)
+                res = solve(problem_at(y, tau[0]), tau, **solver, store=False, observer=_Last(recorder, out),
+                            time_budget=remaining)
                 _accumulate(stats, res.stats)
                 if not res.success:
                     out.success = False
@@ -166,7 +202,7 @@ def run_long(problem_at: Callable, y0, t0: float, dt_out: float, n_outputs: int,
                 k = k_end
                 out.t = tau[-1]
                 if ckpt is not None:
-                    ckpt.save(y, k, out.t, recorder, stats, dt_out, unit)
+                    ckpt.save(y, k, out.t, recorder, stats, dt_out, display.unit)
                 if bar is not None:
                     bar.update(chunk_outputs * dt_out / ulen if k < n_outputs else bar.total - bar.n)
                     if status is not None:

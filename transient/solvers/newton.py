@@ -29,7 +29,7 @@ and the histories when the iteration does not converge.
 
 from __future__ import annotations
 
-from dataclasses import field
+from dataclasses import astuple, dataclass, field, fields
 from typing import Callable
 
 import numpy as np
@@ -37,9 +37,10 @@ import scipy.linalg as sla
 import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
-from transient.checks import check_choice
+from transient.checks import check_bool, check_choice, check_positive, check_range
 from transient.fv.reynolds import Fields, ReynoldsOperator
 from transient.results import SteadyResult, result_type
+from transient.solvers.legacy import run_settings
 
 _TINY = np.finfo(float).tiny
 
@@ -99,18 +100,51 @@ def factorise(matrix):
     return _Dense()
 
 
-def newton(residual: Callable, jacobian: Callable, x0, *, xtol: float = 1e-10, ftol: float = 1e-10,
-           f_scale: float | None = None, x_floor: float = 0.0, test: str = "either", max_iter: int = 50,
-           line_search: bool = True, pseudo_time: float | None = None, chord: bool | Chord = False,
-           converged: Callable | None = None, max_step: Callable | None = None, name: str = "Newton") -> NewtonResult:
+@dataclass(frozen=True)
+class NewtonSettings:
+    """How :func:`newton` iterates and when it stops (module docstring), validated on creation: ``xtol``,
+    ``ftol`` [-] > 0, the step and residual tests; ``f_scale`` ``None`` (``||F(x0)||_inf``) or the residual's
+    scale [the residual's unit]; ``x_floor`` >= 0, the least ``||x||_inf`` of the step test [the unknown's unit];
+    ``test`` ``"either"`` or ``"both"``; ``max_iter`` an integer >= 1; ``line_search`` a flag (backtracking);
+    ``pseudo_time`` ``None`` or the first pseudo-time step ``dtau0`` > 0 [the model's time unit]."""
+
+    xtol: float = 1e-10
+    ftol: float = 1e-10
+    f_scale: float | None = None
+    x_floor: float = 0.0
+    test: str = "either"
+    max_iter: int = 50
+    line_search: bool = True
+    pseudo_time: float | None = None
+
+    def __post_init__(self):
+        if not (self.xtol > 0 and self.ftol > 0):
+            raise ValueError(f"xtol and ftol must be > 0, got xtol={self.xtol!r}, ftol={self.ftol!r}")
+        if isinstance(self.max_iter, bool) or int(self.max_iter) != self.max_iter or self.max_iter < 1:
+            raise ValueError(f"max_iter must be an integer >= 1, got {self.max_iter!r}")
+        check_choice("test", self.test, ("either", "both"))
+        check_bool("line_search", self.line_search)
+        check_range("x_floor", self.x_floor, "-", 0.0)
+        if self.pseudo_time is not None:
+            check_positive("pseudo_time", self.pseudo_time, "-")
+
+
+#: The loose keywords of :func:`newton` of earlier releases, now fields of ``settings=NewtonSettings(...)``.
+NEWTON_KEYWORDS = {f.name: ("settings", NewtonSettings, f.name) for f in fields(NewtonSettings)}
+
+
+def newton(residual: Callable, jacobian: Callable, x0, *, settings: NewtonSettings | None = None,
+           chord: bool | Chord = False, converged: Callable | None = None, max_step: Callable | None = None,
+           name: str = "Newton", **legacy) -> NewtonResult:
     """Solve ``residual(x) = 0``; ``jacobian(x, shift)`` returns ``dF/dx + shift M`` (module docstring).
 
-    Raises :class:`NewtonError` if not converged within ``max_iter`` iterations."""
-    if not (xtol > 0 and ftol > 0):
-        raise ValueError(f"xtol and ftol must be > 0, got xtol={xtol!r}, ftol={ftol!r}")
-    if isinstance(max_iter, bool) or int(max_iter) != max_iter or max_iter < 1:
-        raise ValueError(f"max_iter must be an integer >= 1, got {max_iter!r}")
-    check_choice("test", test, ("either", "both"))
+    ``settings`` (:class:`NewtonSettings`, default ``NewtonSettings()``): the tolerances, the iteration limit,
+    the line search and pseudo-time; the loose keywords ``xtol=``, ``ftol=``, ``f_scale=``, ``x_floor=``,
+    ``test=``, ``max_iter=``, ``line_search=``, ``pseudo_time=`` are deprecated (they still work for one
+    release, with a ``DeprecationWarning``). Raises :class:`NewtonError` if not converged within ``max_iter``
+    iterations."""
+    settings = run_settings("newton", legacy, NEWTON_KEYWORDS, settings=settings)["settings"]
+    xtol, ftol, f_scale, x_floor, test, max_iter, line_search, pseudo_time = astuple(settings)
     x = np.array(x0, dtype=float, copy=True)
     r = np.asarray(residual(x), dtype=float).copy()
     r_inf = float(np.max(np.abs(r)))
@@ -223,5 +257,5 @@ def solve_steady(op: ReynoldsOperator, fields: Callable[[np.ndarray], Fields], u
         return op.matrix(data)[:n, :n]
 
     r0 = float(np.max(np.abs(F(u))))
-    return newton(F, J, u, xtol=xtol, ftol=ftol, f_scale=max(r0, float(np.max(np.abs(s)))), max_iter=max_iter,
-                  line_search=line_search, name="steady Newton")
+    return newton(F, J, u, settings=NewtonSettings(xtol=xtol, ftol=ftol, f_scale=max(r0, float(np.max(np.abs(s)))),
+                                                   max_iter=max_iter, line_search=line_search), name="steady Newton")

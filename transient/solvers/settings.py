@@ -11,30 +11,22 @@ A model's time-domain run takes three groups of settings that have nothing to do
 
 Each is validated on creation through :mod:`transient.checks` (one-line errors naming the parameter, its
 value, its unit and the allowed range) and is immutable, so one object can key a checkpoint
-(:meth:`Integration.key`) and be shared by many runs. A model's keyword API builds them
-(:func:`from_keywords`); passing an object and a keyword that says otherwise is an error naming both.
+(:meth:`Integration.key`) and be shared by many runs. A run takes them as objects
+(``integration=Integration(rtol=1e-8)``); the loose keywords of earlier releases (``rtol=1e-8``) still work
+for one release through :func:`~transient.solvers.legacy.run_settings`, with a ``DeprecationWarning`` naming the new spelling.
 """
 
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, fields, replace
+from dataclasses import dataclass
 from pathlib import Path
 from typing import Callable
 
 from transient.checks import (ATOL_FLOOR, ATOL_WHY, check_bool, check_choice, check_int, check_positive, check_range,
                               check_rtol)
 from transient.solvers.integrate import LINEAR_SOLVERS, METHODS
-
-class _Default:
-    """The value of a settings keyword the caller left out (``None`` is a value: ``chunk_revolutions=None``)."""
-
-    def __repr__(self):
-        return "DEFAULT"
-
-
-#: Default of every settings keyword of a model's run: "not given", so the object or the model's default decides.
-DEFAULT = _Default()
+from transient.solvers.legacy import keyword_table, run_settings  # noqa: F401 (the models' door)
 
 #: Film formulations of the journal orbit: the universal variable (every method) or the content ``H theta``.
 FORMULATIONS = ("content", "universal")
@@ -164,22 +156,14 @@ class LongRun:
             _set(self, "time_budget", check_positive("time_budget", self.time_budget, "s"))
 
 
-def from_keywords(cls, given, name: str, defaults: dict | None = None, **keywords):
-    """The settings object of a run: ``given`` if the caller passed one, else ``cls`` built from the
-    keywords the caller gave (not :data:`DEFAULT`) over ``defaults`` (the model's own defaults).
-
-    A keyword given beside an object that differs from the object's field is an error naming both."""
-    passed = {k: v for k, v in keywords.items() if v is not DEFAULT}
-    if given is None:
-        return cls(**dict(defaults or {}, **passed))
-    if not isinstance(given, cls):
-        raise ValueError(f"{name} = {given!r}; allowed: None or {cls.__name__}(...)")
-    probe = replace(given, **passed)  # validates the keywords, normalises them as the object does
-    for f in fields(cls):
-        if f.name in passed and getattr(probe, f.name) != getattr(given, f.name):
-            raise ValueError(f"{name}={cls.__name__}({f.name}={getattr(given, f.name)!r}, ...) and "
-                             f"{f.name}={passed[f.name]!r} both given; pass the setting once")
-    return given
+def check_unused(owner: str, argument: str, obj, names) -> None:
+    """Refuse, naming it, a field of the settings object ``obj`` among ``names`` that ``owner`` does not use and
+    that differs from its default: ``check_unused("RotorBearingSystem.run", "recording", rc, ("record",))``."""
+    default = type(obj)()
+    for name in names:
+        if getattr(obj, name) != getattr(default, name):
+            raise ValueError(f"{owner}: {argument}={type(obj).__name__}({name}={getattr(obj, name)!r}) is not used "
+                             f"by this model; allowed: leave {name} out")
 
 
 def _set(obj, name, value):

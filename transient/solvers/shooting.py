@@ -40,13 +40,16 @@ check of the Ritz values.
 from __future__ import annotations
 
 import time
-from dataclasses import field
+from dataclasses import astuple, dataclass, field, fields
 from typing import Callable
 
 import numpy as np
 import scipy.sparse.linalg as spla
 
+from transient.checks import check_bool, check_int, check_positive, check_range
 from transient.results import SteadyResult, result_type
+from transient.solvers.legacy import run_settings
+from transient.solvers.settings import check_unused
 
 
 @result_type
@@ -141,12 +144,68 @@ def _ordered(mu) -> np.ndarray:
     return mu[np.argsort(-np.abs(mu), kind="stable")]
 
 
-def newton_picard(flow: Callable, y0, period: float, basis, *, t0: float = 0.0, tol: float = 1e-8,
-                  rtol: float = 1e-8, rtol_max: float = 1e-4, eta: float = 3e-3, norm: Callable = _max_norm,
-                  derivative: Callable | None = None, fd_step: float = 1e-3,
-                  fd_rtol: float | None = None, refresh: float = 0.3, max_iter: int = 25, relax: int = 0,
-                  second_ritz: bool = False, refine_floor: float = 0.05,
-                  callback: Callable | None = None) -> ShootingResult:
+@dataclass(frozen=True)
+class ShootingSettings:
+    """How :func:`newton_picard` and :func:`newton_krylov` iterate, validated on creation (module docstring).
+
+    ``tol`` > 0: accept the iterate when ``norm(d) <= tol`` at the final tolerance ``rtol`` (0 < ``rtol`` <=
+    ``rtol_max``, the loosest integration tolerance of the inexact iterations; ``eta`` > 0 the factor on the
+    error estimate); ``fd_step`` > 0 the finite-difference step of the default derivative (in ``norm``'s unit),
+    whose iterations integrate at ``fd_rtol`` (``None``: ``clip(fd_step / 100, rtol, rtol_max)``); ``max_iter``
+    >= 1 iterations; ``relax`` >= 0 plain iterations of the map (at ``rtol_max``) before the first Newton step.
+    Newton-Picard: ``refresh`` in (0, 1], ``second_ritz``, ``refine_floor`` in [0, 1). Newton-Krylov:
+    ``krylov_tol`` > 0 (GMRES's relative residual), ``max_krylov`` >= 1."""
+
+    tol: float = 1e-8
+    rtol: float = 1e-8
+    rtol_max: float = 1e-4
+    eta: float = 3e-3
+    fd_step: float = 1e-3
+    fd_rtol: float | None = None
+    max_iter: int = 25
+    relax: int = 0
+    refresh: float = 0.3
+    second_ritz: bool = False
+    refine_floor: float = 0.05
+    krylov_tol: float = 1e-3
+    max_krylov: int = 20
+
+    def __post_init__(self):
+        if not (self.tol > 0 and self.rtol > 0 and self.rtol_max >= self.rtol):
+            raise ValueError(f"need tol > 0 and 0 < rtol <= rtol_max; got tol={self.tol!r}, rtol={self.rtol!r}, "
+                             f"rtol_max={self.rtol_max!r}")
+        check_positive("eta", self.eta, "-")
+        check_positive("fd_step", self.fd_step, "-")
+        if self.fd_rtol is not None:
+            check_positive("fd_rtol", self.fd_rtol, "-")
+        check_int("max_iter", self.max_iter, "-", 1, 1e6)
+        check_int("relax", self.relax, "-", 0, 1e6)
+        check_range("refresh", self.refresh, "-", 0.0, 1.0, low_open=True)
+        check_bool("second_ritz", self.second_ritz)
+        check_range("refine_floor", self.refine_floor, "-", 0.0, 1.0, high_open=True)
+        check_positive("krylov_tol", self.krylov_tol, "-")
+        check_int("max_krylov", self.max_krylov, "-", 1, 1e6)
+
+
+#: The loose keywords of :func:`newton_picard` and :func:`newton_krylov` of earlier releases, now fields of
+#: ``settings=ShootingSettings(...)``.
+SHOOTING_KEYWORDS = {f.name: ("settings", ShootingSettings, f.name) for f in fields(ShootingSettings)}
+PICARD_ONLY = ("refresh", "second_ritz", "refine_floor")
+KRYLOV_ONLY = ("krylov_tol", "max_krylov")
+
+
+def _settings(owner, settings, legacy, unused) -> tuple:
+    """The fields of the shooting's settings (from ``settings`` or the old keywords), refusing those ``owner``
+    does not use."""
+    table = {k: v for k, v in SHOOTING_KEYWORDS.items() if k not in unused}
+    settings = run_settings(owner, legacy, table, settings=settings)["settings"]
+    check_unused(owner, "settings", settings, unused)
+    return astuple(settings)
+
+
+def newton_picard(flow: Callable, y0, period: float, basis, *, t0: float = 0.0, norm: Callable = _max_norm,
+                  derivative: Callable | None = None, callback: Callable | None = None,
+                  settings: ShootingSettings | None = None, **legacy) -> ShootingResult:
     """Fixed point of the period map by Newton-Picard (module docstring).
 
     Parameters
@@ -154,6 +213,9 @@ def newton_picard(flow: Callable, y0, period: float, basis, *, t0: float = 0.0, 
     flow : ``flow(y, t0, T, rtol) -> y(t0 + T)``.
     y0 : start guess; period : T; t0 : start time (the phase of the forcing).
     basis : (n, p) guess of the dominant subspace (orthonormalised here).
+    settings : :class:`ShootingSettings` (default ``ShootingSettings()``), with the fields below; as loose
+        keywords (``tol=``, ``rtol=``, ...) they are deprecated (they still work for one release, with a
+        ``DeprecationWarning``).
     tol : accept the iterate when ``norm(d) <= tol`` at the final tolerance ``rtol``.
     rtol_max, eta : loosest integration tolerance and the factor on the error estimate (inexact iterations).
     norm : ``norm(d) -> float``, the error measure (e.g. the journal position in units of its clearance).
@@ -175,9 +237,10 @@ def newton_picard(flow: Callable, y0, period: float, basis, *, t0: float = 0.0, 
 
     Returns a :class:`ShootingResult`; ``success`` False (with the histories) if ``max_iter`` is reached.
     """
-    if not (tol > 0 and rtol > 0 and rtol_max >= rtol and period > 0):
-        raise ValueError(f"need tol > 0, period > 0 and 0 < rtol <= rtol_max; got tol={tol!r}, period={period!r}, "
-                         f"rtol={rtol!r}, rtol_max={rtol_max!r}")
+    tol, rtol, rtol_max, eta, fd_step, fd_rtol, max_iter, relax, refresh, second_ritz, refine_floor, _, _ = \
+        _settings("newton_picard", settings, legacy, KRYLOV_ONLY)
+    if not period > 0:
+        raise ValueError(f"period = {period!r}; allowed: > 0")
     wall0 = time.perf_counter()
     f = _Counted(flow, derivative, norm, fd_step)
     fd_rtol = float(np.clip(fd_step / 100.0, rtol, rtol_max)) if fd_rtol is None else float(fd_rtol)
@@ -240,14 +303,15 @@ def _refined(V, W, S, floor):
     return q, R @ np.linalg.inv(G)
 
 
-def newton_krylov(flow: Callable, y0, period: float, *, t0: float = 0.0, tol: float = 1e-8, rtol: float = 1e-8,
-                  rtol_max: float = 1e-4, eta: float = 3e-3, norm: Callable = _max_norm,
-                  derivative: Callable | None = None, fd_step: float = 1e-3, fd_rtol: float | None = None,
-                  krylov_tol: float = 1e-3, max_krylov: int = 20, max_iter: int = 25, relax: int = 0) -> ShootingResult:
+def newton_krylov(flow: Callable, y0, period: float, *, t0: float = 0.0, norm: Callable = _max_norm,
+                  derivative: Callable | None = None, settings: ShootingSettings | None = None,
+                  **legacy) -> ShootingResult:
     """Fixed point of the period map by Newton-GMRES with matrix-free ``M v`` (one period per Krylov vector).
 
-    Arguments as :func:`newton_picard`; ``krylov_tol`` is GMRES's relative residual. Multipliers are not
+    Arguments as :func:`newton_picard`; ``settings.krylov_tol`` is GMRES's relative residual. Multipliers are not
     computed (use :func:`floquet_multipliers`)."""
+    tol, rtol, rtol_max, eta, fd_step, fd_rtol, max_iter, relax, _, _, _, krylov_tol, max_krylov = \
+        _settings("newton_krylov", settings, legacy, PICARD_ONLY)
     wall0 = time.perf_counter()
     f = _Counted(flow, derivative, norm, fd_step)
     fd_rtol = float(np.clip(fd_step / 100.0, rtol, rtol_max)) if fd_rtol is None else float(fd_rtol)

@@ -11,7 +11,7 @@ import time
 
 import numpy as np
 
-from transient.models.ball.bearing import FLOODED, PARCHED, STARVED
+from transient.models.ball.bearing import FLOODED, PARCHED, STARVED, sequence_settings
 from transient.params import jeong
 from transient.results import StatusResult, quantity, result_type
 
@@ -24,7 +24,7 @@ MAP_SETTINGS = jeong.MAP_SETTINGS
 def _point(bearing, p: dict, n_passes: int, kw: dict):
     b = bearing.with_(n_balls=int(p["n_balls"]))
     return b.sequence(load=p["load"], speed_rpm=p["speed_rpm"], ambient_film=p["ambient_film"],
-                      n_passes=n_passes, **kw)
+                      n_passes=n_passes, **sequence_settings(**kw))
 
 
 def sweep(bearing, swept: str, values, fixed: dict | None = None, n_passes: int = 100, **sequence_kwargs) -> list:
@@ -190,7 +190,7 @@ def convergence(bearing, *, refines=(0.5, 1.0, 2.0, 4.0), precursors=None, n_pas
     def row(**extra):
         t0 = time.perf_counter()
         s = b.sequence(load=p["load"], speed_rpm=p["speed_rpm"], ambient_film=p["ambient_film"], n_passes=n_passes,
-                       stop_at_periodic=False, **dict(kw, **extra))
+                       stop_at_periodic=False, **sequence_settings(**dict(kw, **extra)))
         return dict(h_inlet=s.h_inlet.tolist(), regime=list(s.regime), steps=int(s.stats["n_steps"]),
                     wall=time.perf_counter() - t0, h_out=s.h_outlet.tolist())
 

@@ -26,6 +26,7 @@ from transient.models.journal import JournalOrbit, OrbitResult
 from transient.models.journal.periodic import response_curve, stability_onset
 from transient.results import StatusResult, quantity, result_type
 from transient.study.settle import settle
+from transient.solvers.settings import Integration, LongRun, Recording
 
 
 @result_type
@@ -86,8 +87,9 @@ def orbit_from_equilibrium(orbit, revolutions, rtol, outputs_per_revolution=64, 
     distance of each revolution from the last, and the x spectrum over the last ``fft_revolutions``."""
     opr = outputs_per_revolution
     e = orbit.equilibrium()
-    res = orbit.run(revolutions, method="ida", rtol=rtol, atol=1e-9, outputs_per_revolution=opr,
-                    chunk_revolutions=5, progress=True)
+    res = orbit.run(revolutions, integration=Integration(method="ida", rtol=rtol, atol=1e-9),
+                    recording=Recording(outputs_per_revolution=opr),
+                    long_run=LongRun(chunk_revolutions=5, progress=True))
     X, Y = per_revolution(res.x, res.y, opr, res.clearance)
     dist = np.max(np.hypot(X - X[-1], Y - Y[-1]), axis=1)  # each revolution vs the last
     shape = orbit_shape(X[-1], Y[-1])
@@ -148,9 +150,10 @@ def settled_unbalance_orbit(orbit, rtol, outputs_per_revolution=64, min_revoluti
         n = XY[0].shape[0]
         return n if n >= min_revolutions and settle_estimate(*XY) <= settle_fraction else None
 
-    s = settle(orbit, observable=revolutions, criterion=criterion, max_periods=max_revolutions, chunk_periods=2,
+    s = settle(orbit, observable=revolutions, criterion=criterion, max_periods=max_revolutions,
                outputs_per_period=opr, require=False, what=f"the unbalance orbit at {orbit.speed_rpm:g} rpm",
-               method="ida", rtol=rtol, atol=1e-9, y0=orbit.linear_start())
+               integration=Integration(method="ida", rtol=rtol, atol=1e-9), long_run=LongRun(chunk_revolutions=2),
+               y0=orbit.linear_start())
     res = s.result
     X, Y = revolutions(res)
     change = settle_estimate(X, Y)
@@ -223,8 +226,9 @@ def stability_run(orbit, perturbation, revolutions, rtol, outputs_per_revolution
     linear growth rate per revolution. Returns (result, record dict)."""
     e = orbit.equilibrium()
     C = orbit.bearing.clearance
-    res = orbit.run(revolutions, method="ida", rtol=rtol, atol=1e-9, outputs_per_revolution=outputs_per_revolution,
-                    y0=orbit.perturbed_start(perturbation), chunk_revolutions=5, progress=True)
+    res = orbit.run(revolutions, integration=Integration(method="ida", rtol=rtol, atol=1e-9),
+                    recording=Recording(outputs_per_revolution=outputs_per_revolution),
+                    long_run=LongRun(chunk_revolutions=5, progress=True), y0=orbit.perturbed_start(perturbation))
     r = np.hypot(res.x / C - e.position[0] / C, res.y / C - e.position[1] / C)
     slope, sel = growth_per_revolution(r, res.revolutions)
     lin = orbit.bearing.growth_rate(orbit.rotor_mass, orbit.load, orbit.speed_rpm) * 60.0 / orbit.speed_rpm

@@ -21,7 +21,16 @@ import numpy as np
 from transient.analysis.acoustics import TRANSMISSIONS, BearingNoise, analyse_pressure
 from transient.analysis.periodic import NotPeriodicError
 from transient.checks import check_range
-from transient.study.settle import Settled, settle
+from transient.study.settle import SETTLE_LONG_RUN, Settled, Settling, settle
+from transient.solvers.settings import Integration, LongRun, Recording, keyword_table, run_settings
+
+#: The loose keywords of :func:`bearing_noise` of earlier releases and the settings field each now is.
+NOISE_KEYWORDS = ({"settle_revolutions": ("settling", Settling, "periods"),
+                   "max_settle_revolutions": ("settling", Settling, "max_periods"),
+                   "confirm": ("settling", Settling, "confirm")}
+                  | keyword_table("integration", Integration, ("method", "rtol"))
+                  | {"chunk_revolutions": ("long_run", LongRun, "chunk_revolutions"),
+                     "progress": ("long_run", LongRun, "progress")})
 
 
 def default_samples_per_revolution(harmonics) -> int:
@@ -30,18 +39,23 @@ def default_samples_per_revolution(harmonics) -> int:
     return s + (s % 2)
 
 
-def bearing_noise(orbit, revolutions=4, harmonics=5, *, settle_revolutions=None, max_settle_revolutions=60, tol=1e-4,
-                  transmission="printed", method="ida", rtol=1e-6, samples_per_revolution=None,
-                  chunk_revolutions=5, confirm=2, progress=False, periodic=True) -> BearingNoise:
+def bearing_noise(orbit, revolutions=4, harmonics=5, *, tol=1e-4, transmission="printed", samples_per_revolution=None,
+                  periodic=True, settling: Settling | None = None, integration: Integration | None = None,
+                  long_run: LongRun | None = None, **legacy) -> BearingNoise:
     """Bearing noise of a :class:`~transient.models.journal.JournalOrbit` at its speed (module docstring).
 
     ``tol`` [C]: the distance from the periodic orbit accepted (default 1e-4 C, ~1 % of the 6000 rpm orbit
     amplitude): the shooting's error estimate (``periodic=True``), or the Poincare step below which the settling
-    run counts as settled, ``confirm`` consecutive times (``periodic=False``; ``settle_revolutions`` = int skips
-    the detection and settles for exactly that many). Raises :class:`~transient.analysis.periodic.NotPeriodicError`
-    if there is no stable periodic orbit (past the onset of whirl: the shooting's dominant Floquet multiplier is
-    outside the unit circle, or the settling run does not settle within ``max_settle_revolutions``) or the
-    journal touches the bearing."""
+    run counts as settled, ``settling.confirm`` consecutive times (``periodic=False``;
+    :class:`~transient.study.settle.Settling`: ``periods`` = int skips the detection and settles for exactly that
+    many, ``max_periods`` bounds it, default 60). ``integration``: the method and ``rtol`` of every run (the
+    shooting takes the rtol; default ``Integration()``); ``long_run``: the settling run's chunks
+    (``chunk_revolutions``, default 5) and progress bar (default off). Raises
+    :class:`~transient.analysis.periodic.NotPeriodicError` if there is no stable periodic orbit (past the onset of
+    whirl: the shooting's dominant Floquet multiplier is outside the unit circle, or the settling run does not
+    settle within ``settling.max_periods``) or the journal touches the bearing. The loose keywords of earlier
+    releases (``method``, ``rtol``, ``settle_revolutions``, ``max_settle_revolutions``, ``confirm``,
+    ``chunk_revolutions``, ``progress``) are deprecated."""
     from transient.models.journal import JournalOrbit
     from transient.models.journal.periodic import periodic_response
 
@@ -56,19 +70,21 @@ def bearing_noise(orbit, revolutions=4, harmonics=5, *, settle_revolutions=None,
     if transmission not in TRANSMISSIONS:
         raise ValueError(f"transmission = {transmission!r}; allowed: {', '.join(TRANSMISSIONS)}")
     what = f"the journal orbit at {orbit.speed_rpm:g} rpm"
-    kw = dict(method=method, rtol=rtol)
+    settling, ig, lr = run_settings("bearing_noise", legacy, NOISE_KEYWORDS, {"long_run": SETTLE_LONG_RUN},
+                                    settling=settling, integration=integration, long_run=long_run).values()
     if periodic:
-        p = periodic_response(orbit, rtol=rtol, tol=tol)
+        p = periodic_response(orbit, rtol=ig.rtol, tol=tol)
         if not p.success:
             raise NotPeriodicError(f"{what}: {p.message}")
         # periodic after the periods the shooting integrated; its "Poincare steps" are the residuals |Phi(y) - y|
         s = Settled(result=(0.0, p.state), settled_at=p.revolutions_integrated, periods=p.revolutions_integrated,
                     poincare_steps=np.array(p.residual_norms) / p.clearance, wall_time=p.wall_time)
     else:
-        s = settle(orbit, tol=tol, confirm=confirm, max_periods=max_settle_revolutions, chunk_periods=chunk_revolutions,
-                   periods=settle_revolutions, what=what, progress=progress, **kw)  # its tqdm bar, no print
+        s = settle(orbit, tol=tol, confirm=settling.confirm, max_periods=settling.max_periods,
+                   periods=settling.periods, what=what, integration=ig, long_run=lr)  # its tqdm bar, no print
     t1 = time.perf_counter()
-    r = orbit.run(revolutions, outputs_per_revolution=S, record=("pressure",), start=s.result, progress=False, **kw)
+    r = orbit.run(revolutions, recording=Recording(outputs_per_revolution=S, record=("pressure",)),
+                  long_run=LongRun(progress=False), start=s.result, integration=ig)
     if r.touched_at is not None or not r.success:
         raise NotPeriodicError(f"{what}, analysis window: {r.message}")
     t_window = time.perf_counter() - t1

@@ -33,6 +33,8 @@ import numpy as np
 
 from transient.checks import check_int, check_range
 from transient.params import jeong, lee_rhim, park, rho_kim
+from transient.solvers.settings import Integration, LongRun, Recording
+from transient.models.ball.settings import TrackSettings
 
 SECTIONS = ("kind", "parameters", "overrides", "run", "outputs", "title")
 
@@ -233,8 +235,10 @@ def _journal_orbit_point(p, run):
     from transient.study.journal import settle_estimate
 
     o = _journal_build(p)
-    r = o.run(run["revolutions"], method=run["method"], rtol=run["rtol"], atol=1e-3 * run["rtol"],
-              outputs_per_revolution=run["outputs_per_revolution"], progress=False)
+    r = o.run(run["revolutions"],
+              integration=Integration(method=run["method"], rtol=run["rtol"], atol=1e-3 * run["rtol"]),
+              recording=Recording(outputs_per_revolution=run["outputs_per_revolution"]),
+              long_run=LongRun(progress=False))
     X, Y = per_revolution(r.x, r.y, run["outputs_per_revolution"], r.clearance)
     shape = orbit_shape(X[-1], Y[-1]) if X.shape[0] else {}
     eps = r.eccentricity_ratio
@@ -248,9 +252,11 @@ def _journal_orbit_point(p, run):
 
 def _journal_noise_point(p, run):
     from transient.study.noise import bearing_noise
+    from transient.study.settle import Settling
 
-    n = bearing_noise(_journal_build(p), revolutions=run["revolutions"], harmonics=run["harmonics"], rtol=run["rtol"],
-                      max_settle_revolutions=run["max_settle_revolutions"])
+    n = bearing_noise(_journal_build(p), revolutions=run["revolutions"], harmonics=run["harmonics"],
+                      integration=Integration(rtol=run["rtol"]),
+                      settling=Settling(max_periods=run["max_settle_revolutions"]))
     s = dict(level_db=n.level_db, level_dba=n.level_dba, settle_revolutions=n.settle_revolutions,
              whirl_amplitude_um=float(np.max(np.hypot(n.x - n.x.mean(), n.y - n.y.mean())) * 1e6))
     s.update({f"harmonic_{k + 1}x_db": float(v) for k, v in enumerate(n.harmonic_levels_db)})
@@ -269,7 +275,7 @@ def _ball_build(p):
 
 def _ball_point(p, run):
     s = _ball_build(p).sequence(load=p["load"], speed_rpm=p["speed_rpm"], ambient_film=p["ambient_film"],
-                                n_passes=run["n_passes"], replenishment=run["replenishment"])
+                                n_passes=run["n_passes"], track=TrackSettings(replenishment=run["replenishment"]))
     return s, dict(final_regime=s.final_regime, periodic=s.periodic, H_central=float(s.H_central[-1]),
                    h_inlet_um=float(s.h_inlet[-1] * 1e6), meniscus=float(s.m[-1]), m_c=float(s.m_c),
                    passes=int(s.n_run))

@@ -26,6 +26,7 @@ import numpy as np
 
 from transient.analysis.orbits import per_revolution, revolution_spectrum
 from transient.results import StatusResult, quantity, result_type
+from transient.solvers.settings import Integration, LongRun, Recording
 
 
 #: a whirl is a limit cycle when its eccentricity envelope (max and min over a block of revolutions) changes by
@@ -151,8 +152,9 @@ def run_up(make_orbit, speeds, revolutions_per_speed, rtol=1e-4, outputs_per_rev
             # the new orbit's tau = omega_new t: start at the time whose phase is the old one's
             state = carry_state(prev, o, state)
             start = (tau_end / o.film.omega, state)
-        r = o.run(revolutions_per_speed, method=method, rtol=rtol, outputs_per_revolution=opr, start=start,
-                  touch_gap=touch_gap, progress=progress)
+        r = o.run(revolutions_per_speed, integration=Integration(method=method, rtol=rtol),
+                  recording=Recording(outputs_per_revolution=opr), long_run=LongRun(progress=progress), start=start,
+                  touch_gap=touch_gap)
         t0 = r.t[0]
         keep = slice(0 if prev is None else 1, None)
         t_all.append(t_phys + (r.t[keep] - t0))
@@ -187,6 +189,9 @@ def long_whip(orbit, revolutions, rtol=1e-4, outputs_per_revolution=64, checkpoi
     """``revolutions`` at the orbit's speed from the static equilibrium, checkpointed, integrated by
     ``JournalOrbit.run(method=)`` (``"bdf2"`` or ``"ida"``, :data:`METHOD`); returns (result,
     :func:`whirl_numbers`)."""
-    r = orbit.run(revolutions, method=method, rtol=rtol, outputs_per_revolution=outputs_per_revolution, checkpoint=checkpoint,
-                  resume=resume, chunk_revolutions=chunk_revolutions, touch_gap=touch_gap, progress=progress)
+    r = orbit.run(revolutions, integration=Integration(method=method, rtol=rtol),
+                  recording=Recording(outputs_per_revolution=outputs_per_revolution),
+                  long_run=LongRun(checkpoint=checkpoint, resume=resume, chunk_revolutions=chunk_revolutions,
+                                   progress=progress),
+                  touch_gap=touch_gap)
     return r, whirl_numbers(r, outputs_per_revolution, last_revolutions)

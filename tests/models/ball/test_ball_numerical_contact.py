@@ -3,11 +3,12 @@
 import pytest
 
 from transient.models.ball import ThrustBallBearing
+from transient.models.ball.settings import TrackSettings
 from transient.models.point import PointContact
 
 #: 2000 rpm: Moes M ~ 190 for the paper's bearing at 30 N (the paper's 80 rpm gives M ~ 2100, which the
 #: point-contact solver does not resolve on coarse grids)
-RUN = dict(load=30.0, speed_rpm=2000.0, grid="uniform", n_cells=64)
+RUN = dict(load=30.0, speed_rpm=2000.0, track=TrackSettings(grid="uniform", n_cells=64))
 
 
 def _contact(b, h_in=None):

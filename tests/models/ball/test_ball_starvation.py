@@ -6,6 +6,7 @@ import numpy as np
 import pytest
 
 from transient.models.ball.bearing import FLOODED, PARCHED, STARVED, ThrustBallBearing
+from transient import Integration, TrackSettings
 
 
 def test_parameter_validation_names_parameter_and_unit():
@@ -40,7 +41,7 @@ def test_geometry_and_kinematics_hand_values():
 
 def test_flooded_sequence_with_chiu_recovers_and_is_periodic():
     b = ThrustBallBearing()
-    s = b.sequence(load=30, speed_rpm=80, ambient_film=100e-6, n_passes=200, replenishment="chiu")
+    s = b.sequence(load=30, speed_rpm=80, ambient_film=100e-6, n_passes=200, track=TrackSettings(replenishment="chiu"))
     assert s.h_inlet[0] == 100e-6
     assert s.periodic and s.final_regime == FLOODED
     assert np.all(s.m >= s.m_c)
@@ -53,7 +54,7 @@ def test_thin_ambient_film_is_parched():
     # an ambient film of 20 nm is about the film the contact takes (h_c ~ 17 nm): the contact leaves
     # h_c/2 and the levelling brings back less than h_c before the next ball
     b = ThrustBallBearing()
-    s = b.sequence(load=30, speed_rpm=80, ambient_film=20e-9, n_passes=30, replenishment="chiu")
+    s = b.sequence(load=30, speed_rpm=80, ambient_film=20e-9, n_passes=30, track=TrackSettings(replenishment="chiu"))
     assert s.m[0] < s.m_c  # starved from the first ball
     assert s.regime[0] == STARVED  # first ball: the whole ambient film is 'replenishment'
     assert s.final_regime == PARCHED
@@ -63,9 +64,11 @@ def test_thin_ambient_film_is_parched():
 def test_closed_groove_conserves_oil_through_events_and_reflow():
     b = ThrustBallBearing()
     for grid in ("front", "uniform"):
-        s = b.sequence(load=30, speed_rpm=80, ambient_film=50e-6, n_passes=4, bc="closed", ridge_fraction=1.0,
-                       stop_at_periodic=False, rtol=1e-8 if grid == "uniform" else 1e-5, atol=1e-12 if grid ==
-                       "uniform" else 1e-9, n_cells=100, grid=grid)
+        s = b.sequence(load=30, speed_rpm=80, ambient_film=50e-6, n_passes=4,
+                       track=TrackSettings(bc="closed", ridge_fraction=1.0, n_cells=100, grid=grid),
+                       integration=Integration(method="cvode", rtol=1e-8 if grid == "uniform" else 1e-5,
+                                               atol=1e-12 if grid == "uniform" else 1e-9),
+                       stop_at_periodic=False)
         assert np.max(np.abs(s.volume - s.volume[0])) < 1e-9 * s.volume[0]
 
 
@@ -78,11 +81,11 @@ def test_bad_input_names_parameter_value_unit_and_range():
     with pytest.raises(ValueError, match=r"surface_tension = 0\.0 \[N/m\] is out of range; allowed: \(0, 1\) N/m"):
         ThrustBallBearing(surface_tension=0.0)
     with pytest.raises(ValueError, match=r"precursor_film = 0\.0002 \[m\] is out of range; allowed: \(0, 0\.0001\) m"):
-        b.sequence(load=30, speed_rpm=80, ambient_film=100e-6, n_passes=3, precursor_film=2e-4)
+        b.sequence(load=30, speed_rpm=80, ambient_film=100e-6, n_passes=3, track=TrackSettings(precursor_film=2e-4))
     with pytest.raises(ValueError, match=r"mobility_film = 0\.001 \[m\]"):
-        b.sequence(load=30, speed_rpm=80, ambient_film=100e-6, n_passes=3, mobility_film=1e-3)
+        b.sequence(load=30, speed_rpm=80, ambient_film=100e-6, n_passes=3, track=TrackSettings(mobility_film=1e-3))
     with pytest.raises(ValueError, match="grid = 'fine'"):
-        b.sequence(load=30, speed_rpm=80, ambient_film=100e-6, n_passes=3, grid="fine")
+        b.sequence(load=30, speed_rpm=80, ambient_film=100e-6, n_passes=3, track=TrackSettings(grid="fine"))
 
 
 def test_physical_precursor_reference_bearing_parches_and_the_verdict_does_not_move():
@@ -91,8 +94,9 @@ def test_physical_precursor_reference_bearing_parches_and_the_verdict_does_not_m
     # outlet film (the parched fixed point h_in = h_c(h_in)/2). The same on a refined mesh and with the
     # precursor 3x the physical one.
     b = ThrustBallBearing()
-    runs = [b.sequence(load=30, speed_rpm=80, ambient_film=100e-6, n_passes=4, stop_at_periodic=False, rtol=1e-4,
-                       atol=1e-8, **kw) for kw in ({}, dict(refine=1.5), dict(precursor_film=3 * 8.46e-9))]
+    runs = [b.sequence(load=30, speed_rpm=80, ambient_film=100e-6, n_passes=4, stop_at_periodic=False,
+                       integration=Integration(method="cvode", rtol=1e-4, atol=1e-8), track=TrackSettings(**kw))
+            for kw in ({}, dict(refine=1.5), dict(precursor_film=3 * 8.46e-9))]
     for s in runs:
         assert s.regime[:2] == [FLOODED, FLOODED] and s.regime[2:] == [PARCHED, PARCHED]
         assert s.h_inlet[2] < 0.05e-6              # the second ball's ridge never reached the centre
@@ -105,8 +109,9 @@ def test_physical_precursor_reference_bearing_parches_and_the_verdict_does_not_m
 def test_old_formulation_verdict_moves_with_its_mobility_floor():
     # the reason for the front mesh: with the floor b the uniform-grid model's verdict is b's
     b = ThrustBallBearing()
-    run = lambda bm: b.sequence(load=30, speed_rpm=80, ambient_film=100e-6, n_passes=12, grid="uniform", n_cells=100,
-                                mobility_film=bm, rtol=1e-4, atol=1e-8, stop_at_periodic=False)
+    run = lambda bm: b.sequence(load=30, speed_rpm=80, ambient_film=100e-6, n_passes=12,
+                                track=TrackSettings(grid="uniform", n_cells=100, mobility_film=bm),
+                                integration=Integration(method="cvode", rtol=1e-4, atol=1e-8), stop_at_periodic=False)
     hi, lo = run(10e-6), run(3e-6)
     assert hi.regime[-1] == FLOODED and hi.h_inlet[-1] > 5e-6
     assert lo.h_inlet[-1] < 0.2 * hi.h_inlet[-1]

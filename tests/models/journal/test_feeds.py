@@ -16,6 +16,7 @@ from transient.models.journal.film import Film
 from transient.models.journal.reynolds_film import ReynoldsFilm
 from transient.models.journal.scales import film_scales
 from transient.physics.layered import BoundaryLayers, Gecim
+from transient import Integration, Recording
 
 D, L, C, MU, RPM = 0.1, 0.08, 150e-6, 0.01, 3000.0  # Pfeil's demonstration bearing
 R = 0.5 * D
@@ -165,8 +166,8 @@ def test_orbit_records_flows_consistent_with_the_mass_balance(method):
                 ambient_pressure=0.0)
     o = JournalOrbit(b, 5.0, 0.01 * C, 400.0, RPM)
     steps = dict(steps_per_revolution=400) if method == "rk4" else {}  # the fixed steps of rk4 (ida takes none)
-    r = o.run(0.05, method=method, **steps, outputs_per_revolution=100,
-              record=("supply_flow", "side_leakage", "outflow"))
+    r = o.run(0.05, integration=Integration(method=method, **steps),
+              recording=Recording(outputs_per_revolution=100, record=("supply_flow", "side_leakage", "outflow")))
     assert r.supply_flow.shape == (r.t.size, 2) and r.side_leakage.shape == (r.t.size, 2)
     np.testing.assert_allclose(r.supply_flow.sum(axis=1), -r.outflow[:, 1], rtol=1e-9)
     np.testing.assert_allclose(r.side_leakage.sum(axis=1), r.outflow[:, 0], rtol=1e-9)
@@ -361,8 +362,10 @@ def test_feeds_off_the_mid_plane_in_the_bdf2_orbit_agree_with_ida():
                        groove=[Groove(0.0, 10.0, length=0.012), OilHole(180.0, 4e-3, axial_position=0.004)])
     assert not b.symmetric
     o = JournalOrbit(bearing=b, rotor_mass=100.0, unbalance=0.1 * 80e-6, load=981.0, speed_rpm=6000)
-    ida = o.run(revolutions=1, method="ida", rtol=1e-7, record=("supply_flow",))
-    bdf2 = o.run(revolutions=1, method="bdf2", rtol=1e-5, record=("supply_flow",))
+    ida = o.run(revolutions=1, integration=Integration(method="ida", rtol=1e-7),
+                recording=Recording(record=("supply_flow",)))
+    bdf2 = o.run(revolutions=1, integration=Integration(method="bdf2", rtol=1e-5),
+                 recording=Recording(record=("supply_flow",)))
     assert ida.success and bdf2.success
     assert np.max(np.hypot(bdf2.x - ida.x, bdf2.y - ida.y)) < 2e-4 * 80e-6
     np.testing.assert_allclose(bdf2.supply_flow[-1], ida.supply_flow[-1], rtol=1e-3)

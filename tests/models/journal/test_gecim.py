@@ -10,7 +10,7 @@ tests/models/journal/test_journal_model.py, ``gecim`` case), the orbit's mass ba
 import numpy as np
 import pytest
 
-from transient import BoundaryLayers, Gecim, JournalBearing, JournalOrbit
+from transient import BoundaryLayers, Gecim, Integration, JournalBearing, JournalOrbit, LongRun, Recording
 from transient.models.journal.bearing import Groove, omega
 from transient.params.rho_kim import BEARING, ROTOR
 
@@ -104,7 +104,9 @@ def test_orbit_with_a_gecim_bulk_conserves_mass():
     content changes by exactly what flows through the ends and the groove (relative 1e-5 at rtol 1e-7)."""
     ly = BoundaryLayers(thickness=0.1 * CL, viscosity=10 * MU, alpha=0.05 * CL)
     o = JournalOrbit(bearing((32, 6), layers=ly, rheology=GECIM), ROTOR["rotor_mass"], 0.01 * CL, ROTOR["load"], RPM)
-    r = o.run(1, rtol=1e-7, atol=1e-9, outputs_per_revolution=200, record=("mass", "outflow"), progress=False)
+    r = o.run(1, integration=Integration(rtol=1e-7, atol=1e-9),
+              recording=Recording(outputs_per_revolution=200, record=("mass", "outflow")),
+              long_run=LongRun(progress=False))
     mb = o.mass_balance(r)
     assert r.success and mb["relative"][0] < 1e-5, mb["relative"]
 

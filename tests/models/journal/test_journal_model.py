@@ -12,6 +12,7 @@ All numbers quoted in the docstrings were measured on the grids used here (docs/
 """
 
 import os
+from dataclasses import replace
 
 import numpy as np
 import pytest
@@ -22,6 +23,7 @@ from transient.params.rho_kim import BEARING as RHO_KIM_BEARING, ROTOR as RHO_KI
 from transient.models.journal.bearing import Groove, JournalBearing, omega
 from transient.models.journal.orbit import JournalOrbit
 from transient.physics.layered import BoundaryLayers, Gecim
+from transient import Integration, LongRun, Recording
 
 D, L, CL, MU = (RHO_KIM_BEARING[k] for k in ("diameter", "length", "clearance", "viscosity"))
 W, MASS, RPM = RHO_KIM_ROTOR["load"], RHO_KIM_ROTOR["rotor_mass"], 6000.0
@@ -403,7 +405,7 @@ def test_unbalance_free_transient_settles_at_equilibrium():
     y0 = np.zeros(o.n)
     y0[: o.film.n] = s.u
     y0[o.film.n:o.film.n + 2] = X0, Y0
-    r = o.run(4, rtol=1e-6, atol=1e-9, y0=y0, outputs_per_revolution=1)
+    r = o.run(4, integration=Integration(rtol=1e-6, atol=1e-9), recording=Recording(outputs_per_revolution=1), y0=y0)
     d = np.hypot(r.x - e.position[0], r.y - e.position[1]) / CL
     assert d[0] > 0.1
     assert np.all(np.diff(d) < 0)
@@ -415,7 +417,8 @@ def reference_orbit():
     b = paper_bearing()
     o = JournalOrbit(b, MASS, 0.01 * CL, W, RPM)
     o.initial_state()
-    ref = o.run(1, method="cvode", rtol=1e-10, atol=1e-13, outputs_per_revolution=20)
+    ref = o.run(1, integration=Integration(method="cvode", rtol=1e-10, atol=1e-13),
+                recording=Recording(outputs_per_revolution=20))
     amp = np.max(np.hypot(ref.x - ref.x[0], ref.y - ref.y[0]))
     return o, ref, amp
 
@@ -432,7 +435,8 @@ def test_cvode_and_ida_agree(reference_orbit):
     The error falls with rtol but not in proportion at every step (rupture / reformation crossings)."""
     o, ref, amp = reference_orbit
     for method in ("cvode", "ida"):
-        err = {rt: _orbit_error(o.run(1, method=method, rtol=rt, atol=rt * 1e-3, outputs_per_revolution=20), ref, amp)
+        err = {rt: _orbit_error(o.run(1, integration=Integration(method=method, rtol=rt, atol=rt * 1e-3),
+                                      recording=Recording(outputs_per_revolution=20)), ref, amp)
                for rt in (1e-4, 1e-7)}
         assert err[1e-4] < 5e-3 and err[1e-7] < 1e-5, (method, err)
         assert err[1e-7] < 0.01 * err[1e-4], (method, err)
@@ -450,7 +454,8 @@ def test_mass_conservation_improves_with_rtol():
     o.initial_state()
     rel = []
     for rtol in (1e-3, 1e-5, 1e-7):
-        r = o.run(1, rtol=rtol, atol=rtol * 1e-2, outputs_per_revolution=800, record=("mass", "outflow"))
+        r = o.run(1, integration=Integration(rtol=rtol, atol=rtol * 1e-2),
+                  recording=Recording(outputs_per_revolution=800, record=("mass", "outflow")))
         mb = o.mass_balance(r)
         assert mb["quadrature_relative"][0] < 1e-6
         rel.append(mb["relative"][0])
@@ -466,7 +471,7 @@ def test_recorded_film_content_is_theta_in_cavitation():
     cavitated zone where u = theta - 1)."""
     b = paper_bearing()
     o = JournalOrbit(b, MASS, 0.01 * CL, W, RPM)
-    r = o.run(0.02, outputs_per_revolution=100, record=("film_content",))
+    r = o.run(0.02, recording=Recording(outputs_per_revolution=100, record=("film_content",)))
     theta0 = r.film_content[0]
     np.testing.assert_allclose(theta0, o.equilibrium().film_content, atol=1e-6)
     assert theta0.min() < 0.9
@@ -549,9 +554,9 @@ def test_bad_groove_and_operating_parameters_raise():
     with pytest.raises(ValueError, match="revolutions"):
         o.run(0.0)
     with pytest.raises(ValueError, match="record"):
-        o.run(1.0, record=("temperature",))
+        o.run(1.0, recording=Recording(record=("temperature",)))
     with pytest.raises(ValueError, match="steps_per_revolution"):
-        o.run(0.1, method="rk4", steps_per_revolution=1)
+        o.run(0.1, integration=Integration(method="rk4", steps_per_revolution=1))
     with pytest.raises(ValueError, match="mass_balance"):
         o.mass_balance(o.run(0.05))
 
@@ -563,13 +568,15 @@ def test_bad_groove_and_operating_parameters_raise():
 def test_checkpoint_resume_equals_uninterrupted_run(tmp_path):
     b = paper_bearing(grid=(32, 6))
     o = JournalOrbit(b, MASS, 0.01 * CL, W, RPM)
-    kw = dict(rtol=1e-6, atol=1e-9, chunk_revolutions=1.0, outputs_per_revolution=20, record=("force", "mass"),
-              progress=False)
-    full = o.run(2.0, **kw)
+    kw = dict(integration=Integration(rtol=1e-6, atol=1e-9),
+              recording=Recording(outputs_per_revolution=20, record=("force", "mass")))
+    lr = LongRun(chunk_revolutions=1.0, progress=False)
+    full = o.run(2.0, long_run=lr, **kw)
     path = str(tmp_path / "orbit.npz")
-    o.run(1.0, checkpoint=path, **kw)  # "crashes" after the first chunk
+    o.run(1.0, long_run=replace(lr, checkpoint=path), **kw)  # "crashes" after the first chunk
     assert os.path.exists(path)
-    resumed = JournalOrbit(b, MASS, 0.01 * CL, W, RPM).run(2.0, checkpoint=path, resume=True, **kw)
+    resumed = JournalOrbit(b, MASS, 0.01 * CL, W, RPM).run(2.0, long_run=replace(lr, checkpoint=path, resume=True),
+                                                           **kw)
     assert resumed.t.shape == full.t.shape
     for k in ("t", "x", "y"):
         np.testing.assert_allclose(getattr(resumed, k), getattr(full, k), rtol=1e-12, atol=0)
@@ -579,7 +586,7 @@ def test_checkpoint_resume_equals_uninterrupted_run(tmp_path):
     # a checkpoint of another orbit is refused
     other = JournalOrbit(b, MASS, 0.02 * CL, W, RPM)
     with pytest.raises(ValueError, match="checkpoint"):
-        other.run(2.0, checkpoint=path, resume=True, **kw)
+        other.run(2.0, long_run=replace(lr, checkpoint=path, resume=True), **kw)
 
 
 # ---- issue 17: inputs that used to pass silently or fail deep inside -------------------------------------------
@@ -603,12 +610,12 @@ def test_orbit_rejects_a_start_outside_the_clearance_and_non_numeric_states():
     y = o.initial_state()
     y[o.film.n] = 1.2
     with pytest.raises(ValueError, match="outside the clearance"):
-        o.run(0.1, y0=y, progress=False)
+        o.run(0.1, y0=y, long_run=LongRun(progress=False))
     for bad in ("5", 1.0, [None] * o.n):
         with pytest.raises(ValueError, match="initial state"):
-            o.run(0.1, y0=bad, progress=False)
+            o.run(0.1, y0=bad, long_run=LongRun(progress=False))
     with pytest.raises(ValueError, match="revolutions"):
-        o.run("5", progress=False)
+        o.run("5", long_run=LongRun(progress=False))
 
 
 def test_an_unreachable_equilibrium_is_a_named_value_error():

@@ -10,6 +10,7 @@ import pytest
 from transient.params.rho_kim import BEARING as RHO_KIM_BEARING, ROTOR as RHO_KIM_ROTOR
 from transient.models.journal.bearing import JournalBearing
 from transient.models.journal.orbit import JournalOrbit
+from transient import Integration, LongRun, Recording
 
 pytestmark = pytest.mark.slow
 
@@ -56,8 +57,8 @@ def test_oil_whip_above_stability_threshold():
     o = JournalOrbit(b, MASS, 0.01 * CL, W, rpm)
     assert b.growth_rate(MASS, W, rpm) > 0
     t0 = time.perf_counter()
-    r = o.run(12, rtol=1e-4, atol=1e-7, outputs_per_revolution=50, touch_gap=1e-2, chunk_revolutions=2,
-              progress=True)
+    r = o.run(12, integration=Integration(rtol=1e-4, atol=1e-7), recording=Recording(outputs_per_revolution=50),
+              long_run=LongRun(chunk_revolutions=2, progress=True), touch_gap=1e-2)
     wall = time.perf_counter() - t0
     eps = r.eccentricity_ratio
     print(f"{rpm:.0f} rpm: {r.message}; eps start {eps[0]:.4f}, max {eps.max():.4f}, "
@@ -79,7 +80,7 @@ def test_bulk_modulus_range(beta):
     e = b.equilibrium(W, RPM)
     o = JournalOrbit(b, MASS, 0.01 * CL, W, RPM)
     t0 = time.perf_counter()
-    r = o.run(1, rtol=1e-4, atol=1e-8)
+    r = o.run(1, integration=Integration(rtol=1e-4, atol=1e-8))
     wall = time.perf_counter() - t0
     print(f"beta={beta:.0e}: load(eps 0.6) {s.load:.3f} N, equilibrium eps {e.eccentricity_ratio:.5f} "
           f"att {e.attitude_angle_deg:.3f}, 1 rev {wall:.2f} s ({r.stats.n_steps} steps), "

@@ -14,6 +14,7 @@ import pytest
 from transient import BoundaryLayers, Gecim, JournalBearing, JournalOrbit, LayeredFilm, Newtonian
 from transient.models.journal.bearing import omega
 from transient.params.rho_kim import BEARING, ROTOR
+from transient import Integration, LongRun, Recording
 
 CL, MU, RPM = BEARING["clearance"], BEARING["viscosity"], 6000.0
 GRID = (48, 8)
@@ -80,7 +81,9 @@ def test_layers_raise_the_load_and_their_darcy_flow_lowers_it():
 def test_orbit_with_layers_conserves_mass_and_stops_where_the_layers_touch():
     ly = BoundaryLayers(thickness=0.1 * CL, viscosity=10 * MU, alpha=0.05 * CL)
     o = JournalOrbit(bearing(layers=ly), ROTOR["rotor_mass"], 0.01 * CL, ROTOR["load"], RPM)
-    r = o.run(1, rtol=1e-7, atol=1e-9, outputs_per_revolution=400, record=("mass", "outflow"), progress=False)
+    r = o.run(1, integration=Integration(rtol=1e-7, atol=1e-9),
+              recording=Recording(outputs_per_revolution=400, record=("mass", "outflow")),
+              long_run=LongRun(progress=False))
     mb = o.mass_balance(r)
     assert r.success and mb["relative"][0] < 1e-5, mb["relative"]
     # a journal thrown outwards at 10 C per radian of shaft rotation reaches the layers: a named event
@@ -88,7 +91,7 @@ def test_orbit_with_layers_conserves_mass_and_stops_where_the_layers_touch():
                      ROTOR["load"], RPM)
     y = o.perturbed_start(0.3)
     y[o.film.n + 2] = 10.0
-    r = o.run(0.5, rtol=1e-5, y0=y, progress=False)
+    r = o.run(0.5, integration=Integration(rtol=1e-5), long_run=LongRun(progress=False), y0=y)
     assert r.touched_at is not None and "boundary layers touch" in r.message, r.message
     assert np.hypot(r.x[-1], r.y[-1]) / CL == pytest.approx(0.6 - 1e-3, abs=1e-6)
 

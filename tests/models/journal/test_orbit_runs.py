@@ -7,7 +7,7 @@ import time
 import numpy as np
 import pytest
 
-from transient import Integration, JournalBearing, JournalOrbit
+from transient import Integration, JournalBearing, JournalOrbit, LongRun, Recording
 from transient.checks import MemoryLimitError
 from transient.params.rho_kim import BEARING
 
@@ -24,9 +24,10 @@ def overloaded():
 
 def test_a_journal_reaching_its_bearing_is_never_a_success():
     o, y = overloaded()
-    r = o.run(0.15, y0=y, outputs_per_revolution=64, progress=False)  # touch detection by default
+    r = o.run(0.15, y0=y, recording=Recording(outputs_per_revolution=64), long_run=LongRun(progress=False))  # touch detection by default
     assert not r.success and r.touched_at is not None and "journal touches the bearing" in r.message
-    off = o.run(0.15, y0=y, outputs_per_revolution=64, progress=False, touch_gap=0.0)
+    off = o.run(0.15, y0=y, recording=Recording(outputs_per_revolution=64), long_run=LongRun(progress=False),
+                touch_gap=0.0)
     eps = np.hypot(off.x, off.y) / o.bearing.clearance
     assert eps.max() > 1.0  # the discrete film lets the journal through the wall: a negative film
     assert not off.success and off.touched_at is None
@@ -50,7 +51,7 @@ def test_an_orbit_too_large_is_refused_before_its_film_is_built(monkeypatch):
     o = JournalOrbit(b, 100.0, 1e-6, 981.0, 6000.0)
     monkeypatch.setenv("TRANSIENT_MEMORY_BYTES", "1e5")  # the film and its solver alone: 6.6 kB per cell
     with pytest.raises(MemoryLimitError, match=r"coarser grid \(JournalBearing\(grid=") as e:
-        o.run(1.0, progress=False)
+        o.run(1.0, long_run=LongRun(progress=False))
     assert "lower revolutions" not in str(e.value)  # the grid is what must change, not the run's length
     monkeypatch.setattr(b, "film", no_film)
     with pytest.raises(MemoryLimitError, match=r"an orbit on 64 film cells.*coarser grid \(JournalBearing\(grid="):
@@ -60,7 +61,7 @@ def test_an_orbit_too_large_is_refused_before_its_film_is_built(monkeypatch):
 def test_a_fixed_step_the_orbit_does_not_take_is_refused():
     o = JournalOrbit(JournalBearing(**BEARING, grid=(8, 2)), 100.0, 1e-6, 981.0, 6000.0)
     with pytest.raises(ValueError, match=r"dt = 0\.01 \[-\] is not used by the orbit; allowed: steps_per_revolution"):
-        o.run(0.1, integration=Integration(method="rk4", dt=0.01), progress=False)
+        o.run(0.1, integration=Integration(method="rk4", dt=0.01), long_run=LongRun(progress=False))
 
 
 def test_the_bdf2_band_lu_counts_and_is_refused_before_it_is_built(monkeypatch):
@@ -77,4 +78,4 @@ def test_the_bdf2_band_lu_counts_and_is_refused_before_it_is_built(monkeypatch):
     monkeypatch.setattr(o, "bdf2_model", no_work)
     monkeypatch.setattr(o, "initial_state", no_work)
     with pytest.raises(MemoryLimitError, match=r"band LU .*coarser grid \(JournalBearing\(grid="):
-        o.run(1.0, method="bdf2", progress=False)
+        o.run(1.0, integration=Integration(method="bdf2"), long_run=LongRun(progress=False))

@@ -19,7 +19,8 @@ from transient.models.journal.periodic import (PeriodicOrbit, ResponseCurve, flo
                                                quasi_periodic_response, response_curve, stability_onset)
 from transient.params import rho_kim
 from transient.results import load_result
-from transient.solvers.shooting import floquet_multipliers, newton_krylov, newton_picard
+from transient.solvers.shooting import ShootingSettings, floquet_multipliers, newton_krylov, newton_picard
+from transient import Integration, Recording
 
 GRID = (24, 4)
 ROTOR = rho_kim.ROTOR
@@ -52,11 +53,11 @@ def _linear_system():
 def test_newton_picard_and_krylov_on_a_forced_linear_system():
     flow, y_star, mu, _ = _linear_system()
     V0 = np.eye(10)[:, :2]  # a poor basis: the true whirl subspace is X[:, :2]
-    r = newton_picard(flow, np.zeros(10), 2 * np.pi, V0, tol=1e-10, rtol=1e-8, second_ritz=True)
+    r = newton_picard(flow, np.zeros(10), 2 * np.pi, V0, settings=ShootingSettings(tol=1e-10, rtol=1e-8, second_ritz=True))
     assert r.success, r.message
     assert np.max(np.abs(r.state - y_star)) < 1e-9
     assert np.allclose(np.sort_complex(r.multipliers), np.sort_complex(mu[:2]), atol=1e-6)
-    k = newton_krylov(flow, np.zeros(10), 2 * np.pi, tol=1e-10, rtol=1e-8)
+    k = newton_krylov(flow, np.zeros(10), 2 * np.pi, settings=ShootingSettings(tol=1e-10, rtol=1e-8))
     assert k.success and np.max(np.abs(k.state - y_star)) < 1e-9
     vals, _, periods = floquet_multipliers(flow, y_star, 2 * np.pi, k=4, fd_step=1e-6)
     assert np.allclose(np.sort_complex(vals), np.sort_complex(mu[:4]), atol=1e-7)
@@ -74,7 +75,7 @@ def test_newton_picard_converges_on_a_forced_duffing_oscillator():
 
     long = solve_ivp(rhs, (0, 80 * np.pi), [0.0, 0.0], rtol=1e-12, atol=1e-14, method="DOP853",
                      t_eval=2 * np.pi * np.arange(41))
-    r = newton_picard(flow, [0.0, 0.0], 2 * np.pi, np.eye(2), tol=1e-9, rtol=1e-11, rtol_max=1e-6)
+    r = newton_picard(flow, [0.0, 0.0], 2 * np.pi, np.eye(2), settings=ShootingSettings(tol=1e-9, rtol=1e-11, rtol_max=1e-6))
     assert r.success, r.message
     assert np.max(np.abs(r.state - long.y[:, -1])) < 1e-8
     d = np.linalg.norm(long.y[:, :-1].T - r.state, axis=1)
@@ -86,10 +87,11 @@ def test_newton_picard_converges_on_a_forced_duffing_oscillator():
 
 def test_a_shooting_that_cannot_converge_says_so():
     flow, *_ = _linear_system()
-    r = newton_picard(flow, np.zeros(10), 2 * np.pi, np.eye(10)[:, :2], tol=1e-12, rtol=1e-8, max_iter=1)
+    r = newton_picard(flow, np.zeros(10), 2 * np.pi, np.eye(10)[:, :2],
+                      settings=ShootingSettings(tol=1e-12, rtol=1e-8, max_iter=1))
     assert not r.success and "did not converge in 1 iterations" in r.message and len(r.residual_norms) == 1
     with pytest.raises(ValueError, match="rtol <= rtol_max"):
-        newton_picard(flow, np.zeros(10), 2 * np.pi, np.eye(10)[:, :2], rtol=1e-3, rtol_max=1e-4)
+        ShootingSettings(rtol=1e-3, rtol_max=1e-4)
 
 
 # --------------------------------------------------------------------------------------------------
@@ -122,7 +124,8 @@ def settled():
     out = {}
     for speed, revs in ((3000.0, 12), (6000.0, 36)):
         o = _orbit(speed)
-        r = o.run(revs, y0=o.linear_start(), rtol=1e-9, atol=1e-12, outputs_per_revolution=64)
+        r = o.run(revs, y0=o.linear_start(), integration=Integration(rtol=1e-9, atol=1e-12),
+                  recording=Recording(outputs_per_revolution=64))
         out[speed] = (o, r)
     return out
 
@@ -227,8 +230,8 @@ def test_noise_from_the_periodic_state_equals_the_settled_noise():
     from transient.study.noise import bearing_noise
 
     o = _orbit(4000.0)
-    a = bearing_noise(o, revolutions=2, harmonics=3, periodic=True, tol=1e-6, rtol=1e-7)
-    b = bearing_noise(o, revolutions=2, harmonics=3, periodic=False, tol=1e-6, rtol=1e-7)
+    a = bearing_noise(o, revolutions=2, harmonics=3, periodic=True, tol=1e-6, integration=Integration(rtol=1e-7))
+    b = bearing_noise(o, revolutions=2, harmonics=3, periodic=False, tol=1e-6, integration=Integration(rtol=1e-7))
     assert abs(a.level_db - b.level_db) < 1e-3 and np.allclose(a.harmonic_levels_db, b.harmonic_levels_db, atol=0.02)
     with pytest.raises(NotPeriodicError, match="no stable periodic orbit"):
-        bearing_noise(_orbit(9500.0), revolutions=1, harmonics=2, rtol=1e-5)
+        bearing_noise(_orbit(9500.0), revolutions=1, harmonics=2, integration=Integration(rtol=1e-5))

@@ -5,7 +5,7 @@ statics, results with units, bad input."""
 import numpy as np
 import pytest
 
-from transient import JournalBearing, JournalOrbit
+from transient import Integration, JournalBearing, JournalOrbit, Recording
 from transient.models.rotor import Rotor, RotorBearingSystem, RotorRunResult
 from transient.params.rho_kim import BEARING
 from transient.results import load_result
@@ -21,8 +21,8 @@ def bearing():
 def test_one_node_rotor_is_the_journal_orbit(bearing):
     rotor = Rotor(mass=M_ROTOR * np.eye(2), stiffness=np.zeros((2, 2)), nodes=[0])
     s = RotorBearingSystem(rotor, {0: bearing}, unbalance=[(0, M_ROTOR * ECC, 0.0)], gravity=G)
-    r = s.run(2, 6000, rtol=1e-7, atol=1e-10)
-    o = JournalOrbit(bearing, M_ROTOR, ECC, M_ROTOR * G, 6000).run(2, rtol=1e-7, atol=1e-10)
+    r = s.run(2, 6000, integration=Integration(rtol=1e-7, atol=1e-10))
+    o = JournalOrbit(bearing, M_ROTOR, ECC, M_ROTOR * G, 6000).run(2, integration=Integration(rtol=1e-7, atol=1e-10))
     assert r.success and np.array_equal(r.t, o.t)
     x, y = r.position(0)
     assert np.max(np.abs(x - o.x)) < 1e-6 * bearing.clearance
@@ -38,8 +38,9 @@ def test_symmetric_rotor_on_two_bearings_is_the_half_orbit(bearing):
     assert eq.bearing_load == pytest.approx([M_ROTOR * G / 2] * 2, rel=1e-8)
     half = bearing.equilibrium(M_ROTOR * G / 2, 6000)
     assert np.allclose(eq.position(0), half.position, rtol=1e-6)
-    r = s.run(2, 6000, rtol=1e-7, atol=1e-10)
-    o = JournalOrbit(bearing, M_ROTOR / 2, ECC, M_ROTOR * G / 2, 6000).run(2, rtol=1e-7, atol=1e-10)
+    r = s.run(2, 6000, integration=Integration(rtol=1e-7, atol=1e-10))
+    o = JournalOrbit(bearing, M_ROTOR / 2, ECC, M_ROTOR * G / 2, 6000).run(
+        2, integration=Integration(rtol=1e-7, atol=1e-10))
     for node in (0, 1):
         x, y = r.position(node)
         assert np.max(np.hypot(x - o.x, y - o.y)) < 1e-6 * bearing.clearance
@@ -104,13 +105,13 @@ def test_equilibrium_balances_the_weight_of_a_flexible_rotor(bearing):
 
 def test_run_result_units_save_load_and_continuation(bearing, tmp_path):
     s = flexible_system(bearing)
-    r = s.run(0.5, 6000, outputs_per_revolution=40)
+    r = s.run(0.5, 6000, recording=Recording(outputs_per_revolution=40))
     assert r.units()["displacement"] == "m" and r.units()["t"] == "s"
     back = load_result(r.save(tmp_path / "run"))
     assert isinstance(back, RotorRunResult)
     assert np.array_equal(back.position(1)[0], r.position(1)[0])
-    whole = s.run(1.0, 6000, outputs_per_revolution=40)
-    more = s.run(0.5, 6000, outputs_per_revolution=40, start=r)
+    whole = s.run(1.0, 6000, recording=Recording(outputs_per_revolution=40))
+    more = s.run(0.5, 6000, recording=Recording(outputs_per_revolution=40), start=r)
     joined = r + more
     assert np.allclose(joined.t, whole.t, rtol=1e-12)
     assert np.max(np.abs(joined.displacement - whole.displacement)) < 1e-3 * bearing.clearance
@@ -119,8 +120,8 @@ def test_run_result_units_save_load_and_continuation(bearing, tmp_path):
 def test_constant_speed_function_is_the_constant_speed(bearing):
     rotor = Rotor(mass=M_ROTOR * np.eye(2), stiffness=np.zeros((2, 2)), nodes=[0])
     s = RotorBearingSystem(rotor, {0: bearing}, unbalance=[(0, M_ROTOR * ECC, 0.0)], gravity=G)
-    a = s.run(1, 6000, rtol=1e-7, atol=1e-10)
-    b = s.run(1, lambda t: 6000.0, rtol=1e-7, atol=1e-10)
+    a = s.run(1, 6000, integration=Integration(rtol=1e-7, atol=1e-10))
+    b = s.run(1, lambda t: 6000.0, integration=Integration(rtol=1e-7, atol=1e-10))
     assert np.allclose(a.t, b.t, rtol=1e-9)
     assert np.max(np.abs(a.displacement - b.displacement)) < 1e-7 * bearing.clearance
 
@@ -129,7 +130,7 @@ def test_run_up_follows_the_speed_and_turns_the_revolutions(bearing):
     rotor = Rotor(mass=M_ROTOR * np.eye(2), stiffness=np.zeros((2, 2)), nodes=[0])
     s = RotorBearingSystem(rotor, {0: bearing}, unbalance=[(0, M_ROTOR * ECC, 0.0)], gravity=G)
     ramp = lambda t: 3000.0 + 60000.0 * t  # noqa: E731 -- 1000 rpm/s ... 60000 rpm/s: 3000 -> ~4100 rpm
-    r = s.run(2, ramp, outputs_per_revolution=20)
+    r = s.run(2, ramp, recording=Recording(outputs_per_revolution=20))
     assert r.success
     assert np.allclose(r.speed_rpm, ramp(r.t))
     assert r.revolutions[-1] == pytest.approx(2.0, rel=1e-3)
@@ -169,7 +170,7 @@ def test_bad_input_names_the_parameter(bearing):
     with pytest.raises(ValueError, match=r"speed_rpm\(t = 0 s\) = 0 \[rpm\]"):
         s.run(1, lambda t: 1000.0 * t)
     with pytest.raises(ValueError, match="method"):
-        s.run(1, 6000, method="rk45")
+        s.run(1, 6000, integration=Integration(method="rk45"))
 
 
 def test_rigid_and_jeffcott_builders():
@@ -185,7 +186,7 @@ def test_rigid_and_jeffcott_builders():
 def test_touch_event_stops_the_run_at_the_bearing(bearing):
     rotor = Rotor(mass=M_ROTOR * np.eye(2), stiffness=np.zeros((2, 2)), nodes=[0])
     s = RotorBearingSystem(rotor, {0: bearing}, unbalance=[(0, M_ROTOR * 0.6 * bearing.clearance, 0.0)], gravity=G)
-    r = s.run(3, 6000, touch_gap=0.4, outputs_per_revolution=32)
+    r = s.run(3, 6000, touch_gap=0.4, recording=Recording(outputs_per_revolution=32))
     assert r.touched_at is not None and r.t[-1] < 3 * 0.01
     assert "touches its bearing" in r.message
     assert r.eccentricity_ratio(0).max() <= 0.6 + 1e-3

@@ -3,10 +3,12 @@ in the variables z = [u_1, ..., u_k, q, v, phi] against central differences, the
 film's, the one-node rotor and the symmetric two-bearing rotor against the journal orbit's BDF2, BDF2 against IDA on a
 flexible two-bearing rotor (constant speed and a run-up), the touch event per bearing, checkpoint/resume bitwise."""
 
+from dataclasses import replace
+
 import numpy as np
 import pytest
 
-from transient import JournalBearing, JournalOrbit
+from transient import Integration, JournalBearing, JournalOrbit, LongRun, Recording
 from transient.models.rotor import Rotor, RotorBearingSystem
 from transient.models.rotor.content_form import ContentSystem
 from transient.models.rotor.content_newton import rotor_jacobian, rotor_residual, rotor_to_state
@@ -89,8 +91,9 @@ def test_the_band_of_two_films_is_one_films(bearing):
 def test_one_node_rotor_is_the_journal_orbit(bearing):
     """The same equations as the journal orbit's content form (the rotor row scaled by its mass, the unbalance on
     the shaft angle): the same steps, the orbit to 1e-6 C."""
-    r = one_node(bearing).run(1, 6000, method="bdf2", rtol=1e-7, atol=1e-10)
-    o = JournalOrbit(bearing, M_ROTOR, ECC, M_ROTOR * G, 6000).run(1, method="bdf2", rtol=1e-7, atol=1e-10)
+    r = one_node(bearing).run(1, 6000, integration=Integration(method="bdf2", rtol=1e-7, atol=1e-10))
+    o = JournalOrbit(bearing, M_ROTOR, ECC, M_ROTOR * G, 6000).run(
+        1, integration=Integration(method="bdf2", rtol=1e-7, atol=1e-10))
     assert r.success and r.method == "bdf2" and np.array_equal(r.t, o.t)
     assert r.stats.n_steps == o.stats.n_steps
     x, y = r.position(0)
@@ -105,8 +108,9 @@ def test_symmetric_rotor_on_two_bearings_is_the_half_orbit(bearing):
     rotor = Rotor.rigid(M_ROTOR, 3.0, 0.5)
     s = RotorBearingSystem(rotor, {0: bearing, 1: bearing}, unbalance=[(0, M_ROTOR * ECC / 2, 0.0),
                                                                        (1, M_ROTOR * ECC / 2, 0.0)], gravity=G)
-    r = s.run(1, 6000, method="bdf2", rtol=1e-7, atol=1e-10)
-    o = JournalOrbit(bearing, M_ROTOR / 2, ECC, M_ROTOR * G / 2, 6000).run(1, method="bdf2", rtol=1e-7, atol=1e-10)
+    r = s.run(1, 6000, integration=Integration(method="bdf2", rtol=1e-7, atol=1e-10))
+    o = JournalOrbit(bearing, M_ROTOR / 2, ECC, M_ROTOR * G / 2, 6000).run(
+        1, integration=Integration(method="bdf2", rtol=1e-7, atol=1e-10))
     assert r.success
     for node in (0, 1):
         x, y = r.position(node)
@@ -118,9 +122,10 @@ def test_bdf2_agrees_with_ida_on_a_flexible_rotor(bearing):
     BDF2 within 1e-6 C (its rtol times the journal positions, below 1 C) of IDA at rtol 1e-9 at rtol 1e-6, and
     closer at rtol 1e-7 (the error follows the tolerance)."""
     s = flexible_system(bearing)
-    kw = dict(outputs_per_revolution=40, atol=1e-10)
-    ref = s.run(0.25, 6000, rtol=1e-9, **kw)
-    runs = [s.run(0.25, 6000, method="bdf2", rtol=rtol, **kw) for rtol in (1e-6, 1e-7)]
+    kw = dict(recording=Recording(outputs_per_revolution=40))
+    ref = s.run(0.25, 6000, integration=Integration(rtol=1e-9, atol=1e-10), **kw)
+    runs = [s.run(0.25, 6000, integration=Integration(method="bdf2", rtol=rtol, atol=1e-10), **kw)
+            for rtol in (1e-6, 1e-7)]
     assert all(r.success and np.allclose(r.t, ref.t, rtol=1e-12) for r in runs)
     assert np.max(np.abs(ref.displacement - ref.displacement[0])) > 5e-3 * bearing.clearance  # it moves
     err = [np.max(np.abs(r.displacement - ref.displacement)) / bearing.clearance for r in runs]
@@ -131,9 +136,9 @@ def test_run_up_agrees_with_ida(bearing):
     """A speed ramp (the films' Couette flow and the unbalance's s^2 and s' terms): BDF2 and IDA agree."""
     s = one_node(bearing)
     ramp = lambda t: 3000.0 + 60000.0 * t  # noqa: E731
-    kw = dict(outputs_per_revolution=20, atol=1e-10)
-    ida = s.run(1, ramp, rtol=1e-8, **kw)
-    bdf2 = s.run(1, ramp, method="bdf2", rtol=1e-6, **kw)
+    kw = dict(recording=Recording(outputs_per_revolution=20))
+    ida = s.run(1, ramp, integration=Integration(rtol=1e-8, atol=1e-10), **kw)
+    bdf2 = s.run(1, ramp, integration=Integration(method="bdf2", rtol=1e-6, atol=1e-10), **kw)
     assert bdf2.success and np.allclose(bdf2.speed_rpm, ramp(bdf2.t))
     assert np.max(np.abs(bdf2.displacement - ida.displacement)) < 1e-4 * bearing.clearance
 
@@ -143,7 +148,8 @@ def test_touch_event_per_bearing(bearing):
     clearance) reaches the touch limit, located on the step's interpolant."""
     s = flexible_system(bearing)
     s.unbalance = [(1, 5e-2, 0.0)]
-    r = s.run(2, 6000, method="bdf2", touch_gap=0.5, outputs_per_revolution=32)
+    r = s.run(2, 6000, integration=Integration(method="bdf2"), recording=Recording(outputs_per_revolution=32),
+              touch_gap=0.5)
     assert r.touched_at is not None and "touches its bearing" in r.message, r.message
     e = [r.eccentricity_ratio(k)[-1] for k in (0, 1)]
     assert e[1] == pytest.approx(0.5, abs=1e-6) and e[0] < 0.5
@@ -153,8 +159,9 @@ def test_checkpoint_resume_is_bitwise(bearing, tmp_path, monkeypatch):
     """A run killed (Ctrl-C) in its third chunk and resumed from its checkpoint ends where the uninterrupted run
     does, bit for bit."""
     s = flexible_system(bearing)
-    kw = dict(method="bdf2", outputs_per_revolution=40, chunk_revolutions=0.125, progress=False)
-    full = s.run(0.5, 6000, **kw)
+    kw = dict(integration=Integration(method="bdf2"), recording=Recording(outputs_per_revolution=40))
+    lr = LongRun(chunk_revolutions=0.125, progress=False)
+    full = s.run(0.5, 6000, long_run=lr, **kw)
     path = tmp_path / "rotor.npz"
     set_speed = ContentSystem.set_speed
 
@@ -165,10 +172,10 @@ def test_checkpoint_resume_is_bitwise(bearing, tmp_path, monkeypatch):
 
     monkeypatch.setattr(ContentSystem, "set_speed", killed)
     with pytest.raises(Interrupted, match="run again with resume=True"):
-        flexible_system(bearing).run(0.5, 6000, checkpoint=str(path), **kw)
+        flexible_system(bearing).run(0.5, 6000, long_run=replace(lr, checkpoint=str(path)), **kw)
     monkeypatch.undo()
     assert path.exists()
-    resumed = flexible_system(bearing).run(0.5, 6000, checkpoint=str(path), resume=True, **kw)
+    resumed = flexible_system(bearing).run(0.5, 6000, long_run=replace(lr, checkpoint=str(path), resume=True), **kw)
     assert resumed.success and resumed.stats.n_steps < 2 * full.stats.n_steps
     for k in ("t", "displacement", "bearing_force", "final_state"):
         np.testing.assert_array_equal(getattr(resumed, k), getattr(full, k))

@@ -5,7 +5,7 @@ thresholds."""
 import numpy as np
 import pytest
 
-from transient import JournalBearing, Rotor, RotorBearingSystem
+from transient import JournalBearing, Recording, Rotor, RotorBearingSystem
 from transient.params.rho_kim import BEARING
 
 M_ROTOR, ECC, G = 100.0, 0.8e-6, 9.81
@@ -43,7 +43,7 @@ def test_film_state_eigenvalue_is_the_time_domain_decay(bearing):
     qs = np.max(s.quasi_static_eigenvalues(6000, eq).real)
     y = eq.state.copy()
     y[s.dae(6000).Q0] += 0.01
-    r = s.run(12, 6000, start=(0.0, y), outputs_per_revolution=64)
+    r = s.run(12, 6000, start=(0.0, y), recording=Recording(outputs_per_revolution=64))
     x, yy = r.position(0)
     e = np.hypot(x - eq.position(0)[0], yy - eq.position(0)[1])[:12 * 64].reshape(12, 64).max(axis=1)
     rate = np.polyfit(r.t[:12 * 64:64][4:], np.log(e[4:]), 1)[0]
@@ -59,7 +59,7 @@ def test_small_unbalance_settles_on_the_film_state_linear_response(bearing):
     slowest = s.eigenvalues(3000)[-1].real
     assert slowest * 7 * 60 / 3000 < -8
     per = 32
-    r = s.run(8, 3000, start=(0.0, s.linear_start(3000)), outputs_per_revolution=per)
+    r = s.run(8, 3000, start=(0.0, s.linear_start(3000)), recording=Recording(outputs_per_revolution=per))
     for node in (0, 1, 2):
         for settled, linear in zip(r.position(node), lin.position(node)):
             assert abs(harmonic(settled, per) - linear) < 1e-3 * abs(linear)
@@ -81,7 +81,7 @@ def free_growth_rate(s, speed, revolutions=16, per=64):
     eq = s.equilibrium(speed)
     y = eq.state.copy()
     y[s.dae(speed).Q0] += 0.01
-    r = s.run(revolutions, speed, start=(0.0, y), outputs_per_revolution=per)
+    r = s.run(revolutions, speed, start=(0.0, y), recording=Recording(outputs_per_revolution=per))
     x, yy = r.position(0)
     n = revolutions * per
     e = np.hypot(x - eq.position(0)[0], yy - eq.position(0)[1])[:n].reshape(revolutions, per).max(axis=1)

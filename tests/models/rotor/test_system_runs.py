@@ -8,7 +8,7 @@ import time
 import numpy as np
 import pytest
 
-from transient import JournalBearing
+from transient import JournalBearing, LongRun, Recording
 from transient.checks import MemoryLimitError
 from transient.models.rotor import Rotor, RotorBearingSystem
 from transient.params.rho_kim import BEARING
@@ -35,11 +35,13 @@ def overloaded(speed=300.0):
 
 def test_a_journal_reaching_its_bearing_is_never_a_success():
     s, y = overloaded()
-    r = s.run(0.15, 300.0, start=(0.0, y), outputs_per_revolution=64, progress=False)  # touch detection by default
+    r = s.run(0.15, 300.0, start=(0.0, y), recording=Recording(outputs_per_revolution=64),
+              long_run=LongRun(progress=False))  # touch detection by default
     assert not r.success and r.touched_at is not None
     assert "bearing node 0" in r.message and f"t = {r.touched_at:.6g} s" in r.message and "e/C = 0.9990" in r.message
     assert r.eccentricity_ratio(0).max() == pytest.approx(0.999, abs=1e-6)
-    off = s.run(0.15, 300.0, start=(0.0, y), outputs_per_revolution=64, progress=False, touch_gap=0.0)
+    off = s.run(0.15, 300.0, start=(0.0, y), recording=Recording(outputs_per_revolution=64),
+                long_run=LongRun(progress=False), touch_gap=0.0)
     eps = off.eccentricity_ratio(0)
     assert eps.max() > 1.0  # the discrete film lets the journal through the wall: a negative film
     assert not off.success and off.touched_at is None
@@ -50,7 +52,7 @@ def test_a_start_outside_the_clearance_is_refused():
     s, y = overloaded()
     y[s.dae(300.0).Q0] = 1.01
     with pytest.raises(ValueError, match=r"journal at bearing node 0 is outside the clearance: e/C = 1\.01"):
-        s.run(0.25, 300.0, start=(0.0, y), progress=False)
+        s.run(0.25, 300.0, start=(0.0, y), long_run=LongRun(progress=False))
 
 
 def test_unbalance_response_defaults_to_the_film_states(bearing):
@@ -74,7 +76,7 @@ def test_memory_is_refused_before_the_films_the_equilibrium_or_the_run(bearing, 
     monkeypatch.setattr(s, "dae", no_work)
     monkeypatch.setattr(s, "_steady", no_work)
     monkeypatch.setenv("TRANSIENT_MEMORY_BYTES", "1e5")  # the estimates: about 0.85 MB, 6.6 kB per film cell
-    for call in (lambda: s.run(1, 3000.0, progress=False), lambda: s.equilibrium(3000.0),
+    for call in (lambda: s.run(1, 3000.0, long_run=LongRun(progress=False)), lambda: s.equilibrium(3000.0),
                  lambda: s.unbalance_response(3000.0)):
         t = time.perf_counter()
         with pytest.raises(MemoryLimitError, match=r"16 x 4 \+ 16 x 4.*coarser grid \(JournalBearing\(grid="):
@@ -85,9 +87,9 @@ def test_memory_is_refused_before_the_films_the_equilibrium_or_the_run(bearing, 
 def test_run_flags_are_booleans_only(bearing):
     s = RotorBearingSystem(Rotor.jeffcott(2e7, 90.0, 5.0), {0: bearing, 2: bearing})
     with pytest.raises(ValueError, match="resume = 'False' is not a flag; allowed: True, False"):
-        s.run(1, 3000.0, resume="False")
+        s.run(1, 3000.0, long_run=LongRun(resume="False"))
     with pytest.raises(ValueError, match="progress = 'no' is not a flag; allowed: True, False"):
-        s.run(1, 3000.0, progress="no")
+        s.run(1, 3000.0, long_run=LongRun(progress="no"))
 
 
 def test_a_speed_function_is_evaluated_only_inside_the_run(bearing):
@@ -105,7 +107,8 @@ def test_a_speed_function_is_evaluated_only_inside_the_run(bearing):
         return 6000.0 * t / 0.05
 
     eq = s.equilibrium(200.0)
-    r = s.run(1, run_up, start=(0.0, eq.state), reference_speed_rpm=6000.0, outputs_per_revolution=8, progress=False)
+    r = s.run(1, run_up, start=(0.0, eq.state), reference_speed_rpm=6000.0,
+              recording=Recording(outputs_per_revolution=8), long_run=LongRun(progress=False))
     assert r.success and r.final_time == pytest.approx(span, rel=1e-9)
     assert min(seen) >= 0.0 and max(seen) <= span
     assert r.speed_rpm[0] == 0.0 and r.speed_rpm[-1] == pytest.approx(6000.0 * span / 0.05, rel=1e-9)

@@ -35,7 +35,7 @@ from __future__ import annotations
 
 import math
 import time
-from dataclasses import dataclass, field, replace
+from dataclasses import astuple, dataclass, field, replace
 
 import numpy as np
 
@@ -47,14 +47,28 @@ from transient.models.ball.track import FrontTrack, UniformTrack
 from transient.checks import check_choice, check_int, check_memory, check_range
 from transient.results import StatusResult, quantity, record_type, result_type
 from transient.solvers.integrate import check_method
-from transient.solvers.settings import DEFAULT, Integration, Recording, from_keywords
+from transient.models.ball.settings import TrackSettings
+from transient.solvers.legacy import flat_settings
+from transient.solvers.settings import Integration, Recording, keyword_table, run_settings
 from transient.units import rpm_to_rad_s
 
 FLOODED, STARVED, PARCHED = "fully flooded", "starved", "parched"
-REPLENISHMENT = ("thin_film", "chiu", "chiu_thin")
-GRIDS = ("front", "uniform")
 #: the film of a pass: Hamrock-Dowson with the 0.29 starvation law, or the numerical starved point contact
 CONTACTS = ("formula", "numerical")
+#: The loose keywords of :meth:`ThrustBallBearing.sequence` of earlier releases and the settings field each now is.
+SEQUENCE_KEYWORDS = (keyword_table("track", TrackSettings)
+                     | keyword_table("integration", Integration, ("method", "rtol", "atol", "dt", "linear_solver"))
+                     | {"record_profiles": ("recording", Recording, "record", lambda on: ("profiles",) if on else ())})
+#: The sequence's own integration defaults (the levelling's film is in units of ``h_inf``).
+SEQUENCE_DEFAULTS = {"integration": dict(method="cvode", atol=1e-10)}
+
+
+def sequence_settings(**flat) -> dict:
+    """The ``track``, ``integration`` and ``recording`` objects of :meth:`ThrustBallBearing.sequence` from a flat
+    table of its settings (``sequence_settings(grid="uniform", rtol=1e-4)``; the sequence's own defaults for the
+    rest), e.g. a parameter set such as :data:`transient.params.jeong.MAP_SETTINGS`:
+    ``bearing.sequence(30, 80, 1e-4, **sequence_settings(**MAP_SETTINGS))``."""
+    return flat_settings(SEQUENCE_KEYWORDS, flat, SEQUENCE_DEFAULTS)
 
 
 
@@ -249,16 +263,9 @@ class ThrustBallBearing:
 
     # the sequence ---------------------------------------------------------------------------------
     def sequence(self, load: float, speed_rpm: float, ambient_film: float, n_passes: int = 200, *,
-                 replenishment: str = "thin_film", grid: str = "front", method: str = DEFAULT,
-                 rtol: float = DEFAULT, atol: float = DEFAULT, dt: float | None = DEFAULT, n_cells: int = 200,
-                 refine: float = 1.0,
-                 reservoir_distance: float | None = None, bc: str = "reservoir",
-                 ridge_fraction: float = 1.0, ridge_width: float | None = None,
-                 precursor_film: float | None = None, mobility_film: float = 0.0,
-                 front_level: float = 3.0, front_tau: float = 1e-3, edge_width: float | None = None, periodic_tol: float = 1e-4,
-                 stop_at_periodic: bool = True, record_profiles: bool = DEFAULT,
-                 linear_solver: str = DEFAULT, integration: Integration | None = None,
-                 recording: Recording | None = None) -> BallSequence:
+                 track: TrackSettings | None = None, periodic_tol: float = 1e-4, stop_at_periodic: bool = True,
+                 integration: Integration | None = None, recording: Recording | None = None,
+                 **legacy) -> BallSequence:
         """Inlet and central film ball after ball (module docstring).
 
         Parameters
@@ -266,58 +273,57 @@ class ThrustBallBearing:
         load : TOTAL axial load [N]; speed_rpm : shaft speed [rpm]; ambient_film : ``h_inf`` [m], at least the
             fully flooded central film (a thinner layer cannot feed the contact it is said to flood).
         n_passes : maximum number of ball passes over the same point of the race.
-        replenishment : ``"thin_film"`` (nonlinear levelling, integrated by ``method``), ``"chiu"``
-            (Chiu's linear kernel) or ``"chiu_thin"`` (its thin-film long-wave limit).
-        grid : ``"front"`` (default: a mesh that follows the re-wetting front, no mobility floor; see
-            :mod:`transient.models.ball.front`) or ``"uniform"`` (``n_cells`` uniform cells: the earlier
-            formulation, with the mobility floor ``mobility_film`` if given; Chiu always uses it).
-        method, rtol, atol, dt, linear_solver : passed to :func:`transient.solvers.integrate.solve`
-            (atol in units of ``h_inf``; dt in units of the levelling time, for ``rk4``); defaults ``"cvode"``,
-            1e-6, 1e-10, None, ``"auto"`` (when left out). Or ``integration``
-            (:class:`~transient.solvers.settings.Integration`),
-            which these keywords build (a keyword that contradicts it is an error naming both).
-        record_profiles : keep the film profile across the track before every pass (``BallSequence.profiles``);
-            or ``recording=Recording(record=("profiles",))``.
-        n_cells : uniform cells across the half track ``[0, reservoir_distance]`` (``grid="uniform"``, Chiu).
-        refine : refinement factor of the front mesh (cell sizes and growth rates divided by it).
-        reservoir_distance : where the undisturbed ambient film is [m] (default: the ball radius).
-        bc : ``"reservoir"`` (ambient film held there) or ``"closed"`` (no flux: a closed groove).
-        ridge_fraction : share of the oil pushed off the track that stays on the race as side ridges.
-        ridge_width : width of each side ridge [m] (default ``a'``).
-        precursor_film : film the ball leaves on the band [m]; default (None): the outlet film of the pass,
-            half the central film on each surface, ``h_c/2``; a number replaces it by ``max(h_c/2, value)``
-            (the convergence study towards the physical value). The uniform grid keeps its earlier floor of
-            1 nm by default (its floor mobility can drain a cell below zero).
-        mobility_film : ``b`` [m] of a regularised mobility ``h^3 + b^3`` (0: none, the physical model;
-            ``h_inf/10`` was the earlier formulation's arbitrary floor).
-        edge_width : width [m] of the wall of the depression (``grid="front"``; default ``a'/50``; 0 = the
-            paper's rectangular depression, the limit it converges to).
-        front_level, front_tau : the front mesh follows the level ``front_level * h_out`` with relaxation
-            time ``front_tau`` (scaled).
-        periodic_tol : relative change of ``h_inf`` over 3 passes that counts as periodic.
+        track : :class:`~transient.models.ball.settings.TrackSettings`, how the track between passes is modelled
+            (default ``TrackSettings()``): ``replenishment`` ``"thin_film"`` (nonlinear levelling, integrated by
+            ``integration``), ``"chiu"`` (Chiu's linear kernel) or ``"chiu_thin"`` (its thin-film long-wave
+            limit); ``grid`` ``"front"`` (default: a mesh that follows the re-wetting front, no mobility floor;
+            see :mod:`transient.models.ball.front`) or ``"uniform"`` (``n_cells`` uniform cells: the earlier
+            formulation, with the mobility floor ``mobility_film`` if given; Chiu always uses it); ``refine``,
+            the front mesh's refinement factor (cell sizes and growth rates divided by it);
+            ``reservoir_distance``, where the undisturbed ambient film is [m] (default: the ball radius, more
+            than twice the contact half-width); ``bc`` ``"reservoir"`` (ambient film held there) or
+            ``"closed"`` (no flux: a closed groove); ``ridge_fraction``, the share of the oil pushed off the
+            track that stays on the race as side ridges, each ``ridge_width`` wide [m] (default ``a'``);
+            ``precursor_film``, the film the ball leaves on the band [m] (default: the outlet film of the pass,
+            half the central film on each surface, ``h_c/2``; a number replaces it by ``max(h_c/2, value)``, the
+            convergence study towards the physical value; the uniform grid keeps its earlier floor of 1 nm by
+            default, as its floor mobility can drain a cell below zero), below the ambient film;
+            ``mobility_film``, ``b`` [m] of a regularised mobility ``h^3 + b^3`` (0: none, the physical model;
+            ``h_inf/10`` was the earlier formulation's arbitrary floor), below the ambient film; ``edge_width``,
+            the width [m] of the wall of the depression (``grid="front"``; default ``a'/50``, at most ``a'/2``;
+            0 = the paper's rectangular depression, the limit it converges to); ``front_level``, ``front_tau``:
+            the front mesh follows the level ``front_level * h_out`` with relaxation time ``front_tau``
+            (scaled).
+        integration : :class:`~transient.solvers.settings.Integration` of the levelling between passes
+            (``method``, ``rtol``, ``atol`` in units of ``h_inf``, ``dt`` in units of the levelling time for
+            ``rk4``, ``linear_solver``); default ``Integration(method="cvode", atol=1e-10)``.
+        recording : ``Recording(record=("profiles",))`` keeps the film profile across the track before every
+            pass (``BallSequence.profiles``); default: none.
+        periodic_tol : relative change of ``h_inf`` over 3 passes that counts as periodic; stop_at_periodic: end
+            the sequence there.
+
+        The track and integration settings as loose keywords (``grid="uniform"``, ``rtol=1e-7``,
+        ``record_profiles=True``) are deprecated: they still work for one release, with a ``DeprecationWarning``
+        naming the new spelling (beside the object they belong in: an error).
 
         With ``contact="numerical"`` a pass whose inlet film is below 5 % of the flooded central film (the
         mass-conserving contact passes on less oil than it meets, so a parched sequence can run dry) ends the
         sequence before that pass: ``success=False``, ``final_regime`` parched, ``message`` naming the pass and
         the inlet film.
         """
-        ig = from_keywords(Integration, integration, "integration", dict(method="cvode", atol=1e-10), method=method,
-                           rtol=rtol, atol=atol, dt=dt, linear_solver=linear_solver)
+        tr, ig, rc = run_settings("ThrustBallBearing.sequence", legacy, SEQUENCE_KEYWORDS, SEQUENCE_DEFAULTS,
+                                  track=track, integration=integration, recording=recording).values()
         check_method("ThrustBallBearing.sequence", ig.method)
-        rc = from_keywords(Recording, recording, "recording",
-                           record=DEFAULT if record_profiles is DEFAULT else (("profiles",) if record_profiles else ()))
         rc.check_names(("profiles",))
         record_profiles = "profiles" in rc.record
-        check_choice("replenishment", replenishment, REPLENISHMENT)
-        check_choice("grid", grid, GRIDS)
+        replenishment, grid, n_cells, refine, reservoir_distance, bc, ridge_fraction, ridge_width, precursor_film, \
+            mobility_film, front_level, front_tau, edge_width = astuple(tr)
         n_passes = check_int("n_passes", n_passes, "-", 1, 1e9)
-        n_cells = check_int("n_cells", n_cells, "-", 8, 1e7)
         nodes = 401 if grid == "front" else n_cells
         check_memory(f"this sequence ({n_passes} passes on {nodes} nodes)",
                      dict(series=8.0 * 8 * n_passes + 60.0 * n_passes,
                           profiles=8.0 * nodes * n_passes * bool(record_profiles), track=200.0 * 8 * nodes),
-                     "lower n_passes, n_cells or record_profiles=False")
-        check_range("ridge_fraction", ridge_fraction, "-", 0.0, 1.0, low_open=False, high_open=False)
+                     "lower n_passes or n_cells, or leave out recording=Recording(record=(\"profiles\",))")
         c = self.hertz(load)
         ff = self.flooded_film(load, speed_rpm)
         check_range("ambient_film", ambient_film, "m", ff.h_c, 1e-2, low_open=False, high_open=True,
@@ -328,10 +334,6 @@ class ThrustBallBearing:
                         why="(below the ambient film)")
         check_range("mobility_film", mobility_film, "m", 0.0, ambient_film, low_open=False, high_open=True,
                     why="(below the ambient film)")
-        check_range("refine", refine, "-", 0.05, 64.0)
-        check_range("front_level", front_level, "-", 1.0, 1e3, low_open=True,
-                    why="(the level the front mesh follows, in units of the precursor film)")
-        check_range("front_tau", front_tau, "-", 0.0, 1e3, low_open=True)
         t_b = self.pass_interval(speed_rpm)
         a_p = c.a
         X = 0.5 * self.ball_diameter if reservoir_distance is None else reservoir_distance

@@ -23,6 +23,7 @@ import numpy as np
 from transient.models.ball.front import FrontLevelling, FrontMesh, remap, sine_hump_share
 from transient.models.ball.levelling import LevellingGrid, chiu_rate
 from transient.solvers.integrate import solve
+from transient.solvers.integrate import Steps
 
 
 class FrontTrack:
@@ -177,8 +178,8 @@ class UniformTrack:
 
     def relax(self, t: float, stats: dict, *, method="cvode", rtol=1e-6, atol=1e-10, linear_solver="auto", dt=None):
         if self.replenishment == "thin_film":
-            res = solve(self.grid.problem(self.h, name="ball_levelling"), np.array([0.0, t]), method=method,
-                        rtol=rtol, atol=atol, dt=dt, linear_solver=linear_solver)
+            res = solve(self.grid.problem(self.h, name="ball_levelling"), np.array([0.0, t]), method=method, rtol=rtol,
+                        atol=atol, steps=Steps(dt=dt), linear_solver=linear_solver)
             if not res.success:
                 raise RuntimeError(f"levelling failed ({method}): {res.message}")
             self.h = np.array(res.y[-1])

@@ -23,7 +23,7 @@ from transient.models.journal.results import FilmState
 from transient.models.journal.scales import (ContentScratch, FilmScales, RotorColumns, Scratch, cell_geometry,
                                              operator_tables)
 from transient.physics.layered import NO_LAYERS, Gecim, LayeredFilm
-from transient.solvers.newton import NewtonError, newton
+from transient.solvers.newton import NewtonError, NewtonSettings, newton
 
 
 #: Residual [max(1, |u|)] at which the chord iteration from a prolonged start stops (Film.solve(chord=True)).
@@ -161,15 +161,15 @@ class Film(FilmBlock):
         if chord and u0 is not None:
             try:
                 lu = lambda v, rate: spla.splu(J(v, rate), permc_spec=PROLONGED_ORDERING)  # noqa: E731
-                res = newton(G, lu, u, max_iter=max_iter, chord=True, name="film solve",
+                res = newton(G, lu, u, settings=NewtonSettings(max_iter=max_iter), chord=True, name="film solve",
                              converged=lambda v, r, dv: converged(v, r, dv, CHORD_RESIDUAL))
                 self.factorisations = res.n_factorisations
                 return res.x, res.iterations
             except NewtonError as e:
                 self.factorisations = e.result.n_factorisations  # and on from the same start, pseudo-transient
         try:
-            res = newton(G, J, u, pseudo_time=1.0 if u0 is None else 1e3, max_iter=max_iter, converged=converged,
-                         name="film solve")
+            res = newton(G, J, u, settings=NewtonSettings(pseudo_time=1.0 if u0 is None else 1e3, max_iter=max_iter),
+                         converged=converged, name="film solve")
         except NewtonError as e:
             raise RuntimeError(f"film solve did not converge in {max_iter} iterations at X={X:.4g}, Y={Y:.4g}: "
                                f"residual {e.result.residual_norm:.3e}") from None

@@ -24,7 +24,7 @@ from which ``run(..., resume=True)`` continues after a crash with nothing lost.
 from __future__ import annotations
 
 import hashlib
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Callable
 
 import numpy as np
@@ -42,9 +42,10 @@ from transient.models.journal.scales import Rotor
 from transient.models.journal.rk4 import FilmStageSolver
 from transient.models.journal.content_newton import bdf2_newton, decoupled_pattern
 from transient.solvers.integrate.bdf2 import Bdf2Model
-from transient.solvers.integrate import Problem, Stats
-from transient.solvers.longrun import run_long
-from transient.solvers.settings import DEFAULT, FORMULATIONS, Integration, LongRun, Recording, from_keywords
+from transient.solvers.integrate import Problem, Stats, Steps
+from transient.solvers.longrun import Display, run_long
+from transient.solvers.settings import (FORMULATIONS, Integration, LongRun, Recording, keyword_table,
+                                       run_settings)
 from transient.units import rpm_to_hz
 
 #: The content formulation's film state is O(1) in the full film, where the pressure is only its 1/beta_bar
@@ -62,6 +63,10 @@ BDF2_FILM_TOL = 1e-8
 BDF2_BAND_ROWS = 6.2
 RECORDABLE = ("force", "pressure", "film_content", "min_film", "mass", "outflow", "supply_flow", "side_leakage")
 FIELD_SERIES = ("pressure", "film_content")
+#: The loose keywords of :meth:`JournalOrbit.run` of earlier releases and the settings field each now is.
+RUN_KEYWORDS = (keyword_table("integration", Integration, ("method", "rtol", "atol", "steps_per_revolution",
+                                                           "inner_tolerance", "formulation"))
+                | keyword_table("recording", Recording) | keyword_table("long_run", LongRun))
 
 
 class JournalOrbit:
@@ -276,26 +281,27 @@ class JournalOrbit:
         grid's smaller dimension, plus the diagonal; the others: none)."""
         return BDF2_BAND_ROWS * min(self.bearing.grid_shape) + 1.0 if method == "bdf2" else 0.0
 
-    def run(self, revolutions, method=DEFAULT, rtol=DEFAULT, atol=DEFAULT, steps_per_revolution=DEFAULT,
-            outputs_per_revolution=DEFAULT, *, record=DEFAULT, record_from_revolution=DEFAULT,
-            chunk_revolutions=DEFAULT, checkpoint=DEFAULT, resume=DEFAULT, progress=DEFAULT, touch_gap=1e-3, y0=None,
-            inner_tolerance=DEFAULT, start=None, stop=DEFAULT, time_budget=DEFAULT, formulation=DEFAULT,
-            integration: Integration | None = None, recording: Recording | None = None,
-            long_run: LongRun | None = None) -> OrbitResult:
+    def run(self, revolutions, *, start=None, y0=None, touch_gap=1e-3, integration: Integration | None = None,
+            recording: Recording | None = None, long_run: LongRun | None = None, **legacy) -> OrbitResult:
         """Integrate ``revolutions`` shaft revolutions from the static equilibrium, from ``y0`` (a state at
         t = 0) or from ``start`` (a previous :class:`OrbitResult`, or ``(time [s], state)``: the run goes on
         from its final state and time, so the unbalance keeps its phase). The first output is the start.
 
-        The integration, recording and long-run settings come either as objects -- ``integration``
-        (:class:`~transient.solvers.settings.Integration`), ``recording`` (:class:`~transient.solvers.settings.Recording`),
-        ``long_run`` (:class:`~transient.solvers.settings.LongRun`) -- or as the keywords below, which build them
-        (a keyword that contradicts a given object is an error naming both). Keywords left out take the object's
-        or these defaults: ``method="ida"``, ``rtol=1e-6``, ``atol=1e-9``, ``inner_tolerance=1e-6``,
-        ``outputs_per_revolution=100``, ``record=()``, ``record_from_revolution=0``, ``resume=False``, the
-        others ``None``.
+        The settings that are not physics come as objects: ``integration``
+        (:class:`~transient.solvers.settings.Integration`: ``method``, ``rtol``, ``atol``, ``steps_per_revolution``,
+        ``inner_tolerance``, ``formulation``; default ``Integration()``: IDA, rtol 1e-6, atol 1e-9), ``recording``
+        (:class:`~transient.solvers.settings.Recording`: ``outputs_per_revolution``, ``record``,
+        ``record_from_revolution``; default 100 outputs per revolution, nothing extra) and ``long_run``
+        (:class:`~transient.solvers.settings.LongRun`: ``chunk_revolutions``, ``checkpoint``, ``resume``,
+        ``progress``, ``stop``, ``time_budget``), e.g.
+        ``run(20, integration=Integration(method="bdf2", rtol=1e-7), recording=Recording(record=("force",)))``.
+        The same settings as loose keywords (``rtol=1e-7``) are deprecated: they still work for one release, with a
+        ``DeprecationWarning`` naming the new spelling (beside the object they belong in: an error).
 
-        Parameters
-        ----------
+        Notes
+        -----
+        The fields of the settings objects:
+
         method : ``"cvode"``, ``"ida"``, ``"bdf"``, ``"radau"``, ``"lsoda"``, ``"rk4"`` or ``"bdf2"`` (variable-step
             BDF2 on the content film with its own Newton and a bordered band LU, error test on the rotor only:
             :mod:`transient.solvers.integrate.bdf2`; rtol and atol act on the rotor states, the film is solved every step to
@@ -338,13 +344,8 @@ class JournalOrbit:
             ``y0``, ``start`` and ``final_state`` are in the universal layout either way.
         """
         revolutions = check_positive("revolutions", revolutions, "rev")
-        ig = from_keywords(Integration, integration, "integration", dict(method="ida", atol=1e-9), method=method,
-                           rtol=rtol, atol=atol, steps_per_revolution=steps_per_revolution,
-                           inner_tolerance=inner_tolerance, formulation=formulation)
-        rc = from_keywords(Recording, recording, "recording", outputs_per_revolution=outputs_per_revolution,
-                           record=record, record_from_revolution=record_from_revolution)
-        lr = from_keywords(LongRun, long_run, "long_run", chunk_revolutions=chunk_revolutions, checkpoint=checkpoint,
-                           resume=resume, progress=progress, stop=stop, time_budget=time_budget)
+        ig, rc, lr = run_settings("JournalOrbit.run", legacy, RUN_KEYWORDS, integration=integration,
+                                  recording=recording, long_run=long_run).values()
         method = ig.method
         if ig.dt is not None:
             raise ValueError(f"dt = {ig.dt!r} [-] is not used by the orbit; allowed: steps_per_revolution (the fixed "
@@ -395,13 +396,13 @@ class JournalOrbit:
                    start_state=hashlib.sha256(np.ascontiguousarray(y).tobytes()).hexdigest()[:16])
         user_stop = None if lr.stop is None else (lambda r: lr.stop(r.result(method, Stats(), None, "", tau0)))
         y_run = self.content_state(y) if formulation == "content" else y
-        out = run_long(step.problem_at, y_run, tau0, two_pi / opr, n_out, rec, method=method, rtol=step.rtol,
-                       atol=step.atol, dt=step.dt, max_step=step.max_step, first_step=step.first_step,
-                       linear_solver=ig.linear_solver, options=step.options,
-                       chunk_outputs=max(1, int(round(chunk_revolutions * opr))), checkpoint=lr.checkpoint,
-                       resume=lr.resume, key=key, progress=lr.progress, unit=("rev", two_pi),
-                       label=f"orbit {self.speed_rpm:g} rpm", status=lambda: f"e/C = {rec.last_eps:.4f}",
-                       stop=user_stop, time_budget=lr.time_budget)
+        solver = dict(method=method, rtol=step.rtol, atol=step.atol, linear_solver=ig.linear_solver,
+                      options=step.options,
+                      steps=Steps(dt=step.dt, max_step=step.max_step, first_step=step.first_step))
+        out = run_long(step.problem_at, y_run, tau0, two_pi / opr, n_out, rec, solver=solver,
+                       long_run=replace(lr, stop=user_stop), chunk_outputs=max(1, int(round(chunk_revolutions * opr))),
+                       key=key, display=Display(f"orbit {self.speed_rpm:g} rpm", ("rev", two_pi),
+                                                lambda: f"e/C = {rec.last_eps:.4f}"))
         if method == "rk4":
             out.stats.n_jac = sum(s.n_factorisations for s in step.steppers)
         touched, message, success = None, out.message, out.success

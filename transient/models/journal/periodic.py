@@ -43,7 +43,8 @@ from transient.results import StatusResult, quantity, result_type
 from transient.solvers.integrate import solve
 from transient.solvers.settling import settled_stop, settles
 from transient.solvers.progress import progress_bar
-from transient.solvers.shooting import floquet_multipliers, newton_krylov, newton_picard
+from transient.solvers.shooting import ShootingSettings, floquet_multipliers, newton_krylov, newton_picard
+from transient.solvers.settings import Integration, LongRun, Recording
 
 METHODS = ("shooting", "newton-krylov")
 #: below this dominant multiplier the derivatives' noise (~rtol / fd_step) swamps the whirl pair: a continuation
@@ -271,13 +272,13 @@ def periodic_response(orbit: Orbit, rtol: float = 1e-6, tol: float | None = None
     if y0.shape != (orbit.n,):
         raise ValueError(f"start has shape {y0.shape}; this orbit has {orbit.n} states")
     two_pi = 2.0 * np.pi
-    kw = dict(tol=tol, rtol=rtol, rtol_max=max(rtol, 1e-4), norm=_Flow.norm, fd_step=fd_step, max_iter=max_iter)
+    kw = dict(tol=tol, rtol=rtol, rtol_max=max(rtol, 1e-4), fd_step=fd_step, max_iter=max_iter, relax=relax)
     if method == "shooting":
         V = whirl_basis(orbit, y0) if basis is None else np.asarray(basis, dtype=float)
-        sh = newton_picard(F, F.reduce(y0), two_pi, F.reduce(V), relax=relax,
-                           second_ritz=basis is None, refine_floor=REFINE_FLOOR, **kw)
+        sh = newton_picard(F, F.reduce(y0), two_pi, F.reduce(V), norm=_Flow.norm,
+                           settings=ShootingSettings(second_ritz=basis is None, refine_floor=REFINE_FLOOR, **kw))
     else:
-        sh = newton_krylov(F, F.reduce(y0), two_pi, relax=relax, **kw)
+        sh = newton_krylov(F, F.reduce(y0), two_pi, norm=_Flow.norm, settings=ShootingSettings(**kw))
     C = orbit.bearing.clearance
     state = F.embed(sh.state)
     periods, message, converged = sh.periods, sh.message, sh.success
@@ -321,8 +322,9 @@ def _settle(orbit: Orbit, state, rtol, tol, max_revolutions):
     C = orbit.bearing.clearance
     criterion = settles(tol, confirm=2, norm="max")
     rotor = lambda r: np.column_stack([r.x, r.y]) / C  # noqa: E731
-    r = orbit.run(int(max_revolutions), y0=state, rtol=rtol, atol=1e-3 * rtol, outputs_per_revolution=1,
-                  chunk_revolutions=2, stop=settled_stop(rotor, criterion), progress=False)
+    r = orbit.run(int(max_revolutions), y0=state, integration=Integration(rtol=rtol, atol=1e-3 * rtol),
+                  recording=Recording(outputs_per_revolution=1),
+                  long_run=LongRun(chunk_revolutions=2, stop=settled_stop(rotor, criterion), progress=False))
     ok = r.success and criterion(rotor(r)) is not None
     msg = (f"shooting did not converge; settled by time integration in {len(r.t) - 1} revolutions" if ok else
            f"shooting did not converge and time integration did not settle in {len(r.t) - 1} revolutions: {r.message}")
@@ -470,7 +472,8 @@ def quasi_periodic_response(orbit: Orbit, revolutions: int = 100, start=None, pe
     opr = int(outputs_per_revolution)
     y0 = orbit.linear_start() if start is None else np.array(getattr(start, "state", start), dtype=float)
     y0[orbit.film.n] += perturbation
-    r = orbit.run(revolutions, y0=y0, rtol=rtol, atol=1e-3 * rtol, outputs_per_revolution=opr, progress=False)
+    r = orbit.run(revolutions, y0=y0, integration=Integration(rtol=rtol, atol=1e-3 * rtol),
+                  recording=Recording(outputs_per_revolution=opr), long_run=LongRun(progress=False))
     px, py = r.x[::opr], r.y[::opr]
     half = (len(r.x) - 1) // opr // 2 * opr
     phase = 2.0 * np.pi * np.arange(half) / opr

@@ -12,7 +12,7 @@ import numpy as np
 
 from transient.models.journal.kernels import film_force, rotor_accelerations
 from transient.solvers.integrate import Problem
-from transient.solvers.newton import Chord, NewtonError, newton
+from transient.solvers.newton import Chord, NewtonError, NewtonSettings, newton
 
 
 class FilmStageSolver:
@@ -94,8 +94,8 @@ class FilmStageSolver:
             return done
 
         try:
-            res = newton(G, J, self.u_hist, chord=self.chord, converged=converged, max_iter=self.max_iter,
-                         name="RK4 film iteration")
+            res = newton(G, J, self.u_hist, chord=self.chord, converged=converged,
+                         settings=NewtonSettings(max_iter=self.max_iter), name="RK4 film iteration")
         except NewtonError:
             raise RuntimeError(f"RK4 film iteration did not reach the criterion {self.criterion} in {self.max_iter} "
                                f"iterations at tau = {t:.6g}") from None

@@ -74,6 +74,7 @@ from transient.surfaces.roughness import RoughSurface
 from transient.results import RunResult, quantity, result_type
 from transient.solvers.integrate import Problem, check_method, solve
 from transient.checks import check_int, check_memory, check_positive, check_range
+from transient.solvers.integrate import Steps
 
 __all__ = ["ThrustPad", "DescentResult", "pressure_flow_clamped", "rect_shape_factor"]
 
@@ -408,7 +409,7 @@ class ThrustPad:
         else:
             sysm = _ReducedODE(self, sc, grid=False)
         prob = sysm.problem()
-        res = solve(prob, t_eval, method=method, rtol=rtol, atol=atol, dt=dt, **solve_options)
+        res = solve(prob, t_eval, method=method, rtol=rtol, atol=atol, steps=Steps(dt=dt), **solve_options)
         out = sysm.outputs(res)
         pres = out.pop("pressure", None)
         success, message = res.success, res.message

@@ -36,6 +36,7 @@ from transient.physics import film_formulas as hd
 from transient.physics.hertz import hertz_contact
 from transient.physics.lubricant import DOWSON_HIGGINSON_PARK, Lubricant
 from transient.solvers.integrate import Problem, solve
+from transient.solvers.integrate import Steps
 
 #: nodes required inside the Hertz semi-axis b along the rolling direction
 MIN_NODES_PER_B = 4
@@ -422,7 +423,8 @@ class PointContact:
 
         problem = Problem(y0=u0, step_solve=FilmStep(film, u0, ratio), name="point contact (FBNS)")
         sol = solve(problem, np.linspace(0.0, t_end / ts, n_out), method="bdf2", rtol=rtol, atol=ATOL_PER_RTOL * rtol,
-                    first_step=1e-3, max_steps=max_steps, store=False, observer=observe, time_budget=time_budget)
+                    steps=Steps(first_step=1e-3, max_steps=max_steps), store=False, observer=observe,
+                    time_budget=time_budget)
         a = np.array(rows)
         T, u = problem.step_solve.last
         P, Th, h0 = film.split(u)

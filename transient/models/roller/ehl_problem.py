@@ -24,7 +24,7 @@ from transient.models.roller.grid import TensorGrid
 from transient.models.roller.kernels import N_SLOTS, assemble_dense, fischer_burmeister, penalty, reynolds_kernel
 from transient.physics.elasticity import SurfaceConvolution, line_influence, surface_influence
 from transient.physics.lubricant import Lubricant
-from transient.solvers.newton import newton
+from transient.solvers.newton import NewtonSettings, newton
 
 ELASTIC = ("dense", "fft", "rigid")
 
@@ -267,8 +267,9 @@ def solve_steady(film: EHLFilm, u0, *, tol: float = 1e-9, max_iter: int = 60, ja
     def converged(u, r, du):
         return float(np.max(np.abs(r))) <= tol and float(np.max(np.abs(du))) <= tol * max(1.0, float(np.max(np.abs(u))))
 
-    return newton(film.residual, jacobian or film.jacobian, u0, converged=converged, max_iter=max_iter,
-                  max_step=film.step_limit, pseudo_time=pseudo_time, name=name)
+    return newton(film.residual, jacobian or film.jacobian, u0, converged=converged,
+                  settings=NewtonSettings(max_iter=max_iter, pseudo_time=pseudo_time), max_step=film.step_limit,
+                  name=name)
 
 
 def interpolate_state(grid_from: TensorGrid, u_from, grid_to: TensorGrid) -> np.ndarray:

@@ -28,7 +28,7 @@ from transient.checks import check_positive, check_range
 from transient.models.roller.ehl_problem import EHLFilm
 from transient.models.roller.kernels import assemble_dense
 from transient.solvers.integrate import Problem, solve
-from transient.solvers.newton import newton
+from transient.solvers.newton import NewtonSettings, newton
 
 #: penalty factor of the transient's complementarity form (kernels.penalty): IDA's corrector fails where
 #: Fischer-Burmeister rows switch between differential and algebraic; the penalty keeps every row a
@@ -103,8 +103,8 @@ class SqueezeDAE:
 
         guess = y0.copy()  # off the Fischer-Burmeister kink (p = 0 and F = 0) where y0 has no pressure
         guess[:-1] = np.maximum(guess[:-1], 1e-3 * max(1.0, float(np.max(y0[:-1]))))
-        nr = newton(res, jac, guess, converged=converged, max_iter=50, max_step=self.film.step_limit,
-                    name="transient EHL start (backward-Euler step)")
+        nr = newton(res, jac, guess, converged=converged, settings=NewtonSettings(max_iter=50),
+                    max_step=self.film.step_limit, name="transient EHL start (backward-Euler step)")
         return t1, nr.x, (nr.x - y0) / dt0
 
 

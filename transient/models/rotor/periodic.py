@@ -16,7 +16,7 @@ import scipy.sparse.linalg as spla
 from transient.models.rotor.model import SystemDAE
 from transient.models.rotor.results import PeriodicResponse
 from transient.solvers.integrate import Problem, solve
-from transient.solvers.shooting import newton_picard
+from transient.solvers.shooting import ShootingSettings, newton_picard
 
 
 class PeriodMap:
@@ -88,8 +88,8 @@ def periodic_response(system, speed_rpm, rtol=1e-6, tol=None, modes=2, outputs_p
     V = dominant_basis(lin, qs[np.argsort(-qs.real)], modes)
     y0 = eq.state + lin.forced_response().real
     tol = rtol if tol is None else tol
-    sh = newton_picard(F, F.reduce(y0), 2 * np.pi, V, tol=tol, rtol=rtol, rtol_max=max(rtol, 1e-4), norm=F.norm,
-                       max_iter=max_iter, relax=1)
+    sh = newton_picard(F, F.reduce(y0), 2 * np.pi, V, norm=F.norm,
+                       settings=ShootingSettings(tol=tol, rtol=rtol, rtol_max=max(rtol, 1e-4), max_iter=max_iter, relax=1))
     F(sh.state, 0.0, 2 * np.pi, rtol)  # the orbit of the accepted state, at the final tolerance
     s = F.last
     q = s.y[:, dae.Q0:dae.V0] * dae.L

@@ -28,7 +28,7 @@ from scipy.integrate import quad
 from scipy.optimize import brentq
 
 from transient.checks import (check_bool, check_choice, check_instance, check_int, check_items, check_memory,
-                              check_positive, check_range, check_rtol, check_vector, memory_limit, short_repr)
+                              check_positive, check_range, check_vector, memory_limit, short_repr)
 from transient.models.journal.bearing import (FILM_BYTES_PER_CELL, GRID_ADVICE, SPEED_RANGE_RPM, JournalBearing,
                                               NoEquilibriumError, bearing_memory, check_speed)
 from transient.compile_notice import announce
@@ -39,12 +39,18 @@ from transient.models.rotor.model import SystemDAE
 from transient.models.rotor.results import RotorEquilibrium, RotorRunResult, UnbalanceResponse
 from transient.models.rotor.rotor import Rotor
 from transient.solvers.bandlu import BorderedBandLU
-from transient.solvers.integrate import Problem, Stats
-from transient.solvers.longrun import run_long
-from transient.solvers.newton import NewtonError, newton
+from transient.solvers.integrate import Problem, Stats, Steps
+from transient.solvers.longrun import Display, run_long
+from transient.solvers.settings import Integration, LongRun, Recording, check_unused, keyword_table, run_settings
+from transient.solvers.newton import NewtonError, NewtonSettings, newton
 from transient.units import rpm_to_rad_s
 
 RUN_METHODS = ("ida", "bdf2")
+#: The loose keywords of :meth:`RotorBearingSystem.run` of earlier releases and the settings field each now is.
+RUN_KEYWORDS = (keyword_table("integration", Integration, ("method", "rtol", "atol"))
+                | keyword_table("recording", Recording, ("outputs_per_revolution",))
+                | keyword_table("long_run", LongRun, ("checkpoint", "chunk_revolutions", "resume", "progress",
+                                                      "time_budget")))
 #: How :meth:`RotorBearingSystem.unbalance_response` linearised the bearings, by ``film_states``
 #: (``UnbalanceResponse.linearisation``).
 LINEARISATIONS = {True: "film states", False: "K and C"}
@@ -274,9 +280,10 @@ class RotorBearingSystem:
 
         try:
             try:
-                res = newton(F, J, y0, xtol=1e-11, ftol=1e-10, max_iter=30, name="rotor equilibrium")
+                res = newton(F, J, y0, settings=NewtonSettings(xtol=1e-11, ftol=1e-10, max_iter=30),
+                             name="rotor equilibrium")
             except NewtonError:
-                res = newton(F, J, y0, xtol=1e-11, ftol=1e-10, max_iter=300, pseudo_time=1.0,
+                res = newton(F, J, y0, settings=NewtonSettings(xtol=1e-11, ftol=1e-10, max_iter=300, pseudo_time=1.0),
                              name="rotor equilibrium")
         except NewtonError as exc:
             raise NoEquilibriumError(f"no static equilibrium of the rotor on its bearings at speed_rpm = "
@@ -413,9 +420,9 @@ class RotorBearingSystem:
                          f"{vals[0]:.3g} ... {vals[-1]:.3g} 1/s); allowed: a range where the growth rate changes sign")
 
     # ------------------------------------------------------------------------------------------
-    def run(self, revolutions, speed_rpm, method="ida", rtol=1e-6, start=None, checkpoint=None, *, atol=1e-9,
-            outputs_per_revolution=100, chunk_revolutions=None, resume=False, progress=None, touch_gap=1e-3,
-            time_budget=None, reference_speed_rpm=None) -> RotorRunResult:
+    def run(self, revolutions, speed_rpm, *, start=None, touch_gap=1e-3, reference_speed_rpm=None,
+            integration: Integration | None = None, recording: Recording | None = None,
+            long_run: LongRun | None = None, **legacy) -> RotorRunResult:
         """Integrate the rotor on its films over ``revolutions`` shaft revolutions.
 
         Parameters
@@ -424,35 +431,45 @@ class RotorBearingSystem:
             turns that often).
         speed_rpm [rpm] : a number, or a function of the time t [s] (run-up, coast-down): it enters the films'
             Couette flow and the unbalance force (angle = integral of the speed, plus the m e Omega' term).
-        method : ``"ida"`` (SUNDIALS IDA, sparse SuperLU on the block-arrow pattern) or ``"bdf2"`` (variable-step
-            BDF2 on the films' content form, a bordered band LU with one band block per film and the rotor as its
-            border, :mod:`~transient.models.rotor.content_form`; rtol and atol act on the rotor's coordinates and
+        integration : :class:`~transient.solvers.settings.Integration` (default ``Integration()``): ``method``
+            ``"ida"`` (SUNDIALS IDA, sparse SuperLU on the block-arrow pattern) or ``"bdf2"`` (variable-step BDF2 on
+            the films' content form, a bordered band LU with one band block per film and the rotor as its border,
+            :mod:`~transient.models.rotor.content_form`; rtol and atol act on the rotor's coordinates and
             velocities, every film is solved to the journal's Newton tolerance each step, at least
-            ``BDF2_MIN_STEPS`` steps per revolution at the reference speed).
-        rtol, atol : tolerances (atol on the dimensionless states: p/p0, journal position in clearances).
+            ``BDF2_MIN_STEPS`` steps per revolution at the reference speed); ``rtol``, ``atol`` (atol on the
+            dimensionless states: p/p0, journal position in clearances).
+        recording : :class:`~transient.solvers.settings.Recording`: ``outputs_per_revolution``, outputs per
+            revolution at the reference speed (default 100).
+        long_run : :class:`~transient.solvers.settings.LongRun`: ``checkpoint``, the path of an ``.npz``
+            rewritten after every chunk (``resume=True`` continues from it), ``chunk_revolutions`` (default: the
+            whole run, 10 with a checkpoint), ``progress``, ``time_budget`` [s of wall time].
         start : None (the static equilibrium at the start speed, at rest), a previous :class:`RotorRunResult`
             (continued from its final state and time, at its reference speed) or ``(t [s], state)`` (a state at this
             run's reference speed: e.g. ``linear_start``, ``equilibrium(...).state`` or a periodic response's at the
             run's constant speed).
-        checkpoint : path of an ``.npz`` rewritten after every chunk (``resume=True`` continues from it).
-        outputs_per_revolution : outputs per revolution at the reference speed.
         touch_gap : > 0 stops the run (``success=False``, ``touched_at``, the message naming the bearing node, the
             time and e/C) when a journal reaches e/C = 1 - touch_gap (with boundary layers 1 - 2 delta / C -
             touch_gap); 0 turns the detection off, but a run whose journal reaches the wall (a negative film) is
             still never a success.
         reference_speed_rpm : the speed of the films' pressure unit (default: the largest speed of the run;
             a continued run keeps its start's).
+
+        The settings as loose keywords (``method="bdf2"``, ``outputs_per_revolution=32``, ``checkpoint=PATH``) are
+        deprecated: they still work for one release, with a ``DeprecationWarning`` naming the new spelling (beside
+        the object they belong in: an error).
         """
         revolutions = check_positive("revolutions", revolutions, "rev")
-        check_choice("method", method, RUN_METHODS)
-        rtol = check_rtol(rtol)
-        atol = check_range("atol", atol, "-", 1e-30, 1.0)
-        opr = check_int("outputs_per_revolution", outputs_per_revolution, "1/rev", 1, 1_000_000)
+        ig, rc, lr = run_settings("RotorBearingSystem.run", legacy, RUN_KEYWORDS, integration=integration,
+                                  recording=recording, long_run=long_run).values()
+        check_choice("method", ig.method, RUN_METHODS)
+        check_unused("RotorBearingSystem.run", "integration", ig, ("steps_per_revolution", "formulation", "dt",
+                                                                   "linear_solver"))
+        check_unused("RotorBearingSystem.run", "recording", rc, ("record", "record_from_revolution"))
+        check_unused("RotorBearingSystem.run", "long_run", lr, ("stop",))
+        method, rtol, atol, opr = ig.method, ig.rtol, ig.atol, rc.outputs_per_revolution
+        chunk_revolutions, checkpoint = lr.chunk_revolutions, lr.checkpoint
         touch_gap = check_range("touch_gap", touch_gap, "-", 0.0, 1.0, high_open=True,
                                 why="(0 turns touch detection off)")
-        resume = check_bool("resume", resume)
-        if progress is not None:
-            progress = check_bool("progress", progress)
         n_out = max(1, int(round(revolutions * opr)))
         self._check_run_memory(n_out)
         t0, y = 0.0, None
@@ -512,7 +529,7 @@ class RotorBearingSystem:
             rec = _Recorder(self, dae, speed, form.universal_state)
             y_run = form.content_state(y)
             problem_at = lambda y_, tau_: form.problem(y_, tau_, events, n_events)  # noqa: E731
-            stepping = dict(max_step=2 * np.pi / BDF2_MIN_STEPS, first_step=2 * np.pi * 1e-4,
+            stepping = dict(steps=Steps(max_step=2 * np.pi / BDF2_MIN_STEPS, first_step=2 * np.pi * 1e-4),
                             options={"bdf2": form.model()})
         else:
             rec = _Recorder(self, dae, speed)
@@ -532,11 +549,10 @@ class RotorBearingSystem:
                    chunk_revolutions=chunk,
                    start_state=hashlib.sha256(np.ascontiguousarray(y).tobytes()).hexdigest()[:16])
         rec.last_y = y
-        out = run_long(problem_at, y_run, tau0, (tau_end - tau0) / n_out, n_out, rec, method=method, rtol=rtol,
-                       atol=dae.absolute_tolerance(atol), chunk_outputs=max(1, int(round(chunk * opr))),
-                       checkpoint=checkpoint, resume=resume, key=key, progress=progress,
-                       unit=("rev", (tau_end - tau0) / revolutions),
-                       label="rotor run", status=rec.status, time_budget=time_budget, **stepping)
+        solver = dict(method=method, rtol=rtol, atol=dae.absolute_tolerance(atol), **stepping)
+        out = run_long(problem_at, y_run, tau0, (tau_end - tau0) / n_out, n_out, rec, solver=solver, long_run=lr,
+                       chunk_outputs=max(1, int(round(chunk * opr))), key=key,
+                       display=Display("rotor run", ("rev", (tau_end - tau0) / revolutions), rec.status))
         touched, message, success = None, out.message, out.success
         if out.event is not None:
             touched = out.event[0] / w

@@ -45,17 +45,18 @@ import time
 from dataclasses import dataclass
 from typing import Callable
 
-from transient.checks import (check_atol, check_choice, check_count, check_rtol, check_step, check_times,
+from transient.checks import (check_atol, check_choice, check_rtol, check_step, check_times,
                               short_repr)
 from transient.solvers.integrate import bdf2, rk4, scipy_backend, sundials
 from transient.solvers.integrate.guard import SIGINT, Guard, Stop, first_nonfinite
 from transient.solvers.integrate.guard import nonfinite_probe as _nonfinite_probe  # noqa: F401 (tests probe it)
 from transient.solvers.integrate.outputs import Output
-from transient.solvers.integrate.problem import Problem, Settings, Solution, Stats
+from transient.solvers.integrate.problem import Problem, Settings, Solution, Stats, Steps
 from transient.solvers.integrate.sundials import LINEAR_SOLVERS
+from transient.solvers.legacy import run_settings
 
 __all__ = ["BACKENDS", "LINEAR_SOLVERS", "METHODS", "Backend", "Problem", "Settings", "Solution", "Stats", "check_method",
-           "methods_for", "solve"]
+           "methods_for", "solve", "Steps"]
 
 
 @dataclass(frozen=True)
@@ -84,6 +85,8 @@ BACKENDS: dict[str, Backend] = {
     "bdf2": Backend(bdf2.solve, step_solve=True),
 }
 METHODS = tuple(BACKENDS)
+#: The loose step keywords of :func:`solve` of earlier releases, now fields of ``steps=Steps(...)``.
+STEP_KEYWORDS = {name: ("steps", Steps, name) for name in ("dt", "max_step", "first_step", "max_steps")}
 
 
 def methods_for(step_solve: bool = False, among=METHODS) -> tuple:
@@ -107,10 +110,9 @@ def check_method(owner: str, method, *, step_solve: bool = False, among=METHODS)
 
 
 def solve(problem: Problem, t_eval, method: str = "cvode", rtol: float = 1e-6, atol=1e-8, *,
-          dt: float | None = None, max_step: float = 0.0, first_step: float = 0.0,
-          max_steps: int = 1_000_000, linear_solver: str = "auto", store: bool = True,
-          observer: Callable | None = None, options: dict | None = None,
-          time_budget: float | None = None) -> Solution:
+          steps: Steps | None = None, linear_solver: str = "auto", store: bool = True,
+          observer: Callable | None = None, options: dict | None = None, time_budget: float | None = None,
+          **legacy) -> Solution:
     """Integrate ``problem`` and return the state at the times ``t_eval`` (the first is the start).
 
     Parameters
@@ -118,9 +120,11 @@ def solve(problem: Problem, t_eval, method: str = "cvode", rtol: float = 1e-6, a
     method : one of ``"cvode"``, ``"ida"``, ``"bdf"``, ``"radau"``, ``"lsoda"``, ``"rk4"``, ``"bdf2"``.
     rtol, atol : tolerances of the adaptive methods (ignored by ``rk4``): ``rtol`` in (0, 1); ``atol``
         a finite number > 0 or an array of such numbers, one per state.
-    dt : the fixed step of ``rk4`` [same unit as t], finite and > 0; required for ``rk4``.
-    max_step, first_step : step limits of the adaptive methods (0 = free), finite and >= 0.
-    max_steps : upper bound on the number of steps in the whole run (an integer >= 1).
+    steps : :class:`Steps` -- ``dt``, the fixed step of ``rk4`` [same unit as t] (required for ``rk4``);
+        ``max_step``, ``first_step``, the step limits of the adaptive methods (0 = free); ``max_steps``, the most
+        steps of the whole run (default 1,000,000). E.g. ``solve(p, t, "rk4", steps=Steps(dt=0.01))``; the loose
+        keywords ``dt=``, ``max_step=``, ``first_step=``, ``max_steps=`` are deprecated (they still work for one
+        release, with a ``DeprecationWarning``).
     linear_solver : ``"auto"`` (sparse if the problem has a Jacobian pattern, band if it declares a
         band, dense otherwise), ``"sparse"``, ``"band"`` or ``"dense"`` (SUNDIALS methods).
     store : keep the outputs in ``Solution.y`` (False: only pass them to ``observer``).
@@ -144,15 +148,11 @@ def solve(problem: Problem, t_eval, method: str = "cvode", rtol: float = 1e-6, a
     backend = BACKENDS[check_choice("method", method, tuple(BACKENDS))]
     if not isinstance(problem, Problem):
         raise TypeError(f"problem must be a transient.Problem, got {type(problem).__name__}")
+    steps = run_settings("solve", legacy, STEP_KEYWORDS, steps=steps)["steps"]
     rtol = check_rtol(rtol)
     atol = check_atol(atol, problem.n)
-    max_steps = check_count("max_steps", max_steps)
-    max_step = check_step("max_step", max_step, free_zero=True)
-    first_step = check_step("first_step", first_step, free_zero=True)
-    if dt is not None or backend.fixed_step:
-        if dt is None:
-            raise ValueError(f"method {method!r} needs a fixed step dt > 0, got dt=None")
-        dt = check_step("dt", dt)
+    if backend.fixed_step and steps.dt is None:
+        raise ValueError(f"method {method!r} needs a fixed step dt > 0, got dt=None")
     check_choice("linear_solver", linear_solver, LINEAR_SOLVERS)
     if observer is not None and not callable(observer):
         raise ValueError(f"observer must be callable(t, y) or None, got {short_repr(observer)}")
@@ -165,8 +165,9 @@ def solve(problem: Problem, t_eval, method: str = "cvode", rtol: float = 1e-6, a
     if problem.yp0 is not None and first_nonfinite(problem.yp0) is not None:
         k, v, _ = first_nonfinite(problem.yp0)
         raise ValueError(f"problem '{problem.name}': yp0 must be finite, got yp0[{k}] = {float(v)!r}")
-    settings = Settings(method=method, rtol=rtol, atol=atol, dt=dt, max_step=max_step, first_step=first_step,
-                        max_steps=max_steps, linear_solver=linear_solver, options=options or {})
+    settings = Settings(method=method, rtol=rtol, atol=atol, dt=steps.dt, max_step=steps.max_step,
+                        first_step=steps.first_step, max_steps=steps.max_steps, linear_solver=linear_solver,
+                        options=options or {})
 
     guard = Guard(problem, method)
     out = Output(t_eval, problem.n, store, observer, with_yp=backend.outputs_yp, guard=guard)

@@ -1,6 +1,6 @@
 """What a model hands the integrator and what it gets back: :class:`Problem`, :class:`Stats`, :class:`Solution`,
-and :class:`Settings`, the validated arguments of one :func:`~transient.solvers.integrate.solve` call that every
-back end reads."""
+:class:`Steps` (the step control a caller may set) and :class:`Settings`, the validated arguments of one
+:func:`~transient.solvers.integrate.solve` call that every back end reads."""
 
 from __future__ import annotations
 
@@ -10,7 +10,7 @@ from typing import Callable, Sequence
 import numpy as np
 import scipy.sparse as sp
 
-from transient.checks import short_repr
+from transient.checks import check_count, check_step, short_repr
 from transient.results import Result, Stats, result_type
 
 
@@ -112,6 +112,28 @@ class Solution(Result):
     @property
     def y_final(self) -> np.ndarray:
         return self.y[-1]
+
+
+@dataclass(frozen=True)
+class Steps:
+    """The step control of one :func:`~transient.solvers.integrate.solve`, validated on creation.
+
+    ``dt`` the fixed step of ``rk4`` [the problem's time unit], finite and > 0 (required for ``rk4``, refused
+    by no method: the adaptive ones ignore it); ``max_step``, ``first_step`` step limits of the adaptive methods
+    [the problem's time unit], finite and >= 0 (0 = free); ``max_steps`` the most steps of the whole run, an
+    integer >= 1."""
+
+    dt: float | None = None
+    max_step: float = 0.0
+    first_step: float = 0.0
+    max_steps: int = 1_000_000
+
+    def __post_init__(self):
+        if self.dt is not None:
+            object.__setattr__(self, "dt", check_step("dt", self.dt))
+        object.__setattr__(self, "max_step", check_step("max_step", self.max_step, free_zero=True))
+        object.__setattr__(self, "first_step", check_step("first_step", self.first_step, free_zero=True))
+        object.__setattr__(self, "max_steps", check_count("max_steps", self.max_steps))
 
 
 @dataclass(frozen=True)
