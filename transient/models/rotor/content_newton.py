@@ -38,6 +38,7 @@ from transient.models.rotor.kernels import block_jacobian, scatter_block
 from transient.models.rotor.model import BlockMaps
 import transient.solvers.integrate.bdf2 as stepper
 from transient.solvers.integrate.bdf2 import newton_step
+from transient.solvers.read_only import as_read_only
 from transient.solvers.integrate.cache_guard import drop_stale_cache
 
 
@@ -142,8 +143,8 @@ def block_fields(y, f, X, Y):
             ym[i] = y[o + i]
         ym[n] = X
         ym[n + 1] = Y
-        content_universal(ym, switch, geo, free, u_fixed, work.theta, work.u)
-        state_fields(work.u, X, Y, switch, geo, fields, fv)
+        content_universal(as_read_only(ym), switch, geo, free, u_fixed, work.theta, work.u)
+        state_fields(as_read_only(work.u), X, Y, switch, geo, fields, fv)
         work.xy[0] = X
         work.xy[1] = Y
 
@@ -180,7 +181,7 @@ def rotor_residual(t, y, yp, out, args):
         X, Y = node_position(f, q)
         block_fields(y, f, X, Y)
         R = fields.R
-        stencil_flux(work.u, fields, fv, R, s)
+        stencil_flux(as_read_only(work.u), fields, fv, R, s)
         if s != 1.0:
             work.xy[0] = np.nan  # the Couette coefficients c are scaled now: not the fields of this state
         fx, fy = film_force(fields.P, geo.cosp, geo.sinp, geo.area, f.sym)
@@ -216,7 +217,8 @@ def rotor_jacobian(t, y, yp, cj, data, args):
         X, Y = node_position(f, q)
         block_fields(y, f, X, Y)
         u = work.u
-        block_jacobian(u, f.up, X, Y, 0.0, 0.0, s, cj, f.local, switch, geo, fields, extras, fv, f.sym)
+        block_jacobian(as_read_only(u), as_read_only(f.up), X, Y, 0.0, 0.0, s, cj, f.local, switch, geo, fields, extras,
+                       fv, f.sym)
         if s != 1.0:
             work.xy[0] = np.nan
         scatter_block(f.local, full, f.maps, f.ax, f.ay, f.gx, f.gy)
@@ -277,7 +279,7 @@ def rotor_to_state(z, y, args):
         switch, _, geo, fields, extras, fv, work, tol, regime = f.film
         o, n = f.offset, f.n
         X, Y = node_position(f, q)
-        state_fields(z[o:o + n], X, Y, switch, geo, fields, fv)
+        state_fields(as_read_only(z[o:o + n]), X, Y, switch, geo, fields, fv)
         H, C, u = fields.H, fields.C, work.u
         free, u_fixed = fv.cells.free, fv.cells.u_fixed
         for i in range(n):
@@ -311,7 +313,7 @@ def rotor_from_state(y, z, args):
             ym[i] = y[o + i]
         ym[n] = X
         ym[n + 1] = Y
-        content_universal(ym, switch, geo, fv.cells.free, fv.cells.u_fixed, work.theta, z[o:o + n])
+        content_universal(as_read_only(ym), switch, geo, fv.cells.free, fv.cells.u_fixed, work.theta, z[o:o + n])
         free = fv.cells.free
         for i in range(n):
             if not free[i]:
