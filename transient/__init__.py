@@ -17,6 +17,8 @@ Public API (re-exported here):
 * rotors on journal bearings: :class:`Rotor` (from matrices, ``Rotor.example()``, ``Rotor.from_ross``),
   :class:`RotorBearingSystem` (equilibrium, time runs with a transient film per bearing, linear unbalance
   response, stability threshold)
+* squeeze-film dampers on the journal film at zero spin: :class:`SqueezeFilmDamper` (``circular_orbit``: the film
+  forces on a circular centred orbit)
 * EHL of a tilted tapered roller (Park): :class:`LineContact`, :class:`TaperedRoller`, :class:`RollerContact`
 * EHL point contacts, flooded or starved, steady and transient: :class:`PointContact`
 * rough surfaces and asperity contact (Lee & Rhim): :class:`RoughSurface`, :func:`greenwood_tripp`,
@@ -37,6 +39,7 @@ _os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 from transient._version import __version__  # noqa: E402,F401
 from transient.analysis.acoustics import a_weighting
 from transient.models.ball import ThrustBallBearing
+from transient.models.damper import SqueezeFilmDamper
 from transient.models.journal import CircumferentialGroove, Groove, JournalBearing, JournalOrbit, OilHole, stability_onset
 from transient.models.pad import ThrustPad
 from transient.models.point import PointContact
@@ -55,6 +58,6 @@ __all__ = [
     "AsperityContact", "BoundaryLayers", "CircumferentialGroove", "DiscreteDensity", "Gecim", "Groove", "Integration",
     "LayeredFilm", "LongRun", "Newtonian", "JournalBearing", "JournalOrbit", "LineContact", "OilHole", "PointContact",
     "Problem", "Recording", "Result", "RollerContact", "Rotor", "RotorBearingSystem", "TaperedRoller",
-    "RoughSurface", "Solution", "Stats", "ThrustBallBearing", "ThrustPad", "a_weighting", "bearing_noise", "contact_factor",
+    "RoughSurface", "Solution", "SqueezeFilmDamper", "Stats", "ThrustBallBearing", "ThrustPad", "a_weighting", "bearing_noise", "contact_factor",
     "greenwood_tripp", "load_result", "pressure_flow_factors", "stability_onset", "shear_flow_factor", "solve", "steel_asperity_contact",
 ]
