@@ -67,6 +67,8 @@ def test_what_a_damper_refuses_in_the_system():
     s = RotorBearingSystem(Rotor.jeffcott(**ROTOR), {0: d, 2: d}, unbalance=[(1, 4e-4, 0.0)], gravity=9.81)
     with pytest.raises(ValueError, match="method"):
         s.run(1, SPEED, method="bdf2", progress=False)
-    with pytest.raises(ValueError, match="film_states"):
-        s.unbalance_response(SPEED, film_states=False)
+    for analysis in (lambda: s.unbalance_response(SPEED), lambda: s.unbalance_response(SPEED, film_states=False),
+                     lambda: s.periodic_response(SPEED)):
+        with pytest.raises(ValueError, match="quasi-static K and C"):
+            analysis()
     assert s.parameters()["bearings"]["0"]["damper"] is True

@@ -329,8 +329,10 @@ class RotorBearingSystem:
         """Each bearing's linearised stiffness K [N/m] and damping C [N s/m] (2x2, the bearing's frame) at the
         load it carries in the static equilibrium: ``{node: (K, C)}`` (``JournalBearing.coefficients``)."""
         if self.dampers:
-            raise ValueError(f"squeeze-film dampers at nodes {list(self.dampers)} have no quasi-static stiffness and "
-                             "damping here; allowed: the linearisation with the film states (film_states=True)")
+            raise ValueError(f"squeeze-film dampers at nodes {list(self.dampers)}: the linear analyses (coefficients, "
+                             "unbalance_response, eigenvalues, stability, periodic_response) start from each "
+                             "bearing's quasi-static K and C, which a damper does not give here; allowed with "
+                             "dampers: equilibrium and run")
         eq = self.equilibrium(speed_rpm) if equilibrium is None else equilibrium
         out, done = {}, {}
         for k, node in enumerate(self.bearing_nodes):
