@@ -28,7 +28,8 @@ DAMPER = dict(diameter=0.1, length=0.01, clearance=100e-6, viscosity=0.01)
 WHIRL_RPM = 6000.0
 P_SQUEEZE = DAMPER["viscosity"] * WHIRL_RPM * np.pi / 30.0 * (DAMPER["length"] / DAMPER["clearance"]) ** 2  # [Pa]
 #: the films drawn: name -> (SqueezeFilmDamper keywords, the closed form it is compared with or None)
-FILMS = {"Elrod film, supply 300 mu w (L/c)^2 (full)": (dict(supply_pressure=300 * P_SQUEEZE, bulk_modulus=1e12), "2pi"),
+FILMS = {"Elrod film, supply 300 mu w (L/c)^2 (full)": (dict(supply_pressure=300 * P_SQUEEZE, bulk_modulus=1e12),
+                                                        "2pi"),
          "Reynolds-condition film at p_c": (dict(supply_pressure=0.0, cavitation="reynolds"), "pi"),
          "Elrod film, supply 0.1 mu w (L/c)^2": (dict(supply_pressure=0.1 * P_SQUEEZE), None),
          "Elrod film, supply 0.01 mu w (L/c)^2": (dict(supply_pressure=0.01 * P_SQUEEZE), None)}
@@ -77,7 +78,8 @@ def main(argv=None):
     title = f"the Elrod film at e/c 0.5 from starved to full, grid {grid[0]}x{grid[1]}"
     log(f"written: {save(plots.supply_sweep(**sweep, title=title), out / 'squeeze_film_damper_supply.png')}")
     rec.put("wall_s", time.perf_counter() - t0)
-    log(f"[squeeze-film damper] done in {time.perf_counter() - t0:.0f} s; numbers in {out / 'squeeze_film_damper.json'}")
+    log(f"[squeeze-film damper] done in {time.perf_counter() - t0:.0f} s; numbers in "
+        f"{out / 'squeeze_film_damper.json'}")
     return rec.data
 
 

@@ -45,8 +45,8 @@ def land_forces(lands, eccentricity_ratio, whirl_speed, viscosity, radius, clear
     a closed land being half of an open land of twice its length."""
     radial = tangential = 0.0
     for length, closed in lands:
-        fr, ft = open_land_forces(eccentricity_ratio, whirl_speed, viscosity, radius, 2.0 * length if closed else length,
-                                  clearance, film)
+        span = 2.0 * length if closed else length
+        fr, ft = open_land_forces(eccentricity_ratio, whirl_speed, viscosity, radius, span, clearance, film)
         share = 0.5 if closed else 1.0
         radial, tangential = radial + share * fr, tangential + share * ft
     return radial, tangential
