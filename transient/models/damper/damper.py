@@ -84,12 +84,13 @@ class SqueezeFilmDamper:
                              "have them closed; allowed: end_seals = 'open', or feed = 'groove' or "
                              "CircumferentialGroove(...)")
         kind = _DamperFilm if self.end_seals == "closed" else JournalBearing
-        self.film = kind(diameter, length, clearance, viscosity, bulk_modulus=bulk_modulus,
+        self.bearing = kind(diameter, length, clearance, viscosity, bulk_modulus=bulk_modulus,
                          supply_pressure=self.supply_pressure, groove=groove, grid=grid, cavitation_pressure=p_c,
                          ambient_pressure=self.supply_pressure if groove is None else self.ambient_pressure,
                          cavitation=cavitation)
-        self.diameter, self.length, self.clearance = self.film.diameter, self.film.length, self.film.clearance
-        self.radius, self.viscosity = self.film.radius, self.film.viscosity
+        # the journal bearing whose film this is (the rotor system runs it at zero spin)
+        self.diameter, self.length, self.clearance = self.bearing.diameter, self.bearing.length, self.bearing.clearance
+        self.radius, self.viscosity = self.bearing.radius, self.bearing.viscosity
 
     @staticmethod
     def _feeds(feed, groove_width, length):
@@ -116,7 +117,7 @@ class SqueezeFilmDamper:
         return (f"SqueezeFilmDamper(diameter={self.diameter:g} m, length={self.length:g} m, "
                 f"clearance={self.clearance:g} m, viscosity={self.viscosity:g} Pa s, "
                 f"supply_pressure={self.supply_pressure:g} Pa, feed={self.feed!r}, end_seals={self.end_seals!r}, "
-                f"cavitation={self.cavitation!r}, grid={self.film.grid_shape})")
+                f"cavitation={self.cavitation!r}, grid={self.bearing.grid_shape})")
 
     @staticmethod
     def check_whirl(whirl_speed_rpm) -> float:
@@ -131,7 +132,7 @@ class SqueezeFilmDamper:
         the bearing's film at ``2 omega`` with the angles mirrored (module docstring)."""
         eps = check_range("eccentricity_ratio", eccentricity_ratio, "-", 0.0, 1.0, low_open=True, high_open=True)
         w = self.check_whirl(whirl_speed_rpm)
-        s = self.film.steady_state(eps, 2.0 * w)
+        s = self.bearing.steady_state(eps, 2.0 * w)
         # the bearing's angles run from the top (the minimum film at 180 deg with the journal at +x) in its direction
         # of rotation, against the whirl: from the minimum film in the whirl direction is 180 deg - angle
         order = np.argsort(np.mod(180.0 - s.angle_deg, 360.0), kind="stable")
@@ -146,10 +147,10 @@ class SqueezeFilmDamper:
     def lands(self) -> list[tuple[float, bool]]:
         """The film's lands on the modelled grid: (axial length [m], closed: one end sealed shut), the stretches of
         film between the feeds and the ends (the grooves' edges are the grid's cell faces)."""
-        g = self.film.grid
+        g = self.bearing.grid
         edges = g.z.edges * self.radius
-        fed = (self.film.feed_cells.reshape(g.nz, g.nx) >= 0).all(axis=1)
-        if self.film.symmetric:  # the whole length from the half
+        fed = (self.bearing.feed_cells.reshape(g.nz, g.nx) >= 0).all(axis=1)
+        if self.bearing.symmetric:  # the whole length from the half
             edges = np.concatenate([-edges[:0:-1], edges])
             fed = np.concatenate([fed[::-1], fed])
         closed_ends = self.end_seals == "closed"

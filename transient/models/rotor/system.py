@@ -93,7 +93,7 @@ class RotorBearingSystem:
                                  "system couples the mass-conserving films; the Reynolds-condition film serves the "
                                  "single bearing's steady and linear analyses)")
         self.dampers = {n: b for n, b in bearings.items() if isinstance(b, SqueezeFilmDamper)}
-        self.bearings = {n: b.film if n in self.dampers else b for n, b in bearings.items()}  # the dampers' films
+        self.bearings = {n: b.bearing if n in self.dampers else b for n, b in bearings.items()}  # dampers: their films
         self.stiffness = rotor.stiffness.copy()  # with the dampers' centring springs
         for node, d in self.dampers.items():
             if d.centring_stiffness:
