@@ -178,3 +178,12 @@ def test_order_spectra_track_the_1x_line_and_a_fixed_whirl_frequency():
     low = orders < 0.9
     whirl_hz = orders[low][np.argmax(amp[:, low], axis=1)] * speeds / 60.0
     assert np.allclose(whirl_hz, 12.0, atol=1.5)  # at its own frequency while the order falls
+
+
+def test_damper_figures_name_units():
+    eps = np.array([0.2, 0.5])
+    figs = [tp.damper.orbit_forces({"film": (eps, [-1.0, -3.0], [-2.0, -6.0])}, {"closed": (eps, [-1.1, -3.1], [-2.1, -6.1])},
+                                   "damper"),
+            tp.damper.supply_sweep(np.array([0.01, 1.0]), [0.5, 0.0], [0.2, 2.0], [0.9, 0.0], "sweep")]
+    for fig in figs:
+        assert figure_problems(fig) == []

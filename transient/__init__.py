@@ -19,6 +19,8 @@ Public API (re-exported here):
 * rotors on journal bearings: :class:`Rotor` (from matrices, ``Rotor.example()``, ``Rotor.from_ross``),
   :class:`RotorBearingSystem` (equilibrium, time runs with a transient film per bearing, linear unbalance
   response, stability threshold)
+* squeeze-film dampers on the journal film at zero spin: :class:`SqueezeFilmDamper` (``circular_orbit``: the film
+  forces on a circular centred orbit)
 * EHL of a tilted tapered roller (Park): :class:`LineContact`, :class:`TaperedRoller`, :class:`RollerContact`
 * EHL point contacts, flooded or starved, steady and transient: :class:`PointContact`
 * rough surfaces and asperity contact (Lee & Rhim): :class:`RoughSurface`, :func:`greenwood_tripp`,
@@ -40,6 +42,7 @@ from transient._version import __version__  # noqa: E402,F401
 from transient.analysis.acoustics import a_weighting
 from transient.models.ball import ThrustBallBearing
 from transient.models.ball.settings import TrackSettings
+from transient.models.damper import SqueezeFilmDamper
 from transient.models.journal import CircumferentialGroove, Groove, JournalBearing, JournalOrbit, OilHole, stability_onset
 from transient.models.pad import ThrustPad
 from transient.models.point import PointContact
@@ -59,6 +62,7 @@ __all__ = [
     "AsperityContact", "BoundaryLayers", "CircumferentialGroove", "DiscreteDensity", "Gecim", "Groove", "Integration",
     "LayeredFilm", "LongRun", "Newtonian", "JournalBearing", "JournalOrbit", "LineContact", "OilHole", "PointContact",
     "Problem", "Recording", "Result", "RollerContact", "Rotor", "RotorBearingSystem", "TaperedRoller",
-    "RoughSurface", "Settling", "Solution", "Stats", "Steps", "ThrustBallBearing", "ThrustPad", "TrackSettings", "a_weighting", "bearing_noise", "contact_factor",
+    "RoughSurface", "Settling", "Solution", "SqueezeFilmDamper", "Stats", "Steps", "ThrustBallBearing", "ThrustPad",
+    "TrackSettings", "a_weighting", "bearing_noise", "contact_factor",
     "greenwood_tripp", "load_result", "pressure_flow_factors", "stability_onset", "shear_flow_factor", "solve", "steel_asperity_contact",
 ]

@@ -225,6 +225,10 @@ class JournalBearing:
                 f"{'' if self.layers is None else ', layers'})")
 
     # ---------------------------------------------------------------------------------------------
+    #: The axial ends of the film: ``"dirichlet"`` (open, held at ``ambient_pressure``) or ``"symmetry"`` (closed: no
+    #: flow through them; :class:`~transient.models.damper.damper.SqueezeFilmDamper` with ``end_seals="closed"``).
+    end_kind = "dirichlet"
+
     def _build_grid(self):
         check_bearing_memory(self.grid_shape)
         n_theta, n_axial = self.grid_shape
@@ -232,9 +236,9 @@ class JournalBearing:
         half = 0.5 * self.length / R
         x = Axis.uniform(n_theta, 2 * np.pi, start=0.0, centred=True, periodic=True, name="theta")
         if self.symmetric:
-            z = Axis.uniform(n_axial, half, start=0.0, lower="symmetry", upper="dirichlet", name="z")
+            z = Axis.uniform(n_axial, half, start=0.0, lower="symmetry", upper=self.end_kind, name="z")
         else:
-            z = Axis.uniform(n_axial, 2 * half, start=-half, lower="dirichlet", upper="dirichlet", name="z")
+            z = Axis.uniform(n_axial, 2 * half, start=-half, lower=self.end_kind, upper=self.end_kind, name="z")
         phi, zc = np.tile(x.centres, z.n), np.repeat(z.centres, x.n) * R
         self.feed_cells = feed_labels(self.feeds, phi, zc, R)  # feed index per cell, -1 in the film
         self.grid = Grid2D(x, z, fixed=self.feed_cells >= 0 if self.feeds else None, fixed_values=0.0)

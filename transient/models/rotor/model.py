@@ -7,7 +7,8 @@ State (dimensionless; ``L`` the smallest bearing clearance, ``tau = omega_ref t`
 
 ``phi`` is the shaft angle (``phi' = s``, ``s = Omega(t) / omega_ref``). Equations::
 
-    film b:      A (H D u' + theta (X_b' cos + Y_b' sin)) + R(u; s) = 0,   X_b = (L / C_b) t_x,b . q~  (kernels.py)
+    film b:      A (H D u' + theta (X_b' cos + Y_b' sin)) + R(u; s) = 0,   X_b = (L / C_b) t_x,b . q~  (kernels.py;
+                 a squeeze-film damper's film at s = 0: its journal does not turn)
     kinematics:  q~' - v = 0
     momentum:    M v' + (C / omega_ref + s G) v + K / omega_ref^2 q~ = sum_b (t_x,b F_x,b + t_y,b F_y,b) / (L omega_ref^2)
                  + g_load / (L omega_ref^2) + sum_unbalance t_u (m e / L) (s^2 cos(phi + a) + s' sin(phi + a),
@@ -50,10 +51,11 @@ class BlockMaps(NamedTuple):
 class BearingBlock:
     """One bearing's film in the system: its node, the film at the reference speed, its offset in the state,
     the rotor coordinates its node moves with (``support``), ``ax``, ``ay`` (node position in C_b per q~) and
-    ``gx``, ``gy`` (the generalised force per unit of ``Fbar`` in the momentum rows)."""
+    ``gx``, ``gy`` (the generalised force per unit of ``Fbar`` in the momentum rows); ``spin``: 1 for a journal
+    bearing (its journal turns with the shaft), 0 for a squeeze-film damper (its journal is pinned: no Couette flow)."""
 
-    def __init__(self, node, bearing, film, offset, translation, length, omega_ref):
-        self.node, self.bearing, self.film, self.offset = node, bearing, film, offset
+    def __init__(self, node, bearing, film, offset, translation, length, omega_ref, spin=1.0):
+        self.node, self.bearing, self.film, self.offset, self.spin = node, bearing, film, offset, spin
         self.n = film.n
         support = np.flatnonzero(np.any(translation != 0.0, axis=0))
         self.support = support
@@ -151,7 +153,8 @@ class SystemDAE:
         off = 0
         for node, bearing in system.bearings.items():
             film = bearing.film(speed_ref_rpm)
-            self.blocks.append(BearingBlock(node, bearing, film, off, rotor.translation(node), L, w))
+            spin = 0.0 if node in system.dampers else 1.0
+            self.blocks.append(BearingBlock(node, bearing, film, off, rotor.translation(node), L, w, spin))
             off += film.n
         self.n_film = off
         self.nq = nq = rotor.n
@@ -160,11 +163,11 @@ class SystemDAE:
         self.M = rotor.mass
         self.Cw = rotor.damping / w
         self.G = rotor.gyroscopic  # times s: Omega G / omega_ref
-        self.Kw = rotor.stiffness / w ** 2
+        self.Kw = system.stiffness / w ** 2  # the rotor's, with the dampers' centring springs
         self.f_static = system.gravity_vector @ rotor.gravity_load / (L * w ** 2)
         self.unbalance = [(rotor.translation(node) * me / L, np.radians(phase)) for node, me, phase
                           in system.unbalance]
-        self.q_mask = rotor.stiffness != 0
+        self.q_mask = system.stiffness != 0
         self.v_mask = (rotor.mass != 0) | (rotor.damping != 0) | (rotor.gyroscopic != 0)
         np.fill_diagonal(self.v_mask, True)
         self.phi_rows = np.flatnonzero(np.any([np.any(T != 0, axis=0) for T, _ in self.unbalance], axis=0)) \
@@ -194,8 +197,8 @@ class SystemDAE:
             Xd, Yd = b.position(qp)
             fl = b.film
             o = b.offset
-            fx, fy = block_residual(y[o:o + b.n], yp[o:o + b.n], X, Y, Xd, Yd, s, out[o:o + b.n], fl.switch, fl.geo,
-                                    fl.fields, fl.fv, fl.sym)
+            fx, fy = block_residual(y[o:o + b.n], yp[o:o + b.n], X, Y, Xd, Yd, s * b.spin, out[o:o + b.n], fl.switch,
+                                    fl.geo, fl.fields, fl.fv, fl.sym)
             self.forces[k] = fx, fy
             f[b.support] += b.gx * fx + b.gy * fy
         out[Q0:V0] = qp - v
@@ -211,8 +214,8 @@ class SystemDAE:
             Xd, Yd = b.position(qp)
             fl = b.film
             o = b.offset
-            block_jacobian(y[o:o + b.n], yp[o:o + b.n], X, Y, Xd, Yd, s, cj, b.local, fl.switch, fl.geo, fl.fields,
-                           fl.extras, fl.fv, fl.sym)
+            block_jacobian(y[o:o + b.n], yp[o:o + b.n], X, Y, Xd, Yd, s * b.spin, cj, b.local, fl.switch, fl.geo,
+                           fl.fields, fl.extras, fl.fv, fl.sym)
             scatter_block(b.local, data, b.maps, b.ax, b.ay, b.gx, b.gy)
         kin_q, kin_v, mom_q, mom_v, mom_phi, phi_phi = self.rotor_pos
         data[kin_q] = cj

@@ -33,6 +33,7 @@ from transient.models.journal.bearing import (FILM_BYTES_PER_CELL, GRID_ADVICE, 
                                               NoEquilibriumError, bearing_memory, check_speed)
 from transient.compile_notice import announce
 from transient.models.journal.film import read_only
+from transient.models.damper.damper import SqueezeFilmDamper
 from transient.models.journal.orbit import BDF2_MIN_STEPS, wall_crossing
 from transient.models.rotor.content_form import ContentSystem
 from transient.models.rotor.model import SystemDAE
@@ -71,7 +72,10 @@ class RotorBearingSystem:
     Parameters (SI)
     ----------
     rotor : the rotor.
-    bearings : ``{node: JournalBearing}``; a bearing node must carry x and y.
+    bearings : ``{node: JournalBearing or SqueezeFilmDamper}``; a bearing node must carry x and y. A damper's
+        journal does not turn (its film has no Couette flow) and its centring spring, if any, joins the rotor's
+        stiffness at its node; a damper in series with a rolling bearing is a node of its own in the rotor's
+        matrices, joined to the shaft by the rolling bearing's stiffness.
     unbalance : ``[(node, m e [kg m], phase [deg]), ...]``: each unbalance's force ``m e Omega^2`` rotates with
         the shaft from ``phase`` (measured from +x in the direction of rotation at t = 0).
     gravity [m/s^2] : a number (acting along +x, the bearings' load direction) or an (x, y) vector.
@@ -85,7 +89,8 @@ class RotorBearingSystem:
         for node, b in bearings.items():
             if isinstance(node, (bool, np.bool_)) or node not in rotor.nodes:
                 raise ValueError(f"bearings: node = {node!r} is not a node of the rotor; allowed: {rotor.nodes}")
-            check_instance(f"bearings[{node!r}]", b, JournalBearing, "a JournalBearing")
+            check_instance(f"bearings[{node!r}]", b, (JournalBearing, SqueezeFilmDamper),
+                           "a JournalBearing or a SqueezeFilmDamper")
             if not np.any(rotor.translation(node)):
                 raise ValueError(f"bearings: node {node!r} does not move in this rotor's coordinates")
         for node, b in bearings.items():
@@ -93,7 +98,13 @@ class RotorBearingSystem:
                 raise ValueError(f"bearings[{node!r}] cavitation = {b.cavitation!r}; allowed: \"elrod\" (the rotor "
                                  "system couples the mass-conserving films; the Reynolds-condition film serves the "
                                  "single bearing's steady and linear analyses)")
-        self.bearings = dict(bearings)
+        self.dampers = {n: b for n, b in bearings.items() if isinstance(b, SqueezeFilmDamper)}
+        self.bearings = {n: b.bearing if n in self.dampers else b for n, b in bearings.items()}  # dampers: their films
+        self.stiffness = rotor.stiffness.copy()  # with the dampers' centring springs
+        for node, d in self.dampers.items():
+            if d.centring_stiffness:
+                T = rotor.translation(node)
+                self.stiffness += d.centring_stiffness * T.T @ T
         self.length_scale = min(b.clearance for b in self.bearings.values())
         self.unbalance = self._check_unbalance(unbalance)
         if np.ndim(gravity) == 0:
@@ -221,6 +232,13 @@ class RotorBearingSystem:
             b = self.bearings[node]
             blk = next(k for k in dae.blocks if k.node == node)
             load = float(np.hypot(*W))
+            if node in self.dampers:
+                X, Y = self._damper_start(node, W, load > 1e-12 * max(1.0, np.abs(rhs).max()))
+                sc = blk.film.scales
+                y[blk.offset:blk.offset + blk.n] = max(sc.u_ambient, float(np.max(sc.u_supply, initial=0.0)))
+                T = r.translation(node)
+                rhs = rhs + ks * T.T @ (np.array([X, Y]) * b.clearance)
+                continue
             if load < 1e-12 * max(1.0, np.abs(rhs).max()):
                 X = Y = 0.0
                 u = None
@@ -243,6 +261,20 @@ class RotorBearingSystem:
         q = _solve(self._supported(ks), rhs)
         y[dae.Q0:dae.V0] = q / dae.L
         return y
+
+    def _damper_start(self, node, W, loaded):
+        """(X, Y) [C] of a damper's journal where its centring spring carries its static load ``W`` [N] (its film,
+        at rest and not turning, carries none; it starts full at the highest of its feed and end pressures)."""
+        d = self.dampers[node]
+        if not loaded:
+            return 0.0, 0.0
+        if not d.centring_stiffness:
+            raise NoEquilibriumError(f"the squeeze-film damper at node {node} carries a static load of "
+                                     f"{float(np.hypot(*W)):.6g} N without a centring spring (its film does not turn "
+                                     "and carries no static load); allowed: centring_stiffness > 0, or no gravity on "
+                                     "it")
+        X, Y = np.asarray(W, dtype=float) / (d.centring_stiffness * d.clearance)
+        return float(X), float(Y)
 
     def _steady(self, dae, s, y0=None) -> np.ndarray:
         """Newton on the system at rest (``y' = 0``, no unbalance) at speed ratio ``s``: the films' steady
@@ -303,6 +335,11 @@ class RotorBearingSystem:
     def coefficients(self, speed_rpm, equilibrium: RotorEquilibrium | None = None) -> dict:
         """Each bearing's linearised stiffness K [N/m] and damping C [N s/m] (2x2, the bearing's frame) at the
         load it carries in the static equilibrium: ``{node: (K, C)}`` (``JournalBearing.coefficients``)."""
+        if self.dampers:
+            raise ValueError(f"squeeze-film dampers at nodes {list(self.dampers)}: the linear analyses (coefficients, "
+                             "unbalance_response, eigenvalues, stability, periodic_response) start from each "
+                             "bearing's quasi-static K and C, which a damper does not give here; allowed with "
+                             "dampers: equilibrium and run")
         eq = self.equilibrium(speed_rpm) if equilibrium is None else equilibrium
         out, done = {}, {}
         for k, node in enumerate(self.bearing_nodes):
@@ -462,6 +499,9 @@ class RotorBearingSystem:
         ig, rc, lr = run_settings("RotorBearingSystem.run", legacy, RUN_KEYWORDS, integration=integration,
                                   recording=recording, long_run=long_run).values()
         check_choice("method", ig.method, RUN_METHODS)
+        if ig.method == "bdf2" and self.dampers:
+            raise ValueError(f"method = 'bdf2' with squeeze-film dampers at nodes {list(self.dampers)}; allowed: "
+                             "method = 'ida'")
         check_unused("RotorBearingSystem.run", "integration", ig, ("steps_per_revolution", "formulation", "dt",
                                                                    "linear_solver"))
         check_unused("RotorBearingSystem.run", "recording", rc, ("record", "record_from_revolution"))
@@ -624,7 +664,9 @@ class RotorBearingSystem:
         for a in (r.mass, r.stiffness, r.damping, r.gyroscopic, r.basis, r.gravity_load):
             h.update(np.ascontiguousarray(a).tobytes())
         return dict(rotor=h.hexdigest()[:16], nodes=list(r.nodes), dofs=list(r.dofs),
-                    bearings={str(n): b.parameters() for n, b in self.bearings.items()},
+                    bearings={str(n): dict(b.parameters(), **({} if n not in self.dampers else dict(
+                        damper=True, centring_stiffness=self.dampers[n].centring_stiffness)))
+                        for n, b in self.bearings.items()},
                     unbalance=[list(u) for u in self.unbalance], gravity=list(self.gravity_vector))
 
 

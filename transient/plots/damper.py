@@ -1,0 +1,47 @@
+"""Figures of a squeeze-film damper's circular centred orbits (:meth:`transient.SqueezeFilmDamper.circular_orbit`)."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from transient.plots import figure, suptitle
+
+
+def orbit_forces(curves: dict, closed: dict, title: str):
+    """The tangential and radial film forces against the eccentricity ratio: ``curves`` name -> (eccentricity ratios,
+    radial forces [N], tangential forces [N]) of the film (markers), ``closed`` name -> the same of a closed form
+    (black lines). Forces are drawn as magnitudes ``-F_t`` and ``-F_r`` (a damping film and a centring pull)."""
+    fig, axes = figure(1, 2, size=(12.0, 4.8))
+    for (name, (eps, fr, ft)), style in zip(closed.items(), ("-", "--", ":", "-.")):
+        axes[0].plot(eps, -np.asarray(ft), style, color="k", lw=1.0, label=name)
+        axes[1].plot(eps, -np.asarray(fr), style, color="k", lw=1.0, label=name)
+    for name, (eps, fr, ft) in curves.items():
+        axes[0].plot(eps, -np.asarray(ft), "o", ms=4, mfc="none", label=name)
+        axes[1].plot(eps, -np.asarray(fr), "o", ms=4, mfc="none", label=name)
+    for ax, what in zip(axes, ("tangential force -F_t [N] (damping)", "radial force -F_r [N] (towards the centre)")):
+        ax.set(xlabel="orbit radius / clearance  e/c [-]", ylabel=what, yscale="log")
+        ax.grid(True, which="both", lw=0.3)
+    axes[0].legend(fontsize=8)
+    suptitle(fig, title)
+    return fig
+
+
+def supply_sweep(pressure_ratio, radial_share, tangential_share, cavitated, title: str):
+    """The film forces on one orbit against the supply pressure (``pressure_ratio``: over mu w (L/c)^2), as shares of
+    the pi-film's closed forms, and the cavitated share of the film."""
+    fig, axes = figure(1, 2, size=(12.0, 4.5))
+    ax = axes[0]
+    ax.plot(pressure_ratio, tangential_share, "o-", ms=4, label="tangential F_t / F_t(pi-film)")
+    ax.plot(pressure_ratio, radial_share, "s-", ms=4, label="radial F_r / F_r(pi-film)")
+    for level, text in ((1.0, "pi-film"), (2.0, "2-pi film: F_t")):
+        ax.axhline(level, color="0.5", lw=0.8, ls="--")
+        ax.annotate(text, (pressure_ratio[0], level), fontsize=8, va="bottom")
+    ax.set(xscale="log", xlabel="supply pressure / (mu w (L/c)^2) [-]", ylabel="force / pi-film closed form [-]")
+    ax.legend(fontsize=8)
+    ax.grid(True, which="both", lw=0.3)
+    axes[1].plot(pressure_ratio, cavitated, "o-", ms=4)
+    axes[1].set(xscale="log", xlabel="supply pressure / (mu w (L/c)^2) [-]", ylabel="cavitated share of the film [-]",
+                ylim=(-0.02, 1.02))
+    axes[1].grid(True, which="both", lw=0.3)
+    suptitle(fig, title)
+    return fig
