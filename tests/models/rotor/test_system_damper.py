@@ -6,7 +6,7 @@ is a circular centred orbit whose film force is the damper's own steady whirling
 import numpy as np
 import pytest
 
-from transient import Rotor, RotorBearingSystem, SqueezeFilmDamper
+from transient import Integration, LongRun, Recording, Rotor, RotorBearingSystem, SqueezeFilmDamper
 from transient.models.journal.bearing import NoEquilibriumError
 
 C = 200e-6
@@ -20,7 +20,8 @@ def _settled_forces(grid, revolutions, rtol):
     the damper."""
     d = SqueezeFilmDamper(**DAMPER, grid=grid)
     s = RotorBearingSystem(Rotor.jeffcott(**ROTOR), {0: d, 2: d}, unbalance=[(1, 4e-4, 0.0)], gravity=0.0)
-    r = s.run(revolutions, SPEED, rtol=rtol, outputs_per_revolution=16, progress=False)
+    r = s.run(revolutions, SPEED, integration=Integration(rtol=rtol), recording=Recording(outputs_per_revolution=16),
+              long_run=LongRun(progress=False))
     assert r.success, r.message
     x, y = (v[-17:] for v in r.position(0))
     F = r.bearing_force[-17:, 0, :]
@@ -67,7 +68,7 @@ def test_what_a_damper_refuses_in_the_system():
     d = SqueezeFilmDamper(**DAMPER, grid=(16, 4))
     s = RotorBearingSystem(Rotor.jeffcott(**ROTOR), {0: d, 2: d}, unbalance=[(1, 4e-4, 0.0)], gravity=9.81)
     with pytest.raises(ValueError, match="method"):
-        s.run(1, SPEED, method="bdf2", progress=False)
+        s.run(1, SPEED, integration=Integration(method="bdf2"), long_run=LongRun(progress=False))
     for analysis in (lambda: s.unbalance_response(SPEED), lambda: s.unbalance_response(SPEED, film_states=False),
                      lambda: s.periodic_response(SPEED)):
         with pytest.raises(ValueError, match="quasi-static K and C"):
