@@ -186,3 +186,18 @@ def test_a_mix_of_film_kinds_is_refused():
                            gravity=G)
     with pytest.raises(ValueError, match='method "bdf2" takes bearings of one film kind'):
         ContentSystem(s.dae(6000.0))
+
+
+def test_step_cap_is_per_shaft_revolution(bearing):
+    """The step cap (``BDF2_MIN_STEPS`` per revolution) is in shaft angle: at half the reference speed a loose
+    tolerance takes as many steps per shaft revolution as at the reference speed (not twice as many), and the
+    orbit agrees with IDA as closely."""
+    s = one_node(bearing)
+    kw = dict(method="bdf2", rtol=1e-3, outputs_per_revolution=20, progress=False)
+    own = s.run(0.5, 3000.0, **kw)
+    half = s.run(0.5, 3000.0, reference_speed_rpm=6000.0, **kw)
+    ida = s.run(0.5, 3000.0, rtol=1e-8, atol=1e-10, outputs_per_revolution=20)
+    assert own.success and half.success
+    assert half.stats.n_steps < 1.1 * own.stats.n_steps, (half.stats.n_steps, own.stats.n_steps)
+    err = [np.max(np.abs(r.displacement - ida.displacement)) / bearing.clearance for r in (own, half)]
+    assert err[1] < 2 * err[0] + 1e-6, err

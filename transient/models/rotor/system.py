@@ -45,6 +45,9 @@ from transient.solvers.newton import NewtonError, newton
 from transient.units import rpm_to_rad_s
 
 RUN_METHODS = ("ida", "bdf2")
+#: ``method="bdf2"``: its step cap is ``BDF2_MIN_STEPS`` per shaft revolution at the speed of the step, down to this
+#: fraction of the reference speed (below it, per revolution at this fraction)
+MIN_CAP_SPEED = 0.1
 #: How :meth:`RotorBearingSystem.unbalance_response` linearised the bearings, by ``film_states``
 #: (``UnbalanceResponse.linearisation``).
 LINEARISATIONS = {True: "film states", False: "K and C"}
@@ -428,7 +431,8 @@ class RotorBearingSystem:
             BDF2 on the films' content form, a bordered band LU with one band block per film and the rotor as its
             border, :mod:`~transient.models.rotor.content_form`; rtol and atol act on the rotor's coordinates and
             velocities, every film is solved to the journal's Newton tolerance each step, at least
-            ``BDF2_MIN_STEPS`` steps per revolution at the reference speed).
+            ``BDF2_MIN_STEPS`` steps per shaft revolution at the step's speed, down to ``MIN_CAP_SPEED`` of the
+            reference speed).
         rtol, atol : tolerances (atol on the dimensionless states: p/p0, journal position in clearances).
         start : None (the static equilibrium at the start speed, at rest), a previous :class:`RotorRunResult`
             (continued from its final state and time, at its reference speed) or ``(t [s], state)`` (a state at this
@@ -512,8 +516,11 @@ class RotorBearingSystem:
             rec = _Recorder(self, dae, speed, form.universal_state)
             y_run = form.content_state(y)
             problem_at = lambda y_, tau_: form.problem(y_, tau_, events, n_events)  # noqa: E731
+            # the step cap in shaft angle (the films' fronts move with the shaft): BDF2_MIN_STEPS per revolution
+            # at any speed down to MIN_CAP_SPEED of the reference speed, not per revolution at the reference speed
+            cap_scale = lambda tau: 1.0 / max(speed(tau)[0], MIN_CAP_SPEED)  # noqa: E731
             stepping = dict(max_step=2 * np.pi / BDF2_MIN_STEPS, first_step=2 * np.pi * 1e-4,
-                            options={"bdf2": form.model()})
+                            options={"bdf2": form.model(), "max_step_scale": cap_scale})
         else:
             rec = _Recorder(self, dae, speed)
             y_run = y
