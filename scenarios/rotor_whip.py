@@ -1,7 +1,7 @@
 """Oil whirl and whip of a flexible rotor on two plain journal bearings: a run-up through its first critical
 speed to twice the whirl onset, and the coast-down back.
 
-    transient run scenarios/rotor_whip.py [--quick] [--out DIR] [--grid 151 21] [--revolutions 400] [--method bdf2]
+    transient run scenarios/rotor_whip.py [--quick] [--out DIR] [--grid 76 11] [--revolutions 400] [--method bdf2]
                                           [--fresh]
 
 The built-in flexible rotor (``Rotor.example()``: an 80 mm steel shaft of 1.2 m with a 400 mm disk at mid-span,
@@ -22,11 +22,16 @@ Writes DIR/campbell.png, response.png, waterfall_run_up.png, waterfall_coast_dow
 DIR/run_up.npz, DIR/coast_down.npz (transient.load_result) and every number in DIR/rotor_whip.json.
 A ROSS rotor (``Rotor.from_ross``) runs the same way; this script uses the built-in one.
 
-Duration: ``--quick`` (32 x 6, 30 revolutions each way) takes about 2.5 min of CPU with ``--method bdf2`` (the
-default; measured 153 s: 965 steps per revolution in the run-up, 2,047 in the coast-down, which starts in whip)
-and about 3 min with ``--method ida`` (172-210 s: 3,550 IDA steps per revolution in whip against 250 in the
-run-up). The default (151 x 21, 400 revolutions each way) is checkpointed, so it can be stopped and resumed; it was
-not run to the end (BDF2 on 51 x 11 in whip: 7.3 s of CPU per revolution).
+The grid: a whip study needs less than the paper's 151 x 21. The same bearing on one journal at 1.5x the
+threshold (``transient bench whip``, docs/bench/whip.md): the settled whirl's amplitude on 76 x 11 is 0.64 % above
+151 x 21's (0.9955 against 0.9891 C), its ratio the same (0.5000), at a quarter of the CPU per revolution.
+
+Duration: ``--quick`` (32 x 6, 30 revolutions each way) takes at most about 2.5 min of CPU with ``--method bdf2``
+(the default: 570 steps per revolution in the run-up, where the step cap in shaft angle rules, 1,823 in the
+coast-down, which starts in whip; 1178 s wall on a machine loaded 12-15 on 2 cores) and about 3 min with ``--method ida``
+(172-210 s: 3,550 IDA steps per revolution in whip against 250 in the run-up). The default (76 x 11, 400
+revolutions each way) is checkpointed, so it can be stopped and resumed; it was not run to the end (BDF2 on 51 x 11
+in whip at rtol 1e-5: 7.3 s of CPU per revolution, 4,411 steps).
 """
 
 from __future__ import annotations
@@ -47,6 +52,7 @@ OUT = "rotor_whip"
 STRUCTURAL_DAMPING = 1e-5  # [s]: C = beta K damps the shaft's high bending modes (the stiff part of the system)
 UNBALANCE = 1e-4  # [kg m] at the disk
 OPR = 40  # outputs per revolution
+GRID = (76, 11)  # the whip study's grid (module docstring: its whirl against the paper's 151 x 21)
 
 
 def build(grid):
@@ -79,13 +85,13 @@ def mostly_synchronous(run, node, speeds_rpm, window_revolutions) -> np.ndarray:
 
 def main(argv=None):
     ap = parser(__doc__, OUT)
-    ap.add_argument("--grid", type=int, nargs=2, metavar=("NT", "NZ"), help="film grid (default 151 21; quick 32 6)")
+    ap.add_argument("--grid", type=int, nargs=2, metavar=("NT", "NZ"), help="film grid (default 76 11; quick 32 6)")
     ap.add_argument("--revolutions", type=float, help="revolutions of the run-up and of the coast-down (400; quick 30)")
     ap.add_argument("--method", choices=("bdf2", "ida"), default="bdf2",
                     help="integrator of the runs: BDF2 on the films' content form (default) or IDA")
     ap.add_argument("--fresh", action="store_true", help="ignore existing checkpoints")
     a = ap.parse_args(argv)
-    grid = tuple(a.grid) if a.grid else ((32, 6) if a.quick else (151, 21))
+    grid = tuple(a.grid) if a.grid else ((32, 6) if a.quick else GRID)
     revs = a.revolutions or (30.0 if a.quick else 400.0)
     out = Path(a.out)
     out.mkdir(parents=True, exist_ok=True)

@@ -93,3 +93,21 @@ def test_max_steps_and_non_finite_state_stop_the_run_with_a_message():
     p = Problem(y0=np.array([1.0]), step_solve=LinearStep(fail_at=1.0), name="linear")
     sol = solve(p, np.linspace(0.0, 3.0, 31), method="bdf2", rtol=1e-4, atol=1e-8)
     assert not sol.success and sol.t[-1] <= 1.0 + 1e-12
+
+
+def test_max_step_scale_scales_the_cap_at_each_step():
+    """A loose tolerance leaves the cap in charge: ``max_step_scale(t)`` multiplies it at each step's start (a cap
+    in shaft angle on a run whose speed changes), so every step ends within the scaled cap and the steps follow it."""
+    scale = lambda t: 1.0 if t < 1.0 else 3.0  # noqa: E731
+    s = BDF2(LinearStep(), np.array([1.0]), 0.0, 2.0, rtol=1e-1, atol=1e-1, max_step=0.01, max_step_scale=scale)
+    plain = BDF2(LinearStep(), np.array([1.0]), 0.0, 2.0, rtol=1e-1, atol=1e-1, max_step=0.01)
+    ts = [0.0]
+    while s.t < 2.0:
+        assert s.step() is None
+        assert s.t - s.t_old <= 0.01 * scale(s.t_old) * (1 + 1e-12)
+        ts.append(s.t)
+    while plain.t < 2.0:
+        assert plain.step() is None
+    h = np.diff(ts)
+    assert h[np.array(ts[:-1]) >= 1.1].max() > 2.5 * 0.01  # the scaled cap is used, not only allowed
+    assert plain.n_steps > 1.4 * s.n_steps  # 200 steps against 100 + 100 / 3

@@ -193,3 +193,24 @@ def test_a_mix_of_film_kinds_is_refused():
                            gravity=G)
     with pytest.raises(ValueError, match='method "bdf2" takes bearings of one film kind'):
         ContentSystem(s.dae(6000.0))
+
+
+def test_step_cap_is_per_shaft_revolution(bearing, monkeypatch):
+    """The step cap (``BDF2_MIN_STEPS`` per revolution) is in shaft angle: at half the reference speed a loose
+    tolerance takes about as many steps per shaft revolution as at the reference speed, half as many as with the
+    cap per revolution at the reference speed (``MIN_CAP_SPEED`` = 1), at the same distance from IDA's motion."""
+    import transient.models.rotor.system as system
+
+    s = one_node(bearing)
+    kw = dict(method="bdf2", rtol=1e-3, outputs_per_revolution=20, progress=False)
+    own = s.run(0.5, 3000.0, **kw)
+    half = s.run(0.5, 3000.0, reference_speed_rpm=6000.0, **kw)
+    monkeypatch.setattr(system, "MIN_CAP_SPEED", 1.0)
+    at_reference = s.run(0.5, 3000.0, reference_speed_rpm=6000.0, **kw)
+    ida = s.run(0.5, 3000.0, rtol=1e-8, atol=1e-10, outputs_per_revolution=20)
+    assert own.success and half.success and at_reference.success
+    assert half.stats.n_steps < 1.1 * own.stats.n_steps, (half.stats.n_steps, own.stats.n_steps)
+    assert half.stats.n_steps < 0.6 * at_reference.stats.n_steps
+    moved = lambda r: r.displacement - r.displacement[0]  # noqa: E731  (each run from its own equilibrium)
+    err = [np.max(np.abs(moved(r) - moved(ida))) / bearing.clearance for r in (half, at_reference)]
+    assert err[0] < 1.2 * err[1] + 1e-7, err

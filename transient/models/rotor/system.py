@@ -52,6 +52,9 @@ RUN_KEYWORDS = (keyword_table("integration", Integration, ("method", "rtol", "at
                 | keyword_table("recording", Recording, ("outputs_per_revolution",))
                 | keyword_table("long_run", LongRun, ("checkpoint", "chunk_revolutions", "resume", "progress",
                                                       "time_budget")))
+#: ``method="bdf2"``: its step cap is ``BDF2_MIN_STEPS`` per shaft revolution at the speed of the step, down to this
+#: fraction of the reference speed (below it, per revolution at this fraction)
+MIN_CAP_SPEED = 0.1
 #: How :meth:`RotorBearingSystem.unbalance_response` linearised the bearings, by ``film_states``
 #: (``UnbalanceResponse.linearisation``).
 LINEARISATIONS = {True: "film states", False: "K and C"}
@@ -473,7 +476,8 @@ class RotorBearingSystem:
             the films' content form, a bordered band LU with one band block per film and the rotor as its border,
             :mod:`~transient.models.rotor.content_form`; rtol and atol act on the rotor's coordinates and
             velocities, every film is solved to the journal's Newton tolerance each step, at least
-            ``BDF2_MIN_STEPS`` steps per revolution at the reference speed); ``rtol``, ``atol`` (atol on the
+            ``BDF2_MIN_STEPS`` steps per shaft revolution at the step's speed, down to ``MIN_CAP_SPEED`` of the
+            reference speed); ``rtol``, ``atol`` (atol on the
             dimensionless states: p/p0, journal position in clearances).
         recording : :class:`~transient.solvers.settings.Recording`: ``outputs_per_revolution``, outputs per
             revolution at the reference speed (default 100).
@@ -569,8 +573,11 @@ class RotorBearingSystem:
             rec = _Recorder(self, dae, speed, form.universal_state)
             y_run = form.content_state(y)
             problem_at = lambda y_, tau_: form.problem(y_, tau_, events, n_events)  # noqa: E731
+            # the step cap in shaft angle (the films' fronts move with the shaft): BDF2_MIN_STEPS per revolution
+            # at any speed down to MIN_CAP_SPEED of the reference speed, not per revolution at the reference speed
+            cap_scale = lambda tau: 1.0 / max(speed(tau)[0], MIN_CAP_SPEED)  # noqa: E731
             stepping = dict(steps=Steps(max_step=2 * np.pi / BDF2_MIN_STEPS, first_step=2 * np.pi * 1e-4),
-                            options={"bdf2": form.model()})
+                            options={"bdf2": form.model(), "max_step_scale": cap_scale})
         else:
             rec = _Recorder(self, dae, speed)
             y_run = y

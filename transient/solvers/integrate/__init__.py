@@ -130,7 +130,7 @@ def solve(problem: Problem, t_eval, method: str = "cvode", rtol: float = 1e-6, a
     store : keep the outputs in ``Solution.y`` (False: only pass them to ``observer``).
     observer : ``observer(t, y)`` called at every output time, in order.
     options : extra keyword options for the SUNDIALS solver (e.g. ``max_nonlin_iters``, ``max_order``); for
-        ``"bdf2"`` the model's ``{"bdf2": Bdf2Model}`` (and ``"fixed_step"``).
+        ``"bdf2"`` the model's ``{"bdf2": Bdf2Model}`` (and ``"fixed_step"``, ``"max_step_scale"``).
     time_budget : wall-clock seconds the run may take (None: no limit); checked once per step, so a run
         stops at most one step after it (``success=False``, the message says where it stopped).
 

@@ -30,7 +30,8 @@ The Newton iteration (residual, solves, Jacobian, factorisation, norm) is one nu
 step (predictor, error test, step control, dense output, events).
 
 The model hands the kernels as a :class:`Bdf2Model` in ``solve(..., options={"bdf2": model})``;
-``options["fixed_step"] = h`` takes steps of exactly h with no error test (convergence studies).
+``options["fixed_step"] = h`` takes steps of exactly h with no error test (convergence studies);
+``options["max_step_scale"]``, a function of t, scales ``max_step`` at each step's start (a cap in shaft angle).
 """
 
 from __future__ import annotations
@@ -332,7 +333,8 @@ def solve(problem, t_eval, out, guard, s):
     out.events = Events(problem, guard, poison=False) if problem.n_events else None
     stepper = BDF2(solver, problem.y0, t_eval[0], t_eval[-1], rtol=s.rtol, atol=s.atol,
                    error_components=solver.error_components, yp0=problem.yp0, first_step=s.first_step,
-                   max_step=s.max_step, fixed_step=float(s.options.get("fixed_step", 0.0)),
+                   max_step=s.max_step, max_step_scale=s.options.get("max_step_scale"),
+                   fixed_step=float(s.options.get("fixed_step", 0.0)),
                    test_first_step=solver.test_first_step)
     result = drive(stepper, out, guard, SIGINT.check, s.max_steps, step_events)
     tally = s.options.get("newton_counts")

@@ -12,7 +12,8 @@ Its local error ``h^3 y''' (1 + w)^2 / (6 w (1 + 2 w))`` is estimated from the d
 step and the quadratic predictor through the last three points (Hermite with y'(t_0) after the first step), on
 the declared ``error_components`` only, in the weighted RMS norm of ``rtol |y| + atol``. The step follows a PI
 controller (Gustafsson; Hairer & Wanner, Solving ODEs II, IV.2: exponents 0.7/3 and 0.4/3), its ratio kept in
-[0.2, 2] (BDF2 is zero-stable for ratios below 1 + sqrt 2) and the step below ``max_step``. A failed step solve
+[0.2, 2] (BDF2 is zero-stable for ratios below 1 + sqrt 2) and the step below ``max_step`` (times
+``max_step_scale(t)`` if given). A failed step solve
 cuts the step by 4. ``fixed_step = h`` takes steps of exactly h with no error test (convergence studies).
 """
 
@@ -103,12 +104,13 @@ class BDF2(Stepper):
     """Variable-step BDF2 (module docstring) around a model's :class:`StepSolve`, from ``y0`` (with the slope
     ``yp0``, zero if None) at ``t0`` to ``t_end``; error test on ``error_components`` with ``rtol`` and ``atol``
     (a number or one per state); first step ``first_step`` (0: 1e-4 of the span), at most ``max_step``
-    (0: free); ``fixed_step`` > 0: steps of exactly that size, no error test; ``test_first_step`` False: the
+    (0: free), times ``max_step_scale(t)`` at the step's start if given (e.g. a cap in shaft angle on a run whose
+    speed changes); ``fixed_step`` > 0: steps of exactly that size, no error test; ``test_first_step`` False: the
     first step is not error-tested (a DAE started from an inconsistent state, whose first step measures the
     jump of its algebraic part onto the constraint, not a truncation error)."""
 
     def __init__(self, solver: StepSolve, y0, t0, t_end, *, rtol, atol, error_components=None, yp0=None,
-                 first_step=0.0, max_step=0.0, fixed_step=0.0, test_first_step=True):
+                 first_step=0.0, max_step=0.0, fixed_step=0.0, test_first_step=True, max_step_scale=None):
         self.solver = solver
         self.test_first_step = test_first_step
         n = y0.size
@@ -124,6 +126,7 @@ class BDF2(Stepper):
         self.fixed = float(fixed_step)
         self.h = self.fixed if self.fixed > 0 else (first_step if first_step > 0 else 1e-4 * span)
         self.h_cap = max_step if max_step > 0 else span
+        self.cap_scale = max_step_scale if max_step > 0 else None
         self.ts, self.ys = [self.t], [self.y]  # the last (up to 3) accepted points, oldest first
         self.err_prev = 1.0
         self._dense = None
@@ -136,7 +139,7 @@ class BDF2(Stepper):
                 t_new = min(self.t_end, self.t_start + (self.n_steps + 1) * self.fixed)
                 h = t_new - t
             else:
-                h = min(self.h, self.h_cap)
+                h = min(self.h, self.h_cap if self.cap_scale is None else self.h_cap * self.cap_scale(t))
                 if t + h >= self.t_end - 1e-9 * h:
                     h = self.t_end - t
                 t_new = t + h
