@@ -23,6 +23,7 @@ import numpy as np
 from transient.models.journal.bearing import JournalBearing
 from transient.models.journal.orbit import JournalOrbit
 from transient.params.rho_kim import BEARING, ROTOR
+from transient.solvers.settings import Integration, LongRun, Recording
 
 TITLE = "Oil whip on one journal: BDF2 cost per 1000 revolutions and the grid a whip study needs"
 CLEARANCE = BEARING["clearance"]
@@ -41,8 +42,8 @@ def _orbit(grid, speed_rpm):
 
 def _run(o, revs, setting, **kw):
     cap, rtol = setting
-    return o.run(revs, method="bdf2", rtol=rtol, steps_per_revolution=cap, outputs_per_revolution=OPR,
-                 progress=False, **kw)
+    return o.run(revs, integration=Integration(method="bdf2", rtol=rtol, steps_per_revolution=cap),
+                 recording=Recording(outputs_per_revolution=OPR), long_run=LongRun(progress=False), **kw)
 
 
 def whirl(r, window):

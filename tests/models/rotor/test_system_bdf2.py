@@ -202,12 +202,14 @@ def test_step_cap_is_per_shaft_revolution(bearing, monkeypatch):
     import transient.models.rotor.system as system
 
     s = one_node(bearing)
-    kw = dict(method="bdf2", rtol=1e-3, outputs_per_revolution=20, progress=False)
+    kw = dict(integration=Integration(method="bdf2", rtol=1e-3), recording=Recording(outputs_per_revolution=20),
+              long_run=LongRun(progress=False))
     own = s.run(0.5, 3000.0, **kw)
     half = s.run(0.5, 3000.0, reference_speed_rpm=6000.0, **kw)
     monkeypatch.setattr(system, "MIN_CAP_SPEED", 1.0)
     at_reference = s.run(0.5, 3000.0, reference_speed_rpm=6000.0, **kw)
-    ida = s.run(0.5, 3000.0, rtol=1e-8, atol=1e-10, outputs_per_revolution=20)
+    ida = s.run(0.5, 3000.0, integration=Integration(rtol=1e-8, atol=1e-10),
+                recording=Recording(outputs_per_revolution=20))
     assert own.success and half.success and at_reference.success
     assert half.stats.n_steps < 1.1 * own.stats.n_steps, (half.stats.n_steps, own.stats.n_steps)
     assert half.stats.n_steps < 0.6 * at_reference.stats.n_steps
