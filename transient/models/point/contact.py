@@ -27,8 +27,8 @@ from transient.models.point.fbns import DENSE_MAX_UNKNOWNS, fbns
 from transient.models.point.ehl_problem import PointFilm
 from transient.models.point.grid_verdict import FORMAL_ORDER, describe, error_estimate
 from transient.models.point.krylov import coarsening_factor, inject
-from transient.models.point.plausibility import grid_message, implausible
-from transient.models.point.point_grid import default_grid
+from transient.models.point.plausibility import default_grid_message, grid_message, implausible
+from transient.models.point.point_grid import MIN_NODES_PER_B, default_grid
 from transient.models.point.results import PointDry, PointSteady, PointTransient
 from transient.models.point.step_solve import ATOL_PER_RTOL, FilmStep, steady_by_time_steps
 from transient.models.roller.dry import edge_positions, polonsky_keer
@@ -37,9 +37,6 @@ from transient.physics import film_formulas as hd
 from transient.physics.hertz import hertz_contact
 from transient.physics.lubricant import DOWSON_HIGGINSON_PARK, Lubricant
 from transient.solvers.integrate import Problem, solve
-
-#: nodes required inside the Hertz semi-axis b along the rolling direction
-MIN_NODES_PER_B = 4
 
 #: the Couette flux of the Reynolds rows (:func:`~transient.models.point.kernels.face_flux`): first-order upwind,
 #: second-order linear upwind (the default), or second order with van Albada's limiter. Measured
@@ -147,6 +144,9 @@ class PointContact:
         self.domain = (x_in, x_out, y_half)
         if grid is None:
             grid = default_grid(self.moes[0], self.domain)
+            found = implausible(self.radius_x, viscosity, self.speed, self.load, c.p_max)
+            if found:
+                raise ValueError(default_grid_message(grid, -x_in, found))
         nx, ny = check_items("grid", grid, "(nx, ny) node counts", 2)
         nx = check_int("grid[0]", nx, "nodes", 17, 2049)
         ny = check_int("grid[1]", ny, "nodes", 17, 2049)
