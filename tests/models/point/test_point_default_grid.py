@@ -3,7 +3,7 @@
 import pytest
 
 from transient.models.point import PointContact
-from transient.models.point.point_grid import MIN_NODES, RESOLUTION, default_grid
+from transient.models.point.point_grid import ERROR_BOUND, MIN_NODES, RESOLUTION, default_grid
 
 #: steel on steel (E' = 220 GPa), Rx = 10 mm, mineral oil (Barus, Dowson-Higginson)
 OIL = dict(viscosity=0.04, pressure_viscosity=2e-8, modulus=2.2e11)
@@ -38,7 +38,7 @@ def settled_within_bound(load, speed):
         f1, f2 = getattr(s, name), getattr(fine, name)
         limit = f2 + (f2 - f1) / 3.0
         bound = s.grid_change[f"error_{name}"]
-        assert bound <= 0.03
+        assert bound <= ERROR_BOUND
         assert abs(f1 - limit) / abs(limit) <= bound, (name, f1, f2, limit, bound)
 
 
