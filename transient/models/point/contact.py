@@ -90,8 +90,9 @@ class PointContact:
     ``pressure_viscosity`` alpha [1/Pa], ``modulus`` E' [Pa], ``density`` ``"dowson-higginson"`` or
     ``"incompressible"``, ``viscosity_law`` ``"barus"`` or ``"roelands"``, ``inlet_film`` [m] or None,
     ``grid`` (nx, ny) nodes (boundary included, ny odd; default None: the fewest 2^k + 1 per axis, at least 65,
-    at which the second-order film's error bound is about 3 %, chosen from M:
-    :func:`~transient.models.point.point_grid.default_grid`), ``upwind`` the Couette flux (:data:`UPWIND`: ``"second"`` (default), ``"limited"``, ``"first"``), ``domain`` (x_in, x_out, y_half) in units of b
+    at which the second-order film's error bound is about 4 % or less, chosen from M:
+    :func:`~transient.models.point.point_grid.default_grid`), ``upwind`` the Couette flux (:data:`UPWIND`:
+    ``"second"`` (default), ``"limited"``, ``"first"``), ``domain`` (x_in, x_out, y_half) in units of b
     (default (-4.5, 1.5, 1 + 1.5 k), the inlet moved upstream of Hamrock-Dowson's critical meniscus when that
     lies further out), ``dh_constants`` Dowson-Higginson's (c1, c2) [1/Pa].
     """
