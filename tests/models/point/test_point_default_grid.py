@@ -3,7 +3,12 @@
 import pytest
 
 from transient.models.point import PointContact
-from transient.models.point.point_grid import ERROR_BOUND, MIN_NODES, RESOLUTION, default_grid
+from transient.models.point.point_grid import (
+    ERROR_BOUND,
+    MIN_NODES,
+    RESOLUTION,
+    default_grid,
+)
 
 #: steel on steel (E' = 220 GPa), Rx = 10 mm, mineral oil (Barus, Dowson-Higginson)
 OIL = dict(viscosity=0.04, pressure_viscosity=2e-8, modulus=2.2e11)

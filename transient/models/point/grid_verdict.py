@@ -26,7 +26,8 @@ SAFETY_THREE, SAFETY_TWO = 1.25, 3.0
 
 def error_estimate(fine: float, half: float, quarter: float | None, formal_order: float) -> tuple[float, str]:
     """``(error, basis)``: the estimated relative error of ``fine`` (``inf`` when not bounded; Richardson's
-    estimate times :data:`SAFETY_THREE` or :data:`SAFETY_TWO`) and how it was obtained, in words (the order used, or why there is none)."""
+    estimate times :data:`SAFETY_THREE` or :data:`SAFETY_TWO`) and how it was obtained, in words (the order
+    used, or why there is none)."""
     d1 = fine - half
     if quarter is None:
         return (SAFETY_TWO * abs(d1) / (2.0 ** formal_order - 1.0) / abs(fine),
