@@ -21,7 +21,9 @@ def test_a_unit_slip_is_named_before_the_grid(name, value, words):
         PointContact(**dict(BASE, **{name: value}))
     text = str(err.value)
     assert text.startswith("implausible for an EHL point contact: " + words) and "\n" not in text
-    assert "nodes per Hertz semi-axes" in text  # and what it did to the grid
+    assert "the default grid would be" in text  # and what it does to the grid
+    with pytest.raises(ValueError, match="nodes per Hertz semi-axes"):  # an explicit coarse grid: the same slip named
+        PointContact(**dict(BASE, **{name: value}), grid=(65, 65))
 
 
 def test_a_plausible_contact_on_a_coarse_grid_gets_the_grid_advice_alone():

@@ -6,6 +6,7 @@ import pytest
 
 from transient.models.point import PointContact
 from transient.models.point.fbns import newton_step
+from transient.models.point.grid_verdict import SAFETY_THREE
 
 #: a steel ball on a steel flat (E' = 2.2e11 Pa), mineral oil: M = 61, L = 10.8 at 20 N, 1 m/s
 BASE = dict(load=20.0, speed=1.0, viscosity=0.04, pressure_viscosity=2e-8, modulus=2.2e11)
@@ -127,7 +128,7 @@ def test_bad_input_names_parameter(kw, match):
 
 def test_grid_check_is_the_solution_on_coarser_grids_and_richardsons_bound():
     """steady()'s grid check: the films on every second node are those of the contact solved on that grid, and the
-    error bound is Richardson's at the order the three films show (at most the scheme's 2)."""
+    error bound is Richardson's at the order the three films show (at most the scheme's 2), times Roache's factor."""
     low_m = dict(BASE, load=10.0)  # M = 31, L = 10.8
     s = PointContact(0.01, grid=(65, 65), **low_m).steady(check_grid=False)
     g = s.grid_change = PointContact(0.01, grid=(65, 65), **low_m).grid_check(
@@ -140,20 +141,22 @@ def test_grid_check_is_the_solution_on_coarser_grids_and_richardsons_bound():
         f1, f2, f4 = getattr(s, key), g[f"{key}_coarse"], g[f"{key}_quarter"]
         p = np.log2((f2 - f4) / (f1 - f2))
         assert 0.5 < p  # converging: the bound exists
-        assert g[f"error_{key}"] == pytest.approx(abs(f1 - f2) / (2 ** min(p, 2.0) - 1) / f1, rel=1e-9)
+        richardson = abs(f1 - f2) / (2 ** min(p, 2.0) - 1) / f1
+        assert g[f"error_{key}"] == pytest.approx(SAFETY_THREE * richardson, rel=1e-9)
 
 
 def test_first_order_films_a_changes_rule_called_settled_are_not():
     """M = 61 on 129 x 129: the first-order films change by 2.6 % from 65 x 65 (a 5 %-change rule called them
     settled), but over 33-65-129 they do not converge monotonically and are 8 % above the second-order film of the
-    same grid, whose own error the check bounds by 2.4 % (docs/validation.md)."""
+    same grid, whose own error the check bounds by 3.0 % (docs/validation.md): the first-order film lies further
+    from that interval than the change the 5 % rule took for its error."""
     with pytest.warns(UserWarning, match=r"not settled on 129 x 129 nodes.*not converge monotonically"):
         first = PointContact(0.01, grid=(129, 129), upwind="first", **BASE).steady()
     assert first.success and not first.grid_settled and first.grid_change["change_h_central"] < 0.05
     second = PointContact(0.01, grid=(129, 129), **BASE).steady()
     bound = second.grid_change["error_h_central"]
     assert second.grid_settled and bound < 0.05 and "settled (error <=" in second.grid_change["note"]
-    assert abs(first.h_central / second.h_central - 1.0) > 0.05 + bound
+    assert abs(first.h_central / second.h_central - 1.0) > bound + first.grid_change["change_h_central"]
 
 
 def test_grid_check_flags_an_unresolved_minimum_film():

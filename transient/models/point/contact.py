@@ -5,7 +5,7 @@ complementarity, DC-FFT elasticity, load balance by ``h0``); steady solve:
 :mod:`transient.models.point.fbns`; transient: :mod:`transient.models.point.step_solve`. SI at the API::
 
     pc = PointContact(radius_x=0.01, load=20.0, speed=1.0, viscosity=0.04, pressure_viscosity=2e-8,
-                      modulus=2.2e11, inlet_film=None, grid=(65, 65))
+                      modulus=2.2e11, inlet_film=None)  # grid: chosen from M (point_grid.py)
     s = pc.steady()        # s.h_central, s.h_min, s.p_max, s.meniscus_x, s.pressure, s.film [SI]
 
 ``x`` is the rolling (entraining) direction, ``speed`` the mean entraining speed ``(u_a + u_b)/2``,
@@ -27,7 +27,8 @@ from transient.models.point.fbns import DENSE_MAX_UNKNOWNS, fbns
 from transient.models.point.ehl_problem import PointFilm
 from transient.models.point.grid_verdict import FORMAL_ORDER, describe, error_estimate
 from transient.models.point.krylov import coarsening_factor, inject
-from transient.models.point.plausibility import grid_message, implausible
+from transient.models.point.plausibility import default_grid_message, grid_message, implausible
+from transient.models.point.point_grid import MIN_NODES_PER_B, default_grid
 from transient.models.point.results import PointDry, PointSteady, PointTransient
 from transient.models.point.step_solve import ATOL_PER_RTOL, FilmStep, steady_by_time_steps
 from transient.models.roller.dry import edge_positions, polonsky_keer
@@ -37,9 +38,6 @@ from transient.physics.hertz import hertz_contact
 from transient.physics.lubricant import DOWSON_HIGGINSON_PARK, Lubricant
 from transient.solvers.integrate import Problem, solve
 from transient.solvers.integrate import Steps
-
-#: nodes required inside the Hertz semi-axis b along the rolling direction
-MIN_NODES_PER_B = 4
 
 #: the Couette flux of the Reynolds rows (:func:`~transient.models.point.kernels.face_flux`): first-order upwind,
 #: second-order linear upwind (the default), or second order with van Albada's limiter. Measured
@@ -92,14 +90,17 @@ class PointContact:
     (>= Rx; None: circular), ``load`` [N], ``speed`` [m/s], ``viscosity`` eta0 [Pa s],
     ``pressure_viscosity`` alpha [1/Pa], ``modulus`` E' [Pa], ``density`` ``"dowson-higginson"`` or
     ``"incompressible"``, ``viscosity_law`` ``"barus"`` or ``"roelands"``, ``inlet_film`` [m] or None,
-    ``grid`` (nx, ny) nodes (boundary included, ny odd), ``upwind`` the Couette flux (:data:`UPWIND`: ``"second"`` (default), ``"limited"``, ``"first"``), ``domain`` (x_in, x_out, y_half) in units of b
+    ``grid`` (nx, ny) nodes (boundary included, ny odd; default None: the fewest 2^k + 1 per axis, at least 65,
+    at which the second-order film's error bound is about 4 % or less, chosen from M:
+    :func:`~transient.models.point.point_grid.default_grid`), ``upwind`` the Couette flux (:data:`UPWIND`:
+    ``"second"`` (default), ``"limited"``, ``"first"``), ``domain`` (x_in, x_out, y_half) in units of b
     (default (-4.5, 1.5, 1 + 1.5 k), the inlet moved upstream of Hamrock-Dowson's critical meniscus when that
     lies further out), ``dh_constants`` Dowson-Higginson's (c1, c2) [1/Pa].
     """
 
     def __init__(self, radius_x, radius_y=None, *, load, speed, viscosity, pressure_viscosity, modulus,
                  density: str = "dowson-higginson", viscosity_law: str = "barus", inlet_film=None,
-                 grid=(65, 65), domain=None, dh_constants=DOWSON_HIGGINSON_PARK, upwind: str = "second"):
+                 grid=None, domain=None, dh_constants=DOWSON_HIGGINSON_PARK, upwind: str = "second"):
         check_choice("upwind", upwind, tuple(UPWIND))
         self.upwind = upwind
         self.radius_x = check_range("radius_x", radius_x, "m", 1e-5, 10.0)
@@ -143,6 +144,11 @@ class PointContact:
         y_half = check_range("domain[2] (half width)", domain[2], "b", 1.2 * c.k, 1e4,
                              why=f"(beyond the Hertz semi-axis a = {c.k:.3g} b)")
         self.domain = (x_in, x_out, y_half)
+        if grid is None:
+            grid = default_grid(self.moes[0], self.domain)
+            found = implausible(self.radius_x, viscosity, self.speed, self.load, c.p_max)
+            if found:
+                raise ValueError(default_grid_message(grid, -x_in, found))
         nx, ny = check_items("grid", grid, "(nx, ny) node counts", 2)
         nx = check_int("grid[0]", nx, "nodes", 17, 2049)
         ny = check_int("grid[1]", ny, "nodes", 17, 2049)

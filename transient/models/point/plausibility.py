@@ -43,3 +43,11 @@ def grid_message(grid, per_b, per_a, min_nodes, meniscus_b, found: list[str]) ->
         return f"{grid_text} (more nodes or a smaller domain)"
     return (f"implausible for an EHL point contact: {'; '.join(found)}. With these inputs the domain reaches "
             f"{meniscus_b:.3g} b upstream (to the flooded inlet) and the {grid_text}")
+
+
+def default_grid_message(grid, meniscus_b, found: list[str]) -> str:
+    """The one-line refusal to choose the default grid for implausible inputs ``found`` (:func:`implausible`):
+    the grid they ask for is named, and an explicit ``grid`` runs them as given."""
+    return (f"implausible for an EHL point contact: {'; '.join(found)}. With these inputs the domain reaches "
+            f"{meniscus_b:.3g} b upstream (to the flooded inlet) and the default grid would be {grid[0]} x {grid[1]} "
+            f"nodes; allowed: plausible inputs, or an explicit grid to run them as given")

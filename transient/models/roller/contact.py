@@ -64,6 +64,8 @@ from transient.physics.lubricant import DOWSON_HIGGINSON_PARK, Lubricant
 from transient.solvers.newton import NewtonError
 
 PAPER_GRID = (94, 45)
+#: the default clustered grid above the paper case's load (:attr:`RollerContact.grid_spec`)
+HEAVY_GRID = (94, 89)
 #: Couette flux of the Reynolds equation (:mod:`transient.models.roller.kernels`)
 SCHEMES = ("auto", "upwind2", "upwind1", "limited")
 #: steady forms: the mass-conserving film content (FBNS) and the Reynolds condition
@@ -116,14 +118,15 @@ class RollerContact:
     ``roller`` (:class:`TaperedRoller`), ``load`` [N] (total), ``speed`` [m/s] (mean entrainment speed at
     the mid-plane), ``viscosity`` eta0 [Pa s], ``pressure_viscosity`` alpha [1/Pa], ``modulus`` E' [Pa],
     ``density``, ``viscosity_law``, ``dh_constants`` as in :class:`~transient.physics.lubricant.Lubricant`;
-    ``grid``: ``"paper"``, ``("clustered", nx, ny)`` or ``(nx, ny)`` (uniform); ``domain``: (inlet,
+    ``grid``: ``"paper"``, ``("clustered", nx, ny)`` or ``(nx, ny)`` (uniform), default None: the paper's grid up
+    to the paper case's load, 94 x 89 clustered above it (:attr:`grid_spec`); ``domain``: (inlet,
     outlet) in units of c and the half-length of the domain in units of d; ``scheme``: the Couette flux,
     ``"upwind2"``, ``"upwind1"``, ``"limited"`` (second order, van Albada's limiter) or ``"auto"``
     (:attr:`flux_scheme`).
     """
 
     def __init__(self, roller: TaperedRoller, load, speed, viscosity, pressure_viscosity, modulus,
-                 density: str = "dowson-higginson", viscosity_law: str = "barus", grid="paper",
+                 density: str = "dowson-higginson", viscosity_law: str = "barus", grid=None,
                  domain=(-5.0, 2.5, 0.55), scheme: str = "auto", dh_constants=DOWSON_HIGGINSON_PARK):
         if not isinstance(roller, TaperedRoller):
             raise TypeError(f"roller must be a TaperedRoller, got {type(roller).__name__}")
@@ -140,7 +143,8 @@ class RollerContact:
         if scheme not in SCHEMES:
             raise ValueError(f"scheme = {scheme!r} is not one of {SCHEMES}")
         self.scheme = scheme
-        self.grid_spec = self._parse_grid(grid)
+        if grid is not None:
+            self.grid_spec = self._parse_grid(grid)
         self._options = dict(speed=speed, viscosity=viscosity, pressure_viscosity=pressure_viscosity, modulus=modulus,
                              density=density, viscosity_law=viscosity_law, grid=grid, domain=domain, scheme=scheme,
                              dh_constants=tuple(dh_constants))
@@ -152,6 +156,14 @@ class RollerContact:
         c = RollerContact(self.roller, load, **self._options)
         c.__dict__["heavy"] = self.heavy  # the cached property, fixed to the path's target
         return c
+
+    @cached_property
+    def grid_spec(self) -> tuple:
+        """``(kind, nx, ny)``; without ``grid``: the paper's grid up to the paper case's load, and above it
+        (:attr:`heavy`) twice its y nodes, ``HEAVY_GRID``: the loaded end's side lobe needs them (at 5x the
+        paper's load H_min on 94 x 45 is 42 % below 94 x 89's; at 7x and 10x 94 x 45 does not converge, 94 x 89
+        does; docs/validation.md)."""
+        return ("clustered",) + (HEAVY_GRID if self.heavy else PAPER_GRID)
 
     @cached_property
     def heavy(self) -> bool:
