@@ -50,6 +50,8 @@ METHODS = ("shooting", "newton-krylov")
 #: time integrators of the period map: IDA on the universal film, or the conservative BDF2 on the content film
 #: (:mod:`transient.solvers.integrate.bdf2`, the step solve of :meth:`JournalOrbit.bdf2_model`)
 INTEGRATORS = ("ida", "bdf2")
+#: a continuation's predictors: Lagrange extrapolation in speed through the last 2 or 3 orbits
+PREDICTORS = ("secant", "quadratic")
 #: below this dominant multiplier the derivatives' noise (~rtol / fd_step) swamps the whirl pair: a continuation
 #: then takes the whirl basis afresh at the next speed instead of following the noisy subspace
 REFINE_FLOOR = 0.05
@@ -380,19 +382,17 @@ def _settle(orbit: Orbit, state, rtol, tol, max_revolutions):
 def response_curve(orbit: Orbit, speeds_rpm, rtol: float = 1e-5, tol: float | None = None,
                    outputs_per_revolution: int = 64, whirl_revolutions: int = 0, predictor: str = "quadratic",
                    previous=None, progress: bool = False, fd_step: float = 1e-3, integrator: str = "ida",
-                   floquet_every: int = 4, floquet_above: float = 0.8) -> ResponseCurve:
+                   floquet_every: int = 1, floquet_above: float = 0.8) -> ResponseCurve:
     """Periodic unbalance responses along ``speeds_rpm`` (monotone) by continuation (module docstring): the
     rotor, bearing and unbalance of ``orbit``, each speed warm-started from the previous ones (``predictor``:
-    ``"secant"`` or ``"quadratic"`` extrapolation in speed of the states in the content layout -- the film's
-    content ``H theta`` has no kink at the cavitation boundary, and its extrapolation starts the rotor 6x closer to
-    the next orbit after one period than that of the universal variable (docs/periodic.md) -- its first period
-    integrated at the final ``rtol``) with the previous whirl subspace and its monodromy as the chord; ``previous``: a
+    ``"secant"`` or ``"quadratic"`` extrapolation of the states in speed, one relaxing period, then Newton at the
+    final ``rtol``) with the previous whirl subspace and its monodromy as the chord; ``previous``: a
     :class:`ResponseCurve` or a list of :class:`PeriodicOrbit` to continue (its last orbits start the path). Speeds
     past the onset give the unstable periodic orbit (flagged ``unstable``); with ``whirl_revolutions`` > 0 the
     quasi-periodic response there is also integrated (:func:`quasi_periodic_response`).
 
-    Floquet multipliers: the directional derivatives (two periods) are taken afresh at the first speed, at least
-    every ``floquet_every`` speeds (1: at every speed), wherever the dominant multiplier extrapolated in speed from
+    Floquet multipliers: the directional derivatives (two periods) are taken afresh at the first two speeds, at least
+    every ``floquet_every`` speeds (default 1: at every speed), wherever the dominant multiplier extrapolated in speed from
     the last two measured ones exceeds ``floquet_above`` (so every speed near the onset has its own), and wherever
     the chord converges slowly; a speed in between iterates with the monodromy extrapolated in speed from the last
     two measured ones and reports its eigenvalues (:attr:`PeriodicOrbit.multipliers_speed_rpm`: the last measured
@@ -403,13 +403,12 @@ def response_curve(orbit: Orbit, speeds_rpm, rtol: float = 1e-5, tol: float | No
         raise ValueError(f"speeds_rpm must be positive speeds [rpm], got {speeds_rpm!r}")
     if speeds.size > 1 and not (np.all(np.diff(speeds) > 0) or np.all(np.diff(speeds) < 0)):
         raise ValueError("speeds_rpm must be strictly monotone (a continuation path) [rpm]")
-    check_choice("predictor", predictor, ("secant", "quadratic"))
+    points = dict(secant=2, quadratic=3)[check_choice("predictor", predictor, PREDICTORS)]
     check_choice("integrator", integrator, INTEGRATORS)
     floquet_every = check_int("floquet_every", floquet_every, "speeds", 1, 10**6)
     floquet_above = check_range("floquet_above", floquet_above, "-", 0.0, 1.0)
-    done = [p for p in getattr(previous, "orbits", previous or []) if p.converged][-3:]
+    done = [p for p in getattr(previous, "orbits", previous or []) if p.converged][-points:]
     path = [p.speed_rpm for p in done]
-    contents = [orbit.at_speed(p.speed_rpm).content_state(p.state) for p in done]
     orbits, whirls = [], []
     basis = done[-1].basis if done and done[-1].max_multiplier > REFINE_FLOOR else None
     measured = [p for p in done if p.multipliers_speed_rpm == p.speed_rpm][-2:]
@@ -417,32 +416,31 @@ def response_curve(orbit: Orbit, speeds_rpm, rtol: float = 1e-5, tol: float | No
     bar = progress_bar(progress, speeds.size, "speed", "periodic responses")
     for s in speeds:
         o = orbit if s == orbit.speed_rpm else orbit.at_speed(s)
-        start = _extrapolate(np.array(path), contents, s, 3 if predictor == "quadratic" else 2)
-        if start is not None:
-            start = o.universal_state(start)
-        use_chord = (measured and start is not None and age < floquet_every - 1
+        start = _extrapolate(np.array(path), [q.state for q in done], s, points)
+        use_chord = (len(measured) == 2 and start is not None and age < floquet_every - 1
                      and _predicted_multiplier(measured, s) <= floquet_above)
         chord = _chord_at(measured, s) if use_chord else None
         kw = dict(rtol=rtol, tol=tol, fd_step=fd_step, outputs_per_revolution=outputs_per_revolution,
                   integrator=integrator)
         if start is None:
             p = periodic_response(o, start=start, basis=basis, **kw)
-        else:  # a prediction from periodic orbits: no relaxing period, the first one at the final rtol
+        else:  # a prediction from periodic orbits: one relaxing period (loose), then Newton at the final rtol
             p = periodic_response(o, start=start, basis=chord[0] if use_chord else basis,
-                                  monodromy=chord[1] if use_chord else None, relax=0, rtol_start=rtol, **kw)
+                                  monodromy=chord[1] if use_chord else None, rtol_start=rtol, **kw)
         if not p.converged and start is not None:  # the extrapolation went astray: start afresh
             q = periodic_response(o, **kw)
             q.revolutions_integrated += p.revolutions_integrated
             p = q
-        if p.multipliers_speed_rpm == s:  # measured here
-            if p.converged:
+        if p.multipliers_speed_rpm == s:  # measured here: the refined basis is the next measurement's, unless it
+            if p.converged:  # was refined from noise (then a fresh one)
                 measured, age = (measured + [p])[-2:], 0
+                basis = p.basis if p.max_multiplier > REFINE_FLOOR else None
         elif np.isnan(p.multipliers_speed_rpm) and p.method == "shooting":  # the chord's, extrapolated
             p.multipliers_speed_rpm, age = measured[-1].speed_rpm, age + 1
         orbits.append(p)
-        if p.converged:  # the refined basis, unless it was refined from noise: then afresh at the next start
-            done, path, contents = done[-2:] + [p], path[-2:] + [s], contents[-2:] + [o.content_state(p.state)]
-            basis = p.basis if p.max_multiplier > REFINE_FLOOR else None
+        if p.converged:
+            keep = 1 - points
+            done, path = done[keep:] + [p], path[keep:] + [s]
         w = None
         if whirl_revolutions > 0 and p.converged and not p.stable:
             w = quasi_periodic_response(o, whirl_revolutions, start=p.state, rtol=rtol)
@@ -458,10 +456,8 @@ def response_curve(orbit: Orbit, speeds_rpm, rtol: float = 1e-5, tol: float | No
 
 
 def _predicted_multiplier(measured, s) -> float:
-    """The dominant multiplier's modulus at speed ``s`` extrapolated linearly in speed from the orbits whose
-    multipliers were measured (the last two; one: its own)."""
-    if len(measured) == 1:
-        return measured[-1].max_multiplier
+    """The dominant multiplier's modulus at speed ``s`` extrapolated linearly in speed from the last two orbits
+    whose multipliers were measured."""
     a, b = measured
     return b.max_multiplier + (b.max_multiplier - a.max_multiplier) * (s - b.speed_rpm) / (b.speed_rpm - a.speed_rpm)
 
@@ -469,10 +465,8 @@ def _predicted_multiplier(measured, s) -> float:
 def _chord_at(measured, s):
     """(basis, monodromy) for speed ``s``: the last measured orbit's basis and its projected monodromy
     extrapolated linearly in speed from the last two measured ones (the older one carried onto the newer
-    basis, ``S_a -> T S_a T^-1`` with ``T = V_b^T V_a``); one measured: its own."""
+    basis, ``S_a -> T S_a T^-1`` with ``T = V_b^T V_a``)."""
     b = measured[-1]
-    if len(measured) == 1:
-        return b.basis, b.monodromy
     a = measured[0]
     T = b.basis.T @ a.basis
     if np.linalg.svd(T, compute_uv=False).min() < 0.5:  # the subspaces drifted apart: no extrapolation
