@@ -18,8 +18,9 @@ step with the projected monodromy ``S = V^T M V`` and a Picard (fixed-point) ste
 The Q part contracts at the rate of the largest multiplier left out; the P part converges like Newton.
 ``S`` costs p directional derivatives (p periods) and is kept (a chord) while the steps shrink at least
 ``1 / refresh``-fold per iteration, and recomputed otherwise. The error of the current iterate is
-estimated by the step ``norm(d)``; the iteration stops when it is below ``tol`` at the final integration
-tolerance and returns that iterate (its period is integrated: ``image``). Early iterations run the flow
+estimated by the step ``norm(d)``; the iteration stops when it and the measured residual ``norm(r)`` are
+below ``tol`` at the final integration tolerance and returns that iterate (its period is integrated:
+``image``). Early iterations run the flow
 at a looser tolerance ``clip(eta * error estimate, rtol, rtol_max)`` (an inexact Newton method).
 The eigenvalues of ``S`` are the Ritz values of the monodromy on ``V``: the dominant multipliers.
 ``W = M V`` spans a better approximation of the dominant subspace than ``V`` (one step of subspace
@@ -71,11 +72,6 @@ class ShootingResult(SteadyResult):
     step_norms: list = field(default_factory=list)
     rtols: list = field(default_factory=list)
     wall_time: float = 0.0
-
-
-#: a secant (Broyden) update of the chord only from a step at least this many times the integration tolerance (the
-#: map's own noise is ~0.2 rtol: smaller steps would update it with noise)
-SECANT_FLOOR = 5.0
 
 
 def _max_norm(d) -> float:
@@ -152,8 +148,8 @@ def newton_picard(flow: Callable, y0, period: float, basis, *, t0: float = 0.0, 
                   rtol: float = 1e-8, rtol_max: float = 1e-4, eta: float = 3e-3, norm: Callable = _max_norm,
                   derivative: Callable | None = None, fd_step: float = 1e-3,
                   fd_rtol: float | None = None, refresh: float = 0.3, max_iter: int = 25, relax: int = 0,
-                  second_ritz: bool = False, refine_floor: float = 0.05, monodromy=None,
-                  rtol_start: float | None = None, callback: Callable | None = None) -> ShootingResult:
+                  second_ritz: bool = False, refine_floor: float = 0.05,
+                  callback: Callable | None = None) -> ShootingResult:
     """Fixed point of the period map by Newton-Picard (module docstring).
 
     Parameters
@@ -178,11 +174,6 @@ def newton_picard(flow: Callable, y0, period: float, basis, *, t0: float = 0.0, 
     relax : plain iterations of the map (at ``rtol_max``) before the first Newton step: they let the fast
         modes of a poor start die out so that they do not pollute the first step through the coupling
         ``V^T M Q`` that the Newton-Picard step leaves out.
-    monodromy : (p, p) projected monodromy on ``basis`` to start with as the chord (e.g. the previous speed's of a
-        continuation): no derivatives until a step is slow (``refresh``); the multipliers returned are then its
-        eigenvalues (``derivatives`` = 0 says so).
-    rtol_start : integration tolerance of the first Newton iteration (default ``rtol_max``; a start known to be
-        close, e.g. a continuation's prediction, converges at once at the final ``rtol``).
     callback : ``callback(k, y, r, d, rtol)`` after every iteration.
 
     Returns a :class:`ShootingResult`; ``success`` False (with the histories) if ``max_iter`` is reached.
@@ -193,13 +184,13 @@ def newton_picard(flow: Callable, y0, period: float, basis, *, t0: float = 0.0, 
     wall0 = time.perf_counter()
     f = _Counted(flow, derivative, norm, fd_step)
     fd_rtol = float(np.clip(fd_step / 100.0, rtol, rtol_max)) if fd_rtol is None else float(fd_rtol)
-    V, S = _chord(basis, monodromy)
+    V = _orthonormal(basis)
     p = V.shape[1]
+    S = None
     y = f.relaxed(np.array(y0, dtype=float), t0, period, rtol_max, relax)
     out = ShootingResult(state=y, image=y, success=False, message="")
     ritz, derived_at, refined = None, None, False
-    rt = rtol_max if rtol_start is None else float(np.clip(rtol_start, rtol, rtol_max))
-    chord, last = S, None  # the chord (S updated by secants) and the last iteration's (r, d, rtol)
+    rt = rtol_max
     for k in range(int(max_iter)):
         slow = len(out.step_norms) > 1 and out.step_norms[-1] > refresh * out.step_norms[-2]
         new_S = S is None or slow or (second_ritz and derived_at == k - 1 and k == 1 and refined)
@@ -214,12 +205,9 @@ def newton_picard(flow: Callable, y0, period: float, basis, *, t0: float = 0.0, 
             W = np.column_stack([f.jvp(y, fy, V[:, j], t0, period, rt) for j in range(p)])
             ritz, derived_at, V0 = np.linalg.eigvals(V.T @ W), k, V
             V, S = _refined(V, W, V.T @ W, refine_floor)
-            refined, chord = V is not V0, S
-        elif last is not None and last[2] == rt and norm(last[1]) >= SECANT_FLOOR * rt:
-            chord = _broyden(chord, V.T @ last[1], V.T @ (r - last[0]))
-        a = np.linalg.solve(np.eye(p) - chord, V.T @ r)
+            refined = V is not V0
+        a = np.linalg.solve(np.eye(p) - S, V.T @ r)
         d = r - V @ (V.T @ r) + V @ a
-        last = (r, d, rt)
         est = norm(d)
         if callback is not None:
             callback(k, y, r, d, rt)
@@ -233,33 +221,11 @@ def newton_picard(flow: Callable, y0, period: float, basis, *, t0: float = 0.0, 
                        + ", ".join(f"{e:.2e}" for e in out.step_norms[-5:]))
     out.periods, out.derivatives = f.periods, f.derivatives
     out.error_estimate = out.step_norms[-1] if out.step_norms else float("nan")
-    if ritz is not None or S is not None:
-        out.multipliers = _ordered(ritz if ritz is not None else np.linalg.eigvals(S))
+    if ritz is not None:
+        out.multipliers = _ordered(ritz)
     out.basis, out.monodromy = V, S
     out.wall_time = time.perf_counter() - wall0
     return out
-
-
-def _broyden(S, s, dr):
-    """Broyden's rank-one update of the chord ``S`` (the monodromy on V) by the secant of the last step: the step
-    ``s = V^T d`` changed the projected residual by ``dr = V^T (r_new - r_old) ~ (S - I) s``."""
-    return S + np.outer(dr + s - S @ s, s) / float(s @ s)
-
-
-def _chord(basis, monodromy):
-    """The orthonormal basis of ``basis`` and, if ``monodromy`` (S on ``basis``, ``M basis ~ basis S``) is given, S on
-    the orthonormal basis ``Q`` (``basis = Q R``: ``Q^T M Q = R S R^-1``); else None."""
-    if monodromy is None:
-        return _orthonormal(basis), None
-    B = np.asarray(basis, dtype=float)
-    S = np.asarray(monodromy, dtype=float)
-    if B.ndim != 2 or S.shape != (B.shape[1], B.shape[1]):
-        raise ValueError(f"monodromy has shape {S.shape}; the basis has {B.shape[-1]} columns, so it must be square "
-                         "of that size")
-    q, R = np.linalg.qr(B)
-    if np.abs(np.diag(R)).min() <= 1e-12 * max(1.0, float(np.abs(R).max())):
-        raise ValueError("basis: the columns are zero or linearly dependent")
-    return q, R @ S @ np.linalg.inv(R)
 
 
 def _refined(V, W, S, floor):

@@ -235,27 +235,8 @@ def test_noise_from_the_periodic_state_equals_the_settled_noise():
 
 
 # --------------------------------------------------------------------------------------------------
-# the period map on BDF2, the chord along a continuation, the residual behind the verdict
+# the period map on BDF2, the residual behind the verdict
 # --------------------------------------------------------------------------------------------------
-
-def test_a_given_monodromy_is_the_chord_and_broyden_keeps_the_secant():
-    from transient.solvers.shooting import _broyden
-
-    flow, y_star, mu, X = _linear_system()
-    V, _ = np.linalg.qr(X[:, :2])
-    h = 1e-6
-    M = np.column_stack([(flow(h * e, 0.0, 2 * np.pi, 0) - flow(0 * e, 0.0, 2 * np.pi, 0)) / h for e in np.eye(10)])
-    S = V.T @ M @ V
-    r = newton_picard(flow, np.zeros(10), 2 * np.pi, V, monodromy=S, tol=1e-10, rtol=1e-8, relax=3)
-    assert r.success and r.derivatives == 0, r.message  # the exact chord: no directional derivatives
-    assert np.max(np.abs(r.state - y_star)) < 1e-9
-    assert np.allclose(np.sort_complex(r.multipliers), np.sort_complex(np.linalg.eigvals(S)))
-    s, dr = np.array([0.3, -1.2]), np.array([0.05, 0.4])
-    B = _broyden(S, s, dr)
-    assert np.allclose((B - np.eye(2)) @ s, dr)  # the secant condition
-    with pytest.raises(ValueError, match="monodromy has shape"):
-        newton_picard(flow, np.zeros(10), 2 * np.pi, V, monodromy=np.eye(3))
-
 
 def test_bdf2_period_map_gives_the_ida_orbit_and_the_settled_one(settled):
     """The conservative BDF2 (content film) and IDA (universal film) integrate the same semi-discrete model: their
@@ -267,7 +248,7 @@ def test_bdf2_period_map_gives_the_ida_orbit_and_the_settled_one(settled):
     b = periodic_response(o, rtol=1e-8, tol=1e-8, integrator="bdf2")
     assert a.success and b.success and b.integrator == "bdf2", b.message
     assert np.max(np.hypot(a.x - r.x[-65:], a.y - r.y[-65:])) < 2e-8 * C
-    assert np.max(np.hypot(b.x - r.x[-65:], b.y - r.y[-65:])) < 5e-6 * C
+    assert np.max(np.hypot(b.x - r.x[-65:], b.y - r.y[-65:])) < 1e-6 * C  # measured 1.1e-7 C
     assert abs(b.max_multiplier - a.max_multiplier) < 1e-2
     with pytest.raises(ValueError, match="integrator"):
         periodic_response(o, integrator="rk4")
@@ -281,24 +262,3 @@ def test_the_converged_verdict_is_backed_by_a_measured_residual():
     assert p.converged and p.residual <= tol * C and p.error_estimate <= tol * C
     run = o.run(1, y0=p.state, rtol=1e-9, atol=1e-12, outputs_per_revolution=8)
     assert np.max(np.abs(run.final_state[n:] - p.state[n:])) < 2 * tol
-
-
-def test_continuation_with_the_chord_gives_the_same_orbits():
-    """Measuring the multipliers at the first two speeds and then every 3rd only, the monodromy extrapolated in
-    speed in between as the chord, gives the orbits of the continuation that measures them at every speed (within the tolerance), each
-    with its measured residual below tol, and multipliers close to the measured ones."""
-    o = _orbit(4000.0)
-    C, n = o.bearing.clearance, o.film.n
-    speeds = [4000.0, 4500.0, 5000.0, 5500.0, 6000.0, 6500.0]
-    every = response_curve(o, speeds, rtol=1e-6)
-    chord = response_curve(o, speeds, rtol=1e-6, floquet_every=3)
-    assert every.success and chord.success
-    assert all(p.multipliers_speed_rpm == p.speed_rpm for p in every.orbits)
-    assert [p.multipliers_speed_rpm for p in chord.orbits] == [4000.0, 4500.0, 4500.0, 4500.0, 6000.0, 6000.0]
-    for p, q in zip(every.orbits, chord.orbits):
-        assert np.max(np.abs(p.state[n:] - q.state[n:])) < 4e-6  # two solutions, each within 1e-6 C (+ the map's noise)
-        assert p.residual <= 1e-6 * C and q.residual <= 1e-6 * C
-    # linear extrapolation over up to two 500 rpm steps of |mu|(speed), whose second difference here is ~0.025
-    assert np.abs(chord.max_multiplier - every.max_multiplier).max() < 0.05
-    with pytest.raises(ValueError, match="floquet_every"):
-        response_curve(o, speeds, floquet_every=0)

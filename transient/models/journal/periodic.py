@@ -37,7 +37,7 @@ import numpy as np
 import scipy.linalg as sla
 import scipy.sparse.linalg as spla
 
-from transient.checks import check_choice, check_int, check_positive, check_range
+from transient.checks import check_choice, check_positive, check_range
 from transient.models.journal.kernels import N_ROTOR
 from transient.results import StatusResult, quantity, result_type
 from transient.solvers.integrate import solve
@@ -50,8 +50,6 @@ METHODS = ("shooting", "newton-krylov")
 #: time integrators of the period map: IDA on the universal film, or the conservative BDF2 on the content film
 #: (:mod:`transient.solvers.integrate.bdf2`, the step solve of :meth:`JournalOrbit.bdf2_model`)
 INTEGRATORS = ("ida", "bdf2")
-#: a continuation's predictors: Lagrange extrapolation in speed through the last 2 or 3 orbits
-PREDICTORS = ("secant", "quadratic")
 #: below this dominant multiplier the derivatives' noise (~rtol / fd_step) swamps the whirl pair: a continuation
 #: then takes the whirl basis afresh at the next speed instead of following the noisy subspace
 REFINE_FLOOR = 0.05
@@ -80,10 +78,6 @@ class PeriodicOrbit(StatusResult):
     ``residual_norms`` [m]: ``|Phi(y) - y|`` of the rotor state per iteration; ``revolutions_integrated``:
     periods integrated, directional derivatives included; ``residual`` [m]: the measured ``|x(T) - x(0)|`` of the
     rotor state at the accepted ``state`` (``converged`` means both it and ``error_estimate`` are below ``tol``);
-    ``basis``, ``monodromy``: the whirl subspace and the monodromy projected on it (a continuation's next chord);
-    ``multipliers_speed_rpm``: ``speed_rpm`` when ``multipliers`` come from directional derivatives at this speed;
-    in a continuation that iterated with a chord extrapolated from the last two measured speeds, the nearer of those
-    (the multipliers are then the chord's);
     ``integrator``: the period map's time integrator. ``success`` is False when the shooting did not
     converge or the orbit is unstable (the message says which; the fields hold what was found).
     """
@@ -105,8 +99,6 @@ class PeriodicOrbit(StatusResult):
     method: str = "shooting"
     wall_time: float = quantity("s", 0.0)
     basis: np.ndarray | None = quantity("-", None, repr=False)
-    monodromy: np.ndarray | None = quantity("-", None, repr=False)
-    multipliers_speed_rpm: float = quantity("rpm", float("nan"))
     integrator: str = "ida"
     success: bool = field(default=False, kw_only=True)
 
@@ -277,8 +269,7 @@ def lift(orbit: Orbit, y, dq) -> np.ndarray:
 def periodic_response(orbit: Orbit, rtol: float = 1e-6, tol: float | None = None, method: str = "shooting",
                       start=None, basis=None, outputs_per_revolution: int = 64, max_iter: int = 25,
                       fallback: bool = False, max_revolutions: int = 200, fd_step: float = 1e-3,
-                      relax: int = 1, integrator: str = "ida", monodromy=None,
-                      rtol_start: float | None = None) -> PeriodicOrbit:
+                      relax: int = 1, integrator: str = "ida") -> PeriodicOrbit:
     """The periodic unbalance response of ``orbit`` (module docstring).
 
     Parameters
@@ -298,12 +289,8 @@ def periodic_response(orbit: Orbit, rtol: float = 1e-6, tol: float | None = None
     relax : periods integrated (at a loose tolerance) before the first Newton step: the film of a start -- the
         linearised response's quasi-steady film, an extrapolation in speed -- is not the periodic one, and its
         error would spoil the first step (docs/periodic.md).
-    integrator : time integrator of the period map, ``"ida"`` or ``"bdf2"`` (:data:`INTEGRATORS`).
-    monodromy : (2, 2) monodromy on ``basis`` to iterate with as the chord (a continuation passes the previous
-        speed's, :attr:`PeriodicOrbit.monodromy`): no directional derivatives unless the chord converges slowly,
-        and the multipliers are then that monodromy's (``multipliers_speed_rpm`` nan: not measured at this speed;
-        :func:`response_curve` fills in the speed they were measured at).
-    rtol_start : integration tolerance of the first iteration (default the loosest, ``max(rtol, 1e-4)``).
+    integrator : time integrator of the period map, ``"ida"`` or ``"bdf2"`` (:data:`INTEGRATORS`; docs/periodic.md
+        measures both).
     """
     _check_orbit(orbit)
     check_choice("method", method, METHODS)
@@ -317,11 +304,9 @@ def periodic_response(orbit: Orbit, rtol: float = 1e-6, tol: float | None = None
         raise ValueError(f"start has shape {y0.shape}; this orbit has {orbit.n} states")
     two_pi = 2.0 * np.pi
     kw = dict(tol=tol, rtol=rtol, rtol_max=max(rtol, 1e-4), norm=_Flow.norm, fd_step=fd_step, max_iter=max_iter)
-    if monodromy is not None and basis is None:
-        raise ValueError("monodromy needs the basis it was projected on (basis=)")
     if method == "shooting":
         V = whirl_basis(orbit, y0) if basis is None else np.asarray(basis, dtype=float)
-        sh = newton_picard(F, F.reduce(y0), two_pi, F.reduce(V), relax=relax, monodromy=monodromy, rtol_start=rtol_start,
+        sh = newton_picard(F, F.reduce(y0), two_pi, F.reduce(V), relax=relax,
                            second_ritz=basis is None, refine_floor=REFINE_FLOOR, **kw)
     else:
         sh = newton_krylov(F, F.reduce(y0), two_pi, relax=relax, **kw)
@@ -338,7 +323,6 @@ def periodic_response(orbit: Orbit, rtol: float = 1e-6, tol: float | None = None
         samples = F.samples.get(F.reduce(state).tobytes())
     t, x, y = samples[1:] if samples else (np.zeros(0), np.zeros(0), np.zeros(0))
     mu = sh.multipliers
-    mu_speed = orbit.speed_rpm if sh.derivatives or method != "shooting" else float("nan")
     stable = bool(mu.size and np.abs(mu).max() < 1.0)
     success = converged and (stable or method != "shooting")
     if converged and method == "shooting" and not stable:
@@ -352,8 +336,7 @@ def periodic_response(orbit: Orbit, rtol: float = 1e-6, tol: float | None = None
                          stable=stable, converged=converged, iterations=sh.iterations, revolutions_integrated=periods,
                          error_estimate=sh.error_estimate * C, residual_norms=[v * C for v in sh.residual_norms],
                          rtol=rtol, method=method, wall_time=time.perf_counter() - wall0,
-                         basis=None if sh.basis is None else _embed_basis(F, sh.basis),
-                         monodromy=sh.monodromy, multipliers_speed_rpm=mu_speed, integrator=integrator,
+                         basis=None if sh.basis is None else _embed_basis(F, sh.basis), integrator=integrator,
                          success=success, message=message)
 
 
@@ -381,66 +364,42 @@ def _settle(orbit: Orbit, state, rtol, tol, max_revolutions):
 
 def response_curve(orbit: Orbit, speeds_rpm, rtol: float = 1e-5, tol: float | None = None,
                    outputs_per_revolution: int = 64, whirl_revolutions: int = 0, predictor: str = "quadratic",
-                   previous=None, progress: bool = False, fd_step: float = 1e-3, integrator: str = "ida",
-                   floquet_every: int = 1, floquet_above: float = 0.8) -> ResponseCurve:
+                   previous=None, progress: bool = False, fd_step: float = 1e-3,
+                   integrator: str = "ida") -> ResponseCurve:
     """Periodic unbalance responses along ``speeds_rpm`` (monotone) by continuation (module docstring): the
     rotor, bearing and unbalance of ``orbit``, each speed warm-started from the previous ones (``predictor``:
-    ``"secant"`` or ``"quadratic"`` extrapolation of the states in speed, one relaxing period, then Newton at the
-    final ``rtol``) with the previous whirl subspace and its monodromy as the chord; ``previous``: a
-    :class:`ResponseCurve` or a list of :class:`PeriodicOrbit` to continue (its last orbits start the path). Speeds
-    past the onset give the unstable periodic orbit (flagged ``unstable``); with ``whirl_revolutions`` > 0 the
-    quasi-periodic response there is also integrated (:func:`quasi_periodic_response`).
-
-    Floquet multipliers: the directional derivatives (two periods) are taken afresh at the first two speeds, at least
-    every ``floquet_every`` speeds (default 1: at every speed), wherever the dominant multiplier extrapolated in speed from
-    the last two measured ones exceeds ``floquet_above`` (so every speed near the onset has its own), and wherever
-    the chord converges slowly; a speed in between iterates with the monodromy extrapolated in speed from the last
-    two measured ones and reports its eigenvalues (:attr:`PeriodicOrbit.multipliers_speed_rpm`: the last measured
-    speed there)."""
+    ``"secant"`` or ``"quadratic"`` extrapolation of the states in speed) with the previous whirl subspace;
+    ``previous``: a :class:`ResponseCurve` or a list of :class:`PeriodicOrbit` to continue (its last orbits
+    start the path). Speeds past the onset give the unstable
+    periodic orbit (flagged ``unstable``); with ``whirl_revolutions`` > 0 the quasi-periodic response there is
+    also integrated (:func:`quasi_periodic_response`). ``integrator``: the period map's (:data:`INTEGRATORS`)."""
     _check_orbit(orbit)
     speeds = np.asarray(speeds_rpm, dtype=float).ravel()
     if speeds.size == 0 or np.any(speeds <= 0):
         raise ValueError(f"speeds_rpm must be positive speeds [rpm], got {speeds_rpm!r}")
     if speeds.size > 1 and not (np.all(np.diff(speeds) > 0) or np.all(np.diff(speeds) < 0)):
         raise ValueError("speeds_rpm must be strictly monotone (a continuation path) [rpm]")
-    points = dict(secant=2, quadratic=3)[check_choice("predictor", predictor, PREDICTORS)]
+    check_choice("predictor", predictor, ("secant", "quadratic"))
     check_choice("integrator", integrator, INTEGRATORS)
-    floquet_every = check_int("floquet_every", floquet_every, "speeds", 1, 10**6)
-    floquet_above = check_range("floquet_above", floquet_above, "-", 0.0, 1.0)
-    done = [p for p in getattr(previous, "orbits", previous or []) if p.converged][-points:]
+    done = [p for p in getattr(previous, "orbits", previous or []) if p.converged][-3:]
     path = [p.speed_rpm for p in done]
     orbits, whirls = [], []
     basis = done[-1].basis if done and done[-1].max_multiplier > REFINE_FLOOR else None
-    measured = [p for p in done if p.multipliers_speed_rpm == p.speed_rpm][-2:]
-    age = floquet_every  # a continued path measures the multipliers at its first speed
     bar = progress_bar(progress, speeds.size, "speed", "periodic responses")
     for s in speeds:
         o = orbit if s == orbit.speed_rpm else orbit.at_speed(s)
-        start = _extrapolate(np.array(path), [q.state for q in done], s, points)
-        use_chord = (len(measured) == 2 and start is not None and age < floquet_every - 1
-                     and _predicted_multiplier(measured, s) <= floquet_above)
-        chord = _chord_at(measured, s) if use_chord else None
-        kw = dict(rtol=rtol, tol=tol, fd_step=fd_step, outputs_per_revolution=outputs_per_revolution,
-                  integrator=integrator)
-        if start is None:
-            p = periodic_response(o, start=start, basis=basis, **kw)
-        else:  # a prediction from periodic orbits: one relaxing period (loose), then Newton at the final rtol
-            p = periodic_response(o, start=start, basis=chord[0] if use_chord else basis,
-                                  monodromy=chord[1] if use_chord else None, rtol_start=rtol, **kw)
+        start = _extrapolate(np.array(path), [p.state for p in done], s, 3 if predictor == "quadratic" else 2)
+        p = periodic_response(o, rtol=rtol, tol=tol, start=start, basis=basis, fd_step=fd_step,
+                              outputs_per_revolution=outputs_per_revolution, integrator=integrator)
         if not p.converged and start is not None:  # the extrapolation went astray: start afresh
-            q = periodic_response(o, **kw)
+            q = periodic_response(o, rtol=rtol, tol=tol, fd_step=fd_step, outputs_per_revolution=outputs_per_revolution,
+                                  integrator=integrator)
             q.revolutions_integrated += p.revolutions_integrated
             p = q
-        if p.multipliers_speed_rpm == s:  # measured here: the refined basis is the next measurement's, unless it
-            if p.converged:  # was refined from noise (then a fresh one)
-                measured, age = (measured + [p])[-2:], 0
-                basis = p.basis if p.max_multiplier > REFINE_FLOOR else None
-        elif np.isnan(p.multipliers_speed_rpm) and p.method == "shooting":  # the chord's, extrapolated
-            p.multipliers_speed_rpm, age = measured[-1].speed_rpm, age + 1
         orbits.append(p)
-        if p.converged:
-            keep = 1 - points
-            done, path = done[keep:] + [p], path[keep:] + [s]
+        if p.converged:  # the refined basis, unless it was refined from noise: then afresh at the next start
+            done, path = done + [p], path + [s]
+            basis = p.basis if p.max_multiplier > REFINE_FLOOR else None
         w = None
         if whirl_revolutions > 0 and p.converged and not p.stable:
             w = quasi_periodic_response(o, whirl_revolutions, start=p.state, rtol=rtol)
@@ -453,26 +412,6 @@ def response_curve(orbit: Orbit, speeds_rpm, rtol: float = 1e-5, tol: float | No
     if bar:
         bar.close()
     return _curve(speeds, orbits, whirls)
-
-
-def _predicted_multiplier(measured, s) -> float:
-    """The dominant multiplier's modulus at speed ``s`` extrapolated linearly in speed from the last two orbits
-    whose multipliers were measured."""
-    a, b = measured
-    return b.max_multiplier + (b.max_multiplier - a.max_multiplier) * (s - b.speed_rpm) / (b.speed_rpm - a.speed_rpm)
-
-
-def _chord_at(measured, s):
-    """(basis, monodromy) for speed ``s``: the last measured orbit's basis and its projected monodromy
-    extrapolated linearly in speed from the last two measured ones (the older one carried onto the newer
-    basis, ``S_a -> T S_a T^-1`` with ``T = V_b^T V_a``)."""
-    b = measured[-1]
-    a = measured[0]
-    T = b.basis.T @ a.basis
-    if np.linalg.svd(T, compute_uv=False).min() < 0.5:  # the subspaces drifted apart: no extrapolation
-        return b.basis, b.monodromy
-    Sa = T @ a.monodromy @ np.linalg.inv(T)
-    return b.basis, b.monodromy + (b.monodromy - Sa) * (s - b.speed_rpm) / (b.speed_rpm - a.speed_rpm)
 
 
 def _extrapolate(speeds, states, s, points):
