@@ -269,7 +269,7 @@ def lift(orbit: Orbit, y, dq) -> np.ndarray:
 def periodic_response(orbit: Orbit, rtol: float = 1e-6, tol: float | None = None, method: str = "shooting",
                       start=None, basis=None, outputs_per_revolution: int = 64, max_iter: int = 25,
                       fallback: bool = False, max_revolutions: int = 200, fd_step: float = 1e-3,
-                      relax: int = 1, integrator: str = "ida") -> PeriodicOrbit:
+                      relax: int = 1, *, integrator: str = "ida") -> PeriodicOrbit:
     """The periodic unbalance response of ``orbit`` (module docstring).
 
     Parameters
