@@ -18,8 +18,9 @@ step with the projected monodromy ``S = V^T M V`` and a Picard (fixed-point) ste
 The Q part contracts at the rate of the largest multiplier left out; the P part converges like Newton.
 ``S`` costs p directional derivatives (p periods) and is kept (a chord) while the steps shrink at least
 ``1 / refresh``-fold per iteration, and recomputed otherwise. The error of the current iterate is
-estimated by the step ``norm(d)``; the iteration stops when it is below ``tol`` at the final integration
-tolerance and returns that iterate (its period is integrated: ``image``). Early iterations run the flow
+estimated by the step ``norm(d)``; the iteration stops when it and the measured residual ``norm(r)`` are
+below ``tol`` at the final integration tolerance and returns that iterate (its period is integrated:
+``image``). Early iterations run the flow
 at a looser tolerance ``clip(eta * error estimate, rtol, rtol_max)`` (an inexact Newton method).
 The eigenvalues of ``S`` are the Ritz values of the monodromy on ``V``: the dominant multipliers.
 ``W = M V`` spans a better approximation of the dominant subspace than ``V`` (one step of subspace
@@ -81,15 +82,17 @@ def _max_norm(d) -> float:
 
 
 def _step_taken(out, k, y, fy, residual_norm, est, rt, tol, rtol) -> bool:
-    """Record iteration ``k`` in ``out``; True (and ``out`` converged at ``y``) when the Newton step's error
-    estimate is below ``tol`` with the flow integrated at the final ``rtol``."""
+    """Record iteration ``k`` in ``out``; True (and ``out`` converged at ``y``) when, with the flow integrated at
+    the final ``rtol``, both the Newton step's error estimate and the measured residual ``norm(Phi(y) - y)`` are
+    below ``tol``."""
     out.residual_norms.append(residual_norm)
     out.step_norms.append(est)
     out.rtols.append(rt)
     out.iterations = k + 1
-    if est <= tol and rt <= rtol:
+    if est <= tol and residual_norm <= tol and rt <= rtol:
         out.state, out.image, out.success = y, fy, True
-        out.message = f"converged in {k + 1} iterations: error estimate {est:.2e} <= tol {tol:.2e}"
+        out.message = (f"converged in {k + 1} iterations: error estimate {est:.2e} and residual "
+                       f"|Phi(y) - y| {residual_norm:.2e} <= tol {tol:.2e}")
         return True
     return False
 

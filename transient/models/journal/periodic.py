@@ -41,12 +41,16 @@ from transient.checks import check_choice, check_positive, check_range
 from transient.models.journal.kernels import N_ROTOR
 from transient.results import StatusResult, quantity, result_type
 from transient.solvers.integrate import solve
+from transient.solvers.settings import Integration
 from transient.solvers.settling import settled_stop, settles
 from transient.solvers.progress import progress_bar
 from transient.solvers.shooting import ShootingSettings, floquet_multipliers, newton_krylov, newton_picard
 from transient.solvers.settings import Integration, LongRun, Recording
 
 METHODS = ("shooting", "newton-krylov")
+#: time integrators of the period map: IDA on the universal film, or the conservative BDF2 on the content film
+#: (:mod:`transient.solvers.integrate.bdf2`, the step solve of :meth:`JournalOrbit.bdf2_model`)
+INTEGRATORS = ("ida", "bdf2")
 #: below this dominant multiplier the derivatives' noise (~rtol / fd_step) swamps the whirl pair: a continuation
 #: then takes the whirl basis afresh at the next speed instead of following the noisy subspace
 REFINE_FLOOR = 0.05
@@ -73,7 +77,9 @@ class PeriodicOrbit(StatusResult):
     multipliers (modulus first); ``stable``: all inside the unit circle; ``error_estimate`` [m]: distance of
     ``state`` from the fixed point estimated by the last Newton step (rotor position and velocity);
     ``residual_norms`` [m]: ``|Phi(y) - y|`` of the rotor state per iteration; ``revolutions_integrated``:
-    periods integrated, directional derivatives included. ``success`` is False when the shooting did not
+    periods integrated, directional derivatives included; ``residual`` [m]: the measured ``|x(T) - x(0)|`` of the
+    rotor state at the accepted ``state`` (``converged`` means both it and ``error_estimate`` are below ``tol``);
+    ``integrator``: the period map's time integrator. ``success`` is False when the shooting did not
     converge or the orbit is unstable (the message says which; the fields hold what was found).
     """
 
@@ -94,6 +100,7 @@ class PeriodicOrbit(StatusResult):
     method: str = "shooting"
     wall_time: float = quantity("s", 0.0)
     basis: np.ndarray | None = quantity("-", None, repr=False)
+    integrator: str = "ida"
     success: bool = field(default=False, kw_only=True)
 
     @property
@@ -109,6 +116,12 @@ class PeriodicOrbit(StatusResult):
         """Semi-major axis [m] of the 1x ellipse."""
         Z = self.harmonic
         return float(np.linalg.svd(np.array([[Z[0].real, -Z[0].imag], [Z[1].real, -Z[1].imag]]), compute_uv=False)[0])
+
+    @property
+    def residual(self) -> float:
+        """The measured ``|x(T) - x(0)|`` [m] (rotor position and velocity, largest component) of the last
+        iterate integrated (the accepted ``state`` when ``converged``)."""
+        return float(self.residual_norms[-1]) if self.residual_norms else float("nan")
 
     @property
     def max_multiplier(self) -> float:
@@ -174,16 +187,34 @@ class WhirlResponse(StatusResult):
 
 
 class _Flow:
-    """The once-per-revolution map of an orbit on the free film cells + rotor (IDA), keeping the journal
-    centre at ``opr`` outputs of the last few periods integrated (the orbit of the accepted iterate)."""
+    """The once-per-revolution map of an orbit on the free film cells + rotor, keeping the journal centre at
+    ``opr`` outputs of the last few periods integrated (the orbit of the accepted iterate). ``integrator``:
+    ``"ida"`` (the universal film) or ``"bdf2"`` (the content film, mapped from and back to the universal
+    state: the map's unknowns are the same either way)."""
 
-    def __init__(self, orbit: Orbit, opr: int, atol_factor: float = 1e-3):
+    def __init__(self, orbit: Orbit, opr: int, atol_factor: float = 1e-3, integrator: str = "ida"):
         f = orbit.film
         self.o, self.opr, self.atol_factor = orbit, int(opr), atol_factor
+        self.integrator = check_choice("integrator", integrator, INTEGRATORS)
         self.keep = np.concatenate([np.flatnonzero(f.op.free), f.n + np.arange(N_ROTOR)])
         self.template = np.zeros(orbit.n)
         self.template[: f.n][~f.op.free] = f.u_supply
         self.samples = {}
+        self._bdf2 = None
+
+    def _solve(self, y, t_eval, rtol):
+        """The run over ``t_eval`` from the universal state ``y``: (solution, states in the universal layout)."""
+        o = self.o
+        if self.integrator == "ida":
+            s = solve(o.problem(y, t_eval[0], touch_gap=1e-3), t_eval, method="ida", rtol=rtol,
+                      atol=o.absolute_tolerance(self.atol_factor * rtol))
+            return s, s.y
+        if self._bdf2 is None:  # the step solve's model (its work arrays) once per map
+            self._bdf2 = o._stepper(Integration(method="bdf2", rtol=rtol), "content", 1e-3)
+        st = self._bdf2
+        s = solve(st.problem_at(o.content_state(y), t_eval[0]), t_eval, method="bdf2", rtol=rtol,
+                  atol=self.atol_factor * rtol, max_step=st.max_step, first_step=st.first_step, options=st.options)
+        return s, (np.array([o.universal_state(v) for v in s.y]) if s.y.size else s.y)
 
     def reduce(self, y):
         return np.asarray(y, dtype=float)[self.keep]
@@ -196,17 +227,16 @@ class _Flow:
     def __call__(self, z, t0, T, rtol):
         o, n = self.o, self.o.film.n
         t_eval = t0 + T * np.linspace(0.0, 1.0, self.opr + 1)
-        s = solve(o.problem(self.embed(z), t0, touch_gap=1e-3), t_eval, method="ida", rtol=rtol,
-                  atol=o.absolute_tolerance(self.atol_factor * rtol))
+        s, ys = self._solve(self.embed(z), t_eval, rtol)
         if not s.success or s.t.size < t_eval.size:
             return np.full(z.size, np.nan)
         key = z.tobytes()
         if key not in self.samples or rtol <= self.samples[key][0]:  # keep the tightest run of a state
             if len(self.samples) > 8:
                 self.samples.pop(next(iter(self.samples)))
-            self.samples[key] = (rtol, s.t / o.film.omega, s.y[:, n] * o.bearing.clearance,
-                                 s.y[:, n + 1] * o.bearing.clearance)
-        return s.y[-1][self.keep]
+            self.samples[key] = (rtol, s.t / o.film.omega, ys[:, n] * o.bearing.clearance,
+                                 ys[:, n + 1] * o.bearing.clearance)
+        return ys[-1][self.keep]
 
     @staticmethod
     def norm(d) -> float:
@@ -240,7 +270,7 @@ def lift(orbit: Orbit, y, dq) -> np.ndarray:
 def periodic_response(orbit: Orbit, rtol: float = 1e-6, tol: float | None = None, method: str = "shooting",
                       start=None, basis=None, outputs_per_revolution: int = 64, max_iter: int = 25,
                       fallback: bool = False, max_revolutions: int = 200, fd_step: float = 1e-3,
-                      relax: int = 1) -> PeriodicOrbit:
+                      relax: int = 1, *, integrator: str = "ida") -> PeriodicOrbit:
     """The periodic unbalance response of ``orbit`` (module docstring).
 
     Parameters
@@ -260,6 +290,8 @@ def periodic_response(orbit: Orbit, rtol: float = 1e-6, tol: float | None = None
     relax : periods integrated (at a loose tolerance) before the first Newton step: the film of a start -- the
         linearised response's quasi-steady film, an extrapolation in speed -- is not the periodic one, and its
         error would spoil the first step (docs/periodic.md).
+    integrator : time integrator of the period map, ``"ida"`` or ``"bdf2"`` (:data:`INTEGRATORS`; docs/periodic.md
+        measures both).
     """
     _check_orbit(orbit)
     check_choice("method", method, METHODS)
@@ -267,7 +299,7 @@ def periodic_response(orbit: Orbit, rtol: float = 1e-6, tol: float | None = None
     tol = rtol if tol is None else check_positive("tol", tol, "C")
     opr = int(check_range("outputs_per_revolution", outputs_per_revolution, "1/rev", 4, 1e5))
     wall0 = time.perf_counter()
-    F = _Flow(orbit, opr)
+    F = _Flow(orbit, opr, integrator=integrator)
     y0 = orbit.linear_start() if start is None else np.array(getattr(start, "state", start), dtype=float)
     if y0.shape != (orbit.n,):
         raise ValueError(f"start has shape {y0.shape}; this orbit has {orbit.n} states")
@@ -305,8 +337,8 @@ def periodic_response(orbit: Orbit, rtol: float = 1e-6, tol: float | None = None
                          stable=stable, converged=converged, iterations=sh.iterations, revolutions_integrated=periods,
                          error_estimate=sh.error_estimate * C, residual_norms=[v * C for v in sh.residual_norms],
                          rtol=rtol, method=method, wall_time=time.perf_counter() - wall0,
-                         basis=None if sh.basis is None else _embed_basis(F, sh.basis), success=success,
-                         message=message)
+                         basis=None if sh.basis is None else _embed_basis(F, sh.basis), integrator=integrator,
+                         success=success, message=message)
 
 
 def _embed_basis(F: _Flow, V) -> np.ndarray:
@@ -334,14 +366,15 @@ def _settle(orbit: Orbit, state, rtol, tol, max_revolutions):
 
 def response_curve(orbit: Orbit, speeds_rpm, rtol: float = 1e-5, tol: float | None = None,
                    outputs_per_revolution: int = 64, whirl_revolutions: int = 0, predictor: str = "quadratic",
-                   previous=None, progress: bool = False, fd_step: float = 1e-3) -> ResponseCurve:
+                   previous=None, progress: bool = False, fd_step: float = 1e-3,
+                   integrator: str = "ida") -> ResponseCurve:
     """Periodic unbalance responses along ``speeds_rpm`` (monotone) by continuation (module docstring): the
     rotor, bearing and unbalance of ``orbit``, each speed warm-started from the previous ones (``predictor``:
     ``"secant"`` or ``"quadratic"`` extrapolation of the states in speed) with the previous whirl subspace;
     ``previous``: a :class:`ResponseCurve` or a list of :class:`PeriodicOrbit` to continue (its last orbits
     start the path). Speeds past the onset give the unstable
     periodic orbit (flagged ``unstable``); with ``whirl_revolutions`` > 0 the quasi-periodic response there is
-    also integrated (:func:`quasi_periodic_response`)."""
+    also integrated (:func:`quasi_periodic_response`). ``integrator``: the period map's (:data:`INTEGRATORS`)."""
     _check_orbit(orbit)
     speeds = np.asarray(speeds_rpm, dtype=float).ravel()
     if speeds.size == 0 or np.any(speeds <= 0):
@@ -349,6 +382,7 @@ def response_curve(orbit: Orbit, speeds_rpm, rtol: float = 1e-5, tol: float | No
     if speeds.size > 1 and not (np.all(np.diff(speeds) > 0) or np.all(np.diff(speeds) < 0)):
         raise ValueError("speeds_rpm must be strictly monotone (a continuation path) [rpm]")
     check_choice("predictor", predictor, ("secant", "quadratic"))
+    check_choice("integrator", integrator, INTEGRATORS)
     done = [p for p in getattr(previous, "orbits", previous or []) if p.converged][-3:]
     path = [p.speed_rpm for p in done]
     orbits, whirls = [], []
@@ -358,9 +392,10 @@ def response_curve(orbit: Orbit, speeds_rpm, rtol: float = 1e-5, tol: float | No
         o = orbit if s == orbit.speed_rpm else orbit.at_speed(s)
         start = _extrapolate(np.array(path), [p.state for p in done], s, 3 if predictor == "quadratic" else 2)
         p = periodic_response(o, rtol=rtol, tol=tol, start=start, basis=basis, fd_step=fd_step,
-                              outputs_per_revolution=outputs_per_revolution)
+                              outputs_per_revolution=outputs_per_revolution, integrator=integrator)
         if not p.converged and start is not None:  # the extrapolation went astray: start afresh
-            q = periodic_response(o, rtol=rtol, tol=tol, fd_step=fd_step, outputs_per_revolution=outputs_per_revolution)
+            q = periodic_response(o, rtol=rtol, tol=tol, fd_step=fd_step, outputs_per_revolution=outputs_per_revolution,
+                                  integrator=integrator)
             q.revolutions_integrated += p.revolutions_integrated
             p = q
         orbits.append(p)
