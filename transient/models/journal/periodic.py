@@ -41,7 +41,6 @@ from transient.checks import check_choice, check_positive, check_range
 from transient.models.journal.kernels import N_ROTOR
 from transient.results import StatusResult, quantity, result_type
 from transient.solvers.integrate import solve
-from transient.solvers.settings import Integration
 from transient.solvers.settling import settled_stop, settles
 from transient.solvers.progress import progress_bar
 from transient.solvers.shooting import ShootingSettings, floquet_multipliers, newton_krylov, newton_picard
