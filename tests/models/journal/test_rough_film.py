@@ -123,7 +123,7 @@ def test_force_sensitivity_with_contact_matches_finite_differences():
 def test_contact_force_is_the_greenwood_tripp_integral_of_the_gap():
     """The asperity force at a rigid journal position against the Greenwood-Tripp pressure of the gap
     h = C (1 + X cos phi) integrated by adaptive quadrature: L R int p_a cos phi dphi (the cell sum is the
-    midpoint rule on 151 cells: 1e-3)."""
+    midpoint rule on 151 cells, on a smooth periodic integrand: it converges exponentially, 1e-8 is loose)."""
     b = rough(1e-6, grid=(151, 4))
     f = b.film(100.0)
     X = 0.985
@@ -131,7 +131,7 @@ def test_contact_force_is_the_greenwood_tripp_integral_of_the_gap():
     c = b.roughness.contact
     ref = b.length * b.radius * quad(lambda p: c.load(b.clearance * (1 + X * math.cos(p))) * math.cos(p),
                                      0, 2 * math.pi, points=[math.pi], limit=200)[0]
-    assert ref < 0 and Fx == pytest.approx(ref, rel=1e-3)
+    assert ref < 0 and Fx == pytest.approx(ref, rel=1e-8)
 
 
 def test_high_speed_rough_bearing_is_the_smooth_one():
@@ -170,7 +170,7 @@ def test_light_load_friction_is_petroffs():
     ``T0 / (R W) = 4 pi^2 mu N R^2 L / (W C)`` (N in rev/s). A lightly loaded rough bearing whose film is full (fed
     from its ends at 5 bar, no groove) at 6000 rpm: the Couette shear of the eccentric film is T0 / sqrt(1 - eps^2),
     the Poiseuille part of the journal's wall stress adds the pressure's moment e W sin(attitude) / 2 (at most
-    e W / 2; the test allows e W); no contact."""
+    e W / 2); no contact."""
     b = JournalBearing(**BEARING, groove=None, ambient_pressure=5e5, grid=GRID,
                        roughness=Roughness(steel_asperity_contact(1e-6), boundary_friction=0.12))
     W = 100.0
@@ -179,20 +179,21 @@ def test_light_load_friction_is_petroffs():
     assert np.min(s.film_content) >= 1.0 and eps < 0.05 and s.contact_load == 0.0
     w = 6000.0 * math.pi / 30.0
     T0 = 2 * math.pi * b.viscosity * w * b.radius ** 3 * b.length / b.clearance
-    assert abs(s.friction_torque - T0 / math.sqrt(1 - eps ** 2)) < eps * b.clearance * W
+    moment = eps * b.clearance * W * math.sin(math.radians(s.attitude_angle_deg)) / 2
+    assert s.friction_torque - T0 / math.sqrt(1 - eps ** 2) == pytest.approx(moment, rel=0.05)
     petroff = 4 * math.pi ** 2 * b.viscosity * 100.0 * b.radius ** 2 * b.length / (W * b.clearance)
     assert s.friction_coefficient == pytest.approx(petroff, rel=2e-3)  # 1/sqrt(1 - eps^2) - 1 = 9e-4
 
 
 def test_stribeck_curve_has_its_minimum_and_lift_off():
-    b = rough(1e-6)
-    speeds = np.geomspace(10, 6000, 12)
+    b = rough(1e-6, grid=(24, 4))
+    speeds = np.geomspace(10, 6000, 8)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", UserWarning)
         r = stribeck_curve(b, 5000.0, speeds)
-    assert np.all(np.diff(r.speed_rpm) > 0) and r.speed_rpm.size == 12
+    assert np.all(np.diff(r.speed_rpm) > 0) and r.speed_rpm.size == 8
     k = int(np.argmin(r.friction_torque))
-    assert 0 < k < 11  # falling (mixed) then rising (hydrodynamic) branch
+    assert 0 < k < 7  # falling (mixed) then rising (hydrodynamic) branch
     assert np.all(np.diff(r.h_min) > 0)
     assert np.all(np.diff(r.contact_load[r.contact_load > 1e-9]) < 0)
     share = r.contact_load / 5000.0
@@ -208,3 +209,15 @@ def test_lift_off_speed_interpolates_the_crossing():
     assert lift_off_speed(s, [500.0, 50.0, 0.0], 1000.0, 0.025) == pytest.approx(10 ** 2.5)  # share 0.05 -> 0
     assert math.isnan(lift_off_speed(s, [0.0, 0.0, 0.0], 1000.0))
     assert math.isnan(lift_off_speed(s, [500.0, 500.0, 500.0], 1000.0))
+
+
+def test_orbit_and_rotor_system_refuse_a_rough_bearing():
+    """The time-domain films are smooth: a rough bearing is refused at their door, not integrated as a smooth one."""
+    from transient import JournalOrbit, Rotor, RotorBearingSystem
+
+    b = rough(1e-6)
+    with pytest.raises(ValueError, match="roughness"):
+        JournalOrbit(b, rotor_mass=10.0, unbalance=1e-6, load=1000.0, speed_rpm=3000.0)
+    rotor = Rotor.example()
+    with pytest.raises(ValueError, match="roughness"):
+        RotorBearingSystem(rotor, {n: b for n in rotor.bearing_nodes})

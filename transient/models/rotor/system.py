@@ -87,6 +87,9 @@ class RotorBearingSystem:
                 raise ValueError(f"bearings[{node!r}] cavitation = {b.cavitation!r}; allowed: \"elrod\" (the rotor "
                                  "system couples the mass-conserving films; the Reynolds-condition film serves the "
                                  "single bearing's steady and linear analyses)")
+            if getattr(b, "roughness", None) is not None:
+                raise ValueError(f"bearings[{node!r}] roughness = Roughness(...); allowed: None (the rotor system's "
+                                 "films are smooth; a rough bearing serves the single bearing's steady analyses)")
         self.bearings = dict(bearings)
         self.length_scale = min(b.clearance for b in self.bearings.values())
         self.unbalance = self._check_unbalance(unbalance)
