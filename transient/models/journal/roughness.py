@@ -42,6 +42,8 @@ SHEAR_FIT_H_MIN = 0.5  # [-] lower end of the Patir-Cheng (1979) shear flow fit
 class Roughness:
     """The combined rough surface of a journal bearing (journal + bush).
 
+    Parameters
+    ----------
     contact : :class:`~transient.physics.asperity.AsperityContact` -- Greenwood-Tripp asperities: composite RMS
         roughness ``sigma`` [m], asperity density and radius, composite modulus E', hardness.
     gamma [-] : Peklenik number (1 isotropic; > 1 streaks along the rotation, < 1 across it), in [1/9, 9].
