@@ -7,6 +7,7 @@ import warnings
 import numpy as np
 import pytest
 from scipy.integrate import quad
+from scipy.optimize import brentq
 
 from transient import JournalBearing, Roughness, steel_asperity_contact, stribeck_curve
 from transient.models.journal.film import Film
@@ -221,3 +222,26 @@ def test_orbit_and_rotor_system_refuse_a_rough_bearing():
     rotor = Rotor.example()
     with pytest.raises(ValueError, match="roughness"):
         RotorBearingSystem(rotor, {n: b for n in rotor.bearing_nodes})
+
+
+@pytest.mark.slow  # 20 equilibria by continuation on 151 cells: 5 s of CPU
+def test_at_rest_the_asperities_sit_where_greenwood_tripp_puts_them():
+    """At 1e-3 rpm (fed at 1 kPa: the film carries 2 N of 5 kN) the equilibrium, reached by continuation in speed
+    when Newton from the default start fails, sits where the Greenwood-Tripp pressure of the rigid gap
+    h = C (1 + X cos phi), integrated by adaptive quadrature, carries the same contact load: the gap agrees to 1e-6
+    (the midpoint rule of 151 cells, one centred on the thinnest gap, on the smooth periodic contact pressure)."""
+    b = JournalBearing(**dict(BEARING, supply_pressure=1e3), grid=(151, 2),
+                       roughness=Roughness(steel_asperity_contact(1e-6), boundary_friction=0.12))
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", UserWarning)
+        s = b.equilibrium(5000.0, 1e-3)
+    assert s.contact_load > 0.99 * 5000.0
+    c = b.roughness.contact
+
+    def excess(X):
+        return -b.length * b.radius * quad(lambda p: c.load(b.clearance * (1 + X * math.cos(p))) * math.cos(p), 0,
+                                           2 * math.pi, points=[math.pi], limit=200)[0] - s.contact_load
+
+    X = brentq(excess, 0.99, 0.99999, xtol=1e-15)
+    assert (1 - s.eccentricity_ratio) / (1 - X) == pytest.approx(1.0, abs=1e-6)
+    assert s.friction_torque == pytest.approx(b.radius * (s.friction_force + 0.12 * s.contact_normal_load), rel=1e-12)

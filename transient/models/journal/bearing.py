@@ -40,6 +40,10 @@ from transient.models.journal.results import FilmState  # noqa: F401 (its home w
 
 
 SPEED_RANGE_RPM = (1e-3, 1e6)
+#: A rough bearing's equilibrium by continuation in speed (:meth:`JournalBearing._continued_equilibrium`) starts at
+#: this multiple of the speed, and at least at ``CONTINUATION_START_RPM`` [rpm].
+CONTINUATION_SPEED_RATIO = 1000.0
+CONTINUATION_START_RPM = 1000.0
 
 #: Grid sequencing of the steady Elrod film (:meth:`JournalBearing.film_solve`; measured in docs/validation.md, "The
 #: steady film on fine grids"): a grid of more cells than ``SEQUENCE_CELLS`` starts from the film of the grid with half
@@ -296,8 +300,8 @@ class JournalBearing:
     @property
     def _reach(self) -> float:
         """Largest fraction of ``max_eccentricity_ratio`` an equilibrium iterate may take: 0.995; a rough bearing's
-        asperities carry the load at smaller gaps, 0.999 (a film of 1e-3 C)."""
-        return 0.995 if self.roughness is None else 0.999
+        asperities carry the load at smaller gaps, 0.9999 (a film of 1e-4 C)."""
+        return 0.995 if self.roughness is None else 0.9999
 
     @property
     def max_eccentricity_ratio(self) -> float:
@@ -402,9 +406,24 @@ class JournalBearing:
             while np.hypot(*(q + lam * dq)) >= self._reach * self.max_eccentricity_ratio:
                 lam *= 0.5
             q = q + lam * dq
+        if self.roughness is not None and start is None:
+            return self._continued_equilibrium(W, speed_rpm, tol, max_iter)
         raise NoEquilibriumError(f"equilibrium(load={W} N, speed_rpm={speed_rpm}) did not converge in {max_iter} "
                            f"iterations; last eccentricity ratio {np.hypot(*q):.4f}, force residual "
                            f"{np.max(np.abs(r)) * f.force_scale:.3e} N")
+
+    def _continued_equilibrium(self, load, speed_rpm, tol, max_iter):
+        """The equilibrium of a rough bearing by continuation in speed, when Newton from the default start fails
+        (at low speed the asperities carry the load and their force grows exponentially as the gap closes: a Newton
+        step from the centre lands far off): from ``CONTINUATION_SPEED_RATIO`` times the speed (at least
+        ``CONTINUATION_START_RPM``) down to it in steps of a factor of 2, each equilibrium started from the one above."""
+        top = min(max(CONTINUATION_SPEED_RATIO * speed_rpm, CONTINUATION_START_RPM), SPEED_RANGE_RPM[1])
+        speeds = np.geomspace(top, speed_rpm, max(2, int(np.ceil(np.log2(top / speed_rpm))) + 1))
+        q = None
+        for s in speeds:
+            out = self._equilibrium(load, s, tol, max_iter, start=q)
+            q = out[2]
+        return out
 
     def unbalance_response(self, rotor_mass, unbalance, load, speed_rpm) -> np.ndarray:
         """Steady unbalance response of the linearised rotor ``m x'' + C x' + K x = m e W^2 (cos, sin)``:
