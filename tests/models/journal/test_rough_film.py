@@ -96,7 +96,7 @@ def test_jacobian_matches_finite_differences(fd_jacobian):
     C_ref = np.full(n, 0.9)
     for rate in (0.0, 3.0):
         M = f.op.matrix(f.jacobian_data(u, X, Y, VX, VY, rate=rate)).toarray()
-        J_fd = fd_jacobian(lambda v: f.residual(v, X, Y, VX, VY, rate=rate, C_ref=C_ref).copy(), u, n,
+        J_fd = fd_jacobian(lambda v, rate=rate: f.residual(v, X, Y, VX, VY, rate=rate, C_ref=C_ref).copy(), u, n,
                            step=5e-4 * f.width)
         scale = np.max(np.abs(J_fd))
         assert np.max(np.abs(M[:n, :n] - J_fd)) < 1e-6 * scale

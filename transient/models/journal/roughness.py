@@ -29,11 +29,11 @@ import numpy as np
 
 from transient.checks import check_instance, check_range
 from transient.physics.asperity import AsperityContact
-from transient.physics.flow_factors import (PRESSURE_FLOW_TABLE, gamma_bracket, contact_factor, mean_film_thickness,
+from transient.physics.flow_factors import (PRESSURE_FLOW_TABLE, contact_factor, gamma_bracket, mean_film_thickness,
                                             pressure_flow_factor_slopes, pressure_flow_factors, shear_flow_factor,
                                             shear_flow_factor_slope)
 
-__all__ = ["Roughness", "RoughCoefficients", "rough_coefficients", "contact_pressure"]
+__all__ = ["RoughCoefficients", "Roughness", "contact_pressure", "rough_coefficients"]
 
 SHEAR_FIT_H_MIN = 0.5  # [-] lower end of the Patir-Cheng (1979) shear flow fit
 
@@ -59,7 +59,7 @@ class Roughness:
 
     def __post_init__(self):
         check_instance("roughness.contact", self.contact, AsperityContact, "an AsperityContact")
-        set_ = lambda k, v: object.__setattr__(self, k, v)  # noqa: E731
+        set_ = lambda k, v: object.__setattr__(self, k, v)
         set_("gamma", check_range("roughness.gamma", self.gamma, "-", 1.0 / 9.0 * (1 - 1e-12), 9.0 * (1 + 1e-12),
                                   why="(the Patir-Cheng fits' Peklenik numbers)"))
         set_("boundary_friction", check_range("roughness.boundary_friction", self.boundary_friction, "-", 0.0, 1.0))
