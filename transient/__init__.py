@@ -11,7 +11,8 @@ Public API (re-exported here):
 * results: :class:`Result` (the base of every result: units, save/load, summary), :func:`load_result`
 * journal bearing (Rho & Kim): :class:`JournalBearing`, its oil feeds :class:`Groove`, :class:`OilHole`,
   :class:`CircumferentialGroove`, :class:`JournalOrbit` (with ``periodic_response`` and ``response_curve``:
-  periodic orbits by shooting), :func:`stability_onset`;
+  periodic orbits by shooting), :func:`stability_onset`; rough surfaces and mixed lubrication: :class:`Roughness`
+  (``JournalBearing(..., roughness=)``), :func:`stribeck_curve` (:class:`StribeckCurve`);
   bearing noise: :func:`bearing_noise` (its settling run: :class:`Settling`), :func:`a_weighting`
 * layered boundary films and shear-thinning bulk (Jang): :class:`BoundaryLayers` (``JournalBearing(...,
   layers=)``), :class:`Gecim`, :class:`Newtonian`, :class:`LayeredFilm` (the pointwise flow law)
@@ -44,6 +45,7 @@ from transient.models.ball import ThrustBallBearing
 from transient.models.ball.settings import TrackSettings
 from transient.models.damper import SqueezeFilmDamper
 from transient.models.journal import CircumferentialGroove, Groove, JournalBearing, JournalOrbit, OilHole, stability_onset
+from transient.models.journal.roughness import Roughness
 from transient.models.pad import ThrustPad
 from transient.models.point import PointContact
 from transient.models.roller import LineContact, RollerContact, TaperedRoller
@@ -56,13 +58,15 @@ from transient.solvers.integrate import Problem, Solution, Stats, Steps, solve
 from transient.solvers.settings import Integration, LongRun, Recording
 from transient.study.noise import bearing_noise  # the public API re-exports the noise protocol
 from transient.study.settle import Settling
+from transient.study.stribeck import StribeckCurve, stribeck_curve
 from transient.surfaces.roughness import RoughSurface
 
 __all__ = [
     "AsperityContact", "BoundaryLayers", "CircumferentialGroove", "DiscreteDensity", "Gecim", "Groove", "Integration",
     "LayeredFilm", "LongRun", "Newtonian", "JournalBearing", "JournalOrbit", "LineContact", "OilHole", "PointContact",
     "Problem", "Recording", "Result", "RollerContact", "Rotor", "RotorBearingSystem", "TaperedRoller",
-    "RoughSurface", "Settling", "Solution", "SqueezeFilmDamper", "Stats", "Steps", "ThrustBallBearing", "ThrustPad",
-    "TrackSettings", "a_weighting", "bearing_noise", "contact_factor",
+    "Roughness", "RoughSurface", "Settling", "Solution", "SqueezeFilmDamper", "Stats", "Steps", "StribeckCurve",
+    "ThrustBallBearing", "ThrustPad", "TrackSettings", "a_weighting", "bearing_noise", "contact_factor",
+    "stribeck_curve",
     "greenwood_tripp", "load_result", "pressure_flow_factors", "stability_onset", "shear_flow_factor", "solve", "steel_asperity_contact",
 ]

@@ -61,6 +61,8 @@ __all__ = [
     "SHEAR_FLOW_TABLE",
     "pressure_flow_factors",
     "shear_flow_factor",
+    "pressure_flow_factor_slopes",
+    "shear_flow_factor_slope",
     "combined_shear_flow_factor",
     "contact_factor",
     "mean_film_thickness",
@@ -92,6 +94,7 @@ _SHEAR_H_MIN = 0.5
 
 
 def _gamma_bracket(gamma: float):
+    """The tabulated gammas around ``gamma`` and their weights (linear in log gamma)."""
     g = float(gamma)
     if not (_GAMMAS[0] * (1 - 1e-12) <= g <= _GAMMAS[-1] * (1 + 1e-12)):
         raise ValueError(f"parameter gamma = {g:g} [-] out of range: the Patir-Cheng fits cover [1/9, 9]")
@@ -133,6 +136,35 @@ def pressure_flow_factors(H, gamma: float = 1.0, extrapolate: bool = False):
     if H.ndim == 0:
         return float(phix), float(phiy)
     return phix, phiy
+
+
+def _phi_x_slope_tab(H, g):
+    C, r, _ = PRESSURE_FLOW_TABLE[_key(g)]
+    if g <= 1.0:
+        return np.where(1.0 - C * np.exp(-r * H) > 0.0, C * r * np.exp(-r * H), 0.0)
+    return -r * C * np.power(np.clip(H, 1e-300, None), -r - 1.0)
+
+
+def pressure_flow_factor_slopes(H, gamma: float = 1.0):
+    """d(phi_x)/dH and d(phi_y)/dH of :func:`pressure_flow_factors` (the fits differentiated as written, no range
+    check: the caller keeps H in the fitted range)."""
+    H = np.asarray(H, dtype=float)
+    dx = sum(w * _phi_x_slope_tab(H, g) for g, w in _gamma_bracket(gamma))
+    dy = sum(w * _phi_x_slope_tab(H, g) for g, w in _gamma_bracket(1.0 / float(gamma)))
+    return dx, dy
+
+
+def _phi_s_slope_tab(H, g):
+    A1, a1, a2, a3, A2 = SHEAR_FLOW_TABLE[_key(g)]
+    Hc = np.clip(H, 1e-300, 5.0)
+    low = A1 * np.power(Hc, a1) * np.exp(-a2 * Hc + a3 * Hc * Hc) * (a1 / Hc - a2 + 2.0 * a3 * Hc)
+    return np.where(H <= 5.0, low, -0.25 * A2 * np.exp(-0.25 * H))
+
+
+def shear_flow_factor_slope(H, gamma: float = 1.0):
+    """d(Phi_s)/dH of :func:`shear_flow_factor` (H > 0; no range check)."""
+    H = np.asarray(H, dtype=float)
+    return sum(w * _phi_s_slope_tab(H, g) for g, w in _gamma_bracket(gamma))
 
 
 def _phi_s_tab(H, g):
@@ -198,3 +230,6 @@ def contact_factor_wu_zheng_fit(H):
     Hc = np.clip(H, 0.0, 3.0)
     out = np.where(H < 3.0, np.exp(-0.6912 + 0.782 * Hc - 0.304 * Hc ** 2 + 0.0401 * Hc ** 3), 1.0)
     return out if out.ndim else float(out)
+
+
+gamma_bracket = _gamma_bracket  # the tabulated gammas a factor at ``gamma`` is interpolated between

@@ -25,6 +25,8 @@ from transient.models.journal.gecim_film import flow_law
 from transient.physics.layered import BoundaryLayers, Gecim, Newtonian
 from transient.models.journal.kernels import N_ROTOR
 from transient.models.journal.reynolds_film import ReynoldsFilm
+from transient.models.journal.rough_film import RoughFilm
+from transient.models.journal.roughness import Roughness
 from transient.models.journal.scales import film_scales
 from transient.units import rpm_to_rad_s as omega  # the journal's name for it (public: models.journal.omega)
 
@@ -38,6 +40,10 @@ from transient.models.journal.results import FilmState  # noqa: F401 (its home w
 
 
 SPEED_RANGE_RPM = (1e-3, 1e6)
+#: A rough bearing's equilibrium by continuation in speed (:meth:`JournalBearing._continued_equilibrium`) starts at
+#: this multiple of the speed, and at least at ``CONTINUATION_START_RPM`` [rpm].
+CONTINUATION_SPEED_RATIO = 1000.0
+CONTINUATION_START_RPM = 1000.0
 
 #: Grid sequencing of the steady Elrod film (:meth:`JournalBearing.film_solve`; measured in docs/validation.md, "The
 #: steady film on fine grids"): a grid of more cells than ``SEQUENCE_CELLS`` starts from the film of the grid with half
@@ -139,12 +145,17 @@ class JournalBearing:
         ``h - 2 delta`` thick and the layers add their Darcy flow (Newtonian bulk: a Poiseuille conductance,
         :func:`~transient.models.journal.kernels.conductances`); the film closes at ``e/C = 1 - 2 delta / C``
         (the orbit stops there: "boundary layers touch"). Default: none.
+    roughness : :class:`~transient.models.journal.roughness.Roughness` -- rough surfaces (mixed lubrication): the
+        average Reynolds equation of Patir & Cheng in the Elrod film and Greenwood-Tripp asperity contact beside the
+        film pressure (:mod:`transient.models.journal.rough_film`) in ``steady_state``, ``equilibrium`` and
+        ``coefficients``; the friction torque adds the boundary friction of the contacts. Newtonian bulk without
+        boundary layers, ``cavitation="elrod"``. Default None: smooth surfaces.
     """
 
     def __init__(self, diameter, length, clearance, viscosity, bulk_modulus=1e9, supply_pressure=101325.0,
                  groove: Groove | None = Groove(), grid=(151, 21), cavitation_pressure=0.0, ambient_pressure=0.0,
                  switch_width=None, switch_content_width=1e-2, symmetric=True, cavitation="elrod", rheology=None,
-                 layers: BoundaryLayers | None = None):
+                 layers: BoundaryLayers | None = None, roughness: Roughness | None = None):
         if not isinstance(cavitation, str) or cavitation not in CAVITATION_MODES:
             raise ValueError(f"cavitation must be one of {CAVITATION_MODES}, got cavitation={cavitation!r}")
         self.cavitation = cavitation
@@ -168,6 +179,7 @@ class JournalBearing:
             check_range("layers.thickness", layers.thickness, "m", 0.0, 0.5 * self.clearance, high_open=True,
                         why="(two layers thinner than the clearance: the bulk must not vanish)")
         self.layers = layers
+        self.roughness = self._check_roughness(roughness)
         self.flow_law = flow_law(self.viscosity, self.rheology, layers)  # the one LayeredFilm of this bearing
         self.cavitation_pressure = check_range("cavitation_pressure", cavitation_pressure, "Pa", 0.0, 1e9,
                                                why="(absolute pressure)")
@@ -203,6 +215,20 @@ class JournalBearing:
         self.radius = 0.5 * self.diameter
         self._build_grid()
         check_resolution(self.feeds, self.feed_cells, self.grid_shape, self.length, self.radius, self.symmetric)
+
+    def _check_roughness(self, roughness):
+        """A :class:`Roughness` (or None) for an Elrod film with a Newtonian bulk and no boundary layers."""
+        if roughness is None:
+            return None
+        if not isinstance(roughness, Roughness):
+            raise TypeError(f"roughness must be a Roughness or None, got {type(roughness).__name__}")
+        if self.cavitation != "elrod" or self.shear_thinning or self.layers is not None:
+            raise ValueError(f"roughness = Roughness(...) with cavitation = {self.cavitation!r}, rheology = "
+                             f"{type(self.rheology).__name__}, layers = {self.layers!r}: the rough film is the Elrod "
+                             "film of a Newtonian bulk; allowed: cavitation=\"elrod\", rheology=None, layers=None")
+        check_range("roughness sigma", roughness.sigma, "m", 0.0, 0.5 * self.clearance, low_open=True,
+                    why="(the composite roughness must be well below the clearance)")
+        return roughness
 
     def _check_ring_supply(self):
         """Circumferential grooves alone at the cavitation pressure (within 1 Pa), with the ends there too, supply no
@@ -263,7 +289,8 @@ class JournalBearing:
                                                                  viscosity=list(self.layers.viscosity),
                                                                  alpha=self.layers.alpha),
                     rheology=None if not self.shear_thinning else dict(
-                        kappa=self.rheology.kappa, viscosity_ratio=self.rheology.viscosity_ratio))
+                        kappa=self.rheology.kappa, viscosity_ratio=self.rheology.viscosity_ratio),
+                    **({} if self.roughness is None else dict(roughness=self.roughness.parameters())))
 
     def layer_groups(self) -> tuple[float, float]:
         """The boundary layers in the film's scales: ``(2 delta / C, 3 alpha^2 mu (1/mu_a + 1/mu_b) / C^2)``
@@ -273,6 +300,12 @@ class JournalBearing:
             return 0.0, 0.0
         darcy = 3.0 * ly.alpha ** 2 * self.viscosity * (1.0 / ly.viscosity[0] + 1.0 / ly.viscosity[1])
         return 2.0 * ly.thickness / self.clearance, darcy / self.clearance ** 2
+
+    @property
+    def _reach(self) -> float:
+        """Largest fraction of ``max_eccentricity_ratio`` an equilibrium iterate may take: 0.995; a rough bearing's
+        asperities carry the load at smaller gaps, 0.9999 (a film of 1e-4 C)."""
+        return 0.995 if self.roughness is None else 0.9999
 
     @property
     def max_eccentricity_ratio(self) -> float:
@@ -286,6 +319,8 @@ class JournalBearing:
     def film(self, speed_rpm, n_extra=N_ROTOR) -> "Film | ReynoldsFilm":
         """The discretised film at a shaft speed (scales, operator, scratch arrays): a :class:`Film`
         (Elrod) or a :class:`~transient.models.journal.reynolds_film.ReynoldsFilm` (``cavitation="reynolds"``)."""
+        if self.roughness is not None:
+            return RoughFilm(self.grid, film_scales(self, speed_rpm), self.flow_law, self.roughness, n_extra)
         kind = ReynoldsFilm if self.cavitation == "reynolds" else Film
         return kind(self.grid, film_scales(self, speed_rpm), self.flow_law, n_extra)
 
@@ -352,16 +387,17 @@ class JournalBearing:
         Cmat = -dF_dv * f.force_scale / (self.clearance * omega(speed_rpm))
         return K, Cmat
 
-    def _equilibrium(self, load, speed_rpm, tol=1e-10, max_iter=40):
+    def _equilibrium(self, load, speed_rpm, tol=1e-10, max_iter=40, start=None):
         """Newton on the journal position (either film: both give the force and its exact sensitivities; the
         Reynolds film's on its converged active set); returns (film, u, (X, Y), iterations, (dF/dq, dF/dv)) with the
-        force sensitivities at the converged state (they are the Newton matrix and the damping)."""
+        force sensitivities at the converged state (they are the Newton matrix and the damping). ``start``: the
+        first journal position (X, Y) [C] (default (0.3, 0.3))."""
         W = check_positive("load", load, "N")
         check_speed(speed_rpm)
         self._check_supplied()
         f = self.film(speed_rpm)
         wbar = W / f.force_scale
-        q = np.array([0.3, 0.3])  # eccentric start in the loaded quadrant
+        q = np.array([0.3, 0.3] if start is None else start, dtype=float)  # eccentric start in the loaded quadrant
         u = None
         for it in range(max_iter):
             u = self.film_solve(f, q[0], q[1])[0] if u is None else f.solve(q[0], q[1], u0=u)[0]
@@ -371,12 +407,27 @@ class JournalBearing:
                 return f, u, q, it, (dF_dq, dF_dv)
             dq = -np.linalg.solve(dF_dq, r)
             lam = 1.0  # keep the journal inside the clearance
-            while np.hypot(*(q + lam * dq)) >= 0.995 * self.max_eccentricity_ratio:
+            while np.hypot(*(q + lam * dq)) >= self._reach * self.max_eccentricity_ratio:
                 lam *= 0.5
             q = q + lam * dq
+        if self.roughness is not None and start is None:
+            return self._continued_equilibrium(W, speed_rpm, tol, max_iter)
         raise NoEquilibriumError(f"equilibrium(load={W} N, speed_rpm={speed_rpm}) did not converge in {max_iter} "
                            f"iterations; last eccentricity ratio {np.hypot(*q):.4f}, force residual "
                            f"{np.max(np.abs(r)) * f.force_scale:.3e} N")
+
+    def _continued_equilibrium(self, load, speed_rpm, tol, max_iter):
+        """The equilibrium of a rough bearing by continuation in speed, when Newton from the default start fails
+        (at low speed the asperities carry the load and their force grows exponentially as the gap closes: a Newton
+        step from the centre lands far off): from ``CONTINUATION_SPEED_RATIO`` times the speed (at least
+        ``CONTINUATION_START_RPM``) down to it in steps of a factor of 2, each equilibrium started from the one above."""
+        top = min(max(CONTINUATION_SPEED_RATIO * speed_rpm, CONTINUATION_START_RPM), SPEED_RANGE_RPM[1])
+        speeds = np.geomspace(top, speed_rpm, max(2, int(np.ceil(np.log2(top / speed_rpm))) + 1))
+        q = None
+        for s in speeds:
+            out = self._equilibrium(load, s, tol, max_iter, start=q)
+            q = out[2]
+        return out
 
     def unbalance_response(self, rotor_mass, unbalance, load, speed_rpm) -> np.ndarray:
         """Steady unbalance response of the linearised rotor ``m x'' + C x' + K x = m e W^2 (cos, sin)``:

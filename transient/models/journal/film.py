@@ -240,11 +240,14 @@ class Film(FilmBlock):
         return film_state(self, u, X, Y, F, self.P, self.C, iterations)
 
 
-def film_state(film, u, X, Y, F, P, content, iterations=0):
+def film_state(film, u, X, Y, F, P, content, iterations=0, contact=None):
     """The SI :class:`~transient.models.journal.results.FilmState` of a film (:class:`Film` or
     :class:`~transient.models.journal.reynolds_film.ReynoldsFilm`) at journal position (X, Y): its dimensionless
     force ``F``, pressure ``P`` (p0 units above p_c) and film content per cell. The attitude is measured from
-    the load line (the load balances -F) to the line of centres."""
+    the load line (the load balances -F) to the line of centres. ``contact`` of a rough film
+    (:class:`~transient.models.journal.rough_film.RoughFilm`): (asperity pressure per cell [Pa], asperity force [N],
+    its normal load ``sum p_a dA`` [N], boundary friction coefficient); the friction torque then adds
+    ``mu_b R sum p_a dA`` to the film's ``R * friction_force``."""
     s, law, grid = film.scales, film.law, film.grid
     C, R = s.clearance, s.radius
     Fx, Fy = F[0] * film.force_scale, F[1] * film.force_scale
@@ -257,7 +260,11 @@ def film_state(film, u, X, Y, F, P, content, iterations=0):
     friction = wall_friction(film, h, G, Gz, theta)
     ly = None if law.layers is NO_LAYERS else law.layers
     rh = law.rheology
+    pa, Fc, normal, mu_b = (None, (0.0, 0.0), 0.0, 0.0) if contact is None else contact
     return FilmState(
+        contact_pressure=None if pa is None else grid.to_2d(pa).copy(), contact_force=Fc,
+        contact_load=float(np.hypot(*Fc)), contact_normal_load=normal,
+        friction_torque=R * (friction[0] + mu_b * normal),
         eccentricity_ratio=eps, attitude_angle_deg=float(att), position=(X * C, Y * C),
         force=(Fx, Fy), load=float(np.hypot(Fx, Fy)), min_film=C * (1.0 - eps),
         speed_rpm=film.speed_rpm, pressure=pressure, film_content=theta, angle_deg=np.degrees(grid.x.centres),

@@ -50,7 +50,9 @@ def face_flows(film, u, X, Y):
         G = np.where(cf >= 0.0, cf * C[L], cf * C[R])
     else:
         G = 0.5 * (cL * C[L] + cR * C[R])
-    q = (-0.5 * (k[L] + k[R]) * (P[R] - P[L]) / op.fd + G) * op.fs
+    kz = getattr(film, "k_axial", k)  # a rough film's axial conductance (roughness): its own
+    kf = np.where(axial, 0.5 * (kz[L] + kz[R]), 0.5 * (k[L] + k[R]))
+    q = (-kf * (P[R] - P[L]) / op.fd + G) * op.fs
     i, side = op.bcell, op.bside
     cb = np.where(op.bdir == 1, 0.0, c[i])
     up = side > 0
@@ -58,7 +60,7 @@ def face_flows(film, u, X, Y):
         G = np.where(cb >= 0.0, cb * np.where(up, C[i], op.bC), cb * np.where(up, op.bC, C[i]))
     else:
         G = 0.5 * cb * (C[i] + op.bC)
-    qb = side * (-k[i] * side * (op.bP - P[i]) / op.bd + G) * op.bs
+    qb = side * (-np.where(op.bdir == 1, kz[i], k[i]) * side * (op.bP - P[i]) / op.bd + G) * op.bs
     bulk = film.bulk
     if bulk is not None and bulk.cells.shape[0] > 0:
         fq = bulk.out[:, 0] * bulk.length  # interior faces in the operator's order, then its Dirichlet faces

@@ -89,6 +89,10 @@ class JournalOrbit:
                              "orbit integrates the mass-conserving Elrod film; build the bearing with "
                              "cavitation=\"elrod\" (the Reynolds-condition film serves steady_state, equilibrium, "
                              "coefficients and stability_threshold)")
+        if getattr(bearing, "roughness", None) is not None:
+            raise ValueError("JournalOrbit does not support roughness = Roughness(...) yet: the orbit integrates the "
+                             "smooth film; allowed: roughness=None (a rough bearing serves steady_state, equilibrium, "
+                             "coefficients and stribeck_curve)")
         self.bearing = bearing
         self.rotor_mass = check_positive("rotor_mass", rotor_mass, "kg")
         self.unbalance = check_range("unbalance", unbalance, "m", 0.0, bearing.clearance, high_open=True,

@@ -28,6 +28,13 @@ class FilmState(SteadyResult):
     centres, in the direction of rotation. ``friction_force`` [N]: the film's drag on the journal surface;
     ``bearing_friction_force`` [N]: its drag on the bearing surface, along the rotation
     (:func:`~transient.models.journal.film.wall_friction`; boundary layers and the Gecim bulk included).
+    ``friction_torque`` [N m]: the torque resisting the journal, ``R friction_force`` plus, on a rough bearing,
+    the boundary friction ``mu_b R sum p_a dA`` of the asperity contacts; ``power_loss`` [W] its power.
+
+    Rough bearings (``JournalBearing(roughness=...)``): ``force`` is the film's and the asperities' force together
+    (what carries the load), ``contact_force`` [N] the asperities' part and ``contact_load`` [N] its magnitude,
+    ``contact_normal_load`` [N] the sum of the asperity pressure over the surface (what the boundary friction
+    acts on), ``contact_pressure`` [Pa] the nominal asperity pressure per cell (Greenwood-Tripp).
 
     Flows (:mod:`transient.models.journal.flows`), whole bearing: ``supply_flow`` [m^3/s] the net flow each feed
     delivers, ``feed_inflow`` [m^3/s] the flow each feed sends into the film, ``side_leakage`` [m^3/s] the outflow
@@ -63,11 +70,32 @@ class FilmState(SteadyResult):
     side_flow_ratio: float = quantity("-", float("nan"))
     layers: tuple | None = None  # (delta [m], mu_a [Pa s], mu_b [Pa s], alpha [m]) or None
     gecim: tuple | None = None  # the shear-thinning bulk (kappa [Pa], mu_2/mu_1) or None (Newtonian)
+    friction_torque: float = quantity("N m", float("nan"))
+    contact_force: tuple[float, float] = quantity("N", (0.0, 0.0))
+    contact_load: float = quantity("N", 0.0)
+    contact_normal_load: float = quantity("N", 0.0)
+    contact_pressure: np.ndarray | None = quantity("Pa", None, repr=False)
     message: str = field(default="converged", kw_only=True)
 
     @property
     def max_pressure(self) -> float:
         return float(self.pressure.max())
+
+    @property
+    def film_load(self) -> float:
+        """Magnitude [N] of the film's share of the force (the force less the asperities')."""
+        return float(np.hypot(self.force[0] - self.contact_force[0], self.force[1] - self.contact_force[1]))
+
+    @property
+    def power_loss(self) -> float:
+        """Friction power [W]: ``friction_torque`` times the shaft's angular speed."""
+        return self.friction_torque * self.speed_rpm * np.pi / 30.0
+
+    @property
+    def friction_coefficient(self) -> float:
+        """``friction_torque / (R load)`` [-] (R from ``sliding_speed`` and the speed)."""
+        radius = self.sliding_speed / (self.speed_rpm * np.pi / 30.0)
+        return self.friction_torque / (radius * self.load)
 
     def _law(self):
         """The film's flow law (:class:`~transient.physics.layered.LayeredFilm`, SI)."""

@@ -101,6 +101,9 @@ class RotorBearingSystem:
                 raise ValueError(f"bearings[{node!r}] cavitation = {b.cavitation!r}; allowed: \"elrod\" (the rotor "
                                  "system couples the mass-conserving films; the Reynolds-condition film serves the "
                                  "single bearing's steady and linear analyses)")
+            if getattr(b, "roughness", None) is not None:
+                raise ValueError(f"bearings[{node!r}] roughness = Roughness(...); allowed: None (the rotor system's "
+                                 "films are smooth; a rough bearing serves the single bearing's steady analyses)")
         self.dampers = {n: b for n, b in bearings.items() if isinstance(b, SqueezeFilmDamper)}
         self.bearings = {n: b.bearing if n in self.dampers else b for n, b in bearings.items()}  # dampers: their films
         self.stiffness = rotor.stiffness.copy()  # with the dampers' centring springs

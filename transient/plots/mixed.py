@@ -1,0 +1,72 @@
+"""Figures of mixed lubrication: the Stribeck curve (:func:`transient.study.stribeck.stribeck_curve`)."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from transient.plots import figure, suptitle
+
+#: Contact share of the load above which a speed counts as boundary lubrication in the figure (the asperities carry
+#: nearly all of it); below the curve's lift-off fraction it is hydrodynamic, between the two mixed.
+BOUNDARY_SHARE = 0.9
+
+
+def regimes(curve):
+    """The speed ranges [rpm] of the three regimes of a :class:`~transient.study.stribeck.StribeckCurve`:
+    ``{"boundary": (lo, hi), "mixed": ..., "hydrodynamic": ...}`` by the contact share of the load (above
+    ``BOUNDARY_SHARE``; between it and the lift-off fraction; below), each range between the speeds' midpoints
+    in log(speed) (None where the curve has no speed in that regime)."""
+    s = np.asarray(curve.speed_rpm, dtype=float)
+    share = np.asarray(curve.contact_load) / curve.load
+    edges = np.concatenate([[s[0]], np.sqrt(s[1:] * s[:-1]), [s[-1]]])
+    kind = np.where(share >= BOUNDARY_SHARE, "boundary", np.where(share >= curve.lift_off_fraction, "mixed",
+                                                                   "hydrodynamic"))
+    out = {}
+    for name in ("boundary", "mixed", "hydrodynamic"):
+        i = np.nonzero(kind == name)[0]
+        out[name] = None if i.size == 0 else (float(edges[i[0]]), float(edges[i[-1] + 1]))
+    return out
+
+
+def stribeck(curve, sigma=None, title=None):
+    """The Stribeck curve: friction torque and coefficient against speed with the regimes shaded and the lift-off
+    speed marked; the minimum film (and ``h_min / sigma`` with the composite roughness ``sigma`` [m]) and the
+    asperities' share of the load against speed."""
+    fig, ax = figure(1, 3, size=(14, 4.2))
+    s = curve.speed_rpm
+    colours = {"boundary": "tab:red", "mixed": "tab:orange", "hydrodynamic": "tab:blue"}
+    for a in ax:
+        for name, rng in regimes(curve).items():
+            if rng is not None:
+                a.axvspan(*rng, color=colours[name], alpha=0.08, lw=0, label=name)
+        if np.isfinite(curve.lift_off_speed_rpm):
+            a.axvline(curve.lift_off_speed_rpm, color="k", ls="--", lw=0.8,
+                      label=f"lift-off {curve.lift_off_speed_rpm:.0f} rpm")
+        a.set_xscale("log")
+        a.grid(True, which="both", lw=0.3)
+        a.set_xlabel("speed [rpm]")
+    ax[0].plot(s, curve.friction_torque, "o-", color="k", ms=3, label="friction torque")
+    ax[0].set_ylabel("friction torque [N m]")
+    ax[0].set_yscale("log")
+    f = ax[0].twinx()  # the coefficient is the torque over R W: a second scale on the same line
+    f.set_yscale("log")
+    f.set_ylim(*(np.array(ax[0].get_ylim()) * curve.friction_coefficient[0] / curve.friction_torque[0]))
+    f.set_ylabel("friction coefficient T / (R W) [-]")
+    ax[0].legend(fontsize=7, loc="upper center")
+    ax[0].set_title("Stribeck curve")
+    ax[1].plot(s, 1e6 * curve.h_min, "o-", ms=3)
+    ax[1].set_ylabel("minimum film h_min [um]")
+    ax[1].set_yscale("log")
+    if sigma:
+        h = ax[1].twinx()
+        h.set_yscale("log")
+        h.set_ylim(*(np.array(ax[1].get_ylim()) * 1e-6 / sigma))
+        h.set_ylabel("h_min / sigma [-]")
+    ax[1].set_title("minimum film")
+    ax[2].plot(s, 100 * curve.contact_load / curve.load, "o-", ms=3, color="tab:red")
+    ax[2].set_ylabel("asperity share of the load [%]")
+    ax[2].set_ylim(-2, 102)
+    ax[2].set_title(f"contact load (load {curve.load:g} N)")
+    if title:
+        suptitle(fig, title)
+    return fig
