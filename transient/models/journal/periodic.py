@@ -40,7 +40,7 @@ import scipy.sparse.linalg as spla
 from transient.checks import check_choice, check_positive, check_range
 from transient.models.journal.kernels import N_ROTOR
 from transient.results import StatusResult, quantity, result_type
-from transient.solvers.integrate import solve
+from transient.solvers.integrate import Steps, solve
 from transient.solvers.settling import settled_stop, settles
 from transient.solvers.progress import progress_bar
 from transient.solvers.shooting import ShootingSettings, floquet_multipliers, newton_krylov, newton_picard
@@ -212,7 +212,8 @@ class _Flow:
             self._bdf2 = o._stepper(Integration(method="bdf2", rtol=rtol), "content", 1e-3)
         st = self._bdf2
         s = solve(st.problem_at(o.content_state(y), t_eval[0]), t_eval, method="bdf2", rtol=rtol,
-                  atol=self.atol_factor * rtol, max_step=st.max_step, first_step=st.first_step, options=st.options)
+                  atol=self.atol_factor * rtol, steps=Steps(max_step=st.max_step, first_step=st.first_step),
+                  options=st.options)
         return s, (np.array([o.universal_state(v) for v in s.y]) if s.y.size else s.y)
 
     def reduce(self, y):
