@@ -174,7 +174,7 @@ MAX_PARAMETERS = 12
 NUMBA_DECORATORS = {"njit", "jit", "intrinsic", "generated_jit", "vectorize", "guvectorize"}
 #: Constructors of physical parameter sets: each parameter is a quantity of the element (its geometry, its
 #: lubricant, its load and speed) or of its film's discretisation.
-PARAMETER_SETS = {"JournalBearing", "LineContact", "RollerContact", "PointContact"}
+PARAMETER_SETS = {"JournalBearing", "LineContact", "RollerContact", "PointContact", "SqueezeFilmDamper"}
 
 
 def _decorator_name(d):

@@ -414,3 +414,18 @@ def test_the_reynolds_operator_jacobian_takes_its_ten_fields_positionally():
 
     with pytest.raises(TypeError, match="takes the 10 fields P, dP, C, dC, kx, dkx, kz, dkz, cx, cz; got 9"):
         ReynoldsOperator.jacobian(None, *([np.zeros(1)] * 9))
+
+
+def test_the_old_iteration_keywords_of_periodic_response_still_work_and_warn():
+    """``max_iter=``, ``fd_step=``, ``relax=`` of ``periodic_response`` are ``shooting=ShootingSettings(...)``
+    fields: the old spelling warns and gives the same orbit; tolerances in ``shooting`` are refused (they are
+    ``rtol`` and ``tol``)."""
+    from transient.models.journal.periodic import periodic_response
+    from transient.solvers.shooting import ShootingSettings
+
+    o = JournalOrbit(JournalBearing(**rho_kim.BEARING, grid=(16, 2)), speed_rpm=6000.0, **rho_kim.ROTOR)
+    a = _warned(lambda: periodic_response(o, rtol=1e-6, max_iter=2), "max_iter", "shooting=ShootingSettings(max_iter=...)")
+    b = periodic_response(o, rtol=1e-6, shooting=ShootingSettings(max_iter=2, relax=1))
+    assert np.array_equal(a.state, b.state) and a.iterations == b.iterations
+    with pytest.raises(ValueError, match=r"periodic_response: shooting=ShootingSettings\(tol=0\.001\) is not used"):
+        periodic_response(o, shooting=ShootingSettings(tol=1e-3))

@@ -99,7 +99,7 @@ def test_max_step_scale_scales_the_cap_at_each_step():
     """A loose tolerance leaves the cap in charge: ``max_step_scale(t)`` multiplies it at each step's start (a cap
     in shaft angle on a run whose speed changes), so every step ends within the scaled cap and the steps follow it."""
     scale = lambda t: 1.0 if t < 1.0 else 3.0  # noqa: E731
-    s = BDF2(LinearStep(), np.array([1.0]), 0.0, 2.0, rtol=1e-1, atol=1e-1, max_step=0.01, max_step_scale=scale)
+    s = BDF2(LinearStep(), np.array([1.0]), 0.0, 2.0, rtol=1e-1, atol=1e-1, max_step=(0.01, scale))
     plain = BDF2(LinearStep(), np.array([1.0]), 0.0, 2.0, rtol=1e-1, atol=1e-1, max_step=0.01)
     ts = [0.0]
     while s.t < 2.0:

@@ -216,7 +216,7 @@ def test_nonconvergence_reports_the_history_and_falls_back_to_integration():
     o = _orbit(5000.0)
     p = periodic_response(o, rtol=1e-7, max_iter=1)
     assert not p.success and not p.converged and "residual history [C]" in p.message
-    q = periodic_response(o, rtol=1e-7, max_iter=1, fallback=True)
+    q = periodic_response(o, rtol=1e-7, shooting=ShootingSettings(max_iter=1), fallback=True)
     ref = periodic_response(o, rtol=1e-7)
     assert q.converged and "settled by time integration" in q.message
     assert np.max(np.abs(q.state[o.film.n:] - ref.state[o.film.n:])) < 1e-5

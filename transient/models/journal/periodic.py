@@ -30,7 +30,7 @@ period each) and a plain iteration of the map handles everything else.
 from __future__ import annotations
 
 import time
-from dataclasses import field
+from dataclasses import field, replace
 from typing import Any
 
 import numpy as np
@@ -44,9 +44,14 @@ from transient.solvers.integrate import Steps, solve
 from transient.solvers.settling import settled_stop, settles
 from transient.solvers.progress import progress_bar
 from transient.solvers.shooting import ShootingSettings, floquet_multipliers, newton_krylov, newton_picard
-from transient.solvers.settings import Integration, LongRun, Recording
+from transient.solvers.legacy import keyword_table, run_settings
+from transient.solvers.settings import Integration, LongRun, Recording, check_unused
 
 METHODS = ("shooting", "newton-krylov")
+#: :func:`periodic_response`'s iteration settings (``shooting=ShootingSettings(...)``) where none are given, and
+#: the loose keywords of earlier releases that are now fields of it
+SHOOTING_DEFAULTS = {"shooting": {"fd_step": 1e-3, "max_iter": 25, "relax": 1}}
+SHOOTING_KEYWORDS = keyword_table("shooting", ShootingSettings, ("fd_step", "max_iter", "relax"))
 #: time integrators of the period map: IDA on the universal film, or the conservative BDF2 on the content film
 #: (:mod:`transient.solvers.integrate.bdf2`, the step solve of :meth:`JournalOrbit.bdf2_model`)
 INTEGRATORS = ("ida", "bdf2")
@@ -268,9 +273,9 @@ def lift(orbit: Orbit, y, dq) -> np.ndarray:
 
 
 def periodic_response(orbit: Orbit, rtol: float = 1e-6, tol: float | None = None, method: str = "shooting",
-                      start=None, basis=None, outputs_per_revolution: int = 64, max_iter: int = 25,
-                      fallback: bool = False, max_revolutions: int = 200, fd_step: float = 1e-3,
-                      relax: int = 1, *, integrator: str = "ida") -> PeriodicOrbit:
+                      start=None, basis=None, outputs_per_revolution: int = 64, fallback: bool = False,
+                      max_revolutions: int = 200, *, integrator: str = "ida", shooting: ShootingSettings | None = None,
+                      **legacy) -> PeriodicOrbit:
     """The periodic unbalance response of ``orbit`` (module docstring).
 
     Parameters
@@ -286,13 +291,20 @@ def periodic_response(orbit: Orbit, rtol: float = 1e-6, tol: float | None = None
         speed's refined one while its whirl pair is above the derivatives' noise floor).
     fallback : if the shooting does not converge, settle by time integration from its last iterate
         (at most ``max_revolutions``, until two consecutive once-per-revolution steps are below ``tol``).
-    fd_step : size [C] of the perturbations of the finite-difference directional derivatives.
-    relax : periods integrated (at a loose tolerance) before the first Newton step: the film of a start -- the
-        linearised response's quasi-steady film, an extrapolation in speed -- is not the periodic one, and its
-        error would spoil the first step (docs/periodic.md).
     integrator : time integrator of the period map, ``"ida"`` or ``"bdf2"`` (:data:`INTEGRATORS`; docs/periodic.md
         measures both).
+    shooting : :class:`~transient.solvers.shooting.ShootingSettings`, the iteration (default ``fd_step=1e-3``, the
+        size [C] of the perturbations of the finite-difference directional derivatives; ``max_iter=25``;
+        ``relax=1``, periods integrated at a loose tolerance before the first Newton step: the film of a start --
+        the linearised response's quasi-steady film, an extrapolation in speed -- is not the periodic one, and its
+        error would spoil the first step, docs/periodic.md; and Newton-Krylov's ``krylov_tol``, ``max_krylov``).
+        Its tolerances are ``rtol`` and ``tol`` above. The loose keywords ``fd_step=``, ``max_iter=``, ``relax=``
+        still work for one release, with a ``DeprecationWarning``.
     """
+    sh_settings = run_settings("periodic_response", legacy, SHOOTING_KEYWORDS, SHOOTING_DEFAULTS,
+                               shooting=shooting)["shooting"]
+    check_unused("periodic_response", "shooting", sh_settings, ("tol", "rtol", "rtol_max", "eta", "fd_rtol",
+                                                                "second_ritz", "refine_floor"))
     _check_orbit(orbit)
     check_choice("method", method, METHODS)
     rtol = check_range("rtol", rtol, "-", 1e-13, 1e-2)
@@ -304,13 +316,13 @@ def periodic_response(orbit: Orbit, rtol: float = 1e-6, tol: float | None = None
     if y0.shape != (orbit.n,):
         raise ValueError(f"start has shape {y0.shape}; this orbit has {orbit.n} states")
     two_pi = 2.0 * np.pi
-    kw = dict(tol=tol, rtol=rtol, rtol_max=max(rtol, 1e-4), fd_step=fd_step, max_iter=max_iter, relax=relax)
+    settings = replace(sh_settings, tol=tol, rtol=rtol, rtol_max=max(rtol, 1e-4))
     if method == "shooting":
         V = whirl_basis(orbit, y0) if basis is None else np.asarray(basis, dtype=float)
         sh = newton_picard(F, F.reduce(y0), two_pi, F.reduce(V), norm=_Flow.norm,
-                           settings=ShootingSettings(second_ritz=basis is None, refine_floor=REFINE_FLOOR, **kw))
+                           settings=replace(settings, second_ritz=basis is None, refine_floor=REFINE_FLOOR))
     else:
-        sh = newton_krylov(F, F.reduce(y0), two_pi, norm=_Flow.norm, settings=ShootingSettings(**kw))
+        sh = newton_krylov(F, F.reduce(y0), two_pi, norm=_Flow.norm, settings=settings)
     C = orbit.bearing.clearance
     state = F.embed(sh.state)
     periods, message, converged = sh.periods, sh.message, sh.success
@@ -382,6 +394,7 @@ def response_curve(orbit: Orbit, speeds_rpm, rtol: float = 1e-5, tol: float | No
     if speeds.size > 1 and not (np.all(np.diff(speeds) > 0) or np.all(np.diff(speeds) < 0)):
         raise ValueError("speeds_rpm must be strictly monotone (a continuation path) [rpm]")
     check_choice("predictor", predictor, ("secant", "quadratic"))
+    shooting = ShootingSettings(**{**SHOOTING_DEFAULTS["shooting"], "fd_step": fd_step})
     check_choice("integrator", integrator, INTEGRATORS)
     done = [p for p in getattr(previous, "orbits", previous or []) if p.converged][-3:]
     path = [p.speed_rpm for p in done]
@@ -391,10 +404,10 @@ def response_curve(orbit: Orbit, speeds_rpm, rtol: float = 1e-5, tol: float | No
     for s in speeds:
         o = orbit if s == orbit.speed_rpm else orbit.at_speed(s)
         start = _extrapolate(np.array(path), [p.state for p in done], s, 3 if predictor == "quadratic" else 2)
-        p = periodic_response(o, rtol=rtol, tol=tol, start=start, basis=basis, fd_step=fd_step,
+        p = periodic_response(o, rtol=rtol, tol=tol, start=start, basis=basis, shooting=shooting,
                               outputs_per_revolution=outputs_per_revolution, integrator=integrator)
         if not p.converged and start is not None:  # the extrapolation went astray: start afresh
-            q = periodic_response(o, rtol=rtol, tol=tol, fd_step=fd_step, outputs_per_revolution=outputs_per_revolution,
+            q = periodic_response(o, rtol=rtol, tol=tol, shooting=shooting, outputs_per_revolution=outputs_per_revolution,
                                   integrator=integrator)
             q.revolutions_integrated += p.revolutions_integrated
             p = q

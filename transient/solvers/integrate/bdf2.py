@@ -333,7 +333,7 @@ def solve(problem, t_eval, out, guard, s):
     out.events = Events(problem, guard, poison=False) if problem.n_events else None
     stepper = BDF2(solver, problem.y0, t_eval[0], t_eval[-1], rtol=s.rtol, atol=s.atol,
                    error_components=solver.error_components, yp0=problem.yp0, first_step=s.first_step,
-                   max_step=s.max_step, max_step_scale=s.options.get("max_step_scale"),
+                   max_step=(s.max_step, s.options["max_step_scale"]) if "max_step_scale" in s.options else s.max_step,
                    fixed_step=float(s.options.get("fixed_step", 0.0)),
                    test_first_step=solver.test_first_step)
     result = drive(stepper, out, guard, SIGINT.check, s.max_steps, step_events)

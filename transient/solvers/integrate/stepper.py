@@ -104,13 +104,13 @@ class BDF2(Stepper):
     """Variable-step BDF2 (module docstring) around a model's :class:`StepSolve`, from ``y0`` (with the slope
     ``yp0``, zero if None) at ``t0`` to ``t_end``; error test on ``error_components`` with ``rtol`` and ``atol``
     (a number or one per state); first step ``first_step`` (0: 1e-4 of the span), at most ``max_step``
-    (0: free), times ``max_step_scale(t)`` at the step's start if given (e.g. a cap in shaft angle on a run whose
-    speed changes); ``fixed_step`` > 0: steps of exactly that size, no error test; ``test_first_step`` False: the
+    (0: free), or a pair ``(max_step, scale)``: at most ``max_step * scale(t)`` at the step's start (e.g. a cap in
+    shaft angle on a run whose speed changes); ``fixed_step`` > 0: steps of exactly that size, no error test; ``test_first_step`` False: the
     first step is not error-tested (a DAE started from an inconsistent state, whose first step measures the
     jump of its algebraic part onto the constraint, not a truncation error)."""
 
     def __init__(self, solver: StepSolve, y0, t0, t_end, *, rtol, atol, error_components=None, yp0=None,
-                 first_step=0.0, max_step=0.0, fixed_step=0.0, test_first_step=True, max_step_scale=None):
+                 first_step=0.0, max_step=0.0, fixed_step=0.0, test_first_step=True):
         self.solver = solver
         self.test_first_step = test_first_step
         n = y0.size
@@ -125,8 +125,10 @@ class BDF2(Stepper):
         span = self.t_end - self.t
         self.fixed = float(fixed_step)
         self.h = self.fixed if self.fixed > 0 else (first_step if first_step > 0 else 1e-4 * span)
+        max_step, self.cap_scale = max_step if isinstance(max_step, tuple) else (max_step, None)
         self.h_cap = max_step if max_step > 0 else span
-        self.cap_scale = max_step_scale if max_step > 0 else None
+        if max_step <= 0:
+            self.cap_scale = None
         self.ts, self.ys = [self.t], [self.y]  # the last (up to 3) accepted points, oldest first
         self.err_prev = 1.0
         self._dense = None
