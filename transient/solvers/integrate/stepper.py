@@ -12,9 +12,8 @@ Its local error ``h^3 y''' (1 + w)^2 / (6 w (1 + 2 w))`` is estimated from the d
 step and the quadratic predictor through the last three points (Hermite with y'(t_0) after the first step), on
 the declared ``error_components`` only, in the weighted RMS norm of ``rtol |y| + atol``. The step follows a PI
 controller (Gustafsson; Hairer & Wanner, Solving ODEs II, IV.2: exponents 0.7/3 and 0.4/3), its ratio kept in
-[0.2, 2] (BDF2 is zero-stable for ratios below 1 + sqrt 2) and the step below ``max_step`` (times
-``max_step_scale(t)`` if given). A failed step solve
-cuts the step by 4. ``fixed_step = h`` takes steps of exactly h with no error test (convergence studies).
+[0.2, 2] (BDF2 is zero-stable for ratios below 1 + sqrt 2) and the step below ``max_step`` (or ``cap * scale(t)``
+for ``max_step=(cap, scale)``). A failed step solve cuts the step by 4. ``fixed_step = h`` takes steps of exactly h with no error test (convergence studies).
 """
 
 from __future__ import annotations
