@@ -97,8 +97,8 @@ def test_max_steps_and_non_finite_state_stop_the_run_with_a_message():
 
 def test_a_scaled_cap_is_scaled_at_each_step():
     """A loose tolerance leaves the cap in charge: ``max_step=(cap, scale)`` multiplies it by ``scale(t)`` at each
-    step's start (a cap
-    in shaft angle on a run whose speed changes), so every step ends within the scaled cap and the steps follow it."""
+    step's start (a cap in shaft angle on a run whose speed changes), so every step ends within the scaled cap and
+    the steps follow it."""
     scale = lambda t: 1.0 if t < 1.0 else 3.0  # noqa: E731
     s = BDF2(LinearStep(), np.array([1.0]), 0.0, 2.0, rtol=1e-1, atol=1e-1, max_step=(0.01, scale))
     plain = BDF2(LinearStep(), np.array([1.0]), 0.0, 2.0, rtol=1e-1, atol=1e-1, max_step=0.01)
