@@ -293,9 +293,10 @@ def periodic_response(orbit: Orbit, rtol: float = 1e-6, tol: float | None = None
         (at most ``max_revolutions``, until two consecutive once-per-revolution steps are below ``tol``).
     integrator : time integrator of the period map, ``"ida"`` or ``"bdf2"`` (:data:`INTEGRATORS`; docs/periodic.md
         measures both).
-    shooting : :class:`~transient.solvers.shooting.ShootingSettings`, the iteration (default ``fd_step=1e-3``, the
-        size [C] of the perturbations of the finite-difference directional derivatives; ``max_iter=25``;
-        ``relax=1``, periods integrated at a loose tolerance before the first Newton step: the film of a start --
+    shooting : :class:`~transient.solvers.shooting.ShootingSettings`, the iteration, taken as given (``None``:
+        ``ShootingSettings(fd_step=1e-3, max_iter=25, relax=1)``): ``fd_step``, the size [C] of the perturbations
+        of the finite-difference directional derivatives; ``max_iter``; ``relax``, periods integrated at a loose
+        tolerance before the first Newton step: the film of a start --
         the linearised response's quasi-steady film, an extrapolation in speed -- is not the periodic one, and its
         error would spoil the first step, docs/periodic.md; and Newton-Krylov's ``krylov_tol``, ``max_krylov``).
         Its tolerances are ``rtol`` and ``tol`` above. The loose keywords ``fd_step=``, ``max_iter=``, ``relax=``
