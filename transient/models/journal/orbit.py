@@ -300,12 +300,11 @@ class JournalOrbit:
         ``progress``, ``stop``, ``time_budget``), e.g.
         ``run(20, integration=Integration(method="bdf2", rtol=1e-7), recording=Recording(record=("force",)))``.
         The same settings as loose keywords (``rtol=1e-7``) are deprecated: they still work for one release, with a
-        ``DeprecationWarning`` naming the new spelling (beside the object they belong in: an error).
+        ``DeprecationWarning`` naming the new spelling (beside the object they belong in: an error). The fields of
+        the settings objects, and the run's own ``touch_gap``, are these:
 
-        Notes
-        -----
-        The fields of the settings objects:
-
+        Other Parameters
+        ----------------
         method : ``"cvode"``, ``"ida"``, ``"bdf"``, ``"radau"``, ``"lsoda"``, ``"rk4"`` or ``"bdf2"`` (variable-step
             BDF2 on the content film with its own Newton and a bordered band LU, error test on the rotor only:
             :mod:`transient.solvers.integrate.bdf2`; rtol and atol act on the rotor states, the film is solved every step to
