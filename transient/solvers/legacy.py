@@ -60,7 +60,7 @@ def run_settings(owner: str, legacy: dict, table: dict, defaults: dict | None = 
                              f"setting once, as {spelling}")
         warnings.warn(f"{owner}: the keyword {old}= is deprecated and will be removed in the next release; "
                       f"pass {spelling}", DeprecationWarning, stacklevel=_caller_level())
-        built.setdefault(arg, {})[name] = convert[0](value) if convert else value
+        _place(built, table[old], value)
     return settings_objects(table, built, defaults, given)
 
 
@@ -91,6 +91,11 @@ def flat_settings(table: dict, flat: dict, defaults: dict | None = None) -> dict
         raise ValueError(f"{unknown[0]!r} is not a setting; allowed: {', '.join(table)}")
     built: dict = {}
     for key, value in flat.items():
-        arg, cls, name, *convert = table[key]
-        built.setdefault(arg, {})[name] = convert[0](value) if convert else value
+        _place(built, table[key], value)
     return settings_objects(table, built, defaults)
+
+
+def _place(built: dict, entry: tuple, value) -> None:
+    """Put ``value`` (converted if the table ``entry`` says how) in ``built[argument][field]``."""
+    arg, cls, name, *convert = entry
+    built.setdefault(arg, {})[name] = convert[0](value) if convert else value
