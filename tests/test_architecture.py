@@ -254,6 +254,8 @@ def test_the_parameter_rule_can_fail(tmp_path):
 TESTS = Path(__file__).resolve().parent
 #: test folders that mirror something outside the package (the scenario scripts)
 OUTSIDE_THE_PACKAGE = {"scenarios"}
+#: test folders of external reference data (other codes' results, published tables), read by the tests; no tests
+REFERENCE_DATA = {"data"}
 
 
 def _test_folders():
@@ -267,7 +269,9 @@ def test_the_test_tree_mirrors_the_package():
     folders = _test_folders()
     assert folders, "tests/ has no sub-folders"
     for rel in folders:
-        if rel.parts[0] in OUTSIDE_THE_PACKAGE:
+        if rel.parts[0] in REFERENCE_DATA:
+            assert not list((TESTS / rel).glob("test_*.py")), f"tests/{rel} holds reference data, not tests"
+        elif rel.parts[0] in OUTSIDE_THE_PACKAGE:
             assert (TESTS.parent / rel).is_dir(), rel
         else:
             assert (PKG / rel).is_dir(), f"tests/{rel} mirrors no folder transient/{rel}"
