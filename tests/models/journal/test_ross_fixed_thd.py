@@ -104,7 +104,8 @@ def test_adiabatic_thd_against_ross():
     inputs = ADIABATIC["inputs"]
     thermal = transient.ThermalFilm(supply_temperature=T_SUPPLY, viscosity_at=((T1, MU1), (T2, MU2)),
                                     density=inputs["lube_density"], heat_capacity=inputs["lube_cp"],
-                                    boundary="adiabatic", mixing=inputs["hot_oil_lambda"])
+                                    conductivity=inputs["lube_conduct"], boundary="adiabatic",
+                                    mixing=inputs["hot_oil_lambda"])
     s = ross_bearing(thermal=thermal).equilibrium(W, RPM)
     assert abs(s.eccentricity_ratio / ref["eccentricity"] - 1.0) <= 0.02
     assert abs(s.max_temperature - ref["tpad_max"]) <= 2.0
