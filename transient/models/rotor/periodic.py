@@ -6,6 +6,12 @@ least damped modes of the linearisation with the film states, with the Floquet m
 The map starts every period at shaft angle 0 (``tau = 0``, the unbalance forcing's phase); its unknowns are the
 free film cells and the rotor's coordinates and velocities (the groove cells are held, the angle is the time).
 The fixed-point tolerance is on the rotor's coordinates and velocities, in units of the smallest clearance.
+
+The period map's time integrator (``integrator``, :data:`INTEGRATORS`): IDA on the system's universal film
+(:class:`~transient.models.rotor.model.SystemDAE`), or the conservative BDF2 on the films' content form
+(:class:`~transient.models.rotor.content_form.ContentSystem`, the step solve of ``run(method="bdf2")``: at least
+``BDF2_MIN_STEPS`` steps per revolution, its error test on the rotor's states), mapped from and back to the
+universal state, so that the map's unknowns, the start and the result are the same either way.
 """
 
 from __future__ import annotations
@@ -13,18 +19,33 @@ from __future__ import annotations
 import numpy as np
 import scipy.sparse.linalg as spla
 
+from dataclasses import replace
+
+from transient.checks import check_choice
+from transient.compile_notice import announce
+from transient.models.journal.orbit import BDF2_MIN_STEPS
+from transient.models.rotor.content_form import ContentSystem
 from transient.models.rotor.model import SystemDAE
 from transient.models.rotor.results import PeriodicResponse
-from transient.solvers.integrate import Problem, solve
+from transient.solvers.integrate import Problem, Steps, solve
 from transient.solvers.shooting import ShootingSettings, newton_picard
+
+#: time integrators of the period map: IDA on the universal films, or the conservative BDF2 on their content form
+INTEGRATORS = ("ida", "bdf2")
+#: the iteration where no ``shooting=ShootingSettings(...)`` is given (one relaxing period: the start's film is the
+#: linearisation's, not the periodic one)
+SHOOTING_DEFAULTS = dict(max_iter=25, relax=1)
 
 
 class PeriodMap:
     """``flow(z, t0, T, rtol)``: the reduced state ``z`` (free cells, q~, v) after ``T`` of the time tau at
-    constant speed, keeping the outputs of the last flow of each state (``samples``)."""
+    constant speed by ``integrator`` (module docstring), keeping the outputs of the tightest flow of the last few
+    states (``samples``: the orbit of the accepted state without integrating it again)."""
 
-    def __init__(self, dae: SystemDAE, outputs_per_revolution: int, atol: float):
+    def __init__(self, dae: SystemDAE, outputs_per_revolution: int, atol: float, integrator: str = "ida"):
         self.dae = dae
+        self.integrator = check_choice("integrator", integrator, INTEGRATORS)
+        self.form = None  # the content form and its step solve, built at the first BDF2 flow
         keep = np.ones(dae.n, dtype=bool)
         for b in dae.blocks:
             keep[b.offset:b.offset + b.n] = b.film.op.free
@@ -35,7 +56,7 @@ class PeriodMap:
             self.fixed[b.offset:b.offset + b.n] = b.film.op.u_fixed
         self.opr = outputs_per_revolution
         self.atol = dae.absolute_tolerance(atol)
-        self.last = None
+        self.samples = {}
         self.rotor = slice(int(np.count_nonzero(keep[:dae.Q0])), int(np.count_nonzero(keep)))
 
     def embed(self, z) -> np.ndarray:
@@ -47,16 +68,36 @@ class PeriodMap:
     def reduce(self, y) -> np.ndarray:
         return np.asarray(y)[self.keep] if np.ndim(y) == 1 else np.asarray(y)[self.keep, :]
 
-    def __call__(self, z, t0, T, rtol):
+    def _solve(self, y, t_eval, rtol):
+        """The run over ``t_eval`` from the universal state ``y``: (solution, its final state in the universal
+        layout). The rotor's states sit at the same places in both layouts."""
         dae = self.dae
-        y = self.embed(z)
-        p = Problem(y0=y, yp0=dae.consistent_yp(t0, y), residual=dae.residual, jac_pattern=dae.pattern,
-                    jac_residual=dae.jacobian, name="rotor period map")
-        s = solve(p, np.linspace(t0, t0 + T, self.opr + 1), method="ida", rtol=rtol, atol=self.atol)
-        if not s.success:
+        if self.integrator == "ida":
+            p = Problem(y0=y, yp0=dae.consistent_yp(t_eval[0], y), residual=dae.residual, jac_pattern=dae.pattern,
+                        jac_residual=dae.jacobian, name="rotor period map")
+            s = solve(p, t_eval, method="ida", rtol=rtol, atol=self.atol)
+            return s, (s.y[-1] if s.y.size else None)
+        if self.form is None:
+            announce("rotor_bdf2")  # a cold cache compiles the films' content kernels and the Newton once
+            self.form = ContentSystem(dae)
+            self.model = self.form.model()
+        form = self.form
+        s = solve(form.problem(form.content_state(y), t_eval[0]), t_eval, method="bdf2", rtol=rtol, atol=self.atol,
+                  steps=Steps(max_step=2 * np.pi / BDF2_MIN_STEPS, first_step=2 * np.pi * 1e-4),
+                  options={"bdf2": self.model})
+        return s, (form.universal_state(s.y[-1]) if s.y.size else None)
+
+    def __call__(self, z, t0, T, rtol):
+        t_eval = np.linspace(t0, t0 + T, self.opr + 1)
+        s, end = self._solve(self.embed(z), t_eval, rtol)
+        if not s.success or s.t.size < t_eval.size:
             return np.full(z.size, np.nan)
-        self.last = s
-        return s.y[-1][self.keep]
+        key = np.asarray(z, dtype=float).tobytes()
+        if key not in self.samples or rtol <= self.samples[key][0]:  # keep the tightest run of a state
+            if len(self.samples) > 8:
+                self.samples.pop(next(iter(self.samples)))
+            self.samples[key] = (rtol, s.t, np.array(s.y[:, self.dae.Q0:self.dae.V0]))
+        return end[self.keep]
 
     def norm(self, d) -> float:
         """The rotor's coordinates and velocities, in the smallest clearance (per radian)."""
@@ -76,24 +117,42 @@ def dominant_basis(lin, shifts, modes) -> np.ndarray:
     return np.column_stack(cols)
 
 
-def periodic_response(system, speed_rpm, rtol=1e-6, tol=None, modes=2, outputs_per_revolution=64, max_iter=25):
+def periodic_response(system, speed_rpm, rtol=1e-6, tol=None, modes=2, outputs_per_revolution=64,
+                      shooting: ShootingSettings | None = None, integrator="ida", start=None,
+                      basis=None) -> PeriodicResponse:
     """The settled orbit of ``system`` at ``speed_rpm`` (module docstring) as a
-    :class:`~transient.models.rotor.results.PeriodicResponse`."""
-    eq = system.equilibrium(speed_rpm)
-    lin = system.linearisation(speed_rpm, eq)
+    :class:`~transient.models.rotor.results.PeriodicResponse`: Newton-Picard with ``shooting`` (its tolerances
+    ``tol``, ``rtol``), from ``start`` (a state at angle 0; default the linear response with the film states)
+    on the ``basis`` (the map's reduced layout; default the ``modes`` least damped modes of the linearisation)."""
     dae = system.dae(speed_rpm)
-    F = PeriodMap(dae, outputs_per_revolution, atol=1e-3 * rtol)
-    qs = system.quasi_static_eigenvalues(speed_rpm, eq)
-    qs = qs[np.imag(qs) > 0]
-    V = dominant_basis(lin, qs[np.argsort(-qs.real)], modes)
-    y0 = eq.state + lin.forced_response().real
+    F = PeriodMap(dae, outputs_per_revolution, atol=1e-3 * rtol, integrator=integrator)
+    if start is None or basis is None:
+        eq = system.equilibrium(speed_rpm)
+        lin = system.linearisation(speed_rpm, eq)
+    if basis is None:
+        qs = system.quasi_static_eigenvalues(speed_rpm, eq)
+        qs = qs[np.imag(qs) > 0]
+        basis = dominant_basis(lin, qs[np.argsort(-qs.real)], modes)
+    y0 = eq.state + lin.forced_response().real if start is None else np.array(start, dtype=float)
     tol = rtol if tol is None else tol
-    sh = newton_picard(F, F.reduce(y0), 2 * np.pi, V, norm=F.norm,
-                       settings=ShootingSettings(tol=tol, rtol=rtol, rtol_max=max(rtol, 1e-4), max_iter=max_iter, relax=1))
-    F(sh.state, 0.0, 2 * np.pi, rtol)  # the orbit of the accepted state, at the final tolerance
-    s = F.last
-    q = s.y[:, dae.Q0:dae.V0] * dae.L
-    return PeriodicResponse(t=s.t / dae.omega, displacement=system._node_displacements(q),
-                            multipliers=np.asarray(sh.multipliers), error_estimate=float(sh.error_estimate),
-                            periods=int(sh.periods), nodes=list(system.rotor.nodes), speed_rpm=float(speed_rpm),
-                            state=F.embed(sh.state), success=bool(sh.success), message=sh.message or "converged")
+    settings = replace(shooting or ShootingSettings(**SHOOTING_DEFAULTS), tol=tol, rtol=rtol,
+                       rtol_max=max(rtol, 1e-4))
+    sh = newton_picard(F, F.reduce(y0), 2 * np.pi, basis, norm=F.norm, settings=settings)
+    periods = int(sh.periods)
+    key = np.asarray(sh.state, dtype=float).tobytes()
+    if key not in F.samples and np.all(np.isfinite(sh.state)):  # the orbit of a state not integrated yet
+        F(sh.state, 0.0, 2 * np.pi, rtol)
+        periods += 1
+    _, tau, q = F.samples.get(key, (None, np.zeros(0), np.zeros((0, dae.nq))))
+    mu = np.asarray(sh.multipliers)
+    stable = bool(mu.size and np.abs(mu).max() < 1.0)
+    message = sh.message or "converged"
+    if sh.success and not stable:
+        message = (f"no stable periodic orbit at {speed_rpm:g} rpm (dominant multiplier |mu| = {np.abs(mu).max():.4f} "
+                   f"> 1): the periodic orbit found is unstable; {message}")
+    return PeriodicResponse(t=tau / dae.omega, displacement=system._node_displacements(q * dae.L),
+                            multipliers=mu, error_estimate=float(sh.error_estimate), periods=periods,
+                            nodes=list(system.rotor.nodes), speed_rpm=float(speed_rpm), state=F.embed(sh.state),
+                            stable=stable, converged=bool(sh.success), integrator=F.integrator,
+                            basis=None if sh.basis is None else np.asarray(sh.basis),
+                            success=bool(sh.success) and stable, message=message)

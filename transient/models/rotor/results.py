@@ -115,9 +115,12 @@ class PeriodicResponse(_Nodes, StatusResult):
     """The settled (periodic) unbalance response over one revolution by shooting: ``t`` [s] from shaft angle 0,
     ``displacement`` [m] (n_t, n_nodes, 2) (``position(node)``), ``multipliers`` the dominant Floquet
     multipliers (stable inside the unit circle), ``error_estimate`` [smallest clearance] of the fixed point,
-    ``periods`` integrated, ``state`` the system's state at angle 0 (a run's ``start=(0, state)``)."""
+    ``periods`` integrated, ``state`` the system's state at angle 0 (a run's ``start=(0, state)``); ``stable``: every
+    multiplier inside the unit circle, ``converged``: the shooting met its tolerance (``success`` is both),
+    ``integrator`` the period map's (``"ida"`` or ``"bdf2"``), ``basis`` the refined dominant subspace of the
+    monodromy (the period map's reduced layout; a continuation starts the next speed's shooting on it)."""
 
-    shapes = {"displacement": ("t", "nodes", 2), "state": (None,)}
+    shapes = {"displacement": ("t", "nodes", 2), "state": (None,), "basis": (None, None)}
 
     t: np.ndarray = quantity("s", None)
     displacement: np.ndarray = quantity("m", None)
@@ -127,6 +130,16 @@ class PeriodicResponse(_Nodes, StatusResult):
     nodes: list = None
     speed_rpm: float = quantity("rpm", 0.0)
     state: np.ndarray = quantity("-", None, repr=False)
+    stable: bool = False
+    converged: bool = False
+    integrator: str = "ida"
+    basis: np.ndarray | None = quantity("-", None, repr=False)
+
+    @property
+    def max_multiplier(self) -> float:
+        """Modulus of the dominant Floquet multiplier."""
+        m = np.asarray(self.multipliers if self.multipliers is not None else [])
+        return float(np.abs(m).max()) if m.size else float("nan")
 
     def amplitude(self, node) -> tuple[float, float]:
         """Half the peak-to-peak excursion [m] of ``node`` in x and y."""

@@ -44,6 +44,7 @@ from transient.solvers.integrate import Problem, Stats, Steps
 from transient.solvers.longrun import Display, run_long
 from transient.solvers.settings import Integration, LongRun, Recording, check_unused, keyword_table, run_settings
 from transient.solvers.newton import NewtonError, NewtonSettings, newton
+from transient.solvers.shooting import ShootingSettings
 from transient.units import rpm_to_rad_s
 
 RUN_METHODS = ("ida", "bdf2")
@@ -506,9 +507,6 @@ class RotorBearingSystem:
         ig, rc, lr = run_settings("RotorBearingSystem.run", legacy, RUN_KEYWORDS, integration=integration,
                                   recording=recording, long_run=long_run).values()
         check_choice("method", ig.method, RUN_METHODS)
-        if ig.method == "bdf2" and self.dampers:
-            raise ValueError(f"method = 'bdf2' with squeeze-film dampers at nodes {list(self.dampers)}; allowed: "
-                             "method = 'ida'")
         check_unused("RotorBearingSystem.run", "integration", ig, ("steps_per_revolution", "formulation", "dt",
                                                                    "linear_solver"))
         check_unused("RotorBearingSystem.run", "recording", rc, ("record", "record_from_revolution"))
@@ -646,19 +644,50 @@ class RotorBearingSystem:
                      GRID_ADVICE if parts["model"] + parts["solver"] > memory_limit() else
                      "lower revolutions or outputs_per_revolution")
 
-    def periodic_response(self, speed_rpm, rtol=1e-6, tol=None, modes=2, outputs_per_revolution=64, max_iter=25):
+    def periodic_response(self, speed_rpm, rtol=1e-6, tol=None, modes=2, outputs_per_revolution=64, max_iter=None, *,
+                          integrator="ida", shooting: ShootingSettings | None = None, start=None, basis=None):
         """The settled unbalance orbit at ``speed_rpm`` by shooting (Newton-Picard on the ``modes`` least damped
         modes of the linearisation with the film states, :mod:`~transient.models.rotor.periodic`): ``p.position(node)``
-        over one revolution [m], ``p.multipliers``. ``tol`` [smallest clearance] on the rotor's coordinates and
-        velocities (default ``rtol``)."""
-        from transient.models.rotor.periodic import periodic_response
+        over one revolution [m], ``p.multipliers`` (Floquet), ``p.stable``; ``success`` when it converged to a
+        stable orbit that stays inside every clearance.
+
+        ``tol`` [smallest clearance] on the rotor's coordinates and velocities (default ``rtol``); ``integrator``:
+        the period map's, ``"ida"`` (the universal films) or ``"bdf2"`` (the conservative stepper of
+        ``run(method="bdf2")`` on the content films; its step cap ``BDF2_MIN_STEPS`` per revolution, rtol and its
+        atol ``1e-3 rtol`` on the rotor's states); ``shooting``: a
+        :class:`~transient.solvers.shooting.ShootingSettings` taken as given but for its tolerances, which are
+        ``tol`` and ``rtol`` (default ``ShootingSettings(max_iter=25, relax=1)``; ``max_iter`` is its field, kept
+        as a keyword when no ``shooting`` is given); ``start``: a state at shaft angle 0 (a
+        :class:`~transient.models.rotor.results.PeriodicResponse` or its ``state``; default the linear response
+        with the film states) and ``basis`` its dominant subspace (a nearby speed's ``PeriodicResponse.basis``;
+        default the linearisation's least damped modes)."""
+        from transient.models.rotor.periodic import INTEGRATORS, SHOOTING_DEFAULTS, periodic_response
 
         speed = check_speed(speed_rpm)
         rtol = check_range("rtol", rtol, "-", 1e-12, 1e-2)
         tol = rtol if tol is None else check_positive("tol", tol, "-")
         modes = check_int("modes", modes, "-", 1, 20)
         opr = check_int("outputs_per_revolution", outputs_per_revolution, "1/rev", 4, 100000)
-        p = periodic_response(self, speed, rtol, tol, modes, opr, check_int("max_iter", max_iter, "-", 1, 1000))
+        integrator = check_choice("integrator", integrator, INTEGRATORS)
+        if shooting is None:
+            shooting = ShootingSettings(**dict(SHOOTING_DEFAULTS, max_iter=check_int(
+                "max_iter", SHOOTING_DEFAULTS["max_iter"] if max_iter is None else max_iter, "-", 1, 1000)))
+        else:
+            check_instance("shooting", shooting, ShootingSettings, "ShootingSettings(...) or None")
+            if max_iter is not None:
+                raise ValueError(f"max_iter = {max_iter!r} with shooting = ShootingSettings(...); allowed: one of them "
+                                 "(shooting=ShootingSettings(max_iter=...))")
+            check_unused("periodic_response", "shooting", shooting, ("tol", "rtol", "rtol_max"))
+        y0 = None
+        if start is not None:
+            y0 = np.array(getattr(start, "state", start), dtype=float)
+            n = self.dae(speed).n
+            if y0.shape != (n,) or not np.all(np.isfinite(y0)):
+                raise ValueError(f"start has shape {y0.shape} or non-finite entries; this system has {n} finite states")
+        if self.dampers:
+            self.coefficients(speed)  # refuses: the shooting's basis starts from the quasi-static K and C
+        p = periodic_response(self, speed, rtol, tol, modes, opr, shooting, integrator, y0,
+                              None if basis is None else np.asarray(basis, dtype=float))
         for node, b in self.bearings.items():  # an orbit through the wall is no result, converged or not
             x, y = p.position(node)
             through = wall_crossing(p.t, np.hypot(x, y) / b.clearance, b.max_eccentricity_ratio)
