@@ -26,12 +26,15 @@ from transient.compile_notice import announce
 from transient.models.journal.orbit import BDF2_MIN_STEPS
 from transient.models.rotor.content_form import ContentSystem
 from transient.models.rotor.model import SystemDAE
-from transient.models.rotor.results import PeriodicResponse
+from transient.models.rotor.results import PeriodicResponse, RotorResponseCurve
 from transient.solvers.integrate import Problem, Steps, solve
 from transient.solvers.shooting import ShootingSettings, newton_picard
 
 #: time integrators of the period map: IDA on the universal films, or the conservative BDF2 on their content form
 INTEGRATORS = ("ida", "bdf2")
+#: below this dominant multiplier the derivatives' noise swamps the dominant pair: a continuation then takes the
+#: basis afresh from the linearisation at the next speed instead of following the noisy subspace
+REFINE_FLOOR = 0.05
 #: the iteration where no ``shooting=ShootingSettings(...)`` is given (one relaxing period: the start's film is the
 #: linearisation's, not the periodic one)
 SHOOTING_DEFAULTS = dict(max_iter=25, relax=1)
@@ -137,7 +140,8 @@ def periodic_response(system, speed_rpm, rtol=1e-6, tol=None, modes=2, outputs_p
     tol = rtol if tol is None else tol
     settings = replace(shooting or ShootingSettings(**SHOOTING_DEFAULTS), tol=tol, rtol=rtol,
                        rtol_max=max(rtol, 1e-4))
-    sh = newton_picard(F, F.reduce(y0), 2 * np.pi, basis, norm=F.norm, settings=settings)
+    sh = newton_picard(F, F.reduce(y0), 2 * np.pi, basis, norm=F.norm, settings=replace(settings,
+                                                                                          refine_floor=REFINE_FLOOR))
     periods = int(sh.periods)
     key = np.asarray(sh.state, dtype=float).tobytes()
     if key not in F.samples and np.all(np.isfinite(sh.state)):  # the orbit of a state not integrated yet
@@ -156,3 +160,73 @@ def periodic_response(system, speed_rpm, rtol=1e-6, tol=None, modes=2, outputs_p
                             stable=stable, converged=bool(sh.success), integrator=F.integrator,
                             basis=None if sh.basis is None else np.asarray(sh.basis),
                             success=bool(sh.success) and stable, message=message)
+
+
+def response_curve(system, speeds, rtol, tol, modes, outputs_per_revolution, shooting, integrator, predictor,
+                   progress=False) -> RotorResponseCurve:
+    """Periodic responses of ``system`` along the monotone ``speeds`` [rpm] by continuation: each speed's shooting
+    starts from the ``predictor`` (``"secant"`` or ``"quadratic"``) extrapolation in speed of the last converged
+    states, on the last refined basis while its dominant multiplier is above :data:`REFINE_FLOOR` (else afresh
+    from the linearisation); a start that does not converge is retried from the linear response. The Floquet
+    multipliers of every orbit give its stability and the onset speed where the dominant one crosses 1."""
+    from transient.solvers.progress import progress_bar
+
+    done, path, orbits = [], [], []
+    basis = None
+    bar = progress_bar(progress, len(speeds), "speed", "periodic responses")
+    for n in speeds:
+        start = _extrapolate(np.array(path), [p.state for p in done], n, 3 if predictor == "quadratic" else 2)
+        p = periodic_response(system, n, rtol, tol, modes, outputs_per_revolution, shooting, integrator, start,
+                              basis if start is not None else None)
+        if not p.converged and start is not None:  # the extrapolation went astray: start afresh
+            q = periodic_response(system, n, rtol, tol, modes, outputs_per_revolution, shooting, integrator)
+            q.periods += p.periods
+            p = q
+        orbits.append(p)
+        if p.converged:
+            done, path = (done + [p])[-3:], (path + [n])[-3:]
+            basis = p.basis if p.max_multiplier > REFINE_FLOOR else None
+        if bar:
+            bar.set_postfix_str(f"{n:.0f} rpm: |mu| {p.max_multiplier:.4f}" + ("" if p.converged else ", NOT CONVERGED"))
+            bar.update()
+    if bar:
+        bar.close()
+    return _curve(system, np.asarray(speeds, dtype=float), orbits, integrator)
+
+
+def _extrapolate(speeds, states, n, points):
+    """Lagrange extrapolation of the last ``points`` states to speed ``n`` (None without a previous state)."""
+    m = min(points, len(states))
+    if m == 0:
+        return None
+    xs, ys = speeds[-m:], states[-m:]
+    out = np.zeros_like(ys[0])
+    for i in range(m):
+        out += np.prod([(n - xs[j]) / (xs[i] - xs[j]) for j in range(m) if j != i]) * ys[i]
+    return out
+
+
+def _curve(system, speeds, orbits, integrator) -> RotorResponseCurve:
+    nan = float("nan")
+    nodes = list(system.rotor.nodes)
+    amp = np.full((len(orbits), len(nodes), 2), nan)
+    mu = np.full((len(orbits), 2), nan, dtype=complex)
+    for i, p in enumerate(orbits):
+        if p.t.size:
+            amp[i] = 0.5 * np.ptp(p.displacement, axis=0)
+        m = np.asarray(p.multipliers)[:2]
+        mu[i, :m.size] = m
+    mmax = np.array([p.max_multiplier for p in orbits])
+    onset = nan
+    for i in range(1, len(orbits)):
+        a, b = mmax[i - 1], mmax[i]
+        if np.isfinite(a) and np.isfinite(b) and (a - 1.0) * (b - 1.0) < 0:
+            onset = float(speeds[i - 1] + (1.0 - a) * (speeds[i] - speeds[i - 1]) / (b - a))
+            break
+    bad = [f"{n:g}" for n, p in zip(speeds, orbits) if not p.converged]
+    return RotorResponseCurve(speed_rpm=speeds, amplitude=amp, multipliers=mu, max_multiplier=mmax,
+                              stable=np.array([p.stable for p in orbits]),
+                              converged=np.array([p.converged for p in orbits]),
+                              periods=np.array([p.periods for p in orbits]), nodes=nodes, onset_rpm=onset,
+                              integrator=integrator, orbits=orbits, success=not bad,
+                              message="" if not bad else f"shooting did not converge at {', '.join(bad)} rpm")
