@@ -38,7 +38,7 @@ def test_bdf2_periodic_response_of_one_node_is_the_journal_orbits(bearing, orbit
     assert p.success and p.converged and p.stable and p.integrator == "bdf2", p.message
     assert p.error_estimate <= 1e-7 and o.success
     x, y = p.position(0)
-    assert np.max(np.hypot(x - o.x, y - o.y)) < 2e-7 * C
+    assert np.max(np.hypot(x - o.x, y - o.y)) < 2e-7 * C  # measured 3.4e-8 C
     assert np.ptp(x) > 0.02 * C  # the orbit moves
     assert np.allclose(np.sort_complex(p.multipliers[:2]), np.sort_complex(o.multipliers[:2]), atol=1e-2)
 
@@ -50,10 +50,10 @@ def test_bdf2_and_ida_periodic_orbits_agree_within_bdf2s_error(orbits):
     assert a.success and a.integrator == "ida"
     xa, ya = a.position(0)
     xb, yb = b.position(0)
-    assert np.max(np.hypot(xa - xb, ya - yb)) < 5e-6 * C  # measured 1.9e-6 C
+    assert np.max(np.hypot(xa - xb, ya - yb)) < 5e-6 * C  # measured 1.8e-6 C
     assert abs(a.max_multiplier - b.max_multiplier) < 1e-2
     nf = a.state.size - 5  # the film states, in the universal layout for both
-    assert np.max(np.abs(a.state[:nf] - b.state[:nf])) < 1e-3 * np.max(np.abs(a.state[:nf]))
+    assert np.max(np.abs(a.state[:nf] - b.state[:nf])) < 1e-4 * np.max(np.abs(a.state[:nf]))  # measured 2.3e-6
 
 
 @pytest.mark.slow
