@@ -74,6 +74,23 @@ def test_response_curve_continues_on_bdf2_and_flags_the_unstable_orbit(one_node,
     assert c.orbits[0].position(0)[0].size == 65
 
 
+def test_response_curve_warm_starts_and_saves(one_node, tmp_path):
+    """Two speeds by continuation on IDA: the second, started from the first's orbit on its refined basis, converges
+    to the orbit of a cold start (each fixed point to tol = 1e-5 C); the curve saves and loads with its orbits."""
+    from transient.results import load_result
+
+    c = one_node.response_curve([6000.0, 6200.0], rtol=1e-5)
+    cold = one_node.periodic_response(6200.0, rtol=1e-5)
+    assert np.all(c.converged) and np.all(c.stable) and np.isnan(c.onset_rpm), c.message
+    x, y = c.orbits[1].position(0)
+    xc, yc = cold.position(0)
+    assert np.max(np.hypot(x - xc, y - yc)) < 2e-5 * C
+    assert abs(c.amplitudes(0)[0][1] - cold.amplitude(0)[0]) < 2e-5 * C
+    back = load_result(c.save(tmp_path / "curve"))
+    assert np.array_equal(back.amplitude, c.amplitude) and len(back.orbits) == 2
+    assert back.units()["amplitude"] == "m" and back.orbits[1].stable
+
+
 def test_periodic_response_refusals(one_node):
     with pytest.raises(ValueError, match="integrator"):
         one_node.periodic_response(6000, integrator="rk4")
