@@ -12,6 +12,7 @@ from transient import Integration, JournalBearing, LongRun, Recording, Rotor, Ro
 from transient.models.journal.bearing import NoEquilibriumError
 from transient.models.rotor.content_form import ContentSystem
 from transient.models.rotor.content_newton import rotor_jacobian, rotor_residual, rotor_to_state
+from transient.models.rotor.kernels import block_residual
 from transient.params.rho_kim import BEARING
 
 C = 200e-6
@@ -73,7 +74,8 @@ def test_what_a_damper_refuses_in_the_system():
     d = SqueezeFilmDamper(**DAMPER, grid=(16, 4))
     s = RotorBearingSystem(Rotor.jeffcott(**ROTOR), {0: d, 2: d}, unbalance=[(1, 4e-4, 0.0)], gravity=9.81)
     for analysis in (lambda: s.unbalance_response(SPEED), lambda: s.unbalance_response(SPEED, film_states=False),
-                     lambda: s.periodic_response(SPEED)):
+                     lambda: s.periodic_response(SPEED), lambda: s.periodic_response(SPEED, integrator="bdf2"),
+                     lambda: s.response_curve([SPEED])):
         with pytest.raises(ValueError, match="quasi-static K and C"):
             analysis()
     assert s.parameters()["bearings"]["0"]["damper"] is True
@@ -147,7 +149,6 @@ def test_the_content_residual_of_a_damper_has_no_couette_flow():
         assert np.max(np.abs(content[free] - universal[free])) < 1e-9 * np.abs(universal[free]).max()
     film = d.film
     wedge = np.empty(d.n)  # the damper's film spinning with the shaft: another outflow
-    from transient.models.rotor.kernels import block_residual
     X, Y = d.position(y[dae.Q0:dae.V0])
     block_residual(y[d.offset:d.offset + d.n], np.zeros(d.n), X, Y, 0.0, 0.0, 1.0, wedge, film.switch, film.geo,
                    film.fields, film.fv, film.sym)
