@@ -16,10 +16,10 @@ universal state, so that the map's unknowns, the start and the result are the sa
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import numpy as np
 import scipy.sparse.linalg as spla
-
-from dataclasses import replace
 
 from transient.checks import check_choice
 from transient.compile_notice import announce
@@ -32,9 +32,6 @@ from transient.solvers.shooting import ShootingSettings, newton_picard
 
 #: time integrators of the period map: IDA on the universal films, or the conservative BDF2 on their content form
 INTEGRATORS = ("ida", "bdf2")
-#: below this dominant multiplier the derivatives' noise swamps the dominant pair: a continuation then takes the
-#: basis afresh from the linearisation at the next speed instead of following the noisy subspace
-REFINE_FLOOR = 0.05
 #: the iteration where no ``shooting=ShootingSettings(...)`` is given (one relaxing period: the start's film is the
 #: linearisation's, not the periodic one)
 SHOOTING_DEFAULTS = dict(max_iter=25, relax=1)
@@ -48,7 +45,7 @@ class PeriodMap:
     def __init__(self, dae: SystemDAE, outputs_per_revolution: int, atol: float, integrator: str = "ida"):
         self.dae = dae
         self.integrator = check_choice("integrator", integrator, INTEGRATORS)
-        self.form = None  # the content form and its step solve, built at the first BDF2 flow
+        self.form = self.model = None  # the content form and its step solve, built at the first BDF2 flow
         keep = np.ones(dae.n, dtype=bool)
         for b in dae.blocks:
             keep[b.offset:b.offset + b.n] = b.film.op.free
@@ -140,8 +137,7 @@ def periodic_response(system, speed_rpm, rtol=1e-6, tol=None, modes=2, outputs_p
     tol = rtol if tol is None else tol
     settings = replace(shooting or ShootingSettings(**SHOOTING_DEFAULTS), tol=tol, rtol=rtol,
                        rtol_max=max(rtol, 1e-4))
-    sh = newton_picard(F, F.reduce(y0), 2 * np.pi, basis, norm=F.norm, settings=replace(settings,
-                                                                                          refine_floor=REFINE_FLOOR))
+    sh = newton_picard(F, F.reduce(y0), 2 * np.pi, basis, norm=F.norm, settings=settings)
     periods = int(sh.periods)
     key = np.asarray(sh.state, dtype=float).tobytes()
     if key not in F.samples and np.all(np.isfinite(sh.state)):  # the orbit of a state not integrated yet
@@ -166,8 +162,8 @@ def response_curve(system, speeds, rtol, tol, modes, outputs_per_revolution, sho
                    progress=False) -> RotorResponseCurve:
     """Periodic responses of ``system`` along the monotone ``speeds`` [rpm] by continuation: each speed's shooting
     starts from the ``predictor`` (``"secant"`` or ``"quadratic"``) extrapolation in speed of the last converged
-    states, on the last refined basis while its dominant multiplier is above :data:`REFINE_FLOOR` (else afresh
-    from the linearisation); a start that does not converge is retried from the linear response. The Floquet
+    states, on the last refined basis while its dominant multiplier is above the shooting's ``refine_floor`` (below
+    it the derivatives' noise swamps the dominant pair: afresh from the linearisation); a start that does not converge is retried from the linear response. The Floquet
     multipliers of every orbit give its stability and the onset speed where the dominant one crosses 1."""
     from transient.solvers.progress import progress_bar
 
@@ -185,7 +181,7 @@ def response_curve(system, speeds, rtol, tol, modes, outputs_per_revolution, sho
         orbits.append(p)
         if p.converged:
             done, path = (done + [p])[-3:], (path + [n])[-3:]
-            basis = p.basis if p.max_multiplier > REFINE_FLOOR else None
+            basis = p.basis if p.max_multiplier > shooting.refine_floor else None
         if bar:
             bar.set_postfix_str(f"{n:.0f} rpm: |mu| {p.max_multiplier:.4f}" + ("" if p.converged else ", NOT CONVERGED"))
             bar.update()
