@@ -40,14 +40,15 @@ class ContentSystem:
             fl = b.film
             film = (fl.switch, None, fl.geo, fl.fields, fl.extras, fl.fv, fl.work, (BDF2_FILM_TOL, BDF2_FILM_TOL),
                     np.zeros(fl.n, dtype=np.int8))
-            films.append(FilmArgs(film=film, offset=int(b.offset), n=int(b.n), sym=float(fl.sym),
+            films.append(FilmArgs(film=film, offset=int(b.offset), n=int(b.n), sym=float(fl.sym), spin=float(b.spin),
                                   support=np.ascontiguousarray(b.support, dtype=np.int64), ax=b.ax, ay=b.ay,
                                   gx=b.gx, gy=b.gy, maps=b.maps, local=b.local, up=np.zeros(fl.n),
                                   ym=np.zeros(fl.n + 2)))
         kinds = {str(numba.typeof(f)) for f in films}
         if len(kinds) > 1:
             raise ValueError("bearings: method \"bdf2\" takes bearings of one film kind (all Newtonian or all with the "
-                             "Gecim bulk, with or without boundary layers alike); allowed: method=\"ida\" for a mix")
+                             "Gecim bulk, with or without boundary layers alike; a squeeze-film damper's film is "
+                             "Newtonian without boundary layers); allowed: method=\"ida\" for a mix")
         kin_q, kin_v, mom_q, mom_v, mom_phi, phi_phi = dae.rotor_pos
         v_rows, v_cols = np.nonzero(dae.v_mask)
         unb = dae.unbalance

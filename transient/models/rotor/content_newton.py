@@ -6,10 +6,12 @@ variable, :mod:`transient.models.journal.content_newton`)::
 
     y = [m_1, ..., m_k, q~, v, phi],   z = [u_1, ..., u_k, q~, v, phi],   m_b = H_b(X_b, Y_b) C(u_b)
 
-with ``X_b = ax_b . q~``, ``Y_b = ay_b . q~`` the position of bearing ``b``'s node (:class:`~transient.models.rotor.model.BearingBlock`).
+with ``X_b = ax_b . q~``, ``Y_b = ay_b . q~`` the position of bearing ``b``'s node and ``k_b`` its spin (1: a journal
+bearing's journal turns with the shaft; 0: a squeeze-film damper's is pinned, its film has no Couette flow;
+:class:`~transient.models.rotor.model.BearingBlock`).
 Residual (:mod:`transient.models.rotor.model`, the film rows as the conservation law itself)::
 
-    film b:     A m_b' + R(u_b; X_b, Y_b, s) = 0    (groove cells: m' = 0)
+    film b:     A m_b' + R(u_b; X_b, Y_b, k_b s) = 0    (groove cells: m' = 0)
     kinematics: q~' - v = 0
     momentum:   M v' + (C / omega_ref + s G) v + K / omega_ref^2 q~ - f(phi, s, s') - sum_b (gx_b Fx_b + gy_b Fy_b) = 0
     angle:      phi' - s = 0
@@ -44,7 +46,8 @@ from transient.solvers.integrate.cache_guard import drop_stale_cache
 
 class FilmArgs(NamedTuple):
     """One bearing's film block: ``film`` the journal's Newton-norm tuple (switch, None, geo, fields, extras, fv,
-    work, (p_tol, m_tol), regime), its ``offset`` and size ``n`` in the state, ``sym``, the rotor coordinates
+    work, (p_tol, m_tol), regime), its ``offset`` and size ``n`` in the state, ``sym``, ``spin`` (its Couette flow
+    per unit of the shaft's speed ratio: 1 a journal bearing, 0 a squeeze-film damper), the rotor coordinates
     its node moves with (``support``) and their weights ``ax``, ``ay`` (position), ``gx``, ``gy`` (force), the
     scatter ``maps`` into the system pattern, the film's own Jacobian ``local``, zeros ``up`` (its u') and
     ``ym`` (n + 2: a block's content and position in the journal's layout, for the inversion)."""
@@ -53,6 +56,7 @@ class FilmArgs(NamedTuple):
     offset: int
     n: int
     sym: float
+    spin: float
     support: np.ndarray
     ax: np.ndarray
     ay: np.ndarray
@@ -181,8 +185,9 @@ def rotor_residual(t, y, yp, out, args):
         X, Y = node_position(f, q)
         block_fields(y, f, X, Y)
         R = fields.R
-        stencil_flux(as_read_only(work.u), fields, fv, R, s)
-        if s != 1.0:
+        sb = s * f.spin
+        stencil_flux(as_read_only(work.u), fields, fv, R, sb)
+        if sb != 1.0:
             work.xy[0] = np.nan  # the Couette coefficients c are scaled now: not the fields of this state
         fx, fy = film_force(fields.P, geo.cosp, geo.sinp, geo.area, f.sym)
         free, area, o = fv.cells.free, geo.area, f.offset
@@ -217,9 +222,10 @@ def rotor_jacobian(t, y, yp, cj, data, args):
         X, Y = node_position(f, q)
         block_fields(y, f, X, Y)
         u = work.u
-        block_jacobian(as_read_only(u), as_read_only(f.up), X, Y, 0.0, 0.0, s, cj, f.local, switch, geo, fields, extras,
-                       fv, f.sym)
-        if s != 1.0:
+        sb = s * f.spin
+        block_jacobian(as_read_only(u), as_read_only(f.up), X, Y, 0.0, 0.0, sb, cj, f.local, switch, geo, fields,
+                       extras, fv, f.sym)
+        if sb != 1.0:
             work.xy[0] = np.nan
         scatter_block(f.local, full, f.maps, f.ax, f.ay, f.gx, f.gy)
         for i in range(f.n):

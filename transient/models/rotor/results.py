@@ -3,6 +3,8 @@
 
 from __future__ import annotations
 
+from dataclasses import field
+
 import numpy as np
 
 from transient.results import RunResult, StatusResult, SteadyResult, quantity, result_type
@@ -115,9 +117,12 @@ class PeriodicResponse(_Nodes, StatusResult):
     """The settled (periodic) unbalance response over one revolution by shooting: ``t`` [s] from shaft angle 0,
     ``displacement`` [m] (n_t, n_nodes, 2) (``position(node)``), ``multipliers`` the dominant Floquet
     multipliers (stable inside the unit circle), ``error_estimate`` [smallest clearance] of the fixed point,
-    ``periods`` integrated, ``state`` the system's state at angle 0 (a run's ``start=(0, state)``)."""
+    ``periods`` integrated, ``state`` the system's state at angle 0 (a run's ``start=(0, state)``); ``stable``: every
+    multiplier inside the unit circle, ``converged``: the shooting met its tolerance (``success`` is both),
+    ``integrator`` the period map's (``"ida"`` or ``"bdf2"``), ``basis`` the refined dominant subspace of the
+    monodromy (the period map's reduced layout; a continuation starts the next speed's shooting on it)."""
 
-    shapes = {"displacement": ("t", "nodes", 2), "state": (None,)}
+    shapes = {"displacement": ("t", "nodes", 2), "state": (None,), "basis": (None, None)}
 
     t: np.ndarray = quantity("s", None)
     displacement: np.ndarray = quantity("m", None)
@@ -127,8 +132,56 @@ class PeriodicResponse(_Nodes, StatusResult):
     nodes: list = None
     speed_rpm: float = quantity("rpm", 0.0)
     state: np.ndarray = quantity("-", None, repr=False)
+    stable: bool = False
+    converged: bool = False
+    integrator: str = "ida"
+    basis: np.ndarray | None = quantity("-", None, repr=False)
+
+    @property
+    def max_multiplier(self) -> float:
+        """Modulus of the dominant Floquet multiplier."""
+        m = np.asarray(self.multipliers if self.multipliers is not None else [])
+        return float(np.abs(m).max()) if m.size else float("nan")
 
     def amplitude(self, node) -> tuple[float, float]:
         """Half the peak-to-peak excursion [m] of ``node`` in x and y."""
         x, y = self.position(node)
         return float(np.ptp(x) / 2), float(np.ptp(y) / 2)
+
+
+@result_type
+class RotorResponseCurve(StatusResult):
+    """Periodic unbalance responses along a path of speeds (continuation), one row per speed: ``amplitude`` [m]
+    (n_speeds, n_nodes, 2) half the peak-to-peak excursion of every node in x and y (``amplitudes(node)``),
+    ``multipliers`` (n_speeds, 2) the dominant Floquet pair, ``max_multiplier``, ``stable`` (every multiplier inside
+    the unit circle), ``converged``, ``periods`` integrated per speed; ``onset_rpm`` the speed where the dominant
+    multiplier leaves the unit circle, interpolated between the bracketing speeds (nan if not bracketed);
+    ``integrator`` the period map's; ``orbits`` every speed's
+    :class:`PeriodicResponse`."""
+
+    time_axis = "speed_rpm"
+    shapes = {"amplitude": ("speed_rpm", "nodes", 2), "multipliers": ("speed_rpm", 2),
+              "max_multiplier": ("speed_rpm",), "stable": ("speed_rpm",), "converged": ("speed_rpm",),
+              "periods": ("speed_rpm",)}
+    labels = {"nodes": None}
+    record_skip = ("orbits",)
+
+    speed_rpm: np.ndarray = quantity("rpm", None)
+    amplitude: np.ndarray = quantity("m", None)
+    multipliers: np.ndarray = quantity("-", None)
+    max_multiplier: np.ndarray = quantity("-", None)
+    stable: np.ndarray = None
+    converged: np.ndarray = None
+    periods: np.ndarray = None
+    nodes: list = None
+    onset_rpm: float = quantity("rpm", float("nan"))
+    integrator: str = "ida"
+    orbits: list = field(default_factory=list, repr=False)
+
+    def amplitudes(self, node) -> tuple[np.ndarray, np.ndarray]:
+        """Half peak-to-peak [m] of ``node`` in x and y at every speed."""
+        nodes = list(self.nodes)
+        if node not in nodes:
+            raise ValueError(f"node = {node!r} is not a node of this result; allowed: {nodes}")
+        a = self.amplitude[:, nodes.index(node), :]
+        return a[:, 0], a[:, 1]

@@ -44,6 +44,7 @@ from transient.solvers.integrate import Problem, Stats, Steps
 from transient.solvers.longrun import Display, run_long
 from transient.solvers.settings import Integration, LongRun, Recording, check_unused, keyword_table, run_settings
 from transient.solvers.newton import NewtonError, NewtonSettings, newton
+from transient.solvers.shooting import ShootingSettings
 from transient.units import rpm_to_rad_s
 
 RUN_METHODS = ("ida", "bdf2")
@@ -341,11 +342,7 @@ class RotorBearingSystem:
     def coefficients(self, speed_rpm, equilibrium: RotorEquilibrium | None = None) -> dict:
         """Each bearing's linearised stiffness K [N/m] and damping C [N s/m] (2x2, the bearing's frame) at the
         load it carries in the static equilibrium: ``{node: (K, C)}`` (``JournalBearing.coefficients``)."""
-        if self.dampers:
-            raise ValueError(f"squeeze-film dampers at nodes {list(self.dampers)}: the linear analyses (coefficients, "
-                             "unbalance_response, eigenvalues, stability, periodic_response) start from each "
-                             "bearing's quasi-static K and C, which a damper does not give here; allowed with "
-                             "dampers: equilibrium and run")
+        self._refuse_dampers()
         eq = self.equilibrium(speed_rpm) if equilibrium is None else equilibrium
         out, done = {}, {}
         for k, node in enumerate(self.bearing_nodes):
@@ -354,6 +351,14 @@ class RotorBearingSystem:
                 done[key] = self.bearings[node].coefficients(key[1], speed_rpm)
             out[node] = done[key]
         return out
+
+    def _refuse_dampers(self):
+        """The analyses that start from each bearing's quasi-static K and C refuse a system with dampers."""
+        if self.dampers:
+            raise ValueError(f"squeeze-film dampers at nodes {list(self.dampers)}: the linear analyses (coefficients, "
+                             "unbalance_response, eigenvalues, stability, periodic_response, response_curve) start "
+                             "from each bearing's quasi-static K and C, which a damper does not give here; allowed "
+                             "with dampers: equilibrium and run")
 
     def _linear_matrices(self, coefficients):
         """(M, C, G, K, bearings) for :mod:`transient.models.rotor.linear`: each bearing on the rotor coordinates
@@ -506,9 +511,6 @@ class RotorBearingSystem:
         ig, rc, lr = run_settings("RotorBearingSystem.run", legacy, RUN_KEYWORDS, integration=integration,
                                   recording=recording, long_run=long_run).values()
         check_choice("method", ig.method, RUN_METHODS)
-        if ig.method == "bdf2" and self.dampers:
-            raise ValueError(f"method = 'bdf2' with squeeze-film dampers at nodes {list(self.dampers)}; allowed: "
-                             "method = 'ida'")
         check_unused("RotorBearingSystem.run", "integration", ig, ("steps_per_revolution", "formulation", "dt",
                                                                    "linear_solver"))
         check_unused("RotorBearingSystem.run", "recording", rc, ("record", "record_from_revolution"))
@@ -646,20 +648,86 @@ class RotorBearingSystem:
                      GRID_ADVICE if parts["model"] + parts["solver"] > memory_limit() else
                      "lower revolutions or outputs_per_revolution")
 
-    def periodic_response(self, speed_rpm, rtol=1e-6, tol=None, modes=2, outputs_per_revolution=64, max_iter=25):
+    def periodic_response(self, speed_rpm, rtol=1e-6, tol=None, modes=2, outputs_per_revolution=64, max_iter=None, *,
+                          integrator="ida", shooting: ShootingSettings | None = None, start=None, basis=None):
         """The settled unbalance orbit at ``speed_rpm`` by shooting (Newton-Picard on the ``modes`` least damped
         modes of the linearisation with the film states, :mod:`~transient.models.rotor.periodic`): ``p.position(node)``
-        over one revolution [m], ``p.multipliers``. ``tol`` [smallest clearance] on the rotor's coordinates and
-        velocities (default ``rtol``)."""
+        over one revolution [m], ``p.multipliers`` (Floquet), ``p.stable``; ``success`` when it converged to a
+        stable orbit that stays inside every clearance.
+
+        ``tol`` [smallest clearance] on the rotor's coordinates and velocities (default ``rtol``); ``integrator``:
+        the period map's, ``"ida"`` (the universal films) or ``"bdf2"`` (the conservative stepper of
+        ``run(method="bdf2")`` on the content films; its step cap ``BDF2_MIN_STEPS`` per revolution, rtol and its
+        atol ``1e-3 rtol`` on the rotor's states); ``shooting``: a
+        :class:`~transient.solvers.shooting.ShootingSettings` taken as given but for its tolerances, which are
+        ``tol`` and ``rtol`` (default ``ShootingSettings(max_iter=25, relax=1)``; ``max_iter`` is its field, kept
+        as a keyword when no ``shooting`` is given); ``start``: a state at shaft angle 0 (a
+        :class:`~transient.models.rotor.results.PeriodicResponse` or its ``state``; default the linear response
+        with the film states) and ``basis`` its dominant subspace (a nearby speed's ``PeriodicResponse.basis``;
+        default the linearisation's least damped modes)."""
         from transient.models.rotor.periodic import periodic_response
 
         speed = check_speed(speed_rpm)
+        args = self._shooting_args(rtol, tol, modes, outputs_per_revolution, max_iter, integrator, shooting)
+        y0 = None
+        if start is not None:
+            y0 = np.array(getattr(start, "state", start), dtype=float)
+            n = self.dae(speed).n
+            if y0.shape != (n,) or not np.all(np.isfinite(y0)):
+                raise ValueError(f"start has shape {y0.shape} or non-finite entries; this system has {n} finite states")
+        return self._inside(periodic_response(self, speed, *args, y0,
+                                              None if basis is None else np.asarray(basis, dtype=float)))
+
+    def response_curve(self, speeds_rpm, rtol=1e-6, tol=None, modes=2, outputs_per_revolution=64, *,
+                       integrator="ida", shooting: ShootingSettings | None = None, predictor="secant",
+                       progress=False):
+        """Periodic unbalance responses along the monotone ``speeds_rpm`` by continuation (each speed's shooting
+        from the extrapolation of the last ones, ``predictor`` ``"secant"`` or ``"quadratic"``, on the last refined
+        subspace) with their Floquet multipliers: a
+        :class:`~transient.models.rotor.results.RotorResponseCurve` (``amplitudes(node)``, ``stable``,
+        ``onset_rpm`` where the dominant multiplier crosses 1, every speed's orbit in ``orbits``). The other
+        parameters as :meth:`periodic_response`."""
+        from transient.models.rotor.periodic import response_curve
+
+        speeds = np.array([check_speed(n) for n in check_items("speeds_rpm", speeds_rpm,
+                                                                "a non-empty sequence of speeds [rpm]")])
+        if speeds.size == 0:
+            raise ValueError("speeds_rpm = []; allowed: a non-empty sequence of speeds [rpm]")
+        if speeds.size > 1 and not (np.all(np.diff(speeds) > 0) or np.all(np.diff(speeds) < 0)):
+            raise ValueError(f"speeds_rpm = {short_repr(speeds_rpm)} [rpm]; allowed: strictly monotone (a "
+                             "continuation path)")
+        predictor = check_choice("predictor", predictor, ("secant", "quadratic"))
+        args = self._shooting_args(rtol, tol, modes, outputs_per_revolution, None, integrator, shooting)
+        curve = response_curve(self, speeds, *args, predictor, check_bool("progress", progress))
+        for p in curve.orbits:
+            self._inside(p)
+        return curve
+
+    def _shooting_args(self, rtol, tol, modes, outputs_per_revolution, max_iter, integrator, shooting) -> tuple:
+        """The checked (rtol, tol, modes, outputs per revolution, shooting settings, integrator) of a shooting;
+        refuses dampers (the shooting's basis starts from the quasi-static K and C)."""
+        from transient.models.rotor.periodic import INTEGRATORS, SHOOTING_DEFAULTS
+
         rtol = check_range("rtol", rtol, "-", 1e-12, 1e-2)
         tol = rtol if tol is None else check_positive("tol", tol, "-")
         modes = check_int("modes", modes, "-", 1, 20)
         opr = check_int("outputs_per_revolution", outputs_per_revolution, "1/rev", 4, 100000)
-        p = periodic_response(self, speed, rtol, tol, modes, opr, check_int("max_iter", max_iter, "-", 1, 1000))
-        for node, b in self.bearings.items():  # an orbit through the wall is no result, converged or not
+        integrator = check_choice("integrator", integrator, INTEGRATORS)
+        if shooting is None:
+            shooting = ShootingSettings(**dict(SHOOTING_DEFAULTS, max_iter=check_int(
+                "max_iter", SHOOTING_DEFAULTS["max_iter"] if max_iter is None else max_iter, "-", 1, 1000)))
+        else:
+            check_instance("shooting", shooting, ShootingSettings, "ShootingSettings(...) or None")
+            if max_iter is not None:
+                raise ValueError(f"max_iter = {max_iter!r} with shooting = ShootingSettings(...); allowed: one of them "
+                                 "(shooting=ShootingSettings(max_iter=...))")
+            check_unused("periodic_response", "shooting", shooting, ("tol", "rtol", "rtol_max"))
+        self._refuse_dampers()
+        return rtol, tol, modes, opr, shooting, integrator
+
+    def _inside(self, p):
+        """``p`` (a periodic response) unsuccessful when an orbit goes through a bearing wall, converged or not."""
+        for node, b in self.bearings.items():
             x, y = p.position(node)
             through = wall_crossing(p.t, np.hypot(x, y) / b.clearance, b.max_eccentricity_ratio)
             if through:
