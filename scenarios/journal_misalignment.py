@@ -16,8 +16,7 @@ from pathlib import Path
 
 import numpy as np
 
-from transient.models.journal.bearing import JournalBearing
-from transient.models.journal.feeds import Groove
+from transient import Groove, JournalBearing
 from transient.plots import save, tilt as plots
 from transient.study.scenario import JsonRecord, log, parser
 
