@@ -284,7 +284,8 @@ class JournalBearing:
 
     def parameters(self) -> dict:
         """Every parameter that changes the film (SI; a single full-length groove at the supply pressure as its angle
-        and width [deg], other feeds as a list of their fields with their type)."""
+        and width [deg], other feeds as a list of their fields with their type; roughness and misalignment only when
+        there are some)."""
         g = self.groove
         if g is not None and not (isinstance(g, Groove) and g.length is None and g.pressure is None):
             g = [dict(type=type(f).__name__, **asdict(f)) for f in self.feeds]
@@ -295,13 +296,14 @@ class JournalBearing:
                     groove=g, grid=list(self.grid_shape),
                     cavitation_pressure=self.cavitation_pressure, ambient_pressure=self.ambient_pressure,
                     switch_width=self.switch_width, switch_content_width=self.switch_content_width,
-                    symmetric=self.symmetric, cavitation=self.cavitation, misalignment=list(self.misalignment),
+                    symmetric=self.symmetric, cavitation=self.cavitation,
                     layers=None if self.layers is None else dict(thickness=self.layers.thickness,
                                                                  viscosity=list(self.layers.viscosity),
                                                                  alpha=self.layers.alpha),
                     rheology=None if not self.shear_thinning else dict(
                         kappa=self.rheology.kappa, viscosity_ratio=self.rheology.viscosity_ratio),
-                    **({} if self.roughness is None else dict(roughness=self.roughness.parameters())))
+                    **({} if self.roughness is None else dict(roughness=self.roughness.parameters())),
+                    **({} if self.misalignment == (0.0, 0.0) else dict(misalignment=list(self.misalignment))))
 
     def layer_groups(self) -> tuple[float, float]:
         """The boundary layers in the film's scales: ``(2 delta / C, 3 alpha^2 mu (1/mu_a + 1/mu_b) / C^2)``

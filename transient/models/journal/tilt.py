@@ -44,7 +44,7 @@ MAX_TILT = 0.1
 
 def check_tilt(name, tilt) -> tuple[float, float]:
     """A (tilt about x, tilt about y) pair [rad] within ``MAX_TILT``."""
-    tx, ty = check_vector(name, tilt, "rad", 2, -MAX_TILT, MAX_TILT, why="((tilt about x, tilt about y))")
+    tx, ty = check_vector(name, tilt, "rad", 2, -MAX_TILT, MAX_TILT, why="(tilt about x, tilt about y)")
     return float(tx), float(ty)
 
 
