@@ -3,6 +3,9 @@
 Dimensionless groups (``R`` radius, ``C`` radial clearance, ``omega`` shaft speed)::
 
     H = h / C = 1 + X cos(phi) + Y sin(phi)        (paper eq. 3; X = x / C, Y = y / C)
+
+(a tilted journal: ``gap0 + X cos + Y sin`` with the cells' ``gap0`` of :class:`~.scales.CellGeometry`,
+:mod:`transient.models.journal.tilt`)
     tau = omega t,   zbar = z / R,   p = p_c + p0 P,   p0 = 6 mu omega (R / C)^2
 
 ``phi`` is measured from the top of the bearing (the oil groove, opposite the static load) in the
