@@ -28,6 +28,8 @@ from transient.models.journal.reynolds_film import ReynoldsFilm
 from transient.models.journal.rough_film import RoughFilm
 from transient.models.journal.roughness import Roughness
 from transient.models.journal.scales import film_scales
+from transient.models.journal.tilt import (check_open, check_tilt, edge_eccentricities, half_length, sensitivity,
+                                           si_coefficients, tilt_groups)
 from transient.units import rpm_to_rad_s as omega  # the journal's name for it (public: models.journal.omega)
 
 #: The cavitation models of :class:`JournalBearing` (``cavitation=``).
@@ -150,12 +152,16 @@ class JournalBearing:
         film pressure (:mod:`transient.models.journal.rough_film`) in ``steady_state``, ``equilibrium`` and
         ``coefficients``; the friction torque adds the boundary friction of the contacts. Newtonian bulk without
         boundary layers, ``cavitation="elrod"``. Default None: smooth surfaces.
+    misalignment : (tilt about x, tilt about y) [rad] of the bush (the bearing's static misalignment; axes and signs
+        in :mod:`transient.models.journal.tilt`): the film feels the journal's tilt relative to it
+        (``steady_state(..., tilt=)``, ``equilibrium``, ``coefficients``), and the whole length is modelled. Smooth
+        films; the time-domain orbit and the rotor system take aligned bearings. Default (0, 0).
     """
 
     def __init__(self, diameter, length, clearance, viscosity, bulk_modulus=1e9, supply_pressure=101325.0,
                  groove: Groove | None = Groove(), grid=(151, 21), cavitation_pressure=0.0, ambient_pressure=0.0,
                  switch_width=None, switch_content_width=1e-2, symmetric=True, cavitation="elrod", rheology=None,
-                 layers: BoundaryLayers | None = None, roughness: Roughness | None = None):
+                 layers: BoundaryLayers | None = None, roughness: Roughness | None = None, misalignment=(0.0, 0.0)):
         if not isinstance(cavitation, str) or cavitation not in CAVITATION_MODES:
             raise ValueError(f"cavitation must be one of {CAVITATION_MODES}, got cavitation={cavitation!r}")
         self.cavitation = cavitation
@@ -208,7 +214,12 @@ class JournalBearing:
             raise ValueError(f"grid must be (n_theta, n_axial) cells, got {grid!r}")
         n_theta = check_int("grid[0] (n_theta)", grid[0], "cells", 8, 20000)
         n_axial = check_int("grid[1] (n_axial)", grid[1], "cells", 1, 5000)
-        self.symmetric = check_bool("symmetric", symmetric) and all(f.symmetric for f in self.feeds)
+        self.misalignment = check_tilt("misalignment", misalignment)
+        if self.roughness is not None and self.misalignment != (0.0, 0.0):
+            raise ValueError(f"misalignment = {self.misalignment} [rad] with roughness = Roughness(...); allowed: "
+                             "(0, 0) (the rough film is aligned)")
+        self.symmetric = (check_bool("symmetric", symmetric) and all(f.symmetric for f in self.feeds)
+                          and self.misalignment == (0.0, 0.0))
         if check_bool("symmetric", symmetric) and not self.symmetric:
             n_axial *= 2  # feeds off the mid-plane: the whole length, at the same resolution
         self.grid_shape = (n_theta, n_axial)
@@ -273,7 +284,8 @@ class JournalBearing:
 
     def parameters(self) -> dict:
         """Every parameter that changes the film (SI; a single full-length groove at the supply pressure as its angle
-        and width [deg], other feeds as a list of their fields with their type)."""
+        and width [deg], other feeds as a list of their fields with their type; roughness and misalignment only when
+        there are some)."""
         g = self.groove
         if g is not None and not (isinstance(g, Groove) and g.length is None and g.pressure is None):
             g = [dict(type=type(f).__name__, **asdict(f)) for f in self.feeds]
@@ -290,7 +302,8 @@ class JournalBearing:
                                                                  alpha=self.layers.alpha),
                     rheology=None if not self.shear_thinning else dict(
                         kappa=self.rheology.kappa, viscosity_ratio=self.rheology.viscosity_ratio),
-                    **({} if self.roughness is None else dict(roughness=self.roughness.parameters())))
+                    **({} if self.roughness is None else dict(roughness=self.roughness.parameters())),
+                    **({} if self.misalignment == (0.0, 0.0) else dict(misalignment=list(self.misalignment))))
 
     def layer_groups(self) -> tuple[float, float]:
         """The boundary layers in the film's scales: ``(2 delta / C, 3 alpha^2 mu (1/mu_a + 1/mu_b) / C^2)``
@@ -316,13 +329,45 @@ class JournalBearing:
         """p0 = 6 mu omega (R/C)^2 [Pa], the dimensionless pressure unit at this speed."""
         return 6.0 * self.viscosity * omega(speed_rpm) * (self.radius / self.clearance) ** 2
 
-    def film(self, speed_rpm, n_extra=N_ROTOR) -> "Film | ReynoldsFilm":
+    def film(self, speed_rpm, n_extra=N_ROTOR, tilt=(0.0, 0.0)) -> "Film | ReynoldsFilm":
         """The discretised film at a shaft speed (scales, operator, scratch arrays): a :class:`Film`
-        (Elrod) or a :class:`~transient.models.journal.reynolds_film.ReynoldsFilm` (``cavitation="reynolds"``)."""
+        (Elrod) or a :class:`~transient.models.journal.reynolds_film.ReynoldsFilm` (``cavitation="reynolds"``), its
+        gap that of a journal tilted by ``tilt`` [rad] in this bearing's (misaligned) bush."""
         if self.roughness is not None:
             return RoughFilm(self.grid, film_scales(self, speed_rpm), self.flow_law, self.roughness, n_extra)
         kind = ReynoldsFilm if self.cavitation == "reynolds" else Film
-        return kind(self.grid, film_scales(self, speed_rpm), self.flow_law, n_extra)
+        f = kind(self.grid, film_scales(self, speed_rpm), self.flow_law, n_extra)
+        relative = (tilt[0] - self.misalignment[0], tilt[1] - self.misalignment[1])
+        if relative != (0.0, 0.0):
+            f.set_tilt(relative)
+        return f
+
+    def tilted(self, tilt) -> "JournalBearing":
+        """This bearing for a journal tilted by ``tilt`` [rad]: itself if the film of its grid can take the tilt (an
+        aligned journal, or the whole length modelled), else :meth:`whole_length`."""
+        return self if tuple(tilt) == (0.0, 0.0) else self.whole_length()
+
+    def whole_length(self) -> "JournalBearing":
+        """This bearing with the whole length modelled: itself if it is, else a copy without the symmetry plane
+        (twice the axial cells of the half bearing: the same resolution)."""
+        if not self.symmetric:
+            return self
+        c = copy.copy(self)
+        c.symmetric = False
+        c.grid_shape = (self.grid_shape[0], 2 * self.grid_shape[1])
+        c._build_grid()
+        return c
+
+    def _check_tilt(self, tilt, X, Y):
+        """The journal tilt ``tilt`` [rad], refused if its gap closes at a bearing end with the journal at (X, Y)."""
+        tilt = check_tilt("tilt", tilt)
+        if self.roughness is not None and tilt != (0.0, 0.0):
+            raise ValueError(f"tilt = {tilt} [rad] with roughness = Roughness(...); allowed: (0, 0) (the rough film "
+                             "is aligned)")
+        rel = (tilt[0] - self.misalignment[0], tilt[1] - self.misalignment[1])
+        a, b = tilt_groups(rel, self.radius, self.clearance)
+        check_open(X, Y, a, b, 0.5 * self.length / self.radius, self.max_eccentricity_ratio, tilt)
+        return tilt
 
     def _check_supplied(self):
         """A steady Elrod film needs a supply: without one every starved content field is a steady state."""
@@ -332,18 +377,21 @@ class JournalBearing:
                              "cavitation=\"reynolds\" (the classical 360-deg bearing)")
 
     # ---------------------------------------------------------------------------------------------
-    def steady_state(self, eccentricity_ratio, speed_rpm, position_angle_deg=0.0) -> FilmState:
-        """Film with the journal held at eccentricity ratio ``eps`` in the direction ``position_angle_deg``
-        (from the load line +x, in the direction of rotation); a direct Newton solve (Elrod) or the
-        active-set solve of the complementarity problem (Reynolds)."""
+    def steady_state(self, eccentricity_ratio, speed_rpm, position_angle_deg=0.0, tilt=(0.0, 0.0)) -> FilmState:
+        """Film with the journal held at eccentricity ratio ``eps`` (at the mid-plane) in the direction
+        ``position_angle_deg`` (from the load line +x, in the direction of rotation) and tilted by ``tilt`` = (about x,
+        about y) [rad] (:mod:`~transient.models.journal.tilt`; a tilt whose gap closes at an end is refused); a direct
+        Newton solve (Elrod) or the active-set solve of the complementarity problem (Reynolds)."""
         eps = check_range("eccentricity_ratio", eccentricity_ratio, "-", 0.0, self.max_eccentricity_ratio,
                           high_open=True, why="(the film, less its boundary layers, must be open everywhere)"
                           if self.layers is not None else "")
         check_speed(speed_rpm)
         a = np.radians(position_angle_deg)
+        tilt = self._check_tilt(tilt, eps * np.cos(a), eps * np.sin(a))
         self._check_supplied()
-        f = self.film(speed_rpm)
-        u, its, _ = self.film_solve(f, eps * np.cos(a), eps * np.sin(a))
+        b = self.tilted(tilt)
+        f = b.film(speed_rpm, tilt=tilt)
+        u, its, _ = b.film_solve(f, eps * np.cos(a), eps * np.sin(a))
         return _warn_validity(f.state(u, eps * np.cos(a), eps * np.sin(a), its))
 
     def coarser(self) -> "JournalBearing":
@@ -369,35 +417,56 @@ class JournalBearing:
             u, its = film.solve(X, Y)
             return u, its, [(self.grid_shape, its, getattr(film, "factorisations", 0))]
         coarse = self.coarser()
-        uc, _, levels = coarse.film_solve(coarse.film(film.speed_rpm), X, Y)
+        cf = coarse.film(film.speed_rpm)
+        cf.set_tilt(film.tilt_rad)  # the same gap on the coarse grid
+        uc, _, levels = coarse.film_solve(cf, X, Y)
         u, its = film.solve(X, Y, u0=interpolate_cells(coarse.grid, uc, self.grid), chord=True)
         return u, its, levels + [(self.grid_shape, its, film.factorisations)]
 
-    def equilibrium(self, load, speed_rpm, tol=1e-10, max_iter=40) -> FilmState:
+    def equilibrium(self, load, speed_rpm, tol=1e-10, max_iter=40, tilt=(0.0, 0.0)) -> FilmState:
         """Static equilibrium under ``load`` [N] (in +x): 2-D Newton on the journal position with the
-        exact derivative of the discrete film force (implicit differentiation of the film equations)."""
-        f, u, q, it, _ = self._equilibrium(load, speed_rpm, tol, max_iter)
+        exact derivative of the discrete film force (implicit differentiation of the film equations). ``tilt``
+        [rad]: the journal held at this tilt (the force balances the load; the moment is what it is)."""
+        b = self.tilted(check_tilt("tilt", tilt))
+        f, u, q, it, _ = b._equilibrium(load, speed_rpm, tol, max_iter, tilt=tilt)
         return _warn_validity(f.state(u, q[0], q[1], it))
 
-    def coefficients(self, load, speed_rpm) -> tuple[np.ndarray, np.ndarray]:
-        """Linearised stiffness K [N/m] and damping C [N s/m] (2x2, x towards the load) at the static
-        equilibrium, from the same discrete film: ``K = -dF/dx``, ``C = -dF/d(dx/dt)``."""
-        f, _, _, _, (dF_dq, dF_dv) = self._equilibrium(load, speed_rpm)
-        K = -dF_dq * f.force_scale / self.clearance
-        Cmat = -dF_dv * f.force_scale / (self.clearance * omega(speed_rpm))
-        return K, Cmat
+    def coefficients(self, load, speed_rpm, tilt=(0.0, 0.0), tilt_dofs=False) -> tuple[np.ndarray, np.ndarray]:
+        """Linearised stiffness K and damping C at the static equilibrium, from the same discrete film:
+        ``K = -dF/dq``, ``C = -dF/d(dq/dt)``. Default: 2x2 [N/m, N s/m] in (x, y), x towards the load.
+        ``tilt_dofs=True``: 4x4 in ``q = (x [m], y [m], tx [rad], ty [rad])`` with the rows ``(F_x [N], F_y [N],
+        M_x [N m], M_y [N m])`` (the film's moments about the bearing centre; the tilt rates in the squeeze term;
+        axes in :mod:`~transient.models.journal.tilt`), at the equilibrium with the journal tilted by ``tilt``
+        [rad]."""
+        tilt = check_tilt("tilt", tilt)
+        if not check_bool("tilt_dofs", tilt_dofs) and tilt == (0.0, 0.0) and self.misalignment == (0.0, 0.0):
+            f, _, _, _, (dF_dq, dF_dv) = self._equilibrium(load, speed_rpm)
+            K = -dF_dq * f.force_scale / self.clearance
+            Cmat = -dF_dv * f.force_scale / (self.clearance * omega(speed_rpm))
+            return K, Cmat
+        b = self.whole_length()  # a moment needs both halves
+        f, u, q, _, _ = b._equilibrium(load, speed_rpm, tilt=tilt)
+        _, dF_dq, dF_dv = sensitivity(f, u, q[0], q[1])
+        K, Cmat = si_coefficients(dF_dq, dF_dv, f.force_scale, self.radius, self.clearance, omega(speed_rpm))
+        return (K, Cmat) if tilt_dofs else (K[:2, :2], Cmat[:2, :2])
 
-    def _equilibrium(self, load, speed_rpm, tol=1e-10, max_iter=40, start=None):
+    def _equilibrium(self, load, speed_rpm, tol=1e-10, max_iter=40, start=None, tilt=(0.0, 0.0)):
         """Newton on the journal position (either film: both give the force and its exact sensitivities; the
         Reynolds film's on its converged active set); returns (film, u, (X, Y), iterations, (dF/dq, dF/dv)) with the
         force sensitivities at the converged state (they are the Newton matrix and the damping). ``start``: the
         first journal position (X, Y) [C] (default (0.3, 0.3))."""
         W = check_positive("load", load, "N")
         check_speed(speed_rpm)
+        tilt = self._check_tilt(tilt, 0.0, 0.0)
         self._check_supplied()
-        f = self.film(speed_rpm)
+        f = self.film(speed_rpm, tilt=tilt)
         wbar = W / f.force_scale
         q = np.array([0.3, 0.3] if start is None else start, dtype=float)  # eccentric start in the loaded quadrant
+        a, b = f.tilt
+        half = half_length(self.grid)
+        reach = lambda p: max(edge_eccentricities(p[0], p[1], a, b, half))  # noqa: E731 (|e| at the worse end)
+        if reach(q) >= self._reach * self.max_eccentricity_ratio:
+            q[:] = 0.0
         u = None
         for it in range(max_iter):
             u = self.film_solve(f, q[0], q[1])[0] if u is None else f.solve(q[0], q[1], u0=u)[0]
@@ -407,7 +476,7 @@ class JournalBearing:
                 return f, u, q, it, (dF_dq, dF_dv)
             dq = -np.linalg.solve(dF_dq, r)
             lam = 1.0  # keep the journal inside the clearance
-            while np.hypot(*(q + lam * dq)) >= self._reach * self.max_eccentricity_ratio:
+            while reach(q + lam * dq) >= self._reach * self.max_eccentricity_ratio:
                 lam *= 0.5
             q = q + lam * dq
         if self.roughness is not None and start is None:

@@ -93,7 +93,7 @@ def bdf2_jacobian(t, y, yp, cj, data, args):
     (:func:`cell_regime`) at this Jacobian."""
     switch, rotor, geo, fields, extras, fv, work, tol, regime = args
     kappa, wbar, ebar, sym = rotor
-    cosp, sinp, area = geo
+    cosp, sinp, area = geo.cosp, geo.sinp, geo.area
     H, dP, C, D = fields.H, fields.dP, fields.C, fields.D
     pos_row, pos_col = extras.pos_row, extras.pos_col
     free, pos_c = fv.cells.free, fv.cells.pos_c

@@ -20,6 +20,7 @@ from transient.models.journal.gecim_film import bulk_end_flow, bulk_tables, no_b
 from transient.models.journal.kernels import (N_ROTOR, content_universal, film_force, film_jacobian, film_residual,
                                               state_fields)
 from transient.models.journal.results import FilmState
+from transient.models.journal.tilt import moment, set_gap, tilt_groups, tilt_min_film
 from transient.models.journal.scales import (ContentScratch, FilmScales, RotorColumns, Scratch, cell_geometry,
                                              operator_tables)
 from transient.physics.layered import NO_LAYERS, Gecim, LayeredFilm
@@ -59,7 +60,21 @@ class FilmBlock:
         self.force_scale = scales.force_scale  # N per unit of Fbar
         self.u_supply = scales.u_supply
         self.sym = scales.sym
-        self.cosp, self.sinp, self.area = self.geo = cell_geometry(grid)
+        self.geo = cell_geometry(grid)
+        self.cosp, self.sinp, self.area, self.gap0 = self.geo
+        self.tilt = (0.0, 0.0)  # the tilt groups (a, b) of the journal in its bush (models.journal.tilt)
+        self.tilt_rad = (0.0, 0.0)  # the same tilt (about x, about y) [rad]
+
+    def set_tilt(self, tilt):
+        """Tilt the journal relative to its bush by ``tilt = (t_x, t_y)`` [rad] (:mod:`~transient.models.journal.tilt`):
+        the gap of the centred journal becomes ``1 + zbar (a cos + b sin)``, in place (the kernels and orbits holding
+        the geometry see it)."""
+        a, b = tilt_groups(tilt, self.scales.radius, self.scales.clearance)
+        if (a, b) != (0.0, 0.0) and self.sym != 1.0:
+            raise ValueError("a tilted journal needs the film of the whole length (symmetric=False)")
+        set_gap(self.geo, self.grid.zc, a, b)
+        self.tilt = (a, b)
+        self.tilt_rad = (float(tilt[0]), float(tilt[1]))
 
 
 class Film(FilmBlock):
@@ -216,6 +231,15 @@ class Film(FilmBlock):
         dF = np.vstack([gx @ du, gy @ du])
         return F, dF[:, :2], dF[:, 2:]
 
+    def linear_response(self, u, G_u, G_q):
+        """``du = -G_u^{-1} G_q``: the response of the steady film ``u`` to the columns ``G_q`` of its equations'
+        derivatives (:func:`~transient.models.journal.tilt.sensitivity`)."""
+        return -spla.splu(G_u.tocsc()).solve(G_q)
+
+    def pressure_slope(self, u):
+        """``dP/du`` of every cell at the state last evaluated (``u``)."""
+        return self.dP.copy()
+
     def mass_flows(self, u, X, Y):
         """Global mass balance terms of the film at state ``u`` (dimensionless, whole bearing)::
 
@@ -273,7 +297,8 @@ def film_state(film, u, X, Y, F, P, content, iterations=0, contact=None):
         contact_load=float(np.hypot(*Fc)), contact_normal_load=normal,
         friction_torque=R * (friction[0] + mu_b * normal),
         eccentricity_ratio=eps, attitude_angle_deg=float(att), position=(X * C, Y * C),
-        force=(Fx, Fy), load=float(np.hypot(Fx, Fy)), min_film=C * (1.0 - eps),
+        force=(Fx, Fy), load=float(np.hypot(Fx, Fy)), min_film=C * tilt_min_film(film, X, Y),
+        moment=moment(film, P), tilt=film.tilt_rad,
         speed_rpm=film.speed_rpm, pressure=pressure, film_content=theta, angle_deg=np.degrees(grid.x.centres),
         z=grid.z.centres * R, u=np.array(u, dtype=float), newton_iterations=iterations, iterations=iterations,
         friction_force=friction[0], bearing_friction_force=friction[1], film_thickness=h, pressure_gradient=G,
@@ -289,7 +314,7 @@ def film_geometry(film, X, Y, P):
     central differences on this uniform grid; the prescribed pressure at an end, the cell's own at the symmetry
     plane)."""
     s, grid = film.scales, film.grid
-    h = s.clearance * grid.to_2d(1.0 + X * film.cosp + Y * film.sinp)
+    h = s.clearance * grid.to_2d(film.gap0 + X * film.cosp + Y * film.sinp)
     g = cell_gradient_values(film.op, np.asarray(P, dtype=float)) * (film.p0 / s.radius)
     return h, grid.to_2d(g[:, 0]), grid.to_2d(g[:, 1])
 

@@ -3,6 +3,9 @@
 Dimensionless groups (``R`` radius, ``C`` radial clearance, ``omega`` shaft speed)::
 
     H = h / C = 1 + X cos(phi) + Y sin(phi)        (paper eq. 3; X = x / C, Y = y / C)
+
+(a tilted journal: ``gap0 + X cos + Y sin`` with the cells' ``gap0`` of :class:`~.scales.CellGeometry`,
+:mod:`transient.models.journal.tilt`)
     tau = omega t,   zbar = z / R,   p = p_c + p0 P,   p0 = 6 mu omega (R / C)^2
 
 ``phi`` is measured from the top of the bearing (the oil groove, opposite the static load) in the
@@ -43,8 +46,8 @@ N_ROTOR = 4  # X, Y, VX, VY appended after the cells
 
 
 @njit(cache=True)
-def conductances(X, Y, cosp, sinp, layer_gap, darcy, H, k, c):
-    """Film thickness ``H = 1 + X cos + Y sin``, Poiseuille conductance ``k = (H - gap)^3/2 + darcy H`` and
+def conductances(X, Y, cosp, sinp, gap0, layer_gap, darcy, H, k, c):
+    """Film thickness ``H = gap0 + X cos + Y sin`` (``gap0`` = 1 for an aligned journal, :class:`~.scales.CellGeometry`), Poiseuille conductance ``k = (H - gap)^3/2 + darcy H`` and
     Couette coefficient ``c = H/2`` of every cell.
 
     ``gap = 2 delta / C`` and ``darcy = 3 alpha^2 mu_1 (1/mu_a + 1/mu_b) / C^2`` are the boundary layers of
@@ -52,7 +55,7 @@ def conductances(X, Y, cosp, sinp, layer_gap, darcy, H, k, c):
     p0 = 6 mu omega (R/C)^2): the bulk is ``H - gap`` thick, the layers add their Darcy flow; the Couette flux
     is ``H/2`` whatever the layers (they move with their walls). Without layers (0, 0) ``k = H^3/2``."""
     for i in range(H.size):
-        h = 1.0 + X * cosp[i] + Y * sinp[i]
+        h = gap0[i] + X * cosp[i] + Y * sinp[i]
         H[i] = h
         hb = h - layer_gap if h > layer_gap else 0.0
         k[i] = 0.5 * hb * hb * hb + darcy * h
@@ -60,12 +63,12 @@ def conductances(X, Y, cosp, sinp, layer_gap, darcy, H, k, c):
 
 
 @njit(cache=True)
-def film_fields(u, X, Y, cosp, sinp, beta_bar, width, content_scale, layer_gap, darcy, H, P, dP, C, D, dD, k, c):
+def film_fields(u, X, Y, cosp, sinp, gap0, beta_bar, width, content_scale, layer_gap, darcy, H, P, dP, C, D, dD, k, c):
     """Cell fields at state ``u`` and journal position (X, Y): H, P(u), P', theta = C(u), D = C', D', k, c
     (:func:`conductances`)."""
     softplus_pressure(u, width, P, dP)
     elrod_content(u, P, dP, width, content_scale, beta_bar, C, D, dD)
-    conductances(X, Y, cosp, sinp, layer_gap, darcy, H, k, c)
+    conductances(X, Y, cosp, sinp, gap0, layer_gap, darcy, H, k, c)
 
 
 @njit(cache=True)
@@ -149,9 +152,9 @@ def _add_bulk_jacobian(P, dP, H, cosp, sinp, free, bulk, pos_col, n_extra, data)
 def state_fields(u, X, Y, switch, geo, fields, fv):
     """:func:`film_fields` of the state, with the prescribed (groove) cells on the sharp Elrod curve."""
     beta_bar, width, content_scale, layer_gap, darcy = switch
-    cosp, sinp, area = geo
+    cosp, sinp, area, gap0 = geo
     H, P, dP, C, D, dD, k, c, zero, _ = fields
-    film_fields(u, X, Y, cosp, sinp, beta_bar, width, content_scale, layer_gap, darcy, H, P, dP, C, D, dD, k, c)
+    film_fields(u, X, Y, cosp, sinp, gap0, beta_bar, width, content_scale, layer_gap, darcy, H, P, dP, C, D, dD, k, c)
     sharp_fixed_cells(fv.cells.free, fv.cells.u_fixed, beta_bar, P, dP, C, D, dD)
 
 
@@ -187,7 +190,7 @@ def stencil_jacobian(u, X, Y, switch, geo, fields, extras, fv, data, speed_ratio
 def stencil_flux_jacobian(switch, geo, fields, extras, fv, data, speed_ratio):
     """:func:`stencil_jacobian` on the cell fields already in ``fields`` (:func:`state_fields`)."""
     layer_gap, darcy = switch.layer_gap, switch.darcy
-    cosp, sinp, area = geo
+    cosp, sinp, area = geo.cosp, geo.sinp, geo.area
     H, P, dP, C, D, dD, k, c, zero, _ = fields
     dk_dq, dc_dq, no_dq, pos_row, pos_col, indices, scale = extras
     faces, boundary, cells, face_k, bulk = fv
@@ -209,7 +212,7 @@ def stencil_flux_jacobian(switch, geo, fields, extras, fv, data, speed_ratio):
 def ode_rhs(tau, y, out, switch, rotor, geo, fields, fv):
     """ODE right-hand side ``y' = f(tau, y)`` of the film + rotor (module docstring)."""
     kappa, wbar, ebar, sym = rotor
-    cosp, sinp, area = geo
+    cosp, sinp, area = geo.cosp, geo.sinp, geo.area
     H, P, dP, C, D, dD, k, c, zero, R = fields
     free = fv.cells.free
     n = free.size
@@ -236,7 +239,7 @@ def ode_jacobian(tau, y, data, f, switch, rotor, geo, fields, extras, fv):
         df_VX/du_j = kappa sym P'(u_j) cos(phi_j) A_j,  df_X/dVX = 1
     """
     kappa, wbar, ebar, sym = rotor
-    cosp, sinp, area = geo
+    cosp, sinp, area = geo.cosp, geo.sinp, geo.area
     H, P, dP, C, D, dD, k, c, zero, R = fields
     dk_dq, dc_dq, no_dq, pos_row, pos_col, indices, scale = extras
     free, u_fixed, pos_c = fv.cells
@@ -266,7 +269,7 @@ def ode_jacobian(tau, y, data, f, switch, rotor, geo, fields, extras, fv):
 def dae_residual(tau, y, yp, out, switch, rotor, geo, fields, fv):
     """IDA residual ``F(tau, y, y')`` of the film + rotor (module docstring); groove cells: ``u' = 0``."""
     kappa, wbar, ebar, sym = rotor
-    cosp, sinp, area = geo
+    cosp, sinp, area = geo.cosp, geo.sinp, geo.area
     H, P, dP, C, D, dD, k, c, zero, R = fields
     free = fv.cells.free
     n = free.size
@@ -294,7 +297,7 @@ def dae_jacobian(tau, y, yp, cj, data, switch, rotor, geo, fields, extras, fv):
         dF_VX/du_j = -kappa sym P'(u_j) cos(phi_j) A_j,  dF_X/dX = cj,  dF_X/dVX = -1,  dF_VX/dVX = cj
     """
     kappa, wbar, ebar, sym = rotor
-    cosp, sinp, area = geo
+    cosp, sinp, area = geo.cosp, geo.sinp, geo.area
     H, P, dP, C, D, dD, k, c, zero, R = fields
     dk_dq, dc_dq, no_dq, pos_row, pos_col, indices, scale = extras
     free, u_fixed, pos_c = fv.cells
@@ -331,7 +334,7 @@ def film_residual(u, X, Y, VX, VY, rate, C_ref, out, switch, geo, fields, fv):
     backward-Euler step of length dtau from the content ``theta_ref`` (Elrod's time discretisation,
     used per RK4 stage, and the pseudo-time steps of the steady solver).
     """
-    cosp, sinp, area = geo
+    cosp, sinp, area = geo.cosp, geo.sinp, geo.area
     H, P, dP, C, D, dD, k, c, zero, R = fields
     free = fv.cells.free
     stencil_residual(u, X, Y, switch, geo, fields, fv, out, 1.0)
@@ -344,7 +347,7 @@ def film_residual(u, X, Y, VX, VY, rate, C_ref, out, switch, geo, fields, fv):
 def film_jacobian(u, X, Y, VX, VY, rate, data, switch, geo, fields, extras, fv):
     """CSC data of ``dG/du`` for :func:`film_residual`, and -- if the operator has 4 extra unknowns --
     ``dG/dX, dG/dY`` (rate = 0 only) and ``dG/dVX, dG/dVY = A theta (cos, sin)`` in the extra columns."""
-    cosp, sinp, area = geo
+    cosp, sinp, area = geo.cosp, geo.sinp, geo.area
     H, P, dP, C, D, dD, k, c, zero, R = fields
     dk_dq, dc_dq, no_dq, pos_row, pos_col, indices, scale = extras
     free, u_fixed, pos_c = fv.cells
@@ -382,11 +385,11 @@ H_FLOOR = 1e-9  # film thickness / C below which theta = m / H is not divided fu
 def content_universal(y, switch, geo, free, u_fixed, theta, u):
     """theta = m / H and the universal variable u = C^-1(theta) of the free cells (fixed cells: u_fixed)."""
     beta_bar, width, content_scale, layer_gap, darcy = switch
-    cosp, sinp, area = geo
+    cosp, sinp, area, gap0 = geo
     n = free.size
     X, Y = y[n], y[n + 1]
     for i in range(n):
-        h = 1.0 + X * cosp[i] + Y * sinp[i]
+        h = gap0[i] + X * cosp[i] + Y * sinp[i]
         theta[i] = y[i] / (h if h > H_FLOOR else H_FLOOR)
     elrod_inverse(theta, width, content_scale, beta_bar, u)
     for i in range(n):
@@ -397,7 +400,7 @@ def content_universal(y, switch, geo, free, u_fixed, theta, u):
 @njit(cache=True)
 def _content_film(y, switch, geo, fields, fv, work, sym):
     """The film of a content state: u = C^-1(m / H), the stencil residual R (in ``fields``) and the force."""
-    cosp, sinp, area = geo
+    cosp, sinp, area = geo.cosp, geo.sinp, geo.area
     P, R = fields.P, fields.R
     free, u_fixed = fv.cells.free, fv.cells.u_fixed
     u, theta = work.u, work.theta
@@ -453,7 +456,7 @@ def content_jacobian(tau, y, yp, cj, data, switch, rotor, geo, fields, extras, f
         dF_VX/dm_j = -kappa sym P'_j A_j cos(phi_j) E_j,  dF_VX/dX = -kappa sym sum_j P'_j A_j cos(phi_j) du_j/dX
     """
     kappa, wbar, ebar, sym = rotor
-    cosp, sinp, area = geo
+    cosp, sinp, area = geo.cosp, geo.sinp, geo.area
     H, P, dP, C, D, dD, k, c, zero, R = fields
     dk_dq, dc_dq, no_dq, pos_row, pos_col, indices, scale = extras
     free, u_fixed, pos_c = fv.cells

@@ -93,6 +93,10 @@ class JournalOrbit:
             raise ValueError("JournalOrbit does not support roughness = Roughness(...) yet: the orbit integrates the "
                              "smooth film; allowed: roughness=None (a rough bearing serves steady_state, equilibrium, "
                              "coefficients and stribeck_curve)")
+        if getattr(bearing, "misalignment", (0.0, 0.0)) != (0.0, 0.0):
+            raise ValueError(f"JournalOrbit does not support misalignment = {bearing.misalignment} [rad] yet: the "
+                             "orbit's touch detection and minimum film are the aligned journal's; allowed: (0, 0) "
+                             "(a misaligned bearing serves steady_state, equilibrium and coefficients)")
         self.bearing = bearing
         self.rotor_mass = check_positive("rotor_mass", rotor_mass, "kg")
         self.unbalance = check_range("unbalance", unbalance, "m", 0.0, bearing.clearance, high_open=True,

@@ -40,6 +40,11 @@ class FilmState(SteadyResult):
     delivers, ``feed_inflow`` [m^3/s] the flow each feed sends into the film, ``side_leakage`` [m^3/s] the outflow
     at the ends z = -L/2 and +L/2; the design-chart variables ``flow_variable`` = Q / (R C N L) (Q the feeds' total
     inflow, N [rev/s]) and ``side_flow_ratio`` = Q_s / Q (Q_s the leakage of both ends).
+
+    Tilt (:mod:`transient.models.journal.tilt`): ``tilt`` [rad] the journal's tilt relative to the bush (about x,
+    about y), ``moment`` [N m] the film's moment on the journal about the bearing centre (about x, about y; zero on a
+    half bearing, whose mirror halves cancel), ``min_film`` the smallest gap over the whole bearing (at an end when
+    tilted); ``eccentricity_ratio`` and ``position`` are the journal's at the mid-plane.
     """
 
     time_axis = None
@@ -75,6 +80,8 @@ class FilmState(SteadyResult):
     contact_load: float = quantity("N", 0.0)
     contact_normal_load: float = quantity("N", 0.0)
     contact_pressure: np.ndarray | None = quantity("Pa", None, repr=False)
+    moment: tuple[float, float] = quantity("N m", (0.0, 0.0))
+    tilt: tuple[float, float] = quantity("rad", (0.0, 0.0))
     message: str = field(default="converged", kw_only=True)
 
     @property

@@ -87,7 +87,7 @@ class ReynoldsFilm(FilmBlock):
         """H, k, c (:func:`~transient.models.journal.kernels.conductances`, boundary layers included) and (if
         the operator has extras) their position derivatives."""
         gap, darcy = self.layers
-        conductances(X, Y, self.cosp, self.sinp, gap, darcy, self.H, self.k, self.c)
+        conductances(X, Y, self.cosp, self.sinp, self.gap0, gap, darcy, self.H, self.k, self.c)
         if self.op.n_extra >= 2:
             position_derivatives(self.H, self.cosp, self.sinp, gap, darcy, self.dk_dq, self.dc_dq)
         if self.bulk is not None:  # the Poiseuille flux is the Gecim bulk's (gecim_film)
@@ -208,6 +208,17 @@ class ReynoldsFilm(FilmBlock):
         gy = self.sym * self.sinp * self.area
         dF = np.vstack([gx @ du, gy @ du])
         return F, dF[:, :2], dF[:, 2:]
+
+    def linear_response(self, u, G_u, G_q):
+        """``du`` of the steady film ``u`` for the columns ``G_q``, on its active set (as :meth:`force_sensitivity`):
+        the pressurised free cells solve ``G_u du = -G_q``, the others keep their pressure."""
+        inner = (self.free & (u > 0.0)).astype(float)
+        M = (sp.diags(inner) @ G_u.tocsr() + sp.diags(1.0 - inner)).tocsc()
+        return -spla.splu(M).solve(inner[:, None] * G_q)
+
+    def pressure_slope(self, u):
+        """``dP/du = 1``: the state is the pressure."""
+        return self.ones
 
     def mass_flows(self, u, X, Y):
         raise NotImplementedError("mass_flows: the Reynolds-condition film is not mass-conserving "

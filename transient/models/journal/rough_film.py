@@ -90,7 +90,7 @@ class RoughFilm(Film):
 
     def contact(self, X, Y):
         """Asperity pressure [Pa] of every cell and its slope d p_a / dH [Pa] at the journal position (X, Y)."""
-        H = 1.0 + X * self.cosp + Y * self.sinp
+        H = self.gap0 + X * self.cosp + Y * self.sinp
         return contact_pressure(H, self.roughness, self.scales.clearance)
 
     def contact_force(self, X, Y):

@@ -79,11 +79,14 @@ class Switch(NamedTuple):
 
 
 class CellGeometry(NamedTuple):
-    """Per cell: ``cos phi``, ``sin phi`` and the area (in R^2)."""
+    """Per cell: ``cos phi``, ``sin phi``, the area (in R^2) and the gap of the centred journal ``gap0`` (in C: 1 for
+    an aligned journal; ``1 + zbar (a cos phi + b sin phi)`` for a tilted one, :mod:`transient.models.journal.tilt`),
+    so that the film thickness is ``H = gap0 + X cos phi + Y sin phi``."""
 
     cosp: np.ndarray
     sinp: np.ndarray
     area: np.ndarray
+    gap0: np.ndarray
 
 
 class Cells(NamedTuple):
@@ -168,9 +171,9 @@ class Rotor(NamedTuple):
 
 
 def cell_geometry(grid) -> CellGeometry:
-    """The :class:`CellGeometry` of a bearing's grid (``phi`` = the cell centres along x)."""
+    """The :class:`CellGeometry` of a bearing's grid (``phi`` = the cell centres along x), journal aligned."""
     return CellGeometry(np.ascontiguousarray(np.cos(grid.xc)), np.ascontiguousarray(np.sin(grid.xc)),
-                        np.ascontiguousarray(grid.area))
+                        np.ascontiguousarray(grid.area), np.ones(grid.n))
 
 
 def operator_tables(op, bulk: BulkFaces | None) -> Operator:

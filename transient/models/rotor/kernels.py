@@ -23,7 +23,7 @@ from transient.models.journal.kernels import film_force, stencil_jacobian, stenc
 @njit(cache=True)
 def block_residual(u, up, X, Y, Xd, Yd, s, out, switch, geo, fields, fv, sym):
     """The film block's residual (module docstring) into ``out``; returns the film force ``(Fx, Fy)``."""
-    cosp, sinp, area = geo
+    cosp, sinp, area = geo.cosp, geo.sinp, geo.area
     H, P, dP, C, D, dD, k, c, zero, R = fields
     free = fv.cells.free
     stencil_residual(u, X, Y, switch, geo, fields, fv, R, s)
@@ -40,7 +40,7 @@ def block_jacobian(u, up, X, Y, Xd, Yd, s, cj, local, switch, geo, fields, extra
     """``dF/du + cj dF/du'`` of :func:`block_residual` in the film's own arrow pattern (``local``): the cell
     block, ``dF_i/dX`` and ``dF_i/dY`` (``cj`` terms of ``X'``, ``Y'`` included) in extra columns 0 and 1, and
     the force derivatives ``dFx/du_j``, ``dFy/du_j`` in extra rows 2 and 3."""
-    cosp, sinp, area = geo
+    cosp, sinp, area = geo.cosp, geo.sinp, geo.area
     H, P, dP, C, D, dD, k, c, zero, R = fields
     pos_row, pos_col = extras.pos_row, extras.pos_col
     free, u_fixed, pos_c = fv.cells

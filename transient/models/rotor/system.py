@@ -102,6 +102,10 @@ class RotorBearingSystem:
                 raise ValueError(f"bearings[{node!r}] cavitation = {b.cavitation!r}; allowed: \"elrod\" (the rotor "
                                  "system couples the mass-conserving films; the Reynolds-condition film serves the "
                                  "single bearing's steady and linear analyses)")
+            if getattr(b, "misalignment", (0.0, 0.0)) != (0.0, 0.0):
+                raise ValueError(f"bearings[{node!r}] misalignment = {b.misalignment} [rad]; allowed: (0, 0) (the rotor "
+                                 "system's films do not take the shaft's tilts; a misaligned bearing serves the single "
+                                 "bearing's steady and linear analyses)")
             if getattr(b, "roughness", None) is not None:
                 raise ValueError(f"bearings[{node!r}] roughness = Roughness(...); allowed: None (the rotor system's "
                                  "films are smooth; a rough bearing serves the single bearing's steady analyses)")
