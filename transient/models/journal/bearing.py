@@ -28,6 +28,9 @@ from transient.models.journal.reynolds_film import ReynoldsFilm
 from transient.models.journal.rough_film import RoughFilm
 from transient.models.journal.roughness import Roughness
 from transient.models.journal.scales import film_scales
+from transient.models.journal import thd
+from transient.models.journal.thermal_settings import ThermalFilm
+from transient.models.journal.viscous_film import ViscousFilm
 from transient.units import rpm_to_rad_s as omega  # the journal's name for it (public: models.journal.omega)
 
 #: The cavitation models of :class:`JournalBearing` (``cavitation=``).
@@ -150,12 +153,20 @@ class JournalBearing:
         film pressure (:mod:`transient.models.journal.rough_film`) in ``steady_state``, ``equilibrium`` and
         ``coefficients``; the friction torque adds the boundary friction of the contacts. Newtonian bulk without
         boundary layers, ``cavitation="elrod"``. Default None: smooth surfaces.
+    thermal : :class:`~transient.models.journal.thermal_settings.ThermalFilm` -- a thermal (THD) film: the viscosity
+        of every cell at its temperature, the temperatures from the film-averaged energy equation
+        (:mod:`transient.models.journal.thd`) in ``steady_state``, ``equilibrium``, ``coefficients`` (at frozen
+        temperatures) and ``stability_threshold``; the result carries the temperatures and heat flows. ``viscosity``
+        may then be None: the oil's viscosity at the supply temperature (it is only the pressure unit's reference).
+        Elrod film, Newtonian bulk without boundary layers, smooth surfaces; steady computations only (the orbit and
+        the rotor system refuse it). Default None: the isothermal film of viscosity ``viscosity``.
     """
 
-    def __init__(self, diameter, length, clearance, viscosity, bulk_modulus=1e9, supply_pressure=101325.0,
+    def __init__(self, diameter, length, clearance, viscosity=None, bulk_modulus=1e9, supply_pressure=101325.0,
                  groove: Groove | None = Groove(), grid=(151, 21), cavitation_pressure=0.0, ambient_pressure=0.0,
                  switch_width=None, switch_content_width=1e-2, symmetric=True, cavitation="elrod", rheology=None,
-                 layers: BoundaryLayers | None = None, roughness: Roughness | None = None):
+                 layers: BoundaryLayers | None = None, roughness: Roughness | None = None,
+                 thermal: ThermalFilm | None = None):
         if not isinstance(cavitation, str) or cavitation not in CAVITATION_MODES:
             raise ValueError(f"cavitation must be one of {CAVITATION_MODES}, got cavitation={cavitation!r}")
         self.cavitation = cavitation
@@ -165,7 +176,14 @@ class JournalBearing:
                                   "limit, not a journal bearing)")
         self.clearance = check_range("clearance", clearance, "m", 1e-5 * self.diameter, 0.1 * self.diameter,
                                      why="(C/D from 1e-5 to 0.1: a journal bearing's radial clearance)")
-        self.viscosity = check_range("viscosity", viscosity, "Pa s", 1e-6, 1e4)
+        if thermal is not None and not isinstance(thermal, ThermalFilm):
+            raise TypeError(f"thermal must be a ThermalFilm or None, got {type(thermal).__name__}")
+        self.thermal = thermal
+        if viscosity is None and thermal is None:
+            raise ValueError("viscosity = None [Pa s]; allowed: a viscosity in [1e-06, 10000] Pa s (None only with "
+                             "thermal=ThermalFilm(...): then its viscosity at the supply temperature)")
+        self.viscosity = check_range("viscosity", thermal.viscosity(thermal.supply_temperature) if viscosity is None
+                                     else viscosity, "Pa s", 1e-6, 1e4)
         self.bulk_modulus = check_range("bulk_modulus", bulk_modulus, "Pa", 1e6, 1e15,
                                         why="(oils ~1e9; 1e12 and above is the incompressible limit)")
         if rheology is not None and not isinstance(rheology, (Newtonian, Gecim)):
@@ -180,6 +198,7 @@ class JournalBearing:
                         why="(two layers thinner than the clearance: the bulk must not vanish)")
         self.layers = layers
         self.roughness = self._check_roughness(roughness)
+        self._check_thermal()
         self.flow_law = flow_law(self.viscosity, self.rheology, layers)  # the one LayeredFilm of this bearing
         self.cavitation_pressure = check_range("cavitation_pressure", cavitation_pressure, "Pa", 0.0, 1e9,
                                                why="(absolute pressure)")
@@ -229,6 +248,15 @@ class JournalBearing:
         check_range("roughness sigma", roughness.sigma, "m", 0.0, 0.5 * self.clearance, low_open=True,
                     why="(the composite roughness must be well below the clearance)")
         return roughness
+
+    def _check_thermal(self):
+        """A thermal film is the Elrod film of a smooth Newtonian bulk without boundary layers."""
+        if self.thermal is not None and (self.cavitation != "elrod" or self.shear_thinning or self.layers is not None
+                                         or self.roughness is not None):
+            raise ValueError(f"thermal = ThermalFilm(...) with cavitation = {self.cavitation!r}, rheology = "
+                             f"{type(self.rheology).__name__}, layers = {self.layers!r}, roughness = "
+                             f"{self.roughness!r}: the thermal film is the Elrod film of a smooth Newtonian bulk; "
+                             "allowed: cavitation=\"elrod\", rheology=None, layers=None, roughness=None")
 
     def _check_ring_supply(self):
         """Circumferential grooves alone at the cavitation pressure (within 1 Pa), with the ends there too, supply no
@@ -290,7 +318,8 @@ class JournalBearing:
                                                                  alpha=self.layers.alpha),
                     rheology=None if not self.shear_thinning else dict(
                         kappa=self.rheology.kappa, viscosity_ratio=self.rheology.viscosity_ratio),
-                    **({} if self.roughness is None else dict(roughness=self.roughness.parameters())))
+                    **({} if self.roughness is None else dict(roughness=self.roughness.parameters())),
+                    **({} if self.thermal is None else dict(thermal=self.thermal.parameters())))
 
     def layer_groups(self) -> tuple[float, float]:
         """The boundary layers in the film's scales: ``(2 delta / C, 3 alpha^2 mu (1/mu_a + 1/mu_b) / C^2)``
@@ -321,6 +350,8 @@ class JournalBearing:
         (Elrod) or a :class:`~transient.models.journal.reynolds_film.ReynoldsFilm` (``cavitation="reynolds"``)."""
         if self.roughness is not None:
             return RoughFilm(self.grid, film_scales(self, speed_rpm), self.flow_law, self.roughness, n_extra)
+        if self.thermal is not None:
+            return ViscousFilm(self.grid, film_scales(self, speed_rpm), self.flow_law, n_extra)
         kind = ReynoldsFilm if self.cavitation == "reynolds" else Film
         return kind(self.grid, film_scales(self, speed_rpm), self.flow_law, n_extra)
 
@@ -343,8 +374,12 @@ class JournalBearing:
         a = np.radians(position_angle_deg)
         self._check_supplied()
         f = self.film(speed_rpm)
-        u, its, _ = self.film_solve(f, eps * np.cos(a), eps * np.sin(a))
-        return _warn_validity(f.state(u, eps * np.cos(a), eps * np.sin(a), its))
+        X, Y = eps * np.cos(a), eps * np.sin(a)
+        if self.thermal is not None:
+            u, its, balance, alternations = thd.steady(self, f, X, Y)
+            return _warn_validity(thd.thermal_state(self, f, u, X, Y, its, balance, alternations))
+        u, its, _ = self.film_solve(f, X, Y)
+        return _warn_validity(f.state(u, X, Y, its))
 
     def coarser(self) -> "JournalBearing":
         """This bearing on a grid of half the circumferential cells (rounded up) and the same axial cells: the
@@ -377,6 +412,8 @@ class JournalBearing:
         """Static equilibrium under ``load`` [N] (in +x): 2-D Newton on the journal position with the
         exact derivative of the discrete film force (implicit differentiation of the film equations)."""
         f, u, q, it, _ = self._equilibrium(load, speed_rpm, tol, max_iter)
+        if self.thermal is not None:
+            return _warn_validity(thd.thermal_state(self, f, u, q[0], q[1], it, f.energy_balance, f.alternations))
         return _warn_validity(f.state(u, q[0], q[1], it))
 
     def coefficients(self, load, speed_rpm) -> tuple[np.ndarray, np.ndarray]:
@@ -397,6 +434,8 @@ class JournalBearing:
         self._check_supplied()
         f = self.film(speed_rpm)
         wbar = W / f.force_scale
+        if self.thermal is not None:
+            return self._thermal_equilibrium(f, W, speed_rpm, tol, max_iter, start)
         q = np.array([0.3, 0.3] if start is None else start, dtype=float)  # eccentric start in the loaded quadrant
         u = None
         for it in range(max_iter):
@@ -415,6 +454,17 @@ class JournalBearing:
         raise NoEquilibriumError(f"equilibrium(load={W} N, speed_rpm={speed_rpm}) did not converge in {max_iter} "
                            f"iterations; last eccentricity ratio {np.hypot(*q):.4f}, force residual "
                            f"{np.max(np.abs(r)) * f.force_scale:.3e} N")
+
+    def _thermal_equilibrium(self, f, load, speed_rpm, tol, max_iter, start):
+        """:meth:`_equilibrium` of a thermal film (:func:`transient.models.journal.thd.equilibrium`); the film keeps
+        its energy balance and the number of film solves (``f.energy_balance``, ``f.alternations``)."""
+        out = thd.equilibrium(self, f, load / f.force_scale, tol, max_iter, start)
+        if out is None:
+            raise NoEquilibriumError(f"equilibrium(load={load} N, speed_rpm={speed_rpm}) of the thermal film did not "
+                                     f"converge in {max_iter + self.thermal.max_iterations} film solves")
+        u, q, it, sens, f.energy_balance = out
+        f.alternations = it + 1
+        return f, u, q, it, sens
 
     def _continued_equilibrium(self, load, speed_rpm, tol, max_iter):
         """The equilibrium of a rough bearing by continuation in speed, when Newton from the default start fails

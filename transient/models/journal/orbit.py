@@ -93,6 +93,10 @@ class JournalOrbit:
             raise ValueError("JournalOrbit does not support roughness = Roughness(...) yet: the orbit integrates the "
                              "smooth film; allowed: roughness=None (a rough bearing serves steady_state, equilibrium, "
                              "coefficients and stribeck_curve)")
+        if getattr(bearing, "thermal", None) is not None:
+            raise ValueError("JournalOrbit does not support thermal = ThermalFilm(...) yet: the orbit integrates the "
+                             "isothermal film; allowed: thermal=None (a thermal bearing serves steady_state, "
+                             "equilibrium, coefficients and stability_threshold)")
         self.bearing = bearing
         self.rotor_mass = check_positive("rotor_mass", rotor_mass, "kg")
         self.unbalance = check_range("unbalance", unbalance, "m", 0.0, bearing.clearance, high_open=True,

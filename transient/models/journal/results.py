@@ -40,6 +40,14 @@ class FilmState(SteadyResult):
     delivers, ``feed_inflow`` [m^3/s] the flow each feed sends into the film, ``side_leakage`` [m^3/s] the outflow
     at the ends z = -L/2 and +L/2; the design-chart variables ``flow_variable`` = Q / (R C N L) (Q the feeds' total
     inflow, N [rev/s]) and ``side_flow_ratio`` = Q_s / Q (Q_s the leakage of both ends).
+
+    Thermal films (``JournalBearing(thermal=ThermalFilm(...))``, :mod:`transient.models.journal.thd`):
+    ``temperature`` [K] and ``viscosity_field`` [Pa s] per cell, ``max_temperature`` [K], ``mixing_temperature``
+    [K] of each feed, ``outlet_temperature`` [K] (mixed mean of the side leakage), ``dissipation`` [W] (the film's
+    viscous dissipation), ``heat_convected`` [W] (carried away by the oil above the supply temperature: side
+    leakage and the discharged recirculated oil), ``heat_conducted`` [W] (to the walls) and ``thermal_iterations``
+    (film-temperature alternations); the friction fields and ``power_loss`` at the cells' viscosities. None or NaN
+    for an isothermal film.
     """
 
     time_axis = None
@@ -75,7 +83,20 @@ class FilmState(SteadyResult):
     contact_load: float = quantity("N", 0.0)
     contact_normal_load: float = quantity("N", 0.0)
     contact_pressure: np.ndarray | None = quantity("Pa", None, repr=False)
+    temperature: np.ndarray | None = quantity("K", None, repr=False)
+    viscosity_field: np.ndarray | None = quantity("Pa s", None, repr=False)
+    mixing_temperature: np.ndarray | None = quantity("K", None)
+    outlet_temperature: float = quantity("K", float("nan"))
+    dissipation: float = quantity("W", float("nan"))
+    heat_convected: float = quantity("W", float("nan"))
+    heat_conducted: float = quantity("W", float("nan"))
+    thermal_iterations: int = 0
     message: str = field(default="converged", kw_only=True)
+
+    @property
+    def max_temperature(self) -> float:
+        """Highest film temperature [K] (NaN for an isothermal film)."""
+        return float("nan") if self.temperature is None else float(self.temperature.max())
 
     @property
     def max_pressure(self) -> float:
