@@ -21,6 +21,8 @@ from transient.physics.lubricant import TEMPERATURE_RANGE_K
 
 #: Alternations :func:`anderson` combines (measured in docs/validation.md, "Thermal films").
 ANDERSON_DEPTH = 4
+#: Weight of the journal position against the temperatures in the equilibrium's mixing [K per unit of C].
+POSITION_KELVIN = 100.0
 
 
 class ThermalConvergenceError(RuntimeError):
@@ -31,7 +33,7 @@ def fluidity(film, thermal, temperature, reference_viscosity, pressure=True):
     """``mu_ref / mu(T_i, p_i)`` per cell: the cells' viscosities at their temperatures and, for a law with a
     pressure-viscosity coefficient and ``pressure=True``, at the film's last pressures above the cavitation
     pressure (``film.P``)."""
-    law = thermal.viscosity_law
+    law = thermal.law
     p = film.p0 * np.maximum(film.P, 0.0) if pressure and law.pressure_viscosity > 0.0 else 0.0
     return reference_viscosity / thermal.viscosity(temperature, p)
 
@@ -93,30 +95,42 @@ def steady(bearing, film, X, Y):
 
 def equilibrium(bearing, film, wbar, tol, max_iter, start):
     """The THD equilibrium under the dimensionless load ``wbar``: ``(u, (X, Y), iterations, (dF/dq, dF/dv),
-    EnergyBalance)``, or None if it did not converge; Newton steps on the position at frozen temperatures alternate
-    with the energy equation (``max_iter`` plus ``ThermalFilm.max_iterations`` film solves at most)."""
+    EnergyBalance)``, or None if it did not converge. One fixed-point map of position and temperatures: the film at
+    the position and the temperatures' viscosities, then the Newton step on the position (force sensitivities at
+    frozen temperatures) and the temperatures of that film; :func:`anderson` over both (the position in units of
+    ``POSITION_KELVIN`` [K per C], so that both weigh alike), ``max_iter`` plus ``ThermalFilm.max_iterations`` film
+    solves at most."""
     th = bearing.thermal
     energy = EnergyEquation(film, th)
     T = _start(film, th, bearing.viscosity)
     q = np.array([0.3, 0.3] if start is None else start, dtype=float)
+    reach = bearing._reach * bearing.max_eccentricity_ratio
+    low = np.concatenate([[-np.inf, -np.inf], np.full(film.n, min(th.supply_temperature, th.wall()[2]))])
+    high = np.concatenate([[np.inf, np.inf], np.full(film.n, TEMPERATURE_RANGE_K[1])])
+    inputs, outputs = [], []
     u = None
     for it in range(max_iter + th.max_iterations):
         u = bearing.film_solve(film, q[0], q[1])[0] if u is None else film.solve(q[0], q[1], u0=u, chord=True)[0]
         F, dF_dq, dF_dv = film.force_sensitivity(u, q[0], q[1])
         balance = energy.solve(u, q[0], q[1])
         change = float(np.max(np.abs(balance.temperature - T)))
-        T = balance.temperature
         r = np.array([F[0] + wbar, F[1]])
-        force_ok = np.max(np.abs(r)) <= tol * max(wbar, 1e-300)
-        if force_ok and change <= th.tolerance:
+        if np.max(np.abs(r)) <= tol * max(wbar, 1e-300) and change <= th.tolerance:
             return u, q, it, (dF_dq, dF_dv), balance
+        dq = -np.linalg.solve(dF_dq, r)
+        lam = 1.0  # keep the journal inside the clearance
+        while np.hypot(*(q + lam * dq)) >= reach:
+            lam *= 0.5
+        x = np.concatenate([q * POSITION_KELVIN, T])
+        g = np.concatenate([(q + lam * dq) * POSITION_KELVIN, balance.temperature])
+        inputs, outputs = (inputs + [x])[-ANDERSON_DEPTH:], (outputs + [g])[-ANDERSON_DEPTH:]
+        nxt = anderson(inputs, outputs, low, high)
+        q_next = nxt[:2] / POSITION_KELVIN
+        if np.hypot(*q_next) >= reach:  # mixing left the clearance: the plain step, and start the mixing afresh
+            nxt, inputs, outputs = g, [], []
+            q_next = nxt[:2] / POSITION_KELVIN
+        q, T = q_next, nxt[2:]
         update_fluidity(film, th, T, bearing.viscosity)
-        if not force_ok:
-            dq = -np.linalg.solve(dF_dq, r)
-            lam = 1.0  # keep the journal inside the clearance
-            while np.hypot(*(q + lam * dq)) >= bearing._reach * bearing.max_eccentricity_ratio:
-                lam *= 0.5
-            q = q + lam * dq
     return None
 
 

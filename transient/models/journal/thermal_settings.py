@@ -24,6 +24,7 @@ with fresh supply oil to make up the feed's inflow ``Q_in``::
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cached_property
 
 from transient.checks import check_instance, check_int, check_items, check_positive, check_range
 from transient.physics.lubricant import (TEMPERATURE_RANGE_K, ExponentialViscosity, ThermalProperties,
@@ -99,7 +100,7 @@ class ThermalFilm:
             check_instance("viscosity_law", self.viscosity_law, (ExponentialViscosity, VogelViscosity),
                            "ExponentialViscosity(...) or VogelViscosity(...)")
         else:
-            object.__setattr__(self, "viscosity_law", ExponentialViscosity.two_point(*self._pairs()))
+            ExponentialViscosity.two_point(*self._pairs())
         for name in ("density", "heat_capacity"):
             if getattr(self, name) is None:
                 raise ValueError(f"{name} = None; allowed: the oil's {name.replace('_', ' ')} "
@@ -117,12 +118,17 @@ class ThermalFilm:
         check_int("max_iterations", self.max_iterations, "-", 1, 10000)
         self.viscosity(self.supply_temperature)  # a Vogel law must hold at the supply temperature
 
+    @cached_property
+    def law(self):
+        """The viscosity law: ``viscosity_law``, or the exponential law through ``viscosity_at``."""
+        return self.viscosity_law or ExponentialViscosity.two_point(*self._pairs())
+
     def _pairs(self):
         return check_items("viscosity_at", self.viscosity_at, "two (temperature [K], viscosity [Pa s]) pairs", 2)
 
     def viscosity(self, temperature, pressure=0.0):
         """The oil's viscosity [Pa s] at ``temperature`` [K] (and gauge ``pressure`` [Pa])."""
-        return self.viscosity_law.at(temperature, pressure)
+        return self.law.at(temperature, pressure)
 
     def wall(self) -> tuple[str, float, float]:
         """The wall as ``(kind, coefficient, temperature)``: ``("adiabatic", 0, T_supply)``, ``("bush", h_b, T_b)``
@@ -136,7 +142,7 @@ class ThermalFilm:
 
     def parameters(self) -> dict:
         """Every parameter that changes the thermal film (SI, K)."""
-        law = self.viscosity_law
+        law = self.law
         kind, coefficient, wall_temperature = self.wall()
         return dict(supply_temperature=self.supply_temperature, viscosity_law=type(law).__name__,
                     viscosity_constants=list(law.kernel_args()[1:]), pressure_viscosity=law.pressure_viscosity,
