@@ -77,9 +77,9 @@ def test_no_overshoot_on_a_coarse_grid():
     wall, Tw = E.wall_coefficients()
     q_in, q_rec = np.zeros(1), np.zeros(1)
     from transient.models.journal.thermal import feed_totals
-    q_in, q_rec = feed_totals(E.free, E.feed, E.n_feeds, f.fv.faces, E.q)
+    q_in, q_rec = feed_totals(E.free, E.feed, E.n_feeds, E.streams, E.stream_flow)
     carry = np.minimum(b.thermal.mixing, q_in / q_rec)
-    m = energy_system(E.free, E.feed, E.n_feeds, f.fv.faces, f.fv.boundary, E.q, E.qb, np.zeros(f.n),
+    m = energy_system(E.free, E.feed, E.n_feeds, E.streams, f.fv.boundary, E.stream_flow, E.qb, np.zeros(f.n),
                       wall / E.heat_unit, Tw, 323.15, carry, q_in, q_rec, E.rows, E.cols, E.vals, E.rhs)
     import scipy.sparse as sp
     import scipy.sparse.linalg as spla
@@ -98,7 +98,7 @@ def test_mixing_coefficient_sets_the_feed_temperature():
     E = EnergyEquation(f, b.thermal)
     E.solve(u, 0.6, 0.0)
     from transient.models.journal.thermal import feed_totals
-    q_in, _ = feed_totals(E.free, E.feed, E.n_feeds, f.fv.faces, E.q)
+    q_in, _ = feed_totals(E.free, E.feed, E.n_feeds, E.streams, E.stream_flow)
     groove_heat = E.power_unit * E.source[~E.free].sum()
     rise = groove_heat / (E.heat_unit * q_in[0])
     assert balance.mixing_temperature[0] == pytest.approx(OIL.supply_temperature + rise, abs=1e-9)

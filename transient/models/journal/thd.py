@@ -21,6 +21,10 @@ from transient.physics.lubricant import TEMPERATURE_RANGE_K
 
 #: Alternations :func:`anderson` combines (measured in docs/validation.md, "Thermal films").
 ANDERSON_DEPTH = 4
+#: Largest change of a cell's temperature from one alternation to the next [K]: the first temperatures, from the
+#: film at the supply viscosity, overshoot (157 K above the converged 380 K at e/C = 0.9), and a film solved at
+#: viscosities that far off takes the chord Newton out of its range (measured in docs/validation.md).
+MAX_STEP_K = 40.0
 #: Weight of the journal position against the temperatures in the equilibrium's mixing [K per unit of C].
 POSITION_KELVIN = 100.0
 
@@ -84,7 +88,7 @@ def steady(bearing, film, X, Y):
         if change <= th.tolerance:
             return u, its, balance, k + 1
         inputs, outputs = (inputs + [T])[-ANDERSON_DEPTH:], (outputs + [balance.temperature])[-ANDERSON_DEPTH:]
-        T = anderson(inputs, outputs, low, TEMPERATURE_RANGE_K[1])
+        T = np.clip(anderson(inputs, outputs, low, TEMPERATURE_RANGE_K[1]), T - MAX_STEP_K, T + MAX_STEP_K)
         if not update_fluidity(film, th, T, bearing.viscosity):  # an isoviscous oil: the film is the same
             return u, its, energy.solve(u, X, Y), k + 1
         u, n = film.solve(X, Y, u0=u, chord=True)

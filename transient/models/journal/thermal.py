@@ -7,9 +7,13 @@ feed. In each film cell the heat the oil carries out equals the heat made in it 
     sum_faces rho c_p Q_f T_up(f) = Phi_i - w_i (T_i - T_w)
 
 * ``Q_f``: the Elrod film's own face flows (:mod:`transient.models.journal.flows`: ``-k grad P + c theta``, so
-  in the cavitated zone only the liquid fraction theta carries heat), taken at the upstream cell's temperature
-  (first-order upwind: the matrix is an M-matrix, so the temperatures obey a discrete maximum principle -- no
-  overshoot on any grid). Oil entering through a bearing end comes in at the supply temperature;
+  in the cavitated zone only the liquid fraction theta carries heat) as two streams, the Couette part
+  ``c theta`` and the Poiseuille part ``-k grad P``, each at the temperature of its own upstream cell (first-order
+  upwind: the matrix is an M-matrix, so the temperatures obey a discrete maximum principle -- no overshoot on any
+  grid). Where the pressure drives oil back against the shaft's drag (upstream of a feed) the two streams run in
+  opposite directions and exchange heat; upwinding their net flow instead made the cells there flip between the
+  feed's and the recirculated oil's temperature from one film solve to the next (at e/C = 0.9 the alternation did
+  not settle). Oil entering through a bearing end comes in at the supply temperature;
 * ``Phi_i`` viscous dissipation: Couette ``min(theta, 1) mu_i U^2 / h_i A_i`` in the cell and Poiseuille
   ``Q_p,f (p_L - p_R)`` on each face (the pressure flow times its pressure drop; half to each of the face's
   cells, all of it on a bearing-end face to its cell) -- together the film's ``int mu (du/dy)^2 dy dA``;
@@ -75,7 +79,8 @@ def dissipation(P, C, H, fluidity, area, faces, boundary, qp, qb, out):
 
 @njit(cache=True)
 def feed_totals(free, feed, n_feeds, faces, q):
-    """Per feed: the flow it sends into the film ``Q_in`` and the flow reaching it from the film ``Q_rec``."""
+    """Per feed: the flow it sends into the film ``Q_in`` and the flow reaching it from the film ``Q_rec``, over the
+    streams ``q`` between the cells ``faces[0]``, ``faces[1]``."""
     fL, fR = faces[0], faces[1]
     q_in = np.zeros(n_feeds)
     q_rec = np.zeros(n_feeds)
@@ -96,7 +101,8 @@ def feed_totals(free, feed, n_feeds, faces, q):
 @njit(cache=True)
 def energy_system(free, feed, n_feeds, faces, boundary, q, qb, source, wall, T_wall, T_supply, carry, q_in, q_rec,
                   rows, cols, vals, rhs):
-    """The energy equations (module docstring) as triplets ``(rows, cols, vals)`` and right side ``rhs``; unknowns:
+    """The energy equations (module docstring) as triplets ``(rows, cols, vals)`` and right side ``rhs`` for the
+    streams ``q`` between the cells ``faces[0]`` and ``faces[1]`` and the end faces' outflows ``qb``; unknowns:
     the cells' temperatures, then one mixing temperature per feed (a feed's cells equal it). ``source``: the
     dissipation per cell and ``wall`` the wall coefficient per cell, both divided by ``rho c_p``; ``carry``: the
     carry-over fraction per feed. Returns the number of triplets."""
@@ -200,7 +206,10 @@ class EnergyEquation:
         self.free = film.op.free
         n_faces, n_bound = film.op.fL.size, film.op.bcell.size
         self.q, self.qp, self.qb = np.empty(n_faces), np.empty(n_faces), np.empty(n_bound)
-        size = 3 * n_faces + n_bound + 2 * film.n + self.n_feeds
+        # each face's two streams (Poiseuille, then Couette) between the same cells
+        self.streams = (np.concatenate([film.op.fL, film.op.fL]), np.concatenate([film.op.fR, film.op.fR]))
+        self.stream_flow = np.empty(2 * n_faces)
+        size = 6 * n_faces + n_bound + 2 * film.n + self.n_feeds
         self.rows, self.cols = np.empty(size, dtype=np.int64), np.empty(size, dtype=np.int64)
         self.vals, self.rhs = np.empty(size), np.empty(film.n + self.n_feeds)
         self.source = np.empty(film.n)
@@ -227,13 +236,16 @@ class EnergyEquation:
         face_flows(film.P, film.C, film.k, film.c, fv.faces, fv.boundary, self.q, self.qp, self.qb)
         dissipation(film.P, film.C, film.H, film.fluidity, film.area, fv.faces, fv.boundary, self.qp, self.qb,
                     self.source)
-        q_in, q_rec = feed_totals(self.free, self.feed, self.n_feeds, fv.faces, self.q)
+        nf = self.q.size
+        self.stream_flow[:nf] = self.qp
+        self.stream_flow[nf:] = self.q - self.qp
+        q_in, q_rec = feed_totals(self.free, self.feed, self.n_feeds, self.streams, self.stream_flow)
         with np.errstate(divide="ignore", invalid="ignore"):
             carry = np.where(q_rec > 0.0, np.minimum(th.mixing, q_in / np.where(q_rec > 0.0, q_rec, 1.0)), 0.0)
         wall, T_wall = self.wall_coefficients()
         Ts = th.supply_temperature
         scale = self.power_unit / self.heat_unit  # K C R^2 omega per p0 C R^2 omega
-        m = energy_system(self.free, self.feed, self.n_feeds, fv.faces, fv.boundary, self.q, self.qb,
+        m = energy_system(self.free, self.feed, self.n_feeds, self.streams, fv.boundary, self.stream_flow, self.qb,
                           self.source * scale, wall / self.heat_unit, T_wall, Ts, carry, q_in, q_rec,
                           self.rows, self.cols, self.vals, self.rhs)
         N = film.n + self.n_feeds
@@ -254,7 +266,7 @@ class EnergyEquation:
 
     def _recirculated(self, T, T_mix, q_rec):
         """Mixed-mean temperature of the oil reaching each feed from the film (the feed's own if none reaches it)."""
-        fL, fR, free, q = self.film.op.fL, self.film.op.fR, self.free, self.q
+        (fL, fR), free, q = self.streams, self.free, self.stream_flow
         cross = free[fL] != free[fR]
         up_is_L = q >= 0.0
         up = np.where(up_is_L, fL, fR)
