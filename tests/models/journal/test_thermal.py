@@ -148,3 +148,21 @@ def test_thermal_equilibrium_carries_the_load():
 def test_bad_input_is_named(make, name):
     with pytest.raises(ValueError, match=rf"^{re.escape(name)}"):
         make()
+
+
+def test_a_thermal_state_saves_and_loads(tmp_path):
+    s = thermal_bearing().steady_state(0.6, SPEED)
+    from transient import load_result
+    r = load_result(s.save(tmp_path / "thd"))
+    assert np.array_equal(r.temperature, s.temperature) and r.max_temperature == s.max_temperature
+    assert np.array_equal(r.mixing_temperature, s.mixing_temperature) and r.heat_convected == s.heat_convected
+
+
+def test_pressure_viscosity_thickens_the_loaded_film():
+    """A Barus coefficient raises the viscosity where the pressure is: the film carries more at the same position."""
+    piezo = replace(OIL, viscosity_at=None, viscosity_law=replace(OIL.law, pressure_viscosity=2e-8))
+    s, s0 = thermal_bearing(piezo).steady_state(0.6, SPEED), thermal_bearing().steady_state(0.6, SPEED)
+    assert s.load > s0.load
+    p = s.pressure  # above the cavitation pressure, 0 Pa here
+    mu_T = OIL.viscosity(s.temperature)
+    assert np.allclose(s.viscosity_field, mu_T * np.exp(2e-8 * np.maximum(p, 0.0)), rtol=1e-3)
