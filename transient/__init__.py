@@ -13,7 +13,9 @@ Public API (re-exported here):
   :class:`CircumferentialGroove`, :class:`JournalOrbit` (with ``periodic_response`` and ``response_curve``:
   periodic orbits by shooting), :func:`stability_onset`; rough surfaces and mixed lubrication: :class:`Roughness`
   (``JournalBearing(..., roughness=)``), :func:`stribeck_curve` (:class:`StribeckCurve`);
-  bearing noise: :func:`bearing_noise` (its settling run: :class:`Settling`), :func:`a_weighting`
+  bearing noise: :func:`bearing_noise` (its settling run: :class:`Settling`), :func:`a_weighting`;
+  thermal (THD) films: :class:`ThermalFilm` (``JournalBearing(..., thermal=)``) with its walls
+  :class:`BushConvection`, :class:`IsothermalShaft`
 * layered boundary films and shear-thinning bulk (Jang): :class:`BoundaryLayers` (``JournalBearing(...,
   layers=)``), :class:`Gecim`, :class:`Newtonian`, :class:`LayeredFilm` (the pointwise flow law)
 * thrust ball bearing starvation (Jeong et al.): :class:`ThrustBallBearing`
@@ -46,6 +48,7 @@ from transient.models.ball.settings import TrackSettings
 from transient.models.damper import SqueezeFilmDamper
 from transient.models.journal import CircumferentialGroove, Groove, JournalBearing, JournalOrbit, OilHole, stability_onset
 from transient.models.journal.roughness import Roughness
+from transient.models.journal.thermal_settings import BushConvection, IsothermalShaft, ThermalFilm
 from transient.models.pad import ThrustPad
 from transient.models.point import PointContact
 from transient.models.roller import LineContact, RollerContact, TaperedRoller
@@ -62,7 +65,7 @@ from transient.study.stribeck import StribeckCurve, stribeck_curve
 from transient.surfaces.roughness import RoughSurface
 
 __all__ = [
-    "AsperityContact", "BoundaryLayers", "CircumferentialGroove", "DiscreteDensity", "Gecim", "Groove", "Integration",
+    "AsperityContact", "BoundaryLayers", "BushConvection", "IsothermalShaft", "ThermalFilm", "CircumferentialGroove", "DiscreteDensity", "Gecim", "Groove", "Integration",
     "LayeredFilm", "LongRun", "Newtonian", "JournalBearing", "JournalOrbit", "LineContact", "OilHole", "PointContact",
     "Problem", "Recording", "Result", "RollerContact", "Rotor", "RotorBearingSystem", "TaperedRoller",
     "Roughness", "RoughSurface", "Settling", "Solution", "SqueezeFilmDamper", "Stats", "Steps", "StribeckCurve",

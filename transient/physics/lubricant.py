@@ -22,6 +22,15 @@ and 1.7 /GPa, :data:`DOWSON_HIGGINSON_CLASSIC`), or incompressible (``rho/rho0 =
 Law codes (for kernels that take the law as an argument): :data:`BARUS`, :data:`ROELANDS`,
 :data:`ISOVISCOUS`; :data:`DOWSON_HIGGINSON`, :data:`INCOMPRESSIBLE`. :class:`Lubricant` bundles a
 viscosity law and a density law with their constants, validated, and evaluates both on arrays.
+
+Viscosity against temperature ``T`` [K] (absolute viscosity [Pa s]; the thermal films), each optionally times
+Barus' ``exp(alpha p)``::
+
+    exponential  mu = mu_r exp(-beta (T - T_r))                  (Reynolds' law; ExponentialViscosity)
+    two-point    the exponential law through (T1, mu1), (T2, mu2): beta = ln(mu1 / mu2) / (T2 - T1)
+    Vogel        mu = a exp(b / (T - c))                          (Vogel 1921; VogelViscosity)
+
+and the oil's thermal properties (:class:`ThermalProperties`: density, specific heat, conductivity).
 """
 
 from __future__ import annotations
@@ -32,7 +41,7 @@ from dataclasses import dataclass
 import numpy as np
 from numba import njit
 
-from transient.checks import check_positive, check_range
+from transient.checks import check_items, check_positive, check_range
 
 ISOVISCOUS, BARUS, ROELANDS = 0, 1, 2
 INCOMPRESSIBLE, DOWSON_HIGGINSON = 0, 1
@@ -162,3 +171,144 @@ class Lubricant:
         """``(rho/rho0, d(rho/rho0)/dp)`` at pressures ``p`` [Pa]."""
         c1, c2 = self.dh_constants
         return density_array(self.density_code, np.asarray(p, dtype=float), c1, c2)
+
+
+# --------------------------------------------------------------------------------------------------
+# Viscosity against temperature (thermal films)
+# --------------------------------------------------------------------------------------------------
+
+#: Law codes of :func:`temperature_viscosity_point`.
+EXPONENTIAL, VOGEL = 0, 1
+#: The temperatures [K] a law is asked about (an oil film between its freezing and its flash point, with margin).
+TEMPERATURE_RANGE_K = (150.0, 800.0)
+
+
+@njit(cache=True, error_model="numpy")
+def temperature_viscosity_point(law, T, a, b, c):
+    """Viscosity [Pa s] at ``T`` [K]: ``a exp(-b (T - c))`` (:data:`EXPONENTIAL`: a = mu_r, b = beta [1/K], c = T_r)
+    or ``a exp(b / (T - c))`` (:data:`VOGEL`: a [Pa s], b [K], c [K])."""
+    if law == VOGEL:
+        return a * math.exp(b / (T - c))
+    return a * math.exp(-b * (T - c))
+
+
+@njit(cache=True, error_model="numpy")
+def temperature_viscosity_array(law, T, a, b, c, out):
+    """:func:`temperature_viscosity_point` of every entry of ``T`` into ``out``."""
+    for i in range(T.size):
+        out[i] = temperature_viscosity_point(law, T[i], a, b, c)
+
+
+def _check_temperature(name, value):
+    return check_range(name, value, "K", *TEMPERATURE_RANGE_K, why="(absolute temperature of an oil film)")
+
+
+class _TemperatureLaw:
+    """What the temperature laws share: ``at(T, p)`` [Pa s] and the kernel arguments."""
+
+    code = EXPONENTIAL
+    pressure_viscosity = 0.0
+
+    def kernel_args(self) -> tuple:
+        """``(law code, a, b, c)`` of :func:`temperature_viscosity_point`."""
+        raise NotImplementedError
+
+    def at(self, temperature, pressure=0.0):
+        """Viscosity [Pa s] at temperatures ``temperature`` [K] (array or number) and gauge pressure ``pressure``
+        [Pa] (Barus ``exp(alpha p)`` with ``pressure_viscosity`` alpha; 1 when alpha = 0)."""
+        T = np.atleast_1d(np.asarray(temperature, dtype=float))
+        lo, hi = TEMPERATURE_RANGE_K
+        if not np.all((T >= lo) & (T <= hi)):
+            bad = T[~((T >= lo) & (T <= hi))][0]
+            raise ValueError(f"temperature = {bad!r} [K] is out of range; allowed: [{lo:g}, {hi:g}] K")
+        out = np.empty(T.size)
+        law, a, b, c = self.kernel_args()
+        temperature_viscosity_array(law, np.ascontiguousarray(T.ravel()), a, b, c, out)
+        mu = out.reshape(T.shape)
+        if self.pressure_viscosity != 0.0:
+            mu = mu * np.exp(self.pressure_viscosity * np.asarray(pressure, dtype=float))
+        return mu if np.ndim(temperature) else float(mu[0])
+
+
+@dataclass(frozen=True)
+class ExponentialViscosity(_TemperatureLaw):
+    """``mu = viscosity exp(-coefficient (T - temperature))`` [Pa s]: ``viscosity`` [Pa s] at ``temperature`` [K],
+    temperature-viscosity ``coefficient`` beta [1/K] (0: isoviscous; mineral oils 0.02-0.05),
+    ``pressure_viscosity`` alpha [1/Pa] (Barus; 0: none)."""
+
+    viscosity: float
+    temperature: float
+    coefficient: float
+    pressure_viscosity: float = 0.0
+
+    def __post_init__(self):
+        check_range("viscosity", self.viscosity, "Pa s", 1e-6, 1e4)
+        _check_temperature("temperature", self.temperature)
+        check_range("coefficient", self.coefficient, "1/K", 0.0, 1.0,
+                    why="(an oil's viscosity falls with temperature: beta >= 0)")
+        check_range("pressure_viscosity", self.pressure_viscosity, "1/Pa", 0.0, 1e-6)
+
+    def kernel_args(self) -> tuple:
+        return (EXPONENTIAL, self.viscosity, self.coefficient, self.temperature)
+
+    @classmethod
+    def two_point(cls, first, second, pressure_viscosity=0.0) -> "ExponentialViscosity":
+        """The exponential law through two points ``(T1 [K], mu1 [Pa s])``, ``(T2, mu2)`` (T1 != T2; the
+        viscosity must not rise with temperature); equal viscosities give beta = 0 exactly."""
+        (T1, mu1), (T2, mu2) = (check_items(f"viscosity_at[{k}]", v, "(temperature [K], viscosity [Pa s])", 2)
+                                for k, v in enumerate(check_items("viscosity_at", (first, second),
+                                                                  "two (temperature [K], viscosity [Pa s]) pairs", 2)))
+        T1, T2 = _check_temperature("viscosity_at[0][0]", T1), _check_temperature("viscosity_at[1][0]", T2)
+        mu1 = check_range("viscosity_at[0][1]", mu1, "Pa s", 1e-6, 1e4)
+        mu2 = check_range("viscosity_at[1][1]", mu2, "Pa s", 1e-6, 1e4)
+        if T1 == T2:
+            raise ValueError(f"viscosity_at[1][0] = {T2!r} [K] equals viscosity_at[0][0]; allowed: two different "
+                             "temperatures")
+        beta = math.log(mu1 / mu2) / (T2 - T1)
+        if beta < 0.0:
+            raise ValueError(f"viscosity_at = (({T1:g} K, {mu1:g} Pa s), ({T2:g} K, {mu2:g} Pa s)): the viscosity "
+                             "rises with temperature; allowed: mu at the higher temperature at most mu at the lower")
+        return cls(mu1, T1, beta, pressure_viscosity)
+
+
+@dataclass(frozen=True)
+class VogelViscosity(_TemperatureLaw):
+    """Vogel's law ``mu = a exp(b / (T - c))``: ``a`` [Pa s], ``b`` [K], ``c`` [K] (below every temperature it
+    is asked about), ``pressure_viscosity`` alpha [1/Pa] (Barus; 0: none)."""
+
+    a: float
+    b: float
+    c: float
+    pressure_viscosity: float = 0.0
+
+    code = VOGEL
+
+    def __post_init__(self):
+        check_range("a", self.a, "Pa s", 1e-12, 1e4, low_open=True)
+        check_range("b", self.b, "K", 0.0, 1e5)
+        check_range("c", self.c, "K", 0.0, TEMPERATURE_RANGE_K[0], high_open=True,
+                    why=f"(below the lowest temperature a law is asked about, {TEMPERATURE_RANGE_K[0]:g} K)")
+        check_range("pressure_viscosity", self.pressure_viscosity, "1/Pa", 0.0, 1e-6)
+
+    def kernel_args(self) -> tuple:
+        return (VOGEL, self.a, self.b, self.c)
+
+
+@dataclass(frozen=True)
+class ThermalProperties:
+    """An oil's ``density`` [kg/m^3], specific ``heat_capacity`` [J/(kg K)] and thermal ``conductivity``
+    [W/(m K)] (mineral oils: about 870, 1900-2100, 0.13), taken constant over the film's temperatures."""
+
+    density: float
+    heat_capacity: float
+    conductivity: float = 0.13
+
+    def __post_init__(self):
+        check_range("density", self.density, "kg/m^3", 100.0, 3000.0)
+        check_range("heat_capacity", self.heat_capacity, "J/(kg K)", 100.0, 10000.0)
+        check_range("conductivity", self.conductivity, "W/(m K)", 1e-3, 10.0)
+
+    @property
+    def volumetric_heat(self) -> float:
+        """``density * heat_capacity`` [J/(m^3 K)]."""
+        return self.density * self.heat_capacity

@@ -8,7 +8,8 @@ from transient.models.journal.periodic import (PeriodicOrbit, ResponseCurve, Whi
                                                response_curve, stability_onset)
 from transient.models.journal.results import FilmState, OrbitResult
 from transient.models.journal.reynolds_film import ReynoldsFilm
+from transient.models.journal.thermal_settings import BushConvection, IsothermalShaft, ThermalFilm
 
-__all__ = ["CircumferentialGroove", "FilmState", "Groove", "JournalBearing", "JournalOrbit", "OilHole", "OrbitResult",
+__all__ = ["BushConvection", "CircumferentialGroove", "IsothermalShaft", "ThermalFilm", "FilmState", "Groove", "JournalBearing", "JournalOrbit", "OilHole", "OrbitResult",
            "PeriodicOrbit", "ResponseCurve", "ReynoldsFilm", "WhirlResponse", "omega", "periodic_response",
            "response_curve", "stability_onset"]

@@ -30,6 +30,9 @@ from transient.models.journal.roughness import Roughness
 from transient.models.journal.scales import film_scales
 from transient.models.journal.tilt import (check_open, check_tilt, edge_eccentricities, half_length, sensitivity,
                                            si_coefficients, tilt_groups)
+from transient.models.journal import thd
+from transient.models.journal.thermal_settings import ThermalFilm
+from transient.models.journal.viscous_film import ViscousFilm
 from transient.units import rpm_to_rad_s as omega  # the journal's name for it (public: models.journal.omega)
 
 #: The cavitation models of :class:`JournalBearing` (``cavitation=``).
@@ -156,12 +159,20 @@ class JournalBearing:
         in :mod:`transient.models.journal.tilt`): the film feels the journal's tilt relative to it
         (``steady_state(..., tilt=)``, ``equilibrium``, ``coefficients``), and the whole length is modelled. Smooth
         films; the time-domain orbit and the rotor system take aligned bearings. Default (0, 0).
+    thermal : :class:`~transient.models.journal.thermal_settings.ThermalFilm` -- a thermal (THD) film: the viscosity
+        of every cell at its temperature, the temperatures from the film-averaged energy equation
+        (:mod:`transient.models.journal.thd`) in ``steady_state``, ``equilibrium``, ``coefficients`` (at frozen
+        temperatures) and ``stability_threshold``; the result carries the temperatures and heat flows. ``viscosity``
+        may then be None: the oil's viscosity at the supply temperature (it is only the pressure unit's reference).
+        Elrod film, Newtonian bulk without boundary layers, smooth surfaces; steady computations only (the orbit and
+        the rotor system refuse it). Default None: the isothermal film of viscosity ``viscosity``.
     """
 
-    def __init__(self, diameter, length, clearance, viscosity, bulk_modulus=1e9, supply_pressure=101325.0,
+    def __init__(self, diameter, length, clearance, viscosity=None, bulk_modulus=1e9, supply_pressure=101325.0,
                  groove: Groove | None = Groove(), grid=(151, 21), cavitation_pressure=0.0, ambient_pressure=0.0,
                  switch_width=None, switch_content_width=1e-2, symmetric=True, cavitation="elrod", rheology=None,
-                 layers: BoundaryLayers | None = None, roughness: Roughness | None = None, misalignment=(0.0, 0.0)):
+                 layers: BoundaryLayers | None = None, roughness: Roughness | None = None, misalignment=(0.0, 0.0),
+                 thermal: ThermalFilm | None = None):
         if not isinstance(cavitation, str) or cavitation not in CAVITATION_MODES:
             raise ValueError(f"cavitation must be one of {CAVITATION_MODES}, got cavitation={cavitation!r}")
         self.cavitation = cavitation
@@ -171,7 +182,14 @@ class JournalBearing:
                                   "limit, not a journal bearing)")
         self.clearance = check_range("clearance", clearance, "m", 1e-5 * self.diameter, 0.1 * self.diameter,
                                      why="(C/D from 1e-5 to 0.1: a journal bearing's radial clearance)")
-        self.viscosity = check_range("viscosity", viscosity, "Pa s", 1e-6, 1e4)
+        if thermal is not None and not isinstance(thermal, ThermalFilm):
+            raise TypeError(f"thermal must be a ThermalFilm or None, got {type(thermal).__name__}")
+        self.thermal = thermal
+        if viscosity is None and thermal is None:
+            raise ValueError("viscosity = None [Pa s]; allowed: a viscosity in [1e-06, 10000] Pa s (None only with "
+                             "thermal=ThermalFilm(...): then its viscosity at the supply temperature)")
+        self.viscosity = check_range("viscosity", thermal.viscosity(thermal.supply_temperature) if viscosity is None
+                                     else viscosity, "Pa s", 1e-6, 1e4)
         self.bulk_modulus = check_range("bulk_modulus", bulk_modulus, "Pa", 1e6, 1e15,
                                         why="(oils ~1e9; 1e12 and above is the incompressible limit)")
         if rheology is not None and not isinstance(rheology, (Newtonian, Gecim)):
@@ -186,6 +204,7 @@ class JournalBearing:
                         why="(two layers thinner than the clearance: the bulk must not vanish)")
         self.layers = layers
         self.roughness = self._check_roughness(roughness)
+        self._check_thermal()
         self.flow_law = flow_law(self.viscosity, self.rheology, layers)  # the one LayeredFilm of this bearing
         self.cavitation_pressure = check_range("cavitation_pressure", cavitation_pressure, "Pa", 0.0, 1e9,
                                                why="(absolute pressure)")
@@ -215,6 +234,9 @@ class JournalBearing:
         n_theta = check_int("grid[0] (n_theta)", grid[0], "cells", 8, 20000)
         n_axial = check_int("grid[1] (n_axial)", grid[1], "cells", 1, 5000)
         self.misalignment = check_tilt("misalignment", misalignment)
+        if self.thermal is not None and self.misalignment != (0.0, 0.0):
+            raise ValueError(f"misalignment = {self.misalignment} [rad] with thermal = ThermalFilm(...); allowed: "
+                             "(0, 0) (the thermal film is aligned)")
         if self.roughness is not None and self.misalignment != (0.0, 0.0):
             raise ValueError(f"misalignment = {self.misalignment} [rad] with roughness = Roughness(...); allowed: "
                              "(0, 0) (the rough film is aligned)")
@@ -240,6 +262,15 @@ class JournalBearing:
         check_range("roughness sigma", roughness.sigma, "m", 0.0, 0.5 * self.clearance, low_open=True,
                     why="(the composite roughness must be well below the clearance)")
         return roughness
+
+    def _check_thermal(self):
+        """A thermal film is the Elrod film of a smooth Newtonian bulk without boundary layers."""
+        if self.thermal is not None and (self.cavitation != "elrod" or self.shear_thinning or self.layers is not None
+                                         or self.roughness is not None):
+            raise ValueError(f"thermal = ThermalFilm(...) with cavitation = {self.cavitation!r}, rheology = "
+                             f"{type(self.rheology).__name__}, layers = {self.layers!r}, roughness = "
+                             f"{self.roughness!r}: the thermal film is the Elrod film of a smooth Newtonian bulk; "
+                             "allowed: cavitation=\"elrod\", rheology=None, layers=None, roughness=None")
 
     def _check_ring_supply(self):
         """Circumferential grooves alone at the cavitation pressure (within 1 Pa), with the ends there too, supply no
@@ -303,7 +334,8 @@ class JournalBearing:
                     rheology=None if not self.shear_thinning else dict(
                         kappa=self.rheology.kappa, viscosity_ratio=self.rheology.viscosity_ratio),
                     **({} if self.roughness is None else dict(roughness=self.roughness.parameters())),
-                    **({} if self.misalignment == (0.0, 0.0) else dict(misalignment=list(self.misalignment))))
+                    **({} if self.misalignment == (0.0, 0.0) else dict(misalignment=list(self.misalignment))),
+                    **({} if self.thermal is None else dict(thermal=self.thermal.parameters())))
 
     def layer_groups(self) -> tuple[float, float]:
         """The boundary layers in the film's scales: ``(2 delta / C, 3 alpha^2 mu (1/mu_a + 1/mu_b) / C^2)``
@@ -335,6 +367,8 @@ class JournalBearing:
         gap that of a journal tilted by ``tilt`` [rad] in this bearing's (misaligned) bush."""
         if self.roughness is not None:
             return RoughFilm(self.grid, film_scales(self, speed_rpm), self.flow_law, self.roughness, n_extra)
+        if self.thermal is not None:
+            return ViscousFilm(self.grid, film_scales(self, speed_rpm), self.flow_law, n_extra)
         kind = ReynoldsFilm if self.cavitation == "reynolds" else Film
         f = kind(self.grid, film_scales(self, speed_rpm), self.flow_law, n_extra)
         relative = (tilt[0] - self.misalignment[0], tilt[1] - self.misalignment[1])
@@ -364,6 +398,9 @@ class JournalBearing:
         if self.roughness is not None and tilt != (0.0, 0.0):
             raise ValueError(f"tilt = {tilt} [rad] with roughness = Roughness(...); allowed: (0, 0) (the rough film "
                              "is aligned)")
+        if self.thermal is not None and tilt != (0.0, 0.0):
+            raise ValueError(f"tilt = {tilt} [rad] with thermal = ThermalFilm(...); allowed: (0, 0) (the thermal film "
+                             "is aligned)")
         rel = (tilt[0] - self.misalignment[0], tilt[1] - self.misalignment[1])
         a, b = tilt_groups(rel, self.radius, self.clearance)
         check_open(X, Y, a, b, 0.5 * self.length / self.radius, self.max_eccentricity_ratio, tilt)
@@ -391,8 +428,12 @@ class JournalBearing:
         self._check_supplied()
         b = self.tilted(tilt)
         f = b.film(speed_rpm, tilt=tilt)
-        u, its, _ = b.film_solve(f, eps * np.cos(a), eps * np.sin(a))
-        return _warn_validity(f.state(u, eps * np.cos(a), eps * np.sin(a), its))
+        X, Y = eps * np.cos(a), eps * np.sin(a)
+        if self.thermal is not None:
+            u, its, balance, alternations = thd.steady(b, f, X, Y)
+            return _warn_validity(thd.thermal_state(b, f, u, X, Y, its, balance, alternations))
+        u, its, _ = b.film_solve(f, X, Y)
+        return _warn_validity(f.state(u, X, Y, its))
 
     def coarser(self) -> "JournalBearing":
         """This bearing on a grid of half the circumferential cells (rounded up) and the same axial cells: the
@@ -429,6 +470,8 @@ class JournalBearing:
         [rad]: the journal held at this tilt (the force balances the load; the moment is what it is)."""
         b = self.tilted(check_tilt("tilt", tilt))
         f, u, q, it, _ = b._equilibrium(load, speed_rpm, tol, max_iter, tilt=tilt)
+        if self.thermal is not None:
+            return _warn_validity(thd.thermal_state(b, f, u, q[0], q[1], it, f.energy_balance, f.alternations))
         return _warn_validity(f.state(u, q[0], q[1], it))
 
     def coefficients(self, load, speed_rpm, tilt=(0.0, 0.0), tilt_dofs=False) -> tuple[np.ndarray, np.ndarray]:
@@ -439,6 +482,9 @@ class JournalBearing:
         axes in :mod:`~transient.models.journal.tilt`), at the equilibrium with the journal tilted by ``tilt``
         [rad]."""
         tilt = check_tilt("tilt", tilt)
+        if self.thermal is not None and tilt_dofs:
+            raise ValueError("tilt_dofs = True with thermal = ThermalFilm(...); allowed: False (the thermal film's "
+                             "coefficients are the 2 x 2 of an aligned journal)")
         if not check_bool("tilt_dofs", tilt_dofs) and tilt == (0.0, 0.0) and self.misalignment == (0.0, 0.0):
             f, _, _, _, (dF_dq, dF_dv) = self._equilibrium(load, speed_rpm)
             K = -dF_dq * f.force_scale / self.clearance
@@ -461,6 +507,8 @@ class JournalBearing:
         self._check_supplied()
         f = self.film(speed_rpm, tilt=tilt)
         wbar = W / f.force_scale
+        if self.thermal is not None:
+            return self._thermal_equilibrium(f, W, speed_rpm, tol, max_iter, start)
         q = np.array([0.3, 0.3] if start is None else start, dtype=float)  # eccentric start in the loaded quadrant
         a, b = f.tilt
         half = half_length(self.grid)
@@ -484,6 +532,17 @@ class JournalBearing:
         raise NoEquilibriumError(f"equilibrium(load={W} N, speed_rpm={speed_rpm}) did not converge in {max_iter} "
                            f"iterations; last eccentricity ratio {np.hypot(*q):.4f}, force residual "
                            f"{np.max(np.abs(r)) * f.force_scale:.3e} N")
+
+    def _thermal_equilibrium(self, f, load, speed_rpm, tol, max_iter, start):
+        """:meth:`_equilibrium` of a thermal film (:func:`transient.models.journal.thd.equilibrium`); the film keeps
+        its energy balance and the number of film solves (``f.energy_balance``, ``f.alternations``)."""
+        out = thd.equilibrium(self, f, load / f.force_scale, tol, max_iter, start)
+        if out is None:
+            raise NoEquilibriumError(f"equilibrium(load={load} N, speed_rpm={speed_rpm}) of the thermal film did not "
+                                     f"converge in {max_iter + self.thermal.max_iterations} film solves")
+        u, q, it, sens, f.energy_balance = out
+        f.alternations = it + 1
+        return f, u, q, it, sens
 
     def _continued_equilibrium(self, load, speed_rpm, tol, max_iter):
         """The equilibrium of a rough bearing by continuation in speed, when Newton from the default start fails

@@ -97,6 +97,10 @@ class JournalOrbit:
             raise ValueError(f"JournalOrbit does not support misalignment = {bearing.misalignment} [rad] yet: the "
                              "orbit's touch detection and minimum film are the aligned journal's; allowed: (0, 0) "
                              "(a misaligned bearing serves steady_state, equilibrium and coefficients)")
+        if getattr(bearing, "thermal", None) is not None:
+            raise ValueError("JournalOrbit does not support thermal = ThermalFilm(...) yet: the orbit integrates the "
+                             "isothermal film; allowed: thermal=None (a thermal bearing serves steady_state, "
+                             "equilibrium, coefficients and stability_threshold)")
         self.bearing = bearing
         self.rotor_mass = check_positive("rotor_mass", rotor_mass, "kg")
         self.unbalance = check_range("unbalance", unbalance, "m", 0.0, bearing.clearance, high_open=True,

@@ -45,6 +45,13 @@ class FilmState(SteadyResult):
     about y), ``moment`` [N m] the film's moment on the journal about the bearing centre (about x, about y; zero on a
     half bearing, whose mirror halves cancel), ``min_film`` the smallest gap over the whole bearing (at an end when
     tilted); ``eccentricity_ratio`` and ``position`` are the journal's at the mid-plane.
+    Thermal films (``JournalBearing(thermal=ThermalFilm(...))``, :mod:`transient.models.journal.thd`):
+    ``temperature`` [K] and ``viscosity_field`` [Pa s] per cell, ``max_temperature`` [K], ``mixing_temperature``
+    [K] of each feed, ``outlet_temperature`` [K] (mixed mean of the side leakage), ``dissipation`` [W] (the film's
+    viscous dissipation), ``heat_convected`` [W] (carried away by the oil above the supply temperature: side
+    leakage and the discharged recirculated oil), ``heat_conducted`` [W] (to the walls) and ``thermal_iterations``
+    (film-temperature alternations); the friction fields and ``power_loss`` at the cells' viscosities. None or NaN
+    for an isothermal film.
     """
 
     time_axis = None
@@ -82,7 +89,20 @@ class FilmState(SteadyResult):
     contact_pressure: np.ndarray | None = quantity("Pa", None, repr=False)
     moment: tuple[float, float] = quantity("N m", (0.0, 0.0))
     tilt: tuple[float, float] = quantity("rad", (0.0, 0.0))
+    temperature: np.ndarray | None = quantity("K", None, repr=False)
+    viscosity_field: np.ndarray | None = quantity("Pa s", None, repr=False)
+    mixing_temperature: np.ndarray | None = quantity("K", None)
+    outlet_temperature: float = quantity("K", float("nan"))
+    dissipation: float = quantity("W", float("nan"))
+    heat_convected: float = quantity("W", float("nan"))
+    heat_conducted: float = quantity("W", float("nan"))
+    thermal_iterations: int = 0
     message: str = field(default="converged", kw_only=True)
+
+    @property
+    def max_temperature(self) -> float:
+        """Highest film temperature [K] (NaN for an isothermal film)."""
+        return float("nan") if self.temperature is None else float(self.temperature.max())
 
     @property
     def max_pressure(self) -> float:

@@ -109,6 +109,9 @@ class RotorBearingSystem:
             if getattr(b, "roughness", None) is not None:
                 raise ValueError(f"bearings[{node!r}] roughness = Roughness(...); allowed: None (the rotor system's "
                                  "films are smooth; a rough bearing serves the single bearing's steady analyses)")
+            if getattr(b, "thermal", None) is not None:
+                raise ValueError(f"bearings[{node!r}] thermal = ThermalFilm(...); allowed: None (the rotor system's "
+                                 "films are isothermal; a thermal bearing serves the single bearing's steady analyses)")
         self.dampers = {n: b for n, b in bearings.items() if isinstance(b, SqueezeFilmDamper)}
         self.bearings = {n: b.bearing if n in self.dampers else b for n, b in bearings.items()}  # dampers: their films
         self.stiffness = rotor.stiffness.copy()  # with the dampers' centring springs
