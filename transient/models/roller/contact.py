@@ -64,8 +64,16 @@ from transient.physics.lubricant import DOWSON_HIGGINSON_PARK, Lubricant
 from transient.solvers.newton import NewtonError
 
 PAPER_GRID = (94, 45)
-#: the default clustered grid above the paper case's load (:attr:`RollerContact.grid_spec`)
+#: the clustered grid of 94 x nodes and twice the paper's y nodes (the default above the paper's load before the
+#: x-uniform grids; its y axis is the default's)
 HEAVY_GRID = (94, 89)
+#: x node counts of the default x-uniform, y-clustered grid above the paper's load (:attr:`RollerContact.grid_spec`):
+#: the fewest whose worst row's x spacing is at most ``HYBRID_RATIO`` times 4 b/M of its own load
+#: (:meth:`RollerContact.dry_resolution`)
+HYBRID_NX = (128, 256, 512, 1024, 2048)
+#: measured on the tilted paper case (docs/validation.md): 256 x nodes (ratio 0.40) converge at 10x the paper's
+#: load in 15 Newton iterations; uniform grids of 128 x nodes (0.81) stall there
+HYBRID_RATIO = 0.5
 #: Couette flux of the Reynolds equation (:mod:`transient.models.roller.kernels`)
 SCHEMES = ("auto", "upwind2", "upwind1", "limited")
 #: steady forms: the mass-conserving film content (FBNS) and the Reynolds condition
@@ -160,10 +168,18 @@ class RollerContact:
     @cached_property
     def grid_spec(self) -> tuple:
         """``(kind, nx, ny)``; without ``grid``: the paper's grid up to the paper case's load, and above it
-        (:attr:`heavy`) twice its y nodes, ``HEAVY_GRID``: the loaded end's side lobe needs them (at 5x the
-        paper's load H_min on 94 x 45 is 42 % below 94 x 89's; at 7x and 10x 94 x 45 does not converge, 94 x 89
-        does; docs/validation.md)."""
-        return ("clustered",) + (HEAVY_GRID if self.heavy else PAPER_GRID)
+        (:attr:`heavy`) the x-uniform, y-clustered grid ``("hybrid", nx, 89)``: twice the paper's y nodes (the
+        loaded end's side lobe needs them: at 5x the paper's load H_min on 94 x 45 is 42 % below 94 x 89's; at 7x
+        and 10x 94 x 45 does not converge, 94 x 89 does; docs/validation.md) and the fewest x nodes of
+        ``HYBRID_NX`` that resolve the most loaded row (``HYBRID_RATIO``), the elastic film by FFT along x
+        (:mod:`transient.models.roller.roller_lines`)."""
+        if not self.heavy:
+            return ("clustered",) + PAPER_GRID
+        ny = HEAVY_GRID[1]
+        for nx in HYBRID_NX:
+            if self.dry_resolution(self.make_grid("hybrid", nx, ny))["worst_ratio"] <= HYBRID_RATIO:
+                break
+        return ("hybrid", nx, ny)
 
     @cached_property
     def heavy(self) -> bool:
@@ -201,17 +217,17 @@ class RollerContact:
     def _parse_grid(grid):
         if isinstance(grid, str):
             if grid != "paper":
-                raise ValueError(f"grid = {grid!r}: use 'paper', ('clustered', nx, ny) or (nx, ny)")
+                raise ValueError(f"grid = {grid!r}: use 'paper', ('clustered', nx, ny), ('hybrid', nx, ny) or (nx, ny)")
             return ("clustered",) + PAPER_GRID
         if not isinstance(grid, (tuple, list)):
-            raise ValueError(f"grid = {grid!r}: use 'paper', ('clustered', nx, ny) or (nx, ny)")
+            raise ValueError(f"grid = {grid!r}: use 'paper', ('clustered', nx, ny), ('hybrid', nx, ny) or (nx, ny)")
         grid = tuple(grid)
-        if len(grid) == 3 and grid[0] == "clustered":
+        if len(grid) == 3 and grid[0] in ("clustered", "hybrid"):
             kind, nx, ny = grid
         elif len(grid) == 2:
             kind, (nx, ny) = "uniform", grid
         else:
-            raise ValueError(f"grid = {grid!r}: use 'paper', ('clustered', nx, ny) or (nx, ny)")
+            raise ValueError(f"grid = {grid!r}: use 'paper', ('clustered', nx, ny), ('hybrid', nx, ny) or (nx, ny)")
         nx = int(check_range("grid nx", nx, "nodes", 12, 4097))
         ny = int(check_range("grid ny", ny, "nodes", 8, 4097))
         return (kind, nx, ny)
@@ -284,8 +300,10 @@ class RollerContact:
         if kind == "uniform":
             return TensorGrid(np.linspace(x0, x1, nx), np.linspace(y0, y1, ny))
         s = self.scales
-        x = clustered_axis(x0, x1, nx, _weights(x1 - x0, X_HEAVY if self.heavy else X_PAPER),
-                           snap=[0.0])
+        if kind == "hybrid":
+            x = np.linspace(x0, x1, nx)
+        else:
+            x = clustered_axis(x0, x1, nx, _weights(x1 - x0, X_HEAVY if self.heavy else X_PAPER), snap=[0.0])
         yd = self.roller.y_d / s["B"]
         cl = []
         for start, end in ((-yd, s["y_lo"]), (yd, s["y_hi"])):
@@ -326,6 +344,11 @@ class RollerContact:
         preconditioner), then uniform grids with the x node count halved while it stays >= 64."""
         kind, nx, ny = self.grid_spec
         out = [(kind, nx, ny)]
+        if kind == "hybrid":
+            while nx // 2 >= HYBRID_NX[0]:
+                nx //= 2
+                out.insert(0, ("hybrid", nx, ny))
+            return out
         if kind == "uniform":
             while nx // 2 >= 64:
                 nx //= 2
@@ -411,7 +434,7 @@ class RollerContact:
             last = k == len(specs) - 1
             g = self.grid if last else self.make_grid(*spec)
             tol_k = tol if last else math.sqrt(tol)
-            cf = self.content_film(g, spec[0] == "uniform")
+            cf = self.content_film(g, spec[0])
             level = {"grid": [int(g.x.size), int(g.y.size)]}
             u0 = content_start(self, cf) if k == 0 else carry_content(g_prev, u, g)
             try:
@@ -434,11 +457,16 @@ class RollerContact:
             msg = f"converged: {iters} Newton iterations over {len(specs)} grid level(s)"
         return self._finish(cf, u, ok, msg, iters, norms, t0, info, raise_on_failure)
 
-    def content_film(self, g: TensorGrid, uniform: bool) -> RollerContentFilm:
-        """The film-content form on ``g``: dense elasticity, or (``uniform``) DC-FFT products with matrix-free
-        Newton steps preconditioned on the clustered ``COARSE`` grid (:mod:`transient.models.roller.roller_fft`),
+    def content_film(self, g: TensorGrid, kind: str) -> RollerContentFilm:
+        """The film-content form on ``g`` of grid ``kind``: ``"clustered"``, dense elasticity; ``"hybrid"``, FFT-in-x
+        products with matrix-free Newton steps preconditioned by x-line blocks
+        (:mod:`transient.models.roller.roller_lines`); ``"uniform"``, DC-FFT products with matrix-free Newton
+        steps preconditioned on the clustered ``COARSE`` grid (:mod:`transient.models.roller.roller_fft`),
         which resolves the profiled ends."""
-        if not uniform:
+        kind = {True: "uniform", False: "clustered"}.get(kind, kind)  # the former flag ``uniform``
+        if kind == "hybrid":
+            return RollerContentFilm(self.film_problem(g, "xfft"))
+        if kind != "uniform":
             return RollerContentFilm(self.film_problem(g, "dense"))
         coarse = RollerContentFilm(self.film_problem(self.make_grid(*COARSE), "dense"))
         return RollerContentFilm(self.film_problem(g, "fft"), coarse=coarse)
