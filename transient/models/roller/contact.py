@@ -43,11 +43,13 @@ from __future__ import annotations
 
 import math
 import time
+from contextlib import nullcontext
 from functools import cached_property, partial
 from types import SimpleNamespace
 
 import numpy as np
 from scipy.interpolate import RegularGridInterpolator
+from threadpoolctl import threadpool_limits
 
 from transient.checks import check_memory, check_positive, check_range
 from transient.models.roller.continuation import PathResult, follow
@@ -74,6 +76,10 @@ HYBRID_NX = (128, 256, 512, 1024, 2048)
 #: measured on the tilted paper case (docs/validation.md): 256 x nodes (ratio 0.40) converge at 10x the paper's
 #: load in 15 Newton iterations; uniform grids of 128 x nodes (0.81) stall there
 HYBRID_RATIO = 0.5
+#: the nested iteration on hybrid grids starts from the coarsest level whose worst row's x spacing is at most this
+#: times 4 b/M (10x: 128 x nodes, ratio 0.81, converge from the dry pressure; 50x: 128, ratio 3.6, do not); a
+#: coarse level that fails hands the dry pressure to the next
+HYBRID_START_RATIO = 1.0
 #: Couette flux of the Reynolds equation (:mod:`transient.models.roller.kernels`)
 SCHEMES = ("auto", "upwind2", "upwind1", "limited")
 #: steady forms: the mass-conserving film content (FBNS) and the Reynolds condition
@@ -160,9 +166,10 @@ class RollerContact:
     def with_load(self, load: float) -> "RollerContact":
         """The same roller, lubricant and grid specification at another total load [N] (its own dry
         footprint and scaled grid): the steps of the load continuation, which keep this contact's grid
-        law and Couette flux (:attr:`heavy`)."""
+        law, node counts (:attr:`grid_spec`) and Couette flux (:attr:`heavy`)."""
         c = RollerContact(self.roller, load, **self._options)
-        c.__dict__["heavy"] = self.heavy  # the cached property, fixed to the path's target
+        c.__dict__["heavy"] = self.heavy  # the cached properties, fixed to the path's target
+        c.__dict__["grid_spec"] = self.grid_spec
         return c
 
     @cached_property
@@ -426,7 +433,8 @@ class RollerContact:
         self.check_resolution()
         specs = self.levels()
         if self.mid_plane_M > M_EASY_2D:  # from the coarsest level that resolves the loaded rows
-            fine = [self.dry_resolution(self.make_grid(*sp))["worst_ratio"] <= RESOLUTION_LIMIT for sp in specs[:-1]]
+            limit = HYBRID_START_RATIO if specs[0][0] == "hybrid" else RESOLUTION_LIMIT
+            fine = [self.dry_resolution(self.make_grid(*sp))["worst_ratio"] <= limit for sp in specs[:-1]]
             specs = specs[fine.index(True) if any(fine) else -1:]
         info = {"method": "fbns", "levels": []}
         u, g_prev, iters, ok, msg, norms = None, None, 0, True, "", []
@@ -436,10 +444,14 @@ class RollerContact:
             tol_k = tol if last else math.sqrt(tol)
             cf = self.content_film(g, spec[0])
             level = {"grid": [int(g.x.size), int(g.y.size)]}
-            u0 = content_start(self, cf) if k == 0 else carry_content(g_prev, u, g)
+            cold = u is None
+            u0 = content_start(self, cf) if cold else carry_content(g_prev, u, g)
             try:
-                nr = solve_content(cf, u0, tol_k, max_iter if k == 0 else STEP_ITERATIONS,
-                                   f"RollerContact.steady FBNS Newton ({g.x.size} x {g.y.size})")
+                # the x-line factors and the FFT products are too small for BLAS threads to pay; on a shared
+                # machine threads waiting for a core cost 3-5x the CPU time (measured at 10x, 256 x 89)
+                with threadpool_limits(limits=1, user_api="blas") if spec[0] == "hybrid" else nullcontext():
+                    nr = solve_content(cf, u0, tol_k, max_iter if cold else STEP_ITERATIONS,
+                                       f"RollerContact.steady FBNS Newton ({g.x.size} x {g.y.size})")
                 ok = True
             except NewtonError as exc:
                 nr, ok = exc.result, False
@@ -450,6 +462,9 @@ class RollerContact:
             info["levels"].append(level)
             iters += its
             g_prev = g
+            if not ok and spec[0] == "hybrid" and not last:  # the next level from the dry pressure
+                u, ok = None, True
+                level["failed"] = msg
             if not ok:
                 break
         info["cpu_s"] = time.process_time() - c0
