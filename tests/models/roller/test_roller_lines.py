@@ -7,6 +7,7 @@ import warnings
 import numpy as np
 import pytest
 
+from transient.models.point.grid_verdict import FORMAL_ORDER, error_estimate
 from transient.models.roller import RollerContact, TaperedRoller
 from transient.models.roller.line_fbns import schur_system
 from transient.models.roller.line_fft import SchurOperator
@@ -79,6 +80,15 @@ def test_fft_in_x_film_and_schur_products_equal_the_dense_ones():
     assert np.max(np.abs(band - np.where(pattern, S[:n, :n], 0.0))) < 1e-10 * np.max(np.abs(S[:n, :n]))
 
 
+def test_line_preconditioned_newton_converges_with_few_factorisations():
+    c = short_roller((33, 41))
+    _, lines, _ = perturbed(c)
+    u, ok, st = content_newton(lines, content_start(c, lines), tol=1e-9)
+    assert ok and st.krylov_misses == 0 and st.factorisations < st.iterations
+    assert abs(lines.equations(u)["load"]) < 1e-9
+
+
+@pytest.mark.slow
 def test_line_preconditioned_newton_converges_to_the_dense_paths_film():
     c = short_roller((33, 41))
     dense, lines, _ = perturbed(c)
@@ -106,8 +116,7 @@ def test_default_grid_above_the_paper_load_is_uniform_in_x_and_clustered_in_y():
         return RollerContact.from_dimensionless(**kw, roller=TaperedRoller(**dict(park.ROLLER, tilt_deg=0.002)),
                                                 speed=park.SPEED)
 
-    light, heavy = paper(1.0), paper(10.0)
-    assert light.grid_spec == ("clustered", 94, 45)
+    heavy = paper(10.0)
     kind, nx, ny = heavy.grid_spec
     assert (kind, ny) == ("hybrid", 89) and heavy.grid.uniform_x and not heavy.grid.uniform
     assert np.allclose(heavy.grid.y, heavy.make_grid("clustered", 94, 89).y)
@@ -147,3 +156,16 @@ def test_ten_times_the_paper_load_converges_on_the_default_grid_near_the_dense_9
     assert s.h_min == pytest.approx(dense.h_min, rel=0.10)
     assert s.p_max == pytest.approx(dense.p_max, rel=0.02)
     assert s.y_of_h_min == pytest.approx(dense.y_of_h_min, abs=0.01 * c.roller.mean_radius)
+
+
+@pytest.mark.slow
+def test_ten_times_the_paper_load_converges_in_x_at_the_schemes_order():
+    """128, 256 (the default) and 512 x nodes, 89 y nodes: the films converge monotonically, at an observed order
+    near the limited flux's 2 for H_c and P_max, and Richardson's estimate (the package's grid verdict) bounds the
+    512-node film's error to a few per cent (measured: H_c 1.1 %, H_min 3.0 %, P_max 0.1 %)."""
+    films = [paper(10.0, ("hybrid", nx, 89)).steady() for nx in (512, 256, 128)]
+    for name in ("h_central", "h_min", "p_max"):
+        fine, half, quarter = (getattr(s, name) for s in films)
+        error, basis = error_estimate(fine, half, quarter, FORMAL_ORDER["limited"])
+        assert error < 0.05, (name, basis)
+        assert "observed order" in basis

@@ -21,7 +21,11 @@ gives the central film within 0.7 % of its grid-converged value, the uniform 94-
 Y at each end 25 % of the nodes on the profiled part of the footprint and 15 % on the footprint's end
 (where the film's side lobes close under load: ``END_WIDTH``); nodes on ``X = 0`` and ``Y = 0, +-Y_d``;
 elasticity by the dense influence matrix. ``("clustered", nx, ny)``: the same law with other node counts. ``(nx, ny)``:
-uniform, elasticity by DC-FFT and Newton-Krylov (:mod:`transient.models.roller.krylov`). Above the paper case's
+uniform, elasticity by DC-FFT and Newton-Krylov (:mod:`transient.models.roller.krylov`). ``("hybrid", nx, ny)``:
+x uniform, y clustered as the clustered grids; the elastic film by FFT along x and densely along y
+(:class:`~transient.physics.elasticity.RowConvolution`), the film-content Newton steps by GMRES with x-line
+blocks (:mod:`transient.models.roller.roller_lines`); the default above the paper case's load, with 89 y nodes
+and as many x nodes as the most loaded row needs (:attr:`RollerContact.grid_spec`). Above the paper case's
 load (mid-plane M > 3.2) the clustered x axes put 75 % of their nodes on the contact and 10 % on its outlet
 (``X_HEAVY``), and the default ``scheme="auto"`` limits the Couette flux (van Albada): the loaded end of the
 tilted roller carries ~2.5x the mid-plane's load per length, and where a row's x spacing exceeds 4 b/M of its
@@ -132,8 +136,8 @@ class RollerContact:
     ``roller`` (:class:`TaperedRoller`), ``load`` [N] (total), ``speed`` [m/s] (mean entrainment speed at
     the mid-plane), ``viscosity`` eta0 [Pa s], ``pressure_viscosity`` alpha [1/Pa], ``modulus`` E' [Pa],
     ``density``, ``viscosity_law``, ``dh_constants`` as in :class:`~transient.physics.lubricant.Lubricant`;
-    ``grid``: ``"paper"``, ``("clustered", nx, ny)`` or ``(nx, ny)`` (uniform), default None: the paper's grid up
-    to the paper case's load, 94 x 89 clustered above it (:attr:`grid_spec`); ``domain``: (inlet,
+    ``grid``: ``"paper"``, ``("clustered", nx, ny)``, ``("hybrid", nx, ny)`` (x uniform, y clustered) or ``(nx, ny)``
+    (uniform), default None: the paper's grid up to the paper case's load, a hybrid grid above it (:attr:`grid_spec`); ``domain``: (inlet,
     outlet) in units of c and the half-length of the domain in units of d; ``scheme``: the Couette flux,
     ``"upwind2"``, ``"upwind1"``, ``"limited"`` (second order, van Albada's limiter) or ``"auto"``
     (:attr:`flux_scheme`).

@@ -80,6 +80,8 @@ class LineBlocks:
         self.lu, self.piv, info = lapack.dgbtrf(ab, nx, nx, overwrite_ab=True)
         if info < 0:
             raise ValueError(f"dgbtrf: illegal argument {-info}")
+        # info > 0: an exactly singular band (no such step measured); its solves are not finite, so GMRES misses
+        # its tolerance and the step is flagged (line_newton.content_newton)
         self.nx, self.n = nx, n
         self.cvec = self._band_solve(A.j_h0 * A.inv_scale)
         self.w = c.weight * A.b_p
@@ -87,7 +89,7 @@ class LineBlocks:
         self.wc = wc if wc != 0.0 else 1.0
 
     def _band_solve(self, b):
-        x, info = lapack.dgbtrs(self.lu, self.nx, self.nx, b, self.piv)
+        x, _ = lapack.dgbtrs(self.lu, self.nx, self.nx, b, self.piv)
         return x
 
     def set_operator(self, A):
