@@ -70,15 +70,15 @@ from transient.physics.lubricant import DOWSON_HIGGINSON_PARK, Lubricant
 from transient.solvers.newton import NewtonError
 
 PAPER_GRID = (94, 45)
-#: the clustered grid of 94 x nodes and twice the paper's y nodes (the default above the paper's load before the
-#: x-uniform grids; its y axis is the default's)
+#: the clustered grid of 94 x nodes and twice the paper's y nodes; its y axis is the default grid's above the
+#: paper's load
 HEAVY_GRID = (94, 89)
 #: x node counts of the default x-uniform, y-clustered grid above the paper's load (:attr:`RollerContact.grid_spec`):
 #: the fewest whose worst row's x spacing is at most ``HYBRID_RATIO`` times 4 b/M of its own load
 #: (:meth:`RollerContact.dry_resolution`)
 HYBRID_NX = (128, 256, 512, 1024, 2048)
-#: measured on the tilted paper case (docs/validation.md): 256 x nodes (ratio 0.40) converge at 10x the paper's
-#: load in 15 Newton iterations; uniform grids of 128 x nodes (0.81) stall there
+#: measured on the tilted paper case at 10x its load (docs/validation.md): 256 x nodes (ratio 0.40) give H_c within
+#: ~3 % of the Richardson limit (34 s CPU), 128 (ratio 0.81) 12 % below it
 HYBRID_RATIO = 0.5
 #: the nested iteration on hybrid grids starts from the coarsest level whose worst row's x spacing is at most this
 #: times 4 b/M (10x: 128 x nodes, ratio 0.81, converge from the dry pressure; 50x: 128, ratio 3.6, do not); a
@@ -352,7 +352,8 @@ class RollerContact:
         """Grid specifications of the nested iteration, coarse to fine. Clustered grids: the x node count
         halved while it stays >= 40 (y is kept: coarser y grids do not resolve the profiled ends).
         Uniform grids: the clustered 47 x 45 grid first (also the coarse grid of the two-level
-        preconditioner), then uniform grids with the x node count halved while it stays >= 64."""
+        preconditioner), then uniform grids with the x node count halved while it stays >= 64. Hybrid grids: the
+        x node count halved while it stays >= ``HYBRID_NX[0]``."""
         kind, nx, ny = self.grid_spec
         out = [(kind, nx, ny)]
         if kind == "hybrid":
@@ -425,7 +426,9 @@ class RollerContact:
     def steady_content(self, tol: float = 1e-8, max_iter: int = 60, raise_on_failure: bool = True) -> RollerSteady:
         """Steady film of the mass-conserving form (:mod:`transient.models.roller.roller_fbns`) by FBNS Newton
         with a reused single-precision factorisation. Nested iteration over :meth:`levels` (above the paper case's
-        mid-plane M, 3.2, from the coarsest level that passes :meth:`check_resolution`'s rule): the coarsest level starts
+        mid-plane M, 3.2, from the coarsest level that passes :meth:`check_resolution`'s rule; on hybrid grids the
+        coarsest whose worst row's ratio is <= ``HYBRID_START_RATIO``, a coarse level that fails handing the dry
+        pressure on to the next): the coarsest level starts
         from the dry pressure (:func:`content_start`; no pseudo-time and no load continuation: on the paper grid
         Newton converges from it up to 6x the paper's load, and a load path from the paper's load stopped at
         6.7x, docs/ehl.md section 8), finer levels from the coarser solution interpolated. The grid is checked
