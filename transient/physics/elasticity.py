@@ -21,7 +21,8 @@ exact (Love, 1929)::
 :func:`surface_influence` and :func:`line_influence` return the dense matrices of these raw integrals
 (any tensor grid, exact); :class:`SurfaceConvolution` (point) and :class:`LineConvolution` (line) apply the
 same coefficients on a uniform grid by one zero-padded FFT product (Liu, Wang & Liu, *Wear* 243, 2000: "DC-FFT"), exact (no periodic
-wrap-around error), ``O(N log N)``. Models multiply by their own constant (``2/(pi E')`` in SI, or the
+wrap-around error), ``O(N log N)``; :class:`RowConvolution` on a grid uniform in x only (any y nodes): Toeplitz in
+x for every pair of rows, so FFT along x and a dense sum over the rows. Models multiply by their own constant (``2/(pi E')`` in SI, or the
 scaled factor of their units). Used by the EHL of the tapered roller (Park).
 """
 
@@ -146,3 +147,42 @@ class LineConvolution:
         if p.shape != (self.n,):
             raise ValueError(f"p must have shape ({self.n},), got {p.shape}")
         return np.fft.irfft(np.fft.rfft(p, self.length) * self.kernel_hat, self.length)[: self.n]
+
+
+class RowConvolution:
+    """``K p`` for the coefficients of :func:`surface_influence` on a tensor grid uniform in x only: ``nx``
+    nodes spaced ``dx`` (patches of width ``dx`` centred on them) and any y rows. For every pair of rows
+    (observation row ``J``, source row ``j``) the block of ``K`` is Toeplitz in x, ``K[(J, i), (j, k)] =
+    c_Jj(i - k)``, so the product is one zero-padded FFT along x of each source row, a dense sum over the source
+    rows per wave number, and one inverse FFT per observation row: exact (the same rectangle coefficients, no
+    wrap-around), ``O(ny_o ny_s nx)`` instead of the dense ``O(ny_o ny_s nx^2)``.
+
+    ``y_obs``: the observation rows; ``y_edges``: the source patches' edges along y (``ny_s + 1`` values);
+    ``apply(p)`` takes ``p`` of shape ``(ny_s, nx)`` and returns ``scale * K p``, shape ``(ny_o, nx)``;
+    ``coefficients[J, nx - 1 + d, j]`` is ``scale c_Jj(d)``."""
+
+    def __init__(self, nx: int, dx: float, y_obs, y_edges, scale: float = 1.0):
+        from scipy.fft import next_fast_len
+
+        self.nx = int(nx)
+        yo, ye = np.asarray(y_obs, float), np.asarray(y_edges, float)
+        self.ny_obs, self.ny_src = yo.size, ye.size - 1
+        d = np.arange(-(self.nx - 1), self.nx) * dx
+        k = surface_influence(d, yo, np.array([-0.5 * dx, 0.5 * dx]), ye) * scale
+        self.coefficients = k.reshape(self.ny_obs, d.size, self.ny_src)
+        self.length = next_fast_len(2 * self.nx - 1, real=True)
+        ext = np.zeros((self.ny_obs, self.length, self.ny_src))
+        # wrap-around order: offset d >= 0 at index d, offset d < 0 at index length + d
+        ext[:, : self.nx] = self.coefficients[:, self.nx - 1:]
+        ext[:, self.length - (self.nx - 1):] = self.coefficients[:, : self.nx - 1]
+        # an even kernel (c(d) = c(-d)) has a real spectrum; kept complex-free as (wave number, J, j)
+        self.kernel_hat = np.ascontiguousarray(np.fft.rfft(ext, axis=1).real.transpose(1, 0, 2))
+
+    def apply(self, p: np.ndarray) -> np.ndarray:
+        p = np.asarray(p, float)
+        if p.shape != (self.ny_src, self.nx):
+            raise ValueError(f"p must have shape ({self.ny_src}, {self.nx}), got {p.shape}")
+        ph = np.fft.rfft(p, self.length, axis=1)  # (ny_s, n_k)
+        parts = np.stack([ph.real.T, ph.imag.T], axis=2)  # (n_k, ny_s, 2)
+        out = self.kernel_hat @ parts  # (n_k, ny_o, 2)
+        return np.fft.irfft((out[..., 0] + 1j * out[..., 1]).T, self.length, axis=1)[:, : self.nx]

@@ -142,8 +142,7 @@ def test_five_times_the_paper_load_on_the_paper_grid_from_the_dry_pressure():
 def test_ten_times_the_paper_load_needs_the_loaded_ends_y_resolution():
     # 94 x 45: Newton from the dry pressure and the load path both stop, the film closing at the small end's
     # profiled part; doubling the y nodes (0.02 c there instead of 0.15 c) converges from the dry pressure
-    c = paper(10.0, None)  # the default grid above the paper's load: 94 x 89 clustered
-    assert c.grid_spec == ("clustered", 94, 89)
+    c = paper(10.0, ("clustered", 94, 89))
     s = c.steady()
     _checks(c, s)
     coarse = paper(10.0)
@@ -152,9 +151,10 @@ def test_ten_times_the_paper_load_needs_the_loaded_ends_y_resolution():
 
 
 def test_default_grid_doubles_the_y_nodes_above_the_papers_load():
-    """Without ``grid``: the paper's 94 x 45 at its load, 94 x 89 above it, kept along the load path."""
+    """Without ``grid``: the paper's 94 x 45 at its load, above it 89 y nodes (x uniform, as many nodes as the most
+    loaded row needs), kept along the load path."""
     assert paper(1.0, None).grid_spec == ("clustered", 94, 45)
     heavy = paper(2.0, None)
-    assert heavy.grid_spec == ("clustered", 94, 89)
-    assert heavy.with_load(0.5 * heavy.load).grid_spec == ("clustered", 94, 89)
+    assert heavy.grid_spec == ("hybrid", 128, 89)
+    assert heavy.with_load(0.5 * heavy.load).grid_spec == ("hybrid", 128, 89)
     assert paper(2.0).grid_spec == ("clustered", 94, 45)  # grid="paper" stays the paper's

@@ -21,7 +21,11 @@ gives the central film within 0.7 % of its grid-converged value, the uniform 94-
 Y at each end 25 % of the nodes on the profiled part of the footprint and 15 % on the footprint's end
 (where the film's side lobes close under load: ``END_WIDTH``); nodes on ``X = 0`` and ``Y = 0, +-Y_d``;
 elasticity by the dense influence matrix. ``("clustered", nx, ny)``: the same law with other node counts. ``(nx, ny)``:
-uniform, elasticity by DC-FFT and Newton-Krylov (:mod:`transient.models.roller.krylov`). Above the paper case's
+uniform, elasticity by DC-FFT and Newton-Krylov (:mod:`transient.models.roller.krylov`). ``("hybrid", nx, ny)``:
+x uniform, y clustered as the clustered grids; the elastic film by FFT along x and densely along y
+(:class:`~transient.physics.elasticity.RowConvolution`), the film-content Newton steps by GMRES with x-line
+blocks (:mod:`transient.models.roller.roller_lines`); the default above the paper case's load, with 89 y nodes
+and as many x nodes as the most loaded row needs (:attr:`RollerContact.grid_spec`). Above the paper case's
 load (mid-plane M > 3.2) the clustered x axes put 75 % of their nodes on the contact and 10 % on its outlet
 (``X_HEAVY``), and the default ``scheme="auto"`` limits the Couette flux (van Albada): the loaded end of the
 tilted roller carries ~2.5x the mid-plane's load per length, and where a row's x spacing exceeds 4 b/M of its
@@ -43,11 +47,13 @@ from __future__ import annotations
 
 import math
 import time
+from contextlib import nullcontext
 from functools import cached_property, partial
 from types import SimpleNamespace
 
 import numpy as np
 from scipy.interpolate import RegularGridInterpolator
+from threadpoolctl import threadpool_limits
 
 from transient.checks import check_memory, check_positive, check_range
 from transient.models.roller.continuation import PathResult, follow
@@ -64,8 +70,20 @@ from transient.physics.lubricant import DOWSON_HIGGINSON_PARK, Lubricant
 from transient.solvers.newton import NewtonError
 
 PAPER_GRID = (94, 45)
-#: the default clustered grid above the paper case's load (:attr:`RollerContact.grid_spec`)
+#: the clustered grid of 94 x nodes and twice the paper's y nodes; its y axis is the default grid's above the
+#: paper's load
 HEAVY_GRID = (94, 89)
+#: x node counts of the default x-uniform, y-clustered grid above the paper's load (:attr:`RollerContact.grid_spec`):
+#: the fewest whose worst row's x spacing is at most ``HYBRID_RATIO`` times 4 b/M of its own load
+#: (:meth:`RollerContact.dry_resolution`)
+HYBRID_NX = (128, 256, 512, 1024, 2048)
+#: measured on the tilted paper case at 10x its load (docs/validation.md): 256 x nodes (ratio 0.40) give H_c within
+#: ~3 % of the Richardson limit (34 s CPU), 128 (ratio 0.81) 12 % below it
+HYBRID_RATIO = 0.5
+#: the nested iteration on hybrid grids starts from the coarsest level whose worst row's x spacing is at most this
+#: times 4 b/M (10x: 128 x nodes, ratio 0.81, converge from the dry pressure; 50x: 128, ratio 3.6, do not); a
+#: coarse level that fails hands the dry pressure to the next
+HYBRID_START_RATIO = 1.0
 #: Couette flux of the Reynolds equation (:mod:`transient.models.roller.kernels`)
 SCHEMES = ("auto", "upwind2", "upwind1", "limited")
 #: steady forms: the mass-conserving film content (FBNS) and the Reynolds condition
@@ -118,8 +136,8 @@ class RollerContact:
     ``roller`` (:class:`TaperedRoller`), ``load`` [N] (total), ``speed`` [m/s] (mean entrainment speed at
     the mid-plane), ``viscosity`` eta0 [Pa s], ``pressure_viscosity`` alpha [1/Pa], ``modulus`` E' [Pa],
     ``density``, ``viscosity_law``, ``dh_constants`` as in :class:`~transient.physics.lubricant.Lubricant`;
-    ``grid``: ``"paper"``, ``("clustered", nx, ny)`` or ``(nx, ny)`` (uniform), default None: the paper's grid up
-    to the paper case's load, 94 x 89 clustered above it (:attr:`grid_spec`); ``domain``: (inlet,
+    ``grid``: ``"paper"``, ``("clustered", nx, ny)``, ``("hybrid", nx, ny)`` (x uniform, y clustered) or ``(nx, ny)``
+    (uniform), default None: the paper's grid up to the paper case's load, a hybrid grid above it (:attr:`grid_spec`); ``domain``: (inlet,
     outlet) in units of c and the half-length of the domain in units of d; ``scheme``: the Couette flux,
     ``"upwind2"``, ``"upwind1"``, ``"limited"`` (second order, van Albada's limiter) or ``"auto"``
     (:attr:`flux_scheme`).
@@ -152,18 +170,27 @@ class RollerContact:
     def with_load(self, load: float) -> "RollerContact":
         """The same roller, lubricant and grid specification at another total load [N] (its own dry
         footprint and scaled grid): the steps of the load continuation, which keep this contact's grid
-        law and Couette flux (:attr:`heavy`)."""
+        law, node counts (:attr:`grid_spec`) and Couette flux (:attr:`heavy`)."""
         c = RollerContact(self.roller, load, **self._options)
-        c.__dict__["heavy"] = self.heavy  # the cached property, fixed to the path's target
+        c.__dict__["heavy"] = self.heavy  # the cached properties, fixed to the path's target
+        c.__dict__["grid_spec"] = self.grid_spec
         return c
 
     @cached_property
     def grid_spec(self) -> tuple:
         """``(kind, nx, ny)``; without ``grid``: the paper's grid up to the paper case's load, and above it
-        (:attr:`heavy`) twice its y nodes, ``HEAVY_GRID``: the loaded end's side lobe needs them (at 5x the
-        paper's load H_min on 94 x 45 is 42 % below 94 x 89's; at 7x and 10x 94 x 45 does not converge, 94 x 89
-        does; docs/validation.md)."""
-        return ("clustered",) + (HEAVY_GRID if self.heavy else PAPER_GRID)
+        (:attr:`heavy`) the x-uniform, y-clustered grid ``("hybrid", nx, 89)``: twice the paper's y nodes (the
+        loaded end's side lobe needs them: at 5x the paper's load H_min on 94 x 45 is 42 % below 94 x 89's; at 7x
+        and 10x 94 x 45 does not converge, 94 x 89 does; docs/validation.md) and the fewest x nodes of
+        ``HYBRID_NX`` that resolve the most loaded row (``HYBRID_RATIO``), the elastic film by FFT along x
+        (:mod:`transient.models.roller.roller_lines`)."""
+        if not self.heavy:
+            return ("clustered",) + PAPER_GRID
+        ny = HEAVY_GRID[1]
+        for nx in HYBRID_NX:
+            if self.dry_resolution(self.make_grid("hybrid", nx, ny))["worst_ratio"] <= HYBRID_RATIO:
+                break
+        return ("hybrid", nx, ny)
 
     @cached_property
     def heavy(self) -> bool:
@@ -201,17 +228,17 @@ class RollerContact:
     def _parse_grid(grid):
         if isinstance(grid, str):
             if grid != "paper":
-                raise ValueError(f"grid = {grid!r}: use 'paper', ('clustered', nx, ny) or (nx, ny)")
+                raise ValueError(f"grid = {grid!r}: use 'paper', ('clustered', nx, ny), ('hybrid', nx, ny) or (nx, ny)")
             return ("clustered",) + PAPER_GRID
         if not isinstance(grid, (tuple, list)):
-            raise ValueError(f"grid = {grid!r}: use 'paper', ('clustered', nx, ny) or (nx, ny)")
+            raise ValueError(f"grid = {grid!r}: use 'paper', ('clustered', nx, ny), ('hybrid', nx, ny) or (nx, ny)")
         grid = tuple(grid)
-        if len(grid) == 3 and grid[0] == "clustered":
+        if len(grid) == 3 and grid[0] in ("clustered", "hybrid"):
             kind, nx, ny = grid
         elif len(grid) == 2:
             kind, (nx, ny) = "uniform", grid
         else:
-            raise ValueError(f"grid = {grid!r}: use 'paper', ('clustered', nx, ny) or (nx, ny)")
+            raise ValueError(f"grid = {grid!r}: use 'paper', ('clustered', nx, ny), ('hybrid', nx, ny) or (nx, ny)")
         nx = int(check_range("grid nx", nx, "nodes", 12, 4097))
         ny = int(check_range("grid ny", ny, "nodes", 8, 4097))
         return (kind, nx, ny)
@@ -284,8 +311,10 @@ class RollerContact:
         if kind == "uniform":
             return TensorGrid(np.linspace(x0, x1, nx), np.linspace(y0, y1, ny))
         s = self.scales
-        x = clustered_axis(x0, x1, nx, _weights(x1 - x0, X_HEAVY if self.heavy else X_PAPER),
-                           snap=[0.0])
+        if kind == "hybrid":
+            x = np.linspace(x0, x1, nx)
+        else:
+            x = clustered_axis(x0, x1, nx, _weights(x1 - x0, X_HEAVY if self.heavy else X_PAPER), snap=[0.0])
         yd = self.roller.y_d / s["B"]
         cl = []
         for start, end in ((-yd, s["y_lo"]), (yd, s["y_hi"])):
@@ -323,9 +352,15 @@ class RollerContact:
         """Grid specifications of the nested iteration, coarse to fine. Clustered grids: the x node count
         halved while it stays >= 40 (y is kept: coarser y grids do not resolve the profiled ends).
         Uniform grids: the clustered 47 x 45 grid first (also the coarse grid of the two-level
-        preconditioner), then uniform grids with the x node count halved while it stays >= 64."""
+        preconditioner), then uniform grids with the x node count halved while it stays >= 64. Hybrid grids: the
+        x node count halved while it stays >= ``HYBRID_NX[0]``."""
         kind, nx, ny = self.grid_spec
         out = [(kind, nx, ny)]
+        if kind == "hybrid":
+            while nx // 2 >= HYBRID_NX[0]:
+                nx //= 2
+                out.insert(0, ("hybrid", nx, ny))
+            return out
         if kind == "uniform":
             while nx // 2 >= 64:
                 nx //= 2
@@ -391,7 +426,9 @@ class RollerContact:
     def steady_content(self, tol: float = 1e-8, max_iter: int = 60, raise_on_failure: bool = True) -> RollerSteady:
         """Steady film of the mass-conserving form (:mod:`transient.models.roller.roller_fbns`) by FBNS Newton
         with a reused single-precision factorisation. Nested iteration over :meth:`levels` (above the paper case's
-        mid-plane M, 3.2, from the coarsest level that passes :meth:`check_resolution`'s rule): the coarsest level starts
+        mid-plane M, 3.2, from the coarsest level that passes :meth:`check_resolution`'s rule; on hybrid grids the
+        coarsest whose worst row's ratio is <= ``HYBRID_START_RATIO``, a coarse level that fails handing the dry
+        pressure on to the next): the coarsest level starts
         from the dry pressure (:func:`content_start`; no pseudo-time and no load continuation: on the paper grid
         Newton converges from it up to 6x the paper's load, and a load path from the paper's load stopped at
         6.7x, docs/ehl.md section 8), finer levels from the coarser solution interpolated. The grid is checked
@@ -403,7 +440,8 @@ class RollerContact:
         self.check_resolution()
         specs = self.levels()
         if self.mid_plane_M > M_EASY_2D:  # from the coarsest level that resolves the loaded rows
-            fine = [self.dry_resolution(self.make_grid(*sp))["worst_ratio"] <= RESOLUTION_LIMIT for sp in specs[:-1]]
+            limit = HYBRID_START_RATIO if specs[0][0] == "hybrid" else RESOLUTION_LIMIT
+            fine = [self.dry_resolution(self.make_grid(*sp))["worst_ratio"] <= limit for sp in specs[:-1]]
             specs = specs[fine.index(True) if any(fine) else -1:]
         info = {"method": "fbns", "levels": []}
         u, g_prev, iters, ok, msg, norms = None, None, 0, True, "", []
@@ -411,12 +449,16 @@ class RollerContact:
             last = k == len(specs) - 1
             g = self.grid if last else self.make_grid(*spec)
             tol_k = tol if last else math.sqrt(tol)
-            cf = self.content_film(g, spec[0] == "uniform")
+            cf = self.content_film(g, spec[0])
             level = {"grid": [int(g.x.size), int(g.y.size)]}
-            u0 = content_start(self, cf) if k == 0 else carry_content(g_prev, u, g)
+            cold = u is None
+            u0 = content_start(self, cf) if cold else carry_content(g_prev, u, g)
             try:
-                nr = solve_content(cf, u0, tol_k, max_iter if k == 0 else STEP_ITERATIONS,
-                                   f"RollerContact.steady FBNS Newton ({g.x.size} x {g.y.size})")
+                # the x-line factors and the FFT products are too small for BLAS threads to pay; on a shared
+                # machine threads waiting for a core cost 3-5x the CPU time (measured at 10x, 256 x 89)
+                with threadpool_limits(limits=1, user_api="blas") if spec[0] == "hybrid" else nullcontext():
+                    nr = solve_content(cf, u0, tol_k, max_iter if cold else STEP_ITERATIONS,
+                                       f"RollerContact.steady FBNS Newton ({g.x.size} x {g.y.size})")
                 ok = True
             except NewtonError as exc:
                 nr, ok = exc.result, False
@@ -427,6 +469,9 @@ class RollerContact:
             info["levels"].append(level)
             iters += its
             g_prev = g
+            if not ok and spec[0] == "hybrid" and not last:  # the next level from the dry pressure
+                u, ok = None, True
+                level["failed"] = msg
             if not ok:
                 break
         info["cpu_s"] = time.process_time() - c0
@@ -434,11 +479,16 @@ class RollerContact:
             msg = f"converged: {iters} Newton iterations over {len(specs)} grid level(s)"
         return self._finish(cf, u, ok, msg, iters, norms, t0, info, raise_on_failure)
 
-    def content_film(self, g: TensorGrid, uniform: bool) -> RollerContentFilm:
-        """The film-content form on ``g``: dense elasticity, or (``uniform``) DC-FFT products with matrix-free
-        Newton steps preconditioned on the clustered ``COARSE`` grid (:mod:`transient.models.roller.roller_fft`),
+    def content_film(self, g: TensorGrid, kind: str) -> RollerContentFilm:
+        """The film-content form on ``g`` of grid ``kind``: ``"clustered"``, dense elasticity; ``"hybrid"``, FFT-in-x
+        products with matrix-free Newton steps preconditioned by x-line blocks
+        (:mod:`transient.models.roller.roller_lines`); ``"uniform"``, DC-FFT products with matrix-free Newton
+        steps preconditioned on the clustered ``COARSE`` grid (:mod:`transient.models.roller.roller_fft`),
         which resolves the profiled ends."""
-        if not uniform:
+        kind = {True: "uniform", False: "clustered"}.get(kind, kind)  # the former flag ``uniform``
+        if kind == "hybrid":
+            return RollerContentFilm(self.film_problem(g, "xfft"))
+        if kind != "uniform":
             return RollerContentFilm(self.film_problem(g, "dense"))
         coarse = RollerContentFilm(self.film_problem(self.make_grid(*COARSE), "dense"))
         return RollerContentFilm(self.film_problem(g, "fft"), coarse=coarse)

@@ -22,11 +22,11 @@ import numpy as np
 
 from transient.models.roller.grid import TensorGrid
 from transient.models.roller.kernels import N_SLOTS, assemble_dense, fischer_burmeister, penalty, reynolds_kernel
-from transient.physics.elasticity import SurfaceConvolution, line_influence, surface_influence
+from transient.physics.elasticity import RowConvolution, SurfaceConvolution, line_influence, surface_influence
 from transient.physics.lubricant import Lubricant
 from transient.solvers.newton import NewtonSettings, newton
 
-ELASTIC = ("dense", "fft", "rigid")
+ELASTIC = ("dense", "fft", "xfft", "rigid")
 
 
 def slot_maps(grid: TensorGrid) -> tuple[np.ndarray, np.ndarray]:
@@ -56,7 +56,8 @@ class EHLFilm:
     ``rigid``: the rigid gap at every full node (flat, full grid); ``rs``: the local radius ratio
     (entrainment speed and curvature) per full y row; ``lam``: the wedge coefficient; ``w_bar``: the
     scaled load; ``p_scale`` [Pa]: the pressure unit (for the lubricant laws); ``elastic``: ``"dense"``
-    (influence matrix), ``"fft"`` (uniform grids) or ``"rigid"``; ``elastic_factor``: ``k_el``;
+    (influence matrix), ``"fft"`` (uniform grids: 2-D DC-FFT), ``"xfft"`` (grids uniform in x: FFT along x, dense
+    along y, :class:`~transient.physics.elasticity.RowConvolution`) or ``"rigid"``; ``elastic_factor``: ``k_el``;
     ``order2``: second-order upwind Couette flux (else first order); ``limiter``: second order with van
     Albada's limiter (:mod:`transient.models.roller.kernels`).
     """
@@ -68,6 +69,8 @@ class EHLFilm:
             raise ValueError(f"elastic = {elastic!r} is not one of {ELASTIC}")
         if elastic == "fft" and not (grid.two_d and grid.uniform):
             raise ValueError("FFT elasticity needs a uniform 2-D grid")
+        if elastic == "xfft" and not (grid.two_d and grid.uniform_x):
+            raise ValueError("FFT-in-x elasticity needs a 2-D grid uniform in x")
         self.grid = grid
         self.n = grid.n
         self.n_full = grid.x.size * (grid.y.size if grid.two_d else 1)
@@ -97,6 +100,9 @@ class EHLFilm:
         elif elastic == "fft":
             g = grid
             self.conv = SurfaceConvolution(g.x.size, g.y.size, g.x[1] - g.x[0], g.y[1] - g.y[0], scale=self.k_el)
+        elif elastic == "xfft":
+            g = grid
+            self.conv = RowConvolution(g.x.size, g.x[1] - g.x[0], g.y, g.y_edges, scale=self.k_el)
         self.F = np.empty(self.n)
         self.Sp = np.zeros((self.n, N_SLOTS))
         self.Sh = np.zeros((self.n, N_SLOTS))
@@ -126,6 +132,8 @@ class EHLFilm:
             return self.K @ p
         if self.elastic == "fft":
             return self.conv.apply(self.grid.full(p)).ravel()
+        if self.elastic == "xfft":
+            return self.conv.apply(self.grid.full(p)[1:-1]).ravel()
         return np.zeros(self.n_full)
 
     def deformation_approx(self, p) -> np.ndarray:

@@ -85,8 +85,13 @@ class TensorGrid:
         return np.outer(self.dy[1:-1], self.dx[1:-1]).ravel()
 
     @property
+    def uniform_x(self) -> bool:
+        """Equally spaced x nodes."""
+        return bool(np.allclose(np.diff(self.x), self.x[1] - self.x[0], rtol=1e-9, atol=0.0))
+
+    @property
     def uniform(self) -> bool:
-        ux = np.allclose(np.diff(self.x), self.x[1] - self.x[0], rtol=1e-9, atol=0.0)
+        ux = self.uniform_x
         uy = (not self.two_d) or np.allclose(np.diff(self.y), self.y[1] - self.y[0], rtol=1e-9, atol=0.0)
         return bool(ux and uy)
 

@@ -232,11 +232,14 @@ class TwoLevel(CoarseCorrection):
 
 class MatrixFreeStep:
     """Newton steps of one matrix-free solve: ``solve(content, u, e, b_p, b_t, r, stats)`` -> ``z`` by GMRES
-    with a two-level preconditioner, whose coarse factors are kept while GMRES needs at most ``REFRESH_ITERS``:
-    ``content.two_level(A, u)`` where the film has one (the roller's), else the line's :class:`TwoLevel`."""
+    with a preconditioner whose factors are kept while GMRES needs at most ``REFRESH_ITERS`` (or the film's
+    ``refresh_iters``): ``content.two_level(A, u)`` where the film has one (the roller's), else the line's
+    :class:`TwoLevel`. A step whose GMRES misses its tolerance after a fresh preconditioner is counted in
+    ``stats.krylov_misses``."""
 
     def __init__(self, content):
         self.two_level = getattr(content, "two_level", None) or self._line_two_level
+        self.refresh_iters = getattr(content, "refresh_iters", REFRESH_ITERS)
         self.factor = None if hasattr(content, "two_level") else coarsening_factor(content.nf)
         self.pre = None
         self.refresh = True
@@ -263,5 +266,7 @@ class MatrixFreeStep:
             stats.factorisations += 1
             z, more, ok = gmres_solve(A, r, self.pre, RTOL, restart=RESTART, max_iter=4 * RESTART)
             stats.krylov += more
-        self.refresh = its > REFRESH_ITERS or not ok
+        self.refresh = its > self.refresh_iters or not ok
+        if not ok:  # an inexact step: counted, and the Newton warns (line_newton.content_newton)
+            stats.krylov_misses += 1
         return z

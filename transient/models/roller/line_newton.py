@@ -32,6 +32,7 @@ from transient.models.point.reduced import schur
 from transient.models.roller.krylov import DenseLU
 from transient.models.roller.line_fbns import schur_rhs, schur_system
 from transient.models.roller.line_fft import MatrixFreeStep
+from transient.models.roller.results import InexactStepWarning
 
 #: GMRES iterations above which the preconditioner is refreshed at the next Newton iteration
 REFACTOR_ITERS = 12
@@ -45,11 +46,13 @@ GMRES_RESTART = 40
 
 @dataclass
 class ContentNewtonStats:
-    """Counts of one solve: Newton iterations, LU factorisations, GMRES iterations (all steps)."""
+    """Counts of one solve: Newton iterations, LU factorisations, GMRES iterations (all steps), steps whose GMRES
+    missed its tolerance (taken inexactly)."""
 
     iterations: int = 0
     factorisations: int = 0
     krylov: int = 0
+    krylov_misses: int = 0
     norms: list = field(default_factory=list)
 
 
@@ -98,7 +101,17 @@ def content_newton(film, u0, tol: float = 1e-10, max_iter: int = 60, step_max: f
     """Newton (module docstring) from ``u0`` until the largest scaled residual is below ``tol``.
 
     Returns ``(u, converged, stats)`` (:class:`ContentNewtonStats`; ``stats.norms`` the infinity norm of
-    the scaled residual per iteration)."""
+    the scaled residual per iteration). Steps whose GMRES missed its tolerance (matrix-free films) are never
+    taken silently: :class:`~transient.models.roller.results.InexactStepWarning` names their number."""
+    u, ok, stats = _content_newton(film, u0, tol, max_iter, step_max)
+    if stats.krylov_misses:
+        warnings.warn(InexactStepWarning(
+            f"{stats.krylov_misses} of {stats.iterations} Newton steps were taken with GMRES short of its tolerance "
+            f"(the solve {'converged' if ok else 'did not converge'})"), stacklevel=2)
+    return u, ok, stats
+
+
+def _content_newton(film, u0, tol, max_iter, step_max):
     n = film.n
     u = np.array(u0, float)
     e = film.equations(u)

@@ -22,6 +22,10 @@ class EHLConvergenceError(RuntimeError):
         self.result = result
 
 
+class InexactStepWarning(RuntimeWarning):
+    """Newton steps of a steady EHL solve were taken with their linear solve (GMRES) short of its tolerance."""
+
+
 class UnderResolvedGridError(ValueError):
     """The grid's x spacing cannot carry the load of its most loaded row (no Newton iteration was made):
     ``resolution`` is :meth:`RollerContact.dry_resolution`'s answer."""

@@ -35,6 +35,7 @@ from transient.models.roller.grid import TensorGrid
 from transient.models.roller.kernels import assemble_schur
 from transient.models.roller.line_newton import content_newton
 from transient.models.roller.roller_fft import RollerTwoLevel
+from transient.models.roller.roller_lines import LineBlocks
 from transient.solvers.newton import NewtonError
 
 
@@ -50,11 +51,16 @@ class RollerContentFilm:
         self.grid = film.grid
         self.n = film.n
         #: ``coarse`` given (a DC-FFT film): the Schur matrix is never formed; ``content_newton`` takes matrix-free
-        #: steps (:mod:`transient.models.roller.roller_fft`) preconditioned on ``coarse`` (a dense content film)
-        self.matrix_free = coarse is not None
+        #: steps (:mod:`transient.models.roller.roller_fft`) preconditioned on ``coarse`` (a dense content film);
+        #: an FFT-in-x film (``"xfft"``): matrix-free steps preconditioned by its x-line blocks
+        #: (:mod:`transient.models.roller.roller_lines`)
+        self.lines = film.elastic == "xfft"
+        self.matrix_free = coarse is not None or self.lines
         self.coarse = coarse
-        if self.matrix_free and film.elastic != "fft":
+        if coarse is not None and film.elastic != "fft":
             raise ValueError(f"RollerContentFilm: matrix-free steps need a DC-FFT film, got elastic = {film.elastic!r}")
+        if self.lines:
+            self.refresh_iters = LineBlocks.refresh_iters
         if film.elastic != "dense" and not self.matrix_free:
             check_memory(f"the dense influence matrix of this {film.grid.nx} x {film.grid.ny} grid",
                          dict(influence=8.0 * film.n_full * film.n, schur=12.0 * (film.n + 1) ** 2),
@@ -105,7 +111,10 @@ class RollerContentFilm:
         return S
 
     def two_level(self, A, u):
-        """The matrix-free step's preconditioner (:class:`~transient.models.roller.roller_fft.RollerTwoLevel`)."""
+        """The matrix-free step's preconditioner: :class:`~transient.models.roller.roller_lines.LineBlocks` on an
+        FFT-in-x film, else :class:`~transient.models.roller.roller_fft.RollerTwoLevel` on the coarse film."""
+        if self.lines:
+            return LineBlocks(A)
         return RollerTwoLevel(A, carry_content(self.grid, u, self.coarse.grid), self.coarse)
 
     def jacobian_product(self, e, v_p, v_t) -> np.ndarray:
@@ -175,7 +184,7 @@ def solve_content(cfilm: RollerContentFilm, u0, tol: float, max_iter: int, name:
     carrying it."""
     u, ok, st = content_newton(cfilm, u0, tol=tol, max_iter=max_iter)
     out = SimpleNamespace(x=u, iterations=st.iterations, factorisations=st.factorisations, krylov=st.krylov,
-                          residual_norms=st.norms)
+                          krylov_misses=st.krylov_misses, residual_norms=st.norms)
     if not ok:
         raise NewtonError(f"{name}: no convergence in {st.iterations} iterations (scaled residual "
                           f"{st.norms[-1]:.3g} > {tol:g})", out)
