@@ -120,14 +120,15 @@ def _time_fine_level(grid) -> float:
 def service_loads(quick: bool) -> list:
     """The tilted paper case at multiples of its load on the paper grid (``quick``: 1x and 5x on 62 x 45), side
     by side: the film-content FBNS solve (the default above the paper case's load) at 1x, 5x, 10x and 50x, and the Reynolds-condition solve
-    at 1x; at 10x also on the clustered 94 x 89, and at 10x and 50x on the default grid (x uniform, y clustered). Wall and CPU time, Newton iterations; a load that is refused or does not converge gives the named
+    at 1x; at 10x also on the clustered 94 x 89 and on the default grid (x uniform, y clustered; at 50x the
+    default grid is refused: it would need more x nodes than it is verified on). Wall and CPU time, Newton iterations; a load that is refused or does not converge gives the named
     error's message (docs/ehl.md, section 8)."""
     out = []
     grid = ("clustered", 62, 45) if quick else "paper"
     cases = [(1.0, "reynolds", grid), (1.0, "fbns", grid), (5.0, "fbns", grid)]
     if not quick:
         cases += [(10.0, "fbns", grid), (10.0, "fbns", ("clustered", 94, 89)), (10.0, "fbns", None),
-                  (50.0, "fbns", grid), (50.0, "fbns", None)]
+                  (50.0, "fbns", grid)]
     for factor, method, grid in cases:
         c = RollerContact.from_dimensionless(**dict(park.DIMENSIONLESS, W=park.DIMENSIONLESS["W"] * factor),
                                              roller=TaperedRoller(**dict(park.ROLLER, tilt_deg=0.002)),

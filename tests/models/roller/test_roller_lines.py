@@ -169,3 +169,11 @@ def test_ten_times_the_paper_load_converges_in_x_at_the_schemes_order():
         error, basis = error_estimate(fine, half, quarter, FORMAL_ORDER["limited"])
         assert error < 0.05, (name, basis)
         assert "observed order" in basis
+
+
+def test_a_load_whose_default_grid_is_unverified_is_refused_by_name():
+    kw = dict(park.DIMENSIONLESS, W=park.DIMENSIONLESS["W"] * 50.0)
+    contact = RollerContact.from_dimensionless(**kw, roller=TaperedRoller(**dict(park.ROLLER, tilt_deg=0.002)),
+                                               speed=park.SPEED)
+    with pytest.raises(ValueError, match=r"load = .* N .*allowed: .*grid=\('hybrid', nx, ny\)"):
+        contact.grid_spec

@@ -80,6 +80,10 @@ HYBRID_NX = (128, 256, 512, 1024, 2048)
 #: measured on the tilted paper case at 10x its load (docs/validation.md): 256 x nodes (ratio 0.40) give H_c within
 #: ~3 % of the Richardson limit (34 s CPU), 128 (ratio 0.81) 12 % below it
 HYBRID_RATIO = 0.5
+#: the most x nodes of a default grid: the largest on which the default is verified to converge (10x the paper's
+#: load); a load that needs more is refused without an explicit grid (50x: 512 x 89 does not converge, 1024 x 89
+#: needs ~2.2 GB for its band LU)
+HYBRID_NX_VERIFIED = 512
 #: the nested iteration on hybrid grids starts from the coarsest level whose worst row's x spacing is at most this
 #: times 4 b/M (10x: 128 x nodes, ratio 0.81, converge from the dry pressure; 50x: 128, ratio 3.6, do not); a
 #: coarse level that fails hands the dry pressure to the next
@@ -190,6 +194,12 @@ class RollerContact:
         for nx in HYBRID_NX:
             if self.dry_resolution(self.make_grid("hybrid", nx, ny))["worst_ratio"] <= HYBRID_RATIO:
                 break
+        if nx > HYBRID_NX_VERIFIED:
+            raise ValueError(f"load = {self.load:g} N (mid-plane M = {self.mid_plane_M:.3g}): the default grid would "
+                             f"need {nx} x {ny} nodes, more than the {HYBRID_NX_VERIFIED} x {ny} verified to converge "
+                             "(at 10x the paper's load; at 50x, 512 x 89 does not converge: docs/validation.md); "
+                             "allowed: a load whose default grid has at most "
+                             f"{HYBRID_NX_VERIFIED} x nodes, or an explicit grid=('hybrid', nx, ny)")
         return ("hybrid", nx, ny)
 
     @cached_property
