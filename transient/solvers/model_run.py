@@ -191,14 +191,14 @@ class ModelRun:
         self.chunk_outputs = max(1, int(round(self.chunk_revolutions * opr)))
 
     @staticmethod
-    def check_state(y, n: int, what: str, journals: list) -> np.ndarray:
-        """``y`` if it is a finite state of ``n`` numbers (``what`` has them) with every journal of ``journals``
-        (``[(where, e/C, limit)]``) inside its clearance, else a one-line ``ValueError``."""
+    def check_state(y, n: int, what: str, journals: Callable) -> np.ndarray:
+        """``y`` if it is a finite state of ``n`` numbers (``what`` has them) with every journal of ``journals(y)``
+        (``[(where, e/C, limit)]``, :class:`RunParts`) inside its clearance, else a one-line ``ValueError``."""
         if y.shape != (n,):
             raise ValueError(f"the initial state has shape {y.shape}; this {what} has {n} states")
         if not np.all(np.isfinite(y)):
             raise ValueError(f"the initial state has a non-finite entry at index {int(np.argmin(np.isfinite(y)))}")
-        for where, e, limit in journals:
+        for where, e, limit in journals(y):
             if e >= limit:
                 raise ValueError(f"the initial state: the {where} is outside the clearance: e/C = {e:.4g} [-]; "
                                  f"allowed: [0, {limit:.4g})")

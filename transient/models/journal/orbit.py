@@ -367,7 +367,7 @@ class JournalOrbit:
         if y is None:
             y = self.initial_state() if y0 is None else state_array(y0)
         tau0 = t0 * self.film.omega
-        run.check_state(y, self.n, "orbit", self._journal(y))
+        run.check_state(y, self.n, "orbit", self._journal)
         step = self._stepper(ig, formulation, run.touch_gap)
         content = formulation == "content"
         solver = dict(method=method, rtol=step.rtol, atol=step.atol, linear_solver=ig.linear_solver,
