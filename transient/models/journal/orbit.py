@@ -589,8 +589,8 @@ def check_orbit_memory(cells, revolutions, outputs_per_revolution=100, record=()
     parts = orbit_memory(cells, revolutions, outputs_per_revolution, record, record_from_revolution,
                          band_rows=band_rows)
     check_run_memory(f"this orbit run ({revolutions:g} rev x {outputs_per_revolution} outputs/rev on {cells} cells)",
-                     parts, GRID_ADVICE, "lower revolutions or outputs_per_revolution, or record fewer series (record=, "
-                     "record_from_revolution=) (a long run can go on in parts with start=)")
+                     parts, GRID_ADVICE, "lower revolutions or outputs_per_revolution, or record fewer series "
+                     "(record=, record_from_revolution=) (a long run can go on in parts with start=)")
 
 
 def check_orbit_grid_memory(cells):

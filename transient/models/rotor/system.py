@@ -545,8 +545,12 @@ class RotorBearingSystem:
                 raise ValueError(f"speed_rpm(t = {t0:g} s) = {s0 * ref:g} [rpm]: a film carries no load at rest; "
                                  "allowed: > 0 (start a run-up from a low speed)")
             y = self._steady(dae, s0)
-        journals = lambda y_: [(f"journal at bearing node {b.node}", float(np.hypot(*b.position(y_[dae.Q0:dae.V0]))),  # noqa: E731
-                                b.bearing.max_eccentricity_ratio) for b in dae.blocks]
+
+        def journals(y_):
+            q = y_[dae.Q0:dae.V0]
+            return [(f"journal at bearing node {b.node}", float(np.hypot(*b.position(q))),
+                     b.bearing.max_eccentricity_ratio) for b in dae.blocks]
+
         run.check_state(y, dae.n, "system", journals)
         tau0, tau_end = t0 * w, t_end * w
         limits = [(b.bearing.max_eccentricity_ratio - run.touch_gap) ** 2 for b in dae.blocks]
