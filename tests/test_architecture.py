@@ -223,6 +223,16 @@ def _long_signatures(root):
     return out
 
 
+def test_every_model_runs_through_the_one_run_driver():
+    """A model's run in the time domain goes through ``solvers/model_run.py`` (start, recorder, checkpoints, stop,
+    touch event, wall), never straight to the long-run driver ``run_long`` beneath it."""
+    direct = sorted(str(path.relative_to(PKG)) for path in (PKG / "models").rglob("*.py")
+                    for node in ast.walk(ast.parse(path.read_text()))
+                    if isinstance(node, ast.ImportFrom) and node.module == "transient.solvers.longrun"
+                    and any(a.name == "run_long" for a in node.names))
+    assert direct == [], f"run_long imported by {direct}; a model's run goes through transient.solvers.model_run"
+
+
 def test_no_public_function_takes_more_than_12_parameters():
     """Settings travel as objects (``transient.solvers.settings``, ``Steps``, ``NewtonSettings``,
     ``ShootingSettings``, ``TrackSettings``): every parameter counts, keyword-only ones and ``**kwargs`` too; the

@@ -1,4 +1,4 @@
-"""The long-run driver (used by the journal orbit): chunks, a progress bar, checkpoint/resume, clean Ctrl-C.
+"""The long-run driver under every model's run (:mod:`~transient.solvers.model_run`): chunks, checkpoints, Ctrl-C.
 
 :func:`run_long` integrates a model's :class:`~transient.solvers.integrate.Problem` from ``t0`` over
 ``n_outputs`` output intervals of length ``dt_out`` (model time), in chunks of ``chunk_outputs``

@@ -112,3 +112,24 @@ def test_a_speed_function_is_evaluated_only_inside_the_run(bearing):
     assert r.success and r.final_time == pytest.approx(span, rel=1e-9)
     assert min(seen) >= 0.0 and max(seen) <= span
     assert r.speed_rpm[0] == 0.0 and r.speed_rpm[-1] == pytest.approx(6000.0 * span / 0.05, rel=1e-9)
+
+
+def test_a_rotor_run_stops_where_its_stop_says_with_the_run_so_far(bearing):
+    """A rotor run takes ``LongRun(stop=)`` (the settle loops' hook) as the orbit does: asked after every chunk with
+    the result so far, a non-empty answer ends the run as a success with that message; the outputs up to there are
+    those of the same run without the stop."""
+    s = RotorBearingSystem(Rotor.jeffcott(2e7, 90.0, 5.0), {0: bearing, 2: bearing}, unbalance=[(1, 2e-5, 0.0)])
+    seen = []
+
+    def stop(partial):
+        seen.append((len(partial.t), partial.displacement.shape, partial.final_state.shape))
+        return "enough" if len(partial.t) > 8 else None
+
+    rec, lr = Recording(outputs_per_revolution=16), LongRun(chunk_revolutions=0.25, progress=False)
+    r = s.run(1.0, 3000, recording=rec, long_run=LongRun(chunk_revolutions=0.25, stop=stop, progress=False))
+    whole = s.run(1.0, 3000, recording=rec, long_run=lr)
+    assert r.success and r.message == "enough"
+    assert [n for n, _, _ in seen] == [5, 9] and len(r.t) == 9 and len(whole.t) == 17
+    assert seen[-1][1] == r.displacement.shape and seen[-1][2] == whole.final_state.shape
+    np.testing.assert_array_equal(r.displacement, whole.displacement[:9])
+    np.testing.assert_array_equal(r.t, whole.t[:9])

@@ -23,14 +23,12 @@ from which ``run(..., resume=True)`` continues after a crash with nothing lost.
 
 from __future__ import annotations
 
-import hashlib
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, field
 from typing import Callable
 
 import numpy as np
 
-from transient.checks import (ATOL_FLOOR, ATOL_WHY, check_choice, check_memory, check_positive, check_range,
-                              memory_limit)
+from transient.checks import ATOL_FLOOR, ATOL_WHY, check_choice, check_memory, check_positive, check_range
 from transient.compile_notice import announce
 from transient.models.journal.bearing import GRID_ADVICE, JournalBearing, check_speed
 from transient.models.journal.film import read_only
@@ -42,8 +40,9 @@ from transient.models.journal.scales import Rotor
 from transient.models.journal.rk4 import FilmStageSolver
 from transient.models.journal.content_newton import bdf2_newton, decoupled_pattern
 from transient.solvers.integrate.bdf2 import Bdf2Model
-from transient.solvers.integrate import Problem, Stats, Steps
-from transient.solvers.longrun import Display, run_long
+from transient.solvers.integrate import Problem, Steps
+from transient.solvers.model_run import (ModelRun, RunParts, check_run_memory, start_point, state_array,
+                                         wall_crossing)
 from transient.solvers.settings import (FORMULATIONS, Integration, LongRun, Recording, keyword_table,
                                        run_settings)
 from transient.units import rpm_to_hz
@@ -369,69 +368,102 @@ class JournalOrbit:
         if method == "rk4" and formulation != "universal":
             raise ValueError('method "rk4" solves the film in the universal variable; formulation must be "universal"')
         opr = rc.outputs_per_revolution
-        if revolutions * opr < 1.0 - 1e-9:
-            raise ValueError(f"revolutions = {revolutions!r} [rev] is less than one output interval; allowed: >= "
-                             f"{1 / opr:g} rev at outputs_per_revolution = {opr}")
+        run = ModelRun(revolutions, opr, lr, touch_gap)
         check_orbit_memory(self.film.n, revolutions, opr, rc.record, rc.record_from_revolution,
                            band_rows=self._band_rows(method))
-        touch_gap = check_range("touch_gap", touch_gap, "-", 0.0, 1.0, high_open=True,
-                                why="(0 turns touch detection off)")
-        chunk_revolutions = lr.chunk_revolutions
-        if chunk_revolutions is None:
-            chunk_revolutions = 10.0 if lr.checkpoint else revolutions
-        chunk_revolutions = check_range("chunk_revolutions", chunk_revolutions, "rev", 1.0 / opr, np.inf,
-                                        why="(at least one output interval)")
-        rec = _Recorder(self, rc.record, rc.record_from_revolution, formulation)
-        two_pi = 2 * np.pi
-        if start is not None:
-            t_start, y = (start.final_time, start.final_state) if isinstance(start, OrbitResult) else start
-            tau0 = float(t_start) * self.film.omega
-            y = _state_array(y)
-        else:
-            tau0 = 0.0
-            y = self.initial_state() if y0 is None else _state_array(y0)
-        if y.shape != (self.n,):
-            raise ValueError(f"the initial state has shape {y.shape}; this orbit has {self.n} states")
-        if not np.all(np.isfinite(y)):
-            raise ValueError(f"the initial state has a non-finite entry at index {int(np.argmin(np.isfinite(y)))}")
-        e_start = float(np.hypot(y[self.film.n], y[self.film.n + 1]))
-        if e_start >= self.bearing.max_eccentricity_ratio:
-            raise ValueError(f"the initial journal position is outside the clearance: e/C = {e_start:.4g} "
-                             f"[-]; allowed: [0, {self.bearing.max_eccentricity_ratio:.4g})")
-        rec.last_y = y
-        n_out = max(1, int(round(revolutions * opr)))
-        step = self._stepper(ig, formulation, touch_gap)
-        key = dict(self.parameters(), **ig.key(), outputs_per_revolution=opr, record=sorted(rc.record),
-                   record_from_revolution=rc.record_from_revolution, touch_gap=touch_gap,
-                   chunk_revolutions=chunk_revolutions, start_time=tau0 / self.film.omega, formulation=formulation,
-                   start_state=hashlib.sha256(np.ascontiguousarray(y).tobytes()).hexdigest()[:16])
-        user_stop = None if lr.stop is None else (lambda r: lr.stop(r.result(method, Stats(), None, "", tau0)))
-        y_run = self.content_state(y) if formulation == "content" else y
+        t0, y = start_point(start, OrbitResult)
+        if y is None:
+            y = self.initial_state() if y0 is None else state_array(y0)
+        tau0 = t0 * self.film.omega
+        run.check_state(y, self.n, "orbit", self._journal)
+        step = self._stepper(ig, formulation, run.touch_gap)
+        content = formulation == "content"
         solver = dict(method=method, rtol=step.rtol, atol=step.atol, linear_solver=ig.linear_solver,
                       options=step.options,
                       steps=Steps(dt=step.dt, max_step=step.max_step, first_step=step.first_step))
-        out = run_long(step.problem_at, y_run, tau0, two_pi / opr, n_out, rec, solver=solver,
-                       long_run=replace(lr, stop=user_stop), chunk_outputs=max(1, int(round(chunk_revolutions * opr))),
-                       key=key, display=Display(f"orbit {self.speed_rpm:g} rpm", ("rev", two_pi),
-                                                lambda: f"e/C = {rec.last_eps:.4f}"))
+        key = dict(self.parameters(), **ig.key(), outputs_per_revolution=opr, record=sorted(rc.record),
+                   record_from_revolution=rc.record_from_revolution, formulation=formulation)
+        series = ("x", "y", *rc.record)
+        parts = RunParts(label=f"orbit {self.speed_rpm:g} rpm", omega=self.film.omega, revolution=2 * np.pi,
+                         problem_at=step.problem_at, solver=solver, series=series, sparse=FIELD_SERIES,
+                         sample=self._sampler(rc.record, 2 * np.pi * rc.record_from_revolution),
+                         journals=self._journal,
+                         eccentricities=lambda r: [("journal", np.hypot(r.x, r.y) / self.bearing.clearance,
+                                                    self.bearing.max_eccentricity_ratio)],
+                         touch_message=lambda tau, y_: self._touch_message(tau, run.touch_gap),
+                         result=lambda rec, stats, touched, message, tau_end: self._result(
+                             rec, rc.record, method, stats, touched, message, tau_end),
+                         to_run=self.content_state if content else None,
+                         universal=self.universal_state if content else None, key=key)
+        r = run.go(parts, y, tau0, 2 * np.pi / opr)
         if method == "rk4":
-            out.stats.n_jac = sum(s.n_factorisations for s in step.steppers)
-        touched, message, success = None, out.message, out.success
-        if out.event is not None:
-            touched = out.event[0] / self.film.omega
-            what = "journal touches the bearing" if self.bearing.layers is None else "boundary layers touch"
-            message = (f"{what} (eccentricity ratio {self.bearing.max_eccentricity_ratio - touch_gap:.4f}) at t = "
-                       f"{touched:.6g} s ({touched * rpm_to_hz(self.speed_rpm):.2f} revolutions)")
-            success = False
-        # the driver's last state, also when a finished checkpoint is resumed and nothing was left to run
-        rec.last_y = self.universal_state(out.y) if formulation == "content" else np.array(out.y)
-        r = rec.result(method, out.stats, touched, message, out.t)
-        through = wall_crossing(r.t, np.hypot(r.x, r.y) / self.bearing.clearance, self.bearing.max_eccentricity_ratio)
-        if through and out.event is None:
-            success, r.message = False, (f"the journal {through} (touch_gap > 0 stops a run there)"
-                                         + ("" if out.success else f"; then {out.message}"))
-        r.success = success
+            r.stats.n_jac = sum(s.n_factorisations for s in step.steppers)
         return r
+
+    def _journal(self, y) -> list:
+        """The journal's place in a state of the universal layout (:class:`~transient.solvers.model_run.RunParts`)."""
+        n = self.film.n
+        return [("journal", float(np.hypot(y[n], y[n + 1])), self.bearing.max_eccentricity_ratio)]
+
+    def _touch_message(self, tau, touch_gap) -> str:
+        t = tau / self.film.omega
+        what = "journal touches the bearing" if self.bearing.layers is None else "boundary layers touch"
+        return (f"{what} (eccentricity ratio {self.bearing.max_eccentricity_ratio - touch_gap:.4f}) at t = "
+                f"{t:.6g} s ({t * rpm_to_hz(self.speed_rpm):.2f} revolutions)")
+
+    def _sampler(self, record, tau_fields) -> Callable:
+        """``sample(tau, y)``: the outputs of a run at one output time, ``y`` in the universal layout: x, y [m]
+        always, the ``record`` series asked for (fields from ``tau_fields`` on)."""
+        o, f = self, self.film
+        n = f.n
+        C = o.bearing.clearance
+        fields = [k for k in record if k in FIELD_SERIES]
+
+        def sample(tau, y):
+            row = dict(x=y[n] * C, y=y[n + 1] * C)
+            if not record:
+                return row
+            if "force" in record:
+                F = f.force(y[:n], y[n], y[n + 1])
+                row["force"] = (F[0] * f.force_scale, F[1] * f.force_scale)
+            if "min_film" in record:
+                row["min_film"] = C * (1.0 - np.hypot(y[n], y[n + 1]))
+            if "mass" in record or "outflow" in record:
+                M, q_ends, q_groove = f.mass_flows(y[:n], y[n], y[n + 1])
+                vol = C * o.bearing.radius ** 2
+                if "mass" in record:
+                    row["mass"] = M * vol
+                if "outflow" in record:
+                    row["outflow"] = (q_ends * vol * f.omega, q_groove * vol * f.omega)
+            if "supply_flow" in record or "side_leakage" in record:
+                supply, _, leak = film_flows(f, y[:n], y[n], y[n + 1])
+                unit = C * o.bearing.radius ** 2 * f.omega
+                for k, v in (("supply_flow", supply), ("side_leakage", leak)):
+                    if k in record:
+                        row[k] = v * unit
+            if fields and tau >= tau_fields - 1e-12:
+                f.residual(y[:n], y[n], y[n + 1])  # fills P and theta = C(u) (u is not theta - 1 in cavitation)
+                grid = o.bearing.grid
+                if "pressure" in record:
+                    row["pressure"] = grid.to_2d(o.bearing.cavitation_pressure + f.p0 * f.P).astype(np.float32)
+                if "film_content" in record:
+                    row["film_content"] = grid.to_2d(f.C).astype(np.float32)
+            return row
+
+        return sample
+
+    def _result(self, rec, record, method, stats, touched, message, tau_end) -> OrbitResult:
+        a = rec.arrays()
+        extra = {}
+        for k in record:
+            extra[k] = a[k]
+            if k in FIELD_SERIES:
+                if not a[k].size:
+                    extra[k] = np.zeros((0, self.bearing.grid.z.n, self.bearing.grid.x.n), dtype=np.float32)
+                extra[k + "_t"] = a[k + "_t"]
+        return OrbitResult(t=a["t"], x=a["x"], y=a["y"], method=method, stats=stats, speed_rpm=self.speed_rpm,
+                           clearance=self.bearing.clearance, touched_at=touched, message=message,
+                           final_state=rec.last_y, final_time=float(tau_end) / self.film.omega, **extra)
 
     def _stepper(self, ig: Integration, formulation: str, touch_gap: float) -> "_Step":
         """The problem at a chunk's start and what :func:`~transient.solvers.integrate.solve` needs for ``ig``:
@@ -564,13 +596,9 @@ def check_orbit_memory(cells, revolutions, outputs_per_revolution=100, record=()
     its solver alone do not fit, else the run's length and recordings."""
     parts = orbit_memory(cells, revolutions, outputs_per_revolution, record, record_from_revolution,
                          band_rows=band_rows)
-    if sum(v for k, v in parts.items() if k != "recordings") > memory_limit():
-        advice = GRID_ADVICE
-    else:
-        advice = ("lower revolutions or outputs_per_revolution, or record fewer series (record=, "
-                  "record_from_revolution=) (a long run can go on in parts with start=)")
-    check_memory(f"this orbit run ({revolutions:g} rev x {outputs_per_revolution} outputs/rev on {cells} cells)",
-                 parts, advice)
+    check_run_memory(f"this orbit run ({revolutions:g} rev x {outputs_per_revolution} outputs/rev on {cells} cells)",
+                     parts, GRID_ADVICE, "lower revolutions or outputs_per_revolution, or record fewer series "
+                     "(record=, record_from_revolution=) (a long run can go on in parts with start=)")
 
 
 def check_orbit_grid_memory(cells):
@@ -595,133 +623,6 @@ class _Step:
     first_step: float = 0.0
     options: dict | None = None
     steppers: list = field(default_factory=list)
-
-
-class _Recorder:
-    """Keeps x, y (always) and the requested series at the output times; streams, never the whole state."""
-
-    def __init__(self, orbit: JournalOrbit, record, record_from_revolution, formulation="universal"):
-        self.o = orbit
-        self.content = formulation == "content"
-        self.record = tuple(record)
-        self.tau0_fields = 2 * np.pi * record_from_revolution
-        self.t, self.x, self.y = [], [], []
-        self.series = {k: [] for k in self.record}
-        self.field_t = {k: [] for k in self.record if k in FIELD_SERIES}
-        self.last_y = None
-        self.last_tau = -np.inf
-
-    def observe(self, tau, y):
-        o, f = self.o, self.o.film
-        n = f.n
-        y = o.universal_state(y) if self.content else np.array(y)
-        self.last_y = y
-        if tau <= self.last_tau:  # a chunk starts with the last output of the previous one
-            return
-        self.last_tau = tau
-        C = o.bearing.clearance
-        self.t.append(tau / f.omega)
-        self.x.append(y[n] * C)
-        self.y.append(y[n + 1] * C)
-        if not self.record:
-            return
-        if "force" in self.record:
-            F = f.force(y[:n], y[n], y[n + 1])
-            self.series["force"].append((F[0] * f.force_scale, F[1] * f.force_scale))
-        if "min_film" in self.record:
-            self.series["min_film"].append(C * (1.0 - np.hypot(y[n], y[n + 1])))
-        if "mass" in self.record or "outflow" in self.record:
-            M, q_ends, q_groove = f.mass_flows(y[:n], y[n], y[n + 1])
-            vol = C * o.bearing.radius ** 2
-            if "mass" in self.record:
-                self.series["mass"].append(M * vol)
-            if "outflow" in self.record:
-                self.series["outflow"].append((q_ends * vol * f.omega, q_groove * vol * f.omega))
-        if "supply_flow" in self.record or "side_leakage" in self.record:
-            supply, _, leak = film_flows(f, y[:n], y[n], y[n + 1])
-            unit = C * o.bearing.radius ** 2 * f.omega
-            for k, v in (("supply_flow", supply), ("side_leakage", leak)):
-                if k in self.record:
-                    self.series[k].append(v * unit)
-        if tau >= self.tau0_fields - 1e-12 and self.field_t:
-            f.residual(y[:n], y[n], y[n + 1])  # fills P and theta = C(u) (u is not theta - 1 in cavitation)
-            grid = o.bearing.grid
-            if "pressure" in self.record:
-                self.series["pressure"].append(grid.to_2d(o.bearing.cavitation_pressure + f.p0 * f.P).astype(np.float32))
-            if "film_content" in self.record:
-                self.series["film_content"].append(grid.to_2d(f.C).astype(np.float32))
-            for k in self.field_t:
-                self.field_t[k].append(tau / f.omega)
-
-    @property
-    def last_eps(self):
-        n = self.o.film.n
-        return float(np.hypot(self.last_y[n], self.last_y[n + 1]))
-
-    def times(self) -> np.ndarray:
-        """The output times held, in the run's time tau = omega t (checked against a checkpoint's count)."""
-        return np.array(self.t) * self.o.film.omega
-
-    def arrays(self) -> dict:
-        """Everything recorded, as plain arrays (checkpoints)."""
-        out = dict(t=np.array(self.t), x=np.array(self.x), y=np.array(self.y), last_tau=np.array(self.last_tau))
-        for k, v in self.series.items():
-            out[k] = np.array(v, dtype=np.float32 if k in FIELD_SERIES else float)
-        for k, v in self.field_t.items():
-            out[k + "_t"] = np.array(v)
-        return out
-
-    def restore(self, a: dict):
-        """Take the arrays of a checkpoint; ``ValueError`` if they do not fit each other."""
-        rows = len(a["t"])
-        if np.ndim(a["t"]) != 1 or not np.all(np.isfinite(a["t"])) or np.any(np.diff(a["t"]) <= 0):
-            raise ValueError("its times are not finite and increasing")
-        for k in ("x", "y", *self.series):
-            if len(a[k]) != rows if k not in FIELD_SERIES else len(a[k]) != len(a[k + "_t"]):
-                raise ValueError(f"{k} has {len(a[k])} rows, t has {rows}")
-        if rows and float(a["last_tau"]) != float(a["t"][-1]) * self.o.film.omega:
-            if not np.isclose(float(a["last_tau"]), float(a["t"][-1]) * self.o.film.omega, rtol=1e-12):
-                raise ValueError("its last output time does not match its last row")
-        self.t, self.x, self.y = list(a["t"]), list(a["x"]), list(a["y"])
-        self.last_tau = float(a["last_tau"])
-        for k in self.series:
-            self.series[k] = list(a[k]) if k in FIELD_SERIES else a[k].tolist()
-        for k in self.field_t:
-            self.field_t[k] = list(a[k + "_t"])
-
-    def result(self, method, stats, touched, message, tau_end) -> OrbitResult:
-        o = self.o
-        extra = {}
-        for k, v in self.series.items():
-            if k in FIELD_SERIES:
-                extra[k] = np.array(v) if v else np.zeros((0, o.bearing.grid.z.n, o.bearing.grid.x.n), dtype=np.float32)
-                extra[k + "_t"] = np.array(self.field_t[k])
-            else:
-                extra[k] = np.array(v, dtype=float)
-        return OrbitResult(t=np.array(self.t), x=np.array(self.x), y=np.array(self.y), method=method, stats=stats,
-                           speed_rpm=o.speed_rpm, clearance=o.bearing.clearance, touched_at=touched, message=message,
-                           final_state=self.last_y, final_time=float(tau_end) / o.film.omega, **extra)
-
-
-def wall_crossing(t, eps, limit) -> str:
-    """Where a run's journal reached ``limit`` (e/C = 1, less any boundary layers) or beyond -- a negative film,
-    no result (the touch event, ``touch_gap`` > 0, stops a run before it): "" if it never did, else a phrase with
-    the first output time [s] there and the largest e/C."""
-    over = np.flatnonzero(np.asarray(eps) >= limit)
-    if over.size == 0:
-        return ""
-    return (f"reaches e/C = {float(np.max(eps)):.4f} from t = {float(t[over[0]]):.6g} s (allowed: below "
-            f"{limit:.4g}): a negative film, not a result")
-
-
-def _state_array(y) -> np.ndarray:
-    """A user's initial state as a float array (a one-line error naming it otherwise)."""
-    if isinstance(y, (str, bytes)):
-        raise ValueError(f"the initial state y0 must be an array of numbers, got {y!r}")
-    try:
-        return np.array(y, dtype=float)
-    except (TypeError, ValueError):
-        raise ValueError(f"the initial state y0 must be an array of numbers, got {type(y).__name__}") from None
 
 
 def _prefetching(film, callback, formulation):

@@ -28,20 +28,20 @@ from scipy.integrate import quad
 from scipy.optimize import brentq
 
 from transient.checks import (check_bool, check_choice, check_instance, check_int, check_items, check_memory,
-                              check_positive, check_range, check_vector, memory_limit, short_repr)
+                              check_positive, check_range, check_vector, short_repr)
 from transient.models.journal.bearing import (FILM_BYTES_PER_CELL, GRID_ADVICE, SPEED_RANGE_RPM, JournalBearing,
                                               NoEquilibriumError, bearing_memory, check_speed)
 from transient.compile_notice import announce
 from transient.models.journal.film import read_only
 from transient.models.damper.damper import SqueezeFilmDamper
-from transient.models.journal.orbit import BDF2_MIN_STEPS, wall_crossing
+from transient.models.journal.orbit import BDF2_MIN_STEPS
 from transient.models.rotor.content_form import ContentSystem
 from transient.models.rotor.model import SystemDAE
 from transient.models.rotor.results import RotorEquilibrium, RotorRunResult, UnbalanceResponse
 from transient.models.rotor.rotor import Rotor
 from transient.solvers.bandlu import BorderedBandLU
 from transient.solvers.integrate import Problem, Stats, Steps
-from transient.solvers.longrun import Display, run_long
+from transient.solvers.model_run import ModelRun, RunParts, check_run_memory, start_point, wall_crossing
 from transient.solvers.settings import Integration, LongRun, Recording, check_unused, keyword_table, run_settings
 from transient.solvers.newton import NewtonError, NewtonSettings, newton
 from transient.solvers.shooting import ShootingSettings
@@ -498,7 +498,9 @@ class RotorBearingSystem:
             revolution at the reference speed (default 100).
         long_run : :class:`~transient.solvers.settings.LongRun`: ``checkpoint``, the path of an ``.npz``
             rewritten after every chunk (``resume=True`` continues from it), ``chunk_revolutions`` (default: the
-            whole run, 10 with a checkpoint), ``progress``, ``time_budget`` [s of wall time].
+            whole run, 10 with a checkpoint), ``progress``, ``time_budget`` [s of wall time], ``stop``:
+            ``stop(result_so_far) -> str | None`` after every chunk, a non-empty string ends the run and becomes
+            its message (e.g. "settled").
         start : None (the static equilibrium at the start speed, at rest), a previous :class:`RotorRunResult`
             (continued from its final state and time, at its reference speed) or ``(t [s], state)`` (a state at this
             run's reference speed: e.g. ``linear_start``, ``equilibrium(...).state`` or a periodic response's at the
@@ -521,23 +523,15 @@ class RotorBearingSystem:
         check_unused("RotorBearingSystem.run", "integration", ig, ("steps_per_revolution", "formulation", "dt",
                                                                    "linear_solver"))
         check_unused("RotorBearingSystem.run", "recording", rc, ("record", "record_from_revolution"))
-        check_unused("RotorBearingSystem.run", "long_run", lr, ("stop",))
         method, rtol, atol, opr = ig.method, ig.rtol, ig.atol, rc.outputs_per_revolution
-        chunk_revolutions, checkpoint = lr.chunk_revolutions, lr.checkpoint
-        touch_gap = check_range("touch_gap", touch_gap, "-", 0.0, 1.0, high_open=True,
-                                why="(0 turns touch detection off)")
-        n_out = max(1, int(round(revolutions * opr)))
-        self._check_run_memory(n_out)
-        t0, y = 0.0, None
-        if start is not None:
-            if isinstance(start, RotorRunResult):
-                t0, y = float(start.final_time), np.array(start.final_state, dtype=float)
-                if reference_speed_rpm is not None and reference_speed_rpm != start.reference_speed_rpm:
-                    raise ValueError(f"reference_speed_rpm = {reference_speed_rpm!r} [rpm]; allowed: the start's "
-                                     f"{start.reference_speed_rpm!r} (its film state is in that speed's pressure unit)")
-                reference_speed_rpm = start.reference_speed_rpm
-            else:
-                t0, y = float(start[0]), np.array(start[1], dtype=float)
+        run = ModelRun(revolutions, opr, lr, touch_gap)
+        self._check_run_memory(run.n_outputs)
+        t0, y = start_point(start, RotorRunResult)
+        if isinstance(start, RotorRunResult):
+            if reference_speed_rpm is not None and reference_speed_rpm != start.reference_speed_rpm:
+                raise ValueError(f"reference_speed_rpm = {reference_speed_rpm!r} [rpm]; allowed: the start's "
+                                 f"{start.reference_speed_rpm!r} (its film state is in that speed's pressure unit)")
+            reference_speed_rpm = start.reference_speed_rpm
         speed_fn, t_end, n_max = _speed_schedule(speed_rpm, t0, revolutions)
         ref = n_max if reference_speed_rpm is None else check_speed(reference_speed_rpm)
         if callable(speed_rpm) and any(b.shear_thinning for b in self.bearings.values()):
@@ -560,40 +554,36 @@ class RotorBearingSystem:
                 raise ValueError(f"speed_rpm(t = {t0:g} s) = {s0 * ref:g} [rpm]: a film carries no load at rest; "
                                  "allowed: > 0 (start a run-up from a low speed)")
             y = self._steady(dae, s0)
-        if y.shape != (dae.n,) or not np.all(np.isfinite(y)):
-            raise ValueError(f"start state has shape {y.shape} or non-finite entries; this system has {dae.n} finite "
-                             "states")
-        for b in dae.blocks:
-            e = float(np.hypot(*b.position(y[dae.Q0:dae.V0])))
-            if e >= b.bearing.max_eccentricity_ratio:
-                raise ValueError(f"start: the journal at bearing node {b.node} is outside the clearance: e/C = {e:.4g} "
-                                 f"[-]; allowed: [0, {b.bearing.max_eccentricity_ratio:.4g})")
+
+        def journals(y_):
+            q = y_[dae.Q0:dae.V0]
+            return [(f"journal at bearing node {b.node}", float(np.hypot(*b.position(q))),
+                     b.bearing.max_eccentricity_ratio) for b in dae.blocks]
+
+        run.check_state(y, dae.n, "system", journals)
         tau0, tau_end = t0 * w, t_end * w
-        limits = [(b.bearing.max_eccentricity_ratio - touch_gap) ** 2 for b in dae.blocks]
+        limits = [(b.bearing.max_eccentricity_ratio - run.touch_gap) ** 2 for b in dae.blocks]
         events = None
-        if touch_gap > 0:
+        if run.touch_gap > 0:
             def events(t, yy, out):  # the rotor's states sit at the same places in both layouts
                 q = yy[dae.Q0:dae.V0]
                 for k, b in enumerate(dae.blocks):
                     X, Y = b.position(q)
                     out[k] = limits[k] - (X * X + Y * Y)
         n_events = len(dae.blocks) if events else 0
-        stepping = {}
+        solver = dict(method=method, rtol=rtol, atol=dae.absolute_tolerance(atol))
+        to_run = universal = None
         if method == "bdf2":
             announce("rotor_bdf2")  # a cold cache compiles the films' content kernels and the Newton once
             form = ContentSystem(dae)
-            rec = _Recorder(self, dae, speed, form.universal_state)
-            y_run = form.content_state(y)
+            to_run, universal = form.content_state, form.universal_state
             problem_at = lambda y_, tau_: form.problem(y_, tau_, events, n_events)  # noqa: E731
             # the step cap in shaft angle (the films' fronts move with the shaft): BDF2_MIN_STEPS per revolution
             # at any speed down to MIN_CAP_SPEED of the reference speed, not per revolution at the reference speed
             cap_scale = lambda tau: 1.0 / max(speed(tau)[0], MIN_CAP_SPEED)  # noqa: E731
-            stepping = dict(steps=Steps(max_step=2 * np.pi / BDF2_MIN_STEPS, first_step=2 * np.pi * 1e-4),
-                            options={"bdf2": form.model(), "max_step_scale": cap_scale})
+            solver.update(steps=Steps(max_step=2 * np.pi / BDF2_MIN_STEPS, first_step=2 * np.pi * 1e-4),
+                          options={"bdf2": form.model(), "max_step_scale": cap_scale})
         else:
-            rec = _Recorder(self, dae, speed)
-            y_run = y
-
             def problem_at(y_, tau_):
                 y_ = np.array(y_, dtype=float)
                 return Problem(y0=y_, yp0=dae.consistent_yp(tau_, y_), residual=dae.residual, jac_pattern=dae.pattern,
@@ -601,37 +591,50 @@ class RotorBearingSystem:
                                event_terminal=[True] * len(dae.blocks), event_direction=[-1] * len(dae.blocks),
                                name="rotor on journal bearings")
 
-        chunk = chunk_revolutions if chunk_revolutions is not None else (10.0 if checkpoint else revolutions)
-        chunk = check_range("chunk_revolutions", chunk, "rev", 1.0 / opr, np.inf)
-        key = dict(self.parameters(), speed=_speed_key(speed_fn, t0, t_end), reference_speed_rpm=ref, method=method,
-                   rtol=rtol, atol=atol, outputs_per_revolution=opr, touch_gap=touch_gap, start_time=t0,
-                   chunk_revolutions=chunk,
-                   start_state=hashlib.sha256(np.ascontiguousarray(y).tobytes()).hexdigest()[:16])
-        rec.last_y = y
-        solver = dict(method=method, rtol=rtol, atol=dae.absolute_tolerance(atol), **stepping)
-        out = run_long(problem_at, y_run, tau0, (tau_end - tau0) / n_out, n_out, rec, solver=solver, long_run=lr,
-                       chunk_outputs=max(1, int(round(chunk * opr))), key=key,
-                       display=Display("rotor run", ("rev", (tau_end - tau0) / revolutions), rec.status))
-        touched, message, success = None, out.message, out.success
-        if out.event is not None:
-            touched = out.event[0] / w
-            q = np.asarray(out.event[1])[dae.Q0:dae.V0]
+        def touch_message(tau, y_):
+            q = np.asarray(y_)[dae.Q0:dae.V0]
             gaps = [limits[k] - np.sum(np.square(b.position(q))) for k, b in enumerate(dae.blocks)]
             b = dae.blocks[int(np.argmin(gaps))]
-            message = (f"the journal at bearing node {b.node} touches its bearing (e/C = "
-                       f"{np.hypot(*b.position(q)):.4f}, touch_gap = {touch_gap:g}) at t = {touched:.6g} s")
-            success = False
-        rec.last_y = rec.universal(out.y)
-        r = rec.result(method, out.stats, touched, message, out.t / w, ref)
-        for node, b in zip(self.bearing_nodes, dae.blocks):
-            through = wall_crossing(r.t, r.eccentricity_ratio(node), b.bearing.max_eccentricity_ratio)
-            if through and out.event is None:
-                success = False
-                r.message = (f"the journal at bearing node {node} {through} (touch_gap > 0 stops a run there)"
-                             + ("" if out.success else f"; then {out.message}"))
-                break
-        r.success = success
-        return r
+            return (f"the journal at bearing node {b.node} touches its bearing (e/C = {np.hypot(*b.position(q)):.4f}, "
+                    f"touch_gap = {run.touch_gap:g}) at t = {tau / w:.6g} s")
+
+        key = dict(self.parameters(), speed=_speed_key(speed_fn, t0, t_end), reference_speed_rpm=ref, method=method,
+                   rtol=rtol, atol=atol, outputs_per_revolution=opr)
+        parts = RunParts(label="rotor run", omega=w, revolution=(tau_end - tau0) / revolutions, problem_at=problem_at,
+                         solver=solver, series=("speed", "d", "f"), sample=self._sampler(dae, speed),
+                         journals=journals,
+                         eccentricities=lambda r: [(f"journal at bearing node {node}", r.eccentricity_ratio(node),
+                                                    b.bearing.max_eccentricity_ratio)
+                                                   for node, b in zip(self.bearing_nodes, dae.blocks)],
+                         touch_message=touch_message,
+                         result=lambda rec, stats, touched, message, tau_end_: self._run_result(
+                             rec, dae, method, stats, touched, message, tau_end_ / w, ref),
+                         to_run=to_run, universal=universal, key=key)
+        return run.go(parts, y, tau0, (tau_end - tau0) / run.n_outputs)
+
+    def _sampler(self, dae, speed) -> Callable:
+        """``sample(tau, y)``: a run's outputs at one output time, ``y`` in the universal layout: the speed [rpm],
+        every node's x, y [m] and every bearing's film force [N]."""
+        def sample(tau, y):
+            q = y[dae.Q0:dae.V0]
+            forces = []
+            for b in dae.blocks:
+                X, Y = b.position(q)
+                F = b.film.force(y[b.offset:b.offset + b.n], X, Y)
+                forces.append((F[0] * b.film.force_scale, F[1] * b.film.force_scale))
+            return dict(speed=speed(tau)[0] * dae.speed_ref_rpm, d=self._node_displacements(q * dae.L), f=forces)
+
+        return sample
+
+    def _run_result(self, rec, dae, method, stats, touched, message, t_end, ref) -> RotorRunResult:
+        a = rec.arrays()
+        nodes = list(self.rotor.nodes)
+        return RotorRunResult(t=a["t"], displacement=a["d"].reshape(-1, len(nodes), 2), speed_rpm=a["speed"],
+                              bearing_force=a["f"].reshape(-1, len(dae.blocks), 2), nodes=nodes,
+                              bearing_nodes=self.bearing_nodes,
+                              clearance=np.array([b.bearing.clearance for b in dae.blocks]), method=method,
+                              touched_at=touched, message=message, stats=stats or Stats(), final_state=rec.last_y,
+                              final_time=float(t_end), reference_speed_rpm=ref)
 
     def _check_steady_memory(self):
         """Refuse, before the films are built, a static equilibrium (the whole system's Newton) that does not fit
@@ -651,9 +654,8 @@ class RotorBearingSystem:
         grids = " + ".join(f"{b.grid_shape[0]} x {b.grid_shape[1]}" for b in self.bearings.values())
         outputs = 8.0 * n_outputs * (2 * len(self.rotor.nodes) + 2 * len(self.bearings) + 2)
         parts = dict(model=FILM_BYTES_PER_CELL * n_film, solver=5500.0 * n, recordings=outputs)
-        check_memory(f"this rotor run ({n_outputs} outputs, {n} states on bearing grids {grids})", parts,
-                     GRID_ADVICE if parts["model"] + parts["solver"] > memory_limit() else
-                     "lower revolutions or outputs_per_revolution")
+        check_run_memory(f"this rotor run ({n_outputs} outputs, {n} states on bearing grids {grids})", parts,
+                         GRID_ADVICE, "lower revolutions or outputs_per_revolution")
 
     def periodic_response(self, speed_rpm, rtol=1e-6, tol=None, modes=2, outputs_per_revolution=64, max_iter=None, *,
                           integrator="ida", shooting: ShootingSettings | None = None, start=None, basis=None):
@@ -874,60 +876,3 @@ def _speed_key(fn, t0, t_end) -> str:
     """A digest of a speed schedule (its values at 65 times of the run), to key a checkpoint."""
     v = np.array([fn(t) for t in np.linspace(t0, t_end, 65)])
     return hashlib.sha256(json.dumps([t0, t_end, *v.tolist()]).encode()).hexdigest()[:16]
-
-
-class _Recorder:
-    """Keeps t, the speed, every node's x, y and every bearing's film force at the outputs (never the state)."""
-
-    def __init__(self, system, dae, speed: Callable, universal: Callable | None = None):
-        self.s, self.dae, self.speed = system, dae, speed
-        self.universal = universal or (lambda y: np.array(y))  # the run's state in the universal layout
-        self.t, self.n, self.d, self.f = [], [], [], []
-        self.last_y = None
-        self.last_tau = -np.inf
-
-    def observe(self, tau, y):
-        dae = self.dae
-        self.last_y = y = self.universal(y)
-        if tau <= self.last_tau:
-            return
-        self.last_tau = tau
-        q = y[dae.Q0:dae.V0]
-        self.t.append(tau / dae.omega)
-        self.n.append(self.speed(tau)[0] * dae.speed_ref_rpm)
-        self.d.append(self.s._node_displacements(q * dae.L))
-        forces = []
-        for b in dae.blocks:
-            X, Y = b.position(q)
-            F = b.film.force(y[b.offset:b.offset + b.n], X, Y)
-            forces.append((F[0] * b.film.force_scale, F[1] * b.film.force_scale))
-        self.f.append(forces)
-
-    def status(self) -> str:
-        q = self.last_y[self.dae.Q0:self.dae.V0]
-        return "e/C = " + ", ".join(f"{np.hypot(*b.position(q)):.3f}" for b in self.dae.blocks)
-
-    def times(self) -> np.ndarray:
-        return np.array(self.t) * self.dae.omega
-
-    def arrays(self) -> dict:
-        return dict(t=np.array(self.t), speed=np.array(self.n), d=np.array(self.d), f=np.array(self.f),
-                    last_tau=np.array(self.last_tau))
-
-    def restore(self, a: dict):
-        rows = len(a["t"])
-        if any(len(a[k]) != rows for k in ("speed", "d", "f")):
-            raise ValueError("its series do not have one row per output time")
-        self.t, self.n, self.d, self.f = list(a["t"]), list(a["speed"]), list(a["d"]), list(a["f"])
-        self.last_tau = float(a["last_tau"])
-
-    def result(self, method, stats, touched, message, t_end, ref) -> RotorRunResult:
-        nodes = list(self.s.rotor.nodes)
-        nb = len(self.dae.blocks)
-        r = RotorRunResult(t=np.array(self.t), displacement=np.array(self.d).reshape(-1, len(nodes), 2),
-                           speed_rpm=np.array(self.n), bearing_force=np.array(self.f).reshape(-1, nb, 2),
-                           nodes=nodes, bearing_nodes=self.s.bearing_nodes,
-                           clearance=np.array([b.bearing.clearance for b in self.dae.blocks]), method=method,
-                           touched_at=touched, message=message, stats=stats or Stats(), final_state=self.last_y,
-                           final_time=float(t_end), reference_speed_rpm=ref)
-        return r
