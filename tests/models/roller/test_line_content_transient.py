@@ -70,6 +70,9 @@ def test_load_step_ends_on_the_steady_film_at_the_new_load(contact, steady):
         assert getattr(r, key)[-1] == pytest.approx(getattr(s2, key), rel=1e-6)
 
 
-def test_an_unknown_method_is_refused_by_name(contact):
+def test_an_unknown_method_and_a_matrix_free_grid_are_refused_before_any_work(contact):
     with pytest.raises(ValueError, match="method"):
         contact.transient(t_end=contact.time_scale, method="rk4")
+    fine = paperlike(n=2049)
+    with pytest.raises(ValueError, match="2049 uniform nodes"):
+        fine.transient(t_end=fine.time_scale, method="bdf2")

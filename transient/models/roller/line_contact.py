@@ -523,6 +523,13 @@ class LineContact:
         """
         t_end = check_positive("t_end", t_end, "s")
         check_choice("method", method, ("ida", "bdf2"))
+        if method == "bdf2":
+            if matrix_free(self.grid) and self.elastic:
+                raise ValueError(f"method = 'bdf2': {self.grid.x.size} uniform nodes need the matrix-free film; the "
+                                 "film-content transient takes the dense film (at most 1025 uniform nodes, or "
+                                 "clustered)")
+            max_steps = check_int("max_steps", max_steps, "-", 1, 10 ** 7)
+            n_out = check_int("n_out", n_out, "-", 2, 10 ** 6)
         film = self.film_problem()
         w_start = self.load_per_length
         if start == "dry":
@@ -562,11 +569,6 @@ class LineContact:
         """``method="bdf2"`` of :meth:`transient`: :class:`~transient.models.roller.line_step.LineFilmStep` on the
         integrator facade's BDF2 from ``y0 = [p, h0]`` (its content by
         :func:`~transient.models.roller.line_step.consistent_content`)."""
-        if matrix_free(self.grid) and self.elastic:
-            raise ValueError(f"method = 'bdf2': {self.grid.n + 2} uniform nodes need the matrix-free film; the "
-                             "film-content transient takes the dense film (at most 1025 uniform nodes, or clustered)")
-        max_steps = check_int("max_steps", max_steps, "-", 1, 10 ** 7)
-        n_out = check_int("n_out", n_out, "-", 2, 10 ** 6)
         content = LineContentFilm(film)
         n, t_ref, w_ref = content.n, self.time_scale, self.load_per_length
         ratio = load_ratio(load, w_ref, w_start, t_ref, ramp_time)
