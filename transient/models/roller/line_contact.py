@@ -582,8 +582,8 @@ class LineContact:
         step = LineFilmStep(content, self.lam, u0, ratio)
         problem = Problem(y0=u0, step_solve=step, name="line contact (film content, FBNS)")
         sol = integrate(problem, np.linspace(0.0, t_end / t_ref, n_out), method="bdf2", rtol=rtol,
-                    atol=ATOL_PER_RTOL * rtol, steps=Steps(first_step=1e-3, max_steps=max_steps), store=False,
-                    observer=observe, time_budget=time_budget)
+                        atol=ATOL_PER_RTOL * rtol, steps=Steps(first_step=1e-3, max_steps=max_steps), store=False,
+                        observer=observe, time_budget=time_budget)
         tau, u = step.last
         last = self._result(film, np.append(u[:n], u[-1]), True, "", 0, [], 0.0)
         tau_out = np.array(taus)
