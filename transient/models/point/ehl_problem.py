@@ -224,14 +224,14 @@ class PointFilm:
         ``(dR/dP at fixed film, dR/dH on the half-grid nodes, dR/dtheta)``; the full pressure block is
         ``dR/dP + (dR/dH) K`` with ``K`` the elastic influence of the unknowns on the half-grid films, and
         ``dR/dH0`` the row sums of ``dR/dH``."""
-        a_p, d_h, a_t = self.local_matrices(e)
-        if cj:
-            f, n = self.flat, self.n
+        if cj:  # the storage's derivatives enter the centre slot (the unknown's own node, no other slot's)
+            f = self.flat
             rho, drho, T, H = (e[k].ravel()[f] for k in ("rho", "drho", "T", "H"))
-            d_h = d_h - sp.csr_matrix((cj * rho * T, (np.arange(n), f)), shape=d_h.shape)
-            a_p = a_p - sp.diags(cj * drho * T * H)
-            a_t = a_t - sp.diags(cj * rho * H)
-        return a_p.tocsr(), d_h.tocsr(), a_t.tocsr()
+            e = dict(e, dp=e["dp"].copy(), dh=e["dh"].copy(), dt=e["dt"].copy())
+            e["dh"][:, 0] -= cj * rho * T
+            e["dp"][:, 0] -= cj * drho * T * H
+            e["dt"][:, 0] -= cj * rho * H
+        return self.local_matrices(e)
 
     def newton_matrix(self, u, e, cj=0.0):
         """Blocks of the Jacobian of the Reynolds rows ``R - cj q`` (:meth:`local_newton`): ``(J_P dense,

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import numpy as np
 import scipy.sparse as sp
+from numba import njit
 
 
 def schur(film, u, e):
@@ -30,13 +31,43 @@ def schur(film, u, e):
 
 
 def dense_reduced(film, local, b_p, b_t) -> np.ndarray:
-    """The reduced Newton matrix (``(N + 1)`` square, dense: the elastic block in full)."""
-    a_p, d_h, a_t = local
+    """The reduced Newton matrix (``(N + 1)`` square, dense: the elastic block in full), filled from the
+    sparse local blocks by :func:`reduced_kernel`."""
+    a_p, d_h, a_t = (sp.csr_matrix(m) for m in local)
     n = film.n
     A = np.empty((n + 1, n + 1))
-    A[:n, :n] = np.asarray(d_h @ film.kernel()) * b_p[None, :]
-    A[:n, :n] += (a_p @ sp.diags(b_p) + a_t @ sp.diags(b_t)).toarray()
-    A[:n, n] = np.asarray(d_h.sum(axis=1)).ravel()
-    A[n, :n] = film.weight / film.load * b_p
-    A[n, n] = 0.0
+    reduced_kernel(a_p.indptr, a_p.indices, a_p.data, d_h.indptr, d_h.indices, d_h.data, a_t.indptr, a_t.indices,
+                   a_t.data, film.kernel(), np.ascontiguousarray(b_p, dtype=float),
+                   np.ascontiguousarray(b_t, dtype=float), film.weight / film.load, A)
     return A
+
+
+@njit(cache=True)
+def reduced_kernel(ap_ptr, ap_idx, ap_val, dh_ptr, dh_idx, dh_val, at_ptr, at_idx, at_val, K, b_p, b_t, w, A):
+    """Fill ``A`` (module docstring) row by row: ``D_H K`` over the few half-grid nodes each Reynolds row
+    touches (CSR ``dh_*``), the local blocks ``A_P`` and ``A_theta`` (CSR ``ap_*``, ``at_*``), the ``H0``
+    column (row sums of ``D_H``) and the load row ``w b_P``."""
+    n = b_p.size
+    for r in range(n):
+        row = A[r]
+        for q in range(n + 1):
+            row[q] = 0.0
+        h0 = 0.0
+        for k in range(dh_ptr[r], dh_ptr[r + 1]):
+            v = dh_val[k]
+            h0 += v
+            kr = K[dh_idx[k]]
+            for q in range(n):
+                row[q] += v * kr[q]
+        for q in range(n):
+            row[q] *= b_p[q]
+        for k in range(ap_ptr[r], ap_ptr[r + 1]):
+            q = ap_idx[k]
+            row[q] += ap_val[k] * b_p[q]
+        for k in range(at_ptr[r], at_ptr[r + 1]):
+            q = at_idx[k]
+            row[q] += at_val[k] * b_t[q]
+        row[n] = h0
+    for q in range(n):
+        A[n, q] = w[q] * b_p[q]
+    A[n, n] = 0.0

@@ -26,22 +26,26 @@ import warnings
 
 import numpy as np
 
-from transient.checks import check_positive, check_range
+from transient.checks import check_choice, check_int, check_positive, check_range
 from transient.models.roller.continuation import PathResult, follow
 from transient.models.roller.dry import edge_positions, polonsky_keer
 from transient.models.roller.ehl_problem import EHLFilm, interpolate_state, solve_steady
 from transient.models.roller.grid import TensorGrid
 from transient.models.roller.line_fft import LineFFTFilm, matrix_free
+from transient.models.roller.line_fbns import LineContentFilm
 from transient.models.roller.line_grid import (ELASTIC_INLET_WARN, INLET_RESOLUTION, RIGID_INLET_WARN, RIGID_WARN,
                                                default_domain, default_grid, hydrodynamic_length, resolving_spacing,
                                                rigid_regime, uniform_nodes)
 from transient.models.roller.line_sequence import inlet_spacing, solve_sequence
+from transient.models.roller.line_step import ATOL_PER_RTOL, LineFilmStep, consistent_content
 from transient.models.roller.results import EHLConvergenceError, LineDry, LineSteady, LineTransient
 from transient.models.roller.transient import load_ratio, run_squeeze
 from transient.physics.elasticity import line_influence
 from transient.physics.line_formulas import (dowson_toyoda_central, hertz_line, line_groups, martin_min, moes_central,
                                              moes_groups)
 from transient.physics.lubricant import DOWSON_HIGGINSON_PARK, Lubricant
+from transient.solvers.integrate import Problem, Steps
+from transient.solvers.integrate import solve as integrate
 from transient.solvers.newton import NewtonError
 
 SCHEMES = ("upwind2", "upwind1")
@@ -500,17 +504,32 @@ class LineContact:
         return self.b / self.speed
 
     def transient(self, t_end: float, load=None, start="dry", rtol: float = 1e-4, n_out: int = 101,
-                  initial_film: float | None = None, ramp_time: float | None = None) -> LineTransient:
-        """Transient film by IDA (:mod:`transient.models.roller.transient`) over ``[0, t_end]`` [s].
+                  initial_film: float | None = None, ramp_time: float | None = None, method: str = "ida",
+                  max_steps: int = 5000, time_budget: float | None = None) -> LineTransient:
+        """Transient film over ``[0, t_end]`` [s]: by IDA on the penalty form (:mod:`transient.models.roller.transient`,
+        ``method="ida"``) or by BDF2 on the film-content form (:mod:`transient.models.roller.line_step`,
+        ``method="bdf2"``).
 
         ``load``: None (constant, the contact's load), a number [N/m] (a step from the starting load,
         smoothed over ``ramp_time``, default one transit time b/u) or a function of t [s] -> N/m.
         ``start``: ``"dry"`` -- the dry (Hertz) pressure with the film lifted to ``initial_film`` [m] at
         x = 0 (default half the Dowson-Toyoda central film) -- or a :class:`LineSteady` on this grid.
-        The exit condition is in penalty form (:data:`transient.models.roller.transient.GAMMA`): the
-        long-time limit is ``steady(penalty=GAMMA)``.
+        ``method="ida"``: the exit condition in penalty form (:data:`transient.models.roller.transient.GAMMA`), whose
+        long-time limit is ``steady(penalty=GAMMA)``. ``method="bdf2"``: the exact complementarity (the film
+        content, cavitation mass-conserving), whose long-time limit is ``steady()``; the content starts full where
+        the start has pressure and mass-conserving where it has none
+        (:func:`~transient.models.roller.line_step.consistent_content`); ``max_steps`` and ``time_budget`` [s of
+        wall clock] bound that run (uniform grids up to 1025 nodes: the dense elastic film).
         """
         t_end = check_positive("t_end", t_end, "s")
+        check_choice("method", method, ("ida", "bdf2"))
+        if method == "bdf2":
+            if matrix_free(self.grid) and self.elastic:
+                raise ValueError(f"method = 'bdf2': {self.grid.x.size} uniform nodes need the matrix-free film; the "
+                                 "film-content transient takes the dense film (at most 1025 uniform nodes, or "
+                                 "clustered)")
+            max_steps = check_int("max_steps", max_steps, "-", 1, 10 ** 7)
+            n_out = check_int("n_out", n_out, "-", 2, 10 ** 6)
         film = self.film_problem()
         w_start = self.load_per_length
         if start == "dry":
@@ -527,6 +546,9 @@ class LineContact:
             w_start = float(np.trapezoid(start.pressure, start.x))
         else:
             raise ValueError(f"start = {start!r}: use 'dry' or a LineSteady of this contact")
+        if method == "bdf2":
+            return self._content_transient(film, y0, w_start, t_end, load, rtol, n_out, ramp_time, max_steps,
+                                           time_budget)
         return self._transient(film, y0, self.lam, self.time_scale, self.load_per_length, w_start, t_end, load, rtol,
                                n_out, ramp_time)
 
@@ -541,6 +563,39 @@ class LineContact:
                              x=last.x, pressure=last.pressure, film=last.film, success=sol.success,
                              message=sol.message, stats=sol.stats, n_steps=sol.stats.n_steps, n_jacobians=sol.stats.n_jac,
                              wall_time=wall, final_state=sol.y[-1].copy(), final_time=float(sol.t[-1] * t_ref))
+
+    def _content_transient(self, film, y0, w_start, t_end, load, rtol, n_out, ramp_time, max_steps,
+                           time_budget) -> LineTransient:
+        """``method="bdf2"`` of :meth:`transient`: :class:`~transient.models.roller.line_step.LineFilmStep` on the
+        integrator facade's BDF2 from ``y0 = [p, h0]`` (its content by
+        :func:`~transient.models.roller.line_step.consistent_content`)."""
+        content = LineContentFilm(film)
+        n, t_ref, w_ref = content.n, self.time_scale, self.load_per_length
+        ratio = load_ratio(load, w_ref, w_start, t_ref, ramp_time)
+        u0 = consistent_content(content, y0[:-1], y0[-1])
+        rows, taus = [], []
+
+        def observe(tau, u):
+            taus.append(tau)
+            rows.append(self._result(film, np.append(u[:n], u[-1]), True, "", 0, [], 0.0))
+
+        step = LineFilmStep(content, self.lam, u0, ratio)
+        problem = Problem(y0=u0, step_solve=step, name="line contact (film content, FBNS)")
+        sol = integrate(problem, np.linspace(0.0, t_end / t_ref, n_out), method="bdf2", rtol=rtol,
+                        atol=ATOL_PER_RTOL * rtol, steps=Steps(first_step=1e-3, max_steps=max_steps), store=False,
+                        observer=observe, time_budget=time_budget)
+        tau, u = step.last
+        last = self._result(film, np.append(u[:n], u[-1]), True, "", 0, [], 0.0)
+        tau_out = np.array(taus)
+        return LineTransient(t=tau_out * t_ref, h_central=np.array([r.h_central for r in rows]),
+                             h_min=np.array([r.h_min for r in rows]), p_max=np.array([r.p_max for r in rows]),
+                             h0=np.array([r.state[-1] for r in rows]) * self.film_scale,
+                             load=np.array([ratio(t) for t in tau_out]) * w_ref, x=last.x, pressure=last.pressure,
+                             film=last.film, success=bool(sol.success),
+                             message="completed" if sol.success else sol.message, stats=sol.stats,
+                             n_steps=sol.stats.n_steps, n_jacobians=step.factorisations,
+                             wall_time=sol.stats.wall_time, final_state=np.append(u[:n], u[-1]),
+                             final_time=float(tau * t_ref))
 
     def _result(self, film, u, ok, msg, iterations, norms, wall) -> LineSteady:
         p, h0 = u[:-1], u[-1]

@@ -105,7 +105,8 @@ class LineDry(SteadyResult):
 
 @result_type
 class LineTransient(RunResult):
-    """Transient of the line contact (IDA): series at the output times ``t``, final fields."""
+    """Transient of the line contact (IDA on the penalty form, or BDF2 on the film-content form): series at the
+    output times ``t``, final fields; ``final_state`` ``[p, h0]`` (scaled) in both."""
 
     snapshot_fields = ("x", "pressure", "film")
     shapes = {"h_central": ("t",), "h_min": ("t",), "p_max": ("t",), "h0": ("t",), "load": ("t",)}
