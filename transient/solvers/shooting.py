@@ -345,6 +345,19 @@ def newton_krylov(flow: Callable, y0, period: float, *, t0: float = 0.0, norm: C
     out.wall_time = time.perf_counter() - wall0
     return out
 
+def extrapolate_state(speeds, states, speed, points) -> np.ndarray | None:
+    """The continuation's predictor: Lagrange extrapolation of the last ``points`` periodic states (at ``speeds``) to
+    ``speed`` (None without a previous state)."""
+    m = min(points, len(states))
+    if m == 0:
+        return None
+    xs, ys = speeds[-m:], states[-m:]
+    out = np.zeros_like(ys[0])
+    for i in range(m):
+        out += np.prod([(speed - xs[j]) / (xs[i] - xs[j]) for j in range(m) if j != i]) * ys[i]
+    return out
+
+
 
 def floquet_multipliers(flow: Callable, y, period: float, k: int = 4, *, t0: float = 0.0, rtol: float = 1e-8,
                         derivative: Callable | None = None, fd_step: float = 1e-6, norm: Callable = _max_norm,

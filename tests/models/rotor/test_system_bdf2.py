@@ -11,11 +11,11 @@ import pytest
 from transient import Integration, JournalBearing, JournalOrbit, LongRun, Recording
 from transient.models.rotor import Rotor, RotorBearingSystem
 from transient.models.rotor.content_form import ContentSystem
-from transient.models.rotor.content_newton import rotor_jacobian, rotor_residual, rotor_to_state
 from transient.params.rho_kim import BEARING
 from transient.solvers.bandlu import BorderedBandLU
 from transient.solvers.longrun import Interrupted
 
+from content_jacobian import content_jacobians
 from test_system import ECC, G, M_ROTOR, flexible_system
 
 
@@ -33,39 +33,8 @@ def test_newton_jacobian_matches_finite_differences(fd_jacobian):
     """dF/dz of the content residual with y' = cj y + b (as in a BDF2 step), a speed ramp (s, s' != 1, 0), on the
     flexible rotor's two films of different grids and clearances (one on a reduced basis), at a state with
     cavitated, full-film and switching cells and a moving, tilted shaft; nothing outside the Newton pattern."""
-    s = flexible_system(JournalBearing(**BEARING, grid=(16, 4)))
-    dae = s.dae(6000.0, lambda tau: (0.8 + 0.01 * tau, 0.01))
-    form = ContentSystem(dae)
-    rng = np.random.default_rng(1)
-    z = s._start_guess(dae, 0.8)
-    z[dae.Q0:dae.P0] += 0.05 * rng.standard_normal(2 * dae.nq)
-    z[dae.P0] = 0.7
-    tau, cj = 0.3, 37.0
-    form.set_speed(tau)
-    args = form.args
-    y = np.empty(dae.n)
-    rotor_to_state(z, y, args)
-    b = -cj * y + 0.01 * rng.standard_normal(dae.n)
-
-    def F(zz):
-        yy = np.empty(dae.n)
-        rotor_to_state(zz, yy, args)
-        out = np.empty(dae.n)
-        rotor_residual(tau, yy, cj * yy + b, out, args)
-        return out
-
-    data = np.zeros(form.pattern.nnz)
-    rotor_to_state(z, y, args)
-    rotor_jacobian(tau, y, cj * y + b, cj, data, args)
-    J = form.pattern.copy()
-    J.data = data
-    J = J.toarray()
-    free = np.ones(dae.n, dtype=bool)
-    for blk in dae.blocks:
-        free[blk.offset:blk.offset + blk.n] = blk.film.op.free
-    cols = np.flatnonzero(free)
-    width = min(blk.film.width for blk in dae.blocks)
-    Jfd = fd_jacobian(F, z, dae.n, step=5e-4 * width)
+    form, dae, J, Jfd, cols = content_jacobians(flexible_system(JournalBearing(**BEARING, grid=(16, 4))), 6000.0, 1,
+                                                fd_jacobian)
     scale = np.max(np.abs(J[:, cols]), axis=0)
     rel = np.max(np.abs(J[:, cols] - Jfd[:, cols]), axis=0) / scale
     assert np.max(rel) < 1e-6, (np.max(rel), cols[np.argmax(rel)])

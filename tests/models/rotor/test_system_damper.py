@@ -11,9 +11,10 @@ import pytest
 from transient import Integration, JournalBearing, LongRun, Recording, Rotor, RotorBearingSystem, SqueezeFilmDamper
 from transient.models.journal.bearing import NoEquilibriumError
 from transient.models.rotor.content_form import ContentSystem
-from transient.models.rotor.content_newton import rotor_jacobian, rotor_residual, rotor_to_state
 from transient.models.rotor.kernels import block_residual
 from transient.params.rho_kim import BEARING
+
+from content_jacobian import content_jacobians
 
 C = 200e-6
 DAMPER = dict(diameter=0.1, length=0.02, clearance=C, viscosity=0.01, supply_pressure=2e5, centring_stiffness=5e6)
@@ -91,39 +92,8 @@ def _mixed(grid=(16, 4), damper=None, unbalance=1e-4):
 def test_the_bdf2_newton_jacobian_with_a_damper_matches_finite_differences(fd_jacobian):
     """dF/dz of the content residual (y' = cj y + b, as in a BDF2 step) with a spinning journal film and a pinned
     damper film on a speed ramp, at a moving, off-centre shaft: the damper's block takes no Couette flow."""
-    s = _mixed()
-    dae = s.dae(SPEED, lambda tau: (0.8 + 0.01 * tau, 0.01))
-    form = ContentSystem(dae)
+    form, dae, J, Jfd, cols = content_jacobians(_mixed(), SPEED, 2, fd_jacobian)
     assert [f.spin for f in form.args[0]] == [1.0, 0.0]
-    rng = np.random.default_rng(2)
-    z = s._start_guess(dae, 0.8)
-    z[dae.Q0:dae.P0] += 0.05 * rng.standard_normal(2 * dae.nq)
-    z[dae.P0] = 0.7
-    tau, cj = 0.3, 37.0
-    form.set_speed(tau)
-    args = form.args
-    y = np.empty(dae.n)
-    rotor_to_state(z, y, args)
-    b = -cj * y + 0.01 * rng.standard_normal(dae.n)
-
-    def F(zz):
-        yy = np.empty(dae.n)
-        rotor_to_state(zz, yy, args)
-        out = np.empty(dae.n)
-        rotor_residual(tau, yy, cj * yy + b, out, args)
-        return out
-
-    data = np.zeros(form.pattern.nnz)
-    rotor_to_state(z, y, args)
-    rotor_jacobian(tau, y, cj * y + b, cj, data, args)
-    J = form.pattern.copy()
-    J.data = data
-    J = J.toarray()
-    free = np.ones(dae.n, dtype=bool)
-    for blk in dae.blocks:
-        free[blk.offset:blk.offset + blk.n] = blk.film.op.free
-    cols = np.flatnonzero(free)
-    Jfd = fd_jacobian(F, z, dae.n, step=5e-4 * min(blk.film.width for blk in dae.blocks))
     scale = np.max(np.abs(J[:, cols]), axis=0)
     assert np.max(np.abs(J[:, cols] - Jfd[:, cols]) / scale) < 1e-6
 

@@ -190,7 +190,7 @@ def stencil_jacobian(u, X, Y, switch, geo, fields, extras, fv, data, speed_ratio
 def stencil_flux_jacobian(switch, geo, fields, extras, fv, data, speed_ratio):
     """:func:`stencil_jacobian` on the cell fields already in ``fields`` (:func:`state_fields`)."""
     layer_gap, darcy = switch.layer_gap, switch.darcy
-    cosp, sinp, area = geo.cosp, geo.sinp, geo.area
+    cosp, sinp = geo.cosp, geo.sinp
     H, P, dP, C, D, dD, k, c, zero, _ = fields
     dk_dq, dc_dq, no_dq, pos_row, pos_col, indices, scale = extras
     faces, boundary, cells, face_k, bulk = fv

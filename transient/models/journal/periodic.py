@@ -43,7 +43,8 @@ from transient.results import StatusResult, quantity, result_type
 from transient.solvers.integrate import Steps, solve
 from transient.solvers.settling import settled_stop, settles
 from transient.solvers.progress import progress_bar
-from transient.solvers.shooting import ShootingSettings, floquet_multipliers, newton_krylov, newton_picard
+from transient.solvers.shooting import (ShootingSettings, extrapolate_state, floquet_multipliers, newton_krylov,
+                                         newton_picard)
 from transient.solvers.legacy import keyword_table, run_settings
 from transient.solvers.settings import Integration, LongRun, Recording, check_unused
 
@@ -404,7 +405,7 @@ def response_curve(orbit: Orbit, speeds_rpm, rtol: float = 1e-5, tol: float | No
     bar = progress_bar(progress, speeds.size, "speed", "periodic responses")
     for s in speeds:
         o = orbit if s == orbit.speed_rpm else orbit.at_speed(s)
-        start = _extrapolate(np.array(path), [p.state for p in done], s, 3 if predictor == "quadratic" else 2)
+        start = extrapolate_state(np.array(path), [p.state for p in done], s, 3 if predictor == "quadratic" else 2)
         p = periodic_response(o, rtol=rtol, tol=tol, start=start, basis=basis, shooting=shooting,
                               outputs_per_revolution=outputs_per_revolution, integrator=integrator)
         if not p.converged and start is not None:  # the extrapolation went astray: start afresh
@@ -428,19 +429,6 @@ def response_curve(orbit: Orbit, speeds_rpm, rtol: float = 1e-5, tol: float | No
     if bar:
         bar.close()
     return _curve(speeds, orbits, whirls)
-
-
-def _extrapolate(speeds, states, s, points):
-    """Lagrange extrapolation of the last ``points`` states to speed ``s`` (None without a previous state)."""
-    m = min(points, len(states))
-    if m == 0:
-        return None
-    xs, ys = speeds[-m:], states[-m:]
-    out = np.zeros_like(ys[0])
-    for i in range(m):
-        w = np.prod([(s - xs[j]) / (xs[i] - xs[j]) for j in range(m) if j != i])
-        out += w * ys[i]
-    return out
 
 
 def _curve(speeds, orbits, whirls) -> ResponseCurve:

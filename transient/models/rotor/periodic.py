@@ -28,7 +28,7 @@ from transient.models.rotor.content_form import ContentSystem
 from transient.models.rotor.model import SystemDAE
 from transient.models.rotor.results import PeriodicResponse, RotorResponseCurve
 from transient.solvers.integrate import Problem, Steps, solve
-from transient.solvers.shooting import ShootingSettings, newton_picard
+from transient.solvers.shooting import ShootingSettings, extrapolate_state, newton_picard
 
 #: time integrators of the period map: IDA on the universal films, or the conservative BDF2 on their content form
 INTEGRATORS = ("ida", "bdf2")
@@ -171,7 +171,7 @@ def response_curve(system, speeds, rtol, tol, modes, outputs_per_revolution, sho
     basis = None
     bar = progress_bar(progress, len(speeds), "speed", "periodic responses")
     for n in speeds:
-        start = _extrapolate(np.array(path), [p.state for p in done], n, 3 if predictor == "quadratic" else 2)
+        start = extrapolate_state(np.array(path), [p.state for p in done], n, 3 if predictor == "quadratic" else 2)
         p = periodic_response(system, n, rtol, tol, modes, outputs_per_revolution, shooting, integrator, start,
                               basis if start is not None else None)
         if not p.converged and start is not None:  # the extrapolation went astray: start afresh
@@ -188,18 +188,6 @@ def response_curve(system, speeds, rtol, tol, modes, outputs_per_revolution, sho
     if bar:
         bar.close()
     return _curve(system, np.asarray(speeds, dtype=float), orbits, integrator)
-
-
-def _extrapolate(speeds, states, n, points):
-    """Lagrange extrapolation of the last ``points`` states to speed ``n`` (None without a previous state)."""
-    m = min(points, len(states))
-    if m == 0:
-        return None
-    xs, ys = speeds[-m:], states[-m:]
-    out = np.zeros_like(ys[0])
-    for i in range(m):
-        out += np.prod([(n - xs[j]) / (xs[i] - xs[j]) for j in range(m) if j != i]) * ys[i]
-    return out
 
 
 def _curve(system, speeds, orbits, integrator) -> RotorResponseCurve:
