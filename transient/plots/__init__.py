@@ -7,7 +7,7 @@ The figures are grouped by model family, each a module reachable from here witho
     fig = tp.journal.orbit_settling(orbit_from_equilibrium(orbit, 30, 1e-6), 64, bearing.grid_shape)
     tp.save(fig, "out/orbit.png")
 
-``ball``, ``damper``, ``feeds``, ``film``, ``journal``, ``layers``, ``mixed``, ``pad``, ``point``, ``roller``, ``rotor``, ``surfaces``, ``sweep``, ``tilt``, ``whip`` (imported on
+``ball``, ``damper``, ``feeds``, ``film``, ``journal``, ``layers``, ``mixed``, ``pad``, ``point``, ``roller``, ``rotor``, ``surfaces``, ``sweep``, ``thermal``, ``tilt``, ``whip`` (imported on
 first use). Figures are built on :class:`matplotlib.figure.Figure` directly (no pyplot state, no GUI backend),
 so they work headless and in worker processes; :func:`save` writes one and returns its path.
 """
@@ -22,7 +22,7 @@ from matplotlib.figure import Figure
 
 #: the figure modules, one per model family (imported lazily by attribute access)
 FAMILIES = ("ball", "damper", "feeds", "journal", "layers", "mixed", "pad", "point", "reynolds_operator", "roller", "rotor", "surfaces",
-            "sweep", "tilt", "whip")
+            "sweep", "thermal", "tilt", "whip")
 __all__ = ["figure", "save", "suptitle", *FAMILIES]
 
 
