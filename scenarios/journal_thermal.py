@@ -3,12 +3,12 @@ power loss against speed beside the isothermal film.
 
     transient run scenarios/journal_thermal.py [--quick] [--out DIR]
 
-The bearing of the thermal guide (D 0.1 m, L 0.05 m, C 100 um, one axial groove at the top, ends at ambient
-pressure) under 3 kN on an ISO VG 46-like oil (0.01902 Pa s at 323 K, 0.00772 Pa s at 353 K, the exponential law
-through both; 870 kg/m^3, 1950 J/(kg K)) supplied at 50 C, adiabatic walls, hot-oil carry-over 0.8. The thermal
-equilibrium at 5 speeds from 1000 to 6000 rpm (--quick: a 60 x 10 grid; else 9 speeds on 120 x 20), each beside
-the isothermal film at the supply viscosity; the maps at the highest speed. Writes DIR/journal_thermal.png and
-DIR/journal_thermal.json.
+The bearing of the thermal guide (D 0.1 m, L 0.05 m, C 100 um; the default feed: a full-length 6-deg groove at the
+top at 1 atm, ends and cavitation at 0) under 3 kN on ROSS's fixed-bearing oil (0.01902 Pa s at 323 K, 0.00772 Pa s
+at 353 K, the exponential law through both; 870 kg/m^3, 1950 J/(kg K)) supplied at 50 C, adiabatic walls, hot-oil
+carry-over 0.8. The thermal equilibrium at speeds from 1000 to 6000 rpm (--quick: 5 on a 60 x 10 half grid; else 9
+on 120 x 20), each beside the isothermal film at the supply viscosity; the maps at the highest speed. Writes
+DIR/journal_thermal.png and DIR/journal_thermal.json.
 """
 
 from __future__ import annotations
