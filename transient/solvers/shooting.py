@@ -359,6 +359,16 @@ def extrapolate_state(speeds, states, speed, points) -> np.ndarray | None:
 
 
 
+def stability_onset_speed(speeds, max_multiplier) -> float:
+    """The first speed where the largest Floquet multiplier's modulus crosses 1, linearly interpolated between the
+    two speeds that bracket it (NaN if it does not cross)."""
+    for i in range(1, len(max_multiplier)):
+        a, b = max_multiplier[i - 1], max_multiplier[i]
+        if np.isfinite(a) and np.isfinite(b) and (a - 1.0) * (b - 1.0) < 0:
+            return float(speeds[i - 1] + (1.0 - a) * (speeds[i] - speeds[i - 1]) / (b - a))
+    return float("nan")
+
+
 def floquet_multipliers(flow: Callable, y, period: float, k: int = 4, *, t0: float = 0.0, rtol: float = 1e-8,
                         derivative: Callable | None = None, fd_step: float = 1e-6, norm: Callable = _max_norm,
                         ncv: int | None = None, arnoldi_tol: float = 1e-6) -> tuple[np.ndarray, np.ndarray, int]:

@@ -44,7 +44,7 @@ from transient.solvers.integrate import Steps, solve
 from transient.solvers.settling import settled_stop, settles
 from transient.solvers.progress import progress_bar
 from transient.solvers.shooting import (ShootingSettings, extrapolate_state, floquet_multipliers, newton_krylov,
-                                         newton_picard)
+                                         newton_picard, stability_onset_speed)
 from transient.solvers.legacy import keyword_table, run_settings
 from transient.solvers.settings import Integration, LongRun, Recording, check_unused
 
@@ -440,12 +440,7 @@ def _curve(speeds, orbits, whirls) -> ResponseCurve:
     for i, p in enumerate(orbits):
         mu[i, : min(2, p.multipliers.size)] = p.multipliers[:2]
     mmax = np.array([p.max_multiplier for p in orbits])
-    onset = nan
-    for i in range(1, len(orbits)):
-        a, b = mmax[i - 1], mmax[i]
-        if np.isfinite(a) and np.isfinite(b) and (a - 1.0) * (b - 1.0) < 0:
-            onset = float(speeds[i - 1] + (1.0 - a) * (speeds[i] - speeds[i - 1]) / (b - a))
-            break
+    onset = stability_onset_speed(speeds, mmax)
     bad = [f"{s:g}" for s, p in zip(speeds, orbits) if not p.converged]
     return ResponseCurve(
         speed_rpm=speeds, semi_major=np.array([p.semi_major if good else nan for p, good in zip(orbits, ok)]),

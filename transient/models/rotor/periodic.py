@@ -28,7 +28,7 @@ from transient.models.rotor.content_form import ContentSystem
 from transient.models.rotor.model import SystemDAE
 from transient.models.rotor.results import PeriodicResponse, RotorResponseCurve
 from transient.solvers.integrate import Problem, Steps, solve
-from transient.solvers.shooting import ShootingSettings, extrapolate_state, newton_picard
+from transient.solvers.shooting import ShootingSettings, extrapolate_state, newton_picard, stability_onset_speed
 
 #: time integrators of the period map: IDA on the universal films, or the conservative BDF2 on their content form
 INTEGRATORS = ("ida", "bdf2")
@@ -201,12 +201,7 @@ def _curve(system, speeds, orbits, integrator) -> RotorResponseCurve:
         m = np.asarray(p.multipliers)[:2]
         mu[i, :m.size] = m
     mmax = np.array([p.max_multiplier for p in orbits])
-    onset = nan
-    for i in range(1, len(orbits)):
-        a, b = mmax[i - 1], mmax[i]
-        if np.isfinite(a) and np.isfinite(b) and (a - 1.0) * (b - 1.0) < 0:
-            onset = float(speeds[i - 1] + (1.0 - a) * (speeds[i] - speeds[i - 1]) / (b - a))
-            break
+    onset = stability_onset_speed(speeds, mmax)
     bad = [f"{n:g}" for n, p in zip(speeds, orbits) if not p.converged]
     return RotorResponseCurve(speed_rpm=speeds, amplitude=amp, multipliers=mu, max_multiplier=mmax,
                               stable=np.array([p.stable for p in orbits]),
