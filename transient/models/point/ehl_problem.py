@@ -23,7 +23,6 @@ Fischer-Burmeister row leaves free (the Schur step of FBNS), and factorised by L
 
 from __future__ import annotations
 
-import math
 
 import numpy as np
 import scipy.fft as sfft
@@ -31,6 +30,7 @@ import scipy.sparse as sp
 
 from transient.models.point.kernels import node_properties, reynolds
 from transient.physics.elasticity import SurfaceConvolution, surface_influence
+from transient.models.ehl.complementarity import fb_derivatives
 
 
 class MirroredConvolution:
@@ -195,14 +195,8 @@ class PointFilm:
         return a_p, d_h, a_t
 
     def fb_derivatives(self, u, e):
-        """``(dFB/dP, dFB/dtheta)`` per node (at P = 1 - theta = 0: the generalised value 1 - 1/sqrt 2)."""
-        n = self.n
-        p, b, rad = u[:n], 1.0 - u[n: 2 * n], e["rad"]
-        safe = np.where(rad > 0, rad, 1.0)
-        g = 1.0 - 1.0 / math.sqrt(2.0)
-        alpha = np.where(rad > 0, 1.0 - p / safe, g)
-        beta = np.where(rad > 0, 1.0 - b / safe, g)
-        return alpha, -beta
+        """``(dFB/dp, dFB/dtheta)`` per node (:func:`~transient.models.ehl.complementarity.fb_derivatives`)."""
+        return fb_derivatives(u[: self.n], u[self.n: 2 * self.n], e["rad"])
 
     def storage(self, e):
         """The film content ``q = rho theta H`` at the unknowns (the transient's stored mass)."""

@@ -31,6 +31,7 @@ from numba import njit
 from transient.models.point.reduced import schur
 from transient.models.roller.ehl_problem import EHLFilm
 from transient.models.roller.kernels import node_properties
+from transient.models.ehl.complementarity import fb_derivatives
 
 #: local Jacobian slots: centre, west, east, west-west, and their offsets in full nodes
 N_LOCAL = 4
@@ -143,12 +144,8 @@ class LineContentFilm:
                     load=self.weight @ p - load_ratio)
 
     def fb_derivatives(self, u, e):
-        """``(dFB/dp, dFB/dtheta)`` per node; at the kink ``p = 1 - theta = 0`` the element of the generalised
-        Jacobian of a full film (``(0, -1)``: theta held, the pressure free, as on the side ``p > 0``)."""
-        n = self.n
-        p, b, rad = u[:n], 1.0 - u[n: 2 * n], e["rad"]
-        safe = np.where(rad > 0, rad, 1.0)
-        return np.where(rad > 0, 1.0 - p / safe, 0.0), -np.where(rad > 0, 1.0 - b / safe, 1.0)
+        """``(dFB/dp, dFB/dtheta)`` per node (:func:`~transient.models.ehl.complementarity.fb_derivatives`)."""
+        return fb_derivatives(u[: self.n], u[self.n: 2 * self.n], e["rad"])
 
     def schur_matrix(self, e, b_p, b_t) -> np.ndarray:
         """Dense ``S = [[J_p diag(b_p) + J_theta diag(b_t), dR/dh0], [load row diag(b_p), 0]]``: the Newton

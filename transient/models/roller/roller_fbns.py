@@ -37,6 +37,7 @@ from transient.models.roller.line_newton import content_newton
 from transient.models.roller.roller_fft import RollerTwoLevel
 from transient.models.roller.roller_lines import LineBlocks
 from transient.solvers.newton import NewtonError
+from transient.models.ehl.complementarity import fb_derivatives
 
 
 class RollerContentFilm:
@@ -96,12 +97,8 @@ class RollerContentFilm:
                     fb=p + bb - rad, rad=rad, load=self.weight @ p - load_ratio)
 
     def fb_derivatives(self, u, e):
-        """``(dFB/dp, dFB/dtheta)`` per node; at the kink ``p = 1 - theta = 0`` the element ``(0, -1)`` of the
-        generalised Jacobian (theta held, the pressure free, as on the side ``p > 0``)."""
-        n = self.n
-        p, b, rad = u[:n], 1.0 - u[n: 2 * n], e["rad"]
-        safe = np.where(rad > 0, rad, 1.0)
-        return np.where(rad > 0, 1.0 - p / safe, 0.0), -np.where(rad > 0, 1.0 - b / safe, 1.0)
+        """``(dFB/dp, dFB/dtheta)`` per node (:func:`~transient.models.ehl.complementarity.fb_derivatives`)."""
+        return fb_derivatives(u[: self.n], u[self.n: 2 * self.n], e["rad"])
 
     def schur_matrix(self, e, b_p, b_t) -> np.ndarray:
         """Dense ``(n + 1)`` Schur matrix of the Newton step after ``dp = b_p z``, ``dtheta = b_t z``
