@@ -17,13 +17,13 @@ from transient.study.stribeck import StribeckCurve, stribeck_curve
 def torque_minimum(speed_rpm, torque) -> float:
     """The speed [rpm] of the least torque: the vertex of the parabola in log(speed) through the least sample and
     its two neighbours (the least sample's speed if it is the first or the last)."""
-    s = np.log(np.asarray(speed_rpm, dtype=float))
+    speed = np.asarray(speed_rpm, dtype=float)
     t = np.asarray(torque, dtype=float)
     k = int(np.argmin(t))
     if k == 0 or k == t.size - 1:
-        return float(np.exp(s[k]))
-    a, b, _ = np.polyfit(s[k - 1:k + 2], t[k - 1:k + 2], 2)
-    return float(np.exp(-b / (2.0 * a))) if a > 0 else float(np.exp(s[k]))
+        return float(speed[k])
+    a, b, _ = np.polyfit(np.log(speed[k - 1:k + 2]), t[k - 1:k + 2], 2)
+    return float(np.exp(-b / (2.0 * a))) if a > 0 else float(speed[k])
 
 
 @dataclass(frozen=True)
@@ -71,8 +71,11 @@ def measured_minimum(load) -> float:
 
 
 def deviations(curve: RigCurve) -> dict:
-    """Per measured speed [rpm] of the curve's load: (measured, computed) torque [N m] and the relative deviation
-    computed / measured - 1 (the curve must contain the measured speeds)."""
-    s, t = sander.MEASURED[curve.load]
-    comp = curve.at(s)
-    return {float(n): (float(m), float(c), float(c / m - 1.0)) for n, m, c in zip(s, t, comp)}
+    """Per measured speed [rpm] of the curve's load that the curve computed: (measured, computed) torque [N m] and
+    the relative deviation computed / measured - 1."""
+    out = {}
+    for n, m in zip(*sander.MEASURED[curve.load]):
+        if np.any(np.isclose(curve.speed_rpm, n, rtol=1e-12)):
+            c = float(curve.at(n)[0])
+            out[float(n)] = (float(m), c, c / m - 1.0)
+    return out
