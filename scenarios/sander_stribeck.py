@@ -8,7 +8,7 @@ summits and Patir-Cheng flow factors as transcribed in MBDyn's test (transient.p
 Stribeck curves of the test bearing and of one support (half the load) from 4000 rpm down, the shaft torque their
 sum with both supports; beside it the measured torque and MBDyn's elastic model at 8 kN. The same with the summits'
 mean plane on the surfaces' (delta = 0) as the sensitivity to the contact's offset. --quick: 48 x 8 and 12 speeds;
-else 151 x 21 and 27 speeds (the measured ones among them). Writes DIR/sander_stribeck.png and .json.
+else 151 x 21 and 26 speeds (the measured ones among them). Writes DIR/sander_stribeck.png and .json.
 """
 
 from __future__ import annotations

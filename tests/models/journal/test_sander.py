@@ -11,9 +11,12 @@ import pytest
 from scipy.integrate import quad
 from scipy.stats import norm
 
+from figure_checks import figure_problems
 from transient.params import sander
 from transient.physics.asperity import SummitContact
-from transient.study.sander import deviations, measured_minimum, rig_curve, torque_minimum
+from transient.plots import mixed
+from transient.study.sander import RigCurve, deviations, measured_minimum, rig_curve, torque_minimum
+from transient.study.stribeck import StribeckCurve
 
 DATA = json.loads((Path(__file__).resolve().parents[2] / "data" / "sander_2016.json").read_text())
 
@@ -59,6 +62,26 @@ def test_torque_minimum_is_the_vertex_in_log_speed():
     assert torque_minimum(s, t) == pytest.approx(300.0, rel=1e-12)
     assert torque_minimum(s[:2], t[:2]) == 200.0  # least at an end: that sample
     assert measured_minimum(8000.0) == pytest.approx(550, rel=0.01)  # least measured point: 500 rpm
+
+
+def synthetic(load, s, torque, share):
+    n = len(s)
+    return StribeckCurve(load=load, speed_rpm=np.asarray(s, float), friction_torque=np.asarray(torque, float),
+                         friction_coefficient=np.zeros(n), h_min=np.full(n, 1e-6), eccentricity_ratio=np.full(n, 0.9),
+                         contact_load=load * np.asarray(share, float), power_loss=np.zeros(n))
+
+
+def test_rig_figure_names_units_and_adds_the_supports():
+    s = [150.0, 500.0, 3000.0]
+    curve = RigCurve(8000.0, synthetic(8000.0, s, [2.0, 0.3, 0.3], [0.5, 0.01, 0.0]),
+                     synthetic(4000.0, s, [0.1, 0.1, 0.4], [0.0, 0.0, 0.0]))
+    assert curve.torque == pytest.approx([2.2, 0.5, 1.1])
+    assert curve.at(500.0) == pytest.approx([0.5])
+    assert deviations(curve) == {150.0: (1.71, pytest.approx(2.2), pytest.approx(2.2 / 1.71 - 1)),
+                                 500.0: (0.43, pytest.approx(0.5), pytest.approx(0.5 / 0.43 - 1)),
+                                 3000.0: (1.06, pytest.approx(1.1), pytest.approx(1.1 / 1.06 - 1))}
+    fig = mixed.rig_torque([curve], sander.MEASURED, sander.PEER, {8000.0: ((150, 3000), (0.7e-6, 2e-6))}, "rig")
+    assert figure_problems(fig) == []
 
 
 def rig(load, speeds, grid):
