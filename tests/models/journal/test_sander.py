@@ -8,10 +8,10 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from figure_checks import figure_problems
 from scipy.integrate import quad
 from scipy.stats import norm
 
-from figure_checks import figure_problems
 from transient.params import sander
 from transient.physics.asperity import SummitContact
 from transient.plots import mixed
@@ -50,7 +50,7 @@ def test_summit_contact_is_the_greenwood_tripp_integral():
     assert c.summit_sigma == pytest.approx(math.hypot(0.13e-6, 0.28e-6), rel=1e-15)
     for h in (0.3e-6, 0.6e-6, 0.9e-6, 1.4e-6):
         lam = (h - 0.6e-6) / c.summit_sigma
-        f52 = quad(lambda s: (s - lam) ** 2.5 * norm.pdf(s), lam, 40.0, epsabs=0, epsrel=1e-12)[0]
+        f52 = quad(lambda s, lam=lam: (s - lam) ** 2.5 * norm.pdf(s), lam, 40.0, epsabs=0, epsrel=1e-12)[0]
         assert c.load(h) == pytest.approx(1e-3 * 53.3e9 * f52, rel=1e-8)
         dh = 1e-6 * c.summit_sigma
         assert c.load_derivative(h) == pytest.approx((c.load(h + dh) - c.load(h - dh)) / (2 * dh), rel=1e-6)
@@ -102,10 +102,11 @@ def test_hydrodynamic_branch_on_a_coarse_grid():
 @pytest.mark.slow  # 4 Stribeck curves of 13 speeds on 151 x 21 cells: about 2 min of CPU
 def test_sander_rig_on_the_fine_grid():
     """151 x 21 cells, summits as transcribed (docs/validation.md): the hydrodynamic branch (1000 and 3000 rpm)
-    within 10 % at 8 kN and 13 % at 4 kN; the mixed branch above the measured torque (the rigid bore, documented in
-    docs/disagreements.md), and the least torque at a higher speed than measured."""
+    within the 10 % goal at 8 kN (computed +2 %, -2 %); at 4 kN the goal is not met (-12 %, -9 %), checked at 15 %
+    so that a change is seen. The mixed branch (150 to 300 rpm) more than 40 % above the measured torque and the
+    least torque at a higher speed than measured: the rigid bore's disagreement (docs/disagreements.md)."""
     speeds = np.unique(np.concatenate([sander.MEASURED[8000.0][0], [700.0, 850.0, 1200.0, 1500.0, 2000.0]]))
-    for load, tol in ((8000.0, 0.10), (4000.0, 0.13)):
+    for load, tol in ((8000.0, 0.10), (4000.0, 0.15)):
         curve = rig(load, speeds, (151, 21))
         dev = deviations(curve)
         for n in (1000.0, 3000.0):
