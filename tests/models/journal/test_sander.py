@@ -56,6 +56,13 @@ def test_summit_contact_is_the_greenwood_tripp_integral():
         assert c.load_derivative(h) == pytest.approx((c.load(h + dh) - c.load(h - dh)) / (2 * dh), rel=1e-6)
 
 
+@pytest.mark.parametrize("kw, name", [(dict(summit_sigma=None), "summit_sigma"), (dict(summit_sigma=-1e-7), "summit_sigma"),
+                                      (dict(summit_sigma=3e-7, summit_height=-1e-7), "summit_height")])
+def test_bad_summit_contact_is_a_named_error(kw, name):
+    with pytest.raises(ValueError, match=name):
+        SummitContact(asperity_density=3.7e9, asperity_radius=4.3e-5, e_prime=53.3e9, hardness=1e9, sigma=4e-7, **kw)
+
+
 def test_torque_minimum_is_the_vertex_in_log_speed():
     s = np.array([100.0, 200.0, 400.0, 800.0])
     t = (np.log(s) - np.log(300.0)) ** 2 + 1.0
