@@ -37,6 +37,7 @@ __all__ = [
     "greenwood_tripp_derivative",
     "DiscreteDensity",
     "AsperityContact",
+    "SummitContact",
     "STEEL_CONTACT",
     "steel_asperity_contact",
 ]
@@ -290,3 +291,58 @@ def steel_asperity_contact(rq: float, density: DiscreteDensity | None = None, **
     rp = rq / s ** 2
     return AsperityContact(asperity_density=g / (rq * rp), asperity_radius=rp, e_prime=c["e_prime"],
                            hardness=c["hardness"], sigma=rq if density is None else None, density=density)
+
+
+_GT_TWO_SURFACES = 16.0 * math.sqrt(2.0) * math.pi / 15.0
+
+
+@dataclass(frozen=True)
+class SummitContact(AsperityContact):
+    """Greenwood-Tripp contact of two rough surfaces on their summits (Greenwood & Tripp, Proc. IMechE 185 (1970)
+    625-633, the form of Sander et al., Tribol. Int. 96 (2016) 173-183)::
+
+        p_a(h) = K E' F_5/2((h - delta) / sigma_s),   K = 16 sqrt(2) pi / 15 (eta beta sigma_s)^2 sqrt(sigma_s / beta)
+
+    with ``h`` the nominal gap between the surfaces' mean planes, ``delta`` = ``summit_height`` [m] the summits' mean
+    plane above the surfaces' (the two surfaces' sum), ``sigma_s`` = ``summit_sigma`` [m] the composite standard
+    deviation of summit heights, ``eta`` = ``asperity_density`` [1/m^2], ``beta`` = ``asperity_radius`` [m] and E'
+    = ``e_prime`` with 1/E' = sum (1 - nu_i^2) / E_i. ``sigma`` [m] stays the composite RMS roughness of the surface
+    heights (the average flow model's). ``elastic_only`` defaults to False here (a soft bearing alloy's asperities
+    yield; the law is the elastic one all the same)."""
+
+    summit_sigma: float | None = None
+    summit_height: float = 0.0
+    elastic_only: bool = False
+
+    def __post_init__(self):
+        super().__post_init__()
+        if self.summit_sigma is None:
+            raise ValueError("summit_sigma = None [m]; allowed: the summits' composite standard deviation, 1e-10 to "
+                             "1e-3 m")
+        object.__setattr__(self, "summit_sigma", check_range("summit_sigma", self.summit_sigma, "m", 1e-10, 1e-3))
+        object.__setattr__(self, "summit_height", check_range("summit_height", self.summit_height, "m", 0.0, 1e-3))
+
+    @property
+    def k_factor(self) -> float:
+        """K = 16 sqrt(2) pi / 15 (eta beta sigma_s)^2 sqrt(sigma_s / beta) [-]."""
+        s, b = self.summit_sigma, self.asperity_radius
+        return _GT_TWO_SURFACES * (self.asperity_density * b * s) ** 2 * math.sqrt(s / b)
+
+    def _lam(self, h0):
+        return (np.asarray(h0, dtype=float) - self.summit_height) / self.summit_sigma
+
+    def load(self, h0):
+        """Asperity load per unit nominal area [Pa] at the gap h0 [m] between the mean planes."""
+        return self.k_factor * self.e_prime * greenwood_tripp(2.5, self._lam(h0))
+
+    def load_derivative(self, h0):
+        """d(load)/d(h0) [Pa/m] = -(5/2) K E' F_3/2(lambda) / sigma_s."""
+        return -2.5 * self.k_factor * self.e_prime * greenwood_tripp(1.5, self._lam(h0)) / self.summit_sigma
+
+    def real_area_fraction(self, h0):
+        """Real contact area per unit nominal area [-]: pi^2 (eta beta sigma_s)^2 F_2(lambda)."""
+        return math.pi ** 2 * (self.asperity_density * self.asperity_radius * self.summit_sigma) ** 2 * \
+            greenwood_tripp(2.0, self._lam(h0))
+
+    def contact_count(self, h0):
+        raise NotImplementedError("SummitContact: the count of contacting summit pairs is not modelled")

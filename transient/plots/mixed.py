@@ -70,3 +70,46 @@ def stribeck(curve, sigma=None, title=None):
     if title:
         suptitle(fig, title)
     return fig
+
+
+def rig_torque(curves, measured, peer=None, measured_h_min=None, title=None):
+    """The friction rig's shaft torque against speed: per load the computed torque
+    (:class:`~transient.study.sander.RigCurve`: the test bearing plus its two supports, with the test bearing's own
+    share dashed) beside the measured points ``measured`` = ``{load: (speeds [rpm], torques [N m])}`` and a peer
+    code's points ``peer`` (same form); the least-torque speeds marked. Right: the test bearing's minimum film
+    (with ``measured_h_min`` = ``{load: (speeds, h_min [m])}``) and the asperities' share of its load."""
+    fig, ax = figure(1, 2, size=(13, 4.6))
+    colours = ("tab:blue", "tab:red", "tab:green", "tab:purple")
+    for c, curve in zip(colours, curves):
+        lab = f"{curve.load:g} N"
+        s = curve.speed_rpm
+        ax[0].plot(s, curve.torque, "-", color=c, lw=1.5, label=f"computed, rig ({lab})")
+        ax[0].plot(s, curve.test.friction_torque, "--", color=c, lw=0.9, label=f"computed, test bearing ({lab})")
+        ax[0].axvline(curve.minimum_speed_rpm, color=c, ls=":", lw=0.8)
+        ms, mt = measured[curve.load]
+        ax[0].plot(ms, mt, "o", color=c, mfc="none", label=f"measured ({lab})")
+        if peer and curve.load in peer:
+            ps, pt = peer[curve.load]
+            ax[0].plot(ps, pt, "x", color=c, label=f"peer code, elastic ({lab})")
+        ax[1].plot(s, 1e6 * curve.test.h_min, "-", color=c, label=f"h_min, computed ({lab})")
+        if measured_h_min and curve.load in measured_h_min:
+            hs, hh = measured_h_min[curve.load]
+            ax[1].plot(hs, 1e6 * np.asarray(hh), "s", color=c, mfc="none", label=f"h_min, source ({lab})")
+    for a in ax:
+        a.set_xscale("log")
+        a.grid(True, which="both", lw=0.3)
+        a.set_xlabel("speed [rpm]")
+    ax[0].set_ylabel("shaft torque [N m]")
+    ax[0].set_title("shaft torque (dotted: computed least-torque speed)")
+    ax[0].legend(fontsize=7)
+    ax[1].set_ylabel("test bearing minimum film [um]")
+    ax[1].set_title("minimum film; contact share (right scale)")
+    share = ax[1].twinx()
+    for c, curve in zip(colours, curves):
+        share.plot(curve.speed_rpm, 100 * curve.test.contact_load / curve.load, ":", color=c)
+    share.set_ylabel("asperity share of the test bearing's load [%] (dotted)")
+    share.set_ylim(-2, 102)
+    ax[1].legend(fontsize=7, loc="upper left")
+    if title:
+        suptitle(fig, title)
+    return fig
