@@ -1,0 +1,54 @@
+"""The jump of a rigid rotor on a squeeze-film damper (``scenarios/damper_jump.py``'s system): the circular orbits
+against the rigid rotor's own scalar equation, their continuation through both folds, the whole system's shooting on
+each branch (Floquet multipliers: both outer branches stable, the one between the folds a saddle) and a speed ramp
+that jumps past the fold."""
+
+import numpy as np
+import pytest
+
+from transient import JournalBearing, Rotor, RotorBearingSystem, SqueezeFilmDamper
+from transient.models.rotor.circular_orbits import CircularOrbits, first_orbit, orbits_at_speed
+from transient.units import rpm_to_rad_s
+
+C, MASS, K = 100e-6, 20.0, 2e6
+DAMPER = dict(diameter=0.1, length=0.01, clearance=C, viscosity=0.01, supply_pressure=5e3, centring_stiffness=K)
+UNBALANCE = 0.3 * MASS * C
+
+
+def _system(grid=(16, 2), **kw):
+    d = SqueezeFilmDamper(**DAMPER, grid=grid)
+    return RotorBearingSystem(Rotor(mass=MASS * np.eye(2), stiffness=np.zeros((2, 2))), {0: d},
+                              unbalance=[(0, UNBALANCE, 0.0)], **dict(dict(gravity=0.0), **kw))
+
+
+def _scalar_residual(d, z, speed_rpm):
+    """The rigid rotor's circular orbit written out: (k - m w^2 - f / e) Z = m e w^2 with the film force
+    f = F_r + i F_t along and across the line of centres (relative to the unbalance force)."""
+    w = rpm_to_rad_s(speed_rpm)
+    eps = abs(z)
+    o = d.circular_orbit(eps, speed_rpm)
+    f = complex(o.radial_force, o.tangential_force)
+    return abs((K - MASS * w * w - f / (eps * C)) * z * C - UNBALANCE * w * w) / (UNBALANCE * w * w)
+
+
+def test_a_circular_orbit_solves_the_rigid_rotors_equation():
+    s = _system()
+    for speed in (3000.0, 7000.0):
+        x = first_orbit(CircularOrbits(s, speed), speed)
+        assert x[-1] == pytest.approx(1.0)
+        z = complex(x[0], x[1])
+        assert _scalar_residual(s.dampers[0], z, speed) < 1e-8
+
+
+def test_what_circular_orbits_refuse():
+    with pytest.raises(ValueError, match="gravity"):
+        _system(gravity=9.81).circular_orbits((3000, 6000))
+    d = SqueezeFilmDamper(**DAMPER, grid=(16, 2))
+    b = JournalBearing(0.1, 0.02, 100e-6, 0.01, grid=(16, 2))
+    two = RotorBearingSystem(Rotor.jeffcott(1e7, 20.0, 2.0), {0: d, 2: b}, unbalance=[(1, 1e-4, 0.0)], gravity=0.0)
+    with pytest.raises(ValueError, match="every film"):
+        two.circular_orbits((3000, 6000))
+    lopsided = Rotor(mass=MASS * np.eye(2), stiffness=np.diag([0.0, 1e6]))
+    s = RotorBearingSystem(lopsided, {0: d}, unbalance=[(0, UNBALANCE, 0.0)], gravity=0.0)
+    with pytest.raises(ValueError, match="axisymmetric"):
+        s.circular_orbits((3000, 6000))
