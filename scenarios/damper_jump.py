@@ -32,7 +32,7 @@ DAMPER = dict(diameter=0.1, length=0.01, clearance=C, viscosity=0.01, supply_pre
 MASS = 20.0
 UNBALANCE = 0.3 * MASS * C  # [kg m]
 GRID = (24, 4)
-SPEED_RANGE = (4000.0, 7500.0)
+SPEED_RANGE = (4000.0, 7500.0)  # the circular orbits traced; the run-up goes 300 rpm beyond
 
 
 def system(grid=GRID) -> RotorBearingSystem:
@@ -49,20 +49,21 @@ def transmitted(r) -> np.ndarray:
     return np.hypot(r.bearing_force[:, 0, 0] - k * x, r.bearing_force[:, 0, 1] - k * y)
 
 
-def ramp(s, start_rpm, end_rpm, amplitude, revolutions):
-    """A linear speed ramp from the circular orbit ``amplitude`` at ``start_rpm`` to ``end_rpm`` over
-    ``revolutions``: (speed, e/c, transmitted force) every sixteenth of a revolution, the speed where e/c crosses
-    the midpoint of its start and end values (the jump), the CPU time."""
+def ramp(s, start_rpm, end_rpm, start, other_eps, revolutions):
+    """A linear speed ramp from the state ``start`` at ``start_rpm`` (the whole system's periodic orbit there, at
+    shaft angle 0) to ``end_rpm`` over ``revolutions``: the run, its e/c every sixteenth of a revolution, the speed
+    where e/c first crosses the midpoint of its start and ``other_eps`` (the other stable orbit at the start speed:
+    the jump; NaN without one), the CPU time."""
     mean_rpm = 0.5 * (start_rpm + end_rpm)
     duration = revolutions * 60.0 / mean_rpm
     rate = (end_rpm - start_rpm) / duration
     t0 = time.process_time()
-    r = s.run(revolutions, lambda t: start_rpm + rate * t, start=(0.0, s.circular_orbit_state(start_rpm, amplitude)),
-              reference_speed_rpm=start_rpm, integration=Integration(method="bdf2", rtol=1e-6),
-              recording=Recording(outputs_per_revolution=16), long_run=LongRun(progress=False))
+    r = s.run(revolutions, lambda t: start_rpm + rate * t, start=(0.0, start), reference_speed_rpm=start_rpm,
+              integration=Integration(method="bdf2", rtol=1e-6), recording=Recording(outputs_per_revolution=16),
+              long_run=LongRun(progress=False))
     cpu = time.process_time() - t0
     eps = r.eccentricity_ratio(0)
-    mid = 0.5 * (eps[0] + eps[-1])
+    mid = 0.5 * (eps[0] + other_eps)
     cross = np.flatnonzero((eps[:-1] - mid) * (eps[1:] - mid) <= 0)
     jump = float(r.speed_rpm[cross[0]]) if cross.size else float("nan")
     return r, eps, jump, cpu
@@ -114,17 +115,34 @@ def main(argv=None):
     revolutions = 80 if a.quick else 240
     ramps, jumps = {}, {}
     up_start, down_start = lower_fold + 0.6 * (upper_fold - lower_fold), lower_fold + 0.4 * (upper_fold - lower_fold)
-    cases = {"run-up": (up_start, SPEED_RANGE[1] - 300.0, 0, upper_fold),
+    # the whole system's upper branch past the circular orbits' upper fold, by shooting from the last orbit
+    p = s.periodic_response(up_start, start=s.circular_orbit_state(up_start, orbits_at_speed(s, curve, up_start)[0]),
+                            integrator="bdf2")
+    upper = []
+    for n in np.arange(6600.0, SPEED_RANGE[1] + 301.0, 400.0 if a.quick else 200.0):
+        p = s.periodic_response(n, start=p.state, integrator="bdf2")
+        e = float(np.mean(np.hypot(*p.position(0))) / C)
+        upper.append(dict(speed_rpm=float(n), shooting_eps=e, multipliers_abs=np.abs(np.asarray(p.multipliers)),
+                          stable=bool(p.stable), converged=bool(p.converged)))
+        floquet.append((float(n), e, float("nan"), bool(p.stable)))
+        log(f"  the system's upper branch at {n:.0f} rpm: e/c {e:.4f}, |mu| {np.abs(p.multipliers[0]):.4f}, "
+            f"{'stable' if p.stable else 'UNSTABLE'}, converged {p.converged}")
+        if not (p.converged and e > 0.7):
+            break
+    rec.put("system_upper_branch", upper)
+    cases = {"run-up": (up_start, SPEED_RANGE[1] + 300.0, 0, upper_fold),
              "run-down": (down_start, SPEED_RANGE[0] + 300.0, -1, lower_fold)}
     for name, (n0, n1, which, fold) in cases.items():
-        z = orbits_at_speed(s, curve, n0)[which]  # the first crossing is the upper branch, the last the lower one
-        r, eps, jump, cpu = ramp(s, n0, n1, z, revolutions)
+        found = orbits_at_speed(s, curve, n0)  # the first crossing is the upper branch, the last the lower one
+        p = s.periodic_response(n0, start=s.circular_orbit_state(n0, found[which]), integrator="bdf2")
+        r, eps, jump, cpu = ramp(s, n0, n1, p.state, abs(found[-1 - which][0]), revolutions)
         label = f"{name} {n0:.0f} -> {n1:.0f} rpm in {revolutions} rev (BDF2)"
         ramps[label] = (r.speed_rpm, eps, transmitted(r))
         jumps[name] = dict(start_rpm=n0, end_rpm=n1, revolutions=revolutions, fold_rpm=fold, jump_rpm=jump,
-                           lag=(jump - fold) / fold, cpu_s=cpu, success=bool(r.success))
-        log(f"  {label}: jumps at {jump:.0f} rpm, the fold at {fold:.0f} rpm ({(jump - fold) / fold:+.2%}); "
-            f"{cpu:.0f} s CPU, {r.message}")
+                           lag=(jump - fold) / fold, cpu_s=cpu, success=bool(r.success),
+                           start_eps=float(eps[0]), end_eps=float(eps[-1]))
+        log(f"  {label}: from e/c {eps[0]:.4f} to {eps[-1]:.4f}, jumps at {jump:.0f} rpm, the circular orbits' fold at "
+            f"{fold:.0f} rpm ({(jump - fold) / fold:+.2%}); {cpu:.0f} s CPU, {r.message}")
     rec.put("ramps", jumps)
     title = (f"rigid rotor {MASS:g} kg on a squeeze-film damper (D 0.1 m, L 10 mm, c 100 um, 0.01 Pa s, supply 5 kPa, "
              f"centring spring 2e6 N/m), unbalance {UNBALANCE:g} kg m, grid {GRID[0]}x{GRID[1]}")
