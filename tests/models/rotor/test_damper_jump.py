@@ -123,3 +123,23 @@ def test_the_jump_both_branches_their_floquet_multipliers_and_a_ramp_that_jumps_
     assert r.success, r.message
     assert eps[0] < 0.5 and eps[-1] > 0.7
     assert 0.98 * low < jump < low
+
+
+def test_the_jump_figure_names_units():
+    import sys
+    from pathlib import Path
+
+    import transient.plots as tp
+    from transient.models.rotor.circular_orbits import CircularOrbitCurve
+
+    sys.path.insert(0, str(Path(__file__).parents[2]))
+    from figure_checks import figure_problems
+
+    n = np.array([4000.0, 5000.0, 6000.0, 5500.0, 6500.0])
+    eps = np.array([[0.5], [0.8], [0.85], [0.6], [0.4]])
+    curve = CircularOrbitCurve(speed_rpm=n, eccentricity_ratio=eps, amplitude=eps + 0j, radial_force=-eps,
+                               tangential_force=-eps, transmitted_force=100 * eps, arclength=np.arange(5.0),
+                               speed_slope=np.array([1.0, 1.0, 0.1, -1.0, 1.0]), folds_rpm=np.array([6100.0, 5400.0]),
+                               fold_eccentricity=np.array([0.85, 0.55]), fold_index=np.array([2, 3]), damper_nodes=[0])
+    fig = tp.damper.jump(curve, {"ramp": (n, eps[:, 0], 100 * eps[:, 0])}, [(6000.0, 0.85, 85.0, True)], "jump")
+    assert figure_problems(fig) == []
