@@ -45,3 +45,36 @@ def supply_sweep(pressure_ratio, radial_share, tangential_share, cavitated, titl
     axes[1].grid(True, which="both", lw=0.3)
     suptitle(fig, title)
     return fig
+
+
+def jump(curve, ramps: dict, floquet: list, title: str):
+    """The damper's jump: orbit radius and transmitted force against speed along the circular-orbit path ``curve``
+    (a :class:`~transient.models.rotor.circular_orbits.CircularOrbitCurve`, first damper; solid where the path runs
+    forwards in speed, dashed where it runs back between the folds), the folds marked, the speed ramps on top
+    (``ramps`` name -> (speed [rpm], e/c, transmitted force [N]) of a time run) and the shooting's orbits
+    (``floquet``: (speed [rpm], e/c, transmitted force [N], stable) each, filled when stable)."""
+    fig, axes = figure(1, 2, size=(13.0, 5.0))
+    n, back = curve.speed_rpm, curve.backward
+    series = (curve.eccentricity_ratio[:, 0], curve.transmitted_force[:, 0])
+    for ax, y in zip(axes, series):
+        for mask, style, label in ((~back, "-", "circular orbits, forward branches"),
+                                   (back, "--", "circular orbits, between the folds")):
+            ax.plot(n, np.where(mask | np.roll(mask, 1) | np.roll(mask, -1), y, np.nan), style, color="k", lw=1.4,
+                    label=label)
+        for name, (speed, eps, force) in ramps.items():
+            ax.plot(speed, eps if y is series[0] else force, lw=0.6, alpha=0.8, label=name)
+        for k, i in enumerate(curve.fold_index):
+            f = curve.folds_rpm[k]
+            ax.axvline(f, color="r", lw=0.8, ls=":")
+            ax.annotate(f"fold {f:.0f} rpm", (f, ax.get_ylim()[0]), rotation=90, fontsize=8, color="r", va="bottom")
+        for speed, eps, force, stable in floquet:
+            ax.plot(speed, eps if y is series[0] else force, "o", ms=6, color="tab:blue",
+                    mfc="tab:blue" if stable else "white")
+    axes[0].set(xlabel="speed [rpm]", ylabel="orbit radius / clearance  e/c [-]")
+    axes[1].set(xlabel="speed [rpm]", ylabel="transmitted force (film + centring spring) [N]")
+    for ax in axes:
+        ax.grid(True, lw=0.3)
+    axes[0].plot([], [], "o", color="tab:blue", label="shooting: stable (filled), unstable (open)")
+    axes[0].legend(fontsize=8, loc="upper left")
+    suptitle(fig, title)
+    return fig

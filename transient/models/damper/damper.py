@@ -144,6 +144,15 @@ class SqueezeFilmDamper:
             angle_deg=np.mod(180.0 - s.angle_deg, 360.0)[order], z=s.z, iterations=s.newton_iterations,
             success=s.success, message=s.message)
 
+    def pure_squeeze(self, eccentricity_ratio, eccentricity_rate) -> tuple[float, float]:
+        """The film force [N] (along the line of centres, + outwards; across it) on the journal at
+        ``eccentricity_ratio`` moving along the line of centres at ``eccentricity_rate`` [1/s] (d(e/c)/dt, > 0
+        towards the minimum film), on this damper's Reynolds-condition film at zero spin
+        (:mod:`~transient.models.damper.squeeze`; Butenschoen's displacement case)."""
+        from transient.models.damper.squeeze import pure_squeeze_force
+
+        return pure_squeeze_force(self, eccentricity_ratio, eccentricity_rate)
+
     def lands(self) -> list[tuple[float, bool]]:
         """The film's lands on the modelled grid: (axial length [m], closed: one end sealed shut), the stretches of
         film between the feeds and the ends (the grooves' edges are the grid's cell faces)."""

@@ -123,9 +123,17 @@ def periodic_response(system, speed_rpm, rtol=1e-6, tol=None, modes=2, outputs_p
     """The settled orbit of ``system`` at ``speed_rpm`` (module docstring) as a
     :class:`~transient.models.rotor.results.PeriodicResponse`: Newton-Picard with ``shooting`` (its tolerances
     ``tol``, ``rtol``), from ``start`` (a state at angle 0; default the linear response with the film states)
-    on the ``basis`` (the map's reduced layout; default the ``modes`` least damped modes of the linearisation)."""
+    on the ``basis`` (the map's reduced layout; default the ``modes`` least damped modes of the linearisation). With
+    squeeze-film dampers (which give no quasi-static K and C) the default start is the circular orbit reached from
+    small unbalance where the system has one (:func:`~transient.models.rotor.circular_orbits.default_start`), and the
+    default basis the rotor's coordinates and velocities (:func:`~transient.models.rotor.circular_orbits.rotor_basis`)."""
     dae = system.dae(speed_rpm)
     F = PeriodMap(dae, outputs_per_revolution, atol=1e-3 * rtol, integrator=integrator)
+    if system.dampers:  # no quasi-static K and C: the circular orbit and the rotor's own states
+        from transient.models.rotor.circular_orbits import default_start, rotor_basis
+
+        start = default_start(system, speed_rpm) if start is None else start
+        basis = rotor_basis(system, speed_rpm) if basis is None else basis
     if start is None or basis is None:
         eq = system.equilibrium(speed_rpm)
         lin = system.linearisation(speed_rpm, eq)

@@ -363,9 +363,9 @@ class RotorBearingSystem:
         """The analyses that start from each bearing's quasi-static K and C refuse a system with dampers."""
         if self.dampers:
             raise ValueError(f"squeeze-film dampers at nodes {list(self.dampers)}: the linear analyses (coefficients, "
-                             "unbalance_response, eigenvalues, stability, periodic_response, response_curve) start "
-                             "from each bearing's quasi-static K and C, which a damper does not give here; allowed "
-                             "with dampers: equilibrium and run")
+                             "unbalance_response, eigenvalues, stability) start from each bearing's quasi-static K "
+                             "and C, which a damper does not give here; allowed with dampers: equilibrium, run, "
+                             "periodic_response, response_curve and circular_orbits")
 
     def _linear_matrices(self, coefficients):
         """(M, C, G, K, bearings) for :mod:`transient.models.rotor.linear`: each bearing on the rotor coordinates
@@ -712,9 +712,27 @@ class RotorBearingSystem:
             self._inside(p)
         return curve
 
+    def circular_orbits(self, speed_range_rpm, *, step=0.02, max_step=0.05, max_points=400, start_rpm=None):
+        """The synchronous circular orbits of an axisymmetric rotor on squeeze-film dampers without gravity, traced
+        by pseudo-arclength continuation through the folds of the damper's jump, each damper's film steady in the
+        frame whirling with its journal: a :class:`~transient.models.rotor.circular_orbits.CircularOrbitCurve`
+        (``speed_rpm``, ``eccentricity_ratio``, ``transmitted_force``, ``folds_rpm``;
+        :func:`~transient.models.rotor.circular_orbits.trace`). Their stability: :meth:`periodic_response` started
+        on one (:meth:`circular_orbit_state`) gives its Floquet multipliers."""
+        from transient.models.rotor.circular_orbits import trace
+
+        return trace(self, speed_range_rpm, step, max_step, max_points, start_rpm)
+
+    def circular_orbit_state(self, speed_rpm, amplitude) -> np.ndarray:
+        """The system's state at shaft angle 0 on the circular orbit whose journals are at ``amplitude`` (complex
+        e/c per damper, a row of ``CircularOrbitCurve.amplitude``): a ``start`` of :meth:`periodic_response` or of
+        :meth:`run` (``start=(0, state)`` at this reference speed)."""
+        from transient.models.rotor.circular_orbits import circular_start
+
+        return circular_start(self, speed_rpm, amplitude)
+
     def _shooting_args(self, rtol, tol, modes, outputs_per_revolution, max_iter, integrator, shooting) -> tuple:
-        """The checked (rtol, tol, modes, outputs per revolution, shooting settings, integrator) of a shooting;
-        refuses dampers (the shooting's basis starts from the quasi-static K and C)."""
+        """The checked (rtol, tol, modes, outputs per revolution, shooting settings, integrator) of a shooting."""
         from transient.models.rotor.periodic import INTEGRATORS, SHOOTING_DEFAULTS
 
         rtol = check_range("rtol", rtol, "-", 1e-12, 1e-2)
@@ -731,7 +749,6 @@ class RotorBearingSystem:
                 raise ValueError(f"max_iter = {max_iter!r} with shooting = ShootingSettings(...); allowed: one of them "
                                  "(shooting=ShootingSettings(max_iter=...))")
             check_unused("periodic_response", "shooting", shooting, ("tol", "rtol", "rtol_max"))
-        self._refuse_dampers()
         return rtol, tol, modes, opr, shooting, integrator
 
     def _inside(self, p):
