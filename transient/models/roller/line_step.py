@@ -26,6 +26,7 @@ import scipy.linalg as sla
 from scipy import sparse as sp
 from scipy.sparse import linalg as spla
 
+from transient.checks import check_choice
 from transient.models.roller.line_newton import content_newton, merit
 from transient.solvers.integrate.stepper import StepSolve
 
@@ -35,6 +36,10 @@ ATOL_PER_RTOL = 1e-2
 #: this relative change of the one they were built with (IDA's rule, 25 %), the corrections shrink the residual by
 #: ``SIMPLIFIED_RATE`` at least and converge within ``SIMPLIFIED_ITERS``; else full Newton from the same start
 CJ_CHANGE = 0.25
+#: what :class:`LineFilmStep` keeps from one step to the next: nothing (a full Newton solve, its factorisations
+#: new), the GMRES preconditioner of the Newton steps (above ``line_newton.DIRECT_BELOW`` unknowns: the LU of an
+#: earlier Schur matrix, refreshed when GMRES slows), or the Schur matrix's LU for simplified Newton
+REUSE = ("none", "preconditioner", "simplified")
 SIMPLIFIED_RATE = 0.3
 SIMPLIFIED_ITERS = 8
 
@@ -141,9 +146,11 @@ class LineFilmStep(StepSolve):
     test_first_step = False  # a start off the complementarity (dry, or a full outlet): the first step is the jump onto it
 
     def __init__(self, content, kappa: float, u0, load_ratio, tol: float = 1e-10, max_iter: int = 30,
-                 reuse: bool = True):
+                 reuse: str = "preconditioner"):
         self.content, self.kappa, self.load_ratio = content, float(kappa), load_ratio
-        self.tol, self.max_iter, self.reuse = tol, max_iter, bool(reuse)
+        self.tol, self.max_iter = tol, max_iter
+        self.reuse = check_choice("reuse", reuse, REUSE)
+        self.preconditioner = None
         self.qs = [storage(content, u0)]
         self.newton = 0
         self.factorisations = 0
@@ -163,7 +170,7 @@ class LineFilmStep(StepSolve):
         un, ok = self._newton(rows, start, self.tol, self.max_iter)
         if not ok and start is not u:
             un, ok = self._newton(rows, u, self.tol, self.max_iter)
-        if ok and self.reuse:
+        if ok and self.reuse == "simplified":
             self.frozen = FrozenSchur(rows, un, rows.equations(un), cj)
             self.factorisations += 1
         return (0 if ok else 1), un
@@ -192,13 +199,16 @@ class LineFilmStep(StepSolve):
         """:func:`content_newton` from ``start``; where ``start`` already meets ``tol`` one Newton step is taken
         all the same (a corrector of zero would zero the stepper's error estimate, whose step controller then
         remembers a vanishing error and cuts the next step fivefold)."""
-        un, ok, stats = content_newton(rows, start, tol, max_iter)
+        keep = self.reuse == "preconditioner"
+        un, ok, stats = content_newton(rows, start, tol, max_iter, preconditioner=self.preconditioner if keep else None)
         self.newton += stats.iterations
         self.factorisations += stats.factorisations
         if ok and stats.iterations == 0:
-            un, _, stats = content_newton(rows, un, 0.0, 1)
+            un, _, stats = content_newton(rows, un, 0.0, 1, preconditioner=stats.preconditioner if keep else None)
             self.newton += stats.iterations
             self.factorisations += stats.factorisations
+        if keep:
+            self.preconditioner = stats.preconditioner
         return un, ok
 
     def accepted(self, t, y):
