@@ -165,7 +165,9 @@ def _markdown(data, quick) -> str:
                 lines.append(f"| {r['case']} | {r['cpu_s']:.2f} | {base / r['cpu_s']:.1f}x | {r['steps']} | "
                              f"{r['newton']} | {r['jacobians']} | {r['error']:.1e} |")
         lines.append("")
-    ro = data["roller"]
+    ro = data.get("roller")
+    if not ro:
+        return "\n".join(lines + [f"Total bench time {data['total_s']:.0f} s."])
     lines += [f"### Tapered roller, the paper's loading, clustered {ro['grid'][0]} x {ro['grid'][1]} "
               f"({ro['unknowns']} pressure unknowns)", "",
               f"rtol 1e-5; the steady film-content solve takes {ro['steady_cpu_s']:.1f} s CPU. BDF2 runs within a "
