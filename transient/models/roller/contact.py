@@ -55,7 +55,7 @@ import numpy as np
 from scipy.interpolate import RegularGridInterpolator
 from threadpoolctl import threadpool_limits
 
-from transient.checks import check_memory, check_positive, check_range
+from transient.checks import check_choice, check_int, check_memory, check_positive, check_range
 from transient.models.roller.continuation import PathResult, follow
 from transient.models.roller.dry import DryContact, DrySolver, dry_contact
 from transient.models.roller.ehl_problem import EHLFilm, interpolate_state, solve_steady
@@ -64,9 +64,12 @@ from transient.models.roller.grid import TensorGrid, clustered_axis
 from transient.models.roller.krylov import DenseLU, NewtonKrylov, NewtonMatrix, TwoLevel
 from transient.models.roller.results import EHLConvergenceError, RollerSteady, RollerTransient, UnderResolvedGridError
 from transient.models.roller.roller_fbns import RollerContentFilm, carry_content, content_start, solve_content
+from transient.models.roller.line_step import ATOL_PER_RTOL, LineFilmStep, consistent_content
 from transient.models.roller.transient import load_ratio, run_squeeze
 from transient.physics.line_formulas import dowson_toyoda_central
 from transient.physics.lubricant import DOWSON_HIGGINSON_PARK, Lubricant
+from transient.solvers.integrate import Problem, Steps
+from transient.solvers.integrate import solve as integrate
 from transient.solvers.newton import NewtonError
 
 PAPER_GRID = (94, 45)
@@ -744,34 +747,50 @@ class RollerContact:
         return self.dry().half_width / self.speed
 
     def transient(self, t_end: float, load=None, start="dry", rtol: float = 1e-4, n_out: int = 51,
-                  initial_film: float | None = None, ramp_time: float | None = None) -> RollerTransient:
-        """Transient EHL by IDA (:mod:`transient.models.roller.transient`) on this contact's grid
-        (dense elasticity: use a coarse clustered grid, docs/ehl.md gives the cost) over ``[0, t_end]`` [s].
+                  initial_film: float | None = None, ramp_time: float | None = None, method: str = "ida",
+                  max_steps: int = 5000, time_budget: float | None = None) -> RollerTransient:
+        """Transient EHL over ``[0, t_end]`` [s] on this contact's grid (dense elasticity: use a coarse clustered
+        grid, docs/ehl.md gives the cost): by IDA on the penalty form (:mod:`transient.models.roller.transient`,
+        ``method="ida"``) or by BDF2 on the film-content form (:mod:`transient.models.roller.line_step`,
+        ``method="bdf2"``).
 
         ``load``: None (constant), a number [N] (a step from the starting load smoothed over
         ``ramp_time``, default one transit time c/u) or a function of t [s] -> N. ``start``: ``"dry"``
         -- the dry pressure with the film at the mid-plane centre lifted to ``initial_film`` [m] (default
         half the Dowson-Toyoda central film of the mid-plane) -- or a :class:`RollerSteady` of this
-        contact. The long-time limit is ``steady(penalty=GAMMA)`` (:data:`transient.models.roller.transient.GAMMA`).
+        contact. ``method="ida"``: the exit condition in penalty form, whose long-time limit is
+        ``steady(penalty=GAMMA)`` (:data:`transient.models.roller.transient.GAMMA`). ``method="bdf2"``: the exact
+        complementarity (the film content, cavitation mass-conserving), whose long-time limit is
+        ``steady(method="fbns")`` (at and below the paper case's load the same film as ``steady()``); the content
+        starts full where the start has pressure and mass-conserving where it has none
+        (:func:`~transient.models.roller.line_step.consistent_content`, or a film-content ``start``'s own);
+        ``max_steps`` and ``time_budget`` [s of wall clock] bound that run.
         """
         t_end = check_positive("t_end", t_end, "s")
+        check_choice("method", method, ("ida", "bdf2"))
         if self.grid_spec[0] == "uniform":
             raise ValueError("transient needs a clustered grid (dense elasticity for IDA's dense Jacobian)")
         n_out = int(check_range("n_out", n_out, "-", 2, 1e6))
+        if method == "bdf2":
+            max_steps = check_int("max_steps", max_steps, "-", 1, 10 ** 7)
         nodes = self.grid.nx * self.grid.ny
         n = nodes + 1
-        check_memory(f"this transient ({n_out} outputs on {nodes} nodes)",
-                     dict(jacobian=3 * 8.0 * n * n, elasticity=8.0 * nodes * nodes, outputs=3 * 8.0 * n_out * n),
+        need = dict(elasticity=8.0 * nodes * nodes, outputs=3 * 8.0 * n_out * n)
+        need.update(jacobian=3 * 8.0 * n * n if method == "ida" else 12.0 * n * n)
+        check_memory(f"this transient ({n_out} outputs on {nodes} nodes)", need,
                      "use a coarser clustered grid (dense elasticity and Jacobian grow as the nodes squared) or "
                      "lower n_out")
         film = self.film_problem(self.grid)
         s = self.scales
         w_start = self.load
+        theta0 = None
         if isinstance(start, RollerSteady):
             y0 = np.array(start.state, float)
             if y0.size != film.n + 1:
                 raise ValueError(f"start has {y0.size - 1} pressure nodes, this grid {film.n}")
             w_start = float(film.area_w @ y0[:-1]) * self.load
+            if start.solver_info.get("method") == "fbns":
+                theta0 = film.grid.interior(start.content)
         elif start == "dry":
             y0 = self.initial_guess(film)
             g = film.grid
@@ -786,6 +805,8 @@ class RollerContact:
             raise ValueError(f"start = {start!r}: use 'dry' or a RollerSteady of this contact")
         t_ref = self.time_scale
         ratio = load_ratio(load, self.load, w_start, t_ref, ramp_time)
+        if method == "bdf2":
+            return self._content_transient(film, y0, theta0, ratio, t_end, rtol, n_out, max_steps, time_budget)
         sol, wall, rows = run_squeeze(film, s["lam"], ratio, y0, t_end, t_ref, rtol, n_out,
                                       lambda f, y: self.result(f, y, True, "", 0, [], 0.0))
         last = rows[-1]
@@ -795,6 +816,43 @@ class RollerContact:
                                x=last.x, y=last.y, pressure=last.pressure, film=last.film, success=sol.success,
                                message=sol.message, stats=sol.stats, n_steps=sol.stats.n_steps, n_jacobians=sol.stats.n_jac,
                                wall_time=wall, final_state=sol.y[-1].copy(), final_time=float(sol.t[-1] * t_ref))
+
+    def _content_transient(self, film, y0, theta0, ratio, t_end, rtol, n_out, max_steps, time_budget):
+        """``method="bdf2"`` of :meth:`transient`: :class:`~transient.models.roller.line_step.LineFilmStep` on the
+        film-content form (:class:`~transient.models.roller.roller_fbns.RollerContentFilm`) from ``y0 = [p, h0]``
+        with the content ``theta0`` (None: :func:`~transient.models.roller.line_step.consistent_content`)."""
+        content = RollerContentFilm(film)
+        n, t_ref = content.n, self.time_scale
+        if theta0 is None:
+            u0 = consistent_content(content, y0[:-1], y0[-1])
+        else:
+            u0 = np.concatenate([y0[:-1], theta0, [y0[-1]]])
+        rows, taus = [], []
+
+        def observe(tau, u):
+            taus.append(tau)
+            rows.append(self.result(film, np.append(u[:n], u[-1]), True, "", 0, [], 0.0))
+
+        step = LineFilmStep(content, self.scales["lam"], u0, ratio)
+        problem = Problem(y0=u0, step_solve=step, name="roller contact (film content, FBNS)")
+        # one BLAS thread: the step's dense solves are too small for threads to pay (measured on a 401-node
+        # line: LAPACK's solve of one Schur matrix 4 ms CPU on one thread, 74 ms on two busy cores)
+        with threadpool_limits(limits=1, user_api="blas"):
+            sol = integrate(problem, np.linspace(0.0, t_end / t_ref, n_out), method="bdf2", rtol=rtol,
+                            atol=ATOL_PER_RTOL * rtol, steps=Steps(first_step=1e-3, max_steps=max_steps), store=False,
+                            observer=observe, time_budget=time_budget)
+        tau, u = step.last
+        last = self.result(film, np.append(u[:n], u[-1]), True, "", 0, [], 0.0, content=u[n: 2 * n])
+        tau_out = np.array(taus)
+        return RollerTransient(t=tau_out * t_ref, h_central=np.array([r.h_central for r in rows]),
+                               h_min=np.array([r.h_min for r in rows]), p_max=np.array([r.p_max for r in rows]),
+                               h0=np.array([r.state[-1] for r in rows]) * self.scales["film"],
+                               load=np.array([ratio(t) for t in tau_out]) * self.load, x=last.x, y=last.y,
+                               pressure=last.pressure, film=last.film, success=bool(sol.success),
+                               message="completed" if sol.success else sol.message, stats=sol.stats,
+                               n_steps=sol.stats.n_steps, n_jacobians=step.factorisations,
+                               wall_time=sol.stats.wall_time, final_state=np.append(u[:n], u[-1]),
+                               final_time=float(tau * t_ref))
 
     def result(self, film: EHLFilm, u, ok, msg, iters, norms, wall, info=None, content=None) -> RollerSteady:
         s = self.scales

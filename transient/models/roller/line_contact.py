@@ -25,6 +25,7 @@ import time
 import warnings
 
 import numpy as np
+from threadpoolctl import threadpool_limits
 
 from transient.checks import check_choice, check_int, check_positive, check_range
 from transient.models.roller.continuation import PathResult, follow
@@ -581,9 +582,12 @@ class LineContact:
 
         step = LineFilmStep(content, self.lam, u0, ratio)
         problem = Problem(y0=u0, step_solve=step, name="line contact (film content, FBNS)")
-        sol = integrate(problem, np.linspace(0.0, t_end / t_ref, n_out), method="bdf2", rtol=rtol,
-                        atol=ATOL_PER_RTOL * rtol, steps=Steps(first_step=1e-3, max_steps=max_steps), store=False,
-                        observer=observe, time_budget=time_budget)
+        # one BLAS thread: the step's dense solves are too small for threads to pay (measured on a 401-node
+        # line: LAPACK's solve of one Schur matrix 4 ms CPU on one thread, 74 ms on two busy cores)
+        with threadpool_limits(limits=1, user_api="blas"):
+            sol = integrate(problem, np.linspace(0.0, t_end / t_ref, n_out), method="bdf2", rtol=rtol,
+                            atol=ATOL_PER_RTOL * rtol, steps=Steps(first_step=1e-3, max_steps=max_steps), store=False,
+                            observer=observe, time_budget=time_budget)
         tau, u = step.last
         last = self._result(film, np.append(u[:n], u[-1]), True, "", 0, [], 0.0)
         tau_out = np.array(taus)

@@ -158,6 +158,16 @@ class LineContentFilm:
         schur_kernel(e["dp"], e["dh"], e["dt"], K, b_p, b_t, self.weight, S)
         return S
 
+    def storage_terms(self):
+        """``(rho, rho h, d(rho h)/dp)`` at the interior nodes of the last :meth:`equations`: the pieces of the
+        transient's storage ``q = rho theta h`` (:mod:`transient.models.roller.line_step`)."""
+        return self.props[0, 1:-1], self.props[5, 1:-1], self.props[6, 1:-1]
+
+    def local_columns(self) -> np.ndarray:
+        """The interior node of each local slot of each row (n, 4; -1: none), as ``equations``' ``dt``."""
+        col = np.arange(self.n)[:, None] + OFFSETS[None, :]
+        return np.where((col >= 0) & (col < self.n), col, -1)
+
     def jacobian_product(self, e, v_p, v_t) -> np.ndarray:
         """``J_p v_p + J_theta v_t`` (the Reynolds rows' response to pressure and content changes)."""
         out = np.zeros(self.n)

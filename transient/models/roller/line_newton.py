@@ -54,6 +54,8 @@ class ContentNewtonStats:
     krylov: int = 0
     krylov_misses: int = 0
     norms: list = field(default_factory=list)
+    #: the GMRES preconditioner (LU factors of an earlier Schur matrix) at the end: a next solve may start with it
+    preconditioner: object = None
 
 
 def _gmres(S, r, pre):
@@ -97,13 +99,15 @@ def merit(e, scale):
     return np.concatenate([e["res"] / scale, e["fb"], [e["load"]]])
 
 
-def content_newton(film, u0, tol: float = 1e-10, max_iter: int = 60, step_max: float = 0.5):
-    """Newton (module docstring) from ``u0`` until the largest scaled residual is below ``tol``.
+def content_newton(film, u0, tol: float = 1e-10, max_iter: int = 60, step_max: float = 0.5, preconditioner=None):
+    """Newton (module docstring) from ``u0`` until the largest scaled residual is below ``tol``;
+    ``preconditioner``: the factors a former solve left (``stats.preconditioner``) for GMRES's first step
+    (the dense path above :data:`DIRECT_BELOW` unknowns), e.g. across the steps of a transient.
 
     Returns ``(u, converged, stats)`` (:class:`ContentNewtonStats`; ``stats.norms`` the infinity norm of
     the scaled residual per iteration). Steps whose GMRES missed its tolerance (matrix-free films) are never
     taken silently: :class:`~transient.models.roller.results.InexactStepWarning` names their number."""
-    u, ok, stats = _content_newton(film, u0, tol, max_iter, step_max)
+    u, ok, stats = _content_newton(film, u0, tol, max_iter, step_max, preconditioner)
     if stats.krylov_misses:
         warnings.warn(InexactStepWarning(
             f"{stats.krylov_misses} of {stats.iterations} Newton steps were taken with GMRES short of its tolerance "
@@ -111,14 +115,14 @@ def content_newton(film, u0, tol: float = 1e-10, max_iter: int = 60, step_max: f
     return u, ok, stats
 
 
-def _content_newton(film, u0, tol, max_iter, step_max):
+def _content_newton(film, u0, tol, max_iter, step_max, pre):
     n = film.n
     u = np.array(u0, float)
     e = film.equations(u)
     f = merit(e, e["scale"])
-    stats = ContentNewtonStats(norms=[float(np.max(np.abs(f)))])
+    stats = ContentNewtonStats(norms=[float(np.max(np.abs(f)))], preconditioner=pre)
     m2 = float(f @ f)
-    pre, refresh, step = None, True, None
+    refresh, step = pre is None, None
     for _ in range(max_iter):
         if stats.norms[-1] < tol:
             return u, True, stats
@@ -140,6 +144,7 @@ def _content_newton(film, u0, tol, max_iter, step_max):
                 pre = DenseLU(S)
                 stats.factorisations += 1
             z, pre, refresh = _krylov_step(S, r, pre, stats)
+            stats.preconditioner = pre
         du = np.empty(2 * n + 1)
         du[:n] = a_p + b_p * z[:n]
         du[n: 2 * n] = a_th + b_t * z[:n]

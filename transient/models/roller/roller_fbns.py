@@ -114,6 +114,17 @@ class RollerContentFilm:
             return LineBlocks(A)
         return RollerTwoLevel(A, carry_content(self.grid, u, self.coarse.grid), self.coarse)
 
+    def storage_terms(self):
+        """``(rho, rho h, d(rho h)/dp)`` at the interior nodes of the last :meth:`equations`: the pieces of the
+        transient's storage ``q = rho theta h`` (:mod:`transient.models.roller.line_step`)."""
+        c = self.colh[:, 0]
+        props = self.base.props
+        return props[0][c], props[5][c], props[6][c]
+
+    def local_columns(self) -> np.ndarray:
+        """The interior node of each local slot of each row (n, 6; -1: none), as ``equations``' ``dt``."""
+        return self.colp
+
     def jacobian_product(self, e, v_p, v_t) -> np.ndarray:
         """``J_p v_p + J_theta v_t``: the Reynolds rows' response to pressure and content changes."""
         dh = self.base.deformation(v_p)
