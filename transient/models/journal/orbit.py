@@ -56,6 +56,8 @@ CONTENT_RTOL_FACTOR = 0.1
 #: Newton tolerance on the pressure (p0) and the content H theta of every cell.
 BDF2_MIN_STEPS = 550
 BDF2_FILM_TOL = 1e-8
+#: ``method="bdf2"``: the highest order of its variable-order BDF (:class:`~transient.solvers.integrate.stepper.BDF2`)
+BDF2_MAX_ORDER = 2
 #: ``method="bdf2"``: rows of LAPACK band storage (2 kl + ku + 1) of its bordered band LU per cell of the grid's
 #: smaller dimension, reverse Cuthill-McKee on the Newton pattern: 3.0 with a full-length groove, up to 6.2 with a
 #: partial one (measured on 151 x 21, 64 x 64, 100 x 30, 40 x 100 and 300 x 42); 8 bytes each per film cell.
@@ -488,7 +490,7 @@ class JournalOrbit:
             pattern = self.newton_pattern()[0]
             return _Step(lambda y_, t_: self._problem(y_, t_, touch_gap, formulation, pattern), rtol=ig.rtol,
                          atol=atol, max_step=two_pi / spr, first_step=two_pi * 1e-4,
-                         options={"bdf2": self.bdf2_model()})
+                         options={"bdf2": self.bdf2_model(), "max_order": BDF2_MAX_ORDER})
         return _Step(problem_at, rtol=ig.rtol * (CONTENT_RTOL_FACTOR if formulation == "content" else 1.0), atol=atol)
 
     def at_speed(self, speed_rpm) -> "JournalOrbit":
