@@ -335,7 +335,8 @@ def solve(problem, t_eval, out, guard, s):
                    error_components=solver.error_components, yp0=problem.yp0, first_step=s.first_step,
                    max_step=(s.max_step, s.options["max_step_scale"]) if "max_step_scale" in s.options else s.max_step,
                    fixed_step=float(s.options.get("fixed_step", 0.0)),
-                   test_first_step=solver.test_first_step, max_order=int(s.options.get("max_order", 2)))
+                   test_first_step=solver.test_first_step, max_order=int(s.options.get("max_order", 2)),
+                   max_travel=s.options.get("max_travel"))
     result = drive(stepper, out, guard, SIGINT.check, s.max_steps, step_events)
     tally = s.options.get("newton_counts")
     if tally is not None and isinstance(solver, BandNewton):  # the Newton's cost by operation, summed over solves

@@ -154,13 +154,18 @@ class BDF2(Stepper):
     ``yp0``, zero if None) at ``t0`` to ``t_end``; error test on ``error_components`` with ``rtol`` and ``atol``
     (a number or one per state); first step ``first_step`` (0: 1e-4 of the span), at most ``max_step``
     (0: free), or a pair ``(max_step, scale)``: at most ``max_step * scale(t)`` at the step's start (e.g. a cap in
-    shaft angle on a run whose speed changes); ``fixed_step`` > 0: steps of exactly that size, no error test; ``test_first_step`` False: the
+    shaft angle on a run whose speed changes); ``max_travel = (components, distance)``: steps over which those
+    components (e.g. a journal's position) move at most ``distance`` (Euclidean) at their last step's speed;
+    ``max_order`` in [2, 5]: the highest order of the variable-order BDF (module docstring), 2 the plain BDF2;
+    ``fixed_step`` > 0: steps of exactly that size, no error test; ``test_first_step`` False: the
     first step is not error-tested (a DAE started from an inconsistent state, whose first step measures the
     jump of its algebraic part onto the constraint, not a truncation error)."""
 
     def __init__(self, solver: StepSolve, y0, t0, t_end, *, rtol, atol, error_components=None, yp0=None,
-                 first_step=0.0, max_step=0.0, fixed_step=0.0, test_first_step=True, max_order=2):
+                 first_step=0.0, max_step=0.0, fixed_step=0.0, test_first_step=True, max_order=2, max_travel=None):
         self.solver = solver
+        self.travel = None if max_travel is None else (np.asarray(max_travel[0], dtype=np.int64),
+                                                       float(max_travel[1]))
         self.max_order = int(max_order)
         if not 2 <= self.max_order <= MAX_ORDER:
             raise ValueError(f"max_order = {max_order!r} [-] is out of range; allowed: 2 to {MAX_ORDER}")
@@ -195,7 +200,8 @@ class BDF2(Stepper):
                 t_new = min(self.t_end, self.t_start + (self.n_steps + 1) * self.fixed)
                 h = t_new - t
             else:
-                h = min(self.h, self.h_cap if self.cap_scale is None else self.h_cap * self.cap_scale(t))
+                h = min(self.h, self.h_cap if self.cap_scale is None else self.h_cap * self.cap_scale(t),
+                        self._travel_cap())
                 if t + h >= self.t_end - 1e-9 * h:
                     h = self.t_end - t
                 t_new = t + h
@@ -267,6 +273,15 @@ class BDF2(Stepper):
         top = MAX_RATIO if self.order <= 2 else MAX_RATIO_HIGH
         self.h = h * min(top, max(MIN_RATIO, ratio))
         return None
+
+    def _travel_cap(self):
+        """The longest step over which the ``max_travel`` components (e.g. a journal's position) move at most the
+        given distance at their speed over the last step (no bound before the second point or at rest)."""
+        if self.travel is None or len(self.ts) < 2:
+            return math.inf
+        idx, dist = self.travel
+        speed = float(np.linalg.norm(self.ys[-1][idx] - self.ys[-2][idx])) / (self.ts[-1] - self.ts[-2])
+        return dist / speed if speed > 0.0 else math.inf
 
     def _select_order(self, k, ratio, scale):
         """Order control (as DASSL's and SciPy's BDF): after ``k + 1`` steps at order ``k``, the local errors at
