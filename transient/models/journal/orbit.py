@@ -6,8 +6,10 @@
 * ``"cvode"``, ``"bdf"``, ``"radau"``, ``"lsoda"`` -- the ODE form ``y' = f(tau, y)`` with the analytic
   sparse arrow Jacobian (LSODA gets it dense: scipy's limitation);
 * ``"ida"`` -- the residual form ``F(tau, y, y') = 0`` with its analytic Jacobian ``dF/dy + cj dF/dy'``;
-* ``"bdf2"`` -- the content formulation by :mod:`transient.solvers.integrate.bdf2`: variable-step BDF2 whose steps follow the
-  rotor (error test on X, Y, VX, VY; at least ``steps_per_revolution`` per revolution), the film solved by Newton in
+* ``"bdf2"`` (the default of :meth:`JournalOrbit.run`) -- the content formulation by
+  :mod:`transient.solvers.integrate.bdf2`: variable-step BDF of variable order (2 to ``BDF2_MAX_ORDER``) whose steps
+  follow the rotor (error test on X, Y, VX, VY), bounded in journal travel per step (``BDF2_TRAVEL``) and by
+  ``BDF2_MIN_STEPS`` per revolution, or by an explicit ``steps_per_revolution``; the film solved by Newton in
   the universal variable to a tight pressure/content tolerance every step, mass conserved through every cavity
   crossing;
 * ``"rk4"`` -- the users' hand-coded scheme (the paper's): classical RK4 on the rotor with N steps per
