@@ -212,8 +212,8 @@ def run(quick=False, log=print) -> dict:
 #: BDF at its defaults over rtols (``Integration(method="bdf2", rtol=...)``: variable order up to 5, journal-travel
 #: bound) and plain BDF2 at the earlier default (order 2, cap 550 per revolution); the reference IDA at ``WP_REF``.
 WP = dict(grid=(76, 11), cases=((0.01, 1.0), (0.05, 1.0), (0.3, 1.0)), ida=(1e-4, 1e-5, 1e-6, 1e-7),
-          bdf=(1e-5, 1e-6, 1e-7), bdf2_plain=((550, 1e-4), (550, 1e-6)), opr=20)
-WP_QUICK = dict(WP, grid=(48, 8), ida=(1e-4, 1e-6), bdf=(1e-5, 1e-6), bdf2_plain=((550, 1e-6),))
+          bdf=(1e-5, 1e-6, 1e-7), bdf_capped=((5000, 1e-8),), bdf2_plain=((550, 1e-4), (550, 1e-6)), opr=20)
+WP_QUICK = dict(WP, grid=(48, 8), ida=(1e-4, 1e-6), bdf=(1e-5, 1e-6), bdf_capped=(), bdf2_plain=((550, 1e-6),))
 WP_REF = 1e-9
 
 
@@ -224,6 +224,8 @@ def _wp_run(o, cand, opr):
         ig = Integration(rtol=setting, atol=atol_for(setting))
     elif kind == "bdf":
         ig = Integration(method="bdf2", rtol=setting)
+    elif kind == "bdf_capped":
+        ig = Integration(method="bdf2", rtol=setting[1], steps_per_revolution=setting[0])
     else:
         ig = Integration(method="bdf2", rtol=setting[1], steps_per_revolution=setting[0], max_order=2)
     return lambda revs: o.run(revs, integration=ig, recording=rec, long_run=lr)
@@ -232,22 +234,23 @@ def _wp_run(o, cand, opr):
 def _wp_label(kind, setting):
     return {"ida": lambda: f"IDA rtol {setting:.0e}",
             "bdf": lambda: f"BDF (defaults: order <= 5, travel bound) rtol {setting:.0e}",
+            "bdf_capped": lambda: f"BDF (order <= 5, cap {setting[0]}) rtol {setting[1]:.0e}",
             "bdf2": lambda: f"BDF2 (order 2, cap {setting[0]}) rtol {setting[1]:.0e}"}[kind]()
 
 
-def work_precision(quick=False, log=print) -> dict:
+def work_precision(quick=False, log=print, cases=None) -> dict:
     """Error against a tight reference (IDA rtol ``WP_REF``) against CPU seconds, IDA at its rtols and the BDF of
     ``method="bdf2"`` at its defaults over rtols (and plain BDF2 at the earlier default), on small and large orbits,
     candidates interleaved in one run; and each one's cost at the error of IDA at rtol 1e-6 (the default's)."""
     cfg = WP_QUICK if quick else WP
     out = dict(config=dict(cfg, ref_rtol=WP_REF), rows=[], matched=[])
-    for unb, revs in cfg["cases"]:
+    for unb, revs in cases or cfg["cases"]:
         o = _orbit(cfg["grid"], unb, 6000.0)
         _warm(o)
         ref = _reference_at(o, revs, cfg["opr"])
         case = f"{unb:g} C"
         cands = ([("ida", r) for r in cfg["ida"]] + [("bdf", r) for r in cfg["bdf"]]
-                 + [("bdf2", c) for c in cfg["bdf2_plain"]])
+                 + [("bdf_capped", c) for c in cfg["bdf_capped"]] + [("bdf2", c) for c in cfg["bdf2_plain"]])
         for kind, setting in _interleave(cands):
             r, w, c = _timed(lambda: _wp_run(o, (kind, setting), cfg["opr"])(revs))
             row = _row(case, _wp_label(kind, setting), r, w, c, ref, revs) | dict(form=kind, setting=setting)
@@ -258,7 +261,7 @@ def work_precision(quick=False, log=print) -> dict:
         target = next(x["error"] for x in rows if x["form"] == "ida" and x["setting"] == 1e-6) if 1e-6 in cfg["ida"] \
             else min(x["error"] for x in rows if x["form"] == "ida")
         out["matched"].append(dict(case=case, error=target, ida=_cost_pareto(rows, "ida", target),
-                                   bdf=_cost_pareto(rows, "bdf", target)))
+                                   bdf=_cost_pareto(rows, ("bdf", "bdf_capped"), target)))
     return out
 
 
@@ -274,9 +277,10 @@ def _interleave(cands):
 
 
 def _cost_pareto(rows, form, target, key="cpu_per_rev"):
-    """CPU seconds per revolution for ``form`` to reach ``target`` error, log-log on the lower envelope of its
-    points (``nan``: not reached)."""
-    pts = [(r["error"], r[key]) for r in rows if r["form"] == form and r["error"] > 0]
+    """CPU seconds per revolution for ``form`` (a name or several) to reach ``target`` error, log-log on the lower
+    envelope of its points (``nan``: not reached)."""
+    forms = (form,) if isinstance(form, str) else form
+    pts = [(r["error"], r[key]) for r in rows if r["form"] in forms and r["error"] > 0]
     env = sorted(p for p in pts if not any(q != p and q[0] <= p[0] and q[1] <= p[1] for q in pts))
     if not env or target < env[0][0]:
         return math.nan
@@ -304,7 +308,7 @@ def wp_markdown(wp) -> str:
         L.append(f"| {r['case']} | {r['label']} | {r['steps_per_rev']:.0f} | {r['jac_per_rev']:.0f} | "
                  f"{r['cpu_per_rev']:.2f} | {_fmt(r['error'])} |")
     L += ["", "Cost at IDA rtol 1e-6's error (the default's), CPU s per revolution (log-log on each method's lower "
-              "envelope): " + "; ".join(f"{m['case']} ({_fmt(m['error'])} C): IDA {_fmt(m['ida'], '{:.2f}')}, BDF "
+              "envelope; BDF: its defaults and the capped runs): " + "; ".join(f"{m['case']} ({_fmt(m['error'])} C): IDA {_fmt(m['ida'], '{:.2f}')}, BDF "
                                         f"{_fmt(m['bdf'], '{:.2f}')} ({_fmt(m['ida'] / m['bdf'], '{:.1f}')}x)"
                                         for m in wp["matched"]) + "."]
     return "\n".join(L)
