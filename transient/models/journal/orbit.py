@@ -25,6 +25,8 @@ from which ``run(..., resume=True)`` continues after a crash with nothing lost.
 
 from __future__ import annotations
 
+import math
+
 from dataclasses import dataclass, field
 from typing import Callable
 
@@ -54,13 +56,15 @@ from transient.units import rpm_to_hz
 #: the orbit accuracy of the universal form (docs/journal.md, section 5).
 CONTENT_RTOL_FACTOR = 0.1
 #: ``method="bdf2"`` at its defaults: the variable-order BDF up to ``BDF2_MAX_ORDER``, each step at most
-#: ``BDF2_TRAVEL`` of journal travel [C] (at the journal's speed over the last step: the film's cavitation fronts move
-#: with the journal, and the rotor's error test does not see their error) and at least ``BDF2_MIN_STEPS`` steps per
+#: ``BDF2_TRAVEL`` of journal travel [C] at rtol ``BDF2_TRAVEL_RTOL``, as sqrt(rtol) at others (at the journal's speed
+#: over the last step: the film's cavitation fronts move with the journal, and the rotor's error test does not see
+#: their error; 0.3 C, 76 x 11: the error grows about linearly with the travel) and at least ``BDF2_MIN_STEPS`` steps per
 #: revolution (a safety bound); the rotor's error test sets the step where the journal moves slowly (a small orbit).
 #: An explicit ``steps_per_revolution`` is the cap in shaft angle instead of both. ``BDF2_FILM_TOL``: the film's
 #: Newton tolerance on the pressure (p0) and the content H theta of every cell.
 BDF2_MIN_STEPS = 50
 BDF2_TRAVEL = 1e-3
+BDF2_TRAVEL_RTOL = 1e-6
 BDF2_MAX_ORDER = 5
 BDF2_FILM_TOL = 1e-8
 #: :meth:`JournalOrbit.run`'s method when no ``integration`` is given (``transient bench orbit-size``: at equal error
@@ -336,7 +340,8 @@ class JournalOrbit:
         steps_per_revolution : fixed steps of ``"rk4"`` (default 3000, the paper's); for ``"bdf2"`` the least
             number of steps per revolution (its step cap in shaft angle, rtol refining further where the rotor's
             local error asks for it); left out: ``BDF2_MIN_STEPS`` = 50 as a safety bound and each step at most
-            ``BDF2_TRAVEL`` = 1e-3 C of journal travel (the film's fronts move with the journal).
+            ``BDF2_TRAVEL`` = 1e-3 C of journal travel at rtol 1e-6, as sqrt(rtol) at others (the film's fronts
+            move with the journal).
         max_order : ``"bdf2"`` only: the highest order of its BDF, 2 to 5 (default ``BDF2_MAX_ORDER`` = 5; 2: plain
             BDF2).
         inner_tolerance : ``"rk4"`` only: the per-stage film criterion sum|d theta| / sum theta (paper: 1e-6).
@@ -504,7 +509,8 @@ class JournalOrbit:
             spr = BDF2_MIN_STEPS if ig.steps_per_revolution is None else ig.steps_per_revolution
             options = {"bdf2": self.bdf2_model(), "max_order": BDF2_MAX_ORDER if ig.max_order is None else ig.max_order}
             if ig.steps_per_revolution is None:
-                options["max_travel"] = (np.arange(self.film.n, self.film.n + 2), BDF2_TRAVEL)
+                options["max_travel"] = (np.arange(self.film.n, self.film.n + 2),
+                                         BDF2_TRAVEL * math.sqrt(ig.rtol / BDF2_TRAVEL_RTOL))
             pattern = self.newton_pattern()[0]
             return _Step(lambda y_, t_: self._problem(y_, t_, touch_gap, formulation, pattern), rtol=ig.rtol,
                          atol=atol, max_step=two_pi / spr, first_step=two_pi * 1e-4, options=options)
