@@ -9,7 +9,8 @@ import numpy as np
 import pytest
 
 from transient.solvers.integrate import Problem, solve
-from transient.solvers.integrate.stepper import BDF2, StepSolve, _history
+from transient.solvers.integrate.stepper import (BDF2, StepSolve, _history, bdf_coefficients, divided_difference,
+                                                 extrapolate)
 from transient import Steps
 
 LAM = -2.0  # y' = LAM y + sin(t), exact step solve
@@ -117,9 +118,8 @@ def test_a_scaled_cap_is_scaled_at_each_step():
 def test_bdf_coefficients_are_exact_for_polynomials_of_their_order():
     """The order-k derivative ``cj q(t) + sum a_j q(t_j)`` on k past points of uneven spacing is exact for a
     polynomial of degree k (here k = 4, a quartic)."""
-    from transient.solvers.integrate.stepper import bdf_coefficients, divided_difference, extrapolate
-    q = lambda t: 1.0 - 2.0 * t + 0.5 * t ** 2 + 3.0 * t ** 3 - t ** 4  # noqa: E731
-    dq = lambda t: -2.0 + t + 9.0 * t ** 2 - 4.0 * t ** 3  # noqa: E731
+    q = lambda t: 1.0 - 2.0 * t + 0.5 * t ** 2 + 3.0 * t ** 3 - t ** 4
+    dq = lambda t: -2.0 + t + 9.0 * t ** 2 - 4.0 * t ** 3
     ts, t = [0.0, 0.3, 0.45, 0.8], 1.1
     cj, a = bdf_coefficients(t, ts)
     assert cj * q(t) + sum(aj * q(tj) for aj, tj in zip(a, ts)) == pytest.approx(dq(t), rel=1e-12)
