@@ -31,7 +31,9 @@ step (predictor, error test, step control, dense output, events).
 
 The model hands the kernels as a :class:`Bdf2Model` in ``solve(..., options={"bdf2": model})``;
 ``options["fixed_step"] = h`` takes steps of exactly h with no error test (convergence studies);
-``options["max_step_scale"]``, a function of t, scales ``max_step`` at each step's start (a cap in shaft angle).
+``options["max_step_scale"]``, a function of t, scales ``max_step`` at each step's start (a cap in shaft angle);
+``options["max_order"]`` (2 to 5, default 2) the highest order of the stepper's variable-order BDF;
+``options["max_travel"] = (components, distance)`` bounds each step by the travel of those components (a journal's).
 """
 
 from __future__ import annotations
