@@ -121,10 +121,14 @@ def test_the_checkpoint_key_comes_from_the_objects(tmp_path):
     with pytest.warns(DeprecationWarning):
         o.run(1.0, outputs_per_revolution=8, chunk_revolutions=0.5, checkpoint=path, progress=False)
     lr = LongRun(chunk_revolutions=0.5, checkpoint=path, resume=True, progress=False)
-    r = o.run(1.0, integration=Integration(), recording=Recording(outputs_per_revolution=8), long_run=lr)
+    r = o.run(1.0, integration=Integration(method="bdf2"), recording=Recording(outputs_per_revolution=8),
+              long_run=lr)  # the orbit's default method
     assert r.success and r.t.size == 9
     with pytest.raises(CheckpointError, match="written with rtol = 1e-06, this run has rtol = 1e-07"):
-        o.run(1.0, integration=Integration(rtol=1e-7), recording=Recording(outputs_per_revolution=8), long_run=lr)
+        o.run(1.0, integration=Integration(method="bdf2", rtol=1e-7), recording=Recording(outputs_per_revolution=8),
+              long_run=lr)
+    with pytest.raises(CheckpointError, match='this run has formulation = "universal"'):
+        o.run(1.0, integration=Integration(), recording=Recording(outputs_per_revolution=8), long_run=lr)
 
 
 def test_an_old_keyword_given_as_none_is_checked_not_taken_as_left_out():

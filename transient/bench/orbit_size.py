@@ -145,6 +145,7 @@ def run(quick=False, log=print) -> dict:
     grid, rtols, bdf2, opr = cfg["grid"], cfg["rtols"], cfg["bdf2"], cfg["opr"]
     out = dict(config=dict(cfg, quick=quick, ref_rtol=REF_RTOL, bdf2_rtol=BDF2_RTOL), rows=[])
     rows = out["rows"]
+    out["work_precision"] = work_precision(quick, log)
 
     # ---- large orbit: 0.3 C from equilibrium --------------------------------------------------------------
     o = _orbit(grid, 0.3, 6000.0)
@@ -207,6 +208,112 @@ def run(quick=False, log=print) -> dict:
     return out
 
 
+#: Work-precision at the journal's own settings (one run): the cases (unbalance [C], revolutions), IDA's rtols, the
+#: BDF at its defaults over rtols (``Integration(method="bdf2", rtol=...)``: variable order up to 5, journal-travel
+#: bound) and plain BDF2 at the earlier default (order 2, cap 550 per revolution); the reference IDA at ``WP_REF``.
+WP = dict(grid=(76, 11), cases=((0.01, 1.0), (0.05, 1.0), (0.3, 1.0)), ida=(1e-4, 1e-5, 1e-6, 1e-7),
+          bdf=(1e-5, 1e-6, 1e-7), bdf_capped=((5000, 1e-8),), bdf2_plain=((550, 1e-4), (550, 1e-6)), opr=20)
+WP_QUICK = dict(WP, grid=(48, 8), ida=(1e-4, 1e-6), bdf=(1e-5, 1e-6), bdf_capped=(), bdf2_plain=((550, 1e-6),))
+WP_REF = 1e-9
+
+
+def _wp_run(o, cand, opr):
+    kind, setting = cand
+    rec, lr = Recording(outputs_per_revolution=opr), LongRun(progress=False)
+    if kind == "ida":
+        ig = Integration(rtol=setting, atol=atol_for(setting))
+    elif kind == "bdf":
+        ig = Integration(method="bdf2", rtol=setting)
+    elif kind == "bdf_capped":
+        ig = Integration(method="bdf2", rtol=setting[1], steps_per_revolution=setting[0])
+    else:
+        ig = Integration(method="bdf2", rtol=setting[1], steps_per_revolution=setting[0], max_order=2)
+    return lambda revs: o.run(revs, integration=ig, recording=rec, long_run=lr)
+
+
+def _wp_label(kind, setting):
+    return {"ida": lambda: f"IDA rtol {setting:.0e}",
+            "bdf": lambda: f"BDF (defaults: order <= 5, travel bound) rtol {setting:.0e}",
+            "bdf_capped": lambda: f"BDF (order <= 5, cap {setting[0]}) rtol {setting[1]:.0e}",
+            "bdf2": lambda: f"BDF2 (order 2, cap {setting[0]}) rtol {setting[1]:.0e}"}[kind]()
+
+
+def work_precision(quick=False, log=print, cases=None) -> dict:
+    """Error against a tight reference (IDA rtol ``WP_REF``) against CPU seconds, IDA at its rtols and the BDF of
+    ``method="bdf2"`` at its defaults over rtols (and plain BDF2 at the earlier default), on small and large orbits,
+    candidates interleaved in one run; and each one's cost at the error of IDA at rtol 1e-6 (the default's)."""
+    cfg = WP_QUICK if quick else WP
+    out = dict(config=dict(cfg, ref_rtol=WP_REF), rows=[], matched=[])
+    for unb, revs in cases or cfg["cases"]:
+        o = _orbit(cfg["grid"], unb, 6000.0)
+        _warm(o)
+        ref = _reference_at(o, revs, cfg["opr"])
+        case = f"{unb:g} C"
+        cands = ([("ida", r) for r in cfg["ida"]] + [("bdf", r) for r in cfg["bdf"]]
+                 + [("bdf_capped", c) for c in cfg["bdf_capped"]] + [("bdf2", c) for c in cfg["bdf2_plain"]])
+        for kind, setting in _interleave(cands):
+            r, w, c = _timed(lambda: _wp_run(o, (kind, setting), cfg["opr"])(revs))
+            row = _row(case, _wp_label(kind, setting), r, w, c, ref, revs) | dict(form=kind, setting=setting)
+            out["rows"].append(row)
+            log(f"  {case} {row['label']}: {row['steps_per_rev']:.0f} steps, {row['cpu_per_rev']:.2f} s CPU, "
+                f"error {row['error']:.2e} C")
+        rows = [x for x in out["rows"] if x["case"] == case]
+        target = next(x["error"] for x in rows if x["form"] == "ida" and x["setting"] == 1e-6) if 1e-6 in cfg["ida"] \
+            else min(x["error"] for x in rows if x["form"] == "ida")
+        out["matched"].append(dict(case=case, error=target, ida=_cost_pareto(rows, "ida", target),
+                                   bdf=_cost_pareto(rows, ("bdf", "bdf_capped"), target)))
+    return out
+
+
+def _interleave(cands):
+    """IDA and BDF candidates alternating (so a change of the machine's load falls on both)."""
+    ida = [c for c in cands if c[0] == "ida"]
+    other = [c for c in cands if c[0] != "ida"]
+    out = []
+    for k in range(max(len(ida), len(other))):
+        pair = [x[k] for x in (ida, other) if k < len(x)]
+        out += pair if k % 2 == 0 else pair[::-1]
+    return out
+
+
+def _cost_pareto(rows, form, target, key="cpu_per_rev"):
+    """CPU seconds per revolution for ``form`` (a name or several) to reach ``target`` error, log-log on the lower
+    envelope of its points (``nan``: not reached)."""
+    forms = (form,) if isinstance(form, str) else form
+    pts = [(r["error"], r[key]) for r in rows if r["form"] in forms and r["error"] > 0]
+    env = sorted(p for p in pts if not any(q != p and q[0] <= p[0] and q[1] <= p[1] for q in pts))
+    if not env or target < env[0][0]:
+        return math.nan
+    if target >= env[-1][0]:
+        return env[-1][1]
+    for (e0, w0), (e1, w1) in zip(env[:-1], env[1:]):
+        if e0 <= target <= e1:
+            s = (math.log(target) - math.log(e0)) / (math.log(e1) - math.log(e0)) if e1 > e0 else 0.0
+            return math.exp(math.log(w0) + s * (math.log(w1) - math.log(w0)))
+    return math.nan
+
+
+def _reference_at(o, revs, opr):
+    return o.run(revs, integration=Integration(rtol=WP_REF, atol=atol_for(WP_REF)),
+                 recording=Recording(outputs_per_revolution=opr), long_run=LongRun(progress=False))
+
+
+def wp_markdown(wp) -> str:
+    c = wp["config"]
+    L = [f"**Work-precision at the journal's own settings** ({c['grid'][0]} x {c['grid'][1]}, 6000 rpm, one revolution "
+         f"from the static equilibrium; error = largest journal-centre distance from IDA at rtol {c['ref_rtol']:g} "
+         f"[C]; CPU seconds of one process, candidates interleaved):", "",
+         "| orbit | run | steps | Jacobians | CPU s | error [C] |", "|---|---|---|---|---|---|"]
+    for r in wp["rows"]:
+        L.append(f"| {r['case']} | {r['label']} | {r['steps_per_rev']:.0f} | {r['jac_per_rev']:.0f} | "
+                 f"{r['cpu_per_rev']:.2f} | {_fmt(r['error'])} |")
+    L += ["", "Cost at IDA rtol 1e-6's error (the default's), CPU s per revolution (log-log on each method's lower "
+              "envelope; BDF: its defaults and the capped runs): " + "; ".join(f"{m['case']} ({_fmt(m['error'])} C): IDA {_fmt(m['ida'], '{:.2f}')}, BDF "
+                                        f"{_fmt(m['bdf'], '{:.2f}')} ({_fmt(m['ida'] / m['bdf'], '{:.1f}')}x)"
+                                        for m in wp["matched"]) + "."]
+    return "\n".join(L)
+
+
 def _fmt(v, f="{:.2e}"):
     return "-" if v is None or (isinstance(v, float) and math.isnan(v)) else f.format(v)
 
@@ -250,6 +357,7 @@ def markdown(res) -> str:
           + _long_text(res["whip_long"]) + ".",
           f"**Small orbit, {c['small_revs']} revolutions** (the faster of two alternating runs): "
           + _long_text(res["small_long"]) + "."]
+    L += ["", wp_markdown(res["work_precision"])]
     short = [f"{k} = {c[k]} (the benchmark's {FULL[k]})" for k in ("whip_timed", "small_revs")
              if not c["quick"] and c[k] != FULL[k]]
     if short:

@@ -34,9 +34,9 @@ FORMULATIONS = ("content", "universal")
 RK4_INNER_TOLERANCE = 1e-6
 #: The settings of :class:`Integration` that only some methods use, by method (the others are refused when given):
 #: ``linear_solver`` the SUNDIALS methods, ``dt`` and ``inner_tolerance`` the fixed-step ``rk4``,
-#: ``steps_per_revolution`` ``rk4`` (its steps) and ``bdf2`` (its least number of steps).
+#: ``steps_per_revolution`` ``rk4`` (its steps) and ``bdf2`` (its least number of steps), ``max_order`` ``bdf2``.
 METHOD_SETTINGS = {"cvode": ("linear_solver",), "ida": ("linear_solver",), "bdf": (), "radau": (), "lsoda": (),
-                   "rk4": ("dt", "inner_tolerance", "steps_per_revolution"), "bdf2": ("steps_per_revolution",)}
+                   "rk4": ("dt", "inner_tolerance", "steps_per_revolution"), "bdf2": ("steps_per_revolution", "max_order")}
 
 
 @dataclass(frozen=True)
@@ -47,7 +47,8 @@ class Integration:
     the model's dimensionless states) in [1e-30, 1]; ``formulation`` ``None`` (the model's default),
     ``"universal"`` or ``"content"``; ``steps_per_revolution`` [1/rev] ``None`` (the method's default) or in
     [4, 1e7] (``rk4``: its fixed steps; ``bdf2``: its least number of steps); ``inner_tolerance`` [-] > 0
-    (``rk4``: the per-stage film criterion; default ``RK4_INNER_TOLERANCE``); ``dt`` [-] ``None`` or > 0 (the
+    (``rk4``: the per-stage film criterion; default ``RK4_INNER_TOLERANCE``); ``max_order`` [-] ``None`` (the
+    model's default) or an integer in [2, 5] (``bdf2``: the highest order of its variable-order BDF); ``dt`` [-] ``None`` or > 0 (the
     fixed step of ``rk4`` in the model's time unit); ``linear_solver`` one of
     :data:`~transient.solvers.integrate.LINEAR_SOLVERS` (the SUNDIALS methods ``cvode`` and ``ida``).
 
@@ -61,6 +62,7 @@ class Integration:
     steps_per_revolution: float | None = None
     inner_tolerance: float | None = None
     dt: float | None = None
+    max_order: int | None = None
     linear_solver: str = "auto"
 
     def __post_init__(self):
@@ -76,10 +78,13 @@ class Integration:
             _set(self, "inner_tolerance", check_positive("inner_tolerance", self.inner_tolerance, "-"))
         if self.dt is not None:
             _set(self, "dt", check_positive("dt", self.dt, "-"))
+        if self.max_order is not None:
+            _set(self, "max_order", check_int("max_order", self.max_order, "-", 2, 5))
         check_choice("linear_solver", self.linear_solver, LINEAR_SOLVERS)
         for name, unit, unused in (("steps_per_revolution", " [1/rev]", self.steps_per_revolution is None),
                                    ("inner_tolerance", " [-]", self.inner_tolerance is None),
                                    ("dt", " [-]", self.dt is None),
+                                   ("max_order", " [-]", self.max_order is None),
                                    ("linear_solver", "", self.linear_solver == "auto")):
             if not unused and name not in METHOD_SETTINGS.get(self.method, ()):
                 users = [m for m in METHODS if name in METHOD_SETTINGS.get(m, ())]
@@ -91,7 +96,8 @@ class Integration:
     def key(self) -> dict:
         """The settings that change a run of this method (the others ``None``), to key a checkpoint."""
         fixed = self.method == "rk4"
-        return dict(method=self.method, rtol=None if fixed else self.rtol, atol=None if fixed else self.atol,
+        extra = dict(max_order=self.max_order) if self.method == "bdf2" else {}
+        return extra | dict(method=self.method, rtol=None if fixed else self.rtol, atol=None if fixed else self.atol,
                     steps_per_revolution=self.steps_per_revolution if self.method in ("rk4", "bdf2") else None,
                     inner_tolerance=self.inner_tolerance if fixed else None)
 

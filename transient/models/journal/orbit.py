@@ -6,8 +6,10 @@
 * ``"cvode"``, ``"bdf"``, ``"radau"``, ``"lsoda"`` -- the ODE form ``y' = f(tau, y)`` with the analytic
   sparse arrow Jacobian (LSODA gets it dense: scipy's limitation);
 * ``"ida"`` -- the residual form ``F(tau, y, y') = 0`` with its analytic Jacobian ``dF/dy + cj dF/dy'``;
-* ``"bdf2"`` -- the content formulation by :mod:`transient.solvers.integrate.bdf2`: variable-step BDF2 whose steps follow the
-  rotor (error test on X, Y, VX, VY; at least ``steps_per_revolution`` per revolution), the film solved by Newton in
+* ``"bdf2"`` (the default of :meth:`JournalOrbit.run`) -- the content formulation by
+  :mod:`transient.solvers.integrate.bdf2`: variable-step BDF of variable order (2 to ``BDF2_MAX_ORDER``) whose steps
+  follow the rotor (error test on X, Y, VX, VY), bounded in journal travel per step (``BDF2_TRAVEL``) and by
+  ``BDF2_MIN_STEPS`` per revolution, or by an explicit ``steps_per_revolution``; the film solved by Newton in
   the universal variable to a tight pressure/content tolerance every step, mass conserved through every cavity
   crossing;
 * ``"rk4"`` -- the users' hand-coded scheme (the paper's): classical RK4 on the rotor with N steps per
@@ -22,6 +24,8 @@ from which ``run(..., resume=True)`` continues after a crash with nothing lost.
 """
 
 from __future__ import annotations
+
+import math
 
 from dataclasses import dataclass, field
 from typing import Callable
@@ -51,11 +55,21 @@ from transient.units import rpm_to_hz
 #: part, so ``run`` hands the integrator ``rtol * CONTENT_RTOL_FACTOR`` there: a user's rtol then buys about
 #: the orbit accuracy of the universal form (docs/journal.md, section 5).
 CONTENT_RTOL_FACTOR = 0.1
-#: ``method="bdf2"``: at least this many steps per revolution by default (the step cap: the rotor's local error
-#: does not see the film's fronts, whose error the cap bounds; 151 x 21, 0.3 C: 9.5e-5 C at 550, 1.15e-4 C at 500), and the film's
+#: ``method="bdf2"`` at its defaults: the variable-order BDF up to ``BDF2_MAX_ORDER``, each step at most
+#: ``BDF2_TRAVEL`` of journal travel [C] at rtol ``BDF2_TRAVEL_RTOL``, as sqrt(rtol) at others (at the journal's speed
+#: over the last step: the film's cavitation fronts move with the journal, and the rotor's error test does not see
+#: their error; 0.3 C, 76 x 11: the error grows about linearly with the travel) and at least ``BDF2_MIN_STEPS`` steps per
+#: revolution (a safety bound); the rotor's error test sets the step where the journal moves slowly (a small orbit).
+#: An explicit ``steps_per_revolution`` is the cap in shaft angle instead of both. ``BDF2_FILM_TOL``: the film's
 #: Newton tolerance on the pressure (p0) and the content H theta of every cell.
-BDF2_MIN_STEPS = 550
+BDF2_MIN_STEPS = 50
+BDF2_TRAVEL = 1e-3
+BDF2_TRAVEL_RTOL = 1e-6
+BDF2_MAX_ORDER = 5
 BDF2_FILM_TOL = 1e-8
+#: :meth:`JournalOrbit.run`'s method when no ``integration`` is given (``transient bench orbit-size``: at equal error
+#: no slower than IDA on small and large orbits, docs/bench/orbit_size.md)
+DEFAULT_METHOD = "bdf2"
 #: ``method="bdf2"``: rows of LAPACK band storage (2 kl + ku + 1) of its bordered band LU per cell of the grid's
 #: smaller dimension, reverse Cuthill-McKee on the Newton pattern: 3.0 with a full-length groove, up to 6.2 with a
 #: partial one (measured on 151 x 21, 64 x 64, 100 x 30, 40 x 100 and 300 x 42); 8 bytes each per film cell.
@@ -300,7 +314,8 @@ class JournalOrbit:
 
         The settings that are not physics come as objects: ``integration``
         (:class:`~transient.solvers.settings.Integration`: ``method``, ``rtol``, ``atol``, ``steps_per_revolution``,
-        ``inner_tolerance``, ``formulation``; default ``Integration()``: IDA, rtol 1e-6, atol 1e-9), ``recording``
+        ``inner_tolerance``, ``formulation``, ``max_order``; default ``Integration(method="bdf2")``: rtol 1e-6,
+        atol 1e-9; an ``Integration`` given without a method is IDA's, its class default), ``recording``
         (:class:`~transient.solvers.settings.Recording`: ``outputs_per_revolution``, ``record``,
         ``record_from_revolution``; default 100 outputs per revolution, nothing extra) and ``long_run``
         (:class:`~transient.solvers.settings.LongRun`: ``chunk_revolutions``, ``checkpoint``, ``resume``,
@@ -312,18 +327,23 @@ class JournalOrbit:
 
         Other Parameters
         ----------------
-        method : ``"cvode"``, ``"ida"``, ``"bdf"``, ``"radau"``, ``"lsoda"``, ``"rk4"`` or ``"bdf2"`` (variable-step
-            BDF2 on the content film with its own Newton and a bordered band LU, error test on the rotor only:
-            :mod:`transient.solvers.integrate.bdf2`; rtol and atol act on the rotor states, the film is solved every step to
-            ``BDF2_FILM_TOL``). ``transient bench orbit-size`` (docs/bench/orbit_size.md) measures ``"bdf2"`` faster
-            than ``"ida"`` at equal error on large orbits (0.3 C) and in oil whip, slower on small orbits (0.01 C);
-            the default stays ``"ida"`` (the orbit's size is not known before the run).
+        method : ``"cvode"``, ``"ida"``, ``"bdf"``, ``"radau"``, ``"lsoda"``, ``"rk4"`` or ``"bdf2"`` (the default:
+            variable-step, variable-order BDF, up to ``max_order``, on the content film with its own Newton and a
+            bordered band LU, error test on the rotor only: :mod:`transient.solvers.integrate.bdf2`; rtol and atol act
+            on the rotor states, the film is solved every step to ``BDF2_FILM_TOL``). ``transient bench orbit-size``
+            (docs/bench/orbit_size.md) measures ``"bdf2"`` at its defaults no slower than ``"ida"`` at equal error on
+            small (0.01 C, 0.05 C) and large (0.3 C) orbits. The deprecated loose keywords without ``method`` keep
+            IDA.
         rtol, atol : tolerances of the adaptive methods; atol is absolute on the dimensionless quantities:
             the journal position and velocity (units of C and C omega) and, per cell, the film content
             theta and the pressure p / p0 (see :meth:`absolute_tolerance`).
         steps_per_revolution : fixed steps of ``"rk4"`` (default 3000, the paper's); for ``"bdf2"`` the least
-            number of steps per revolution (its step cap; default ``BDF2_MIN_STEPS`` = 550), rtol refining further
-            where the rotor's local error asks for it.
+            number of steps per revolution (its step cap in shaft angle, rtol refining further where the rotor's
+            local error asks for it); left out: ``BDF2_MIN_STEPS`` = 50 as a safety bound and each step at most
+            ``BDF2_TRAVEL`` = 1e-3 C of journal travel at rtol 1e-6, as sqrt(rtol) at others (the film's fronts
+            move with the journal).
+        max_order : ``"bdf2"`` only: the highest order of its BDF, 2 to 5 (default ``BDF2_MAX_ORDER`` = 5; 2: plain
+            BDF2).
         inner_tolerance : ``"rk4"`` only: the per-stage film criterion sum|d theta| / sum theta (paper: 1e-6).
         outputs_per_revolution : output (sampling) rate.
         record : extra series to keep at the outputs: any of ``"force"`` [N], ``"min_film"`` [m],
@@ -354,8 +374,10 @@ class JournalOrbit:
             ``y0``, ``start`` and ``final_state`` are in the universal layout either way.
         """
         revolutions = check_positive("revolutions", revolutions, "rev")
-        ig, rc, lr = run_settings("JournalOrbit.run", legacy, RUN_KEYWORDS, integration=integration,
-                                  recording=recording, long_run=long_run).values()
+        # the default method only where no integration setting is given (the deprecated keywords keep IDA's)
+        default = "ida" if any(RUN_KEYWORDS.get(k, ("",))[0] == "integration" for k in legacy) else DEFAULT_METHOD
+        ig, rc, lr = run_settings("JournalOrbit.run", legacy, RUN_KEYWORDS, {"integration": {"method": default}},
+                                  integration=integration, recording=recording, long_run=long_run).values()
         method = ig.method
         if ig.dt is not None:
             raise ValueError(f"dt = {ig.dt!r} [-] is not used by the orbit; allowed: steps_per_revolution (the fixed "
@@ -485,10 +507,13 @@ class JournalOrbit:
         if ig.method == "bdf2":
             announce("bdf2")  # a cold cache compiles the content kernels and the Newton once (~30 s)
             spr = BDF2_MIN_STEPS if ig.steps_per_revolution is None else ig.steps_per_revolution
+            options = {"bdf2": self.bdf2_model(), "max_order": BDF2_MAX_ORDER if ig.max_order is None else ig.max_order}
+            if ig.steps_per_revolution is None:
+                options["max_travel"] = (np.arange(self.film.n, self.film.n + 2),
+                                         BDF2_TRAVEL * math.sqrt(ig.rtol / BDF2_TRAVEL_RTOL))
             pattern = self.newton_pattern()[0]
             return _Step(lambda y_, t_: self._problem(y_, t_, touch_gap, formulation, pattern), rtol=ig.rtol,
-                         atol=atol, max_step=two_pi / spr, first_step=two_pi * 1e-4,
-                         options={"bdf2": self.bdf2_model()})
+                         atol=atol, max_step=two_pi / spr, first_step=two_pi * 1e-4, options=options)
         return _Step(problem_at, rtol=ig.rtol * (CONTENT_RTOL_FACTOR if formulation == "content" else 1.0), atol=atol)
 
     def at_speed(self, speed_rpm) -> "JournalOrbit":

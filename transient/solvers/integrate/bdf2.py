@@ -31,7 +31,9 @@ step (predictor, error test, step control, dense output, events).
 
 The model hands the kernels as a :class:`Bdf2Model` in ``solve(..., options={"bdf2": model})``;
 ``options["fixed_step"] = h`` takes steps of exactly h with no error test (convergence studies);
-``options["max_step_scale"]``, a function of t, scales ``max_step`` at each step's start (a cap in shaft angle).
+``options["max_step_scale"]``, a function of t, scales ``max_step`` at each step's start (a cap in shaft angle);
+``options["max_order"]`` (2 to 5, default 2) the highest order of the stepper's variable-order BDF;
+``options["max_travel"] = (components, distance)`` bounds each step by the travel of those components (a journal's).
 """
 
 from __future__ import annotations
@@ -281,8 +283,8 @@ class BandNewton(StepSolve):
             state[REFRESH] = 1.0
         idx = self.error_components
         err_w = 1.0 / (NEWTON_FACTOR * (self.rtol * np.abs(y_pred[idx]) + self.atol))
-        if len(ts) == 3 and self.zs[0] is not None:
-            z[:] = quadratic(ts, self.zs, t)
+        if len(ts) >= 3 and self.zs[0] is not None:
+            z[:] = quadratic(ts[-3:], self.zs, t)
             state[Z_GIVEN] = 1.0
         else:
             state[Z_GIVEN] = 0.0
@@ -335,7 +337,8 @@ def solve(problem, t_eval, out, guard, s):
                    error_components=solver.error_components, yp0=problem.yp0, first_step=s.first_step,
                    max_step=(s.max_step, s.options["max_step_scale"]) if "max_step_scale" in s.options else s.max_step,
                    fixed_step=float(s.options.get("fixed_step", 0.0)),
-                   test_first_step=solver.test_first_step)
+                   test_first_step=solver.test_first_step, max_order=int(s.options.get("max_order", 2)),
+                   max_travel=s.options.get("max_travel"))
     result = drive(stepper, out, guard, SIGINT.check, s.max_steps, step_events)
     tally = s.options.get("newton_counts")
     if tally is not None and isinstance(solver, BandNewton):  # the Newton's cost by operation, summed over solves

@@ -23,6 +23,11 @@ import math
 import numpy as np
 
 MIN_RATIO, MAX_RATIO, SAFETY = 0.2, 2.0, 0.9
+MAX_ORDER = 5
+#: step ratio bound above order 2 (variable-step BDF3 is zero-stable for ratios up to ~1.5, Grigorieff 1983)
+MAX_RATIO_HIGH = 1.5
+#: a higher or lower order is taken only if its step is this much longer than the current order's
+ORDER_BIAS = 1.2
 
 
 class StepSolve:
@@ -90,6 +95,44 @@ def quadratic(ts, ys, t, slope=None):
     return ys[0] + slope * (t - ts[0])
 
 
+def extrapolate(ts, ys, t):
+    """The polynomial through the points ``(ts[k], ys[k])`` (Lagrange, degree ``len(ts) - 1``) at ``t``."""
+    out = 0.0
+    for j, tj in enumerate(ts):
+        c = 1.0
+        for m, tm in enumerate(ts):
+            if m != j:
+                c *= (t - tm) / (tj - tm)
+        out = out + c * ys[j]
+    return out
+
+
+def bdf_coefficients(t, ts):
+    """The variable-step BDF of order ``len(ts)`` at ``t`` on the past points ``ts`` (oldest first):
+    ``q'(t) = cj q(t) + sum_j a[j] q(ts[j])``, the derivative at ``t`` of the polynomial through ``t`` and ``ts``;
+    returns ``(cj, a)``."""
+    cj = sum(1.0 / (t - tm) for tm in ts)
+    a = []
+    for j, tj in enumerate(ts):
+        num = 1.0
+        den = tj - t
+        for m, tm in enumerate(ts):
+            if m != j:
+                num *= t - tm
+                den *= tj - tm
+        a.append(num / den)
+    return cj, a
+
+
+def divided_difference(ts, ys):
+    """The divided difference ``y[ts[0], ..., ts[-1]]`` (the leading coefficient of the polynomial through the
+    points)."""
+    d = list(ys)
+    for level in range(1, len(ts)):
+        d = [(d[k + 1] - d[k]) / (ts[k + level] - ts[k]) for k in range(len(d) - 1)]
+    return d[0]
+
+
 def _history(h, w, points):
     """``history(qs) -> b``, the past of the BDF2 derivative ``q' = cj q + b`` (module docstring) from the stored
     quantity at the accepted points: ``-q_n / h`` on a first step (``points`` = 1), else
@@ -99,18 +142,35 @@ def _history(h, w, points):
     return lambda qs: (-(1.0 + w) / h) * qs[-1] + (w * w / (h * (1.0 + w))) * qs[-2]
 
 
+def _history_k(a):
+    """``history(qs) -> b`` of a BDF of order ``len(a)`` (:func:`bdf_coefficients`), ``qs`` aligned with the
+    stepper's points (the last ``len(a)`` used)."""
+    k = len(a)
+    return lambda qs: sum(a[j] * qs[len(qs) - k + j] for j in range(k))
+
+
 class BDF2(Stepper):
     """Variable-step BDF2 (module docstring) around a model's :class:`StepSolve`, from ``y0`` (with the slope
     ``yp0``, zero if None) at ``t0`` to ``t_end``; error test on ``error_components`` with ``rtol`` and ``atol``
     (a number or one per state); first step ``first_step`` (0: 1e-4 of the span), at most ``max_step``
     (0: free), or a pair ``(max_step, scale)``: at most ``max_step * scale(t)`` at the step's start (e.g. a cap in
-    shaft angle on a run whose speed changes); ``fixed_step`` > 0: steps of exactly that size, no error test; ``test_first_step`` False: the
+    shaft angle on a run whose speed changes); ``max_travel = (components, distance)``: steps over which those
+    components (e.g. a journal's position) move at most ``distance`` (Euclidean) at their last step's speed;
+    ``max_order`` in [2, 5]: the highest order of the variable-order BDF (module docstring), 2 the plain BDF2;
+    ``fixed_step`` > 0: steps of exactly that size, no error test; ``test_first_step`` False: the
     first step is not error-tested (a DAE started from an inconsistent state, whose first step measures the
     jump of its algebraic part onto the constraint, not a truncation error)."""
 
     def __init__(self, solver: StepSolve, y0, t0, t_end, *, rtol, atol, error_components=None, yp0=None,
-                 first_step=0.0, max_step=0.0, fixed_step=0.0, test_first_step=True):
+                 first_step=0.0, max_step=0.0, fixed_step=0.0, test_first_step=True, max_order=2, max_travel=None):
         self.solver = solver
+        self.travel = None if max_travel is None else (np.asarray(max_travel[0], dtype=np.int64),
+                                                       float(max_travel[1]))
+        self.max_order = int(max_order)
+        if not 2 <= self.max_order <= MAX_ORDER:
+            raise ValueError(f"max_order = {max_order!r} [-] is out of range; allowed: 2 to {MAX_ORDER}")
+        self.order, self.same_order = 2, 0  # the order after the first (backward Euler) step; steps taken at it
+        self.keep = max(3, self.max_order + 2)  # accepted points kept (order k+1's error estimate needs k+2)
         self.test_first_step = test_first_step
         n = y0.size
         self.err_idx = (np.arange(n) if error_components is None
@@ -140,7 +200,8 @@ class BDF2(Stepper):
                 t_new = min(self.t_end, self.t_start + (self.n_steps + 1) * self.fixed)
                 h = t_new - t
             else:
-                h = min(self.h, self.h_cap if self.cap_scale is None else self.h_cap * self.cap_scale(t))
+                h = min(self.h, self.h_cap if self.cap_scale is None else self.h_cap * self.cap_scale(t),
+                        self._travel_cap())
                 if t + h >= self.t_end - 1e-9 * h:
                     h = self.t_end - t
                 t_new = t + h
@@ -148,16 +209,23 @@ class BDF2(Stepper):
             if t_new <= t or h <= 1e-14 * max(1.0, abs(t)):
                 return (f"bdf2: the step size collapsed to {h:.3g} at t={t:.9g} ({self.n_nonlinear_failures} "
                         f"Newton failures, {self.n_error_test_failures} error-test failures)")
-            if len(ts) == 1:  # backward Euler
-                cj = 1.0 / h
-                h1 = h2 = w = 0.0
+            k = 1 if len(ts) == 1 else min(self.order, max(2, len(ts) - 1))
+            if k >= 3:  # the order-k BDF on the last k points, its predictor through the last k + 1
+                cj, a = bdf_coefficients(t_new, ts[-k:])
+                history = _history_k(a)
+                y_pred = extrapolate(ts[-k - 1:], ys[-k - 1:], t_new)
             else:
-                h1 = t - ts[-2]
-                w = h / h1
-                cj = (1.0 + 2.0 * w) / (h * (1.0 + w))
-                h2 = ts[-2] - ts[-3] if len(ts) == 3 else 0.0
-            y_pred = quadratic(ts, ys, t_new, self.slope)
-            code, y_new = self.solver.solve(t_new, cj, _history(h, w, len(ts)), ts, ys, y_pred)
+                if k == 1:  # backward Euler
+                    cj = 1.0 / h
+                    h1 = h2 = w = 0.0
+                else:
+                    h1 = t - ts[-2]
+                    w = h / h1
+                    cj = (1.0 + 2.0 * w) / (h * (1.0 + w))
+                    h2 = ts[-2] - ts[-3] if len(ts) >= 3 else 0.0
+                history = _history(h, w, k)
+                y_pred = quadratic(ts[-3:], ys[-3:], t_new, self.slope)
+            code, y_new = self.solver.solve(t_new, cj, history, ts, ys, y_pred)
             if code != 0:
                 self.n_nonlinear_failures += 1
                 if self.solver.retry():
@@ -168,40 +236,88 @@ class BDF2(Stepper):
                 continue
             idx = self.err_idx
             d = (y_new - y_pred)[idx]
-            if len(ts) == 1:
+            if k == 1:
                 est = 0.5 * d
-            else:
+            elif k == 2:
                 est = d * (h * h * (1.0 + w) ** 2 / (w * (1.0 + 2.0 * w)) / ((h + h1) * (h + h1 + h2)))
-            err = math.sqrt(float(np.mean((est / (self.rtol * np.abs(y_new[idx]) + self.atol)) ** 2)))
+            else:
+                est = d / (cj * (t_new - ts[-k - 1]))
+            scale = self.rtol * np.abs(y_new[idx]) + self.atol
+            err = math.sqrt(float(np.mean((est / scale) ** 2)))
             if not math.isfinite(err):
                 self.n_nonlinear_failures += 1
                 self.h = h * 0.25
                 continue
             if err > 1.0 and self.fixed == 0 and (self.test_first_step or len(ts) > 1):
                 self.n_error_test_failures += 1
-                self.h = h * max(MIN_RATIO, SAFETY * err ** (-1.0 / 3.0))
+                self.h = h * max(MIN_RATIO, SAFETY * err ** (-1.0 / (max(k, 2) + 1.0)))
+                if k >= 3:  # a rejected step at order 3 and above retries one order lower
+                    self.order, self.same_order = k - 1, 0
                 continue
             break
         self.n_steps += 1
         y_acc = y_new.copy()
-        self._dense = (ts[-2:] + [t_new], ys[-2:] + [y_acc]) if len(ts) >= 2 else ([t, t_new], [y, y_acc])
+        if k >= 3:
+            self._dense = (k, ts[-k:] + [t_new], ys[-k:] + [y_acc])
+        else:
+            self._dense = (k, ts[-2:] + [t_new], ys[-2:] + [y_acc]) if len(ts) >= 2 else (k, [t, t_new], [y, y_acc])
         self.solver.accepted(t_new, y_acc)
-        self.ts, self.ys = (ts + [t_new])[-3:], (ys + [y_acc])[-3:]
+        self.ts, self.ys = (ts + [t_new])[-self.keep:], (ys + [y_acc])[-self.keep:]
         self.t_old, self.t, self.y = t, t_new, y_acc
         e = max(err, 1e-10)
-        ratio = SAFETY * e ** (-0.7 / 3.0) * self.err_prev ** (0.4 / 3.0)
-        self.h = h * min(MAX_RATIO, max(MIN_RATIO, ratio))
+        q = max(k, 2) + 1.0
+        ratio = SAFETY * e ** (-0.7 / q) * self.err_prev ** (0.4 / q)
         self.err_prev = e
+        if self.max_order > 2 and self.fixed == 0 and k >= 2:
+            ratio = self._select_order(k, ratio, scale)
+        top = MAX_RATIO if self.order <= 2 else MAX_RATIO_HIGH
+        self.h = h * min(top, max(MIN_RATIO, ratio))
         return None
 
+    def _travel_cap(self):
+        """The longest step over which the ``max_travel`` components (e.g. a journal's position) move at most the
+        given distance at their speed over the last step (no bound before the second point or at rest)."""
+        if self.travel is None or len(self.ts) < 2:
+            return math.inf
+        idx, dist = self.travel
+        speed = float(np.linalg.norm(self.ys[-1][idx] - self.ys[-2][idx])) / (self.ts[-1] - self.ts[-2])
+        return dist / speed if speed > 0.0 else math.inf
+
+    def _select_order(self, k, ratio, scale):
+        """Order control (as DASSL's and SciPy's BDF): after ``k + 1`` steps at order ``k``, the local errors at
+        orders ``k - 1`` (not below 2) and ``k + 1`` (up to ``max_order``) from the divided differences of the
+        accepted points (``scale``: the error weights); the order whose step would be longest (by ``ORDER_BIAS``)
+        is taken. Returns the step ratio."""
+        self.same_order = self.same_order + 1 if k == self.order else 0
+        if k != self.order or self.same_order < k + 1:
+            return ratio
+        ts, ys, idx = self.ts, self.ys, self.err_idx
+        t_new = ts[-1]
+        best, best_ratio = k, ratio
+        for q in (k - 1, k + 1):
+            if q < 2 or q > self.max_order or len(ts) < q + 2:
+                continue
+            past = ts[-q - 1:-1]
+            lte = (divided_difference(ts[-q - 2:], [v[idx] for v in ys[-q - 2:]])
+                   * math.prod(t_new - tm for tm in past) / sum(1.0 / (t_new - tm) for tm in past))
+            e_q = max(math.sqrt(float(np.mean((lte / scale) ** 2))), 1e-10)
+            r_q = SAFETY * e_q ** (-1.0 / (q + 1.0))
+            if r_q > ORDER_BIAS * best_ratio:
+                best, best_ratio = q, r_q
+        if best != k:
+            self.order, self.same_order, self.err_prev = best, 0, 1.0
+        return best_ratio
+
     def dense_output(self):
-        """The step's quadratic through the last three accepted points (Hermite with the start's slope after the
-        first step)."""
-        pts_t, pts_y = self._dense
+        """The step's interpolant: the polynomial of the step's order through its last points (order <= 2: the
+        quadratic through the last three accepted points, Hermite with the start's slope after the first step)."""
+        k, pts_t, pts_y = self._dense
         t_new, y_acc, slope = self.t, self.y, self.slope
 
         def state_at(s):
-            return y_acc if s >= t_new else quadratic(pts_t, pts_y, s, slope)
+            if s >= t_new:
+                return y_acc
+            return extrapolate(pts_t, pts_y, s) if k >= 3 else quadratic(pts_t, pts_y, s, slope)
         return state_at
 
 
