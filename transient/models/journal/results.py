@@ -170,7 +170,8 @@ class OrbitResult(RunResult):
     ``pressure`` [Pa] ((k, nz, ntheta) at ``pressure_t``
     [s], only over the recorded window), ``film_content`` (at ``film_content_t``); a thermal bearing's
     ``max_temperature`` [K], ``power_loss`` [W], ``heat_flow`` [W], ``stored_heat`` [J], ``shaft_speed`` [rpm] and
-    ``temperature`` [K] (at ``temperature_t``), and ``final_temperature`` [K] (cells, then feeds). ``stats`` sums the
+    ``temperature`` [K] (at ``temperature_t``), ``final_temperature`` [K] (cells, then feeds) and ``heat_balance``
+    (per thermal interval, :meth:`~transient.models.journal.thermal_orbit.ThermalRun.heat_balance`). ``stats`` sums the
     integrator statistics over chunks; ``touched_at`` [s] if the journal reached the wall (the run stopped
     there); ``final_state`` (film + rotor, dimensionless) at ``final_time`` [s]: ``run(..., start=result)``
     continues from it with the unbalance phase where it was. ``success`` is False (and ``message`` says
@@ -208,6 +209,7 @@ class OrbitResult(RunResult):
     temperature: np.ndarray | None = quantity("K", None)
     temperature_t: np.ndarray | None = quantity("s", None)
     final_temperature: np.ndarray | None = quantity("K", None)
+    heat_balance: dict | None = None
 
     @property
     def eccentricity_ratio(self) -> np.ndarray:

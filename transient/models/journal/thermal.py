@@ -264,8 +264,12 @@ class EnergyEquation:
     def solve_rates(self, r: "EnergyRates", capacity=None, T_old=None) -> EnergyBalance:
         """The temperatures driven by ``r`` (:meth:`rates`, or their mean over an interval): steady, or with
         ``capacity`` per cell [C R^2 per unit of tau: the heat capacity over rho c_p and the time step] one
-        backward-Euler step from the cells' temperatures ``T_old`` [K] (the capacity on the free cells' diagonal,
-        ``capacity T_old`` on the right side: the matrix stays an M-matrix)."""
+        backward-Euler step from the cells' temperatures ``T_old`` [K] of the advective form
+        ``capacity (T - T_old) + sum_inflows Q (T - T_up) + w (T - T_w) = Phi``: the free cells' diagonal takes the
+        capacity less their net outflow (mean flows over an interval in which the film's content changed need not be
+        free of divergence; the flux form would then make ``T div Q`` a spurious source), ``capacity T_old`` the
+        right side -- every row sums to ``capacity + w`` > 0, a diagonally dominant M-matrix: no temperature leaves
+        the range of the old, supply, wall and heated ones."""
         film, th = self.film, self.thermal
         q_in, q_rec, carry = self.carry_over(r)
         _, T_wall = self.wall_coefficients()
@@ -279,8 +283,11 @@ class EnergyEquation:
         rows, cols, vals, rhs = self.rows[:m], self.cols[:m], self.vals[:m], self.rhs
         if capacity is not None:
             cells = np.flatnonzero(self.free)
+            (fL, fR), n = self.streams, film.n
+            net_out = (np.bincount(fL, r.stream_flow, n) - np.bincount(fR, r.stream_flow, n)
+                       + np.bincount(film.op.bcell, r.qb, n))
             rows, cols = np.concatenate([rows, cells]), np.concatenate([cols, cells])
-            vals = np.concatenate([vals, capacity[cells]])
+            vals = np.concatenate([vals, (capacity - net_out)[cells]])
             rhs = rhs.copy()
             rhs[cells] += capacity[cells] * T_old[cells]
         A = sp.csc_matrix((vals, (rows, cols)), shape=(N, N))

@@ -219,6 +219,8 @@ class ThermalRun:
         self.model = Bdf2Model(newton=thermal_newton, args=(orbit.bdf2_model().args, film.fluidity, self.drive),
                                error_components=np.arange(film.n, orbit.n), n_border=N_ROTOR)
         self.started = False
+        self.stepped_at = None
+        self.ledger = []
         self._reset()
 
     # the shaft ----------------------------------------------------------------------------------------------
@@ -263,7 +265,7 @@ class ThermalRun:
         if self.tau_last is not None and tau <= self.tau_last:
             return
         if self.tau_last is None:
-            self.tau_start = tau
+            self.tau_start, self.first = tau, (r, m)
             self.sums = [np.zeros_like(a) for a in (*r, m)]
         else:
             h = 0.5 * (tau - self.tau_last)
@@ -275,14 +277,35 @@ class ThermalRun:
         """The temperatures' backward-Euler step over the interval that ends at ``tau`` (module docstring) and the
         film's fluidity at them (the pressures of the last sample)."""
         dtau = tau - self.tau_start
-        if dtau <= 0.0:
+        if dtau <= 0.0 or tau == self.stepped_at:
             return
+        self.stepped_at = tau
         mean = [a / dtau for a in self.sums]
         r = EnergyRates(*mean[:4])
         capacity = (mean[4] * self.area + self.wall_volume) / dtau
+        stored = self.stored_heat(self.first[1], self.T)
         b = self.energy.solve_rates(r, capacity, self.T)
         self.T, self.T_mix = b.temperature, b.mixing_temperature
+        seconds = dtau / self.film.omega
+        self.ledger.append((tau / self.film.omega, b.dissipation * seconds, (b.convected + b.conducted) * seconds,
+                            self.stored_heat(self.last[1], self.T) - stored))
         self.set_fluidity()
+
+    def stored_heat(self, m, T) -> float:
+        """The heat [J] in the oil (content ``m`` per cell) and the walls above the supply temperature at the cells'
+        temperatures ``T``."""
+        s, free = self.film.scales, self.film.op.free
+        volume = m * self.area + self.wall_volume
+        return (self.energy.heat_unit / s.omega * s.sym
+                * float(np.sum((volume * (T - self.thermal.supply_temperature))[free])))
+
+    def heat_balance(self) -> dict:
+        """The energy balance of every thermal interval: its end ``t`` [s], the heat the film made in it
+        (``dissipation`` [J], its mean over the outputs), the heat the oil carried away and the walls took
+        (``heat_out`` [J], at the interval's new temperatures) and the change of the ``stored`` heat [J] (oil
+        content and temperatures at the interval's ends)."""
+        a = np.array(self.ledger, dtype=float).reshape(-1, 4)
+        return dict(t=a[:, 0], dissipation=a[:, 1], heat_out=a[:, 2], stored=a[:, 3])
 
     def set_fluidity(self):
         """The film's fluidity at the temperatures (and the pressures of the film's last evaluation)."""
@@ -333,11 +356,8 @@ class ThermalRun:
         self.observe(tau, r, m)
         b = self.energy.balance(r, self.T, self.T_mix)
         free = film.op.free
-        s = film.scales
-        stored = (self.energy.heat_unit / s.omega * s.sym
-                  * float(np.sum(((m * self.area + self.wall_volume) * (self.T - self.thermal.supply_temperature))[free])))
         return dict(max_temperature=float(np.max(self.T[free])), power_loss=b.dissipation,
-                    heat_flow=b.convected + b.conducted, stored_heat=stored,
+                    heat_flow=b.convected + b.conducted, stored_heat=self.stored_heat(m, self.T),
                     shaft_speed=shaft(tau, self.drive)[0] * self.orbit.speed_rpm)
 
     def temperature_field(self) -> np.ndarray:
@@ -414,8 +434,10 @@ def thermal_parts(orbit, parts, run, record, record_from_revolution, speed, temp
         return row
 
     def result(*args):
+        tr.advance(tr.tau_last)  # the last interval's step (once; a run's stop hook may ask for a result between)
         r = parts.result(*args)
         r.final_temperature = tr.final_temperature()
+        r.heat_balance = tr.heat_balance()
         return r
 
     solver = dict(parts.solver, options={"bdf2": tr.model, "max_step_scale": tr.max_step_scale})
