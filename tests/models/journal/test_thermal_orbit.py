@@ -90,16 +90,17 @@ def test_temperatures_are_monotone(cold_start):
 
 @pytest.mark.slow
 def test_splitting_error_halves_with_the_thermal_interval():
-    """The temperature after 3 revolutions of a cold start: its error against a run with 1/8 rev intervals halves
-    with the interval (first order)."""
+    """The temperature after 3 revolutions of a cold start: its change from one halving of the thermal interval to
+    the next halves (first order; measured 2.35 and 1.99 on 1 -> 1/2 -> 1/4 -> 1/8 rev)."""
     o = orbit()
     hottest = {}
     for interval in (1.0, 0.5, 0.25, 0.125):
         r = o.run(3, thermal_interval=interval, temperature=OIL.supply_temperature,
                   recording=Recording(outputs_per_revolution=16, record=("max_temperature",)))
         hottest[interval] = r.max_temperature[-1]
-    errors = [abs(hottest[k] - hottest[0.125]) for k in (1.0, 0.5, 0.25)]
-    assert 1.5 <= errors[0] / errors[1] <= 3.0 and 1.5 <= errors[1] / errors[2] <= 3.0
+    changes = np.diff([hottest[k] for k in (1.0, 0.5, 0.25, 0.125)])
+    assert np.all(changes > 0)  # the coarser interval lags more
+    assert 1.7 <= changes[0] / changes[1] <= 2.6 and 1.7 <= changes[1] / changes[2] <= 2.6
 
 
 def test_wall_heat_capacity_slows_the_warm_up():
