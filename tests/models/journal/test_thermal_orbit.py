@@ -152,6 +152,14 @@ def test_bad_input_is_named(run, name):
         run(orbit())
 
 
+@pytest.mark.parametrize("call, name", [(lambda o: o.problem(), "problem"),
+                                         (lambda o: o.periodic_response(), "periodic_response"),
+                                         (lambda o: o.response_curve([3000.0]), "response_curve")])
+def test_the_isothermal_kernels_refuse_a_thermal_bearing(call, name):
+    with pytest.raises(ValueError, match=rf"^{name} with thermal"):
+        call(orbit())
+
+
 def test_an_isothermal_orbit_refuses_the_thermal_keywords():
     o = JournalOrbit(JournalBearing(**GEOMETRY, viscosity=0.02, grid=GRID), MASS, 0.0, LOAD, SPEED)
     with pytest.raises(ValueError, match="^speed, temperature"):

@@ -187,6 +187,7 @@ class JournalOrbit:
 
         ``touch_gap`` > 0 adds a terminal event when the eccentricity ratio reaches ``1 - touch_gap``
         (the journal touches the bearing)."""
+        self._isothermal_only("problem")
         check_choice("formulation", formulation, FORMULATIONS)
         y0 = self.initial_state() if y0 is None else np.asarray(y0, dtype=float)
         if y0.shape != (self.n,):
@@ -528,6 +529,7 @@ class JournalOrbit:
         bearing wall is no success."""
         from transient.models.journal.periodic import periodic_response
 
+        self._isothermal_only("periodic_response")
         p = periodic_response(self, **kwargs)
         through = wall_crossing(p.t, np.hypot(p.x, p.y) / self.bearing.clearance, self.bearing.max_eccentricity_ratio)
         if through:  # a periodic orbit through the wall is no result, converged or not
@@ -539,7 +541,14 @@ class JournalOrbit:
         :func:`transient.models.journal.periodic.response_curve` (its arguments)."""
         from transient.models.journal.periodic import response_curve
 
+        self._isothermal_only("response_curve")
         return response_curve(self, speeds_rpm, **kwargs)
+
+    def _isothermal_only(self, what):
+        """Refuse ``what`` (the isothermal film's kernels) on a thermal bearing, naming the thermal orbit's way."""
+        if self.bearing.thermal is not None:
+            raise ValueError(f"{what} with thermal = ThermalFilm(...): it integrates the isothermal film; allowed: "
+                             "thermal=None, or run(...) (the thermal orbit, its temperatures as states)")
 
     def absolute_tolerance(self, atol, formulation="universal") -> np.ndarray:
         """Per-state absolute tolerance for a user ``atol`` on theta, p / p0 and the rotor states.
