@@ -20,7 +20,7 @@ from pathlib import Path
 import numpy as np
 
 from transient import JournalBearing, JournalOrbit, ThermalFilm
-from transient.plots import save
+from transient.plots import save, thermal as plots
 from transient.solvers.settings import Recording
 from transient.study.scenario import JsonRecord, log, parser
 
@@ -73,49 +73,19 @@ def main(argv=None):
     log(f"  full speed at {ramp:g} s: T_max {r.max_temperature[at_top] - C0:.2f} C, steady {steady[-1].max_temperature - C0:.2f} C "
         f"(lag {lag:.2f} K); after {ramp + hold:g} s: {r.max_temperature[-1] - C0:.2f} C; heat balance per "
         f"interval within {balance.max():.1e} of the heat made")
-    fig = figure(r, e, speeds, steady, ramp)
+    title = (f"thermal journal bearing run up {START:.0f} -> {END:.0f} rpm in {ramp:g} s: the film's temperature lags "
+             f"the speed (D 0.1 m, L 0.05 m, C 100 um, {LOAD:g} N, {OIL['wall_heat_capacity']:g} J/K of wall metal, "
+             f"grid {grid[0]} x {2 * grid[1]})")
+    fig = plots.run_up(r.t, r.shaft_speed, r.max_temperature, r.power_loss, r.heat_flow, e,
+                       dict(speed_rpm=speeds, max_temperature=[s.max_temperature for s in steady],
+                            power_loss=[s.power_loss for s in steady],
+                            eccentricity_ratio=[s.eccentricity_ratio for s in steady]), ramp, title)
     log(f"written: {save(fig, out / 'journal_thermal_runup.png')}")
     rec.put("cpu_s", time.process_time() - c0)
     rec.put("wall_s", time.perf_counter() - t0)
     log(f"[journal thermal run-up] done in {time.perf_counter() - t0:.0f} s; numbers in "
         f"{out / 'journal_thermal_runup.json'}")
     return rec.data
-
-
-def figure(r, e, speeds, steady, ramp):
-    """Speed, maximum temperature (run and steady at the same speed), power loss and eccentricity against time."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    ss = np.array([s.max_temperature for s in steady]) - C0
-    follow = np.interp(r.shaft_speed, speeds, ss)  # the steady film's T_max at the run's speed
-    fig, ax = plt.subplots(2, 2, figsize=(11, 7), sharex=True)
-    ax[0, 0].plot(r.t, r.shaft_speed, color="k")
-    ax[0, 0].set_ylabel("shaft speed [rpm]")
-    ax[0, 1].plot(r.t, r.max_temperature - C0, label="thermal orbit")
-    ax[0, 1].plot(r.t, follow, "--", label="steady THD at the same speed")
-    ax[0, 1].set_ylabel("maximum film temperature [C]")
-    ax[0, 1].legend()
-    ax[1, 0].plot(r.t, r.power_loss, label="dissipation")
-    ax[1, 0].plot(r.t, r.heat_flow, label="heat carried away")
-    ax[1, 0].plot(r.t, np.interp(r.shaft_speed, speeds, [s.power_loss for s in steady]), "--",
-                  label="steady THD power loss")
-    ax[1, 0].set_ylabel("power [W]")
-    ax[1, 0].legend()
-    ax[1, 1].plot(r.t, e, lw=0.6)
-    ax[1, 1].plot(r.t, np.interp(r.shaft_speed, speeds, [s.eccentricity_ratio for s in steady]), "--")
-    ax[1, 1].set_ylabel("eccentricity ratio e/C")
-    for a_ in ax[1]:
-        a_.set_xlabel("time [s]")
-    for a_ in ax.flat:
-        a_.axvline(ramp, color="0.7", lw=0.8)
-        a_.grid(alpha=0.3)
-    fig.suptitle("thermal journal bearing run up 1500 -> 3000 rpm: the film's temperature lags the speed "
-                 f"(50 J/K of wall metal, {LOAD:g} N)")
-    fig.tight_layout()
-    return fig
 
 
 if __name__ == "__main__":
