@@ -54,7 +54,7 @@ def orbit_revolution(quick=False) -> dict:
             "thermal, interval 0.5 rev": lambda: orbits["thermal"].run(1, thermal_interval=0.5, recording=rec)}
     for o in orbits.values():
         o.equilibrium()
-    for name, go in runs.items():  # compile / load the kernels once
+    for name in runs:  # compile / load the kernels once
         orbits["thermal" if name.startswith("thermal") else "isothermal"].run(
             0.1, **({} if name.startswith("thermal") else dict(integration=bdf2)),
             recording=Recording(outputs_per_revolution=20))
@@ -111,7 +111,7 @@ def orbit_markdown(o) -> list:
     if not o:
         return []
     g = o["grid"]
-    return [f"### One orbit revolution, thermal against isothermal (BDF2)", "",
+    return ["### One orbit revolution, thermal against isothermal (BDF2)", "",
             f"{g[0]} x {g[1]} cells, {RPM:g} rpm, 2 kN, rotor 10 kg, unbalance 0.1 C, from the static equilibrium; "
             f"CPU seconds, best of {o['rounds']} interleaved rounds. Target: ratio at most 1.5.", "",
             "| run | CPU [s] | ratio | steps | e/C at the end |", "|---|---|---|---|---|",

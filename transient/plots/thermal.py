@@ -65,7 +65,10 @@ def run_up(t, shaft_speed, max_temperature, power_loss, heat_flow, eccentricity_
     ratio. A grey line at ``ramp_end`` [s]."""
     fig = Figure(figsize=(11.0, 7.0), layout="constrained")
     ax = fig.subplots(2, 2, sharex=True)
-    at = lambda key: np.interp(shaft_speed, steady["speed_rpm"], steady[key])  # noqa: E731
+
+    def at(key):
+        return np.interp(shaft_speed, steady["speed_rpm"], steady[key])
+
     ax[0, 0].plot(t, shaft_speed, color="k")
     ax[0, 0].set_ylabel("shaft speed [rpm]")
     ax[0, 1].plot(t, np.asarray(max_temperature) - KELVIN_AT_0C, label="thermal orbit")

@@ -354,8 +354,9 @@ class JournalOrbit:
 
         A thermal bearing (``JournalBearing(thermal=ThermalFilm(...))``): the temperatures are states of the run on
         their own time scale (:mod:`~transient.models.journal.thermal_orbit`), ``method="bdf2"`` (its default
-        there). ``thermal_interval`` [rev]: the film runs on the viscosities of the temperatures at an interval's
-        start, the temperatures take one implicit step at its end (default 1); ``temperature`` [K]: the start's
+        there). ``thermal_interval`` [rev, rounded to whole output intervals]: the film runs on the viscosities of the
+        temperatures at an interval's start, the temperatures take one implicit step at its end (default 1; the
+        splitting error is first order in it); ``temperature`` [K]: the start's
         temperatures, a number or one per cell and feed (default: those of ``start``, else of the static
         equilibrium); ``speed``: the shaft's speed ``speed(t)`` [rpm] as a function of time [s] (default the
         orbit's ``speed_rpm``, which stays the film's pressure unit; ``revolutions`` counts revolutions at it).

@@ -36,14 +36,17 @@ the Couette flux times ``s``, the dissipation's Couette part times ``s^2`` and t
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import numpy as np
 from numba import njit
 
 import transient.solvers.integrate.bdf2 as stepper
+from transient.checks import check_range
 from transient.fv.reynolds import jacobian_kernel
-from transient.models.journal.film import read_only
 from transient.models.journal.content_newton import (bdf2_from_state, bdf2_to_state, cell_regime, fields_of,
                                                      film_newton_norm)
+from transient.models.journal.film import read_only
 from transient.models.journal.kernels import N_ROTOR, film_force, position_derivatives, state_fields, stencil_flux
 from transient.models.journal.thd import fluidity
 from transient.models.journal.thermal import EnergyEquation, EnergyRates
@@ -205,7 +208,6 @@ class ThermalRun:
         film = self.film = orbit.film
         th = self.thermal = orbit.bearing.thermal
         self.energy = EnergyEquation(film, th)
-        self.n_feeds = self.energy.n_feeds
         temperature = np.asarray(temperature, dtype=float)
         self.T, self.T_mix = temperature[:film.n].copy(), temperature[film.n:].copy()
         self.speed = speed
@@ -269,7 +271,7 @@ class ThermalRun:
             self.sums = [np.zeros_like(a) for a in (*r, m)]
         else:
             h = 0.5 * (tau - self.tau_last)
-            for acc, a, b in zip(self.sums, (*self.last[0], self.last[1]), (*r, m)):
+            for acc, a, b in zip(self.sums, (*self.last[0], self.last[1]), (*r, m), strict=True):
                 acc += h * (a + b)
         self.tau_last, self.last = tau, (r, m)
 
@@ -373,10 +375,6 @@ def thermal_long_run(long_run, interval, opr):
     """The long-run settings of a thermal orbit: chunks of one thermal interval (``interval`` [rev], whole output
     intervals), no progress bar unless asked; a checkpoint is refused (the temperatures are not in the state it
     keeps)."""
-    from dataclasses import replace
-
-    from transient.checks import check_range
-
     check_range("thermal_interval", interval, "rev", 1.0 / opr, np.inf,
                 why=f"(at least one output interval at outputs_per_revolution = {opr})")
     if long_run.checkpoint is not None or long_run.chunk_revolutions is not None:
@@ -410,8 +408,6 @@ def thermal_parts(orbit, parts, run, record, record_from_revolution, speed, temp
     """The :class:`~transient.solvers.model_run.RunParts` of a thermal orbit from the isothermal ones: the problem
     of each thermal interval (:meth:`ThermalRun.problem_at`), BDF2 on its kernels with the step cap in shaft angle,
     the thermal outputs and the result's final temperatures."""
-    from dataclasses import replace
-
     tr = ThermalRun(orbit, speed, start_temperature(orbit, start, temperature))
     n = orbit.film.n
     chunk, tau_run_end = run.chunk_outputs * dt_out, tau0 + run.n_outputs * dt_out
