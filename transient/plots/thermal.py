@@ -55,3 +55,39 @@ def thd_against_isothermal(state, speeds_rpm, thd: dict, iso: dict, supply_tempe
     ax["e"].legend(fontsize=8)
     suptitle(fig, title)
     return fig
+
+
+def run_up(t, shaft_speed, max_temperature, power_loss, heat_flow, eccentricity_ratio, steady: dict, ramp_end: float,
+           title: str):
+    """A thermal orbit's run-up against time [s]: the shaft speed [rpm]; the film's hottest temperature beside the
+    steady THD film's at the same speed (``steady``: ``speed_rpm``, ``max_temperature`` [K], ``power_loss`` [W],
+    ``eccentricity_ratio``, interpolated in speed); its dissipation and the heat carried away [W]; the eccentricity
+    ratio. A grey line at ``ramp_end`` [s]."""
+    fig = Figure(figsize=(11.0, 7.0), layout="constrained")
+    ax = fig.subplots(2, 2, sharex=True)
+
+    def at(key):
+        return np.interp(shaft_speed, steady["speed_rpm"], steady[key])
+
+    ax[0, 0].plot(t, shaft_speed, color="k")
+    ax[0, 0].set_ylabel("shaft speed [rpm]")
+    ax[0, 1].plot(t, np.asarray(max_temperature) - KELVIN_AT_0C, label="thermal orbit")
+    ax[0, 1].plot(t, at("max_temperature") - KELVIN_AT_0C, "--", label="steady THD at the same speed")
+    ax[0, 1].set_ylabel("maximum film temperature [C]")
+    ax[0, 1].legend()
+    ax[1, 0].plot(t, power_loss, label="dissipation")
+    ax[1, 0].plot(t, heat_flow, label="heat carried away")
+    ax[1, 0].plot(t, at("power_loss"), "--", label="steady THD power loss")
+    ax[1, 0].set_ylabel("power [W]")
+    ax[1, 0].legend()
+    ax[1, 1].plot(t, eccentricity_ratio, lw=0.6, label="thermal orbit")
+    ax[1, 1].plot(t, at("eccentricity_ratio"), "--", label="steady THD at the same speed")
+    ax[1, 1].set_ylabel("eccentricity ratio e/C [-]")
+    ax[1, 1].legend()
+    for a in ax[1]:
+        a.set_xlabel("time [s]")
+    for a in ax.flat:
+        a.axvline(ramp_end, color="0.7", lw=0.8)
+        a.grid(alpha=0.3)
+    suptitle(fig, title)
+    return fig

@@ -7,7 +7,7 @@ from dataclasses import replace
 import numpy as np
 import pytest
 
-from transient import BushConvection, IsothermalShaft, JournalBearing, JournalOrbit, ThermalFilm
+from transient import BushConvection, IsothermalShaft, JournalBearing, ThermalFilm
 from transient.models.journal import thd
 from transient.models.journal.thermal import EnergyEquation, energy_system
 from transient.models.journal.viscous_film import ViscousFilm
@@ -143,7 +143,7 @@ def test_thermal_equilibrium_carries_the_load():
     (lambda: BushConvection(-1.0), "boundary.coefficient"),
     (lambda: thermal_bearing(cavitation="reynolds"), "thermal"),
     (lambda: JournalBearing(**GEOMETRY, grid=GRID), "viscosity"),
-    (lambda: JournalOrbit(thermal_bearing(), 1.0, 0.0, 100.0, SPEED), "JournalOrbit does not support thermal"),
+    (lambda: replace(OIL, wall_heat_capacity=-1.0), "wall_heat_capacity"),
 ])
 def test_bad_input_is_named(make, name):
     with pytest.raises(ValueError, match=rf"^{re.escape(name)}"):

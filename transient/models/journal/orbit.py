@@ -42,6 +42,7 @@ from transient.models.journal.kernels import (N_ROTOR, content_jacobian, content
 from transient.models.journal.results import OrbitResult
 from transient.models.journal.scales import Rotor
 from transient.models.journal.rk4 import FilmStageSolver
+from transient.models.journal.thermal_orbit import THERMAL_FIELDS, THERMAL_RECORDABLE, thermal_long_run, thermal_parts
 from transient.models.journal.content_newton import bdf2_newton, decoupled_pattern
 from transient.solvers.integrate.bdf2 import Bdf2Model
 from transient.solvers.integrate import Problem, Steps
@@ -110,10 +111,6 @@ class JournalOrbit:
             raise ValueError(f"JournalOrbit does not support misalignment = {bearing.misalignment} [rad] yet: the "
                              "orbit's touch detection and minimum film are the aligned journal's; allowed: (0, 0) "
                              "(a misaligned bearing serves steady_state, equilibrium and coefficients)")
-        if getattr(bearing, "thermal", None) is not None:
-            raise ValueError("JournalOrbit does not support thermal = ThermalFilm(...) yet: the orbit integrates the "
-                             "isothermal film; allowed: thermal=None (a thermal bearing serves steady_state, "
-                             "equilibrium, coefficients and stability_threshold)")
         self.bearing = bearing
         self.rotor_mass = check_positive("rotor_mass", rotor_mass, "kg")
         self.unbalance = check_range("unbalance", unbalance, "m", 0.0, bearing.clearance, high_open=True,
@@ -204,6 +201,7 @@ class JournalOrbit:
 
         ``touch_gap`` > 0 adds a terminal event when the eccentricity ratio reaches ``1 - touch_gap``
         (the journal touches the bearing)."""
+        self._isothermal_only("problem")
         check_choice("formulation", formulation, FORMULATIONS)
         y0 = self.initial_state() if y0 is None else np.asarray(y0, dtype=float)
         if y0.shape != (self.n,):
@@ -307,7 +305,8 @@ class JournalOrbit:
         return BDF2_BAND_ROWS * min(self.bearing.grid_shape) + 1.0 if method == "bdf2" else 0.0
 
     def run(self, revolutions, *, start=None, y0=None, touch_gap=1e-3, integration: Integration | None = None,
-            recording: Recording | None = None, long_run: LongRun | None = None, **legacy) -> OrbitResult:
+            recording: Recording | None = None, long_run: LongRun | None = None, speed=None, thermal_interval=1.0,
+            temperature=None, **legacy) -> OrbitResult:
         """Integrate ``revolutions`` shaft revolutions from the static equilibrium, from ``y0`` (a state at
         t = 0) or from ``start`` (a previous :class:`OrbitResult`, or ``(time [s], state)``: the run goes on
         from its final state and time, so the unbalance keeps its phase). The first output is the start.
@@ -372,8 +371,27 @@ class JournalOrbit:
             but, at equal rtol, is measured less accurate on the rotor (its full-film pressure is the 1/beta_bar
             part of the content) and no faster (``transient bench orbit-size``, docs/journal.md section 5).
             ``y0``, ``start`` and ``final_state`` are in the universal layout either way.
+
+        A thermal bearing (``JournalBearing(thermal=ThermalFilm(...))``): the temperatures are states of the run on
+        their own time scale (:mod:`~transient.models.journal.thermal_orbit`), ``method="bdf2"`` (its default
+        there). ``thermal_interval`` [rev, rounded to whole output intervals]: the film runs on the viscosities of the
+        temperatures at an interval's start, the temperatures take one implicit step at its end (default 1; the
+        splitting error is first order in it); ``temperature`` [K]: the start's
+        temperatures, a number or one per cell and feed (default: those of ``start``, else of the static
+        equilibrium); ``speed``: the shaft's speed ``speed(t)`` [rpm] as a function of time [s] (default the
+        orbit's ``speed_rpm``, which stays the film's pressure unit; ``revolutions`` counts revolutions at it).
+        ``record`` also takes ``"max_temperature"`` [K], ``"power_loss"`` [W] (the film's dissipation),
+        ``"heat_flow"`` [W] (carried away by the oil and into the walls), ``"stored_heat"`` [J] (in the oil and the
+        walls above the supply temperature), ``"shaft_speed"`` [rpm] and the field ``"temperature"`` [K]; the
+        result's ``final_temperature`` continues with ``start=result``.
         """
         revolutions = check_positive("revolutions", revolutions, "rev")
+        thermal = self.bearing.thermal is not None
+        if not thermal and (speed is not None or temperature is not None):
+            raise ValueError("speed, temperature given for an isothermal bearing; allowed: None (they are the thermal "
+                             "orbit's: JournalBearing(thermal=ThermalFilm(...)))")
+        if thermal and integration is None and "method" not in legacy:
+            integration = Integration(method="bdf2")
         # the default method only where no integration setting is given (the deprecated keywords keep IDA's)
         default = "ida" if any(RUN_KEYWORDS.get(k, ("",))[0] == "integration" for k in legacy) else DEFAULT_METHOD
         ig, rc, lr = run_settings("JournalOrbit.run", legacy, RUN_KEYWORDS, {"integration": {"method": default}},
@@ -383,13 +401,21 @@ class JournalOrbit:
             raise ValueError(f"dt = {ig.dt!r} [-] is not used by the orbit; allowed: steps_per_revolution (the fixed "
                              "steps of method \"rk4\" per revolution), or leave dt out")
         formulation = ig.formulation or ("content" if method == "bdf2" else "universal")
-        rc.check_names(RECORDABLE)
+        rc.check_names(RECORDABLE + (THERMAL_RECORDABLE if thermal else ()))
+        if thermal and method != "bdf2":
+            raise ValueError(f"method = {method!r} with a thermal bearing; allowed: 'bdf2' (the thermal orbit's kernels "
+                             "are the content formulation's)")
+        if speed is not None and (not callable(speed) or set(rc.record) & {"outflow", "supply_flow", "side_leakage"}):
+            raise ValueError(f"speed = {speed!r}, record = {rc.record!r}; allowed: speed(t) -> rpm, callable, without "
+                             "the flow records (they are at the orbit's speed_rpm)")
         if method == "bdf2" and formulation != "content":
             raise ValueError('method "bdf2" integrates the content formulation (conservative across a cavity crossing); '
                              'formulation must be "content" (the default for "bdf2")')
         if method == "rk4" and formulation != "universal":
             raise ValueError('method "rk4" solves the film in the universal variable; formulation must be "universal"')
         opr = rc.outputs_per_revolution
+        if thermal:
+            lr = thermal_long_run(lr, thermal_interval, opr)
         run = ModelRun(revolutions, opr, lr, touch_gap)
         check_orbit_memory(self.film.n, revolutions, opr, rc.record, rc.record_from_revolution,
                            band_rows=self._band_rows(method))
@@ -417,6 +443,9 @@ class JournalOrbit:
                              rec, rc.record, method, stats, touched, message, tau_end),
                          to_run=self.content_state if content else None,
                          universal=self.universal_state if content else None, key=key)
+        if thermal:
+            parts = thermal_parts(self, parts, run, rc.record, rc.record_from_revolution, speed, temperature, start,
+                                  tau0, 2 * np.pi / opr)
         r = run.go(parts, y, tau0, 2 * np.pi / opr)
         if method == "rk4":
             r.stats.n_jac = sum(s.n_factorisations for s in step.steppers)
@@ -479,7 +508,7 @@ class JournalOrbit:
         extra = {}
         for k in record:
             extra[k] = a[k]
-            if k in FIELD_SERIES:
+            if k in FIELD_SERIES or k in THERMAL_FIELDS:
                 if not a[k].size:
                     extra[k] = np.zeros((0, self.bearing.grid.z.n, self.bearing.grid.x.n), dtype=np.float32)
                 extra[k + "_t"] = a[k + "_t"]
@@ -526,6 +555,7 @@ class JournalOrbit:
         bearing wall is no success."""
         from transient.models.journal.periodic import periodic_response
 
+        self._isothermal_only("periodic_response")
         p = periodic_response(self, **kwargs)
         through = wall_crossing(p.t, np.hypot(p.x, p.y) / self.bearing.clearance, self.bearing.max_eccentricity_ratio)
         if through:  # a periodic orbit through the wall is no result, converged or not
@@ -537,7 +567,14 @@ class JournalOrbit:
         :func:`transient.models.journal.periodic.response_curve` (its arguments)."""
         from transient.models.journal.periodic import response_curve
 
+        self._isothermal_only("response_curve")
         return response_curve(self, speeds_rpm, **kwargs)
+
+    def _isothermal_only(self, what):
+        """Refuse ``what`` (the isothermal film's kernels) on a thermal bearing, naming the thermal orbit's way."""
+        if self.bearing.thermal is not None:
+            raise ValueError(f"{what} with thermal = ThermalFilm(...): it integrates the isothermal film; allowed: "
+                             "thermal=None, or run(...) (the thermal orbit, its temperatures as states)")
 
     def absolute_tolerance(self, atol, formulation="universal") -> np.ndarray:
         """Per-state absolute tolerance for a user ``atol`` on theta, p / p0 and the rotor states.

@@ -13,7 +13,9 @@ from transient.physics.layered import NO_LAYERS, BoundaryLayers, Gecim, LayeredF
 from transient.results import RunResult, SteadyResult, quantity, result_type
 from transient.units import rpm_to_hz
 
-RECORDED_FIELDS = ("force", "min_film", "mass", "outflow", "supply_flow", "side_leakage", "pressure", "pressure_t", "film_content", "film_content_t")
+RECORDED_FIELDS = ("force", "min_film", "mass", "outflow", "supply_flow", "side_leakage", "pressure", "pressure_t", "film_content", "film_content_t",
+                   "max_temperature", "power_loss", "heat_flow", "stored_heat", "shaft_speed", "temperature",
+                   "temperature_t")
 
 
 @result_type
@@ -166,7 +168,10 @@ class OrbitResult(RunResult):
     ``outflow`` [m^3/s] ((n, 2): ends, groove), ``supply_flow`` [m^3/s] ((n, feeds): the net flow out of each
     feed), ``side_leakage`` [m^3/s] ((n, 2): out of the ends z = -L/2, +L/2; :mod:`~transient.models.journal.flows`),
     ``pressure`` [Pa] ((k, nz, ntheta) at ``pressure_t``
-    [s], only over the recorded window), ``film_content`` (at ``film_content_t``). ``stats`` sums the
+    [s], only over the recorded window), ``film_content`` (at ``film_content_t``); a thermal bearing's
+    ``max_temperature`` [K], ``power_loss`` [W], ``heat_flow`` [W], ``stored_heat`` [J], ``shaft_speed`` [rpm] and
+    ``temperature`` [K] (at ``temperature_t``), ``final_temperature`` [K] (cells, then feeds) and ``heat_balance``
+    (per thermal interval, :meth:`~transient.models.journal.thermal_orbit.ThermalRun.heat_balance`). ``stats`` sums the
     integrator statistics over chunks; ``touched_at`` [s] if the journal reached the wall (the run stopped
     there); ``final_state`` (film + rotor, dimensionless) at ``final_time`` [s]: ``run(..., start=result)``
     continues from it with the unbalance phase where it was. ``success`` is False (and ``message`` says
@@ -175,7 +180,10 @@ class OrbitResult(RunResult):
 
     shapes = {"x": ("t",), "y": ("t",), "force": ("t", 2), "min_film": ("t",), "mass": ("t",), "outflow": ("t", 2),
               "supply_flow": ("t", None), "side_leakage": ("t", 2), "pressure": ("pressure_t", "nz", "ntheta"),
-              "pressure_t": (None,), "film_content": ("film_content_t", "nz", "ntheta"), "film_content_t": (None,)}
+              "pressure_t": (None,), "film_content": ("film_content_t", "nz", "ntheta"), "film_content_t": (None,),
+              "max_temperature": ("t",), "power_loss": ("t",), "heat_flow": ("t",), "stored_heat": ("t",),
+              "shaft_speed": ("t",), "temperature": ("temperature_t", "nz", "ntheta"), "temperature_t": (None,),
+              "final_temperature": (None,)}
 
     x: np.ndarray = quantity("m")
     y: np.ndarray = quantity("m")
@@ -193,6 +201,15 @@ class OrbitResult(RunResult):
     pressure_t: np.ndarray | None = quantity("s", None)
     film_content: np.ndarray | None = None
     film_content_t: np.ndarray | None = quantity("s", None)
+    max_temperature: np.ndarray | None = quantity("K", None)
+    power_loss: np.ndarray | None = quantity("W", None)
+    heat_flow: np.ndarray | None = quantity("W", None)
+    stored_heat: np.ndarray | None = quantity("J", None)
+    shaft_speed: np.ndarray | None = quantity("rpm", None)
+    temperature: np.ndarray | None = quantity("K", None)
+    temperature_t: np.ndarray | None = quantity("s", None)
+    final_temperature: np.ndarray | None = quantity("K", None)
+    heat_balance: dict | None = None
 
     @property
     def eccentricity_ratio(self) -> np.ndarray:

@@ -194,6 +194,18 @@ class EnergyBalance(NamedTuple):
     conducted: float
 
 
+class EnergyRates(NamedTuple):
+    """What drives the energy equation (:meth:`EnergyEquation.rates`): the ``stream_flow`` of every face's two
+    streams (Poiseuille, then Couette) and the end faces' outflows ``qb`` [C R^2 omega], the dissipation per cell
+    ``source`` [p0 C R^2 omega] and the wall coefficient per cell ``wall`` [W/K] -- at one instant, or their means
+    over an interval (they enter the equations linearly)."""
+
+    stream_flow: np.ndarray
+    qb: np.ndarray
+    source: np.ndarray
+    wall: np.ndarray
+
+
 class EnergyEquation:
     """The energy equation of a :class:`~transient.models.journal.viscous_film.ViscousFilm` for a
     :class:`~transient.models.journal.thermal_settings.ThermalFilm`: :meth:`solve` at the film's state."""
@@ -230,43 +242,86 @@ class EnergyEquation:
 
     def solve(self, u, X, Y) -> EnergyBalance:
         """The temperatures of the film at state ``u``, journal at (X, Y), with the film's current fluidity."""
-        film, th = self.film, self.thermal
-        film.residual(u, X, Y)  # the cell fields (H, P, theta, k with the fluidity, c) of the state
+        self.film.residual(u, X, Y)  # the cell fields (H, P, theta, k with the fluidity, c) of the state
+        return self.solve_rates(self.rates())
+
+    def rates(self, speed_ratio=1.0) -> "EnergyRates":
+        """What drives the temperatures at the cell fields of the film's last evaluation (``film.P``, ``C``, ``H``,
+        ``k`` with the fluidity, ``c`` with the shaft's speed): the streams, the end faces' outflows, the
+        dissipation per cell [p0 C R^2 omega] -- its Couette part at ``speed_ratio`` (the shaft's speed over the
+        film's) squared -- and the wall coefficients [W/K]."""
+        film = self.film
         fv = film.fv
         face_flows(film.P, film.C, film.k, film.c, fv.faces, fv.boundary, self.q, self.qp, self.qb)
-        dissipation(film.P, film.C, film.H, film.fluidity, film.area, fv.faces, fv.boundary, self.qp, self.qb,
-                    self.source)
+        # the Couette dissipation min(theta, 1) A s^2 / (6 f H): the fluidity over s^2 (its only use in the kernel)
+        dissipation(film.P, film.C, film.H, film.fluidity / speed_ratio ** 2, film.area, fv.faces, fv.boundary,
+                    self.qp, self.qb, self.source)
         nf = self.q.size
         self.stream_flow[:nf] = self.qp
         self.stream_flow[nf:] = self.q - self.qp
-        q_in, q_rec = feed_totals(self.free, self.feed, self.n_feeds, self.streams, self.stream_flow)
-        with np.errstate(divide="ignore", invalid="ignore"):
-            carry = np.where(q_rec > 0.0, np.minimum(th.mixing, q_in / np.where(q_rec > 0.0, q_rec, 1.0)), 0.0)
-        wall, T_wall = self.wall_coefficients()
+        return EnergyRates(self.stream_flow.copy(), self.qb.copy(), self.source.copy(), self.wall_coefficients()[0])
+
+    def solve_rates(self, r: "EnergyRates", capacity=None, T_old=None) -> EnergyBalance:
+        """The temperatures driven by ``r`` (:meth:`rates`, or their mean over an interval): steady, or with
+        ``capacity`` per cell [C R^2 per unit of tau: the heat capacity over rho c_p and the time step] one
+        backward-Euler step from the cells' temperatures ``T_old`` [K] of the advective form
+        ``capacity (T - T_old) + sum_inflows Q (T - T_up) + w (T - T_w) = Phi``: the free cells' diagonal takes the
+        capacity less their net outflow (mean flows over an interval in which the film's content changed need not be
+        free of divergence; the flux form would then make ``T div Q`` a spurious source), ``capacity T_old`` the
+        right side -- every row sums to ``capacity + w`` > 0, a diagonally dominant M-matrix: no temperature leaves
+        the range of the old, supply, wall and heated ones."""
+        film, th = self.film, self.thermal
+        q_in, q_rec, carry = self.carry_over(r)
+        _, T_wall = self.wall_coefficients()
         Ts = th.supply_temperature
         scale = self.power_unit / self.heat_unit  # K C R^2 omega per p0 C R^2 omega
-        m = energy_system(self.free, self.feed, self.n_feeds, self.streams, fv.boundary, self.stream_flow, self.qb,
-                          self.source * scale, wall / self.heat_unit, T_wall, Ts, carry, q_in, q_rec,
+        fv = film.fv
+        m = energy_system(self.free, self.feed, self.n_feeds, self.streams, fv.boundary, r.stream_flow, r.qb,
+                          r.source * scale, r.wall / self.heat_unit, T_wall, Ts, carry, q_in, q_rec,
                           self.rows, self.cols, self.vals, self.rhs)
         N = film.n + self.n_feeds
-        A = sp.csc_matrix((self.vals[:m], (self.rows[:m], self.cols[:m])), shape=(N, N))
-        x = spla.splu(A, permc_spec=ENERGY_ORDERING).solve(self.rhs)
-        T = x[:film.n]
+        rows, cols, vals, rhs = self.rows[:m], self.cols[:m], self.vals[:m], self.rhs
+        if capacity is not None:
+            cells = np.flatnonzero(self.free)
+            (fL, fR), n = self.streams, film.n
+            net_out = (np.bincount(fL, r.stream_flow, n) - np.bincount(fR, r.stream_flow, n)
+                       + np.bincount(film.op.bcell, r.qb, n))
+            rows, cols = np.concatenate([rows, cells]), np.concatenate([cols, cells])
+            vals = np.concatenate([vals, (capacity - net_out)[cells]])
+            rhs = rhs.copy()
+            rhs[cells] += capacity[cells] * T_old[cells]
+        A = sp.csc_matrix((vals, (rows, cols)), shape=(N, N))
+        x = spla.splu(A, permc_spec=ENERGY_ORDERING).solve(rhs)
+        return self.balance(r, x[:film.n], x[film.n:])
+
+    def carry_over(self, r: "EnergyRates"):
+        """Per feed: the inflow ``Q_in``, the recirculated flow ``Q_rec`` and the carry-over fraction of ``r``."""
+        q_in, q_rec = feed_totals(self.free, self.feed, self.n_feeds, self.streams, r.stream_flow)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            carry = np.where(q_rec > 0.0, np.minimum(self.thermal.mixing, q_in / np.where(q_rec > 0.0, q_rec, 1.0)),
+                             0.0)
+        return q_in, q_rec, carry
+
+    def balance(self, r: "EnergyRates", T, T_mix) -> EnergyBalance:
+        """The :class:`EnergyBalance` of the temperatures ``T`` (cells) and ``T_mix`` (feeds) under the rates ``r``."""
+        film, Ts = self.film, self.thermal.supply_temperature
+        q_in, q_rec, carry = self.carry_over(r)
+        wall, T_wall = r.wall, self.wall_coefficients()[1]
         sym = film.scales.sym
-        leak = (self.qb > 0.0) & self.free[film.op.bcell]  # the film's side leakage (a groove's own ends: not film)
+        leak = (r.qb > 0.0) & self.free[film.op.bcell]  # the film's side leakage (a groove's own ends: not film)
         out_T = T[film.op.bcell[leak]]
-        q_out = self.qb[leak]
+        q_out = r.qb[leak]
         outlet = float(np.sum(q_out * out_T) / np.sum(q_out)) if np.sum(q_out) > 0 else float("nan")
-        T_rec = self._recirculated(T, x[film.n:], q_rec)
+        T_rec = self._recirculated(T, T_mix, q_rec, r.stream_flow)
         convected = self.heat_unit * sym * (float(np.sum(q_out * (out_T - Ts)))
                                               + float(np.sum((1.0 - carry) * q_rec * (T_rec - Ts))))
         conducted = sym * float(np.sum(wall[self.free] * (T - T_wall)[self.free]))
-        return EnergyBalance(T.copy(), x[film.n:].copy(), outlet, sym * self.power_unit * float(self.source.sum()),
+        return EnergyBalance(np.array(T), np.array(T_mix), outlet, sym * self.power_unit * float(r.source.sum()),
                              convected, conducted)
 
-    def _recirculated(self, T, T_mix, q_rec):
+    def _recirculated(self, T, T_mix, q_rec, q):
         """Mixed-mean temperature of the oil reaching each feed from the film (the feed's own if none reaches it)."""
-        (fL, fR), free, q = self.streams, self.free, self.stream_flow
+        (fL, fR), free = self.streams, self.free
         cross = free[fL] != free[fR]
         up_is_L = q >= 0.0
         up = np.where(up_is_L, fL, fR)

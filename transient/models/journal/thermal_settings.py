@@ -78,6 +78,11 @@ class ThermalFilm:
 
     ``tolerance`` [K]: the steady film and temperatures are solved alternately until the temperatures change by
     less than this; at most ``max_iterations`` times.
+
+    ``wall_heat_capacity`` [J/K]: the heat capacity of the bush and shaft metal next to the film (0: none, the oil's
+    own only), for the transient film (:mod:`transient.models.journal.thermal_orbit`): spread over the film's area
+    in proportion to each cell's area, each share at its cell's temperature. It sets how many seconds the film's
+    temperatures lag a change of speed or load; it does not change a steady state.
     """
 
     supply_temperature: float
@@ -90,6 +95,7 @@ class ThermalFilm:
     viscosity_law: object = None
     tolerance: float = 1e-4
     max_iterations: int = 100
+    wall_heat_capacity: float = 0.0
 
     def __post_init__(self):
         _temperature("supply_temperature", self.supply_temperature)
@@ -116,6 +122,8 @@ class ThermalFilm:
         check_range("mixing", self.mixing, "-", 0.0, 1.0, why="(the hot-oil carry-over coefficient)")
         check_positive("tolerance", self.tolerance, "K")
         check_int("max_iterations", self.max_iterations, "-", 1, 10000)
+        check_range("wall_heat_capacity", self.wall_heat_capacity, "J/K", 0.0, 1e9,
+                    why="(the bush and shaft metal next to the film; 0: the oil's own heat capacity only)")
         self.viscosity(self.supply_temperature)  # a Vogel law must hold at the supply temperature
 
     @cached_property
@@ -148,4 +156,5 @@ class ThermalFilm:
                     viscosity_constants=list(law.kernel_args()[1:]), pressure_viscosity=law.pressure_viscosity,
                     density=self.density, heat_capacity=self.heat_capacity, conductivity=self.conductivity,
                     boundary=kind, wall_coefficient=coefficient, wall_temperature=wall_temperature,
-                    mixing=self.mixing, tolerance=self.tolerance, max_iterations=self.max_iterations)
+                    mixing=self.mixing, tolerance=self.tolerance, max_iterations=self.max_iterations,
+                    **({} if self.wall_heat_capacity == 0.0 else dict(wall_heat_capacity=self.wall_heat_capacity)))
