@@ -13,7 +13,8 @@ from transient.physics.layered import NO_LAYERS, BoundaryLayers, Gecim, LayeredF
 from transient.results import RunResult, SteadyResult, quantity, result_type
 from transient.units import rpm_to_hz
 
-RECORDED_FIELDS = ("force", "min_film", "mass", "outflow", "supply_flow", "side_leakage", "pressure", "pressure_t", "film_content", "film_content_t")
+RECORDED_FIELDS = ("force", "min_film", "mass", "outflow", "supply_flow", "side_leakage", "pressure", "pressure_t", "film_content", "film_content_t",
+                   "friction_torque", "contact_load", "contact_pressure", "speed")
 
 
 @result_type
@@ -175,7 +176,8 @@ class OrbitResult(RunResult):
 
     shapes = {"x": ("t",), "y": ("t",), "force": ("t", 2), "min_film": ("t",), "mass": ("t",), "outflow": ("t", 2),
               "supply_flow": ("t", None), "side_leakage": ("t", 2), "pressure": ("pressure_t", "nz", "ntheta"),
-              "pressure_t": (None,), "film_content": ("film_content_t", "nz", "ntheta"), "film_content_t": (None,)}
+              "pressure_t": (None,), "film_content": ("film_content_t", "nz", "ntheta"), "film_content_t": (None,),
+              "friction_torque": ("t",), "contact_load": ("t",), "contact_pressure": ("t",), "speed": ("t",)}
 
     x: np.ndarray = quantity("m")
     y: np.ndarray = quantity("m")
@@ -193,6 +195,12 @@ class OrbitResult(RunResult):
     pressure_t: np.ndarray | None = quantity("s", None)
     film_content: np.ndarray | None = None
     film_content_t: np.ndarray | None = quantity("s", None)
+    friction_torque: np.ndarray | None = quantity("N m", None)
+    contact_load: np.ndarray | None = quantity("N", None)
+    contact_pressure: np.ndarray | None = quantity("Pa", None)
+    speed: np.ndarray | None = quantity("rpm", None)
+    contact_events: list | None = None
+    peak_contact_pressure: float | None = quantity("Pa", None)
 
     @property
     def eccentricity_ratio(self) -> np.ndarray:
