@@ -181,6 +181,21 @@ class JournalOrbit:
         y0[self.film.n + 1] = e.position[1] / self.bearing.clearance
         return y0
 
+    def rest_state(self) -> np.ndarray:
+        """Film and journal at rest under ``load`` (a rough bearing's start-up from rest): the steady equilibrium at
+        the lowest speed (``SPEED_RANGE_RPM[0]``, where the asperities carry the load and the film is at the feed
+        pressures), its film content carried over into this orbit's units, the journal at rest."""
+        if self.rough is None:
+            raise ValueError("rest_state with roughness = None: a smooth journal at rest sits on the bush, which only "
+                             "a rough bearing's asperities carry; allowed: a JournalBearing with roughness=Roughness(...)")
+        low = SPEED_RANGE_RPM[0]
+        e = self.bearing.equilibrium(self.load, low)
+        X, Y = e.position[0] / self.bearing.clearance, e.position[1] / self.bearing.clearance
+        y0 = np.zeros(self.n)
+        y0[:self.film.n] = self.film.universal(self.bearing.film(low).content(e.u, X, Y), X, Y)
+        y0[self.film.n:self.film.n + 2] = X, Y
+        return y0
+
     def linear_start(self) -> np.ndarray:
         """State at t = 0 on the linearised unbalance response (position and velocity from K and C, the
         film solved quasi-steadily for them): a start that is already close to the settled orbit."""
