@@ -39,7 +39,7 @@ from transient.models.journal.results import OrbitResult
 from transient.models.journal.scales import Rotor
 from transient.models.journal.rk4 import FilmStageSolver
 from transient.models.journal.content_newton import bdf2_newton, decoupled_pattern
-from transient.models.journal.rough_orbit import (CONTACT_LAMBDA, orbit_tribology, rough_bdf2_newton, rough_cells,
+from transient.models.journal.rough_orbit import (CONTACT_LAMBDA, orbit_tribology, peak_asperity_pressure, rough_bdf2_newton, rough_cells,
                                                   rough_content_rhs, rough_dae_jacobian, rough_dae_residual,
                                                   rough_ode_rhs)
 from transient.solvers.integrate.bdf2 import Bdf2Model
@@ -515,7 +515,9 @@ class JournalOrbit:
                 row["min_film"] = C * (1.0 - np.hypot(y[n], y[n + 1]))
             if "speed" in record:
                 row["speed"] = float(o.shaft_speed_rpm(tau / f.omega))
-            tribology = [k for k in ("friction_torque", "contact_load", "contact_pressure") if k in record]
+            if "contact_pressure" in record:
+                row["contact_pressure"] = f.p0 * peak_asperity_pressure(y[n], y[n + 1], f.geo, o.rough)
+            tribology = [k for k in ("friction_torque", "contact_load") if k in record]
             if tribology:
                 row.update({k: v for k, v in orbit_tribology(f, o.bearing, y[:n], y[n], y[n + 1],
                                                              float(o.shaft_speed_rpm(tau / f.omega))).items()

@@ -222,6 +222,18 @@ def rough_cell_fields(H, rough, k, c):
 
 
 @njit(cache=True)
+def peak_asperity_pressure(X, Y, geo, rough):
+    """The largest asperity pressure / p0 of the cells at the journal position (X, Y)."""
+    cosp, sinp, area, gap0 = geo
+    top = 0.0
+    for i in range(cosp.size):
+        p = _asperity((gap0[i] + X * cosp[i] + Y * sinp[i]) / rough.sig, rough.table, rough.low, rough.step)[0]
+        if p > top:
+            top = p
+    return top
+
+
+@njit(cache=True)
 def shaft_speed(tau, knots):
     """Speed ratio ``s``, its slope ``ds/dtau`` and the shaft angle ``phi`` at ``tau`` of the piecewise-linear law."""
     t, s, ph = knots[0], knots[1], knots[2]
