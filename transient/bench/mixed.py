@@ -6,10 +6,9 @@ unbalance whirl (the lower of two, alternating, in one process), for three orbit
 * ``smooth``: Rho & Kim's smooth bearing and rotor (100 kg, 981 N, unbalance 0.01 C) at 3000 rpm;
 * ``rough, no contact``: the same orbit on the rough bearing (sigma 1 um, the Stribeck scenario's surfaces): h_min
   is 18 sigma, the asperities carry nothing: the pure cost of the average flow kernels;
-* ``mixed, 200 rpm``: the rough bearing under 5 kN with a 500 kg rotor at 200 rpm (unbalance 20 um): the
-  asperities carry a quarter of the load, h_min about 0.9 sigma;
-* ``mixed, 60 rpm``: the same at 60 rpm: the asperities carry 38 % of the load, h_min about 0.4 sigma, below the
-  flow factor fits' floor (0.5 sigma at gamma 1, where the factors are held).
+* ``mixed, 200 rpm`` and ``mixed, 60 rpm``: the rough bearing under 5 kN with a 500 kg rotor (unbalance 20 um)
+  in the mixed regime; the table gives the asperities' share of the load and h_min / sigma on the grid run (on
+  24 x 4 at 60 rpm h_min is 0.42 sigma, below the flow factor fits' floor, 0.5 sigma at gamma 1).
 
 The ratios mixed / smooth are the numbers the target (at most 2) is about; rough / smooth the kernels' overhead.
 """
