@@ -110,6 +110,36 @@ def rig_torque(curves, measured, peer=None, measured_h_min=None, title=None):
     share.set_ylabel("asperity share of the test bearing's load [%] (dotted)")
     share.set_ylim(-2, 102)
     ax[1].legend(fontsize=7, loc="upper left")
+def speed_histories(runs, load, sigma=None, title=None):
+    """Start-up and coast-down histories of rough journal orbits (:class:`~transient.models.journal.results.
+    OrbitResult` recorded with ``"shaft_speed"``, ``"friction_torque"``, ``"min_film"``, ``"contact_load"``): ``runs`` maps a
+    label to its result; one column each, rows shaft speed, friction torque, minimum film (and ``h_min / sigma``),
+    the asperities' share of the ``load`` [N] with the peak asperity pressure; contact events marked."""
+    fig, ax = figure(4, len(runs), size=(6.5 * len(runs), 11), sharex="col")
+    ax = np.asarray(ax).reshape(4, len(runs))
+    for j, (label, r) in enumerate(runs.items()):
+        a = ax[:, j]
+        a[0].plot(r.t, r.shaft_speed, color="k")
+        a[0].set_ylabel("shaft speed [rpm]")
+        a[0].set_title(label)
+        a[1].plot(r.t, r.friction_torque, color="tab:purple")
+        a[1].set_ylabel("friction torque [N m]")
+        a[2].plot(r.t, 1e6 * r.min_film)
+        a[2].set_ylabel("minimum film h_min [um]")
+        if sigma:
+            a[2].axhline(3e6 * sigma, color="k", ls=":", lw=0.8, label="h_min = 3 sigma")
+            a[2].legend(fontsize=7)
+        a[3].plot(r.t, 100 * r.contact_load / load, color="tab:red", label="asperity share of the load")
+        a[3].set_ylabel("asperity share of the load [%]")
+        p = a[3].twinx()
+        p.plot(r.t, 1e-6 * r.contact_pressure, color="tab:orange", lw=0.8, ls="--")
+        p.set_ylabel("peak asperity pressure [MPa]", color="tab:orange")
+        a[3].set_xlabel("time [s]")
+        for t, what in r.contact_events or ():
+            for b in a:
+                b.axvline(t, color="tab:red" if what == "begins" else "tab:green", lw=0.6, ls="--")
+        for b in a:
+            b.grid(True, lw=0.3)
     if title:
         suptitle(fig, title)
     return fig

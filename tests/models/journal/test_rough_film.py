@@ -212,13 +212,12 @@ def test_lift_off_speed_interpolates_the_crossing():
     assert math.isnan(lift_off_speed(s, [500.0, 500.0, 500.0], 1000.0))
 
 
-def test_orbit_and_rotor_system_refuse_a_rough_bearing():
-    """The time-domain films are smooth: a rough bearing is refused at their door, not integrated as a smooth one."""
-    from transient import JournalOrbit, Rotor, RotorBearingSystem
+def test_rotor_system_refuses_a_rough_bearing():
+    """The rotor system's films are smooth: a rough bearing is refused at its door, not integrated as a smooth one
+    (the single-bearing orbit integrates it: tests/models/journal/test_rough_orbit.py)."""
+    from transient import Rotor, RotorBearingSystem
 
     b = rough(1e-6)
-    with pytest.raises(ValueError, match="roughness"):
-        JournalOrbit(b, rotor_mass=10.0, unbalance=1e-6, load=1000.0, speed_rpm=3000.0)
     rotor = Rotor.example()
     with pytest.raises(ValueError, match="roughness"):
         RotorBearingSystem(rotor, {n: b for n in rotor.bearing_nodes})

@@ -15,7 +15,6 @@ with ``psi = 2 c / D`` (``tests/data/butenschoen_squeeze.json``).
 
 from __future__ import annotations
 
-import numpy as np
 
 from transient.checks import check_range
 from transient.models.journal.reynolds_film import ReynoldsFilm

@@ -34,7 +34,7 @@ import numpy as np
 
 from transient.checks import ATOL_FLOOR, ATOL_WHY, check_choice, check_memory, check_positive, check_range
 from transient.compile_notice import announce
-from transient.models.journal.bearing import GRID_ADVICE, JournalBearing, check_speed
+from transient.models.journal.bearing import GRID_ADVICE, SPEED_RANGE_RPM, JournalBearing, check_speed
 from transient.models.journal.film import read_only
 from transient.models.journal.flows import film_flows
 from transient.models.journal.kernels import (N_ROTOR, content_jacobian, content_ode_jacobian, content_residual,
@@ -44,6 +44,9 @@ from transient.models.journal.scales import Rotor
 from transient.models.journal.rk4 import FilmStageSolver
 from transient.models.journal.thermal_orbit import THERMAL_FIELDS, THERMAL_RECORDABLE, thermal_long_run, thermal_parts
 from transient.models.journal.content_newton import bdf2_newton, decoupled_pattern
+from transient.models.journal.rough_orbit import (CONTACT_LAMBDA, orbit_tribology, peak_asperity_pressure, rough_bdf2_newton, rough_cells,
+                                                  rough_content_rhs, rough_dae_jacobian, rough_dae_residual,
+                                                  rough_ode_rhs)
 from transient.solvers.integrate.bdf2 import Bdf2Model
 from transient.solvers.integrate import Problem, Steps
 from transient.solvers.model_run import (ModelRun, RunParts, check_run_memory, start_point, state_array,
@@ -75,7 +78,10 @@ DEFAULT_METHOD = "bdf2"
 #: smaller dimension, reverse Cuthill-McKee on the Newton pattern: 3.0 with a full-length groove, up to 6.2 with a
 #: partial one (measured on 151 x 21, 64 x 64, 100 x 30, 40 x 100 and 300 x 42); 8 bytes each per film cell.
 BDF2_BAND_ROWS = 6.2
-RECORDABLE = ("force", "pressure", "film_content", "min_film", "mass", "outflow", "supply_flow", "side_leakage")
+RECORDABLE = ("force", "pressure", "film_content", "min_film", "mass", "outflow", "supply_flow", "side_leakage",
+              "friction_torque", "contact_load", "shaft_speed")
+#: The methods that integrate a rough bearing's orbit (:mod:`~transient.models.journal.rough_orbit`).
+ROUGH_METHODS = ("ida", "bdf2")
 FIELD_SERIES = ("pressure", "film_content")
 #: The loose keywords of :meth:`JournalOrbit.run` of earlier releases and the settings field each now is.
 RUN_KEYWORDS = (keyword_table("integration", Integration, ("method", "rtol", "atol", "steps_per_revolution",
@@ -92,10 +98,19 @@ class JournalOrbit:
     rotor_mass [kg] : mass carried by this bearing (paper: m = W / g).
     unbalance [m] : mass eccentricity e of the rotor (unbalance force m e Omega^2; paper: 0.01 C).
     load [N] : static load on the bearing, acting in +x (towards the bottom).
-    speed_rpm [rpm] : shaft speed.
+    speed_rpm [rpm] : shaft speed (with ``speed_profile``: the reference speed of the dimensionless time and the
+        pressure unit, usually the largest).
+    speed_profile : rough bearings only: the shaft speed as a function of time, ``((t_0 [s], n_0 [rpm]), (t_1,
+        n_1), ...)`` (t ascending, linear between, constant outside; e.g. a start-up from rest ``((0, 0), (2,
+        3000))``): :mod:`~transient.models.journal.rough_orbit`. Default: ``speed_rpm`` throughout.
+
+    A rough bearing (``JournalBearing(..., roughness=Roughness(...))``) integrates the average Reynolds equation
+    with the asperity contact in the rotor's equations (:mod:`~transient.models.journal.rough_orbit`; methods
+    ``"ida"`` and ``"bdf2"``): the journal may run through contact, which its results record (``contact_events``,
+    ``contact_pressure``) instead of stopping.
     """
 
-    def __init__(self, bearing: JournalBearing, rotor_mass, unbalance, load, speed_rpm):
+    def __init__(self, bearing: JournalBearing, rotor_mass, unbalance, load, speed_rpm, speed_profile=None):
         if not isinstance(bearing, JournalBearing):
             raise TypeError(f"bearing must be a JournalBearing, got {type(bearing).__name__}")
         if getattr(bearing, "cavitation", "elrod") != "elrod":
@@ -103,10 +118,6 @@ class JournalOrbit:
                              "orbit integrates the mass-conserving Elrod film; build the bearing with "
                              "cavitation=\"elrod\" (the Reynolds-condition film serves steady_state, equilibrium, "
                              "coefficients and stability_threshold)")
-        if getattr(bearing, "roughness", None) is not None:
-            raise ValueError("JournalOrbit does not support roughness = Roughness(...) yet: the orbit integrates the "
-                             "smooth film; allowed: roughness=None (a rough bearing serves steady_state, equilibrium, "
-                             "coefficients and stribeck_curve)")
         if getattr(bearing, "misalignment", (0.0, 0.0)) != (0.0, 0.0):
             raise ValueError(f"JournalOrbit does not support misalignment = {bearing.misalignment} [rad] yet: the "
                              "orbit's touch detection and minimum film are the aligned journal's; allowed: (0, 0) "
@@ -126,6 +137,37 @@ class JournalOrbit:
         self.ebar = self.unbalance / bearing.clearance
         self._equilibrium = None
         self._newton_pattern = None
+        self.speed_profile = None if speed_profile is None else self._check_profile(speed_profile)
+        self.rough = None
+        if bearing.roughness is not None:
+            prof = ((0.0, 1.0),) if speed_profile is None else [(t * f.omega, n / self.speed_rpm)
+                                                                for t, n in self.speed_profile]
+            self.rough = rough_cells(bearing.roughness, bearing.clearance, f.p0, f.n, prof)
+            f.rough_cells = self.rough
+        elif speed_profile is not None:
+            raise ValueError("speed_profile with roughness = None: the smooth orbit runs at constant speed (a "
+                             "start-up or coast-down reaches the bush, which only a rough bearing's contact carries); "
+                             "allowed: speed_profile=None, or a JournalBearing with roughness=Roughness(...)")
+
+    @staticmethod
+    def _check_profile(profile) -> tuple:
+        """``speed_profile`` as ((t [s], speed [rpm]), ...), checked."""
+        p = np.asarray(profile, dtype=float)
+        if p.ndim != 2 or p.shape[1] != 2 or p.shape[0] < 1:
+            raise ValueError(f"speed_profile of shape {p.shape}: allowed ((t_0 [s], n_0 [rpm]), ...), at least one pair")
+        for t, n in p:
+            check_range("speed_profile time", t, "s", 0.0, np.inf, high_open=True)
+            check_range("speed_profile speed", n, "rpm", 0.0, SPEED_RANGE_RPM[1])
+        if np.any(np.diff(p[:, 0]) <= 0):
+            raise ValueError(f"speed_profile times {p[:, 0].tolist()} [s] out of order: allowed strictly ascending")
+        return tuple((float(t), float(n)) for t, n in p)
+
+    def shaft_speed_rpm(self, t) -> np.ndarray:
+        """The shaft speed [rpm] at the times ``t`` [s] (``speed_profile``, else ``speed_rpm``)."""
+        if self.speed_profile is None:
+            return np.full(np.shape(t), self.speed_rpm)
+        p = np.array(self.speed_profile)
+        return np.interp(t, p[:, 0], p[:, 1])
 
     # ---------------------------------------------------------------------------------------------
     @property
@@ -148,6 +190,21 @@ class JournalOrbit:
         y0[: self.film.n] = e.u
         y0[self.film.n] = e.position[0] / self.bearing.clearance
         y0[self.film.n + 1] = e.position[1] / self.bearing.clearance
+        return y0
+
+    def rest_state(self) -> np.ndarray:
+        """Film and journal at rest under ``load`` (a rough bearing's start-up from rest): the steady equilibrium at
+        the lowest speed (``SPEED_RANGE_RPM[0]``, where the asperities carry the load and the film is at the feed
+        pressures), its film content carried over into this orbit's units, the journal at rest."""
+        if self.rough is None:
+            raise ValueError("rest_state with roughness = None: a smooth journal at rest sits on the bush, which only "
+                             "a rough bearing's asperities carry; allowed: a JournalBearing with roughness=Roughness(...)")
+        low = SPEED_RANGE_RPM[0]
+        e = self.bearing.equilibrium(self.load, low)
+        X, Y = e.position[0] / self.bearing.clearance, e.position[1] / self.bearing.clearance
+        y0 = np.zeros(self.n)
+        y0[:self.film.n] = self.film.universal(self.bearing.film(low).content(e.u, X, Y), X, Y)
+        y0[self.film.n:self.film.n + 2] = X, Y
         return y0
 
     def linear_start(self) -> np.ndarray:
@@ -220,7 +277,24 @@ class JournalOrbit:
         rotor = Rotor(self.kappa, self.wbar, self.ebar, f.sym)
         fbuf = np.empty(self.n)
 
-        if formulation == "content":
+        rough = self.rough
+        if rough is not None and formulation == "content":  # BDF2 only (its Newton is the model's Jacobian)
+            def rhs(t, y, out):
+                rough_content_rhs(t, y, out, switch, rotor, geo, fields, fv, work, rough)
+
+            residual = jac_rhs = jac_residual = None
+        elif rough is not None:
+            def rhs(t, y, out):
+                rough_ode_rhs(t, y, out, switch, rotor, geo, fields, fv, rough)
+
+            def residual(t, y, yp, out):
+                rough_dae_residual(t, y, yp, out, switch, rotor, geo, fields, fv, rough)
+
+            def jac_residual(t, y, yp, cj, data):
+                rough_dae_jacobian(t, y, yp, cj, data, switch, rotor, geo, fields, extras, fv, rough)
+
+            jac_rhs = None
+        elif formulation == "content":
             def rhs(t, y, out):
                 content_rhs(t, y, out, switch, rotor, geo, fields, fv, work)
 
@@ -276,6 +350,9 @@ class JournalOrbit:
         work = f.work._replace(jac=np.zeros(f.op.nnz), gather=gather)
         args = (f.switch, Rotor(self.kappa, self.wbar, self.ebar, f.sym), f.geo, f.fields, f.extras, f.fv, work,
                 (BDF2_FILM_TOL, BDF2_FILM_TOL), np.zeros(f.n, dtype=np.int8))
+        if self.rough is not None:
+            return Bdf2Model(newton=rough_bdf2_newton, args=args + (self.rough,),
+                             error_components=np.arange(f.n, self.n), n_border=N_ROTOR)
         return Bdf2Model(newton=bdf2_newton, args=args,
                          error_components=np.arange(f.n, self.n), n_border=N_ROTOR)
 
@@ -413,6 +490,12 @@ class JournalOrbit:
                              'formulation must be "content" (the default for "bdf2")')
         if method == "rk4" and formulation != "universal":
             raise ValueError('method "rk4" solves the film in the universal variable; formulation must be "universal"')
+        if self.rough is not None:
+            if method not in ROUGH_METHODS or (method == "ida" and formulation != "universal"):
+                raise ValueError(f"method = {method!r}, formulation = {formulation!r} with roughness = Roughness(...): "
+                                 "the rough orbit integrates with method \"ida\" (formulation \"universal\") or "
+                                 "\"bdf2\" (formulation \"content\")")
+            touch_gap = 0.0  # the asperities carry the journal through contact: a record, not a stop
         opr = rc.outputs_per_revolution
         if thermal:
             lr = thermal_long_run(lr, thermal_interval, opr)
@@ -431,7 +514,7 @@ class JournalOrbit:
                       steps=Steps(dt=step.dt, max_step=step.max_step, first_step=step.first_step))
         key = dict(self.parameters(), **ig.key(), outputs_per_revolution=opr, record=sorted(rc.record),
                    record_from_revolution=rc.record_from_revolution, formulation=formulation)
-        series = ("x", "y", *rc.record)
+        series = ("x", "y", *rc.record, *(("contact_pressure",) if self.rough is not None else ()))
         parts = RunParts(label=f"orbit {self.speed_rpm:g} rpm", omega=self.film.omega, revolution=2 * np.pi,
                          problem_at=step.problem_at, solver=solver, series=series, sparse=FIELD_SERIES,
                          sample=self._sampler(rc.record, 2 * np.pi * rc.record_from_revolution),
@@ -469,6 +552,8 @@ class JournalOrbit:
         n = f.n
         C = o.bearing.clearance
         fields = [k for k in record if k in FIELD_SERIES]
+        if self.rough is not None:
+            record = tuple(record) + ("contact_pressure",)
 
         def sample(tau, y):
             row = dict(x=y[n] * C, y=y[n + 1] * C)
@@ -479,6 +564,15 @@ class JournalOrbit:
                 row["force"] = (F[0] * f.force_scale, F[1] * f.force_scale)
             if "min_film" in record:
                 row["min_film"] = C * (1.0 - np.hypot(y[n], y[n + 1]))
+            if "shaft_speed" in record:
+                row["shaft_speed"] = float(o.shaft_speed_rpm(tau / f.omega))
+            if "contact_pressure" in record:
+                row["contact_pressure"] = f.p0 * peak_asperity_pressure(y[n], y[n + 1], f.geo, o.rough)
+            tribology = [k for k in ("friction_torque", "contact_load") if k in record]
+            if tribology:
+                row.update({k: v for k, v in orbit_tribology(f, o.bearing, y[:n], y[n], y[n + 1],
+                                                             float(o.shaft_speed_rpm(tau / f.omega))).items()
+                            if k in tribology})
             if "mass" in record or "outflow" in record:
                 M, q_ends, q_groove = f.mass_flows(y[:n], y[n], y[n + 1])
                 vol = C * o.bearing.radius ** 2
@@ -506,6 +600,12 @@ class JournalOrbit:
     def _result(self, rec, record, method, stats, touched, message, tau_end) -> OrbitResult:
         a = rec.arrays()
         extra = {}
+        if self.rough is not None:
+            record = tuple(record) + ("contact_pressure",)
+            lam = self.bearing.clearance * (1.0 - np.hypot(a["x"], a["y"]) / self.bearing.clearance) / \
+                self.bearing.roughness.sigma
+            extra["contact_events"] = contact_events(a["t"], lam)
+            extra["peak_contact_pressure"] = float(np.max(a["contact_pressure"])) if a["t"].size else 0.0
         for k in record:
             extra[k] = a[k]
             if k in FIELD_SERIES or k in THERMAL_FIELDS:
@@ -630,6 +730,18 @@ class JournalOrbit:
             out["relative"].append(abs(err) / thr)
             out["quadrature_relative"].append(abs(flow - trapezoid(net, x=t[s])) / thr)
         return {k: np.array(v) for k, v in out.items()}
+
+
+def contact_events(t, lam, onset=CONTACT_LAMBDA) -> list:
+    """``[(t [s], "begins" | "ends"), ...]`` where the film parameter ``lam = h_min / sigma`` at the times ``t``
+    falls below (contact begins) or rises above (ends) ``onset``, linearly interpolated between outputs; a run that
+    starts in contact begins with ``(t_0, "begins")``."""
+    t, lam = np.asarray(t, dtype=float), np.asarray(lam, dtype=float)
+    out = [(float(t[0]), "begins")] if t.size and lam[0] < onset else []
+    for k in np.flatnonzero((lam[1:] < onset) != (lam[:-1] < onset)):
+        a, b = lam[k] - onset, lam[k + 1] - onset
+        out.append((float(t[k] + (t[k + 1] - t[k]) * a / (a - b)), "begins" if b < 0 else "ends"))
+    return out
 
 
 def orbit_memory(cells, revolutions, outputs_per_revolution=100, record=(), record_from_revolution=0.0, *,

@@ -15,7 +15,7 @@ from transient.units import rpm_to_hz
 
 RECORDED_FIELDS = ("force", "min_film", "mass", "outflow", "supply_flow", "side_leakage", "pressure", "pressure_t", "film_content", "film_content_t",
                    "max_temperature", "power_loss", "heat_flow", "stored_heat", "shaft_speed", "temperature",
-                   "temperature_t")
+                   "temperature_t", "friction_torque", "contact_load", "contact_pressure")
 
 
 @result_type
@@ -183,7 +183,8 @@ class OrbitResult(RunResult):
               "pressure_t": (None,), "film_content": ("film_content_t", "nz", "ntheta"), "film_content_t": (None,),
               "max_temperature": ("t",), "power_loss": ("t",), "heat_flow": ("t",), "stored_heat": ("t",),
               "shaft_speed": ("t",), "temperature": ("temperature_t", "nz", "ntheta"), "temperature_t": (None,),
-              "final_temperature": (None,)}
+              "final_temperature": (None,), "friction_torque": ("t",), "contact_load": ("t",),
+              "contact_pressure": ("t",)}
 
     x: np.ndarray = quantity("m")
     y: np.ndarray = quantity("m")
@@ -210,6 +211,11 @@ class OrbitResult(RunResult):
     temperature_t: np.ndarray | None = quantity("s", None)
     final_temperature: np.ndarray | None = quantity("K", None)
     heat_balance: dict | None = None
+    friction_torque: np.ndarray | None = quantity("N m", None)
+    contact_load: np.ndarray | None = quantity("N", None)
+    contact_pressure: np.ndarray | None = quantity("Pa", None)
+    contact_events: list | None = None
+    peak_contact_pressure: float | None = quantity("Pa", None)
 
     @property
     def eccentricity_ratio(self) -> np.ndarray:

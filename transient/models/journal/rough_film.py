@@ -21,6 +21,7 @@ import numpy as np
 from transient.fv.reynolds import jacobian_kernel, residual_kernel
 from transient.models.journal.film import Film, film_state, read_only
 from transient.models.journal.kernels import N_ROTOR, film_force, state_fields
+from transient.models.journal.rough_orbit import rough_content_universal
 from transient.models.journal.roughness import Roughness, contact_pressure, rough_coefficients
 
 
@@ -87,6 +88,34 @@ class RoughFilm(Film):
             data[col[:, 2]] = (a * self.C * rc.phi_c * self.cosp)[free]
             data[col[:, 3]] = (a * self.C * rc.phi_c * self.sinp)[free]
         return data
+
+    def content(self, u, X, Y):
+        """The content state ``m = (h_T / C) theta(u)`` of the orbit's content formulation
+        (:mod:`~transient.models.journal.rough_orbit`)."""
+        self.residual(u, X, Y)
+        return self.coefficients.mean_gap * self.C
+
+    def universal(self, m, X, Y):
+        """The inverse of :meth:`content` (groove cells: their prescribed u)."""
+        y = np.concatenate([np.asarray(m, dtype=float), [X, Y]])
+        u = np.empty(self.n)
+        rough_content_universal(y, self.switch, self.geo, self.op.free, self.op.u_fixed,
+                                self.roughness.sigma / self.scales.clearance, np.empty(self.n), u)
+        return u
+
+    def mass_flows(self, u, X, Y):
+        """:meth:`Film.mass_flows <transient.models.journal.film.Film.mass_flows>` of the average flow: the content
+        ``sym sum A (h_T / C) theta`` and the ends' flux with the axial conductance k_z."""
+        R = self.residual(u, X, Y)
+        op, free = self.op, self.op.free
+        M = self.sym * float(np.sum((self.area * self.coefficients.mean_gap * self.C)[free]))
+        total = self.sym * float(np.sum(R[free]))
+        b = op.bcell
+        ok = free[b]
+        if np.any(op.bdir[ok] != 1):
+            raise NotImplementedError("mass_flows assumes Dirichlet faces only at the bearing ends")
+        ends = self.sym * float(np.sum((-self.k_axial[b] * (op.bP - self.P[b]) / op.bd * op.bs)[ok]))
+        return M, ends, total - ends
 
     def contact(self, X, Y):
         """Asperity pressure [Pa] of every cell and its slope d p_a / dH [Pa] at the journal position (X, Y)."""
