@@ -441,9 +441,9 @@ class _Checkpoint:
             raise refuse(f"holds a non-finite state (index {int(np.argmin(np.isfinite(y)))})")
         try:
             recorder.restore({name[4:]: v for name, v in data.items() if name.startswith("rec.")})
-            times = getattr(recorder, "times", None)
-            if times is not None:
-                held = np.asarray(times(), dtype=float)
+            recorded = getattr(recorder, "times", None)
+            if recorded is not None:
+                held = np.asarray(recorded(), dtype=float)
                 want = times[:k + 1]
                 gap = float(np.min(np.diff(times)))
                 if held.shape != want.shape or not np.allclose(held, want, rtol=1e-12, atol=1e-9 * gap):
