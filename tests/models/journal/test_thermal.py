@@ -143,7 +143,7 @@ def test_thermal_equilibrium_carries_the_load():
     (lambda: BushConvection(-1.0), "boundary.coefficient"),
     (lambda: thermal_bearing(cavitation="reynolds"), "thermal"),
     (lambda: JournalBearing(**GEOMETRY, grid=GRID), "viscosity"),
-    (lambda: JournalOrbit(thermal_bearing(), 1.0, 0.0, 100.0, SPEED), "JournalOrbit does not support thermal"),
+    (lambda: JournalOrbit(thermal_bearing(), 1.0, 0.0, 100.0, SPEED), "JournalOrbit: thermal = ThermalFilm(...); allowed: None"),
 ])
 def test_bad_input_is_named(make, name):
     with pytest.raises(ValueError, match=rf"^{re.escape(name)}"):

@@ -37,6 +37,7 @@ from transient.models.journal.kernels import (N_ROTOR, content_jacobian, content
                                               content_rhs, dae_jacobian, dae_residual, ode_jacobian, ode_rhs)
 from transient.models.journal.results import OrbitResult
 from transient.models.journal.scales import Rotor
+from transient.models.journal.time_domain import check_time_domain
 from transient.models.journal.rk4 import FilmStageSolver
 from transient.models.journal.content_newton import bdf2_newton, decoupled_pattern
 from transient.solvers.integrate.bdf2 import Bdf2Model
@@ -83,23 +84,7 @@ class JournalOrbit:
     def __init__(self, bearing: JournalBearing, rotor_mass, unbalance, load, speed_rpm):
         if not isinstance(bearing, JournalBearing):
             raise TypeError(f"bearing must be a JournalBearing, got {type(bearing).__name__}")
-        if getattr(bearing, "cavitation", "elrod") != "elrod":
-            raise ValueError(f"JournalOrbit does not support cavitation={bearing.cavitation!r} yet: the time-domain "
-                             "orbit integrates the mass-conserving Elrod film; build the bearing with "
-                             "cavitation=\"elrod\" (the Reynolds-condition film serves steady_state, equilibrium, "
-                             "coefficients and stability_threshold)")
-        if getattr(bearing, "roughness", None) is not None:
-            raise ValueError("JournalOrbit does not support roughness = Roughness(...) yet: the orbit integrates the "
-                             "smooth film; allowed: roughness=None (a rough bearing serves steady_state, equilibrium, "
-                             "coefficients and stribeck_curve)")
-        if getattr(bearing, "misalignment", (0.0, 0.0)) != (0.0, 0.0):
-            raise ValueError(f"JournalOrbit does not support misalignment = {bearing.misalignment} [rad] yet: the "
-                             "orbit's touch detection and minimum film are the aligned journal's; allowed: (0, 0) "
-                             "(a misaligned bearing serves steady_state, equilibrium and coefficients)")
-        if getattr(bearing, "thermal", None) is not None:
-            raise ValueError("JournalOrbit does not support thermal = ThermalFilm(...) yet: the orbit integrates the "
-                             "isothermal film; allowed: thermal=None (a thermal bearing serves steady_state, "
-                             "equilibrium, coefficients and stability_threshold)")
+        check_time_domain("JournalOrbit", bearing)
         self.bearing = bearing
         self.rotor_mass = check_positive("rotor_mass", rotor_mass, "kg")
         self.unbalance = check_range("unbalance", unbalance, "m", 0.0, bearing.clearance, high_open=True,

@@ -35,6 +35,7 @@ from transient.compile_notice import announce
 from transient.models.journal.film import read_only
 from transient.models.damper.damper import SqueezeFilmDamper
 from transient.models.journal.orbit import BDF2_MIN_STEPS
+from transient.models.journal.time_domain import check_time_domain
 from transient.models.rotor.content_form import ContentSystem
 from transient.models.rotor.model import SystemDAE
 from transient.models.rotor.results import RotorEquilibrium, RotorRunResult, UnbalanceResponse
@@ -98,20 +99,7 @@ class RotorBearingSystem:
             if not np.any(rotor.translation(node)):
                 raise ValueError(f"bearings: node {node!r} does not move in this rotor's coordinates")
         for node, b in bearings.items():
-            if b.cavitation != "elrod":
-                raise ValueError(f"bearings[{node!r}] cavitation = {b.cavitation!r}; allowed: \"elrod\" (the rotor "
-                                 "system couples the mass-conserving films; the Reynolds-condition film serves the "
-                                 "single bearing's steady and linear analyses)")
-            if getattr(b, "misalignment", (0.0, 0.0)) != (0.0, 0.0):
-                raise ValueError(f"bearings[{node!r}] misalignment = {b.misalignment} [rad]; allowed: (0, 0) (the rotor "
-                                 "system's films do not take the shaft's tilts; a misaligned bearing serves the single "
-                                 "bearing's steady and linear analyses)")
-            if getattr(b, "roughness", None) is not None:
-                raise ValueError(f"bearings[{node!r}] roughness = Roughness(...); allowed: None (the rotor system's "
-                                 "films are smooth; a rough bearing serves the single bearing's steady analyses)")
-            if getattr(b, "thermal", None) is not None:
-                raise ValueError(f"bearings[{node!r}] thermal = ThermalFilm(...); allowed: None (the rotor system's "
-                                 "films are isothermal; a thermal bearing serves the single bearing's steady analyses)")
+            check_time_domain("RotorBearingSystem", b, f"bearings[{node!r}] ")
         self.dampers = {n: b for n, b in bearings.items() if isinstance(b, SqueezeFilmDamper)}
         self.bearings = {n: b.bearing if n in self.dampers else b for n, b in bearings.items()}  # dampers: their films
         self.stiffness = rotor.stiffness.copy()  # with the dampers' centring springs
