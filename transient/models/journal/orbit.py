@@ -41,11 +41,11 @@ from transient.models.journal.time_domain import check_time_domain
 from transient.models.journal.rk4 import FilmStageSolver
 from transient.models.journal.content_newton import bdf2_newton, decoupled_pattern
 from transient.solvers.integrate.bdf2 import Bdf2Model
-from transient.solvers.integrate import Problem, Steps
+from transient.solvers.integrate import Problem, Steps, check_method
 from transient.solvers.model_run import (ModelRun, RunParts, check_run_memory, start_point, state_array,
                                          wall_crossing)
 from transient.solvers.settings import (FORMULATIONS, Integration, LongRun, Recording, keyword_table,
-                                       run_settings)
+                                       requested_method, run_settings)
 from transient.units import rpm_to_hz
 
 #: The content formulation's film state is O(1) in the full film, where the pressure is only its 1/beta_bar
@@ -338,6 +338,7 @@ class JournalOrbit:
             part of the content) and no faster (``transient bench orbit-size``, docs/journal.md section 5).
             ``y0``, ``start`` and ``final_state`` are in the universal layout either way.
         """
+        check_method("JournalOrbit.run", requested_method(integration, legacy), step_solve=True)
         revolutions = check_positive("revolutions", revolutions, "rev")
         ig, rc, lr = run_settings("JournalOrbit.run", legacy, RUN_KEYWORDS, integration=integration,
                                   recording=recording, long_run=long_run).values()

@@ -78,7 +78,7 @@ from transient.solvers.integrate import Problem, Steps, check_method
 from transient.checks import check_instance, check_int, check_positive, check_range
 from transient.solvers.model_run import ModelRun, RunParts, check_run_memory, start_point
 from transient.solvers.settings import (RK4_INNER_TOLERANCE, Integration, LongRun, check_unused, keyword_table,
-                                       run_settings)
+                                       requested_method, run_settings)
 
 __all__ = ["ThrustPad", "DescentResult", "pressure_flow_clamped", "rect_shape_factor"]
 
@@ -410,7 +410,7 @@ class ThrustPad:
         The loose keywords of earlier releases (``method=``, ``rtol=``, ``atol=``, ``dt=``) are deprecated: they
         still work for one release, with a ``DeprecationWarning`` naming the new spelling.
         """
-        check_method(DESCENT_OWNER, legacy.get("method", "cvode") if integration is None else integration.method)
+        check_method(DESCENT_OWNER, requested_method(integration, legacy, "cvode"))
         ig = run_settings(DESCENT_OWNER, legacy, DESCENT_KEYWORDS, DESCENT_DEFAULTS, integration=integration)[
             "integration"]
         lr = LongRun() if long_run is None else check_instance("long_run", long_run, LongRun, "None or LongRun(...)")

@@ -67,9 +67,12 @@ from transient.models.roller.roller_fbns import RollerContentFilm, carry_content
 from transient.models.roller.transient import load_ratio, run_squeeze
 from transient.physics.line_formulas import dowson_toyoda_central
 from transient.physics.lubricant import DOWSON_HIGGINSON_PARK, Lubricant
+from transient.solvers.integrate import check_method
 from transient.solvers.newton import NewtonError
 
 PAPER_GRID = (94, 45)
+#: The methods :meth:`RollerContact.transient` offers: IDA on the penalty form (no step solve of its own for BDF2).
+TRANSIENT_METHODS = ("ida",)
 #: the clustered grid of 94 x nodes and twice the paper's y nodes; its y axis is the default grid's above the
 #: paper's load
 HEAVY_GRID = (94, 89)
@@ -744,7 +747,8 @@ class RollerContact:
         return self.dry().half_width / self.speed
 
     def transient(self, t_end: float, load=None, start="dry", rtol: float = 1e-4, n_out: int = 51,
-                  initial_film: float | None = None, ramp_time: float | None = None) -> RollerTransient:
+                  initial_film: float | None = None, ramp_time: float | None = None,
+                  method: str = "ida") -> RollerTransient:
         """Transient EHL by IDA (:mod:`transient.models.roller.transient`) on this contact's grid
         (dense elasticity: use a coarse clustered grid, docs/ehl.md gives the cost) over ``[0, t_end]`` [s].
 
@@ -753,7 +757,9 @@ class RollerContact:
         -- the dry pressure with the film at the mid-plane centre lifted to ``initial_film`` [m] (default
         half the Dowson-Toyoda central film of the mid-plane) -- or a :class:`RollerSteady` of this
         contact. The long-time limit is ``steady(penalty=GAMMA)`` (:data:`transient.models.roller.transient.GAMMA`).
+        ``method``: one of :data:`TRANSIENT_METHODS` (IDA on the penalty form).
         """
+        check_method("RollerContact.transient", method, among=TRANSIENT_METHODS)
         t_end = check_positive("t_end", t_end, "s")
         if self.grid_spec[0] == "uniform":
             raise ValueError("transient needs a clustered grid (dense elasticity for IDA's dense Jacobian)")

@@ -41,9 +41,10 @@ from transient.models.rotor.model import SystemDAE
 from transient.models.rotor.results import RotorEquilibrium, RotorRunResult, UnbalanceResponse
 from transient.models.rotor.rotor import Rotor
 from transient.solvers.bandlu import BorderedBandLU
-from transient.solvers.integrate import Problem, Stats, Steps
+from transient.solvers.integrate import Problem, Stats, Steps, check_method
 from transient.solvers.model_run import ModelRun, RunParts, check_run_memory, start_point, wall_crossing
-from transient.solvers.settings import Integration, LongRun, Recording, check_unused, keyword_table, run_settings
+from transient.solvers.settings import (Integration, LongRun, Recording, check_unused, keyword_table,
+                                       requested_method, run_settings)
 from transient.solvers.newton import NewtonError, NewtonSettings, newton
 from transient.solvers.shooting import ShootingSettings
 from transient.units import rpm_to_rad_s
@@ -504,10 +505,12 @@ class RotorBearingSystem:
         deprecated: they still work for one release, with a ``DeprecationWarning`` naming the new spelling (beside
         the object they belong in: an error).
         """
+        check_method("RotorBearingSystem.run", requested_method(integration, legacy), step_solve=True,
+                     among=RUN_METHODS)
         revolutions = check_positive("revolutions", revolutions, "rev")
         ig, rc, lr = run_settings("RotorBearingSystem.run", legacy, RUN_KEYWORDS, integration=integration,
                                   recording=recording, long_run=long_run).values()
-        check_choice("method", ig.method, RUN_METHODS)
+        check_method("RotorBearingSystem.run", ig.method, step_solve=True, among=RUN_METHODS)
         check_unused("RotorBearingSystem.run", "integration", ig, ("steps_per_revolution", "formulation", "dt",
                                                                    "linear_solver"))
         check_unused("RotorBearingSystem.run", "recording", rc, ("record", "record_from_revolution"))
