@@ -2,10 +2,11 @@
 
 A model's ``run`` keeps what is its own -- its state layout (the run's, e.g. the film content, and the results',
 the universal variable), its outputs (what it samples at an output time), its problem and its result -- and hands
-the rest to :class:`ModelRun`, the same for the journal orbit and the rotor system:
+the rest to :class:`ModelRun`, the same for the journal orbit, the rotor system and the thrust pad's descent:
 
 * before anything is built (:class:`ModelRun`): the run against one output interval, the touch gap, the chunk
-  (default the whole run, 10 revolutions with a checkpoint); :func:`check_run_memory`: the memory the run will need,
+  (default the whole run, 10 revolutions with a checkpoint; a model without a shaft, :meth:`ModelRun.at_times`:
+  a tenth of its outputs with a checkpoint); :func:`check_run_memory`: the memory the run will need,
   refused naming the grid when the model and its solver alone do not fit, else the run's length and recordings;
 * the start (:func:`start_point`): a previous result of the model (its final state and time, so a forcing keeps
   its phase) or ``(t [s], state)``; :meth:`ModelRun.check_state`: its size, finite, every journal inside its
