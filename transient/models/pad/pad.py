@@ -150,7 +150,8 @@ class DescentResult(RunResult):
     ``t`` [s], ``h0`` [m] (mean-plane separation), ``dh0_dt`` [m/s], ``w_hyd`` [N] (film load),
     ``w_asp`` [N] (asperity load), ``contact_area`` [m^2] (real contact area A_re), ``load`` [N],
     ``path`` ("full" | "separable"), ``method``, ``stats`` (:class:`transient.solvers.integrate.Stats`),
-    ``success``, ``message``; ``pressure`` [Pa] (ny, nx) at the last output (full IDA path only).
+    ``success``, ``message``; ``pressure`` [Pa] (ny, nx) at the last output (full IDA path only);
+    ``final_state`` ``(h0 [m], dh0/dt [m/s])`` and ``final_time`` [s], from which ``descent(start=result)`` goes on.
     """
 
     shapes = {"h0": ("t",), "dh0_dt": ("t",), "w_hyd": ("t",), "w_asp": ("t",), "contact_area": ("t",)}
@@ -476,9 +477,7 @@ class ThrustPad:
         """The result of a descent from its recorder (:class:`~transient.solvers.model_run.RunParts`)."""
         a = rec.arrays()
         out = sysm.outputs(a)
-        pres = out.pop("pressure", None)
-        if rec.last_y is not None and isinstance(sysm, _FullDAE):
-            pres = sysm.pressure(rec.last_y)
+        pres = sysm.pressure(rec.last_y) if isinstance(sysm, _FullDAE) and rec.last_y is not None else None
         success = True  # the run's own outcome joins it (ModelRun.go)
         if not np.all(np.isfinite(out["h0"]) & (out["h0"] > 0)):
             success, message = False, (f"the gap closed (h0 <= 0 at t = {a['t'][np.argmax(~(out['h0'] > 0))]:.6g} "
