@@ -18,7 +18,7 @@ from pathlib import Path
 
 import numpy as np
 
-from transient import ThrustPad
+from transient import Integration, ThrustPad
 from transient.params import lee_rhim as P
 from transient.plots import pad as plots, save
 from transient.study import pad as study
@@ -40,15 +40,17 @@ def main(argv=None):
     pads = {g: ThrustPad(P.PAD["length"], P.PAD["width"], P.PAD["viscosity"], surface=study.surface(g, n), grid=(40, 40))
             for g in P.GAMMAS}
     times = study.descent_times(t_end, 301 if a.quick else 601)
-    runs = {g: pad.descent(load=P.LOAD, h0_start=5 * rq, t_end=t_end, t_eval=times, rtol=1e-8, atol=1e-10)
+    runs = {g: pad.descent(load=P.LOAD, h0_start=5 * rq, t_end=t_end, t_eval=times,
+                           integration=Integration(method="cvode", rtol=1e-8, atol=1e-10))
             for g, pad in pads.items()}
     c = pads[1.0].contact
     rec.put("contact", dict(e_prime=c.e_prime, hardness=c.hardness, Rp=c.asperity_radius, N=c.asperity_density,
                             psi=c.plasticity_index, sigma=c.sigma))
     rec.put("surfaces", {f"{g:.4g}": dict(rq=p.sigma, gamma_measured=p.gamma, skewness=p.surface.skewness,
                                           kurtosis=p.surface.kurtosis) for g, p in pads.items()})
-    full = pads[1.0].descent(load=P.LOAD, h0_start=5 * rq, t_end=t_end, method="ida", path="full", n_out=61,
-                             rtol=1e-7, atol=1e-9)  # cross-check: the 2-D DAE against the separable path
+    # cross-check: the 2-D DAE against the separable path
+    full = pads[1.0].descent(load=P.LOAD, h0_start=5 * rq, t_end=t_end, path="full", n_out=61,
+                             integration=Integration(method="ida", rtol=1e-7, atol=1e-9))
     rel = float(np.max(np.abs(full.h0 / np.interp(full.t, runs[1.0].t, runs[1.0].h0) - 1)))
     rec.put("full_vs_separable", dict(max_rel_h0=rel, full_wall_s=full.stats.wall_time,
                                       separable_wall_s=runs[1.0].stats.wall_time))

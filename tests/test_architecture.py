@@ -288,3 +288,21 @@ def test_the_test_tree_mirrors_the_package():
     loose = {p.stem for p in TESTS.glob("test_*.py") if not p.stem.startswith("test_docs_")}  # the docs site's
     assert loose <= {"test_architecture", "test_api_edges", "test_cli", "test_figures", "test_fuzz_inputs",
                      "test_reliability", "test_result_bases", "test_results"}, loose
+
+
+#: the entry points of the time domain, by name: every model's run is one of these
+RUN_LIKE = {"run", "sequence", "descent", "transient"}
+
+
+def test_every_run_like_method_is_counted_and_within_the_limit():
+    """The time-domain entry points (``run``, ``sequence``, ``descent``, ``transient``) of every model are public
+    methods the parameter rule reads -- the journal orbit, the rotor system, the pad, the ball bearing, the point,
+    line and roller contacts -- and each takes at most 12 parameters, ``**legacy`` counted."""
+    found = {}
+    for path in sorted((PKG / "models").rglob("*.py")):
+        for f, cls in _public_functions(ast.parse(path.read_text())):
+            if cls is not None and f.name in RUN_LIKE:
+                found[f"{cls}.{f.name}"] = _parameter_count(f) - 1  # self
+    assert {"JournalOrbit.run", "RotorBearingSystem.run", "ThrustPad.descent", "ThrustBallBearing.sequence",
+            "PointContact.transient", "LineContact.transient", "RollerContact.transient"} <= set(found), found
+    assert {name: n for name, n in found.items() if n > MAX_PARAMETERS} == {}

@@ -16,6 +16,7 @@ import time
 import numpy as np
 
 from transient.models.pad.pad import ThrustPad
+from transient.solvers.settings import Integration
 
 SIG = 2e-6
 L = 0.02
@@ -35,15 +36,15 @@ def run(quick: bool = False) -> str:
     """Run the benchmark and return its markdown section."""
     pad, W = _case()
     kw = dict(load=W, h0_start=5 * SIG, t_end=0.5, n_out=51)
-    ref = pad.descent(method="cvode", rtol=1e-11, atol=1e-13, **kw)
+    ref = pad.descent(integration=Integration(method="cvode", rtol=1e-11, atol=1e-13), **kw)
     rows = []
     tols = (1e-4, 1e-6) if quick else (1e-4, 1e-6, 1e-8)
     for method in ("cvode", "ida", "bdf", "lsoda"):
         for rt in tols:
-            r = pad.descent(method=method, rtol=rt, atol=rt * 1e-2, **kw)
+            r = pad.descent(integration=Integration(method=method, rtol=rt, atol=rt * 1e-2), **kw)
             rows.append((method, f"rtol {rt:g}", r.stats.wall_time, r.stats.n_steps, r.stats.n_rhs, _err(r, ref, SIG)))
     for dt in ((4e-3, 1e-3) if quick else (8e-3, 4e-3, 2e-3, 1e-3)):
-        r = pad.descent(method="rk4", dt=dt, **kw)
+        r = pad.descent(integration=Integration(method="rk4", dt=dt), **kw)
         rows.append(("rk4", f"dt {dt * 1e3:g} ms", r.stats.wall_time, r.stats.n_steps, r.stats.n_rhs, _err(r, ref, SIG)))
     base = {rt: w for (m, t, w, *_), rt in zip(rows, list(tols) * 4) if m == "cvode"}
     lines = [
@@ -70,11 +71,11 @@ def run(quick: bool = False) -> str:
               "|---|---|---|---|---|---|---|"]
     for grid in (((20, 20),) if quick else ((20, 20), (40, 40))):
         pad, W = _case(grid)
-        k2 = dict(kw, rtol=1e-7, atol=1e-9)
-        sep = pad.descent(method="cvode", path="separable", **k2)
+        k2, tight = dict(kw), dict(rtol=1e-7, atol=1e-9)
+        sep = pad.descent(integration=Integration(method="cvode", **tight), path="separable", **k2)
         for lab, r in (("separable / cvode", sep),
-                       ("full DAE / ida (analytic sparse Jacobian)", pad.descent(method="ida", path="full", **k2)),
-                       ("full, p eliminated / cvode", pad.descent(method="cvode", path="full", **k2))):
+                       ("full DAE / ida (analytic sparse Jacobian)", pad.descent(integration=Integration(method="ida", **tight), path="full", **k2)),
+                       ("full, p eliminated / cvode", pad.descent(integration=Integration(method="cvode", **tight), path="full", **k2))):
             lines.append(f"| {grid[0]}x{grid[1]} | {lab} | {r.stats.wall_time:.3f} | {r.stats.n_steps} | "
                          f"{r.stats.n_jac} | {_err(r, sep, SIG):.2e} | {r.stats.wall_time / sep.stats.wall_time:.1f} |")
     lines += ["", "The full/separable difference is the finite-volume discretisation error of the squeeze "

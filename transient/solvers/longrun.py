@@ -1,8 +1,8 @@
 """The long-run driver under every model's run (:mod:`~transient.solvers.model_run`): chunks, checkpoints, Ctrl-C.
 
 :func:`run_long` integrates a model's :class:`~transient.solvers.integrate.Problem` from ``t0`` over
-``n_outputs`` output intervals of length ``dt_out`` (model time), in chunks of ``chunk_outputs``
-intervals. After every chunk it
+``n_outputs`` output intervals of length ``dt_out`` (model time; or at chosen output times: ``dt_out`` the
+array of them), in chunks of ``chunk_outputs`` intervals. After every chunk it
 
 * updates a progress bar (tqdm: done / total in the model's display unit, e.g. revolutions, time left),
 * rewrites the checkpoint (if asked): the state, its time, the recorder's arrays and the statistics, in
@@ -16,7 +16,7 @@ intervals. After every chunk it
   from the headers before anything is decompressed, under a size cap), a SHA-256 digest of every array
   (streamed, no copies), a finite state, finite recorded series, the output count and the state's time, and
   the recorder's own consistency (``restore`` raises ``ValueError`` on inconsistent
-  arrays; an optional ``times()`` must give the output times ``t0 + k dt_out``). An advisory lock
+  arrays; an optional ``times()`` must give the output times ``t0 + k dt_out`` or the chosen ones). An advisory lock
   (``PATH.lock``, removed when the run ends) keeps two runs off one checkpoint. An OS fault while writing
   (full disk, read-only folder) raises :class:`CheckpointWriteError` naming the file and where the last
   complete checkpoint is;
@@ -126,7 +126,7 @@ RUN_LONG_KEYWORDS = ({name: ("solver", dict, name) for name in ("method", "rtol"
                      | keyword_table("display", Display))
 
 
-def run_long(problem_at: Callable, y0, t0: float, dt_out: float, n_outputs: int, recorder, *, solver: dict | None = None,
+def run_long(problem_at: Callable, y0, t0: float, dt_out, n_outputs: int, recorder, *, solver: dict | None = None,
              long_run: LongRun | None = None, chunk_outputs: int | None = None, key: dict | None = None,
              display: Display | None = None, **legacy) -> Outcome:
     """Integrate ``n_outputs`` output intervals (module docstring).
@@ -138,8 +138,10 @@ def run_long(problem_at: Callable, y0, t0: float, dt_out: float, n_outputs: int,
     time] for the whole run (all chunks: past it the run ends with ``success=False`` and the outputs so far); its
     ``chunk_revolutions`` is the model's, which hands ``chunk_outputs`` (output intervals per chunk; default:
     the whole run). ``key``: every parameter and setting that changes the result (keys the checkpoint).
-    ``display`` (:class:`Display`): the label, display unit and status of the bar and messages. The loose
-    keywords of earlier releases (``method=``, ``checkpoint=``, ``label=``, ...) are deprecated."""
+    ``dt_out``: the output interval, or the array of the ``n_outputs + 1`` output times from ``t0``
+    (:func:`output_times`). ``display`` (:class:`Display`): the label, display unit and status of the bar and
+    messages. The loose keywords of earlier releases (``method=``, ``checkpoint=``, ``label=``, ...) are
+    deprecated."""
     given = run_settings("run_long", legacy, RUN_LONG_KEYWORDS, solver=solver, long_run=long_run,
                          display=display, steps=None)
     solver, long_run, display = given["solver"], given["long_run"], given["display"]
@@ -160,6 +162,7 @@ def run_long(problem_at: Callable, y0, t0: float, dt_out: float, n_outputs: int,
     if -(-n_outputs // chunk_outputs) > MAX_CHUNKS:
         raise ValueError(f"{n_outputs} outputs in chunks of {chunk_outputs} make more than {MAX_CHUNKS} chunks; "
                          "use longer chunks")
+    times = output_times(t0, dt_out, n_outputs)
     uname, ulen = display.unit
     ckpt = _Checkpoint(checkpoint, key or {}, label) if checkpoint else None
     y = np.array(y0, dtype=float)
@@ -169,19 +172,19 @@ def run_long(problem_at: Callable, y0, t0: float, dt_out: float, n_outputs: int,
         ckpt.acquire()
     try:
         if ckpt is not None and resume and ckpt.path.exists():
-            y, k, saved_stats = ckpt.load(recorder, n_outputs, y, t0, dt_out)
+            y, k, saved_stats = ckpt.load(recorder, n_outputs, y, times)
             stats = saved_stats
         resumed_from = k
         n_chunks = -(-(n_outputs - k) // chunk_outputs)
         progress = (n_chunks > 1) if progress is None else bool(progress)
-        bar = progress_bar(progress, n_outputs * dt_out / ulen, uname, label, k * dt_out / ulen, FRACTIONAL)
+        bar = progress_bar(progress, (times[-1] - t0) / ulen, uname, label, (times[k] - t0) / ulen, FRACTIONAL)
         wall0 = time.perf_counter()
         deadline = math.inf if time_budget is None else wall0 + float(time_budget)
-        out = Outcome(y=y, t=t0 + k * dt_out, stats=stats, outputs_done=k, resumed_from=resumed_from)
+        out = Outcome(y=y, t=times[k], stats=stats, outputs_done=k, resumed_from=resumed_from)
         try:
             while k < n_outputs:
                 k_end = min(n_outputs, k + chunk_outputs)
-                tau = t0 + dt_out * np.arange(k, k_end + 1)
+                tau = times[k:k_end + 1]
                 remaining = None if time_budget is None else max(deadline - time.perf_counter(), 1e-9)
                 res = solve(problem_at(y, tau[0]), tau, **solver, store=False, observer=_Last(recorder, out),
                             time_budget=remaining)
@@ -202,9 +205,9 @@ def run_long(problem_at: Callable, y0, t0: float, dt_out: float, n_outputs: int,
                 k = k_end
                 out.t = tau[-1]
                 if ckpt is not None:
-                    ckpt.save(y, k, out.t, recorder, stats, dt_out, display.unit)
+                    ckpt.save(y, k, out.t, recorder, stats, times, display.unit)
                 if bar is not None:
-                    bar.update(chunk_outputs * dt_out / ulen if k < n_outputs else bar.total - bar.n)
+                    bar.update((tau[-1] - tau[0]) / ulen if k < n_outputs else bar.total - bar.n)
                     if status is not None:
                         bar.set_postfix_str(status(), refresh=False)
                 if stop is not None:
@@ -215,7 +218,7 @@ def run_long(problem_at: Callable, y0, t0: float, dt_out: float, n_outputs: int,
         except KeyboardInterrupt:
             where = f"at {out.t / ulen:.6g} {uname}"
             if ckpt is not None and ckpt.saved_outputs is not None:
-                held = f"{label} interrupted {where}; checkpoint {ckpt.path} holds {ckpt.saved_outputs * dt_out / ulen:.6g} {uname}"
+                held = f"{label} interrupted {where}; checkpoint {ckpt.path} holds {(times[ckpt.saved_outputs] - t0) / ulen:.6g} {uname}"
                 raise Interrupted(f"{held}: run again with resume=True (same parameters) to continue",
                                   f"{held}: run the same command again to continue (--fresh starts over)") from None
             raise Interrupted(f"{label} interrupted {where}; no checkpoint was written (pass checkpoint=PATH "
@@ -230,6 +233,19 @@ def run_long(problem_at: Callable, y0, t0: float, dt_out: float, n_outputs: int,
     finally:
         if ckpt is not None:
             ckpt.release()
+
+
+def output_times(t0: float, dt_out, n_outputs: int) -> np.ndarray:
+    """The ``n_outputs + 1`` output times of a run from ``t0``: every ``dt_out`` (a number > 0), or ``dt_out``
+    itself when it is the array of them (increasing, finite, the first ``t0``); a one-line ``ValueError`` otherwise."""
+    if np.ndim(dt_out) == 0:
+        return t0 + check_positive("dt_out", dt_out, "-") * np.arange(n_outputs + 1)
+    times = np.asarray(dt_out, dtype=float)
+    if times.shape != (n_outputs + 1,) or not np.all(np.isfinite(times)) or np.any(np.diff(times) <= 0) \
+            or times[0] != t0:
+        raise ValueError(f"dt_out: {times.size} output times; allowed: {n_outputs + 1} finite increasing times from "
+                         f"t0 = {t0!r}")
+    return times
 
 
 class _Last:
@@ -319,7 +335,7 @@ class _Checkpoint:
             os.close(self.lock_fd)
             self.lock_fd = None
 
-    def save(self, y, k, t, recorder, stats: Stats, dt_out, unit):
+    def save(self, y, k, t, recorder, stats: Stats, times, unit):
         arrays = {f"rec.{name}": np.asarray(v) for name, v in recorder.arrays().items()}
         arrays["state"] = np.asarray(y, dtype=float)
         meta = dict(format=CHECKPOINT_FORMAT, code_version=code_version(), key=self.key, outputs_done=int(k),
@@ -333,7 +349,7 @@ class _Checkpoint:
         except OSError as e:
             uname, ulen = unit
             if self.saved_outputs is not None:
-                kept = (f"the last complete checkpoint {self.path} holds {self.saved_outputs * dt_out / ulen:.6g} "
+                kept = (f"the last complete checkpoint {self.path} holds {(times[self.saved_outputs] - times[0]) / ulen:.6g} "
                         f"{uname}; once fixed, resume from it")
             elif self.path.exists():
                 kept = f"the previous checkpoint {self.path} is unchanged"
@@ -342,7 +358,7 @@ class _Checkpoint:
             raise CheckpointWriteError(e.errno, f"{e.strerror}; {kept}") from None
         self.saved_outputs = int(k)
 
-    def load(self, recorder, n_outputs, y0, t0, dt_out):
+    def load(self, recorder, n_outputs, y0, times):
         try:
             z = NpzReader(self.path)
         except NotARegularFile as e:
@@ -352,9 +368,9 @@ class _Checkpoint:
             raise CheckpointError(f"checkpoint {self.path} cannot be read ({type(e).__name__}: {e}); "
                                   f"{self.FRESH}") from None
         with z:
-            return self._load(z, recorder, n_outputs, y0, t0, dt_out)
+            return self._load(z, recorder, n_outputs, y0, times)
 
-    def _load(self, z, recorder, n_outputs, y0, t0, dt_out):
+    def _load(self, z, recorder, n_outputs, y0, times):
         fresh = self.FRESH
 
         def refuse(why):
@@ -389,7 +405,7 @@ class _Checkpoint:
         if k > n_outputs:
             raise CheckpointError(f"checkpoint {self.path} already holds {k} output intervals, more than the "
                                   f"{n_outputs} asked for; ask for at least as many or {fresh}")
-        t_expected = t0 + k * dt_out
+        t_expected = times[k]
         t = meta.get("time")
         if not isinstance(t, (int, float)) or not abs(t - t_expected) <= 1e-9 * max(1.0, abs(t_expected)):
             raise refuse(f"holds the state at time {_show(t)}, but {k} outputs end at {t_expected:.17g}")
@@ -425,11 +441,12 @@ class _Checkpoint:
             raise refuse(f"holds a non-finite state (index {int(np.argmin(np.isfinite(y)))})")
         try:
             recorder.restore({name[4:]: v for name, v in data.items() if name.startswith("rec.")})
-            times = getattr(recorder, "times", None)
-            if times is not None:
-                held = np.asarray(times(), dtype=float)
-                want = t0 + dt_out * np.arange(k + 1)
-                if held.shape != want.shape or not np.allclose(held, want, rtol=1e-12, atol=1e-9 * dt_out):
+            recorded = getattr(recorder, "times", None)
+            if recorded is not None:
+                held = np.asarray(recorded(), dtype=float)
+                want = times[:k + 1]
+                gap = float(np.min(np.diff(times)))
+                if held.shape != want.shape or not np.allclose(held, want, rtol=1e-12, atol=1e-9 * gap):
                     raise ValueError(f"its recorded outputs ({held.size}) are not the {k + 1} output times of "
                                      f"{k} intervals")
         except (ValueError, KeyError, IndexError, TypeError) as e:

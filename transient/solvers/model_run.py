@@ -2,10 +2,11 @@
 
 A model's ``run`` keeps what is its own -- its state layout (the run's, e.g. the film content, and the results',
 the universal variable), its outputs (what it samples at an output time), its problem and its result -- and hands
-the rest to :class:`ModelRun`, the same for the journal orbit and the rotor system:
+the rest to :class:`ModelRun`, the same for the journal orbit, the rotor system and the thrust pad's descent:
 
 * before anything is built (:class:`ModelRun`): the run against one output interval, the touch gap, the chunk
-  (default the whole run, 10 revolutions with a checkpoint); :func:`check_run_memory`: the memory the run will need,
+  (default the whole run, 10 revolutions with a checkpoint; a model without a shaft, :meth:`ModelRun.at_times`:
+  a tenth of its outputs with a checkpoint); :func:`check_run_memory`: the memory the run will need,
   refused naming the grid when the model and its solver alone do not fit, else the run's length and recordings;
 * the start (:func:`start_point`): a previous result of the model (its final state and time, so a forcing keeps
   its phase) or ``(t [s], state)``; :meth:`ModelRun.check_state`: its size, finite, every journal inside its
@@ -33,6 +34,8 @@ from transient.solvers.settings import LongRun
 
 #: chunk length [rev] of a checkpointed run that does not choose one
 CHECKPOINT_CHUNK_REVOLUTIONS = 10.0
+#: chunks of a checkpointed run of a model without a shaft (:meth:`ModelRun.at_times`)
+CHECKPOINT_CHUNKS = 10
 
 
 def check_run_memory(what: str, parts: dict, grid_advice: str, run_advice: str) -> None:
@@ -151,7 +154,9 @@ class RunParts:
     [(where, e/C at the outputs, limit)]`` the same over a result; ``touch_message(tau, y)`` the message of the
     terminal event (``y`` in the run's layout); ``result(recorder, stats, touched_at, message, tau_end)`` the
     model's result (its ``final_state`` is ``recorder.last_y``); ``to_run``/``universal``: the maps between the
-    results' layout and the run's (``None``: the same)."""
+    results' layout and the run's (``None``: the same). ``unit`` names ``revolution`` in the bar and messages (a
+    model without a shaft: ``unit="s"``, ``revolution=1``); ``status()`` the bar's short status (``None``: each
+    journal's e/C)."""
 
     label: str
     omega: float
@@ -168,6 +173,8 @@ class RunParts:
     to_run: Callable | None = None
     universal: Callable | None = None
     key: dict = field(default_factory=dict)
+    unit: str = "rev"
+    status: Callable | None = None
 
 
 class ModelRun:
@@ -190,6 +197,17 @@ class ModelRun:
         self.n_outputs = max(1, int(round(revolutions * opr)))
         self.chunk_outputs = max(1, int(round(self.chunk_revolutions * opr)))
 
+    @classmethod
+    def at_times(cls, n_outputs: int, long_run: LongRun) -> "ModelRun":
+        """A run over ``n_outputs`` output intervals of a model without a shaft (no revolutions, no journal to
+        touch): the whole run in one chunk, or ``CHECKPOINT_CHUNKS`` chunks with a checkpoint (the model refuses
+        ``long_run.chunk_revolutions``)."""
+        run = cls.__new__(cls)
+        run.touch_gap, run.chunk_revolutions, run.long_run = 0.0, None, long_run
+        run.n_outputs = int(n_outputs)
+        run.chunk_outputs = -(-run.n_outputs // CHECKPOINT_CHUNKS) if long_run.checkpoint else run.n_outputs
+        return run
+
     @staticmethod
     def check_state(y, n: int, what: str, journals: Callable) -> np.ndarray:
         """``y`` if it is a finite state of ``n`` numbers (``what`` has them) with every journal of ``journals(y)``
@@ -204,9 +222,10 @@ class ModelRun:
                                  f"allowed: [0, {limit:.4g})")
         return y
 
-    def go(self, parts: RunParts, y, tau0: float, dt_out: float):
-        """Run from ``y`` (results' layout) at ``tau0`` over the outputs every ``dt_out`` (in tau); the model's
-        result, ``success`` False after a terminal event, a failure or a journal through the wall."""
+    def go(self, parts: RunParts, y, tau0: float, dt_out):
+        """Run from ``y`` (results' layout) at ``tau0`` over the outputs every ``dt_out`` (in tau; or at the
+        output times ``dt_out``, an array from ``tau0``); the model's result, ``success`` False after a terminal
+        event, a failure or a journal through the wall."""
         rec = Recorder(parts.sample, parts.omega, parts.series, parts.sparse, parts.universal)
         rec.last_y = y
         lr = self.long_run
@@ -215,10 +234,10 @@ class ModelRun:
         key = dict(parts.key, touch_gap=self.touch_gap, chunk_revolutions=self.chunk_revolutions,
                    start_time=tau0 / parts.omega,
                    start_state=hashlib.sha256(np.ascontiguousarray(y).tobytes()).hexdigest()[:16])
-        status = lambda: "e/C = " + ", ".join(f"{e:.4f}" for _, e, _ in parts.journals(rec.last_y))  # noqa: E731
+        status = parts.status or (lambda: "e/C = " + ", ".join(f"{e:.4f}" for _, e, _ in parts.journals(rec.last_y)))
         out = run_long(parts.problem_at, y if parts.to_run is None else parts.to_run(y), tau0, dt_out,
                        self.n_outputs, rec, solver=parts.solver, long_run=lr, chunk_outputs=self.chunk_outputs,
-                       key=key, display=Display(parts.label, ("rev", parts.revolution), status))
+                       key=key, display=Display(parts.label, (parts.unit, parts.revolution), status))
         touched, message, success = None, out.message, out.success
         if out.event is not None:
             touched = out.event[0] / parts.omega
@@ -232,5 +251,5 @@ class ModelRun:
                 success, r.message = False, (f"the {where} {through} (touch_gap > 0 stops a run there)"
                                              + ("" if out.success else f"; then {out.message}"))
                 break
-        r.success = success
+        r.success = success and r.success  # a model's result may fail on its own (e.g. a pad whose gap closed)
         return r

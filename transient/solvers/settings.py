@@ -162,6 +162,15 @@ class LongRun:
             _set(self, "time_budget", check_positive("time_budget", self.time_budget, "s"))
 
 
+def requested_method(integration, legacy: dict, default: str = "ida"):
+    """The method a run's caller asks for -- ``integration.method``, else the deprecated ``method=`` keyword, else
+    the run's ``default`` -- before the settings object is built, so the model's door
+    (:func:`~transient.solvers.integrate.check_method`) names itself and the methods it takes."""
+    if integration is not None:
+        return getattr(integration, "method", default)
+    return legacy.get("method", default)
+
+
 def check_unused(owner: str, argument: str, obj, names) -> None:
     """Refuse, naming it, a field of the settings object ``obj`` among ``names`` that ``owner`` does not use and
     that differs from its default: ``check_unused("RotorBearingSystem.run", "recording", rc, ("record",))``."""

@@ -301,8 +301,8 @@ def _pad_memory(p, run):
 def _pad_point(p, run):
     pad = _pad_build(p)
     rq = pad.sigma
-    r = pad.descent(load=p["load"], h0_start=5 * rq, t_end=run["t_end"], n_out=run["outputs"], rtol=run["rtol"],
-                    atol=1e-2 * run["rtol"])
+    r = pad.descent(load=p["load"], h0_start=5 * rq, t_end=run["t_end"], n_out=run["outputs"],
+                    integration=Integration(method="cvode", rtol=run["rtol"], atol=1e-2 * run["rtol"]))
     return r, dict(success=r.success, h_end_over_rq=float(r.h0[-1] / rq), h_eq_over_rq=float(pad.equilibrium(p["load"]) / rq),
                    t_to_2rq_ms=float(np.interp(-2.0, -r.h0 / rq, r.t) * 1e3) if r.h0[-1] < 2 * rq else math.nan,
                    w_asp_end=float(r.w_asp[-1]), contact_area_end_mm2=float(r.contact_area[-1] * 1e6))

@@ -47,7 +47,7 @@ def test_parameters_carry_the_mode():
 
 
 def test_orbit_refuses_a_reynolds_bearing():
-    with pytest.raises(ValueError, match="does not support cavitation='reynolds'"):
+    with pytest.raises(ValueError, match="JournalOrbit: cavitation = 'reynolds'; allowed: 'elrod'"):
         JournalOrbit(reynolds_bearing(), MASS, 0.01 * CL, W, RPM)
 
 

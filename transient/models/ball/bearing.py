@@ -49,7 +49,7 @@ from transient.results import StatusResult, quantity, record_type, result_type
 from transient.solvers.integrate import check_method
 from transient.models.ball.settings import TrackSettings
 from transient.solvers.legacy import flat_settings
-from transient.solvers.settings import Integration, Recording, keyword_table, run_settings
+from transient.solvers.settings import Integration, Recording, keyword_table, requested_method, run_settings
 from transient.units import rpm_to_rad_s
 
 FLOODED, STARVED, PARCHED = "fully flooded", "starved", "parched"
@@ -311,6 +311,7 @@ class ThrustBallBearing:
         sequence before that pass: ``success=False``, ``final_regime`` parched, ``message`` naming the pass and
         the inlet film.
         """
+        check_method("ThrustBallBearing.sequence", requested_method(integration, legacy, "cvode"))
         tr, ig, rc = run_settings("ThrustBallBearing.sequence", legacy, SEQUENCE_KEYWORDS, SEQUENCE_DEFAULTS,
                                   track=track, integration=integration, recording=recording).values()
         check_method("ThrustBallBearing.sequence", ig.method)

@@ -41,6 +41,7 @@ from transient.models.journal.kernels import (N_ROTOR, content_jacobian, content
                                               content_rhs, dae_jacobian, dae_residual, ode_jacobian, ode_rhs)
 from transient.models.journal.results import OrbitResult
 from transient.models.journal.scales import Rotor
+from transient.models.journal.time_domain import check_time_domain
 from transient.models.journal.rk4 import FilmStageSolver
 from transient.models.journal.thermal_orbit import THERMAL_FIELDS, THERMAL_RECORDABLE, thermal_long_run, thermal_parts
 from transient.models.journal.content_newton import bdf2_newton, decoupled_pattern
@@ -48,11 +49,11 @@ from transient.models.journal.rough_orbit import (CONTACT_LAMBDA, orbit_tribolog
                                                   rough_content_rhs, rough_dae_jacobian, rough_dae_residual,
                                                   rough_ode_rhs)
 from transient.solvers.integrate.bdf2 import Bdf2Model
-from transient.solvers.integrate import Problem, Steps
+from transient.solvers.integrate import Problem, Steps, check_method
 from transient.solvers.model_run import (ModelRun, RunParts, check_run_memory, start_point, state_array,
                                          wall_crossing)
 from transient.solvers.settings import (FORMULATIONS, Integration, LongRun, Recording, keyword_table,
-                                       run_settings)
+                                       requested_method, run_settings)
 from transient.units import rpm_to_hz
 
 #: The content formulation's film state is O(1) in the full film, where the pressure is only its 1/beta_bar
@@ -113,15 +114,7 @@ class JournalOrbit:
     def __init__(self, bearing: JournalBearing, rotor_mass, unbalance, load, speed_rpm, speed_profile=None):
         if not isinstance(bearing, JournalBearing):
             raise TypeError(f"bearing must be a JournalBearing, got {type(bearing).__name__}")
-        if getattr(bearing, "cavitation", "elrod") != "elrod":
-            raise ValueError(f"JournalOrbit does not support cavitation={bearing.cavitation!r} yet: the time-domain "
-                             "orbit integrates the mass-conserving Elrod film; build the bearing with "
-                             "cavitation=\"elrod\" (the Reynolds-condition film serves steady_state, equilibrium, "
-                             "coefficients and stability_threshold)")
-        if getattr(bearing, "misalignment", (0.0, 0.0)) != (0.0, 0.0):
-            raise ValueError(f"JournalOrbit does not support misalignment = {bearing.misalignment} [rad] yet: the "
-                             "orbit's touch detection and minimum film are the aligned journal's; allowed: (0, 0) "
-                             "(a misaligned bearing serves steady_state, equilibrium and coefficients)")
+        check_time_domain("JournalOrbit", bearing)
         self.bearing = bearing
         self.rotor_mass = check_positive("rotor_mass", rotor_mass, "kg")
         self.unbalance = check_range("unbalance", unbalance, "m", 0.0, bearing.clearance, high_open=True,
@@ -462,6 +455,7 @@ class JournalOrbit:
         walls above the supply temperature), ``"shaft_speed"`` [rpm] and the field ``"temperature"`` [K]; the
         result's ``final_temperature`` continues with ``start=result``.
         """
+        check_method("JournalOrbit.run", requested_method(integration, legacy), step_solve=True)
         revolutions = check_positive("revolutions", revolutions, "rev")
         thermal = self.bearing.thermal is not None
         if not thermal and (speed is not None or temperature is not None):

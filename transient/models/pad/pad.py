@@ -59,7 +59,9 @@ Units: SI at the API (m, Pa, Pa s, N, kg, s). Internally the states are scaled t
 
 from __future__ import annotations
 
+import hashlib
 import math
+from dataclasses import fields
 
 import numpy as np
 import scipy.sparse.linalg as spla
@@ -72,13 +74,20 @@ from transient.fv.grid import Axis, Grid2D
 from transient.fv.reynolds import ReynoldsOperator, residual_kernel
 from transient.surfaces.roughness import RoughSurface
 from transient.results import RunResult, quantity, result_type
-from transient.solvers.integrate import Problem, check_method, solve
-from transient.checks import check_int, check_memory, check_positive, check_range
-from transient.solvers.integrate import Steps
+from transient.solvers.integrate import Problem, Steps, check_method
+from transient.checks import check_instance, check_int, check_positive, check_range
+from transient.solvers.model_run import ModelRun, RunParts, check_run_memory, start_point
+from transient.solvers.settings import (RK4_INNER_TOLERANCE, Integration, LongRun, check_unused, keyword_table,
+                                       requested_method, run_settings)
 
 __all__ = ["ThrustPad", "DescentResult", "pressure_flow_clamped", "rect_shape_factor"]
 
 PATHS = ("auto", "full", "separable")
+DESCENT_OWNER = "ThrustPad.descent"
+#: The loose keywords of :meth:`ThrustPad.descent` of earlier releases and the settings field each now is.
+DESCENT_KEYWORDS = keyword_table("integration", Integration, ("method", "rtol", "atol", "dt", "linear_solver"))
+#: The descent's own integration default: CVODE (the separable path is a scalar ODE).
+DESCENT_DEFAULTS = {"integration": dict(method="cvode")}
 _SQRT2PI = math.sqrt(2.0 * math.pi)
 
 
@@ -141,7 +150,8 @@ class DescentResult(RunResult):
     ``t`` [s], ``h0`` [m] (mean-plane separation), ``dh0_dt`` [m/s], ``w_hyd`` [N] (film load),
     ``w_asp`` [N] (asperity load), ``contact_area`` [m^2] (real contact area A_re), ``load`` [N],
     ``path`` ("full" | "separable"), ``method``, ``stats`` (:class:`transient.solvers.integrate.Stats`),
-    ``success``, ``message``; ``pressure`` [Pa] (ny, nx) at the last output (full IDA path only).
+    ``success``, ``message``; ``pressure`` [Pa] (ny, nx) at the last output (full IDA path only);
+    ``final_state`` ``(h0 [m], dh0/dt [m/s])`` and ``final_time`` [s], from which ``descent(start=result)`` goes on.
     """
 
     shapes = {"h0": ("t",), "dh0_dt": ("t",), "w_hyd": ("t",), "w_asp": ("t",), "contact_area": ("t",)}
@@ -368,23 +378,50 @@ class ThrustPad:
         return float(brentq(f, lo, hi, xtol=1e-15 * s, rtol=1e-13, maxiter=200))
 
     # ---- transient --------------------------------------------------------------------------------
-    def descent(self, load, h0_start, t_end, mass=0.0, method: str = "cvode", rtol=1e-6, atol=1e-9,
-                path: str = "auto", n_out: int = 201, t_eval=None, dt=None, **solve_options) -> DescentResult:
-        """Squeeze descent under a constant load W = ``load`` [N] from rest at h0 = ``h0_start`` [m].
+    def parameters(self) -> dict:
+        """Every parameter of the pad that changes a descent (SI; the height density and the contact as digests of
+        their numbers), e.g. to key a checkpoint."""
+        c = self.contact
+        return dict(length=self.length, width=self.width, viscosity=self.viscosity, grid=list(self.grid_shape),
+                    sigma=self.sigma, gamma=self.gamma, density=_digest(self.density),
+                    contact=None if c is None else dict(
+                        {f.name: getattr(c, f.name) for f in fields(c) if f.name != "density"},
+                        density=_digest(c.density)))
 
-        ``mass`` [kg] (0: massless force balance, eq. 14 with F_tot = 0); ``method`` one of ida, cvode,
-        bdf, lsoda, radau, rk4 (``dt`` [s] required for rk4); ``path`` "auto" (= separable), "full"
-        (2-D film: a DAE with the analytic sparse Jacobian for ida, the pressure eliminated by a 2-D
-        solve per right-hand side for ODE methods) or "separable" (scalar ODE); outputs at
-        ``t_eval`` [s] or ``n_out`` equally spaced times on [0, t_end]. ``rtol``, ``atol`` apply to the
-        scaled states (h0/h0_start, v/v_ref, p/p_ref; all O(1)).
+    def descent(self, load, h0_start=None, t_end=None, mass=0.0, *, path: str = "auto", n_out: int = 201,
+                t_eval=None, start=None, integration: Integration | None = None, long_run: LongRun | None = None,
+                **legacy) -> DescentResult:
+        """Squeeze descent under a constant load W = ``load`` [N] from rest at h0 = ``h0_start`` [m], or from
+        ``start`` (a previous :class:`DescentResult`, or ``(time [s], (h0 [m], dh0/dt [m/s]))``: the descent goes
+        on from its final gap, speed and time, e.g. under another load), over ``t_end`` [s] from the start.
+
+        ``mass`` [kg] (0: massless force balance, eq. 14 with F_tot = 0; the start's speed is then the balance's);
+        ``path`` "auto" (= separable), "full" (2-D film: a DAE with the analytic sparse Jacobian for ida, the
+        pressure eliminated by a 2-D solve per right-hand side for ODE methods) or "separable" (scalar ODE);
+        outputs at ``t_eval`` [s] (increasing, from 0 to t_end, counted from the start) or ``n_out`` equally spaced
+        times.
+
+        The settings that are not physics come as objects: ``integration``
+        (:class:`~transient.solvers.settings.Integration`; default ``Integration(method="cvode")``): ``method``
+        one of the methods that need no step solve of the model's own (ida, cvode, bdf, radau, lsoda, rk4), ``rtol``
+        and ``atol`` on the scaled states (h0/h0_start, v/v_ref, p/p_ref; all O(1)), ``dt`` [s] the fixed step of
+        rk4 (required there), ``linear_solver``; ``long_run`` (:class:`~transient.solvers.settings.LongRun`):
+        ``checkpoint`` (an ``.npz`` rewritten after each tenth of the outputs; ``resume=True`` continues from it bit
+        for bit), ``progress``, ``stop(result_so_far)``, ``time_budget`` [s]. Ctrl-C says where the checkpoint is.
+        The loose keywords of earlier releases (``method=``, ``rtol=``, ``atol=``, ``dt=``) are deprecated: they
+        still work for one release, with a ``DeprecationWarning`` naming the new spelling.
         """
+        check_method(DESCENT_OWNER, requested_method(integration, legacy, "cvode"))
+        ig = run_settings(DESCENT_OWNER, legacy, DESCENT_KEYWORDS, DESCENT_DEFAULTS, integration=integration)[
+            "integration"]
+        lr = LongRun() if long_run is None else check_instance("long_run", long_run, LongRun, "None or LongRun(...)")
+        check_method(DESCENT_OWNER, ig.method)
+        check_unused(DESCENT_OWNER, "integration", ig, ("formulation", "steps_per_revolution"))
+        check_unused(DESCENT_OWNER, "long_run", lr, ("chunk_revolutions",))
         W = check_range("load", load, "N", 0.0, 1e9, low_open=True)
-        h_s = check_range("h0_start", h0_start, "m", 1e-9, 1e-2, why="(1 nm to 10 mm)")
         t_end = check_range("t_end", t_end, "s", 0.0, 1e6, low_open=True)
         M = check_range("mass", mass, "kg", 0.0, 1e6)
-        check_range("rtol", rtol, "-", 1e-14, 0.1)
-        check_method("ThrustPad.descent", method)
+        check_range("rtol", ig.rtol, "-", 1e-14, 0.1)
         if path not in PATHS:
             raise ValueError(f"path must be one of {PATHS}, got {path!r}")
         if t_eval is None:
@@ -392,32 +429,74 @@ class ThrustPad:
             t_eval = np.linspace(0.0, t_end, n_out)
         else:
             t_eval = np.asarray(t_eval, dtype=float)
-            if t_eval[0] != 0.0 or abs(t_eval[-1] - t_end) > 1e-12 * t_end:
-                raise ValueError("t_eval must run from 0 to t_end [s]")
-        if method == "rk4" and dt is None:
-            raise ValueError("method 'rk4' needs dt [s] (fixed step)")
+            if t_eval.ndim != 1 or t_eval.size < 2 or t_eval[0] != 0.0 or abs(t_eval[-1] - t_end) > 1e-12 * t_end \
+                    or np.any(np.diff(t_eval) <= 0):
+                raise ValueError("t_eval must run from 0 to t_end [s], increasing")
+        if ig.method == "rk4" and ig.dt is None:
+            raise ValueError("method 'rk4' needs dt [s] (fixed step): integration=Integration(method='rk4', dt=...)")
+        if ig.method == "rk4" and ig.inner_tolerance != RK4_INNER_TOLERANCE:
+            raise ValueError(f"inner_tolerance = {ig.inner_tolerance!r} [-] is not used by {DESCENT_OWNER} (no inner "
+                             "solve per stage); allowed: leave it out")
         path = "separable" if path == "auto" else path
         check_descent_memory(self.grid_shape[0] * self.grid_shape[1], t_eval.size, path)
-        # scales: v_ref = the massless initial rate (or h_s / t_end if the pad starts balanced)
+        t0, h_s, v_s = self._descent_start(start, h0_start)
+        # scales: v_ref = the massless rate at the start (or h_s / t_end if the pad starts balanced)
         v0 = (float(self.asperity_load(h_s)) - W) / self._K_series(h_s)
         v_ref = max(abs(v0), h_s / t_end)
         sc = dict(W=W, M=M, h=h_s, v=v_ref, p=W / self.area)
-        if path == "full" and method == "ida":
+        if path == "full" and ig.method == "ida":
             sysm = _FullDAE(self, sc)
-        elif path == "full":
-            sysm = _ReducedODE(self, sc, grid=True)
         else:
-            sysm = _ReducedODE(self, sc, grid=False)
-        prob = sysm.problem()
-        res = solve(prob, t_eval, method=method, rtol=rtol, atol=atol, steps=Steps(dt=dt), **solve_options)
-        out = sysm.outputs(res)
-        pres = out.pop("pressure", None)
-        success, message = res.success, res.message
-        if success and not np.all(np.isfinite(out["h0"]) & (out["h0"] > 0)):
-            success, message = False, (f"the gap closed (h0 <= 0 at t = {res.t[np.argmax(~(out['h0'] > 0))]:.6g} s): "
-                                       "the load is not carried by this pad's film and contact")
-        return DescentResult(t=res.t, load=W, mass=M, path=path, method=method, stats=res.stats,
-                             success=success, message=message, pressure=pres, **out)
+            sysm = _ReducedODE(self, sc, grid=path == "full")
+        run = ModelRun.at_times(t_eval.size - 1, lr)
+        key = dict(self.parameters(), load=W, mass=M, path=path, **ig.key(), dt=ig.dt, start_speed=v_s,
+                   h0_start=h_s, outputs=_digest(t_eval))
+        solver = dict(method=ig.method, rtol=ig.rtol, atol=ig.atol, linear_solver=ig.linear_solver,
+                      steps=Steps(dt=ig.dt))
+        parts = RunParts(label=f"pad descent {W:g} N", omega=1.0, revolution=1.0, unit="s",
+                         problem_at=sysm.problem_at, solver=solver, series=sysm.series, sample=sysm.sample,
+                         journals=lambda y: [], eccentricities=lambda r: [], touch_message=None,
+                         result=lambda rec, stats, touched, message, t: self._descent_result(
+                             sysm, rec, stats, message, ig.method, path),
+                         key=key, status=lambda: "")
+        return run.go(parts, sysm.state(h_s, v_s), t0, t0 + t_eval)
+
+    def _descent_start(self, start, h0_start) -> tuple:
+        """``(t0 [s], h0 [m], dh0/dt [m/s])`` of a descent: from rest at ``h0_start`` or from ``start``."""
+        if start is None:
+            return 0.0, check_range("h0_start", h0_start, "m", 1e-9, 1e-2, why="(1 nm to 10 mm)"), 0.0
+        if h0_start is not None:
+            raise ValueError(f"h0_start = {h0_start!r} [m] and start both given; allowed: one of them")
+        t0, y = start_point(start, DescentResult)
+        if y.shape != (2,):
+            raise ValueError(f"start: a state of shape {y.shape}; a descent's state is (h0 [m], dh0/dt [m/s])")
+        h = check_range("start h0", y[0], "m", 1e-9, 1e-2, why="(1 nm to 10 mm)")
+        return t0, h, check_range("start dh0/dt", y[1], "m/s", -1e3, 1e3)
+
+    def _descent_result(self, sysm, rec, stats, message, method, path) -> DescentResult:
+        """The result of a descent from its recorder (:class:`~transient.solvers.model_run.RunParts`)."""
+        a = rec.arrays()
+        out = sysm.outputs(a)
+        pres = sysm.pressure(rec.last_y) if isinstance(sysm, _FullDAE) and rec.last_y is not None else None
+        success = True  # the run's own outcome joins it (ModelRun.go)
+        if not np.all(np.isfinite(out["h0"]) & (out["h0"] > 0)):
+            success, message = False, (f"the gap closed (h0 <= 0 at t = {a['t'][np.argmax(~(out['h0'] > 0))]:.6g} "
+                                       "s): the load is not carried by this pad's film and contact")
+        final = sysm.public(rec.last_y) if rec.last_y is not None else None
+        return DescentResult(t=a["t"], load=sysm.sc["W"], mass=sysm.sc["M"], path=path, method=method,
+                             stats=stats, success=success, message=message, pressure=pres, final_state=final,
+                             final_time=float(a["t"][-1]) if len(a["t"]) else 0.0, **out)
+
+
+def _digest(x):
+    """A short digest of the numbers in ``x`` (an array, a dataclass of arrays, or None)."""
+    if x is None:
+        return None
+    arrays = [np.asarray(getattr(x, f.name)) for f in fields(x)] if hasattr(x, "__dataclass_fields__") else [x]
+    h = hashlib.sha256()
+    for a in arrays:
+        h.update(np.ascontiguousarray(a, dtype=float).tobytes())
+    return h.hexdigest()[:16]
 
 
 # --------------------------------------------------------------------------------------------------
@@ -436,7 +515,28 @@ class _ReducedODE:
         """(K, W_asp) at h."""
         return self.K(h), float(self.pad.asperity_load(h))
 
-    def problem(self) -> Problem:
+    @property
+    def series(self) -> tuple:
+        """What a run records at each output (:meth:`sample`): the scaled states."""
+        return ("h",) if self.sc["M"] == 0.0 else ("h", "v")
+
+    def state(self, h, v) -> np.ndarray:
+        """The run's state at the gap ``h`` [m] moving at ``v`` [m/s] (massless: the speed is the balance's)."""
+        sc = self.sc
+        return np.array([h / sc["h"]]) if sc["M"] == 0.0 else np.array([h / sc["h"], v / sc["v"]])
+
+    def public(self, y) -> np.ndarray:
+        """``(h0 [m], dh0/dt [m/s])`` of a run's state (a result's ``final_state``)."""
+        h = y[0] * self.sc["h"]
+        if self.sc["M"] > 0.0:
+            return np.array([h, y[1] * self.sc["v"]])
+        K, Wa = self.rates(h)
+        return np.array([h, (Wa - self.sc["W"]) / K])
+
+    def sample(self, t, y) -> dict:
+        return dict(h=y[0]) if self.sc["M"] == 0.0 else dict(h=y[0], v=y[1])
+
+    def problem_at(self, y, t) -> Problem:
         sc = self.sc
         hr, vr, W, M = sc["h"], sc["v"], sc["W"], sc["M"]
         if M == 0.0:
@@ -444,25 +544,26 @@ class _ReducedODE:
                 h = y[0] * hr
                 K, Wa = self.rates(h)
                 out[0] = (Wa - W) / K / hr  # d(h/hr)/dt
-            return Problem(y0=np.array([1.0]), rhs=rhs, name="thrust pad (massless, reduced)")
+            return Problem(y0=np.array(y, dtype=float), rhs=rhs, name="thrust pad (massless, reduced)")
 
         def rhs(t, y, out):
             h, v = y[0] * hr, y[1] * vr
             K, Wa = self.rates(h)
             out[0] = v / hr
             out[1] = (-K * v + Wa - W) / M / vr
-        return Problem(y0=np.array([1.0, 0.0]), rhs=rhs, name="thrust pad (mass, reduced)")
+        return Problem(y0=np.array(y, dtype=float), rhs=rhs, name="thrust pad (mass, reduced)")
 
-    def outputs(self, res):
+    def outputs(self, a):
+        """The result's series from the recorded arrays ``a``."""
         sc = self.sc
-        h = res.y[:, 0] * sc["h"]
+        h = a["h"] * sc["h"]
         pad = self.pad
         K = np.array([self.K(x) for x in h])
         wa = np.asarray(pad.asperity_load(h), dtype=float) * np.ones_like(h)
         if sc["M"] == 0.0:
             v = (wa - sc["W"]) / K
         else:
-            v = res.y[:, 1] * sc["v"]
+            v = a["v"] * sc["v"]
         return dict(h0=h, dh0_dt=v, w_hyd=-K * v, w_asp=wa,
                     contact_area=np.asarray(pad.contact_area(h), dtype=float) * np.ones_like(h))
 
@@ -554,57 +655,74 @@ class _FullDAE:
         data[self.pos_vv] = cj * self.sc["M"]
         data *= self.fac  # d(F/Rs)/d(y/S) with y' scaled alike (cj acts on the scaled y')
 
-    def consistent_start(self):
-        """y0, yp0 at rest (mass) or on the force balance (massless) at h0 = h0_start."""
+    series = ("h", "v", "w_hyd")
+
+    def state(self, h, v) -> np.ndarray:
+        """The consistent state at the gap ``h`` [m] moving at ``v`` [m/s] (massless: on the force balance, the
+        speed its own): the film's pressure ``p = phi_c v q(h)`` of that squeeze."""
         n, S, sc = self.n, self.S, self.sc
         pad = self.pad
-        h = sc["h"]
         y0 = np.zeros(self.N)
-        yp0 = np.zeros(self.N)
-        y0[n] = 1.0
-        pc = pad.contact_factor(h)[0]
-        Wa = float(pad.asperity_load(h))
+        y0[n] = h / S[n]
         if sc["M"] == 0.0:
-            K = pad._K_grid(h)
-            v = (Wa - sc["W"]) / K
-            y0[:n] = pc * v * pad._unit_pressure(h) / S[0]
-            y0[n + 1] = v / S[n + 1]
-            yp0[n] = v / S[n]
-        else:
-            yp0[n + 1] = (Wa - sc["W"]) / sc["M"] / S[n + 1]
-        return y0, yp0
+            v = (float(pad.asperity_load(h)) - sc["W"]) / pad._K_grid(h)
+        y0[:n] = pad.contact_factor(h)[0] * v * pad._unit_pressure(h) / S[0]
+        y0[n + 1] = v / S[n + 1]
+        return y0
 
-    def problem(self) -> Problem:
-        y0, yp0 = self.consistent_start()
+    def public(self, y) -> np.ndarray:
+        """``(h0 [m], dh0/dt [m/s])`` of a run's state (a result's ``final_state``)."""
+        n, S = self.n, self.S
+        return np.array([y[n] * S[n], y[n + 1] * S[n + 1]])
+
+    def pressure(self, y) -> np.ndarray:
+        """The film pressure [Pa] (ny, nx) of a run's state."""
+        nx, ny = self.pad.grid_shape
+        return (y[:self.n] * self.S[0]).reshape(ny, nx)
+
+    def sample(self, t, y) -> dict:
         n = self.n
-        alg = np.arange(n) if self.sc["M"] > 0 else np.concatenate([np.arange(n), [n + 1]])
+        return dict(h=y[n], v=y[n + 1], w_hyd=float(self.A @ (y[:n] * self.S[0])))
+
+    def problem_at(self, y, t) -> Problem:
+        """The DAE from the consistent state ``y``: ``y'`` from the kinematics and the force balance."""
+        n, S, sc = self.n, self.S, self.sc
+        y0 = np.array(y, dtype=float)
+        yp0 = np.zeros(self.N)
+        h, v = y0[n] * S[n], y0[n + 1] * S[n + 1]
+        yp0[n] = v / S[n]
+        if sc["M"] > 0.0:
+            w_hyd = float(self.A @ (y0[:n] * S[0]))
+            yp0[n + 1] = (w_hyd + float(self.pad.asperity_load(h)) - sc["W"]) / sc["M"] / S[n + 1]
+        alg = np.arange(n) if sc["M"] > 0 else np.concatenate([np.arange(n), [n + 1]])
         return Problem(y0=y0, yp0=yp0, residual=self.residual, jac_pattern=self.op.pattern,
                        jac_residual=self.jacobian, algebraic=alg, name="thrust pad (full 2-D DAE)")
 
-    def outputs(self, res):
+    def outputs(self, a):
+        """The result's series from the recorded arrays ``a``."""
         n, S = self.n, self.S
-        p = res.y[:, :n] * S[0]
-        h = res.y[:, n] * S[n]
-        v = res.y[:, n + 1] * S[n + 1]
+        h = a["h"] * S[n]
         pad = self.pad
         one = np.ones_like(h)
-        nx, ny = pad.grid_shape
-        return dict(h0=h, dh0_dt=v, w_hyd=p @ self.A, w_asp=np.asarray(pad.asperity_load(h), float) * one,
-                    contact_area=np.asarray(pad.contact_area(h), float) * one, pressure=p[-1].reshape(ny, nx))
+        return dict(h0=h, dh0_dt=a["v"] * S[n + 1], w_hyd=a["w_hyd"],
+                    w_asp=np.asarray(pad.asperity_load(h), float) * one,
+                    contact_area=np.asarray(pad.contact_area(h), float) * one)
 
 
 def descent_memory(cells: int, n_out: int, path: str) -> dict:
     """Bytes a :meth:`ThrustPad.descent` will need, by part: ``grid`` (~30 arrays over the cells: film,
     factors, operator), ``jacobian`` (the full path's sparse Jacobian and LU factors, nested-dissection fill
-    ~31/8 n log2 n entries of 12 bytes) and ``outputs`` (the integrator keeps every output state: the
-    full path's n = cells + 2 per output, the separable path's two; ~12 derived series)."""
+    ~31/8 n log2 n entries of 12 bytes) and ``recordings`` (streamed, never the state: the time and up to three
+    recorded numbers per output as Python floats in lists, 32 bytes each, then the result's six series)."""
     n = cells + 2 if path == "full" else 2
     return dict(grid=30.0 * 8 * cells,
                 jacobian=12.0 * (5 * n + 31 / 8 * n * np.log2(max(n, 2))) if path == "full" else 0.0,
-                outputs=8.0 * n_out * (n + 12) * 2)
+                recordings=n_out * (4 * 32.0 + 6 * 8.0 * 2))
 
 
 def check_descent_memory(cells: int, n_out: int, path: str):
-    """Refuse (one line) a descent whose :func:`descent_memory` exceeds the stated share of the machine."""
-    check_memory(f"this descent ({n_out} outputs on {cells} cells, {path} path)", descent_memory(cells, n_out, path),
-                 "lower n_out (or pass fewer t_eval), or use a coarser grid")
+    """Refuse (one line) a descent whose :func:`descent_memory` exceeds the stated share of the machine, advising a
+    coarser grid when the pad alone does not fit, else fewer outputs."""
+    check_run_memory(f"this descent ({n_out} outputs on {cells} cells, {path} path)",
+                     descent_memory(cells, n_out, path), "use a coarser grid",
+                     "lower n_out (or pass fewer t_eval), or use a coarser grid")

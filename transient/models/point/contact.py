@@ -36,8 +36,7 @@ from transient.models.roller.results import EHLConvergenceError
 from transient.physics import film_formulas as hd
 from transient.physics.hertz import hertz_contact
 from transient.physics.lubricant import DOWSON_HIGGINSON_PARK, Lubricant
-from transient.solvers.integrate import Problem, solve
-from transient.solvers.integrate import Steps
+from transient.solvers.integrate import Problem, Steps, check_method, solve
 
 #: the Couette flux of the Reynolds rows (:func:`~transient.models.point.kernels.face_flux`): first-order upwind,
 #: second-order linear upwind (the default), or second order with van Albada's limiter. Measured
@@ -47,6 +46,9 @@ from transient.solvers.integrate import Steps
 #: at high M the second-order films are the further off (M = 518: h_c 22 % below the grid limit on 129 x 129, first
 #: order 9 % above it) -- the grid verdict says so -- and Newton fails with them at M = 205 on 25 x 25 and 33 x 33
 UPWIND = {"first": 0, "second": 1, "limited": 2}
+#: The methods :meth:`PointContact.transient` offers: BDF2 on its FBNS step solve (the film's complementarity has
+#: no residual form for the other methods).
+TRANSIENT_METHODS = ("bdf2",)
 
 #: the largest estimated relative error of h_central and h_min (:meth:`PointContact.grid_check`) for which
 #: :meth:`PointContact.steady` calls its films grid-settled
@@ -386,7 +388,7 @@ class PointContact:
         return self.hertz.b / self.speed
 
     def transient(self, t_end: float, load=None, start="dry", rtol: float = 1e-4, max_steps: int = 5000,
-                  n_out: int = 201, time_budget: float | None = None) -> PointTransient:
+                  n_out: int = 201, time_budget: float | None = None, method: str = "bdf2") -> PointTransient:
         """The film in time: BDF2 with FBNS Newton per step (:mod:`transient.models.point.step_solve`) through the
         integrator facade (:func:`~transient.solvers.integrate.solve`, ``method="bdf2"``).
 
@@ -395,7 +397,10 @@ class PointContact:
         the content full, or for a starved inlet the layer where it does not fill the gap) or a
         :class:`PointSteady` / :class:`PointTransient` of this contact's grid; ``rtol`` the relative local
         error per step; ``n_out`` outputs equally spaced on [0, t_end]; ``time_budget`` [s] of wall clock (None:
-        none). Series at the outputs; the final fields and state (``start=`` of a next run)."""
+        none); ``method`` one of :data:`TRANSIENT_METHODS` (its film is a complementarity problem, solved by the
+        FBNS step solve it hands BDF2). Series at the outputs; the final fields and state (``start=`` of a next
+        run)."""
+        check_method("PointContact.transient", method, step_solve=True, among=TRANSIENT_METHODS)
         t_end = check_range("t_end", t_end, "s", 0.0, 1e6, low_open=True)
         rtol = check_range("rtol", rtol, "-", 1e-8, 0.5)
         max_steps = check_int("max_steps", max_steps, "-", 1, 10 ** 7)

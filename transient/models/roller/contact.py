@@ -55,7 +55,7 @@ import numpy as np
 from scipy.interpolate import RegularGridInterpolator
 from threadpoolctl import threadpool_limits
 
-from transient.checks import check_choice, check_int, check_memory, check_positive, check_range
+from transient.checks import check_int, check_memory, check_positive, check_range
 from transient.models.roller.continuation import PathResult, follow
 from transient.models.roller.dry import DryContact, DrySolver, dry_contact
 from transient.models.roller.ehl_problem import EHLFilm, interpolate_state, solve_steady
@@ -70,9 +70,12 @@ from transient.physics.line_formulas import dowson_toyoda_central
 from transient.physics.lubricant import DOWSON_HIGGINSON_PARK, Lubricant
 from transient.solvers.integrate import Problem, Steps
 from transient.solvers.integrate import solve as integrate
+from transient.solvers.integrate import check_method
 from transient.solvers.newton import NewtonError
 
 PAPER_GRID = (94, 45)
+#: The methods :meth:`RollerContact.transient` offers: IDA on the penalty form, BDF2 on the film-content form.
+TRANSIENT_METHODS = ("ida", "bdf2")
 #: the clustered grid of 94 x nodes and twice the paper's y nodes; its y axis is the default grid's above the
 #: paper's load
 HEAVY_GRID = (94, 89)
@@ -766,8 +769,8 @@ class RollerContact:
         (:func:`~transient.models.roller.line_step.consistent_content`, or a film-content ``start``'s own);
         ``max_steps`` and ``time_budget`` [s of wall clock] bound that run.
         """
+        check_method("RollerContact.transient", method, among=TRANSIENT_METHODS)
         t_end = check_positive("t_end", t_end, "s")
-        check_choice("method", method, ("ida", "bdf2"))
         if self.grid_spec[0] == "uniform":
             raise ValueError("transient needs a clustered grid (dense elasticity for IDA's dense Jacobian)")
         n_out = int(check_range("n_out", n_out, "-", 2, 1e6))

@@ -27,7 +27,7 @@ import warnings
 import numpy as np
 from threadpoolctl import threadpool_limits
 
-from transient.checks import check_choice, check_int, check_positive, check_range
+from transient.checks import check_int, check_positive, check_range
 from transient.models.roller.continuation import PathResult, follow
 from transient.models.roller.dry import edge_positions, polonsky_keer
 from transient.models.roller.ehl_problem import EHLFilm, interpolate_state, solve_steady
@@ -45,11 +45,13 @@ from transient.physics.elasticity import line_influence
 from transient.physics.line_formulas import (dowson_toyoda_central, hertz_line, line_groups, martin_min, moes_central,
                                              moes_groups)
 from transient.physics.lubricant import DOWSON_HIGGINSON_PARK, Lubricant
-from transient.solvers.integrate import Problem, Steps
+from transient.solvers.integrate import Problem, Steps, check_method
 from transient.solvers.integrate import solve as integrate
 from transient.solvers.newton import NewtonError
 
 SCHEMES = ("upwind2", "upwind1")
+#: The methods :meth:`LineContact.transient` offers: IDA on the penalty form, BDF2 on the film content (its step solve).
+TRANSIENT_METHODS = ("ida", "bdf2")
 #: the corner of the Moes chart solved directly from the Hertz pressure; beyond it, continuation from it
 M_EASY, L_EASY = 10.0, 5.0
 #: Newton iterations allowed per continuation step (a step needing more is too long: it is halved)
@@ -523,7 +525,7 @@ class LineContact:
         wall clock] bound that run (uniform grids up to 1025 nodes: the dense elastic film).
         """
         t_end = check_positive("t_end", t_end, "s")
-        check_choice("method", method, ("ida", "bdf2"))
+        check_method("LineContact.transient", method, step_solve=True, among=TRANSIENT_METHODS)
         if method == "bdf2":
             if matrix_free(self.grid) and self.elastic:
                 raise ValueError(f"method = 'bdf2': {self.grid.x.size} uniform nodes need the matrix-free film; the "

@@ -35,14 +35,16 @@ from transient.compile_notice import announce
 from transient.models.journal.film import read_only
 from transient.models.damper.damper import SqueezeFilmDamper
 from transient.models.journal.orbit import BDF2_MIN_STEPS
+from transient.models.journal.time_domain import check_time_domain
 from transient.models.rotor.content_form import ContentSystem
 from transient.models.rotor.model import SystemDAE
 from transient.models.rotor.results import RotorEquilibrium, RotorRunResult, UnbalanceResponse
 from transient.models.rotor.rotor import Rotor
 from transient.solvers.bandlu import BorderedBandLU
-from transient.solvers.integrate import Problem, Stats, Steps
+from transient.solvers.integrate import Problem, Stats, Steps, check_method
 from transient.solvers.model_run import ModelRun, RunParts, check_run_memory, start_point, wall_crossing
-from transient.solvers.settings import Integration, LongRun, Recording, check_unused, keyword_table, run_settings
+from transient.solvers.settings import (Integration, LongRun, Recording, check_unused, keyword_table,
+                                       requested_method, run_settings)
 from transient.solvers.newton import NewtonError, NewtonSettings, newton
 from transient.solvers.shooting import ShootingSettings
 from transient.units import rpm_to_rad_s
@@ -98,20 +100,7 @@ class RotorBearingSystem:
             if not np.any(rotor.translation(node)):
                 raise ValueError(f"bearings: node {node!r} does not move in this rotor's coordinates")
         for node, b in bearings.items():
-            if b.cavitation != "elrod":
-                raise ValueError(f"bearings[{node!r}] cavitation = {b.cavitation!r}; allowed: \"elrod\" (the rotor "
-                                 "system couples the mass-conserving films; the Reynolds-condition film serves the "
-                                 "single bearing's steady and linear analyses)")
-            if getattr(b, "misalignment", (0.0, 0.0)) != (0.0, 0.0):
-                raise ValueError(f"bearings[{node!r}] misalignment = {b.misalignment} [rad]; allowed: (0, 0) (the rotor "
-                                 "system's films do not take the shaft's tilts; a misaligned bearing serves the single "
-                                 "bearing's steady and linear analyses)")
-            if getattr(b, "roughness", None) is not None:
-                raise ValueError(f"bearings[{node!r}] roughness = Roughness(...); allowed: None (the rotor system's "
-                                 "films are smooth; a rough bearing serves the single bearing's steady analyses)")
-            if getattr(b, "thermal", None) is not None:
-                raise ValueError(f"bearings[{node!r}] thermal = ThermalFilm(...); allowed: None (the rotor system's "
-                                 "films are isothermal; a thermal bearing serves the single bearing's steady analyses)")
+            check_time_domain("RotorBearingSystem", b, f"bearings[{node!r}] ")
         self.dampers = {n: b for n, b in bearings.items() if isinstance(b, SqueezeFilmDamper)}
         self.bearings = {n: b.bearing if n in self.dampers else b for n, b in bearings.items()}  # dampers: their films
         self.stiffness = rotor.stiffness.copy()  # with the dampers' centring springs
@@ -516,10 +505,12 @@ class RotorBearingSystem:
         deprecated: they still work for one release, with a ``DeprecationWarning`` naming the new spelling (beside
         the object they belong in: an error).
         """
+        check_method("RotorBearingSystem.run", requested_method(integration, legacy), step_solve=True,
+                     among=RUN_METHODS)
         revolutions = check_positive("revolutions", revolutions, "rev")
         ig, rc, lr = run_settings("RotorBearingSystem.run", legacy, RUN_KEYWORDS, integration=integration,
                                   recording=recording, long_run=long_run).values()
-        check_choice("method", ig.method, RUN_METHODS)
+        check_method("RotorBearingSystem.run", ig.method, step_solve=True, among=RUN_METHODS)
         check_unused("RotorBearingSystem.run", "integration", ig, ("steps_per_revolution", "formulation", "dt",
                                                                    "linear_solver"))
         check_unused("RotorBearingSystem.run", "recording", rc, ("record", "record_from_revolution"))
