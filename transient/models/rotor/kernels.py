@@ -146,12 +146,13 @@ def tilted_block_jacobian(u, up, X, Y, A, B, Xd, Yd, Ad, Bd, s, cj, local, switc
         dk_dq[1, i] = h2 * sinp[i]
         dk_dq[2, i] = h2 * zcos[i]
         dk_dq[3, i] = h2 * zsin[i]
-        dc_dq[0, i] = 0.5 * s * cosp[i]
-        dc_dq[1, i] = 0.5 * s * sinp[i]
-        dc_dq[2, i] = 0.5 * s * zcos[i]
-        dc_dq[3, i] = 0.5 * s * zsin[i]
-    if s != 1.0:
+        dc_dq[0, i] = 0.5 * cosp[i]
+        dc_dq[1, i] = 0.5 * sinp[i]
+        dc_dq[2, i] = 0.5 * zcos[i]
+        dc_dq[3, i] = 0.5 * zsin[i]
+    if s != 1.0:  # as stencil_flux_jacobian: the same rounding as the untilted block
         c *= s
+        dc_dq *= s
     jacobian_kernel(P, dP, C, D, k, zero, k, zero, c, zero, dk_dq, dk_dq, dc_dq, no_dq, True, faces, boundary, cells,
                     face_k, pos_col, local)
     for i in range(free.size):
@@ -159,11 +160,11 @@ def tilted_block_jacobian(u, up, X, Y, A, B, Xd, Yd, Ad, Bd, s, cj, local, switc
             a = area[i]
             local[pos_c[i]] += a * (H[i] * dD[i] * up[i] + D[i] * ((Xd * cosp[i] + Yd * sinp[i])
                                                                   + (Ad * zcos[i] + Bd * zsin[i])) + cj * H[i] * D[i])
-            w = a * (D[i] * up[i] + cj * C[i])
-            local[pos_col[i, 0]] += w * cosp[i]
-            local[pos_col[i, 1]] += w * sinp[i]
-            local[pos_col[i, 2]] += w * zcos[i]
-            local[pos_col[i, 3]] += w * zsin[i]
+            w = D[i] * up[i] + cj * C[i]  # in block_jacobian's order of operations
+            local[pos_col[i, 0]] += a * cosp[i] * w
+            local[pos_col[i, 1]] += a * sinp[i] * w
+            local[pos_col[i, 2]] += a * zcos[i] * w
+            local[pos_col[i, 3]] += a * zsin[i] * w
         else:
             local[pos_c[i]] = cj
         g = sym * dP[i] * area[i]
