@@ -16,7 +16,12 @@ State (dimensionless; ``L`` the smallest bearing clearance, ``tau = omega_ref t`
     angle:       phi' - s = 0
 
 (``t_x,b``, ``t_y,b``: the rows of the rotor's basis giving the x, y displacement of the bearing node; the
-virtual work of the film force ``F_b = p0 R^2 Fbar_b`` on them is its generalised force). The Jacobian
+virtual work of the film force ``F_b = p0 R^2 Fbar_b`` on them is its generalised force). With
+``tilt_coupling`` a film also takes its node's tilts as the tilt groups ``A_b = (R / C_b) r_y,b . q L``,
+``B_b = -(R / C_b) r_x,b . q L`` (``r_x,b``, ``r_y,b`` the basis rows of the node's tx, ty): its gap
+``gap_b + A_b zbar cos + B_b zbar sin + X_b cos + Y_b sin`` (``gap_b`` the bush's static misalignment), the rates
+``A_b'``, ``B_b'`` in its squeeze term, and the moments ``(M_x, M_y) = p0 R^3 (-Fb_b, Fa_b)`` on the tilts
+(:mod:`transient.models.journal.tilt`, the tilted blocks of :mod:`transient.models.rotor.kernels`). The Jacobian
 ``dF/dy + cj dF/dy'`` is analytic and sparse: each film's 5-point block with its coupling columns to the
 rotor coordinates of its node, the dense rotor rows as the border (:func:`system_pattern`).
 """
