@@ -260,3 +260,17 @@ def test_damper_film_takes_the_tilt(fd_jacobian):
         th, om = r.final_state[dae.Q0 + 3] * dae.L, r.final_state[dae.V0 + 3] * dae.L * dae.omega
         energy.append((1e-5 * om ** 2 + 100.0 * th ** 2) / (100.0 * 4e-6))
     assert energy[0] < 0.2 and energy[1] == pytest.approx(1.0, abs=1e-3)
+
+
+def test_tilt_coupling_refusals():
+    """A rotor without tilts and a Gecim bulk are refused by name; a misaligned bearing is taken either way."""
+    from transient.physics.layered import Gecim
+
+    with pytest.raises(ValueError, match=r"tilt_coupling = True with a rotor of dofs = \('x', 'y'\)"):
+        RotorBearingSystem(Rotor(mass=M * np.eye(2), stiffness=np.zeros((2, 2)), nodes=[0]), {0: bearing()},
+                           tilt_coupling=True)
+    with pytest.raises(ValueError, match=r"bearings\[0\] rheology = Gecim"):
+        one_node(bearing(rheology=Gecim(1e4, 0.5)))
+    with pytest.raises(ValueError, match="tilt_coupling"):
+        one_node(bearing(), coupled="yes")
+    assert one_node(bearing(misalignment=(0.0, 1e-4)), 1e4, coupled=False).bearings[0].misalignment == (0.0, 1e-4)

@@ -149,7 +149,7 @@ class RotorBearingSystem:
                              "the dofs (\"x\", \"y\", \"tx\", \"ty\") (or tilt_coupling=False)")
         for node, b in bearings.items():
             if getattr(b, "shear_thinning", False):
-                raise ValueError(f"bearings[{node!r}] with a Gecim bulk and tilt_coupling = True; allowed: a "
+                raise ValueError(f"bearings[{node!r}] rheology = Gecim(...) with tilt_coupling = True; allowed: a "
                                  "Newtonian bulk (with or without boundary layers), or tilt_coupling=False")
 
     def rotation(self, node) -> np.ndarray:
