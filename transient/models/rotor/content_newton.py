@@ -23,6 +23,11 @@ with ``u' = 0`` and ``X' = Y' = 0`` is the content form's ``dF/dz``: ``dR/du + c
 :func:`~transient.models.journal.content_newton.film_newton_norm`). The shaft speed ``s, s'`` of the step's time is
 in ``rotor.speed`` (set by the caller before each Newton solve: a user's speed function is Python).
 
+A film block that takes its node's tilts (``RotorBearingSystem(tilt_coupling=True)``) sets its gap at the tilts of
+the state first (:func:`block_gap`): ``m_b = H_b(X_b, Y_b, A_b, B_b) C(u_b)``, its tilt forces on the tilt rows and
+its block Jacobian by :func:`~transient.models.rotor.kernels.tilted_block_jacobian` (the tilt rates enter through
+``m_b'`` as the position rates do).
+
 ``args = (films, rotor)``: ``films`` a tuple of :class:`FilmArgs` (one per bearing, all of one numba type),
 ``rotor`` a :class:`RotorArgs`; built by :class:`~transient.models.rotor.content_form.ContentSystem`.
 """

@@ -7,6 +7,9 @@ bulk included) driven by the motion of its rotor node; its force enters the roto
 
     M q'' + (C + Omega G) q' + K q = f_bearings + f_unbalance(t) + M g
 
+With ``tilt_coupling=True`` the films also take the nodes' tilts and their moments act on them
+(:mod:`transient.models.rotor.model`).
+
 The static equilibrium solves the steady film of every bearing together with the shaft's statics (Newton on
 the whole system, started from the bearing loads of the shaft on rigid supports); the linear analyses use each
 bearing's own stiffness and damping (``JournalBearing.coefficients``) at the load it carries there (Lund's
