@@ -130,6 +130,11 @@ class JournalOrbit:
             return np.hypot(X, Y)
         return np.maximum(np.hypot(X - a * half, Y - b * half), np.hypot(X + a * half, Y + b * half))
 
+    def _reach_si(self, x, y):
+        """:meth:`reach` of the journal at (x, y) [m]."""
+        C = self.bearing.clearance
+        return np.hypot(x, y) / C if self._ends[0] == (0.0, 0.0) else self.reach(x / C, y / C)
+
     def equilibrium(self):
         """Static equilibrium of the bearing under ``load`` (cached)."""
         if self._equilibrium is None:
@@ -360,8 +365,8 @@ class JournalOrbit:
             that differs) if any changed. Ctrl-C says where it is and how to resume.
         progress : a progress bar over the chunks (default: when the run has more than one chunk).
         touch_gap : stop (``success=False``, ``touched_at``) with a clear message when the eccentricity ratio
-            (in a misaligned bush: at the worse end, :meth:`reach`) reaches ``1 - touch_gap`` (with boundary layers ``1 - 2 delta / C - touch_gap``: "boundary layers touch
-            at t = ..."); 0 turns the detection off, but a run whose journal reaches the wall (a negative film) is
+            (in a misaligned bush: at the worse end, :meth:`reach`) reaches ``1 - touch_gap`` (with boundary
+            layers ``1 - 2 delta / C - touch_gap``: "boundary layers touch at t = ..."); 0 turns the detection off, but a run whose journal reaches the wall (a negative film) is
             still never a success: its message says when and how far.
         stop : ``stop(result_so_far) -> str | None`` called after every chunk; a non-empty string ends
             the run early and becomes its message (e.g. "settled").
@@ -408,8 +413,7 @@ class JournalOrbit:
                          problem_at=step.problem_at, solver=solver, series=series, sparse=FIELD_SERIES,
                          sample=self._sampler(rc.record, 2 * np.pi * rc.record_from_revolution),
                          journals=self._journal,
-                         eccentricities=lambda r: [("journal", self.reach(r.x / self.bearing.clearance,
-                                                                          r.y / self.bearing.clearance),
+                         eccentricities=lambda r: [("journal", self._reach_si(r.x, r.y),
                                                     self.bearing.max_eccentricity_ratio)],
                          touch_message=lambda tau, y_: self._touch_message(tau, run.touch_gap),
                          result=lambda rec, stats, touched, message, tau_end: self._result(
@@ -526,8 +530,7 @@ class JournalOrbit:
         from transient.models.journal.periodic import periodic_response
 
         p = periodic_response(self, **kwargs)
-        C = self.bearing.clearance
-        through = wall_crossing(p.t, self.reach(p.x / C, p.y / C), self.bearing.max_eccentricity_ratio)
+        through = wall_crossing(p.t, self._reach_si(p.x, p.y), self.bearing.max_eccentricity_ratio)
         if through:  # a periodic orbit through the wall is no result, converged or not
             p.success, p.message = False, f"the journal {through}; {p.message}"
         return p
