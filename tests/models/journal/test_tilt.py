@@ -201,14 +201,3 @@ def test_coefficients_4x4_equal_finite_differences_of_steady_states():
     assert np.all(np.isfinite(C)) and C[2, 2] > 0 and C[3, 3] > 0
 
 
-def test_time_domain_refuses_a_misaligned_bearing():
-    """The orbit and the rotor system take aligned bearings (their films do not follow the tilts): refused by name."""
-    from transient.models.journal.orbit import JournalOrbit
-    from transient.models.rotor.rotor import Rotor
-    from transient.models.rotor.system import RotorBearingSystem
-    b = bearing(misalignment=(0.0, 1e-4))
-    with pytest.raises(ValueError, match=r"misalignment = \(0.0, 0.0001\) \[rad\]"):
-        JournalOrbit(b, 10.0, 0.0, 1000.0, SPEED)
-    rotor = Rotor.example()
-    with pytest.raises(ValueError, match=r"misalignment = \(0.0, 0.0001\) \[rad\]"):
-        RotorBearingSystem(rotor, {rotor.bearing_nodes[0]: b, rotor.bearing_nodes[1]: bearing()})

@@ -13,7 +13,6 @@ from transient.params.rho_kim import BEARING, ROTOR
 ALIGNED_SMOOTH = dict(cavitation="elrod", roughness=None, misalignment=(0.0, 0.0), thermal=None)
 REFUSED = {"cavitation": ("reynolds", "cavitation = 'reynolds'; allowed: 'elrod'"),
            "roughness": (object(), "roughness = Roughness(...); allowed: None"),
-           "misalignment": ((0.0, 1e-4), r"misalignment = (0.0, 0.0001) [rad]; allowed: (0.0, 0.0)"),
            "thermal": (object(), "thermal = ThermalFilm(...); allowed: None")}
 
 

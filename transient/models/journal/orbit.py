@@ -41,6 +41,7 @@ from transient.models.journal.kernels import (N_ROTOR, content_jacobian, content
                                               content_rhs, dae_jacobian, dae_residual, ode_jacobian, ode_rhs)
 from transient.models.journal.results import OrbitResult
 from transient.models.journal.scales import Rotor
+from transient.models.journal.tilt import half_length, moment
 from transient.models.journal.time_domain import check_time_domain
 from transient.models.journal.rk4 import FilmStageSolver
 from transient.models.journal.thermal_orbit import THERMAL_FIELDS, THERMAL_RECORDABLE, thermal_long_run, thermal_parts
@@ -79,8 +80,8 @@ DEFAULT_METHOD = "bdf2"
 #: smaller dimension, reverse Cuthill-McKee on the Newton pattern: 3.0 with a full-length groove, up to 6.2 with a
 #: partial one (measured on 151 x 21, 64 x 64, 100 x 30, 40 x 100 and 300 x 42); 8 bytes each per film cell.
 BDF2_BAND_ROWS = 6.2
-RECORDABLE = ("force", "pressure", "film_content", "min_film", "mass", "outflow", "supply_flow", "side_leakage",
-              "friction_torque", "contact_load", "shaft_speed")
+RECORDABLE = ("force", "moment", "pressure", "film_content", "min_film", "mass", "outflow", "supply_flow",
+              "side_leakage", "friction_torque", "contact_load", "shaft_speed")
 #: The methods that integrate a rough bearing's orbit (:mod:`~transient.models.journal.rough_orbit`).
 ROUGH_METHODS = ("ida", "bdf2")
 FIELD_SERIES = ("pressure", "film_content")
@@ -115,6 +116,8 @@ class JournalOrbit:
         if not isinstance(bearing, JournalBearing):
             raise TypeError(f"bearing must be a JournalBearing, got {type(bearing).__name__}")
         check_time_domain("JournalOrbit", bearing)
+        if bearing.misalignment != (0.0, 0.0):
+            bearing = bearing.whole_length()  # a tilted gap: the film of the whole length
         self.bearing = bearing
         self.rotor_mass = check_positive("rotor_mass", rotor_mass, "kg")
         self.unbalance = check_range("unbalance", unbalance, "m", 0.0, bearing.clearance, high_open=True,
@@ -128,6 +131,7 @@ class JournalOrbit:
         self.kappa = f.force_scale / mc_w2
         self.wbar = self.load / mc_w2
         self.ebar = self.unbalance / bearing.clearance
+        self._ends = (f.tilt, half_length(bearing.grid))  # the journal's tilt groups in its bush, the half length
         self._equilibrium = None
         self._newton_pattern = None
         self.speed_profile = None if speed_profile is None else self._check_profile(speed_profile)
@@ -166,6 +170,19 @@ class JournalOrbit:
     @property
     def n(self) -> int:
         return self.film.n + N_ROTOR
+
+    def reach(self, X, Y):
+        """The journal's largest eccentricity ratio over the bearing length at (X, Y) [C] (arrays too): at the
+        mid-plane for an aligned journal, at the worse end in a misaligned bush (:mod:`~.tilt`)."""
+        (a, b), half = self._ends
+        if (a, b) == (0.0, 0.0):
+            return np.hypot(X, Y)
+        return np.maximum(np.hypot(X - a * half, Y - b * half), np.hypot(X + a * half, Y + b * half))
+
+    def _reach_si(self, x, y):
+        """:meth:`reach` of the journal at (x, y) [m]."""
+        C = self.bearing.clearance
+        return np.hypot(x, y) / C if self._ends[0] == (0.0, 0.0) else self.reach(x / C, y / C)
 
     def equilibrium(self):
         """Static equilibrium of the bearing under ``load`` (cached)."""
@@ -321,11 +338,19 @@ class JournalOrbit:
         yp0 = np.empty(self.n)
         rhs(tau0, read_only(y0), yp0)  # the array type SUNDIALS passes: one compiled signature
         events = None
-        if touch_gap > 0:
+        if touch_gap > 0 and f.tilt == (0.0, 0.0):
             limit = (self.bearing.max_eccentricity_ratio - touch_gap) ** 2
 
             def events(t, y, out):
                 out[0] = limit - (y[n] ** 2 + y[n + 1] ** 2)
+        elif touch_gap > 0:  # a misaligned bush: the gap closes first at an end
+            limit = (self.bearing.max_eccentricity_ratio - touch_gap) ** 2
+            (a, b), half = self._ends
+            ah, bh = a * half, b * half
+
+            def events(t, y, out):
+                X, Y = y[n], y[n + 1]
+                out[0] = limit - max((X - ah) ** 2 + (Y - bh) ** 2, (X + ah) ** 2 + (Y + bh) ** 2)
 
         return Problem(y0=y0, yp0=yp0, rhs=rhs, residual=residual,
                        jac_pattern=f.op.pattern if pattern is None else pattern, jac_rhs=jac_rhs,
@@ -415,7 +440,10 @@ class JournalOrbit:
             BDF2).
         inner_tolerance : ``"rk4"`` only: the per-stage film criterion sum|d theta| / sum theta (paper: 1e-6).
         outputs_per_revolution : output (sampling) rate.
-        record : extra series to keep at the outputs: any of ``"force"`` [N], ``"min_film"`` [m],
+        record : extra series to keep at the outputs: any of ``"force"`` [N], ``"moment"`` [N m] ((n, 2): the
+            film's moment about the bearing centre, about x and y, :mod:`~transient.models.journal.tilt`; zero but
+            in a misaligned bush), ``"min_film"`` [m] (the smallest gap over the bearing: at an end in a
+            misaligned bush),
             ``"mass"`` [m^3] (film content as liquid volume at the cavitation density, whole bearing),
             ``"outflow"`` [m^3/s] ((n, 2): through the ends, into the groove -- negative: the supply;
             see :meth:`mass_balance`), ``"supply_flow"`` [m^3/s] ((n, feeds): each feed's net supply) and
@@ -429,8 +457,8 @@ class JournalOrbit:
             that differs) if any changed. Ctrl-C says where it is and how to resume.
         progress : a progress bar over the chunks (default: when the run has more than one chunk).
         touch_gap : stop (``success=False``, ``touched_at``) with a clear message when the eccentricity ratio
-            reaches ``1 - touch_gap`` (with boundary layers ``1 - 2 delta / C - touch_gap``: "boundary layers touch
-            at t = ..."); 0 turns the detection off, but a run whose journal reaches the wall (a negative film) is
+            (in a misaligned bush: at the worse end, :meth:`reach`) reaches ``1 - touch_gap`` (with boundary
+            layers ``1 - 2 delta / C - touch_gap``: "boundary layers touch at t = ..."); 0 turns the detection off, but a run whose journal reaches the wall (a negative film) is
             still never a success: its message says when and how far.
         stop : ``stop(result_so_far) -> str | None`` called after every chunk; a non-empty string ends
             the run early and becomes its message (e.g. "settled").
@@ -513,7 +541,7 @@ class JournalOrbit:
                          problem_at=step.problem_at, solver=solver, series=series, sparse=FIELD_SERIES,
                          sample=self._sampler(rc.record, 2 * np.pi * rc.record_from_revolution),
                          journals=self._journal,
-                         eccentricities=lambda r: [("journal", np.hypot(r.x, r.y) / self.bearing.clearance,
+                         eccentricities=lambda r: [("journal", self._reach_si(r.x, r.y),
                                                     self.bearing.max_eccentricity_ratio)],
                          touch_message=lambda tau, y_: self._touch_message(tau, run.touch_gap),
                          result=lambda rec, stats, touched, message, tau_end: self._result(
@@ -531,7 +559,7 @@ class JournalOrbit:
     def _journal(self, y) -> list:
         """The journal's place in a state of the universal layout (:class:`~transient.solvers.model_run.RunParts`)."""
         n = self.film.n
-        return [("journal", float(np.hypot(y[n], y[n + 1])), self.bearing.max_eccentricity_ratio)]
+        return [("journal", float(self.reach(y[n], y[n + 1])), self.bearing.max_eccentricity_ratio)]
 
     def _touch_message(self, tau, touch_gap) -> str:
         t = tau / self.film.omega
@@ -557,7 +585,10 @@ class JournalOrbit:
                 F = f.force(y[:n], y[n], y[n + 1])
                 row["force"] = (F[0] * f.force_scale, F[1] * f.force_scale)
             if "min_film" in record:
-                row["min_film"] = C * (1.0 - np.hypot(y[n], y[n + 1]))
+                row["min_film"] = C * (1.0 - o.reach(y[n], y[n + 1]))
+            if "moment" in record:
+                f.residual(y[:n], y[n], y[n + 1])  # the pressure of this state
+                row["moment"] = moment(f, f.P)
             if "shaft_speed" in record:
                 row["shaft_speed"] = float(o.shaft_speed_rpm(tau / f.omega))
             if "contact_pressure" in record:
@@ -651,7 +682,7 @@ class JournalOrbit:
 
         self._isothermal_only("periodic_response")
         p = periodic_response(self, **kwargs)
-        through = wall_crossing(p.t, np.hypot(p.x, p.y) / self.bearing.clearance, self.bearing.max_eccentricity_ratio)
+        through = wall_crossing(p.t, self._reach_si(p.x, p.y), self.bearing.max_eccentricity_ratio)
         if through:  # a periodic orbit through the wall is no result, converged or not
             p.success, p.message = False, f"the journal {through}; {p.message}"
         return p
@@ -748,7 +779,7 @@ def orbit_memory(cells, revolutions, outputs_per_revolution=100, record=(), reco
     ``record_from_revolution`` on); ``band_rows`` > 0 (``method="bdf2"``) adds the band LU, 8 bytes per row and
     cell."""
     outputs = revolutions * outputs_per_revolution + 1
-    scalars = 3 + sum(dict(force=2, min_film=1, mass=1, outflow=2).get(k, 0) for k in record)
+    scalars = 3 + sum(dict(force=2, moment=2, min_film=1, mass=1, outflow=2).get(k, 0) for k in record)
     fields = sum(k in FIELD_SERIES for k in record)
     field_outputs = max(0.0, revolutions - record_from_revolution) * outputs_per_revolution + 1
     parts = dict(model=1100.0 * cells, solver=5500.0 * (cells + N_ROTOR))

@@ -13,9 +13,9 @@ from transient.physics.layered import NO_LAYERS, BoundaryLayers, Gecim, LayeredF
 from transient.results import RunResult, SteadyResult, quantity, result_type
 from transient.units import rpm_to_hz
 
-RECORDED_FIELDS = ("force", "min_film", "mass", "outflow", "supply_flow", "side_leakage", "pressure", "pressure_t", "film_content", "film_content_t",
-                   "max_temperature", "power_loss", "heat_flow", "stored_heat", "shaft_speed", "temperature",
-                   "temperature_t", "friction_torque", "contact_load", "contact_pressure")
+RECORDED_FIELDS = ("force", "moment", "min_film", "mass", "outflow", "supply_flow", "side_leakage", "pressure", "pressure_t",
+                   "film_content", "film_content_t", "max_temperature", "power_loss", "heat_flow", "stored_heat",
+                   "shaft_speed", "temperature", "temperature_t", "friction_torque", "contact_load", "contact_pressure")
 
 
 @result_type
@@ -164,7 +164,8 @@ class OrbitResult(RunResult):
     """Time series of one orbit run (outputs at ``outputs_per_revolution`` per revolution).
 
     ``t`` [s], ``x``, ``y`` [m] (journal centre; x towards the load); the recorded series (None if not
-    asked): ``force`` [N] (film force on the journal, (n, 2)), ``min_film`` [m], ``mass`` [m^3],
+    asked): ``force`` [N] (film force on the journal, (n, 2)), ``moment`` [N m] (its moment about the bearing
+    centre, (n, 2)), ``min_film`` [m] (the smallest gap over the bearing), ``mass`` [m^3],
     ``outflow`` [m^3/s] ((n, 2): ends, groove), ``supply_flow`` [m^3/s] ((n, feeds): the net flow out of each
     feed), ``side_leakage`` [m^3/s] ((n, 2): out of the ends z = -L/2, +L/2; :mod:`~transient.models.journal.flows`),
     ``pressure`` [Pa] ((k, nz, ntheta) at ``pressure_t``
@@ -178,7 +179,7 @@ class OrbitResult(RunResult):
     why) if the integrator failed; the outputs up to the failure are kept.
     """
 
-    shapes = {"x": ("t",), "y": ("t",), "force": ("t", 2), "min_film": ("t",), "mass": ("t",), "outflow": ("t", 2),
+    shapes = {"x": ("t",), "y": ("t",), "force": ("t", 2), "moment": ("t", 2), "min_film": ("t",), "mass": ("t",), "outflow": ("t", 2),
               "supply_flow": ("t", None), "side_leakage": ("t", 2), "pressure": ("pressure_t", "nz", "ntheta"),
               "pressure_t": (None,), "film_content": ("film_content_t", "nz", "ntheta"), "film_content_t": (None,),
               "max_temperature": ("t",), "power_loss": ("t",), "heat_flow": ("t",), "stored_heat": ("t",),
@@ -193,6 +194,7 @@ class OrbitResult(RunResult):
     clearance: float = quantity("m", 0.0)
     touched_at: float | None = quantity("s", None)
     force: np.ndarray | None = quantity("N", None)
+    moment: np.ndarray | None = quantity("N m", None)
     min_film: np.ndarray | None = quantity("m", None)
     mass: np.ndarray | None = quantity("m^3", None)
     outflow: np.ndarray | None = quantity("m^3/s", None)

@@ -43,7 +43,8 @@ class ContentSystem:
             films.append(FilmArgs(film=film, offset=int(b.offset), n=int(b.n), sym=float(fl.sym), spin=float(b.spin),
                                   support=np.ascontiguousarray(b.support, dtype=np.int64), ax=b.ax, ay=b.ay,
                                   gx=b.gx, gy=b.gy, maps=b.maps, local=b.local, up=np.zeros(fl.n),
-                                  ym=np.zeros(fl.n + 2)))
+                                  ym=np.zeros(fl.n + 2), tilted=bool(b.tilted), aa=b.aa, ab=b.ab, ga=b.ga, gb=b.gb,
+                                  tilt=b.tilt))
         kinds = {str(numba.typeof(f)) for f in films}
         if len(kinds) > 1:
             raise ValueError("bearings: method \"bdf2\" takes bearings of one film kind (all Newtonian or all with the "
@@ -117,6 +118,7 @@ class ContentSystem:
         q = y[self.dae.Q0:self.dae.V0]
         for b in self.dae.blocks:
             X, Y = b.position(q)
+            b.set_gap(q)
             y[b.offset:b.offset + b.n] = b.film.content(read_only(y[b.offset:b.offset + b.n]), X, Y)
         return y
 
@@ -126,6 +128,7 @@ class ContentSystem:
         q = y[self.dae.Q0:self.dae.V0]
         for b in self.dae.blocks:
             X, Y = b.position(q)
+            b.set_gap(q)
             y[b.offset:b.offset + b.n] = b.film.universal(y[b.offset:b.offset + b.n], X, Y)
         return y
 

@@ -23,6 +23,11 @@ with ``u' = 0`` and ``X' = Y' = 0`` is the content form's ``dF/dz``: ``dR/du + c
 :func:`~transient.models.journal.content_newton.film_newton_norm`). The shaft speed ``s, s'`` of the step's time is
 in ``rotor.speed`` (set by the caller before each Newton solve: a user's speed function is Python).
 
+A film block that takes its node's tilts (``RotorBearingSystem(tilt_coupling=True)``) sets its gap at the tilts of
+the state first (:func:`block_gap`): ``m_b = H_b(X_b, Y_b, A_b, B_b) C(u_b)``, its tilt forces on the tilt rows and
+its block Jacobian by :func:`~transient.models.rotor.kernels.tilted_block_jacobian` (the tilt rates enter through
+``m_b'`` as the position rates do).
+
 ``args = (films, rotor)``: ``films`` a tuple of :class:`FilmArgs` (one per bearing, all of one numba type),
 ``rotor`` a :class:`RotorArgs`; built by :class:`~transient.models.rotor.content_form.ContentSystem`.
 """
@@ -36,7 +41,8 @@ from numba import njit
 
 from transient.models.journal.content_newton import cell_regime, film_newton_norm
 from transient.models.journal.kernels import content_universal, film_force, state_fields, stencil_flux
-from transient.models.rotor.kernels import block_jacobian, scatter_block
+from transient.models.rotor.kernels import (block_jacobian, scatter_block, scatter_tilted_block, tilt_gap,
+                                           tilted_block_jacobian)
 from transient.models.rotor.model import BlockMaps
 import transient.solvers.integrate.bdf2 as stepper
 from transient.solvers.integrate.bdf2 import newton_step
@@ -50,7 +56,9 @@ class FilmArgs(NamedTuple):
     per unit of the shaft's speed ratio: 1 a journal bearing, 0 a squeeze-film damper), the rotor coordinates
     its node moves with (``support``) and their weights ``ax``, ``ay`` (position), ``gx``, ``gy`` (force), the
     scatter ``maps`` into the system pattern, the film's own Jacobian ``local``, zeros ``up`` (its u') and
-    ``ym`` (n + 2: a block's content and position in the journal's layout, for the inversion)."""
+    ``ym`` (n + 2: a block's content and position in the journal's layout, for the inversion); a block that takes
+    its node's tilts (``tilted``): their weights ``aa``, ``ab`` (tilt groups) and ``ga``, ``gb`` (tilt forces) and
+    its ``tilt`` geometry (:mod:`transient.models.rotor.kernels`, with the tilt groups its gap is of)."""
 
     film: tuple
     offset: int
@@ -66,6 +74,12 @@ class FilmArgs(NamedTuple):
     local: np.ndarray
     up: np.ndarray
     ym: np.ndarray
+    tilted: bool
+    aa: np.ndarray
+    ab: np.ndarray
+    ga: np.ndarray
+    gb: np.ndarray
+    tilt: tuple
 
 
 class RotorArgs(NamedTuple):
@@ -127,15 +141,42 @@ def node_position(f, q):
 
 
 @njit(cache=True)
-def block_fields(y, f, X, Y):
+def node_tilt(f, q):
+    """The tilt groups (A, B) of the film block's node for the rotor coordinates ``q``: (0, 0) untilted."""
+    A = 0.0
+    B = 0.0
+    if f.tilted:
+        for j in range(f.support.size):
+            A += f.aa[j] * q[f.support[j]]
+            B += f.ab[j] * q[f.support[j]]
+    return A, B
+
+
+@njit(cache=True)
+def block_gap(f, q):
+    """A tilted block's gap at its node's tilts of ``q`` (its geometry's ``gap0``, :func:`tilt_gap`). Returns
+    whether the gap changed (nothing for an untilted block)."""
+    if not f.tilted:
+        return False
+    A, B = node_tilt(f, q)
+    held = f.tilt[4]
+    if A == held[0] and B == held[1]:
+        return False
+    tilt_gap(f.film[2].gap0, f.tilt, A, B)
+    return True
+
+
+@njit(cache=True)
+def block_fields(y, f, X, Y, moved):
     """The cell fields of block ``f``'s content ``y[offset:offset + n]`` at ``(X, Y)`` in its ``fields`` and its
     universal variable in ``work.u``: those :func:`rotor_to_state` left if they are this state's (the same position
-    and every free cell's ``H C(u)`` bitwise ``y``'s), else from the inversion ``u = C^-1(m / H)``."""
+    and tilt, ``moved`` False, and every free cell's ``H C(u)`` bitwise ``y``'s), else from the inversion
+    ``u = C^-1(m / H)``."""
     switch, _, geo, fields, extras, fv, work, tol, regime = f.film
     H, C = fields.H, fields.C
     free, u_fixed = fv.cells.free, fv.cells.u_fixed
     o, n = f.offset, f.n
-    held = X == work.xy[0] and Y == work.xy[1]
+    held = X == work.xy[0] and Y == work.xy[1] and not moved
     if held:
         for i in range(n):
             if free[i] and H[i] * C[i] != y[o + i]:
@@ -183,7 +224,7 @@ def rotor_residual(t, y, yp, out, args):
         f = films[k]
         switch, _, geo, fields, extras, fv, work, tol, regime = f.film
         X, Y = node_position(f, q)
-        block_fields(y, f, X, Y)
+        block_fields(y, f, X, Y, block_gap(f, q))
         R = fields.R
         sb = s * f.spin
         stencil_flux(as_read_only(work.u), fields, fv, R, sb)
@@ -195,6 +236,10 @@ def rotor_residual(t, y, yp, out, args):
             out[o + i] = area[i] * yp[o + i] + R[i] if free[i] else yp[o + i]
         for j in range(f.support.size):
             frc[f.support[j]] += f.gx[j] * fx + f.gy[j] * fy
+        if f.tilted:
+            fa, fb = film_force(fields.P, f.tilt[1], f.tilt[2], geo.area, f.sym)
+            for j in range(f.support.size):
+                frc[f.support[j]] += f.ga[j] * fa + f.gb[j] * fb
     for r in range(nq):
         out[Q0 + r] = yp[Q0 + r] - y[V0 + r]
         acc = -frc[r]
@@ -220,14 +265,19 @@ def rotor_jacobian(t, y, yp, cj, data, args):
         f = films[k]
         switch, _, geo, fields, extras, fv, work, tol, regime = f.film
         X, Y = node_position(f, q)
-        block_fields(y, f, X, Y)
+        block_fields(y, f, X, Y, block_gap(f, q))
         u = work.u
         sb = s * f.spin
-        block_jacobian(as_read_only(u), as_read_only(f.up), X, Y, 0.0, 0.0, sb, cj, f.local, switch, geo, fields,
-                       extras, fv, f.sym)
+        if f.tilted:
+            tilted_block_jacobian(as_read_only(u), as_read_only(f.up), X, Y, f.tilt[4][0], f.tilt[4][1], 0.0, 0.0, 0.0, 0.0,
+                                  sb, cj, f.local, switch, geo, fields, extras, fv, f.sym, f.tilt)
+            scatter_tilted_block(f.local, full, f.maps, f.ax, f.ay, f.aa, f.ab, f.gx, f.gy, f.ga, f.gb)
+        else:
+            block_jacobian(as_read_only(u), as_read_only(f.up), X, Y, 0.0, 0.0, sb, cj, f.local, switch, geo, fields,
+                           extras, fv, f.sym)
+            scatter_block(f.local, full, f.maps, f.ax, f.ay, f.gx, f.gy)
         if sb != 1.0:
             work.xy[0] = np.nan
-        scatter_block(f.local, full, f.maps, f.ax, f.ay, f.gx, f.gy)
         for i in range(f.n):
             regime[i] = cell_regime(u[i], switch.width)
     for j in range(rot.kin_q.size):
@@ -285,6 +335,7 @@ def rotor_to_state(z, y, args):
         switch, _, geo, fields, extras, fv, work, tol, regime = f.film
         o, n = f.offset, f.n
         X, Y = node_position(f, q)
+        block_gap(f, q)
         state_fields(as_read_only(z[o:o + n]), X, Y, switch, geo, fields, fv)
         H, C, u = fields.H, fields.C, work.u
         free, u_fixed = fv.cells.free, fv.cells.u_fixed
@@ -314,6 +365,8 @@ def rotor_from_state(y, z, args):
         switch, _, geo, fields, extras, fv, work, tol, regime = f.film
         o, n = f.offset, f.n
         X, Y = node_position(f, q)
+        if block_gap(f, q):
+            work.xy[0] = np.nan  # the fields are of the last rotor_to_state's tilt, not of this gap
         ym = f.ym
         for i in range(n):
             ym[i] = y[o + i]

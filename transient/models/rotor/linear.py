@@ -69,24 +69,28 @@ def check_matrices(mass, damping, gyroscopic, stiffness):
 
 
 def check_bearings(bearings, n):
-    """``[(ix, iy, K2x2, C2x2), ...]`` with dof indices in [0, n) and finite 2x2 coefficients."""
+    """``[(ix, iy, K2x2, C2x2), ...]`` with dof indices in [0, n) and finite 2x2 coefficients; a bearing with tilt
+    coefficients ``(ix, iy, itx, ity, K4x4, C4x4)`` (x, y, tilt about x, tilt about y)."""
     if bearings is None:
         return []
     out = []
     for b, item in enumerate(bearings):
         try:
-            ix, iy, kb, cb = item
+            *idx, kb, cb = item
+            if len(idx) not in (2, 4):
+                raise ValueError
         except (TypeError, ValueError):
-            raise ValueError(f"bearings[{b}] = {short_repr(item)} must be (ix, iy, K2x2 [N/m], C2x2 [N s/m])") from None
-        for name, i in (("ix", ix), ("iy", iy)):
+            raise ValueError(f"bearings[{b}] = {short_repr(item)} must be (ix, iy, K2x2 [N/m], C2x2 [N s/m]) or "
+                             "(ix, iy, itx, ity, K4x4, C4x4)") from None
+        for name, i in zip(("ix", "iy", "itx", "ity"), idx):
             if isinstance(i, bool) or not isinstance(i, (int, np.integer)) or not 0 <= i < n:
                 raise ValueError(f"bearings[{b}] {name} = {i!r} [-] is not a dof index; allowed: integers in "
                                  f"[0, {n - 1}]")
-        if ix == iy:
-            raise ValueError(f"bearings[{b}] ix = iy = {ix}: the bearing's x and y must be two different dofs")
-        kb = _square(f"bearings[{b}] K", kb, 2, "N/m")
-        cb = _square(f"bearings[{b}] C", cb, 2, "N s/m")
-        out.append((int(ix), int(iy), kb, cb))
+        if len(set(idx)) < len(idx):
+            raise ValueError(f"bearings[{b}] dofs = {tuple(idx)}: the bearing's dofs must be different dofs")
+        kb = _square(f"bearings[{b}] K", kb, len(idx), "N/m")
+        cb = _square(f"bearings[{b}] C", cb, len(idx), "N s/m")
+        out.append((*(int(i) for i in idx), kb, cb))
     return out
 
 
@@ -100,8 +104,8 @@ def assemble(mass, damping, gyroscopic, stiffness, bearings, omega):
     w = _speed("omega", omega)
     Ct = C + w * G
     Kt = K.copy()
-    for ix, iy, kb, cb in check_bearings(bearings, M.shape[0]):
-        idx = np.ix_([ix, iy], [ix, iy])
+    for *dofs, kb, cb in check_bearings(bearings, M.shape[0]):
+        idx = np.ix_(dofs, dofs)
         Kt[idx] += kb
         Ct[idx] += cb
     return M, Ct, Kt

@@ -16,7 +16,12 @@ State (dimensionless; ``L`` the smallest bearing clearance, ``tau = omega_ref t`
     angle:       phi' - s = 0
 
 (``t_x,b``, ``t_y,b``: the rows of the rotor's basis giving the x, y displacement of the bearing node; the
-virtual work of the film force ``F_b = p0 R^2 Fbar_b`` on them is its generalised force). The Jacobian
+virtual work of the film force ``F_b = p0 R^2 Fbar_b`` on them is its generalised force). With
+``tilt_coupling`` a film also takes its node's tilts as the tilt groups ``A_b = (R / C_b) r_y,b . q L``,
+``B_b = -(R / C_b) r_x,b . q L`` (``r_x,b``, ``r_y,b`` the basis rows of the node's tx, ty): its gap
+``gap_b + A_b zbar cos + B_b zbar sin + X_b cos + Y_b sin`` (``gap_b`` the bush's static misalignment), the rates
+``A_b'``, ``B_b'`` in its squeeze term, and the moments ``(M_x, M_y) = p0 R^3 (-Fb_b, Fa_b)`` on the tilts
+(:mod:`transient.models.journal.tilt`, the tilted blocks of :mod:`transient.models.rotor.kernels`). The Jacobian
 ``dF/dy + cj dF/dy'`` is analytic and sparse: each film's 5-point block with its coupling columns to the
 rotor coordinates of its node, the dense rotor rows as the border (:func:`system_pattern`).
 """
@@ -29,14 +34,17 @@ import numpy as np
 import scipy.sparse as sp
 
 from transient.models.journal.film import read_only
-from transient.models.rotor.kernels import block_jacobian, block_residual, scatter_block
+from transient.models.rotor.kernels import (block_jacobian, block_residual, scatter_block, scatter_tilted_block,
+                                           tilt_gap, tilted_block_jacobian, tilted_block_residual)
 
 
 class BlockMaps(NamedTuple):
     """Where a film block's local Jacobian goes in the system's CSC data: the cell block (``src`` -> ``dst``; a
     groove cell's row only its diagonal), the local positions of ``dF_i/dX``, ``dF_i/dY`` of the free cells
     (``col_x``, ``col_y``) and of ``dFx/du_i``, ``dFy/du_i`` of every cell (``row_fx``, ``row_fy``), the system
-    positions of the coupling (free cells, m) and of the border (cells, m)."""
+    positions of the coupling (free cells, m) and of the border (cells, m); a tilted block's tilt columns
+    ``col_a``, ``col_b`` (free cells) and its tilt-force rows ``row_fa``, ``row_fb`` (every cell; local extra
+    columns 2, 3 and rows 0, 1, :func:`~transient.models.rotor.kernels.tilted_block_jacobian`)."""
 
     src: np.ndarray
     dst: np.ndarray
@@ -46,6 +54,10 @@ class BlockMaps(NamedTuple):
     row_fx: np.ndarray
     row_fy: np.ndarray
     border: np.ndarray
+    col_a: np.ndarray
+    col_b: np.ndarray
+    row_fa: np.ndarray
+    row_fb: np.ndarray
 
 
 class BearingBlock:
@@ -54,16 +66,32 @@ class BearingBlock:
     ``gx``, ``gy`` (the generalised force per unit of ``Fbar`` in the momentum rows); ``spin``: 1 for a journal
     bearing (its journal turns with the shaft), 0 for a squeeze-film damper (its journal is pinned: no Couette flow)."""
 
-    def __init__(self, node, bearing, film, offset, translation, length, omega_ref, spin=1.0):
+    def __init__(self, node, bearing, film, offset, translation, length, omega_ref, spin=1.0, rotation=None):
         self.node, self.bearing, self.film, self.offset, self.spin = node, bearing, film, offset, spin
         self.n = film.n
-        support = np.flatnonzero(np.any(translation != 0.0, axis=0))
+        moving = translation if rotation is None else np.vstack([translation, rotation])
+        support = np.flatnonzero(np.any(moving != 0.0, axis=0))
         self.support = support
         self.ax = np.ascontiguousarray(translation[0, support] * length / bearing.clearance)
         self.ay = np.ascontiguousarray(translation[1, support] * length / bearing.clearance)
         unit = film.force_scale / (length * omega_ref ** 2)
         self.gx = np.ascontiguousarray(translation[0, support] * unit)
         self.gy = np.ascontiguousarray(translation[1, support] * unit)
+        self.tilted = rotation is not None
+        self.static_tilt = film.tilt  # the bush's misalignment as the film's tilt groups (a, b)
+        if self.tilted:  # A = (t_y R / C) . q, B = -(t_x R / C) . q; the moments' virtual work on the tilts
+            R = bearing.radius
+            self.aa = np.ascontiguousarray(rotation[1, support] * length * R / bearing.clearance)
+            self.ab = np.ascontiguousarray(-rotation[0, support] * length * R / bearing.clearance)
+            self.ga = np.ascontiguousarray(rotation[1, support] * unit * R)
+            self.gb = np.ascontiguousarray(-rotation[0, support] * unit * R)
+            zbar = np.ascontiguousarray(film.grid.zc, dtype=float)
+            self.tilt = (film.geo.gap0.copy(), np.ascontiguousarray(zbar * film.cosp),
+                         np.ascontiguousarray(zbar * film.sinp), zbar, np.zeros(2))  # held: the gap at (0, 0)
+        else:
+            self.aa = self.ab = self.ga = self.gb = np.zeros(0)
+            self.tilt = (np.zeros(0), np.zeros(0), np.zeros(0), np.zeros(0), np.zeros(2))
+        self.half = 0.5 * bearing.length / bearing.radius
         self.local = np.zeros(film.op.nnz)
         self.maps: BlockMaps | None = None
 
@@ -71,6 +99,36 @@ class BearingBlock:
         """(X, Y) of the journal [C_b] for the rotor coordinates q~ (or their rates)."""
         qs = q[self.support]
         return float(self.ax @ qs), float(self.ay @ qs)
+
+    def tilt_groups(self, q):
+        """The node's tilt groups (A, B) [C_b per R] for the rotor coordinates q~ (or their rates); (0, 0) when its
+        film does not take the tilts."""
+        if not self.tilted:
+            return 0.0, 0.0
+        qs = q[self.support]
+        return float(self.aa @ qs), float(self.ab @ qs)
+
+    def set_gap(self, q):
+        """The film's gap at the node's tilts of q~ (nothing for a block without them): before a film evaluation
+        outside the system's residual and Jacobian (the steady solves, the samples)."""
+        if self.tilted:
+            tilt_gap(self.film.geo.gap0, self.tilt, *self.tilt_groups(q))
+
+    def reach2(self, q) -> float:
+        """The square of the journal's largest eccentricity ratio over the bearing length at q~: at the mid-plane
+        for an aligned film, else at the worse end (the bush's misalignment and the node's tilts)."""
+        X, Y = self.position(q)
+        a, b = self.static_tilt
+        A, B = self.tilt_groups(q)
+        a, b = (a + A) * self.half, (b + B) * self.half
+        if a == 0.0 and b == 0.0:
+            return X * X + Y * Y
+        return max((X - a) ** 2 + (Y - b) ** 2, (X + a) ** 2 + (Y + b) ** 2)
+
+    def moment(self, fa, fb):
+        """The film's moments (M_x, M_y) [N m] of its tilt forces (Fa, Fb)."""
+        scale = self.film.force_scale * self.bearing.radius
+        return -fb * scale, fa * scale
 
 
 def system_pattern(blocks, nq, n_total, q_mask, v_mask, phi_rows):
@@ -126,11 +184,16 @@ def system_pattern(blocks, nq, n_total, q_mask, v_mask, phi_rows):
     where = np.empty(r.size, dtype=np.int64)
     where[m.data.astype(np.int64) - 1] = np.arange(m.nnz)
     for b, (src, ids_cells, ids_coup, ids_border, st) in zip(blocks, block_ids):
+        free = b.film.op.free
         b.maps = BlockMaps(np.ascontiguousarray(src, dtype=np.int64), where[ids_cells],
-                           np.ascontiguousarray(st.pos_col_extra[:b.n, 0][b.film.op.free]),
-                           np.ascontiguousarray(st.pos_col_extra[:b.n, 1][b.film.op.free]),
+                           np.ascontiguousarray(st.pos_col_extra[:b.n, 0][free]),
+                           np.ascontiguousarray(st.pos_col_extra[:b.n, 1][free]),
                            np.ascontiguousarray(where[ids_coup]), np.ascontiguousarray(st.pos_row_extra[2, :b.n]),
-                           np.ascontiguousarray(st.pos_row_extra[3, :b.n]), np.ascontiguousarray(where[ids_border]))
+                           np.ascontiguousarray(st.pos_row_extra[3, :b.n]), np.ascontiguousarray(where[ids_border]),
+                           np.ascontiguousarray(st.pos_col_extra[:b.n, 2][free]),
+                           np.ascontiguousarray(st.pos_col_extra[:b.n, 3][free]),
+                           np.ascontiguousarray(st.pos_row_extra[0, :b.n]),
+                           np.ascontiguousarray(st.pos_row_extra[1, :b.n]))
     pattern = sp.csc_matrix((np.ones(m.nnz), m.indices, m.indptr), shape=m.shape)
     return pattern, tuple(where[x] for x in (kin_q, kin_v, mom_q, mom_v, mom_phi, phi_phi))
 
@@ -154,7 +217,8 @@ class SystemDAE:
         for node, bearing in system.bearings.items():
             film = bearing.film(speed_ref_rpm)
             spin = 0.0 if node in system.dampers else 1.0
-            self.blocks.append(BearingBlock(node, bearing, film, off, rotor.translation(node), L, w, spin))
+            rotation = system.rotation(node) if system.tilt_coupling else None
+            self.blocks.append(BearingBlock(node, bearing, film, off, rotor.translation(node), L, w, spin, rotation))
             off += film.n
         self.n_film = off
         self.nq = nq = rotor.n
@@ -176,6 +240,7 @@ class SystemDAE:
                                                       self.phi_rows)
         self.pattern.sort_indices()
         self.forces = np.zeros((len(self.blocks), 2))
+        self.tilt_forces = np.zeros((len(self.blocks), 2))  # (Fa, Fb) of the tilted blocks (kernels.py)
 
     # ------------------------------------------------------------------------------------------
     def rotor_force(self, tau, y, s, ds):
@@ -197,6 +262,16 @@ class SystemDAE:
             Xd, Yd = b.position(qp)
             fl = b.film
             o = b.offset
+            if b.tilted:
+                A, B = b.tilt_groups(q)
+                Ad, Bd = b.tilt_groups(qp)
+                fx, fy, fa, fb = tilted_block_residual(y[o:o + b.n], yp[o:o + b.n], X, Y, A, B, Xd, Yd, Ad, Bd,
+                                                       s * b.spin, out[o:o + b.n], fl.switch, fl.geo, fl.fields, fl.fv,
+                                                       fl.sym, b.tilt)
+                self.forces[k] = fx, fy
+                self.tilt_forces[k] = fa, fb
+                f[b.support] += b.gx * fx + b.gy * fy + b.ga * fa + b.gb * fb
+                continue
             fx, fy = block_residual(y[o:o + b.n], yp[o:o + b.n], X, Y, Xd, Yd, s * b.spin, out[o:o + b.n], fl.switch,
                                     fl.geo, fl.fields, fl.fv, fl.sym)
             self.forces[k] = fx, fy
@@ -214,6 +289,13 @@ class SystemDAE:
             Xd, Yd = b.position(qp)
             fl = b.film
             o = b.offset
+            if b.tilted:
+                A, B = b.tilt_groups(q)
+                Ad, Bd = b.tilt_groups(qp)
+                tilted_block_jacobian(y[o:o + b.n], yp[o:o + b.n], X, Y, A, B, Xd, Yd, Ad, Bd, s * b.spin, cj, b.local,
+                                      fl.switch, fl.geo, fl.fields, fl.extras, fl.fv, fl.sym, b.tilt)
+                scatter_tilted_block(b.local, data, b.maps, b.ax, b.ay, b.aa, b.ab, b.gx, b.gy, b.ga, b.gb)
+                continue
             block_jacobian(y[o:o + b.n], yp[o:o + b.n], X, Y, Xd, Yd, s * b.spin, cj, b.local, fl.switch, fl.geo,
                            fl.fields, fl.extras, fl.fv, fl.sym)
             scatter_block(b.local, data, b.maps, b.ax, b.ay, b.gx, b.gy)

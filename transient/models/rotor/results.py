@@ -70,10 +70,13 @@ class RotorEquilibrium(_Nodes, SteadyResult):
     """The static equilibrium of a rotor on journal bearings: ``displacement`` [m] (n_nodes, 2) of every node,
     ``bearing_force`` [N] (n_bearings, 2) the film force on the journal, ``bearing_load`` [N] its magnitude (the
     load each bearing carries), ``eccentricity_ratio`` and ``attitude_angle_deg`` per bearing (from the bearing's
-    load line to the line of centres, in the direction of rotation), ``state`` the system's dimensionless state."""
+    load line to the line of centres, in the direction of rotation), ``state`` the system's dimensionless state;
+    ``bearing_moment`` [N m] (n_bearings, 2) the film's moment on the journal about the bearing centre (about x,
+    about y) where the films take the shaft's tilts (``RotorBearingSystem(tilt_coupling=True)``), else None."""
 
     shapes = {"displacement": ("nodes", 2), "bearing_force": ("bearing_nodes", 2), "bearing_load": ("bearing_nodes",),
-              "eccentricity_ratio": ("bearing_nodes",), "attitude_angle_deg": ("bearing_nodes",), "state": (None,)}
+              "eccentricity_ratio": ("bearing_nodes",), "attitude_angle_deg": ("bearing_nodes",), "state": (None,),
+              "bearing_moment": ("bearing_nodes", 2)}
     labels = {"bearing_nodes": "nodes"}
 
     displacement: np.ndarray = quantity("m", None)
@@ -85,18 +88,21 @@ class RotorEquilibrium(_Nodes, SteadyResult):
     bearing_nodes: list = None
     speed_rpm: float = quantity("rpm", 0.0)
     state: np.ndarray = quantity("-", None, repr=False)
+    bearing_moment: np.ndarray | None = quantity("N m", None)
 
 
 @result_type
 class UnbalanceResponse(_Nodes, StatusResult):
     """The linear unbalance response at one speed: ``displacement`` [m] (n_nodes, 2) complex amplitudes with
     ``x(t) = Re(X e^{i Omega t})`` (``position(node)``); ``stiffness`` [N/m] and ``damping`` [N s/m]
-    (n_bearings, 2, 2) each bearing's quasi-static coefficients at its static load; ``linearisation`` how the
+    (n_bearings, 2, 2) each bearing's quasi-static coefficients at its static load ((n_bearings, 4, 4) in (x, y,
+    tx, ty) with ``tilt_coupling``: N/m, N/rad, N m/m, N m/rad and their rates); ``linearisation`` how the
     bearings entered: ``"film states"`` (the system linearised with the films' own states, the default) or
     ``"K and C"`` (the quasi-static coefficients above)."""
 
     time_axis = None
-    shapes = {"displacement": ("nodes", 2), "stiffness": ("bearing_nodes", 2, 2), "damping": ("bearing_nodes", 2, 2)}
+    shapes = {"displacement": ("nodes", 2), "stiffness": ("bearing_nodes", None, None),
+              "damping": ("bearing_nodes", None, None)}
     labels = {"bearing_nodes": "nodes"}
     displacement: np.ndarray = quantity("m", None)
     stiffness: np.ndarray = quantity("N/m", None)

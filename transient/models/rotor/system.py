@@ -7,6 +7,9 @@ bulk included) driven by the motion of its rotor node; its force enters the roto
 
     M q'' + (C + Omega G) q' + K q = f_bearings + f_unbalance(t) + M g
 
+With ``tilt_coupling=True`` the films also take the nodes' tilts and their moments act on them
+(:mod:`transient.models.rotor.model`).
+
 The static equilibrium solves the steady film of every bearing together with the shaft's statics (Newton on
 the whole system, started from the bearing loads of the shaft on rigid supports); the linear analyses use each
 bearing's own stiffness and damping (``JournalBearing.coefficients``) at the load it carries there (Lund's
@@ -33,6 +36,8 @@ from transient.models.journal.bearing import (FILM_BYTES_PER_CELL, GRID_ADVICE, 
                                               NoEquilibriumError, bearing_memory, check_speed)
 from transient.compile_notice import announce
 from transient.models.journal.film import read_only
+from transient.models.journal.kernels import film_force
+from transient.models.journal.tilt import sensitivity, si_coefficients
 from transient.models.damper.damper import SqueezeFilmDamper
 from transient.models.journal.orbit import BDF2_MIN_STEPS
 from transient.models.journal.time_domain import check_time_domain
@@ -85,9 +90,15 @@ class RotorBearingSystem:
     unbalance : ``[(node, m e [kg m], phase [deg]), ...]``: each unbalance's force ``m e Omega^2`` rotates with
         the shaft from ``phase`` (measured from +x in the direction of rotation at t = 0).
     gravity [m/s^2] : a number (acting along +x, the bearings' load direction) or an (x, y) vector.
+    tilt_coupling : True: every film takes its node's tilts ``tx``, ty`` [rad] (and their rates in the squeeze term)
+        relative to its bush (a bearing's static ``misalignment`` included) and its moments enter the node's tilt
+        equations (:mod:`transient.models.journal.tilt`; the rotor needs the dofs ``("x", "y", "tx", "ty")``, the
+        films are modelled over the whole length, a Gecim bulk is not taken); the linear analyses then use each
+        bearing's 4 x 4 coefficients. False (default): the films see the node's x and y only (a misaligned bush
+        keeps its static tilt; the film's moment does not act on the rotor).
     """
 
-    def __init__(self, rotor: Rotor, bearings: dict, unbalance=(), gravity=9.81):
+    def __init__(self, rotor: Rotor, bearings: dict, unbalance=(), gravity=9.81, tilt_coupling=False):
         self.rotor = check_instance("rotor", rotor, Rotor, "a transient Rotor (Rotor(...), Rotor.example(), "
                                     "Rotor.from_ross(...))")
         if not isinstance(bearings, dict) or not bearings:
@@ -101,8 +112,13 @@ class RotorBearingSystem:
                 raise ValueError(f"bearings: node {node!r} does not move in this rotor's coordinates")
         for node, b in bearings.items():
             check_time_domain("RotorBearingSystem", b, f"bearings[{node!r}] ")
+        self.tilt_coupling = check_bool("tilt_coupling", tilt_coupling)
+        if self.tilt_coupling:
+            self._check_tilt_coupling(bearings)
         self.dampers = {n: b for n, b in bearings.items() if isinstance(b, SqueezeFilmDamper)}
         self.bearings = {n: b.bearing if n in self.dampers else b for n, b in bearings.items()}  # dampers: their films
+        if self.tilt_coupling:  # a tilted gap: the film of the whole length
+            self.bearings = {n: b.whole_length() for n, b in self.bearings.items()}
         self.stiffness = rotor.stiffness.copy()  # with the dampers' centring springs
         for node, d in self.dampers.items():
             if d.centring_stiffness:
@@ -121,6 +137,21 @@ class RotorBearingSystem:
     @property
     def bearing_nodes(self) -> list:
         return list(self.bearings)
+
+    def _check_tilt_coupling(self, bearings):
+        """``tilt_coupling=True`` needs the nodes' tilts and films whose tilt columns the kernels write."""
+        if self.rotor.dofs != ("x", "y", "tx", "ty"):
+            raise ValueError(f"tilt_coupling = True with a rotor of dofs = {self.rotor.dofs}; allowed: a rotor with "
+                             "the dofs (\"x\", \"y\", \"tx\", \"ty\") (or tilt_coupling=False)")
+        for node, b in bearings.items():
+            if getattr(b, "shear_thinning", False):
+                raise ValueError(f"bearings[{node!r}] rheology = Gecim(...) with tilt_coupling = True; allowed: a "
+                                 "Newtonian bulk (with or without boundary layers), or tilt_coupling=False")
+
+    def rotation(self, node) -> np.ndarray:
+        """(2, n): the rows mapping q to the tilts (tx, ty) [rad] of ``node``."""
+        r = self.rotor
+        return r.basis[[r.dof(node, "tx"), r.dof(node, "ty")]]
 
     def _check_unbalance(self, unbalance) -> list:
         """``[(node, m e, phase), ...]`` checked: each a rotor node, ``m e`` in [0, 1e3] kg m, the phase in
@@ -201,10 +232,14 @@ class RotorBearingSystem:
 
     def _equilibrium_result(self, dae, y, speed) -> RotorEquilibrium:
         q, xy = dae.split(y)
-        forces, ecc, att = [], [], []
+        forces, ecc, att, moments = [], [], [], []
+        qt = np.asarray(y[dae.Q0:dae.V0])
         for b, (X, Y) in zip(dae.blocks, xy):
             fl = b.film
+            b.set_gap(qt)
             F = np.array(fl.force(y[b.offset:b.offset + b.n], X, Y)) * fl.force_scale
+            if b.tilted:
+                moments.append(b.moment(*film_force(fl.P, *b.tilt[1:3], fl.area, fl.sym)))
             forces.append(F)
             ecc.append(np.hypot(X, Y))
             load_dir = np.arctan2(-F[1], -F[0])
@@ -214,6 +249,7 @@ class RotorBearingSystem:
                                 bearing_load=np.hypot(forces[:, 0], forces[:, 1]), eccentricity_ratio=np.array(ecc),
                                 attitude_angle_deg=np.array(att), nodes=list(self.rotor.nodes),
                                 bearing_nodes=self.bearing_nodes, speed_rpm=speed, state=np.array(y),
+                                bearing_moment=np.array(moments) if self.tilt_coupling else None,
                                 success=True, message="converged")
 
     def _node_displacements(self, q) -> np.ndarray:
@@ -231,6 +267,8 @@ class RotorBearingSystem:
         ks = self._support_stiffness()
         rhs = self.gravity_vector @ r.gravity_load
         speed = s * dae.speed_ref_rpm
+        for blk in dae.blocks:
+            blk.set_gap(np.zeros(dae.nq))  # the films' static gap (the node's tilts come with the Newton)
         for node, W in self.static_loads().items():
             b = self.bearings[node]
             blk = next(k for k in dae.blocks if k.node == node)
@@ -326,12 +364,13 @@ class RotorBearingSystem:
         finally:
             dae.speed, dae.unbalance = saved
         y = res.x
-        for b, (X, Y) in zip(dae.blocks, dae.split(y)[1]):
+        for b in dae.blocks:
             lim = b.bearing.max_eccentricity_ratio
-            if np.hypot(X, Y) >= lim:
+            e = float(np.sqrt(b.reach2(y[dae.Q0:dae.V0])))  # at the worse end of a tilted film
+            if e >= lim:
                 raise NoEquilibriumError(f"the bearing at node {b.node} cannot carry its load at speed_rpm = "
                                          f"{s * dae.speed_ref_rpm:.6g} [rpm]: the journal reaches e/C = "
-                                         f"{np.hypot(X, Y):.4f}; allowed: below {lim:.4g}")
+                                         f"{e:.4f}; allowed: below {lim:.4g}")
         return y
 
     # ------------------------------------------------------------------------------------------
@@ -340,12 +379,34 @@ class RotorBearingSystem:
         load it carries in the static equilibrium: ``{node: (K, C)}`` (``JournalBearing.coefficients``)."""
         self._refuse_dampers()
         eq = self.equilibrium(speed_rpm) if equilibrium is None else equilibrium
+        if self.tilt_coupling:
+            return self._tilt_coefficients(speed_rpm, eq)
         out, done = {}, {}
         for k, node in enumerate(self.bearing_nodes):
             key = (id(self.bearings[node]), float(eq.bearing_load[k]))  # a bearing shared at equal loads: once
             if key not in done:
                 done[key] = self.bearings[node].coefficients(key[1], speed_rpm)
             out[node] = done[key]
+        return out
+
+    def _tilt_coefficients(self, speed_rpm, eq) -> dict:
+        """Each bearing's 4 x 4 K [N/m, N/rad, N m/m, N m/rad] and C (their rates) in (x, y, tx, ty) at its film of
+        the system's static equilibrium ``eq`` (position and tilt as they are there, the rotor's frame):
+        :func:`~transient.models.journal.tilt.sensitivity` of that film."""
+        dae = self.dae(check_speed(speed_rpm))
+        y = np.asarray(eq.state)
+        q = y[dae.Q0:dae.V0]
+        out = {}
+        for b in dae.blocks:
+            X, Y = b.position(q)
+            A, B = b.tilt_groups(q)
+            fl = b.film
+            a, c = b.static_tilt
+            b.set_gap(q)
+            fl.tilt = (a + A, c + B)  # the film's whole tilt for the tilt view of the sensitivity
+            _, dF_dq, dF_dv = sensitivity(fl, read_only(y[b.offset:b.offset + b.n]), X, Y)
+            out[b.node] = si_coefficients(dF_dq, dF_dv, fl.force_scale, b.bearing.radius, b.bearing.clearance,
+                                          fl.omega)
         return out
 
     def _refuse_dampers(self):
@@ -362,13 +423,13 @@ class RotorBearingSystem:
         r = self.rotor
         bearings = []
         for node, (kb, cb) in coefficients.items():
-            T = r.translation(node)
+            T = r.translation(node) if kb.shape[0] == 2 else np.vstack([r.translation(node), self.rotation(node)])
             unit = [np.flatnonzero(row) for row in T]
             if not all(u.size == 1 and row[u[0]] == 1.0 for u, row in zip(unit, T)):
-                raise ValueError(f"bearing node {node}: its x and y are not coordinates of this reduced rotor; "
-                                 "allowed: a nodal rotor or one reduced keeping the bearing nodes' x and y "
-                                 "(Rotor.from_ross(..., modes=) does)")
-            bearings.append((int(unit[0][0]), int(unit[1][0]), kb, cb))
+                raise ValueError(f"bearing node {node}: its x and y{' and tilts' if kb.shape[0] == 4 else ''} are not "
+                                 "coordinates of this reduced rotor; allowed: a nodal rotor or one reduced keeping the "
+                                 "bearing nodes' x and y (Rotor.from_ross(..., modes=) does)")
+            bearings.append((*(int(u[0]) for u in unit), kb, cb))
         return r.mass, r.damping, r.gyroscopic, r.stiffness, bearings
 
     def unbalance_response(self, speed_rpm, film_states=True) -> UnbalanceResponse:
@@ -548,7 +609,7 @@ class RotorBearingSystem:
 
         def journals(y_):
             q = y_[dae.Q0:dae.V0]
-            return [(f"journal at bearing node {b.node}", float(np.hypot(*b.position(q))),
+            return [(f"journal at bearing node {b.node}", float(np.sqrt(b.reach2(q))),
                      b.bearing.max_eccentricity_ratio) for b in dae.blocks]
 
         run.check_state(y, dae.n, "system", journals)
@@ -559,8 +620,7 @@ class RotorBearingSystem:
             def events(t, yy, out):  # the rotor's states sit at the same places in both layouts
                 q = yy[dae.Q0:dae.V0]
                 for k, b in enumerate(dae.blocks):
-                    X, Y = b.position(q)
-                    out[k] = limits[k] - (X * X + Y * Y)
+                    out[k] = limits[k] - b.reach2(q)
         n_events = len(dae.blocks) if events else 0
         solver = dict(method=method, rtol=rtol, atol=dae.absolute_tolerance(atol))
         to_run = universal = None
@@ -584,9 +644,9 @@ class RotorBearingSystem:
 
         def touch_message(tau, y_):
             q = np.asarray(y_)[dae.Q0:dae.V0]
-            gaps = [limits[k] - np.sum(np.square(b.position(q))) for k, b in enumerate(dae.blocks)]
+            gaps = [limits[k] - b.reach2(q) for k, b in enumerate(dae.blocks)]
             b = dae.blocks[int(np.argmin(gaps))]
-            return (f"the journal at bearing node {b.node} touches its bearing (e/C = {np.hypot(*b.position(q)):.4f}, "
+            return (f"the journal at bearing node {b.node} touches its bearing (e/C = {np.sqrt(b.reach2(q)):.4f}, "
                     f"touch_gap = {run.touch_gap:g}) at t = {tau / w:.6g} s")
 
         key = dict(self.parameters(), speed=_speed_key(speed_fn, t0, t_end), reference_speed_rpm=ref, method=method,
@@ -611,6 +671,7 @@ class RotorBearingSystem:
             forces = []
             for b in dae.blocks:
                 X, Y = b.position(q)
+                b.set_gap(q)
                 F = b.film.force(y[b.offset:b.offset + b.n], X, Y)
                 forces.append((F[0] * b.film.force_scale, F[1] * b.film.force_scale))
             return dict(speed=speed(tau)[0] * dae.speed_ref_rpm, d=self._node_displacements(q * dae.L), f=forces)
@@ -762,7 +823,8 @@ class RotorBearingSystem:
                     bearings={str(n): dict(b.parameters(), **({} if n not in self.dampers else dict(
                         damper=True, centring_stiffness=self.dampers[n].centring_stiffness)))
                         for n, b in self.bearings.items()},
-                    unbalance=[list(u) for u in self.unbalance], gravity=list(self.gravity_vector))
+                    unbalance=[list(u) for u in self.unbalance], gravity=list(self.gravity_vector),
+                    **(dict(tilt_coupling=True) if self.tilt_coupling else {}))
 
 
 class Linearisation:
