@@ -92,16 +92,22 @@ def bdf2_jacobian(t, y, yp, cj, data, args):
     (likewise Y, VY with sin); groove cells (``z`` holds m): ``dF_i/dm_i = cj``. Keeps the cells' regimes
     (:func:`cell_regime`) at this Jacobian."""
     switch, rotor, geo, fields, extras, fv, work, tol, regime = args
+    fields_of(y, args)
+    stencil_flux_jacobian(switch, geo, fields, extras, fv, data, 1.0)
+    content_columns(cj, rotor, geo, fields, extras, fv, work.u, switch.width, regime, data)
+
+
+@njit(cache=True)
+def content_columns(cj, rotor, geo, fields, extras, fv, u, width, regime, data):
+    """The content form's own Jacobian entries on top of the film's flux columns (:func:`bdf2_jacobian`, and the
+    thermal orbit's): the storage ``cj A_i (H_i D_i, C_i cos, C_i sin)`` of the free cells (``cj`` on groove cells),
+    the film force's pressure columns in the rotor rows, the rotor's own block; keeps each cell's regime."""
     kappa, wbar, ebar, sym = rotor
     cosp, sinp, area = geo.cosp, geo.sinp, geo.area
     H, dP, C, D = fields.H, fields.dP, fields.C, fields.D
     pos_row, pos_col = extras.pos_row, extras.pos_col
     free, pos_c = fv.cells.free, fv.cells.pos_c
-    u = work.u
-    width = switch.width
     n = free.size
-    fields_of(y, args)
-    stencil_flux_jacobian(switch, geo, fields, extras, fv, data, 1.0)
     for i in range(n):
         if free[i]:
             a = cj * area[i]

@@ -44,7 +44,7 @@ from numba import njit
 import transient.solvers.integrate.bdf2 as stepper
 from transient.checks import check_range
 from transient.fv.reynolds import jacobian_kernel
-from transient.models.journal.content_newton import (bdf2_from_state, bdf2_to_state, cell_regime, fields_of,
+from transient.models.journal.content_newton import (bdf2_from_state, bdf2_to_state, content_columns, fields_of,
                                                      film_newton_norm)
 from transient.models.journal.film import read_only
 from transient.models.journal.kernels import N_ROTOR, film_force, position_derivatives, state_fields, stencil_flux
@@ -122,14 +122,11 @@ def thermal_jacobian(t, y, yp, cj, data, args):
     :func:`scale_fields` and their position derivatives times the fluidity (Poiseuille) and ``s`` (Couette)."""
     base, flu, drive = args
     switch, rotor, geo, fields, extras, fv, work, tol, regime = base
-    kappa, wbar, ebar, sym = rotor
-    cosp, sinp, area = geo.cosp, geo.sinp, geo.area
+    cosp, sinp = geo.cosp, geo.sinp
     H, P, dP, C, D, dD, k, c, zero, R = fields
     dk_dq, dc_dq, no_dq, pos_row, pos_col, indices, scale = extras
     faces, boundary, cells, face_k, bulk = fv
-    free, pos_c = cells.free, cells.pos_c
-    u = work.u
-    n = free.size
+    n = cells.free.size
     fields_of(y, base)
     s = shaft(t, drive)[0]
     scale_fields(fields, flu, s, switch)
@@ -140,21 +137,7 @@ def thermal_jacobian(t, y, yp, cj, data, args):
             dc_dq[e, i] *= s
     jacobian_kernel(P, dP, C, D, k, zero, k, zero, c, zero, dk_dq[:2], dk_dq[:2], dc_dq[:2], no_dq[:2], True,
                     faces, boundary, cells, face_k, pos_col, data)
-    for i in range(n):
-        if free[i]:
-            a = cj * area[i]
-            data[pos_c[i]] += a * H[i] * D[i]
-            data[pos_col[i, 0]] += a * C[i] * cosp[i]
-            data[pos_col[i, 1]] += a * C[i] * sinp[i]
-        else:
-            data[pos_c[i]] = cj
-        g = -kappa * sym * dP[i] * area[i]
-        data[pos_row[2, i]] = g * cosp[i]
-        data[pos_row[3, i]] = g * sinp[i]
-        regime[i] = cell_regime(u[i], switch.width)
-    for r in range(N_ROTOR):
-        for e in range(N_ROTOR):
-            data[pos_row[r, n + e]] = cj if r == e else (-1.0 if e == r + 2 else 0.0)
+    content_columns(cj, rotor, geo, fields, extras, fv, work.u, switch.width, regime, data)
 
 
 @njit(cache=True)
@@ -436,6 +419,8 @@ def thermal_parts(orbit, parts, run, record, record_from_revolution, speed, temp
         r.heat_balance = tr.heat_balance()
         return r
 
-    solver = dict(parts.solver, options={"bdf2": tr.model, "max_step_scale": tr.max_step_scale})
+    # the orbit's own BDF settings (order, travel bound) with the thermal interval's model and step cap
+    solver = dict(parts.solver, options={**parts.solver.get("options", {}), "bdf2": tr.model,
+                                         "max_step_scale": tr.max_step_scale})
     return replace(parts, problem_at=lambda y, tau: tr.problem_at(y, tau, min(tau + chunk, tau_run_end), events),
                    solver=solver, sample=sample, result=result, sparse=(*parts.sparse, *THERMAL_FIELDS))
