@@ -123,7 +123,7 @@ def test_orbit_checkpoint_names_a_changed_run_setting(tmp_path):
     path = tmp_path / "orbit.npz"
     o.run(1.0, recording=Recording(outputs_per_revolution=8), long_run=LongRun(chunk_revolutions=0.5, checkpoint=path))
     lr = LongRun(chunk_revolutions=0.5, checkpoint=path, resume=True)
-    for change, name in ((dict(integration=Integration(rtol=1e-7)), "rtol"),
+    for change, name in ((dict(integration=Integration(method="bdf2", rtol=1e-7)), "rtol"),
                          (dict(recording=Recording(outputs_per_revolution=4)), "outputs_per_revolution"),
                          (dict(recording=Recording(outputs_per_revolution=8, record=("force",))), "record"),
                          (dict(touch_gap=1e-2), "touch_gap")):

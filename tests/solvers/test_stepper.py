@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 from transient.solvers.integrate import Problem, solve
-from transient.solvers.integrate.stepper import (BDF2, StepSolve, _history, bdf_coefficients, divided_difference,
+from transient.solvers.integrate.stepper import (BDF2, StepBounds, StepSolve, _history, bdf_coefficients, divided_difference,
                                                  extrapolate)
 from transient import Steps
 
@@ -54,7 +54,7 @@ def test_history_is_exact_for_quadratics():
 def test_fixed_steps_converge_at_second_order():
     errors = []
     for n in (40, 80, 160):
-        s = BDF2(LinearStep(), np.array([1.0]), 0.0, 2.0, rtol=1e-3, atol=1e-6, fixed_step=2.0 / n)
+        s = BDF2(LinearStep(), np.array([1.0]), 0.0, 2.0, rtol=1e-3, atol=1e-6, bounds=StepBounds(fixed_step=2.0 / n))
         while s.t < 2.0:
             assert s.step() is None
         assert s.t == 2.0 and s.n_steps == n
@@ -101,8 +101,8 @@ def test_a_scaled_cap_is_scaled_at_each_step():
     step's start (a cap in shaft angle on a run whose speed changes), so every step ends within the scaled cap and
     the steps follow it."""
     scale = lambda t: 1.0 if t < 1.0 else 3.0  # noqa: E731
-    s = BDF2(LinearStep(), np.array([1.0]), 0.0, 2.0, rtol=1e-1, atol=1e-1, max_step=(0.01, scale))
-    plain = BDF2(LinearStep(), np.array([1.0]), 0.0, 2.0, rtol=1e-1, atol=1e-1, max_step=0.01)
+    s = BDF2(LinearStep(), np.array([1.0]), 0.0, 2.0, rtol=1e-1, atol=1e-1, bounds=StepBounds(max_step=(0.01, scale)))
+    plain = BDF2(LinearStep(), np.array([1.0]), 0.0, 2.0, rtol=1e-1, atol=1e-1, bounds=StepBounds(max_step=0.01))
     ts = [0.0]
     while s.t < 2.0:
         assert s.step() is None

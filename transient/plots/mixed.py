@@ -110,6 +110,11 @@ def rig_torque(curves, measured, peer=None, measured_h_min=None, title=None):
     share.set_ylabel("asperity share of the test bearing's load [%] (dotted)")
     share.set_ylim(-2, 102)
     ax[1].legend(fontsize=7, loc="upper left")
+    if title:
+        suptitle(fig, title)
+    return fig
+
+
 def speed_histories(runs, load, sigma=None, title=None):
     """Start-up and coast-down histories of rough journal orbits (:class:`~transient.models.journal.results.
     OrbitResult` recorded with ``"shaft_speed"``, ``"friction_torque"``, ``"min_film"``, ``"contact_load"``): ``runs`` maps a

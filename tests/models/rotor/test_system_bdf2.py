@@ -10,7 +10,7 @@ import pytest
 
 from transient import Integration, JournalBearing, JournalOrbit, LongRun, Recording
 from transient.models.rotor import Rotor, RotorBearingSystem
-from transient.models.rotor.content_form import ContentSystem
+from transient.models.rotor.content_form import BDF2_STEPS_PER_REVOLUTION, ContentSystem
 from transient.params.rho_kim import BEARING
 from transient.solvers.bandlu import BorderedBandLU
 from transient.solvers.longrun import Interrupted
@@ -61,8 +61,9 @@ def test_one_node_rotor_is_the_journal_orbit(bearing):
     """The same equations as the journal orbit's content form (the rotor row scaled by its mass, the unbalance on
     the shaft angle): the same steps, the orbit to 1e-6 C."""
     r = one_node(bearing).run(1, 6000, integration=Integration(method="bdf2", rtol=1e-7, atol=1e-10))
-    o = JournalOrbit(bearing, M_ROTOR, ECC, M_ROTOR * G, 6000).run(
-        1, integration=Integration(method="bdf2", rtol=1e-7, atol=1e-10))
+    o = JournalOrbit(bearing, M_ROTOR, ECC, M_ROTOR * G, 6000).run(  # the rotor's stepper: plain BDF2, its cap
+        1, integration=Integration(method="bdf2", rtol=1e-7, atol=1e-10, max_order=2,
+                                   steps_per_revolution=BDF2_STEPS_PER_REVOLUTION))
     assert r.success and r.method == "bdf2" and np.array_equal(r.t, o.t)
     assert r.stats.n_steps == o.stats.n_steps
     x, y = r.position(0)
@@ -79,7 +80,8 @@ def test_symmetric_rotor_on_two_bearings_is_the_half_orbit(bearing):
                                                                        (1, M_ROTOR * ECC / 2, 0.0)], gravity=G)
     r = s.run(1, 6000, integration=Integration(method="bdf2", rtol=1e-7, atol=1e-10))
     o = JournalOrbit(bearing, M_ROTOR / 2, ECC, M_ROTOR * G / 2, 6000).run(
-        1, integration=Integration(method="bdf2", rtol=1e-7, atol=1e-10))
+        1, integration=Integration(method="bdf2", rtol=1e-7, atol=1e-10, max_order=2,
+                                   steps_per_revolution=BDF2_STEPS_PER_REVOLUTION))
     assert r.success
     for node in (0, 1):
         x, y = r.position(node)
@@ -165,7 +167,7 @@ def test_a_mix_of_film_kinds_is_refused():
 
 
 def test_step_cap_is_per_shaft_revolution(bearing, monkeypatch):
-    """The step cap (``BDF2_MIN_STEPS`` per revolution) is in shaft angle: at half the reference speed a loose
+    """The step cap (``BDF2_STEPS_PER_REVOLUTION`` per revolution) is in shaft angle: at half the reference speed a loose
     tolerance takes about as many steps per shaft revolution as at the reference speed, half as many as with the
     cap per revolution at the reference speed (``MIN_CAP_SPEED`` = 1), at the same distance from IDA's motion."""
     import transient.models.rotor.system as system

@@ -30,15 +30,17 @@ def orbits(one_node):
 
 
 def test_bdf2_periodic_response_of_one_node_is_the_journal_orbits(bearing, orbits):
-    """The same equations and steps as the journal orbit's BDF2 (its run test): the same fixed point, each found to
-    tol = 1e-7 C, so within 2 tol."""
+    """The same equations as the journal orbit's (tests/models/rotor/test_system_bdf2.py runs both on the same
+    steps); the journal's period map integrates them by its variable-order BDF, the rotor's by plain BDF2 at its
+    550-step cap, whose own error on an orbit of this size is ~2e-6 C per revolution (docs/periodic.md): the fixed
+    points agree within that (5e-6 C, as BDF2 against IDA below), each found to tol = 1e-7 C."""
     p = orbits["bdf2"]
     o = JournalOrbit(bearing, M_ROTOR, ECC, M_ROTOR * G, 6000).periodic_response(rtol=1e-6, tol=1e-7,
                                                                                  integrator="bdf2")
     assert p.success and p.converged and p.stable and p.integrator == "bdf2", p.message
     assert p.error_estimate <= 1e-7 and o.success
     x, y = p.position(0)
-    assert np.max(np.hypot(x - o.x, y - o.y)) < 2e-7 * C  # measured 3.4e-8 C
+    assert np.max(np.hypot(x - o.x, y - o.y)) < 5e-6 * C  # measured 2.4e-6 C (3.4e-8 C with both on plain BDF2)
     assert np.ptp(x) > 0.02 * C  # the orbit moves
     assert np.allclose(np.sort_complex(p.multipliers[:2]), np.sort_complex(o.multipliers[:2]), atol=1e-2)
 

@@ -18,7 +18,7 @@ from __future__ import annotations
 import numpy as np
 
 from transient.models.point.fbns import fbns, merit
-from transient.solvers.integrate.stepper import BDF2, StepSolve
+from transient.solvers.integrate.stepper import BDF2, StepBounds, StepSolve
 
 #: the relative tolerance's floor of the error test, as a fraction of rtol: |u| below 1e-2 counts as 1e-2
 ATOL_PER_RTOL = 1e-2
@@ -76,7 +76,7 @@ def steady_by_time_steps(film, u0, tol=1e-8, t_max=1e4, rtol=0.3):
     def march(u, first_step, level):
         step = FilmStep(film, u, lambda T: 1.0)
         stepper = BDF2(step, np.asarray(u, float), 0.0, t_max, rtol=rtol, atol=ATOL_PER_RTOL * rtol,
-                       first_step=first_step, test_first_step=False)
+                       bounds=StepBounds(first_step=first_step), test_first_step=False)
         while stepper.t < t_max and stepper.step() is None and steady_residual(stepper.y) >= level:
             pass
         counts["steps"] += stepper.n_steps

@@ -769,7 +769,7 @@ class RollerContact:
         (:func:`~transient.models.roller.line_step.consistent_content`, or a film-content ``start``'s own);
         ``max_steps`` and ``time_budget`` [s of wall clock] bound that run.
         """
-        check_method("RollerContact.transient", method, among=TRANSIENT_METHODS)
+        check_method("RollerContact.transient", method, step_solve=True, among=TRANSIENT_METHODS)
         t_end = check_positive("t_end", t_end, "s")
         if self.grid_spec[0] == "uniform":
             raise ValueError("transient needs a clustered grid (dense elasticity for IDA's dense Jacobian)")

@@ -24,6 +24,12 @@ from transient.solvers.integrate.bdf2 import Bdf2Model
 #: Newton tolerance on the shaft angle [rad] (its row is linear: Newton meets it once the films converge)
 PHI_TOL = 1e-10
 
+#: ``method="bdf2"`` (plain second-order BDF): at least this many steps per shaft revolution (the step cap: the
+#: rotor's local error does not see the films' fronts, whose error the cap bounds; one journal on 151 x 21 at 0.3 C:
+#: 9.5e-5 C at 550, 1.15e-4 C at 500); the journal orbit's own default is a variable-order BDF with a travel bound
+#: (``transient.models.journal.orbit.BDF2_TRAVEL``), which the rotor system does not take yet.
+BDF2_STEPS_PER_REVOLUTION = 550
+
 
 class ContentSystem:
     """The content formulation of ``dae`` (module docstring) with its shaft speed ``speed(tau) -> (s, s')``

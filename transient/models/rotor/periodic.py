@@ -10,7 +10,7 @@ The fixed-point tolerance is on the rotor's coordinates and velocities, in units
 The period map's time integrator (``integrator``, :data:`INTEGRATORS`): IDA on the system's universal film
 (:class:`~transient.models.rotor.model.SystemDAE`), or the conservative BDF2 on the films' content form
 (:class:`~transient.models.rotor.content_form.ContentSystem`, the step solve of ``run(method="bdf2")``: at least
-``BDF2_MIN_STEPS`` steps per revolution, its error test on the rotor's states), mapped from and back to the
+``BDF2_STEPS_PER_REVOLUTION`` steps per revolution, its error test on the rotor's states), mapped from and back to the
 universal state, so that the map's unknowns, the start and the result are the same either way.
 """
 
@@ -23,8 +23,7 @@ import scipy.sparse.linalg as spla
 
 from transient.checks import check_choice
 from transient.compile_notice import announce
-from transient.models.journal.orbit import BDF2_MIN_STEPS
-from transient.models.rotor.content_form import ContentSystem
+from transient.models.rotor.content_form import BDF2_STEPS_PER_REVOLUTION, ContentSystem
 from transient.models.rotor.model import SystemDAE
 from transient.models.rotor.results import PeriodicResponse, RotorResponseCurve
 from transient.solvers.integrate import Problem, Steps, solve
@@ -83,7 +82,7 @@ class PeriodMap:
             self.model = self.form.model()
         form = self.form
         s = solve(form.problem(form.content_state(y), t_eval[0]), t_eval, method="bdf2", rtol=rtol, atol=self.atol,
-                  steps=Steps(max_step=2 * np.pi / BDF2_MIN_STEPS, first_step=2 * np.pi * 1e-4),
+                  steps=Steps(max_step=2 * np.pi / BDF2_STEPS_PER_REVOLUTION, first_step=2 * np.pi * 1e-4),
                   options={"bdf2": self.model})
         return s, (form.universal_state(s.y[-1]) if s.y.size else None)
 

@@ -39,9 +39,8 @@ from transient.models.journal.film import read_only
 from transient.models.journal.kernels import film_force
 from transient.models.journal.tilt import sensitivity, si_coefficients
 from transient.models.damper.damper import SqueezeFilmDamper
-from transient.models.journal.orbit import BDF2_MIN_STEPS
 from transient.models.journal.time_domain import check_time_domain
-from transient.models.rotor.content_form import ContentSystem
+from transient.models.rotor.content_form import BDF2_STEPS_PER_REVOLUTION, ContentSystem
 from transient.models.rotor.model import SystemDAE
 from transient.models.rotor.results import RotorEquilibrium, RotorRunResult, UnbalanceResponse
 from transient.models.rotor.rotor import Rotor
@@ -60,8 +59,8 @@ RUN_KEYWORDS = (keyword_table("integration", Integration, ("method", "rtol", "at
                 | keyword_table("recording", Recording, ("outputs_per_revolution",))
                 | keyword_table("long_run", LongRun, ("checkpoint", "chunk_revolutions", "resume", "progress",
                                                       "time_budget")))
-#: ``method="bdf2"``: its step cap is ``BDF2_MIN_STEPS`` per shaft revolution at the speed of the step, down to this
-#: fraction of the reference speed (below it, per revolution at this fraction)
+#: ``method="bdf2"``: its step cap is ``BDF2_STEPS_PER_REVOLUTION`` per shaft revolution at the speed of the step, down
+#: to this fraction of the reference speed (below it, per revolution at this fraction)
 MIN_CAP_SPEED = 0.1
 #: How :meth:`RotorBearingSystem.unbalance_response` linearised the bearings, by ``film_states``
 #: (``UnbalanceResponse.linearisation``).
@@ -541,7 +540,7 @@ class RotorBearingSystem:
             the films' content form, a bordered band LU with one band block per film and the rotor as its border,
             :mod:`~transient.models.rotor.content_form`; rtol and atol act on the rotor's coordinates and
             velocities, every film is solved to the journal's Newton tolerance each step, at least
-            ``BDF2_MIN_STEPS`` steps per shaft revolution at the step's speed, down to ``MIN_CAP_SPEED`` of the
+            ``BDF2_STEPS_PER_REVOLUTION`` steps per shaft revolution at the step's speed, down to ``MIN_CAP_SPEED`` of the
             reference speed); ``rtol``, ``atol`` (atol on the
             dimensionless states: p/p0, journal position in clearances).
         recording : :class:`~transient.solvers.settings.Recording`: ``outputs_per_revolution``, outputs per
@@ -629,10 +628,10 @@ class RotorBearingSystem:
             form = ContentSystem(dae)
             to_run, universal = form.content_state, form.universal_state
             problem_at = lambda y_, tau_: form.problem(y_, tau_, events, n_events)  # noqa: E731
-            # the step cap in shaft angle (the films' fronts move with the shaft): BDF2_MIN_STEPS per revolution
+            # the step cap in shaft angle (the films' fronts move with the shaft): BDF2_STEPS_PER_REVOLUTION per revolution
             # at any speed down to MIN_CAP_SPEED of the reference speed, not per revolution at the reference speed
             cap_scale = lambda tau: 1.0 / max(speed(tau)[0], MIN_CAP_SPEED)  # noqa: E731
-            solver.update(steps=Steps(max_step=2 * np.pi / BDF2_MIN_STEPS, first_step=2 * np.pi * 1e-4),
+            solver.update(steps=Steps(max_step=2 * np.pi / BDF2_STEPS_PER_REVOLUTION, first_step=2 * np.pi * 1e-4),
                           options={"bdf2": form.model(), "max_step_scale": cap_scale})
         else:
             def problem_at(y_, tau_):
@@ -718,7 +717,7 @@ class RotorBearingSystem:
 
         ``tol`` [smallest clearance] on the rotor's coordinates and velocities (default ``rtol``); ``integrator``:
         the period map's, ``"ida"`` (the universal films) or ``"bdf2"`` (the conservative stepper of
-        ``run(method="bdf2")`` on the content films; its step cap ``BDF2_MIN_STEPS`` per revolution, rtol and its
+        ``run(method="bdf2")`` on the content films; its step cap ``BDF2_STEPS_PER_REVOLUTION`` per revolution, rtol and its
         atol ``1e-3 rtol`` on the rotor's states); ``shooting``: a
         :class:`~transient.solvers.shooting.ShootingSettings` taken as given but for its tolerances, which are
         ``tol`` and ``rtol`` (default ``ShootingSettings(max_iter=25, relax=1)``; ``max_iter`` is its field, kept

@@ -47,7 +47,7 @@ from numba import njit
 from transient.solvers.bandlu import BorderedBandLU, band_factor, band_solve
 from transient.solvers.integrate.guard import SIGINT
 from transient.solvers.integrate.outputs import Events, step_events
-from transient.solvers.integrate.stepper import BDF2, StepSolve, drive, quadratic
+from transient.solvers.integrate.stepper import BDF2, StepBounds, StepSolve, drive, quadratic
 
 NEWTON_FACTOR = 0.1  # Newton tolerance on the error components, as a fraction of rtol |y| + atol
 MAX_ITER = 25
@@ -333,12 +333,12 @@ def solve(problem, t_eval, out, guard, s):
     (events located on the step's quadratic); returns ``(success, message)``."""
     solver = step_solve(problem, s)
     out.events = Events(problem, guard, poison=False) if problem.n_events else None
+    bounds = StepBounds(first_step=s.first_step, fixed_step=float(s.options.get("fixed_step", 0.0)),
+                        max_step=((s.max_step, s.options["max_step_scale"]) if "max_step_scale" in s.options
+                                  else s.max_step), max_travel=s.options.get("max_travel"))
     stepper = BDF2(solver, problem.y0, t_eval[0], t_eval[-1], rtol=s.rtol, atol=s.atol,
-                   error_components=solver.error_components, yp0=problem.yp0, first_step=s.first_step,
-                   max_step=(s.max_step, s.options["max_step_scale"]) if "max_step_scale" in s.options else s.max_step,
-                   fixed_step=float(s.options.get("fixed_step", 0.0)),
-                   test_first_step=solver.test_first_step, max_order=int(s.options.get("max_order", 2)),
-                   max_travel=s.options.get("max_travel"))
+                   error_components=solver.error_components, yp0=problem.yp0, bounds=bounds,
+                   test_first_step=solver.test_first_step, max_order=int(s.options.get("max_order", 2)))
     result = drive(stepper, out, guard, SIGINT.check, s.max_steps, step_events)
     tally = s.options.get("newton_counts")
     if tally is not None and isinstance(solver, BandNewton):  # the Newton's cost by operation, summed over solves

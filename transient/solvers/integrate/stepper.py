@@ -19,6 +19,7 @@ for ``max_step=(cap, scale)``). A failed step solve cuts the step by 4. ``fixed_
 from __future__ import annotations
 
 import math
+from typing import NamedTuple
 
 import numpy as np
 
@@ -28,6 +29,19 @@ MAX_ORDER = 5
 MAX_RATIO_HIGH = 1.5
 #: a higher or lower order is taken only if its step is this much longer than the current order's
 ORDER_BIAS = 1.2
+
+
+class StepBounds(NamedTuple):
+    """What bounds a :class:`BDF2` step besides its error test: the first step ``first_step`` (0: 1e-4 of the span);
+    at most ``max_step`` (0: free), or a pair ``(max_step, scale)``: at most ``max_step * scale(t)`` at the step's
+    start (e.g. a cap in shaft angle on a run whose speed changes); ``fixed_step`` > 0: steps of exactly that size,
+    no error test; ``max_travel = (components, distance)``: steps over which those components (e.g. a journal's
+    position) move at most ``distance`` (Euclidean) at their last step's speed."""
+
+    first_step: float = 0.0
+    max_step: object = 0.0
+    fixed_step: float = 0.0
+    max_travel: tuple | None = None
 
 
 class StepSolve:
@@ -152,17 +166,14 @@ def _history_k(a):
 class BDF2(Stepper):
     """Variable-step BDF2 (module docstring) around a model's :class:`StepSolve`, from ``y0`` (with the slope
     ``yp0``, zero if None) at ``t0`` to ``t_end``; error test on ``error_components`` with ``rtol`` and ``atol``
-    (a number or one per state); first step ``first_step`` (0: 1e-4 of the span), at most ``max_step``
-    (0: free), or a pair ``(max_step, scale)``: at most ``max_step * scale(t)`` at the step's start (e.g. a cap in
-    shaft angle on a run whose speed changes); ``max_travel = (components, distance)``: steps over which those
-    components (e.g. a journal's position) move at most ``distance`` (Euclidean) at their last step's speed;
-    ``max_order`` in [2, 5]: the highest order of the variable-order BDF (module docstring), 2 the plain BDF2;
-    ``fixed_step`` > 0: steps of exactly that size, no error test; ``test_first_step`` False: the
-    first step is not error-tested (a DAE started from an inconsistent state, whose first step measures the
-    jump of its algebraic part onto the constraint, not a truncation error)."""
+    (a number or one per state); the steps bounded by ``bounds`` (:class:`StepBounds`: first, largest, fixed step,
+    travel); ``max_order`` in [2, 5]: the highest order of the variable-order BDF (module docstring), 2 the plain
+    BDF2; ``test_first_step`` False: the first step is not error-tested (a DAE started from an inconsistent state,
+    whose first step measures the jump of its algebraic part onto the constraint, not a truncation error)."""
 
     def __init__(self, solver: StepSolve, y0, t0, t_end, *, rtol, atol, error_components=None, yp0=None,
-                 first_step=0.0, max_step=0.0, fixed_step=0.0, test_first_step=True, max_order=2, max_travel=None):
+                 bounds: StepBounds = StepBounds(), test_first_step=True, max_order=2):
+        first_step, max_step, fixed_step, max_travel = bounds
         self.solver = solver
         self.travel = None if max_travel is None else (np.asarray(max_travel[0], dtype=np.int64),
                                                        float(max_travel[1]))
