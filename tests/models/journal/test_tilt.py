@@ -258,7 +258,7 @@ def test_pfeil_tilt_cavities_to_the_node():
     code's cells are centred on the peer's node angles (phi = X + 180 deg) and its rows lie half a node off the peer's,
     so each interior node is compared with the cells of its angle in the two rows bracketing it: every one of the
     2976 nodes has its state (cavitated or full) in one of them (measured: no exception). The opposite tilt puts
-    the cavity's wide end at the other bearing end: hundreds of nodes then have neither."""
+    the cavity's wide end at the other bearing end: 104 nodes then have neither."""
     rows = PFEIL_TILT["cavitated_96x33"]["rows"]
     peer = np.array([[c == "1" for c in r] for r in rows])  # (n_y, n_x)
     n_y, n_x = peer.shape
@@ -276,7 +276,7 @@ def test_pfeil_tilt_cavities_to_the_node():
         return bad
 
     assert misses(pfeil_state((96, 16))) == 0
-    assert misses(pfeil_state((96, 16), sign=-1.0)) > 100
+    assert misses(pfeil_state((96, 16), sign=-1.0)) > 50
 
 
 @pytest.mark.slow
