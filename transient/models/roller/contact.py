@@ -64,12 +64,10 @@ from transient.models.roller.grid import TensorGrid, clustered_axis
 from transient.models.roller.krylov import DenseLU, NewtonKrylov, NewtonMatrix, TwoLevel
 from transient.models.roller.results import EHLConvergenceError, RollerSteady, RollerTransient, UnderResolvedGridError
 from transient.models.roller.roller_fbns import RollerContentFilm, carry_content, content_start, solve_content
-from transient.models.roller.line_step import ATOL_PER_RTOL, LineFilmStep, consistent_content
+from transient.models.roller.line_step import consistent_content, run_content_transient
 from transient.models.roller.transient import load_ratio, run_squeeze
 from transient.physics.line_formulas import dowson_toyoda_central
 from transient.physics.lubricant import DOWSON_HIGGINSON_PARK, Lubricant
-from transient.solvers.integrate import Problem, Steps
-from transient.solvers.integrate import solve as integrate
 from transient.solvers.integrate import check_method
 from transient.solvers.newton import NewtonError
 
@@ -836,14 +834,8 @@ class RollerContact:
             taus.append(tau)
             rows.append(self.result(film, np.append(u[:n], u[-1]), True, "", 0, [], 0.0))
 
-        step = LineFilmStep(content, self.scales["lam"], u0, ratio)
-        problem = Problem(y0=u0, step_solve=step, name="roller contact (film content, FBNS)")
-        # one BLAS thread: the step's dense solves are too small for threads to pay (measured on a 401-node
-        # line: LAPACK's solve of one Schur matrix 4 ms CPU on one thread, 74 ms on two busy cores)
-        with threadpool_limits(limits=1, user_api="blas"):
-            sol = integrate(problem, np.linspace(0.0, t_end / t_ref, n_out), method="bdf2", rtol=rtol,
-                            atol=ATOL_PER_RTOL * rtol, steps=Steps(first_step=1e-3, max_steps=max_steps), store=False,
-                            observer=observe, time_budget=time_budget)
+        sol, step = run_content_transient(content, self.scales["lam"], u0, ratio, t_end / t_ref, rtol, n_out,
+                                          max_steps, time_budget, "roller contact (film content, FBNS)", observe)
         tau, u = step.last
         last = self.result(film, np.append(u[:n], u[-1]), True, "", 0, [], 0.0, content=u[n: 2 * n])
         tau_out = np.array(taus)

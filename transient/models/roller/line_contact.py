@@ -25,7 +25,6 @@ import time
 import warnings
 
 import numpy as np
-from threadpoolctl import threadpool_limits
 
 from transient.checks import check_int, check_positive, check_range
 from transient.models.roller.continuation import PathResult, follow
@@ -38,15 +37,14 @@ from transient.models.roller.line_grid import (ELASTIC_INLET_WARN, INLET_RESOLUT
                                                default_domain, default_grid, hydrodynamic_length, resolving_spacing,
                                                rigid_regime, uniform_nodes)
 from transient.models.roller.line_sequence import inlet_spacing, solve_sequence
-from transient.models.roller.line_step import ATOL_PER_RTOL, LineFilmStep, consistent_content
+from transient.models.roller.line_step import consistent_content, run_content_transient
 from transient.models.roller.results import EHLConvergenceError, LineDry, LineSteady, LineTransient
 from transient.models.roller.transient import load_ratio, run_squeeze
 from transient.physics.elasticity import line_influence
 from transient.physics.line_formulas import (dowson_toyoda_central, hertz_line, line_groups, martin_min, moes_central,
                                              moes_groups)
 from transient.physics.lubricant import DOWSON_HIGGINSON_PARK, Lubricant
-from transient.solvers.integrate import Problem, Steps, check_method
-from transient.solvers.integrate import solve as integrate
+from transient.solvers.integrate import check_method
 from transient.solvers.newton import NewtonError
 
 SCHEMES = ("upwind2", "upwind1")
@@ -582,14 +580,8 @@ class LineContact:
             taus.append(tau)
             rows.append(self._result(film, np.append(u[:n], u[-1]), True, "", 0, [], 0.0))
 
-        step = LineFilmStep(content, self.lam, u0, ratio)
-        problem = Problem(y0=u0, step_solve=step, name="line contact (film content, FBNS)")
-        # one BLAS thread: the step's dense solves are too small for threads to pay (measured on a 401-node
-        # line: LAPACK's solve of one Schur matrix 4 ms CPU on one thread, 74 ms on two busy cores)
-        with threadpool_limits(limits=1, user_api="blas"):
-            sol = integrate(problem, np.linspace(0.0, t_end / t_ref, n_out), method="bdf2", rtol=rtol,
-                            atol=ATOL_PER_RTOL * rtol, steps=Steps(first_step=1e-3, max_steps=max_steps), store=False,
-                            observer=observe, time_budget=time_budget)
+        sol, step = run_content_transient(content, self.lam, u0, ratio, t_end / t_ref, rtol, n_out, max_steps,
+                                          time_budget, "line contact (film content, FBNS)", observe)
         tau, u = step.last
         last = self._result(film, np.append(u[:n], u[-1]), True, "", 0, [], 0.0)
         tau_out = np.array(taus)

@@ -25,9 +25,12 @@ import numpy as np
 import scipy.linalg as sla
 from scipy import sparse as sp
 from scipy.sparse import linalg as spla
+from threadpoolctl import threadpool_limits
 
 from transient.checks import check_choice
 from transient.models.roller.line_newton import content_newton, merit
+from transient.solvers.integrate import Problem, Steps
+from transient.solvers.integrate import solve as integrate
 from transient.solvers.integrate.stepper import StepSolve
 
 #: the error test's absolute tolerance as a fraction of rtol: a scaled pressure or content below 1e-2 counts as 1e-2
@@ -217,3 +220,20 @@ class LineFilmStep(StepSolve):
 
     def counts(self):
         return self.newton + self.simplified, self.factorisations
+
+
+def run_content_transient(content, kappa: float, u0, ratio, tau_end: float, rtol: float, n_out: int,
+                          max_steps: int, time_budget, name: str, observe):
+    """Integrate the film ``content`` from ``u0`` to the scaled time ``tau_end`` by BDF2 on :class:`LineFilmStep`
+    under the load ratio ``ratio(tau)``, calling ``observe(tau, u)`` at ``n_out`` equally spaced outputs; the
+    line contact's and the roller's ``transient(method="bdf2")``. Returns the integrator's solution and the step
+    solve (its ``last`` state, its ``factorisations``)."""
+    step = LineFilmStep(content, kappa, u0, ratio)
+    problem = Problem(y0=u0, step_solve=step, name=name)
+    # one BLAS thread: the step's dense solves are too small for threads to pay (measured on a 401-node
+    # line: LAPACK's solve of one Schur matrix 4 ms CPU on one thread, 74 ms on two busy cores)
+    with threadpool_limits(limits=1, user_api="blas"):
+        sol = integrate(problem, np.linspace(0.0, tau_end, n_out), method="bdf2", rtol=rtol,
+                        atol=ATOL_PER_RTOL * rtol, steps=Steps(first_step=1e-3, max_steps=max_steps), store=False,
+                        observer=observe, time_budget=time_budget)
+    return sol, step
