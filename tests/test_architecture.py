@@ -128,6 +128,18 @@ def test_no_import_circle_inside_a_model_folder():
         assert _cycles_in(name) == [], name
 
 
+def test_ehl_films_share_the_engine_and_never_borrow_sideways():
+    """The line/roller and point contacts take what they share (Krylov solvers, the node-wise Schur reduction, the
+    limiter, the dry contact, the error types, the complementarity element) from ``models/ehl`` and never import
+    each other; ``models/ehl`` imports no model folder."""
+    edges, _ = _module_imports()
+    folder = lambda m: m.split(".")[2] if m.startswith("transient.models.") and m.count(".") >= 3 else None  # noqa: E731
+    sideways = sorted((a, b) for a, b in edges if {folder(a), folder(b)} == {"point", "roller"})
+    upward = sorted((a, b) for a, b in edges if folder(a) == "ehl" and folder(b) not in (None, "ehl"))
+    assert sideways == [] and upward == []
+    assert any(folder(a) == "point" and folder(b) == "ehl" for a, b in edges)
+
+
 def test_the_circle_finder_finds_a_circle(tmp_path, monkeypatch):
     """The rule above can fail: two modules importing each other (one inside a function) are a circle."""
     pkg = tmp_path / "transient" / "models" / "toy"

@@ -10,7 +10,7 @@ In one run (fully flooded domains of :mod:`transient.study.ehl_chart`, 1025 node
 * grid convergence of H_c and H_min at M = 300 and 1000 on the clustered grids (1025, 2049, 4097 nodes)
   and the Richardson limits;
 * side by side, interleaved, on the same chart points: the Newton steps' GMRES by the point film's
-  right-preconditioned :func:`transient.models.point.krylov.gmres_solve` (used) and by scipy's ``gmres``;
+  right-preconditioned :func:`transient.models.ehl.krylov.gmres_solve` (used) and by scipy's ``gmres``;
 * side by side at a few points: :meth:`LineContact.steady_reynolds` (semismooth Newton on the
   Reynolds-condition equations with load continuation) on the same contact, and the largest difference
   of the two films (the same discrete problem);

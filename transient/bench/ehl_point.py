@@ -8,7 +8,7 @@ Hamrock-Dowson and Nijenbanning-Venner-Moes.
 
    * ``dense LU``: the dense reduced Newton matrix, LAPACK LU (O(N^3); grids up to 65 x 65);
    * ``Newton-Krylov``: GMRES on the matrix-free reduced matrix (DC-FFT products) with the two-level
-     preconditioner of :mod:`transient.models.point.krylov`, from the dry Hertz start;
+     preconditioner of :mod:`transient.models.ehl.krylov`, from the dry Hertz start;
    * ``Newton-Krylov, nested``: the same from the solution on every second node (itself nested down to the
      dense size) -- what :meth:`PointContact.steady` does by default above the dense size.
 
@@ -42,7 +42,7 @@ import numpy as np
 from transient.models.point import PointContact
 from transient.models.point.fbns import fbns, linear_solver
 from transient.models.point.formulas import nvm_central_film
-from transient.models.point.krylov import KrylovSolver
+from transient.models.ehl.krylov import KrylovSolver
 
 TITLE = "EHL point contact at scale: dense LU vs Newton-Krylov, cost against the grid; films against formulas"
 

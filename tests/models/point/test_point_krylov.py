@@ -7,8 +7,8 @@ import pytest
 
 from transient.models.point import PointContact
 from transient.models.point.fbns import DenseSolver, fbns, linear_solver
-from transient.models.point.reduced import dense_reduced, schur
-from transient.models.point.krylov import KrylovSolver, ReducedOperator, prolongation, prolong_state
+from transient.models.ehl.reduced import dense_reduced, schur
+from transient.models.ehl.krylov import KrylovSolver, ReducedOperator, prolongation, prolong_state
 
 BASE = dict(load=20.0, speed=0.2, viscosity=0.04, pressure_viscosity=2e-8, modulus=2.2e11)
 

@@ -7,7 +7,7 @@ import pytest
 from transient.models.ball import ThrustBallBearing
 from transient.models.point import PointContact
 from transient.params import jeong
-from transient.models.roller.results import EHLConvergenceError
+from transient.models.ehl.errors import EHLConvergenceError
 from transient.analysis.starvation import chevalier, fit_gamma
 from transient.study.point import layer_sweep
 

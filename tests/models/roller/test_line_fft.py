@@ -5,7 +5,7 @@ import warnings
 import numpy as np
 import pytest
 
-from transient.models.point.krylov import gmres_solve
+from transient.models.ehl.krylov import gmres_solve
 from transient.models.roller.line_contact import FilmResolutionWarning
 from transient.models.roller.line_fbns import LineContentFilm, schur_system
 from transient.models.roller.line_fft import SchurOperator, TwoLevel

@@ -5,7 +5,7 @@ load, exact symmetry of an untilted symmetric roller, heavy loads."""
 import numpy as np
 import pytest
 
-from transient.models.point.reduced import schur
+from transient.models.ehl.reduced import schur
 from transient.models.roller import RollerContact, TaperedRoller
 from transient.models.roller.contact import M_EASY_2D
 from transient.models.roller.results import EHLConvergenceError, UnderResolvedGridError

@@ -23,16 +23,16 @@ from types import SimpleNamespace
 import numpy as np
 
 from transient.checks import check_choice, check_int, check_items, check_positive, check_range, check_vector
+from transient.models.ehl.dry import edge_positions, polonsky_keer
+from transient.models.ehl.errors import EHLConvergenceError
+from transient.models.ehl.krylov import coarsening_factor, inject
 from transient.models.point.fbns import DENSE_MAX_UNKNOWNS, fbns
 from transient.models.point.ehl_problem import PointFilm
 from transient.models.point.grid_verdict import FORMAL_ORDER, describe, error_estimate
-from transient.models.point.krylov import coarsening_factor, inject
 from transient.models.point.plausibility import default_grid_message, grid_message, implausible
 from transient.models.point.point_grid import MIN_NODES_PER_B, default_grid
 from transient.models.point.results import PointDry, PointSteady, PointTransient
 from transient.models.point.step_solve import ATOL_PER_RTOL, FilmStep, steady_by_time_steps
-from transient.models.roller.dry import edge_positions, polonsky_keer
-from transient.models.roller.results import EHLConvergenceError
 from transient.physics import film_formulas as hd
 from transient.physics.hertz import hertz_contact
 from transient.physics.lubricant import DOWSON_HIGGINSON_PARK, Lubricant
@@ -59,9 +59,9 @@ GRID_SETTLED_CHANGE = GRID_SETTLED_ERROR
 
 def check_fast_path(nx, ny):
     """Refuse a grid whose Newton steps would take the dense LU of the reduced system above its size: the iterative
-    solver (:class:`~transient.models.point.krylov.KrylovSolver`) needs a grid that coarsens by a power of two
+    solver (:class:`~transient.models.ehl.krylov.KrylovSolver`) needs a grid that coarsens by a power of two
     (``nx - 1`` and ``(ny - 1)/2`` divisible by it) to at most
-    :data:`~transient.models.point.krylov.COARSE_MAX_UNKNOWNS` unknowns; otherwise every Newton step is an
+    :data:`~transient.models.ehl.krylov.COARSE_MAX_UNKNOWNS` unknowns; otherwise every Newton step is an
     O(N^3) dense LU of (N + 1)^2 numbers. The message names the nearest grids that do coarsen."""
     grid = SimpleNamespace(nx=nx, m=(ny + 1) // 2)
     n = (grid.m - 1) * (nx - 2)  # nodal unknowns of the half grid (PointFilm.n)
@@ -217,7 +217,7 @@ class PointContact:
     # -- dry ---------------------------------------------------------------------------------------------
     def dry(self, tol: float = 1e-12) -> PointDry:
         """Dry contact on the EHL grid by Polonsky & Keer's conjugate gradient on the same DC-FFT
-        coefficients (:func:`transient.models.roller.dry.polonsky_keer`): the zero-speed limit, checked
+        coefficients (:func:`transient.models.ehl.dry.polonsky_keer`): the zero-speed limit, checked
         against Hertz. Semi-axes between nodes from ``p^2`` extrapolated linearly."""
         t0 = time.perf_counter()
         f = self.film_problem(inlet_film=None)

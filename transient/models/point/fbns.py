@@ -17,11 +17,11 @@ import time
 import numpy as np
 import scipy.linalg as sla
 
-from transient.models.point.krylov import KrylovSolver, coarsening_factor, inject, prolong_state
-from transient.models.point.reduced import dense_reduced, schur
+from transient.models.ehl.krylov import KrylovSolver, coarsening_factor, inject, prolong_state
+from transient.models.ehl.reduced import dense_reduced, schur
 
 #: a Newton step near the solution (largest scaled residual below 1e-3) that keeps more than this fraction of the
-#: residual's norm tightens an inexact linear solver (:meth:`~transient.models.point.krylov.KrylovSolver.tighten`)
+#: residual's norm tightens an inexact linear solver (:meth:`~transient.models.ehl.krylov.KrylovSolver.tighten`)
 STAGNATION = 0.5
 
 #: the largest nodal unknown count (half grid) solved by the dense LU; above it, Newton-Krylov
@@ -44,7 +44,7 @@ class DenseSolver:
 
 def linear_solver(film, method="auto"):
     """The reduced system's solver: ``"dense"`` (:class:`DenseSolver`), ``"krylov"``
-    (:class:`~transient.models.point.krylov.KrylovSolver`), or ``"auto"``: dense up to
+    (:class:`~transient.models.ehl.krylov.KrylovSolver`), or ``"auto"``: dense up to
     :data:`DENSE_MAX_UNKNOWNS` nodal unknowns, Krylov above (and where the grid coarsens)."""
     if method == "auto":
         method = "krylov" if film.n > DENSE_MAX_UNKNOWNS and coarsening_factor(film) > 1 else "dense"

@@ -31,7 +31,7 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from transient.models.roller.kernels import van_albada
+from transient.models.ehl.limiter import van_albada
 from transient.physics.lubricant import density_point, viscosity_point
 
 

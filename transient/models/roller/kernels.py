@@ -40,6 +40,8 @@ import math
 import numpy as np
 from numba import njit
 
+from transient.models.ehl.limiter import van_albada
+
 from transient.physics.lubricant import density_point, viscosity_point
 
 #: slots of the local Jacobian
@@ -75,16 +77,6 @@ def node_properties(p_full, h_full, vcode, alpha, ln_eta0, dcode, c1, c2, p_scal
         out[6, k] = drho * h
 
 
-@njit(cache=True, error_model="numpy")
-def van_albada(a, b):
-    """Limited slope ``s(a, b)`` (module docstring) and its derivatives ``ds/da``, ``ds/db``."""
-    if a * b <= 0.0:
-        return 0.0, 0.0, 0.0
-    num = a * b * (a + b)
-    den = a * a + b * b
-    s = num / den
-    return s, ((2.0 * a * b + b * b) * den - 2.0 * a * num) / (den * den), \
-        ((a * a + 2.0 * a * b) * den - 2.0 * b * num) / (den * den)
 
 
 @njit(cache=True, error_model="numpy")

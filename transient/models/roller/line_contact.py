@@ -27,8 +27,8 @@ import warnings
 import numpy as np
 
 from transient.checks import check_int, check_positive, check_range
+from transient.models.ehl.dry import edge_positions, polonsky_keer
 from transient.models.roller.continuation import PathResult, follow
-from transient.models.roller.dry import edge_positions, polonsky_keer
 from transient.models.roller.ehl_problem import EHLFilm, interpolate_state, solve_steady
 from transient.models.roller.grid import TensorGrid
 from transient.models.roller.line_fft import LineFFTFilm, matrix_free
@@ -239,7 +239,7 @@ class LineContact:
     def dry(self, nodes: int = 401) -> LineDry:
         """Dry contact of the cylinder (the zero-speed limit) on ``nodes`` uniform nodes over
         ``[-1.5 b, 1.5 b]`` with the same plane-strain patches, by Polonsky-Keer CG
-        (:func:`transient.models.roller.dry.polonsky_keer`): compare with Hertz, ``p_h sqrt(1 - x^2/b^2)``."""
+        (:func:`transient.models.ehl.dry.polonsky_keer`): compare with Hertz, ``p_h sqrt(1 - x^2/b^2)``."""
         x = np.linspace(-1.5, 1.5, int(check_range("nodes", nodes, "-", 21, 100001)))
         dx = x[1] - x[0]
         edges = np.concatenate(([x[0] - 0.5 * dx], 0.5 * (x[1:] + x[:-1]), [x[-1] + 0.5 * dx]))

@@ -28,7 +28,7 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from transient.models.point.reduced import schur
+from transient.models.ehl.reduced import schur
 from transient.models.roller.ehl_problem import EHLFilm
 from transient.models.roller.kernels import node_properties
 from transient.models.ehl.complementarity import fb_derivatives

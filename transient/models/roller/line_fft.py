@@ -6,9 +6,9 @@ is Toeplitz, so ``K p`` is one zero-padded FFT product (DC-FFT, Liu, Wang & Liu,
 :class:`LineFFTFilm` is that film. The Newton step of :mod:`transient.models.roller.line_newton` (the Schur
 system ``S z = r`` after the node-wise elimination of the Fischer-Burmeister rows,
 :func:`~transient.models.roller.line_newton.schur_system`) is then solved by right-preconditioned GMRES
-(the point film's :func:`~transient.models.point.krylov.gmres_solve`) with products of
+(the point film's :func:`~transient.models.ehl.krylov.gmres_solve`) with products of
 :class:`SchurOperator` (one FFT product each) and the two-level preconditioner :class:`TwoLevel` -- the
-point contact's (:mod:`transient.models.point.krylov`) for the line's one dimension:
+point contact's (:mod:`transient.models.ehl.krylov`) for the line's one dimension:
 
 * a coarse-grid correction: the dense Schur matrix of the same problem on every ``factor``-th node at the
   injected state, LU-factorised in single precision; the fine residual (rows divided by their scales) is
@@ -28,7 +28,7 @@ import scipy.linalg as sla
 import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
-from transient.models.point.krylov import gmres_solve
+from transient.models.ehl.krylov import gmres_solve
 from transient.models.roller.ehl_problem import EHLFilm
 from transient.models.roller.grid import TensorGrid
 from transient.models.roller.line_fbns import OFFSETS, LineContentFilm, schur_system

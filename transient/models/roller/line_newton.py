@@ -6,7 +6,7 @@ each Fischer-Burmeister row ``a dp + g dtheta = -FB`` is diagonal, so one unknow
 (theta where ``|g| >= |a|``, the pressure otherwise), leaving the exact ``(n + 1)`` Schur matrix ``S``
 (dense: the elastic coupling). ``S`` is assembled every iteration (``O(n^2)``) but factorised only now and
 then: the step solves ``S dz = r`` by right-preconditioned GMRES (Saad & Schultz, 1986; the point film's
-:func:`~transient.models.point.krylov.gmres_solve`) with the LU factors of an earlier ``S`` in single
+:func:`~transient.models.ehl.krylov.gmres_solve`) with the LU factors of an earlier ``S`` in single
 precision; a new factorisation is made when GMRES needs more than :data:`REFACTOR_ITERS` iterations or does
 not reach its tolerance. Near the solution ``S`` changes
 little, so most Newton iterations cost a few ``O(n^2)`` products instead of an ``O(n^3)`` LU. On the
@@ -27,12 +27,12 @@ from dataclasses import dataclass, field
 import numpy as np
 import scipy.linalg as sla
 
-from transient.models.point.krylov import gmres_solve
-from transient.models.point.reduced import schur
+from transient.models.ehl.errors import InexactStepWarning
+from transient.models.ehl.krylov import gmres_solve
+from transient.models.ehl.reduced import schur
 from transient.models.roller.krylov import DenseLU
 from transient.models.roller.line_fbns import schur_rhs, schur_system
 from transient.models.roller.line_fft import MatrixFreeStep
-from transient.models.roller.results import InexactStepWarning
 
 #: GMRES iterations above which the preconditioner is refreshed at the next Newton iteration
 REFACTOR_ITERS = 12
@@ -60,7 +60,7 @@ class ContentNewtonStats:
 
 def _gmres(S, r, pre):
     """GMRES on ``S z = r`` right-preconditioned by ``pre`` (the point film's
-    :func:`~transient.models.point.krylov.gmres_solve`: its tolerance is on the true residual):
+    :func:`~transient.models.ehl.krylov.gmres_solve`: its tolerance is on the true residual):
     ``(z, converged, iterations)``."""
     z, its, ok = gmres_solve(_Dense(S), r, pre, GMRES_RTOL, restart=GMRES_RESTART, max_iter=2 * GMRES_RESTART)
     return z, ok, its

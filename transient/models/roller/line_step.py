@@ -107,7 +107,7 @@ def consistent_content(content, p, h0) -> np.ndarray:
 
 class FrozenSchur:
     """Simplified Newton's matrix for the step rows ``rows`` at ``u`` (residual pieces ``e``): the node-wise
-    elimination of the Fischer-Burmeister rows (:func:`~transient.models.point.reduced.schur`) and the Schur
+    elimination of the Fischer-Burmeister rows (:func:`~transient.models.ehl.reduced.schur`) and the Schur
     matrix of that iterate, LU-factorised once (LAPACK) and kept across iterations and steps
     (:meth:`LineFilmStep.solve`); ``cj``: the BDF2 coefficient it was built with."""
 

@@ -11,19 +11,8 @@ from dataclasses import field
 
 import numpy as np
 
+from transient.models.ehl.errors import EHLConvergenceError, InexactStepWarning  # noqa: F401 (raised by the roller's solves)
 from transient.results import RunResult, SteadyResult, quantity, result_type
-
-
-class EHLConvergenceError(RuntimeError):
-    """A steady EHL solve did not converge; ``result`` is the last iterate, flagged ``success=False``."""
-
-    def __init__(self, message: str, result):
-        super().__init__(message)
-        self.result = result
-
-
-class InexactStepWarning(RuntimeWarning):
-    """Newton steps of a steady EHL solve were taken with their linear solve (GMRES) short of its tolerance."""
 
 
 class UnderResolvedGridError(ValueError):

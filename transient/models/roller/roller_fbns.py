@@ -20,7 +20,7 @@ unknowns, so Newton's steps stay meaningful far from the solution (no pseudo-tim
 :class:`transient.models.roller.line_fbns.LineContentFilm` (``equations``, ``fb_derivatives``,
 ``schur_matrix``, ``jacobian_product``), so that the line contact's Newton with a reused single-precision
 factorisation (:func:`transient.models.roller.line_newton.content_newton`) and the node-wise elimination of
-:func:`transient.models.point.reduced.schur` solve it unchanged.
+:func:`transient.models.ehl.reduced.schur` solve it unchanged.
 """
 
 from __future__ import annotations

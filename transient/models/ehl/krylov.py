@@ -36,7 +36,7 @@ import scipy.linalg as sla
 import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
-from transient.models.point.reduced import dense_reduced, schur
+from transient.models.ehl.reduced import dense_reduced, schur
 
 
 class ReducedOperator(spla.LinearOperator):
