@@ -118,13 +118,33 @@ def test_default_grid_above_the_paper_load_is_uniform_in_x_and_clustered_in_y():
 
     heavy = paper(10.0)
     kind, nx, ny = heavy.grid_spec
-    assert (kind, ny) == ("hybrid", 89) and heavy.grid.uniform_x and not heavy.grid.uniform
-    assert np.allclose(heavy.grid.y, heavy.make_grid("clustered", 94, 89).y)
+    assert (kind, ny) == ("hybrid", 111) and heavy.grid.uniform_x and not heavy.grid.uniform
+    # the side lobes: at each end of the footprint y nodes about a tenth of the lobe's width apart (the clustered
+    # 94 x 89's axis: a quarter of it at the loaded end), elsewhere the clustered law's spacing
+    s, y, dy = heavy.scales, heavy.grid.y, np.diff(heavy.grid.y)
+    law = heavy.make_grid("clustered", 94, 89).y
+    for end, lobe in zip((s["y_lo"], s["y_hi"]), heavy.end_lobes()):
+        near = np.abs(0.5 * (y[1:] + y[:-1]) - end) < 0.5 * lobe
+        assert dy[near].max() < 0.15 * lobe and np.count_nonzero(np.abs(y - end) < lobe) >= 10
+        assert dy[near].max() < 0.7 * np.diff(law)[np.argmin(np.abs(law - end))]
+    assert np.diff(law).max() == pytest.approx(dy.max(), rel=0.05)
     assert heavy.dry_resolution()["worst_ratio"] <= 0.5 < heavy.dry_resolution(heavy.make_grid("hybrid", nx // 2, ny))[
         "worst_ratio"]
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         assert heavy.content_film(heavy.make_grid("hybrid", 32, 30), "hybrid").matrix_free
+
+
+def test_side_lobes_are_the_x_rule_length_of_each_ends_most_loaded_row():
+    """``end_lobes`` (4 b/M of each end's most loaded row, on the dry solver's rows) against the same length read
+    from a grid uniform in x: its x spacing over its worst row's ratio (``dry_resolution``, the dry pressure
+    interpolated onto the grid's rows); the loaded (small) end's lobe is the narrower, and it narrows with load."""
+    heavy = paper(10.0)
+    small, large = heavy.end_lobes()
+    g = heavy.make_grid("hybrid", 256, 177)
+    r = heavy.dry_resolution(g)
+    assert r["worst_y"] < 0.0 and small == pytest.approx((g.x[1] - g.x[0]) / r["worst_ratio"], rel=0.05)
+    assert small < large and paper(20.0).end_lobes()[0] < 0.6 * small
 
 
 def paper(factor, grid=None):
