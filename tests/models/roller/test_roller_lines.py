@@ -168,13 +168,15 @@ def test_ten_times_the_paper_load_converges_on_the_default_grid_near_the_dense_9
         warnings.simplefilter("error", InexactStepWarning)
         s = c.steady()
     _film_checks(c, s)
-    assert c.grid_spec == ("hybrid", 256, 89)
+    assert c.grid_spec == ("hybrid", 256, 111)
     dense = paper(10.0, ("clustered", 94, 89)).steady()
     # 94 x 89 has 0.03-0.045 c between x nodes in the contact, the default 0.029 c everywhere; its central film is
     # ~6 % low (a mid-plane line contact, docs/validation.md): the two films differ by the coarser grid's error
     assert s.h_central == pytest.approx(dense.h_central, rel=0.10)
-    assert s.h_min == pytest.approx(dense.h_min, rel=0.10)
     assert s.p_max == pytest.approx(dense.p_max, rel=0.02)
+    # the minimum film's valley at the small end: 94 x 89 has 0.018 c between rows there, the default's lobe cluster
+    # 0.0076 c; 94 x 89's H_min is 30-40 % low (measured: default 1.616e-6 R_m, 94 x 89 1.150e-6)
+    assert 1.2 * dense.h_min < s.h_min < 1.6 * dense.h_min
     assert s.y_of_h_min == pytest.approx(dense.y_of_h_min, abs=0.01 * c.roller.mean_radius)
 
 
