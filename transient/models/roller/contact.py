@@ -83,7 +83,7 @@ TRANSIENT_METHODS = ("ida", "bdf2")
 #: (:meth:`RollerContact.dry_resolution`)
 HYBRID_NX = (128, 256, 512, 1024, 2048)
 #: measured on the tilted paper case at 10x its load (docs/validation.md): 256 x nodes (ratio 0.40) give H_c within
-#: ~3 % of the Richardson limit (34 s CPU), 128 (ratio 0.81) 12 % below it
+#: ~3 % of the Richardson limit (34 s CPU on 89 y nodes, 45 s on the default's 111), 128 (ratio 0.81) 12 % below it
 HYBRID_RATIO = 0.5
 #: the most x nodes of a default grid: the largest on which the default is verified to converge (10x the paper's
 #: load); a load that needs more is refused without an explicit grid (50x: 512 x 89 does not converge, 1024 x 89
