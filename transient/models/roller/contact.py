@@ -78,6 +78,9 @@ from transient.solvers.newton import NewtonError
 PAPER_GRID = (94, 45)
 #: The methods :meth:`RollerContact.transient` offers: IDA on the penalty form, BDF2 on the film-content form.
 TRANSIENT_METHODS = ("ida", "bdf2")
+#: the clustered grid of 94 x nodes and twice the paper's y nodes (the dense reference at service loads); the hybrid
+#: grids' y law is its law plus the side lobes' clusters
+HEAVY_GRID = (94, 89)
 #: x node counts of the default x-uniform, y-clustered grid above the paper's load (:attr:`RollerContact.grid_spec`):
 #: the fewest whose worst row's x spacing is at most ``HYBRID_RATIO`` times 4 b/M of its own load
 #: (:meth:`RollerContact.dry_resolution`)
@@ -96,8 +99,9 @@ HYBRID_START_RATIO = 1.0
 #: share of a hybrid grid's y nodes on each end's side lobe: a sech^2 cluster centred on the footprint's end, as
 #: wide as the end's 4 b/M (:meth:`RollerContact.end_lobes`); the other clusters keep their shares of the rest.
 #: Measured at 10x the paper's load, 128 x nodes: the minimum film lies in the valley the side lobe closes across
-#: the small end (~0.08 c wide); without the cluster 89 y nodes (0.018 c there) give H_min 30 % below 177's
-#: (0.009 c), with it 111 y nodes (0.008 c there) within 2 % of 177's at half the CPU time (docs/validation.md)
+#: the small end (~0.08 c wide); against the Richardson limit in y (111, 221, 441 y nodes, observed order 2.05)
+#: the clustered law's 89 y nodes (0.018 c there) give H_min 34 % low, with the lobes 111 (0.0076 c) 7.4 % low; 221
+#: and 441 take every Newton step with GMRES at its cap (docs/validation.md)
 LOBE_FRACTION = 0.1
 #: y nodes of the default hybrid grid: the 89 of the clustered 94 x 89 law and ``LOBE_FRACTION`` of the nodes on
 #: each end's side lobe (``88 / (1 - 2 LOBE_FRACTION)`` intervals)
