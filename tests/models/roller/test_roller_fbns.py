@@ -151,10 +151,10 @@ def test_ten_times_the_paper_load_needs_the_loaded_ends_y_resolution():
 
 
 def test_default_grid_doubles_the_y_nodes_above_the_papers_load():
-    """Without ``grid``: the paper's 94 x 45 at its load, above it 89 y nodes (x uniform, as many nodes as the most
-    loaded row needs), kept along the load path."""
+    """Without ``grid``: the paper's 94 x 45 at its load, above it 111 y nodes (the clustered 89-node law plus the
+    side lobes'; x uniform, as many nodes as the most loaded row needs), kept along the load path."""
     assert paper(1.0, None).grid_spec == ("clustered", 94, 45)
     heavy = paper(2.0, None)
-    assert heavy.grid_spec == ("hybrid", 128, 89)
-    assert heavy.with_load(0.5 * heavy.load).grid_spec == ("hybrid", 128, 89)
+    assert heavy.grid_spec == ("hybrid", 128, 111)
+    assert heavy.with_load(0.5 * heavy.load).grid_spec == ("hybrid", 128, 111)
     assert paper(2.0).grid_spec == ("clustered", 94, 45)  # grid="paper" stays the paper's

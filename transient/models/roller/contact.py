@@ -22,9 +22,11 @@ Y at each end 25 % of the nodes on the profiled part of the footprint and 15 % o
 (where the film's side lobes close under load: ``END_WIDTH``); nodes on ``X = 0`` and ``Y = 0, +-Y_d``;
 elasticity by the dense influence matrix. ``("clustered", nx, ny)``: the same law with other node counts. ``(nx, ny)``:
 uniform, elasticity by DC-FFT and Newton-Krylov (:mod:`transient.models.roller.krylov`). ``("hybrid", nx, ny)``:
-x uniform, y clustered as the clustered grids; the elastic film by FFT along x and densely along y
+x uniform, y clustered as the clustered grids plus a cluster on each end's side lobe, as wide as the end's 4 b/M
+(``LOBE_FRACTION``, :meth:`RollerContact.end_lobes`: at service loads the minimum film lies in the valley the
+side lobe closes across the footprint's end); the elastic film by FFT along x and densely along y
 (:class:`~transient.physics.elasticity.RowConvolution`), the film-content Newton steps by GMRES with x-line
-blocks (:mod:`transient.models.roller.roller_lines`); the default above the paper case's load, with 89 y nodes
+blocks (:mod:`transient.models.roller.roller_lines`); the default above the paper case's load, with 111 y nodes
 and as many x nodes as the most loaded row needs (:attr:`RollerContact.grid_spec`). Above the paper case's
 load (mid-plane M > 3.2) the clustered x axes put 75 % of their nodes on the contact and 10 % on its outlet
 (``X_HEAVY``), and the default ``scheme="auto"`` limits the Couette flux (van Albada): the loaded end of the
@@ -74,15 +76,12 @@ from transient.solvers.newton import NewtonError
 PAPER_GRID = (94, 45)
 #: The methods :meth:`RollerContact.transient` offers: IDA on the penalty form, BDF2 on the film-content form.
 TRANSIENT_METHODS = ("ida", "bdf2")
-#: the clustered grid of 94 x nodes and twice the paper's y nodes; its y axis is the default grid's above the
-#: paper's load
-HEAVY_GRID = (94, 89)
 #: x node counts of the default x-uniform, y-clustered grid above the paper's load (:attr:`RollerContact.grid_spec`):
 #: the fewest whose worst row's x spacing is at most ``HYBRID_RATIO`` times 4 b/M of its own load
 #: (:meth:`RollerContact.dry_resolution`)
 HYBRID_NX = (128, 256, 512, 1024, 2048)
 #: measured on the tilted paper case at 10x its load (docs/validation.md): 256 x nodes (ratio 0.40) give H_c within
-#: ~3 % of the Richardson limit (34 s CPU), 128 (ratio 0.81) 12 % below it
+#: ~3 % of the Richardson limit (34 s CPU on 89 y nodes, 45 s on the default's 111), 128 (ratio 0.81) 12 % below it
 HYBRID_RATIO = 0.5
 #: the most x nodes of a default grid: the largest on which the default is verified to converge (10x the paper's
 #: load); a load that needs more is refused without an explicit grid (50x: 512 x 89 does not converge, 1024 x 89
@@ -92,6 +91,16 @@ HYBRID_NX_VERIFIED = 512
 #: times 4 b/M (10x: 128 x nodes, ratio 0.81, converge from the dry pressure; 50x: 128, ratio 3.6, do not); a
 #: coarse level that fails hands the dry pressure to the next
 HYBRID_START_RATIO = 1.0
+#: share of a hybrid grid's y nodes on each end's side lobe: a sech^2 cluster centred on the footprint's end, as
+#: wide as the end's 4 b/M (:meth:`RollerContact.end_lobes`); the other clusters keep their shares of the rest.
+#: Measured at 10x the paper's load, 128 x nodes: the minimum film lies in the valley the side lobe closes across
+#: the small end (~0.08 c wide); against the Richardson limit in y (111, 221, 441 y nodes, observed order 2.05)
+#: the clustered law's 89 y nodes (0.018 c there) give H_min 34 % low, with the lobes 111 (0.0076 c) 7.4 % low; 221
+#: and 441 take every Newton step with GMRES at its cap (docs/validation.md)
+LOBE_FRACTION = 0.1
+#: y nodes of the default hybrid grid: the 89 of the clustered 94 x 89 law and ``LOBE_FRACTION`` of the nodes on
+#: each end's side lobe (``88 / (1 - 2 LOBE_FRACTION)`` intervals)
+HYBRID_NY = 111
 #: Couette flux of the Reynolds equation (:mod:`transient.models.roller.kernels`)
 SCHEMES = ("auto", "upwind2", "upwind1", "limited")
 #: steady forms: the mass-conserving film content (FBNS) and the Reynolds condition
@@ -187,14 +196,15 @@ class RollerContact:
     @cached_property
     def grid_spec(self) -> tuple:
         """``(kind, nx, ny)``; without ``grid``: the paper's grid up to the paper case's load, and above it
-        (:attr:`heavy`) the x-uniform, y-clustered grid ``("hybrid", nx, 89)``: twice the paper's y nodes (the
-        loaded end's side lobe needs them: at 5x the paper's load H_min on 94 x 45 is 42 % below 94 x 89's; at 7x
-        and 10x 94 x 45 does not converge, 94 x 89 does; docs/validation.md) and the fewest x nodes of
+        (:attr:`heavy`) the x-uniform, y-clustered grid ``("hybrid", nx, HYBRID_NY)``: the clustered 94 x 89's y law
+        (twice the paper's y nodes: at 5x the paper's load H_min on 94 x 45 is 42 % below 94 x 89's; at 7x and 10x
+        94 x 45 does not converge, 94 x 89 does) plus the side lobes' clusters (``LOBE_FRACTION``: the minimum film's
+        valley at the loaded end; docs/validation.md) and the fewest x nodes of
         ``HYBRID_NX`` that resolve the most loaded row (``HYBRID_RATIO``), the elastic film by FFT along x
         (:mod:`transient.models.roller.roller_lines`)."""
         if not self.heavy:
             return ("clustered",) + PAPER_GRID
-        ny = HEAVY_GRID[1]
+        ny = HYBRID_NY
         for nx in HYBRID_NX:
             if self.dry_resolution(self.make_grid("hybrid", nx, ny))["worst_ratio"] <= HYBRID_RATIO:
                 break
@@ -331,11 +341,29 @@ class RollerContact:
             x = clustered_axis(x0, x1, nx, _weights(x1 - x0, X_HEAVY if self.heavy else X_PAPER), snap=[0.0])
         yd = self.roller.y_d / s["B"]
         cl = []
-        for start, end in ((-yd, s["y_lo"]), (yd, s["y_hi"])):
-            cl += [(0.5 * (start + end), max(1.0, abs(end - start)), 0.25), (end, END_WIDTH, END_FRACTION),
-                   (start, 8.0, 0.05)]
+        lobes = self.end_lobes() if kind == "hybrid" else None
+        share = 1.0 if lobes is None else 1.0 - 2.0 * LOBE_FRACTION  # the other clusters and the rest alike
+        for k, (start, end) in enumerate(((-yd, s["y_lo"]), (yd, s["y_hi"]))):
+            cl += [(0.5 * (start + end), max(1.0, abs(end - start)), 0.25 * share),
+                   (end, END_WIDTH, END_FRACTION * share), (start, 8.0, 0.05 * share)]
+            if lobes is not None:
+                cl.append((end, lobes[k], LOBE_FRACTION))
         y = clustered_axis(y0, y1, ny, _weights(y1 - y0, cl), snap=[0.0, -yd, yd])
         return TensorGrid(x, y)
+
+    def end_lobes(self) -> tuple[float, float]:
+        """The widths [c] of the film's side lobes at the small and the large end of the footprint: ``4 b/M`` of
+        each end's most heavily loaded row read as a line contact (:meth:`local_resolution` on the dry pressure),
+        the x rule's length. At service loads the minimum film lies in the valley the side lobe closes across the
+        footprint's end, about that wide (docs/validation.md)."""
+        d = self.dry()
+        r = self._row_resolution(d.x, d.y, d.pressure)
+        mid = 0.5 * (d.footprint_start + d.footprint_end)
+        out = []
+        for side in (d.y < mid, d.y >= mid):
+            j = int(np.argmax(np.where(side, r["M"], 0.0)))
+            out.append(4.0 * r["b"][j] / r["M"][j] / d.half_width)
+        return out[0], out[1]
 
     @cached_property
     def grid(self) -> TensorGrid:
@@ -675,7 +703,7 @@ class RollerContact:
             spacing[j] = dx[near].max() / b[j]
         ratio = spacing * M / 4.0
         k = int(np.nanargmax(ratio))
-        return dict(y=y, M=M, spacing=spacing, ratio=ratio, worst_y=float(y[k]), worst_ratio=float(ratio[k]))
+        return dict(y=y, M=M, b=b, spacing=spacing, ratio=ratio, worst_y=float(y[k]), worst_ratio=float(ratio[k]))
 
     @property
     def mid_plane_M(self) -> float:
