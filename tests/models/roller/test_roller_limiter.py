@@ -5,7 +5,7 @@ import numpy as np
 import pytest
 
 from transient.models.roller import RollerContact, TaperedRoller
-from transient.models.roller.kernels import van_albada
+from transient.models.ehl.limiter import van_albada
 from transient.params import park
 
 
