@@ -558,7 +558,9 @@ class RotorBearingSystem:
         touch_gap : > 0 stops the run (``success=False``, ``touched_at``, the message naming the bearing node, the
             time and e/C) when a journal reaches e/C = 1 - touch_gap (with boundary layers 1 - 2 delta / C -
             touch_gap); 0 turns the detection off, but a run whose journal reaches the wall (a negative film) is
-            still never a success.
+            still never a success. A rough bearing's journal runs through contact (its asperities carry it): it is
+            not watched, its contact is recorded (``contact_load``, ``friction_torque``, ``min_film``,
+            ``contact_pressure``, ``contact_events``: :mod:`~transient.models.rotor.rough_films`).
         reference_speed_rpm : the speed of the films' pressure unit (default: the largest speed of the run;
             a continued run keeps its start's).
 
