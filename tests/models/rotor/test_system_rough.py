@@ -253,6 +253,20 @@ def test_bdf_refuses_a_mix_of_rough_and_smooth(bearing):
         ContentSystem(s.dae(SPEED))
 
 
+def test_ida_takes_a_mix_of_rough_and_smooth(bearing):
+    """A rough and a smooth bearing on one rotor (IDA): the rough block's records beside the smooth one's zeros, the
+    touch event on the smooth bearing only (a touch_gap that the smooth journal reaches stops the run there)."""
+    smooth = JournalBearing(**BEARING, grid=(24, 4))
+    s = RotorBearingSystem(Rotor.rigid(200.0, 3.0, 0.5), {0: bearing, 1: smooth}, gravity=9.81)
+    r = quiet(s.run, 0.05, 3000.0, recording=Recording(outputs_per_revolution=20))
+    assert r.success and r.contact_load.shape == (2, 2) and np.all(r.contact_load[:, 1] == 0.0)
+    assert np.all(r.min_film > 0) and r.contact_events == []
+    whirl = RotorBearingSystem(Rotor.rigid(200.0, 3.0, 0.5), {0: bearing, 1: smooth}, gravity=9.81,
+                               unbalance=[(0, 60.0 * smooth.clearance, 0.0), (1, 60.0 * smooth.clearance, 0.0)])
+    touched = quiet(whirl.run, 3, 6000.0, touch_gap=0.4, recording=Recording(outputs_per_revolution=32))
+    assert touched.touched_at is not None and "node 1 touches" in touched.message
+
+
 def test_records_save_and_load(bearing, tmp_path):
     from transient.results import load_result
 
