@@ -616,8 +616,8 @@ class RotorBearingSystem:
 
         run.check_state(y, dae.n, "system", journals)
         tau0, tau_end = t0 * w, t_end * w
-        limits = [(b.bearing.max_eccentricity_ratio - run.touch_gap) ** 2 for b in dae.blocks]
         watched = [b for b in dae.blocks if b.rough is None]  # a rough journal's contact is a record, not a stop
+        limits = [(b.bearing.max_eccentricity_ratio - run.touch_gap) ** 2 for b in watched]
         events = None
         if run.touch_gap > 0 and watched:
             def events(t, yy, out):  # the rotor's states sit at the same places in both layouts
