@@ -251,6 +251,9 @@ def test_bdf_refuses_a_mix_of_rough_and_smooth(bearing):
                            gravity=G)
     with pytest.raises(ValueError, match="all rough or all smooth"):
         ContentSystem(s.dae(SPEED))
+    tilting = Rotor(mass=np.eye(4), stiffness=np.eye(4), nodes=[0], dofs=("x", "y", "tx", "ty"))
+    with pytest.raises(ValueError, match=r"bearings\[0\] roughness = Roughness\(\.\.\.\) with tilt_coupling"):
+        RotorBearingSystem(tilting, {0: bearing}, tilt_coupling=True)
 
 
 def test_ida_takes_a_mix_of_rough_and_smooth(bearing):

@@ -16,10 +16,10 @@ The asperity force depends on the node's position directly: its stiffness ``sym 
 (:func:`contact_mask`). ``s`` is the system's (a speed function of time); the speed law of the orbit's kernels
 (``RoughCells.knots``) is not used here.
 
-The content BDF's Newton (:func:`~transient.models.rotor.rough_content.rough_rotor_newton`) takes ``args = (films, roughs, rotor)``: the system's
-:class:`~transient.models.rotor.content_newton.FilmArgs`, per film ``(cells, contact, contact_pos)`` (its
-:class:`~transient.models.journal.rough_orbit.RoughCells`, the contact stiffness scratch and its positions; every
-film rough: the tuple is of one numba type) and the rotor rows
+The content BDF's Newton (:func:`~transient.models.rotor.rough_content.rough_rotor_newton`) takes ``args = (films,
+roughs, rotor)``: the system's :class:`~transient.models.rotor.content_newton.FilmArgs`, per film ``(cells, contact,
+contact_pos)`` (its :class:`~transient.models.journal.rough_orbit.RoughCells`, the contact stiffness scratch and its
+positions; every film rough: the tuple is of one numba type) and the rotor rows
 (:class:`~transient.models.rotor.content_newton.RotorArgs`): :func:`~transient.models.rotor.rough_content.content_args`.
 
 Records of a run (:func:`tribology_sample`): per bearing the asperity load [N], the friction torque [N m] (film shear
@@ -34,23 +34,20 @@ import numpy as np
 from numba import njit
 
 from transient.models.journal.orbit import contact_events
-from transient.models.journal.rough_orbit import (CONTACT_LAMBDA, orbit_tribology, peak_asperity_pressure, rough_cells, rough_flux,
-                                                  rough_flux_jacobian, rough_force, rough_state_fields)
+from transient.models.journal.rough_orbit import (CONTACT_LAMBDA, orbit_tribology, peak_asperity_pressure, rough_cells,
+                                                  rough_flux, rough_flux_jacobian, rough_force, rough_state_fields)
 
 
 # ------------------------------------------------------------------------------------------------- set-up
 def attach_rough(blocks) -> bool:
     """Give every :class:`~transient.models.rotor.model.BearingBlock` its ``rough`` cells (``RoughCells`` of a rough
     bearing, None of a smooth one) and its contact stiffness ``contact`` (k_xx, k_xy, k_yy) scratch; True when any is
-    rough. A rough bearing in a tilted block is refused (the rough film is aligned)."""
+    rough."""
     any_rough = False
     for b in blocks:
         r = getattr(b.bearing, "roughness", None)
         b.rough = None if r is None else rough_cells(r, b.bearing.clearance, b.film.p0, b.film.n)
         b.contact = np.zeros(3)
-        if r is not None and b.tilted:
-            raise ValueError(f"bearings[{b.node!r}] roughness = Roughness(...) with tilt_coupling = True; allowed: "
-                             "tilt_coupling=False (the rough film is aligned)")
         any_rough |= r is not None
     return any_rough
 

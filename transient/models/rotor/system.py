@@ -147,6 +147,9 @@ class RotorBearingSystem:
             if getattr(b, "shear_thinning", False):
                 raise ValueError(f"bearings[{node!r}] rheology = Gecim(...) with tilt_coupling = True; allowed: a "
                                  "Newtonian bulk (with or without boundary layers), or tilt_coupling=False")
+            if getattr(b, "roughness", None) is not None:
+                raise ValueError(f"bearings[{node!r}] roughness = Roughness(...) with tilt_coupling = True; allowed: "
+                                 "a smooth bearing, or tilt_coupling=False (the rough film is aligned)")
 
     def rotation(self, node) -> np.ndarray:
         """(2, n): the rows mapping q to the tilts (tx, ty) [rad] of ``node``."""
