@@ -33,9 +33,11 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
+from transient.models.journal.film import film_geometry, read_only
+from transient.models.journal.kernels import film_force
 from transient.models.journal.orbit import contact_events
-from transient.models.journal.rough_orbit import (CONTACT_LAMBDA, orbit_tribology, peak_asperity_pressure, rough_cells,
-                                                  rough_flux, rough_flux_jacobian, rough_force, rough_state_fields)
+from transient.models.journal.rough_orbit import (CONTACT_LAMBDA, orbit_tribology, rough_cells, rough_flux,
+                                                  rough_flux_jacobian, rough_force, rough_state_fields)
 
 
 # ------------------------------------------------------------------------------------------------- set-up
@@ -153,18 +155,43 @@ TRIBOLOGY = ("contact_load", "friction_torque", "min_film", "contact_pressure")
 def tribology_sample(dae, y, speed_rpm) -> dict:
     """A run's tribology records at the state ``y`` (universal layout) and shaft speed [rpm]: per bearing (the
     system's order) ``contact_load`` [N], ``friction_torque`` [N m], ``min_film`` [m], ``contact_pressure`` [Pa]
-    (the peak asperity pressure); a smooth bearing's contact entries 0."""
+    (the peak asperity pressure); a smooth bearing's contact entries 0 (its torque
+    :func:`~transient.models.journal.rough_orbit.orbit_tribology`'s)."""
     q = np.asarray(y[dae.Q0:dae.V0])
     out = {k: [] for k in TRIBOLOGY}
     for b in dae.blocks:
         X, Y = b.position(q)
-        t = orbit_tribology(b.film, b.bearing, y[b.offset:b.offset + b.n], X, Y, speed_rpm * b.spin)
-        out["contact_load"].append(t["contact_load"])
-        out["friction_torque"].append(t["friction_torque"])
+        u = y[b.offset:b.offset + b.n]
+        if b.rough is None:
+            t = orbit_tribology(b.film, b.bearing, u, X, Y, speed_rpm * b.spin)
+            t["contact_pressure"] = 0.0
+        else:
+            t = rough_tribology(b, u, X, Y, speed_rpm)
+        for k in ("contact_load", "friction_torque", "contact_pressure"):
+            out[k].append(t[k])
         out["min_film"].append(b.bearing.clearance * (1.0 - np.sqrt(b.reach2(q))))
-        out["contact_pressure"].append(0.0 if b.rough is None else
-                                       b.film.p0 * peak_asperity_pressure(X, Y, b.film.geo, b.rough))
     return out
+
+
+def rough_tribology(b, u, X, Y, speed_rpm) -> dict:
+    """The records of rough block ``b`` at its film ``u`` and position (X, Y) [C], on its kernels' fields (the
+    asperity pressure of the orbit's table): the friction torque on the journal
+    ``R^3 sym sum (mu U / h + (h / 2) dp/ds) min(theta, 1) A + R mu_b sum p_a dA`` (the Newtonian wall stress of
+    :func:`~transient.models.journal.film.wall_friction`, ``U = Omega R``, the rough film's bulk), the asperity
+    load [N] and the peak asperity pressure [Pa]."""
+    fl, sc = b.film, b.film.scales
+    rough_block_residual(read_only(np.ascontiguousarray(u, dtype=float)), read_only(np.zeros(b.n)), X, Y, 0.0, 0.0,
+                         0.0, np.empty(b.n), fl.switch, fl.geo, fl.fields, fl.fv, fl.sym, b.rough)
+    R = sc.radius
+    h, G, _ = film_geometry(fl, X, Y, fl.P)
+    U = speed_rpm * np.pi / 30.0 * R
+    theta = np.minimum(fl.grid.to_2d(np.asarray(fl.C, dtype=float)), 1.0)
+    shear = fl.sym * float(np.sum((fl.law.viscosity * U / h + 0.5 * h * G) * theta * fl.grid.to_2d(fl.area))) * R ** 2
+    pa = b.rough.pa
+    normal = fl.sym * float(pa @ fl.area) * fl.p0 * R ** 2
+    Fc = np.array(film_force(pa, fl.cosp, fl.sinp, fl.area, fl.sym)) * fl.force_scale
+    return dict(friction_torque=R * (shear + b.bearing.roughness.boundary_friction * normal),
+                contact_load=float(np.hypot(*Fc)), contact_pressure=fl.p0 * float(np.max(pa)))
 
 
 def rough_records(a, dae, nodes) -> dict:
