@@ -173,6 +173,14 @@ def tribology_sample(dae, y, speed_rpm) -> dict:
     return out
 
 
+def rough_block_force(b, u, X, Y) -> tuple:
+    """The film + asperity force (dimensionless, :func:`rough_block_residual`) of rough block ``b`` at its film ``u``
+    and position (X, Y) [C]; leaves the block's fields of that state in its film's scratch."""
+    fl = b.film
+    return rough_block_residual(read_only(np.ascontiguousarray(u, dtype=float)), read_only(np.zeros(b.n)), X, Y, 0.0,
+                                0.0, 0.0, np.empty(b.n), fl.switch, fl.geo, fl.fields, fl.fv, fl.sym, b.rough)
+
+
 def rough_tribology(b, u, X, Y, speed_rpm) -> dict:
     """The records of rough block ``b`` at its film ``u`` and position (X, Y) [C], on its kernels' fields (the
     asperity pressure of the orbit's table): the friction torque on the journal
@@ -180,8 +188,7 @@ def rough_tribology(b, u, X, Y, speed_rpm) -> dict:
     :func:`~transient.models.journal.film.wall_friction`, ``U = Omega R``, the rough film's bulk), the asperity
     load [N] and the peak asperity pressure [Pa]."""
     fl, sc = b.film, b.film.scales
-    rough_block_residual(read_only(np.ascontiguousarray(u, dtype=float)), read_only(np.zeros(b.n)), X, Y, 0.0, 0.0,
-                         0.0, np.empty(b.n), fl.switch, fl.geo, fl.fields, fl.fv, fl.sym, b.rough)
+    rough_block_force(b, u, X, Y)  # the block's fields at this state
     R = sc.radius
     h, G, _ = film_geometry(fl, X, Y, fl.P)
     U = speed_rpm * np.pi / 30.0 * R

@@ -43,7 +43,7 @@ from transient.models.journal.time_domain import check_time_domain
 from transient.models.rotor.content_form import BDF2_STEPS_PER_REVOLUTION, ContentSystem
 from transient.models.rotor.model import SystemDAE
 from transient.models.rotor.results import RotorEquilibrium, RotorRunResult, UnbalanceResponse
-from transient.models.rotor.rough_films import TRIBOLOGY, rough_records, tribology_sample
+from transient.models.rotor.rough_films import TRIBOLOGY, rough_block_force, rough_records, tribology_sample
 from transient.models.rotor.rotor import Rotor
 from transient.solvers.bandlu import BorderedBandLU
 from transient.solvers.integrate import Problem, Stats, Steps, check_method
@@ -679,7 +679,8 @@ class RotorBearingSystem:
             for b in dae.blocks:
                 X, Y = b.position(q)
                 b.set_gap(q)
-                F = b.film.force(y[b.offset:b.offset + b.n], X, Y)
+                u = y[b.offset:b.offset + b.n]
+                F = b.film.force(u, X, Y) if b.rough is None else rough_block_force(b, u, X, Y)  # rough: its kernels
                 forces.append((F[0] * b.film.force_scale, F[1] * b.film.force_scale))
             row = dict(speed=speed(tau)[0] * dae.speed_ref_rpm, d=self._node_displacements(q * dae.L), f=forces)
             if dae.rough:  # rough bearings: the contact and friction records (rough_films.py)
