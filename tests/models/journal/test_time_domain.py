@@ -12,7 +12,6 @@ from transient.params.rho_kim import BEARING, ROTOR
 
 ALIGNED_SMOOTH = dict(cavitation="elrod", roughness=None, misalignment=(0.0, 0.0), thermal=None)
 REFUSED = {"cavitation": ("reynolds", "cavitation = 'reynolds'; allowed: 'elrod'"),
-           "roughness": (object(), "roughness = Roughness(...); allowed: None"),
            "thermal": (object(), "thermal = ThermalFilm(...); allowed: None")}
 
 

@@ -29,8 +29,6 @@ NOT_IN_TIME_DOMAIN = {
     "cavitation": Refusal("elrod", "{value!r}", "the time-domain films are the mass-conserving Elrod film; the "
                           "Reynolds-condition film serves the steady and linear analyses",
                           ("JournalOrbit", "RotorBearingSystem")),
-    "roughness": Refusal(None, "Roughness(...)", "the rotor system's films are smooth; a rough bearing serves the "
-                         "single bearing's orbit, steady analyses and stribeck_curve", ("RotorBearingSystem",)),
     "thermal": Refusal(None, "ThermalFilm(...)", "the rotor system's films are isothermal; a thermal bearing serves "
                        "the single bearing's orbit and its steady and linear analyses", ("RotorBearingSystem",)),
 }

@@ -18,6 +18,7 @@ from transient.models.journal.content_newton import decoupled_pattern
 from transient.models.journal.film import read_only
 from transient.models.journal.orbit import BDF2_FILM_TOL
 from transient.models.rotor.content_newton import FilmArgs, RotorArgs, rotor_newton, rotor_residual
+from transient.models.rotor.rough_content import content_args
 from transient.solvers.integrate import Problem
 from transient.solvers.integrate.bdf2 import Bdf2Model
 
@@ -73,6 +74,9 @@ class ContentSystem:
             full=np.zeros(dae.pattern.nnz), gather=gather, speed=np.array([1.0, 0.0]), force=np.zeros(nq),
             phi_tol=PHI_TOL)
         self.args = (tuple(films), self.rotor)
+        self.newton, self.kernel = rotor_newton, rotor_residual
+        if dae.rough:  # rough bearings: their film blocks (rough_content.py)
+            self.args, self.newton, self.kernel = content_args(self)
         self.error_components = np.arange(dae.Q0, dae.P0)
 
     def set_speed(self, tau):
@@ -84,7 +88,7 @@ class ContentSystem:
         (:func:`~transient.models.rotor.content_newton.rotor_newton`) with the step's shaft speed set first."""
         def newton(args, t, *rest):
             self.set_speed(t)
-            return rotor_newton(args, t, *rest)
+            return self.newton(args, t, *rest)
 
         return Bdf2Model(newton=newton, args=self.args, error_components=self.error_components,
                          n_border=2 * self.dae.nq + 1)
@@ -92,8 +96,7 @@ class ContentSystem:
     def residual(self, tau, y, yp, out):
         """``F(tau, y, y')`` of the content formulation (:func:`~transient.models.rotor.content_newton.rotor_residual`)."""
         self.set_speed(tau)
-        rotor_residual(tau, np.ascontiguousarray(y, dtype=float), np.ascontiguousarray(yp, dtype=float), out,
-                       self.args)
+        self.kernel(tau, np.ascontiguousarray(y, dtype=float), np.ascontiguousarray(yp, dtype=float), out, self.args)
 
     def derivative(self, tau, y) -> np.ndarray:
         """``y'`` consistent with the content state ``y``: ``m' = -R / A`` (groove cells 0), ``q~' = v``, the

@@ -211,15 +211,55 @@ def rotor_force(y, rot):
 
 
 @njit(cache=True)
+def rotor_rows_residual(y, yp, out, rot):
+    """The kinematic, momentum and angle rows of the residual (module docstring), the bearings' forces already in
+    ``rot.force`` with the static and unbalance forces."""
+    s = rot.speed[0]
+    Q0, V0, P0 = rot.Q0, rot.V0, rot.P0
+    frc = rot.force
+    nq = V0 - Q0
+    for r in range(nq):
+        out[Q0 + r] = yp[Q0 + r] - y[V0 + r]
+        acc = -frc[r]
+        for c in range(nq):
+            acc += rot.M[r, c] * yp[V0 + c] + (rot.Cw[r, c] + s * rot.G[r, c]) * y[V0 + c] + rot.Kw[r, c] * y[Q0 + c]
+        out[V0 + r] = acc
+    out[P0] = yp[P0] - s
+
+
+@njit(cache=True)
+def rotor_rows_jacobian(y, cj, rot):
+    """The rotor rows' entries of the Jacobian into ``rot.full`` (:func:`rotor_jacobian`'s docstring)."""
+    s, ds = rot.speed[0], rot.speed[1]
+    full = rot.full
+    for j in range(rot.kin_q.size):
+        full[rot.kin_q[j]] = cj
+        full[rot.kin_v[j]] = -1.0
+    for p in range(rot.mom_q.size):
+        full[rot.mom_q[p]] = rot.k_vals[p]
+    for p in range(rot.mom_v.size):
+        r, c = rot.v_rows[p], rot.v_cols[p]
+        full[rot.mom_v[p]] = rot.Cw[r, c] + s * rot.G[r, c] + cj * rot.M[r, c]
+    phi = y[rot.P0]
+    for p in range(rot.phi_rows.size):
+        r = rot.phi_rows[p]
+        d = 0.0
+        for k in range(rot.ub_a.size):
+            c = np.cos(phi + rot.ub_a[k])
+            sn = np.sin(phi + rot.ub_a[k])
+            d -= rot.ub_x[k, r] * (-s * s * sn + ds * c) + rot.ub_y[k, r] * (s * s * c + ds * sn)
+        full[rot.mom_phi[p]] = d
+    full[rot.phi_phi[0]] = cj
+
+
+@njit(cache=True)
 def rotor_residual(t, y, yp, out, args):
     """``F(t, y, y')`` of the module docstring."""
     films, rot = args
     s = rot.speed[0]
-    Q0, V0, P0 = rot.Q0, rot.V0, rot.P0
-    nq = V0 - Q0
     rotor_force(y, rot)
     frc = rot.force
-    q = y[Q0:V0]
+    q = y[rot.Q0:rot.V0]
     for k in range(len(films)):
         f = films[k]
         switch, _, geo, fields, extras, fv, work, tol, regime = f.film
@@ -240,13 +280,7 @@ def rotor_residual(t, y, yp, out, args):
             fa, fb = film_force(fields.P, f.tilt[1], f.tilt[2], geo.area, f.sym)
             for j in range(f.support.size):
                 frc[f.support[j]] += f.ga[j] * fa + f.gb[j] * fb
-    for r in range(nq):
-        out[Q0 + r] = yp[Q0 + r] - y[V0 + r]
-        acc = -frc[r]
-        for c in range(nq):
-            acc += rot.M[r, c] * yp[V0 + c] + (rot.Cw[r, c] + s * rot.G[r, c]) * y[V0 + c] + rot.Kw[r, c] * y[Q0 + c]
-        out[V0 + r] = acc
-    out[P0] = yp[P0] - s
+    rotor_rows_residual(y, yp, out, rot)
 
 
 @njit(cache=True)
@@ -257,10 +291,9 @@ def rotor_jacobian(t, y, yp, cj, data, args):
     the rotor rows ``dF_q/dq = cj``, ``dF_q/dv = -1``, ``dF_v/dq = K / omega^2``, ``dF_v/dv = C / omega + s G +
     cj M``, ``dF_v/dphi = -df/dphi``, ``dF_phi/dphi = cj``. Keeps each film's cell regimes at this Jacobian."""
     films, rot = args
-    s, ds = rot.speed[0], rot.speed[1]
-    Q0, V0, P0 = rot.Q0, rot.V0, rot.P0
+    s = rot.speed[0]
     full = rot.full
-    q = y[Q0:V0]
+    q = y[rot.Q0:rot.V0]
     for k in range(len(films)):
         f = films[k]
         switch, _, geo, fields, extras, fv, work, tol, regime = f.film
@@ -280,24 +313,7 @@ def rotor_jacobian(t, y, yp, cj, data, args):
             work.xy[0] = np.nan
         for i in range(f.n):
             regime[i] = cell_regime(u[i], switch.width)
-    for j in range(rot.kin_q.size):
-        full[rot.kin_q[j]] = cj
-        full[rot.kin_v[j]] = -1.0
-    for p in range(rot.mom_q.size):
-        full[rot.mom_q[p]] = rot.k_vals[p]
-    for p in range(rot.mom_v.size):
-        r, c = rot.v_rows[p], rot.v_cols[p]
-        full[rot.mom_v[p]] = rot.Cw[r, c] + s * rot.G[r, c] + cj * rot.M[r, c]
-    phi = y[P0]
-    for p in range(rot.phi_rows.size):
-        r = rot.phi_rows[p]
-        d = 0.0
-        for k in range(rot.ub_a.size):
-            c = np.cos(phi + rot.ub_a[k])
-            sn = np.sin(phi + rot.ub_a[k])
-            d -= rot.ub_x[k, r] * (-s * s * sn + ds * c) + rot.ub_y[k, r] * (s * s * c + ds * sn)
-        full[rot.mom_phi[p]] = d
-    full[rot.phi_phi[0]] = cj
+    rotor_rows_jacobian(y, cj, rot)
     for p in range(rot.gather.size):
         data[p] = full[rot.gather[p]]
 

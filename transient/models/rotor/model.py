@@ -36,6 +36,8 @@ import scipy.sparse as sp
 from transient.models.journal.film import read_only
 from transient.models.rotor.kernels import (block_jacobian, block_residual, scatter_block, scatter_tilted_block,
                                            tilt_gap, tilted_block_jacobian, tilted_block_residual)
+from transient.models.rotor.rough_films import (add_contact_stiffness, attach_rough, contact_mask, contact_positions,
+                                                rough_block_jacobian, rough_block_residual)
 
 
 class BlockMaps(NamedTuple):
@@ -231,7 +233,8 @@ class SystemDAE:
         self.f_static = system.gravity_vector @ rotor.gravity_load / (L * w ** 2)
         self.unbalance = [(rotor.translation(node) * me / L, np.radians(phase)) for node, me, phase
                           in system.unbalance]
-        self.q_mask = system.stiffness != 0
+        self.rough = attach_rough(self.blocks)  # rough bearings: their cells and contact stiffness (rough_films.py)
+        self.q_mask = (system.stiffness != 0) | contact_mask(self.blocks, nq)
         self.v_mask = (rotor.mass != 0) | (rotor.damping != 0) | (rotor.gyroscopic != 0)
         np.fill_diagonal(self.v_mask, True)
         self.phi_rows = np.flatnonzero(np.any([np.any(T != 0, axis=0) for T, _ in self.unbalance], axis=0)) \
@@ -239,6 +242,7 @@ class SystemDAE:
         self.pattern, self.rotor_pos = system_pattern(self.blocks, nq, self.n, self.q_mask, self.v_mask,
                                                       self.phi_rows)
         self.pattern.sort_indices()
+        contact_positions(self.blocks, self.q_mask, self.rotor_pos[2])
         self.forces = np.zeros((len(self.blocks), 2))
         self.tilt_forces = np.zeros((len(self.blocks), 2))  # (Fa, Fb) of the tilted blocks (kernels.py)
 
@@ -272,8 +276,12 @@ class SystemDAE:
                 self.tilt_forces[k] = fa, fb
                 f[b.support] += b.gx * fx + b.gy * fy + b.ga * fa + b.gb * fb
                 continue
-            fx, fy = block_residual(y[o:o + b.n], yp[o:o + b.n], X, Y, Xd, Yd, s * b.spin, out[o:o + b.n], fl.switch,
-                                    fl.geo, fl.fields, fl.fv, fl.sym)
+            if b.rough is not None:
+                fx, fy = rough_block_residual(y[o:o + b.n], yp[o:o + b.n], X, Y, Xd, Yd, s * b.spin, out[o:o + b.n],
+                                              fl.switch, fl.geo, fl.fields, fl.fv, fl.sym, b.rough)
+            else:
+                fx, fy = block_residual(y[o:o + b.n], yp[o:o + b.n], X, Y, Xd, Yd, s * b.spin, out[o:o + b.n],
+                                        fl.switch, fl.geo, fl.fields, fl.fv, fl.sym)
             self.forces[k] = fx, fy
             f[b.support] += b.gx * fx + b.gy * fy
         out[Q0:V0] = qp - v
@@ -296,8 +304,12 @@ class SystemDAE:
                                       fl.switch, fl.geo, fl.fields, fl.extras, fl.fv, fl.sym, b.tilt)
                 scatter_tilted_block(b.local, data, b.maps, b.ax, b.ay, b.aa, b.ab, b.gx, b.gy, b.ga, b.gb)
                 continue
-            block_jacobian(y[o:o + b.n], yp[o:o + b.n], X, Y, Xd, Yd, s * b.spin, cj, b.local, fl.switch, fl.geo,
-                           fl.fields, fl.extras, fl.fv, fl.sym)
+            if b.rough is not None:
+                rough_block_jacobian(y[o:o + b.n], yp[o:o + b.n], X, Y, Xd, Yd, s * b.spin, cj, b.local, fl.switch,
+                                     fl.geo, fl.fields, fl.extras, fl.fv, fl.sym, b.rough, b.contact)
+            else:
+                block_jacobian(y[o:o + b.n], yp[o:o + b.n], X, Y, Xd, Yd, s * b.spin, cj, b.local, fl.switch, fl.geo,
+                               fl.fields, fl.extras, fl.fv, fl.sym)
             scatter_block(b.local, data, b.maps, b.ax, b.ay, b.gx, b.gy)
         kin_q, kin_v, mom_q, mom_v, mom_phi, phi_phi = self.rotor_pos
         data[kin_q] = cj
@@ -311,6 +323,9 @@ class SystemDAE:
             dphi -= T[0] * (-s * s * sn + ds * c) + T[1] * (s * s * c + ds * sn)
         data[mom_phi] = dphi[self.phi_rows]
         data[phi_phi] = cj
+        for b in self.blocks:
+            if b.rough is not None:  # the asperity stiffness on the momentum rows (after K's own entries)
+                add_contact_stiffness(data, b.contact_pos, b.contact, b.ax, b.ay, b.gx, b.gy)
 
     # ------------------------------------------------------------------------------------------
     def consistent_yp(self, tau, y) -> np.ndarray:
@@ -324,7 +339,7 @@ class SystemDAE:
         for b in self.blocks:
             fl, o = b.film, b.offset
             free = fl.op.free
-            hd = fl.area * fl.H * fl.D
+            hd = fl.area * (fl.H if b.rough is None else b.rough.mean_gap) * fl.D
             yp[o:o + b.n][free] = -out[o:o + b.n][free] / hd[free]
         yp[V0:P0] = np.linalg.solve(self.M, -out[V0:P0])
         yp[P0] = self.speed(tau)[0]

@@ -37,10 +37,17 @@ class RotorRunResult(_Nodes, RunResult):
     each bearing node (``bearing_nodes``); ``clearance`` [m] per bearing; ``touched_at`` [s] when a journal
     reached its bearing (the run stopped there); ``reference_speed_rpm`` [rpm] the speed of the state's pressure
     unit; ``final_state`` (the system's dimensionless state) at
-    ``final_time`` [s], from which ``run(..., start=result)`` continues."""
+    ``final_time`` [s], from which ``run(..., start=result)`` continues. With rough bearings
+    (:mod:`~transient.models.rotor.rough_films`), per bearing (n_t, n_bearings): ``contact_load`` [N] the asperities'
+    force on the journal, ``friction_torque`` [N m] (film shear plus boundary friction on the asperity load),
+    ``min_film`` [m], ``contact_pressure`` [Pa] the peak asperity pressure; ``contact_events``
+    ``[(t [s], node, "begins" | "ends"), ...]`` where a bearing's ``h_min / sigma`` crosses 3 (a rough journal's
+    contact is a record: the run goes on through it); ``bearing_force`` is then film plus asperities."""
 
     shapes = {"displacement": ("t", "nodes", 2), "speed_rpm": ("t",), "bearing_force": ("t", "bearing_nodes", 2),
-              "clearance": ("bearing_nodes",)}
+              "clearance": ("bearing_nodes",), "contact_load": ("t", "bearing_nodes"),
+              "friction_torque": ("t", "bearing_nodes"), "min_film": ("t", "bearing_nodes"),
+              "contact_pressure": ("t", "bearing_nodes")}
     labels = {"bearing_nodes": "nodes"}
 
     displacement: np.ndarray = quantity("m", None)
@@ -52,6 +59,11 @@ class RotorRunResult(_Nodes, RunResult):
     method: str = "ida"
     touched_at: float | None = quantity("s", None)
     reference_speed_rpm: float = quantity("rpm", 0.0)
+    contact_load: np.ndarray | None = quantity("N", None)
+    friction_torque: np.ndarray | None = quantity("N m", None)
+    min_film: np.ndarray | None = quantity("m", None)
+    contact_pressure: np.ndarray | None = quantity("Pa", None)
+    contact_events: list | None = None
 
     def eccentricity_ratio(self, node) -> np.ndarray:
         """e/C of the journal at the bearing ``node``."""

@@ -43,6 +43,7 @@ from transient.models.journal.time_domain import check_time_domain
 from transient.models.rotor.content_form import BDF2_STEPS_PER_REVOLUTION, ContentSystem
 from transient.models.rotor.model import SystemDAE
 from transient.models.rotor.results import RotorEquilibrium, RotorRunResult, UnbalanceResponse
+from transient.models.rotor.rough_films import TRIBOLOGY, rough_block_force, rough_records, tribology_sample
 from transient.models.rotor.rotor import Rotor
 from transient.solvers.bandlu import BorderedBandLU
 from transient.solvers.integrate import Problem, Stats, Steps, check_method
@@ -146,6 +147,9 @@ class RotorBearingSystem:
             if getattr(b, "shear_thinning", False):
                 raise ValueError(f"bearings[{node!r}] rheology = Gecim(...) with tilt_coupling = True; allowed: a "
                                  "Newtonian bulk (with or without boundary layers), or tilt_coupling=False")
+            if getattr(b, "roughness", None) is not None:
+                raise ValueError(f"bearings[{node!r}] roughness = Roughness(...) with tilt_coupling = True; allowed: "
+                                 "a smooth bearing, or tilt_coupling=False (the rough film is aligned)")
 
     def rotation(self, node) -> np.ndarray:
         """(2, n): the rows mapping q to the tilts (tx, ty) [rad] of ``node``."""
@@ -557,7 +561,9 @@ class RotorBearingSystem:
         touch_gap : > 0 stops the run (``success=False``, ``touched_at``, the message naming the bearing node, the
             time and e/C) when a journal reaches e/C = 1 - touch_gap (with boundary layers 1 - 2 delta / C -
             touch_gap); 0 turns the detection off, but a run whose journal reaches the wall (a negative film) is
-            still never a success.
+            still never a success. A rough bearing's journal runs through contact (its asperities carry it): it is
+            not watched, its contact is recorded (``contact_load``, ``friction_torque``, ``min_film``,
+            ``contact_pressure``, ``contact_events``: :mod:`~transient.models.rotor.rough_films`).
         reference_speed_rpm : the speed of the films' pressure unit (default: the largest speed of the run;
             a continued run keeps its start's).
 
@@ -613,14 +619,15 @@ class RotorBearingSystem:
 
         run.check_state(y, dae.n, "system", journals)
         tau0, tau_end = t0 * w, t_end * w
-        limits = [(b.bearing.max_eccentricity_ratio - run.touch_gap) ** 2 for b in dae.blocks]
+        watched = [b for b in dae.blocks if b.rough is None]  # a rough journal's contact is a record, not a stop
+        limits = [(b.bearing.max_eccentricity_ratio - run.touch_gap) ** 2 for b in watched]
         events = None
-        if run.touch_gap > 0:
+        if run.touch_gap > 0 and watched:
             def events(t, yy, out):  # the rotor's states sit at the same places in both layouts
                 q = yy[dae.Q0:dae.V0]
-                for k, b in enumerate(dae.blocks):
+                for k, b in enumerate(watched):
                     out[k] = limits[k] - b.reach2(q)
-        n_events = len(dae.blocks) if events else 0
+        n_events = len(watched) if events else 0
         solver = dict(method=method, rtol=rtol, atol=dae.absolute_tolerance(atol))
         to_run = universal = None
         if method == "bdf2":
@@ -638,20 +645,21 @@ class RotorBearingSystem:
                 y_ = np.array(y_, dtype=float)
                 return Problem(y0=y_, yp0=dae.consistent_yp(tau_, y_), residual=dae.residual, jac_pattern=dae.pattern,
                                jac_residual=dae.jacobian, events=events, n_events=n_events,
-                               event_terminal=[True] * len(dae.blocks), event_direction=[-1] * len(dae.blocks),
+                               event_terminal=[True] * n_events, event_direction=[-1] * n_events,
                                name="rotor on journal bearings")
 
         def touch_message(tau, y_):
             q = np.asarray(y_)[dae.Q0:dae.V0]
-            gaps = [limits[k] - b.reach2(q) for k, b in enumerate(dae.blocks)]
-            b = dae.blocks[int(np.argmin(gaps))]
+            gaps = [limits[k] - b.reach2(q) for k, b in enumerate(watched)]
+            b = watched[int(np.argmin(gaps))]
             return (f"the journal at bearing node {b.node} touches its bearing (e/C = {np.sqrt(b.reach2(q)):.4f}, "
                     f"touch_gap = {run.touch_gap:g}) at t = {tau / w:.6g} s")
 
         key = dict(self.parameters(), speed=_speed_key(speed_fn, t0, t_end), reference_speed_rpm=ref, method=method,
                    rtol=rtol, atol=atol, outputs_per_revolution=opr)
         parts = RunParts(label="rotor run", omega=w, revolution=(tau_end - tau0) / revolutions, problem_at=problem_at,
-                         solver=solver, series=("speed", "d", "f"), sample=self._sampler(dae, speed),
+                         solver=solver, series=("speed", "d", "f") + (TRIBOLOGY if dae.rough else ()),
+                         sample=self._sampler(dae, speed),
                          journals=journals,
                          eccentricities=lambda r: [(f"journal at bearing node {node}", r.eccentricity_ratio(node),
                                                     b.bearing.max_eccentricity_ratio)
@@ -671,21 +679,26 @@ class RotorBearingSystem:
             for b in dae.blocks:
                 X, Y = b.position(q)
                 b.set_gap(q)
-                F = b.film.force(y[b.offset:b.offset + b.n], X, Y)
+                u = y[b.offset:b.offset + b.n]
+                F = b.film.force(u, X, Y) if b.rough is None else rough_block_force(b, u, X, Y)  # rough: its kernels
                 forces.append((F[0] * b.film.force_scale, F[1] * b.film.force_scale))
-            return dict(speed=speed(tau)[0] * dae.speed_ref_rpm, d=self._node_displacements(q * dae.L), f=forces)
+            row = dict(speed=speed(tau)[0] * dae.speed_ref_rpm, d=self._node_displacements(q * dae.L), f=forces)
+            if dae.rough:  # rough bearings: the contact and friction records (rough_films.py)
+                row.update(tribology_sample(dae, y, row["speed"]))
+            return row
 
         return sample
 
     def _run_result(self, rec, dae, method, stats, touched, message, t_end, ref) -> RotorRunResult:
         a = rec.arrays()
         nodes = list(self.rotor.nodes)
+        rough = rough_records(a, dae, self.bearing_nodes) if dae.rough else {}
         return RotorRunResult(t=a["t"], displacement=a["d"].reshape(-1, len(nodes), 2), speed_rpm=a["speed"],
                               bearing_force=a["f"].reshape(-1, len(dae.blocks), 2), nodes=nodes,
                               bearing_nodes=self.bearing_nodes,
                               clearance=np.array([b.bearing.clearance for b in dae.blocks]), method=method,
                               touched_at=touched, message=message, stats=stats or Stats(), final_state=rec.last_y,
-                              final_time=float(t_end), reference_speed_rpm=ref)
+                              final_time=float(t_end), reference_speed_rpm=ref, **rough)
 
     def _check_steady_memory(self):
         """Refuse, before the films are built, a static equilibrium (the whole system's Newton) that does not fit
