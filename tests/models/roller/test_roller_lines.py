@@ -71,7 +71,7 @@ def test_fft_in_x_film_and_schur_products_equal_the_dense_ones():
     nx = c.grid.nx
     ab = np.zeros((3 * nx + 1, n), order="F")
     line_band(A.e["dp"], A.e["dh"], A.e["dt"], lines.colp, lines.colh, lines.base.conv.coefficients, A.inv_scale,
-              b_p, b_t, nx, c.grid.x.size, ab, c.grid.y, 0.0)
+              b_p, b_t, nx, c.grid.x.size, ab)
     r, q = np.divmod(np.arange(n * n), n)
     r, q = r.reshape(n, n), q.reshape(n, n)
     pattern = (r // nx == q // nx) | (np.abs(r - q) == nx)
