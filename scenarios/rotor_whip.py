@@ -27,8 +27,8 @@ threshold (``transient bench whip``, docs/bench/whip.md): the settled whirl's am
 151 x 21's (0.9955 against 0.9891 C), its ratio the same (0.5000), at a quarter of the CPU per revolution.
 
 The tolerance: ``--method bdf2`` runs at rtol 1e-4 (its travel bound 0.01 C per step): in the whirl on 51 x 11 one
-revolution then lies within 2.9e-5 C of a run at rtol 1e-7 at the disk (8.5e-5 C at the bearings) for 0.46x the CPU
-of rtol 1e-5 (docs/validation.md, "The rotor system on the journal orbit's variable-order BDF").
+revolution then lies within 2.9e-5 C of a run at rtol 1e-7 at the disk (8.5e-5 C at the bearings) for 0.63x the CPU
+of rtol 1e-5 (7.8e-6 C) (docs/validation.md, "The rotor system on the journal orbit's variable-order BDF").
 
 Duration: ``--quick`` (32 x 6, 30 revolutions each way) takes at most about 2.5 min of CPU with plain BDF2
 (``Integration(method="bdf2", max_order=2, steps_per_revolution=550)``, rtol 1e-5: 570 steps per revolution in the
