@@ -61,7 +61,7 @@ STRUCTURAL_DAMPING = 1e-5  # [s]: C = beta K damps the shaft's high bending mode
 UNBALANCE = 1e-4  # [kg m] at the disk
 OPR = 40  # outputs per revolution
 GRID = (76, 11)  # the whip study's grid (module docstring: its whirl against the paper's 151 x 21)
-RTOL = dict(bdf2=1e-4, ida=1e-5)  # the runs' tolerance by method (module docstring)
+RTOL = {"bdf2": 1e-4, "ida": 1e-5}  # the runs' tolerance by method (module docstring)
 
 
 def build(grid):
