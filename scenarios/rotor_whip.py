@@ -38,8 +38,8 @@ whip against 250 in the run-up). The default (76 x 11, 400 revolutions each way)
 stopped and resumed; it was not run to the end. About three quarters of its revolutions turn above the whirl
 threshold (the speed is linear in time from 0.3x to 2x it), where a revolution in the whirl costs ~8 s of CPU on
 51 x 11 at rtol 1e-4 (~2,800 Jacobians per revolution: the films' cells that cross the cavitation switch force
-refreshes; measured on a machine loaded ~20 on 2 cores): the whole run is hours, not minutes, on any of these grids
-(docs/validation.md).
+refreshes; measured on a machine loaded ~20 on 2 cores): the whole run is ~1.4 h of CPU on 51 x 11 and ~2 h on
+76 x 11 there (perhaps 25-40 min on 76 x 11 on an idle machine), most of a day on 151 x 21 (docs/validation.md).
 """
 
 from __future__ import annotations
