@@ -39,7 +39,7 @@ stopped and resumed; it was not run to the end. About three quarters of its revo
 threshold (the speed is linear in time from 0.3x to 2x it), where a revolution in the whirl costs ~8 s of CPU on
 51 x 11 at rtol 1e-4 (~2,800 Jacobians per revolution: the films' cells that cross the cavitation switch force
 refreshes; measured on a machine loaded ~20 on 2 cores): the whole run is ~1.4 h of CPU on 51 x 11 and ~2 h on
-76 x 11 there (perhaps 25-40 min on 76 x 11 on an idle machine), most of a day on 151 x 21 (docs/validation.md).
+76 x 11 there (perhaps 25-40 min on 76 x 11 on an idle machine), ~8 h on 151 x 21 (docs/validation.md).
 """
 
 from __future__ import annotations
