@@ -26,12 +26,20 @@ The grid: a whip study needs less than the paper's 151 x 21. The same bearing on
 threshold (``transient bench whip``, docs/bench/whip.md): the settled whirl's amplitude on 76 x 11 is 0.64 % above
 151 x 21's (0.9955 against 0.9891 C), its ratio the same (0.5000), at a quarter of the CPU per revolution.
 
-Duration: ``--quick`` (32 x 6, 30 revolutions each way) takes at most about 2.5 min of CPU with ``--method bdf2``
-(the default: 570 steps per revolution in the run-up, where the step cap in shaft angle rules, 1,823 in the
-coast-down, which starts in whip; 1178 s wall on a machine loaded 12-15 on 2 cores) and about 3 min with ``--method ida``
-(172-210 s: 3,550 IDA steps per revolution in whip against 250 in the run-up). The default (76 x 11, 400
-revolutions each way) is checkpointed, so it can be stopped and resumed; it was not run to the end (BDF2 on 51 x 11
-in whip at rtol 1e-5: 7.3 s of CPU per revolution, 4,411 steps).
+The tolerance: ``--method bdf2`` runs at rtol 1e-4 (its travel bound 0.01 C per step): in the whirl on 51 x 11 one
+revolution then lies within 2.9e-5 C of a run at rtol 1e-7 at the disk (8.5e-5 C at the bearings) for 0.63x the CPU
+of rtol 1e-5 (7.8e-6 C) (docs/validation.md, "The rotor system on the journal orbit's variable-order BDF").
+
+Duration: ``--quick`` (32 x 6, 30 revolutions each way) takes at most about 2.5 min of CPU with plain BDF2
+(``Integration(method="bdf2", max_order=2, steps_per_revolution=550)``, rtol 1e-5: 570 steps per revolution in the
+run-up, where its step cap in shaft angle rules, 1,823 in the coast-down, which starts in whip; 1178 s wall on a
+machine loaded 12-15 on 2 cores) and about 3 min with ``--method ida`` (172-210 s: 3,550 IDA steps per revolution in
+whip against 250 in the run-up). The default (76 x 11, 400 revolutions each way) is checkpointed, so it can be
+stopped and resumed; it was not run to the end. About three quarters of its revolutions turn above the whirl
+threshold (the speed is linear in time from 0.3x to 2x it), where a revolution in the whirl costs ~8 s of CPU on
+51 x 11 at rtol 1e-4 (~2,800 Jacobians per revolution: the films' cells that cross the cavitation switch force
+refreshes; measured on a machine loaded ~20 on 2 cores): the whole run is ~1.4 h of CPU on 51 x 11 and ~2 h on
+76 x 11 there (perhaps 25-40 min on 76 x 11 on an idle machine), ~8 h on 151 x 21 (docs/validation.md).
 """
 
 from __future__ import annotations
@@ -53,6 +61,7 @@ STRUCTURAL_DAMPING = 1e-5  # [s]: C = beta K damps the shaft's high bending mode
 UNBALANCE = 1e-4  # [kg m] at the disk
 OPR = 40  # outputs per revolution
 GRID = (76, 11)  # the whip study's grid (module docstring: its whirl against the paper's 151 x 21)
+RTOL = {"bdf2": 1e-4, "ida": 1e-5}  # the runs' tolerance by method (module docstring)
 
 
 def build(grid):
@@ -127,7 +136,7 @@ def main(argv=None):
         log(f"[rotor] {name.replace('_', '-')} {n0:.0f} -> {n1:.0f} rpm over {revs:g} revolutions; checkpoint {ckpt}")
         t_start = runs[start].final_time if start else 0.0
         with fresh_advice():
-            r = s.run(revs, ramp(n0, n1, revs, t_start), integration=Integration(method=a.method, rtol=1e-5),
+            r = s.run(revs, ramp(n0, n1, revs, t_start), integration=Integration(method=a.method, rtol=RTOL[a.method]),
                       long_run=LongRun(checkpoint=ckpt, resume=True, chunk_revolutions=10.0, progress=True),
                       recording=Recording(outputs_per_revolution=OPR), start=runs.get(start), touch_gap=1e-3,
                       reference_speed_rpm=2.0 * th)

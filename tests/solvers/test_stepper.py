@@ -148,3 +148,24 @@ def test_a_higher_order_reaches_a_tight_tolerance_in_fewer_steps():
 def test_max_order_out_of_range_is_refused():
     with pytest.raises(ValueError, match="max_order = 6"):
         BDF2(LinearStep(), np.array([1.0]), 0.0, 1.0, rtol=1e-3, atol=1e-6, max_order=6)
+
+
+def test_a_travel_function_bounds_the_steps_as_the_components_do():
+    """``max_travel=(travel, distance)`` with ``travel(dy)`` a function (e.g. the largest of several journals'
+    travels, each a combination of the states): the same steps as the components' form for the same measure, and
+    a measure twice as large takes about twice the steps (the travel, not the loose error test, sets them)."""
+    def steps(measure, distance=0.02):
+        s = BDF2(LinearStep(), np.array([1.0]), 0.0, 3.0, rtol=1e-1, atol=1e-1, max_order=5,
+                 bounds=StepBounds(max_travel=(measure, distance)))
+        ts = [0.0]
+        while s.t < 3.0:
+            assert s.step() is None
+            ts.append(s.t)
+        return np.array(ts)
+
+    by_components = steps([0])
+    assert np.array_equal(steps(lambda dy: abs(dy[0])), by_components)
+    doubled = steps(lambda dy: 2.0 * abs(dy[0]))
+    assert 1.8 < (doubled.size - 1) / (by_components.size - 1) < 2.2, (doubled.size, by_components.size)
+    free = steps([0], distance=1e3)  # no effective bound: the error test alone
+    assert by_components.size > 2 * free.size

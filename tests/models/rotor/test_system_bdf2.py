@@ -59,11 +59,11 @@ def test_the_band_of_two_films_is_one_films(bearing):
 
 def test_one_node_rotor_is_the_journal_orbit(bearing):
     """The same equations as the journal orbit's content form (the rotor row scaled by its mass, the unbalance on
-    the shaft angle): the same steps, the orbit to 1e-6 C."""
+    the shaft angle) and the same step bounds at the defaults (variable order, the journal's travel, the least steps
+    per revolution): the same steps, the orbit to 1e-6 C."""
     r = one_node(bearing).run(1, 6000, integration=Integration(method="bdf2", rtol=1e-7, atol=1e-10))
-    o = JournalOrbit(bearing, M_ROTOR, ECC, M_ROTOR * G, 6000).run(  # the rotor's stepper: plain BDF2, its cap
-        1, integration=Integration(method="bdf2", rtol=1e-7, atol=1e-10, max_order=2,
-                                   steps_per_revolution=BDF2_STEPS_PER_REVOLUTION))
+    o = JournalOrbit(bearing, M_ROTOR, ECC, M_ROTOR * G, 6000).run(
+        1, integration=Integration(method="bdf2", rtol=1e-7, atol=1e-10))
     assert r.success and r.method == "bdf2" and np.array_equal(r.t, o.t)
     assert r.stats.n_steps == o.stats.n_steps
     x, y = r.position(0)
@@ -78,10 +78,10 @@ def test_symmetric_rotor_on_two_bearings_is_the_half_orbit(bearing):
     rotor = Rotor.rigid(M_ROTOR, 3.0, 0.5)
     s = RotorBearingSystem(rotor, {0: bearing, 1: bearing}, unbalance=[(0, M_ROTOR * ECC / 2, 0.0),
                                                                        (1, M_ROTOR * ECC / 2, 0.0)], gravity=G)
-    r = s.run(1, 6000, integration=Integration(method="bdf2", rtol=1e-7, atol=1e-10))
-    o = JournalOrbit(bearing, M_ROTOR / 2, ECC, M_ROTOR * G / 2, 6000).run(
-        1, integration=Integration(method="bdf2", rtol=1e-7, atol=1e-10, max_order=2,
-                                   steps_per_revolution=BDF2_STEPS_PER_REVOLUTION))
+    plain = Integration(method="bdf2", rtol=1e-7, atol=1e-10, max_order=2,
+                        steps_per_revolution=BDF2_STEPS_PER_REVOLUTION)
+    r = s.run(1, 6000, integration=plain)  # plain BDF2 with a cap in shaft angle, as the orbit's
+    o = JournalOrbit(bearing, M_ROTOR / 2, ECC, M_ROTOR * G / 2, 6000).run(1, integration=plain)
     assert r.success
     for node in (0, 1):
         x, y = r.position(node)
@@ -167,13 +167,15 @@ def test_a_mix_of_film_kinds_is_refused():
 
 
 def test_step_cap_is_per_shaft_revolution(bearing, monkeypatch):
-    """The step cap (``BDF2_STEPS_PER_REVOLUTION`` per revolution) is in shaft angle: at half the reference speed a loose
+    """The step cap (here plain BDF2's ``BDF2_STEPS_PER_REVOLUTION`` per revolution) is in shaft angle: at half the reference speed a loose
     tolerance takes about as many steps per shaft revolution as at the reference speed, half as many as with the
     cap per revolution at the reference speed (``MIN_CAP_SPEED`` = 1), at the same distance from IDA's motion."""
     import transient.models.rotor.system as system
 
     s = one_node(bearing)
-    kw = dict(integration=Integration(method="bdf2", rtol=1e-3), recording=Recording(outputs_per_revolution=20),
+    kw = dict(integration=Integration(method="bdf2", rtol=1e-3, max_order=2,
+                                      steps_per_revolution=BDF2_STEPS_PER_REVOLUTION),
+              recording=Recording(outputs_per_revolution=20),
               long_run=LongRun(progress=False))
     own = s.run(0.5, 3000.0, **kw)
     half = s.run(0.5, 3000.0, reference_speed_rpm=6000.0, **kw)
@@ -187,3 +189,20 @@ def test_step_cap_is_per_shaft_revolution(bearing, monkeypatch):
     moved = lambda r: r.displacement - r.displacement[0]  # noqa: E731  (each run from its own equilibrium)
     err = [np.max(np.abs(moved(r) - moved(ida))) / bearing.clearance for r in (half, at_reference)]
     assert err[0] < 1.2 * err[1] + 1e-7, err
+
+
+def test_journal_travel_is_the_largest_bearing_node_travel_in_its_clearance(bearing):
+    """The step bound's measure (``ContentSystem.journal_travel``): for a change of the state, the largest travel of
+    a bearing node in its own bearing's clearance, on a reduced basis with two clearances (against the nodes'
+    displacements from the rotor's basis); the films' and the velocities' changes do not count."""
+    s = flexible_system(bearing)
+    dae = s.dae(6000.0)
+    form = ContentSystem(dae)
+    rng = np.random.default_rng(3)
+    for _ in range(3):
+        dy = rng.standard_normal(dae.n)
+        d = s._node_displacements(dy[dae.Q0:dae.V0] * dae.L)  # (nodes, 2) [m]
+        expected = max(np.hypot(*d[s.rotor.nodes.index(node)]) / b.clearance for node, b in s.bearings.items())
+        assert form.journal_travel(dy) == pytest.approx(expected, rel=1e-12)
+        dy[dae.Q0:dae.V0] = 0.0
+        assert form.journal_travel(dy) == 0.0

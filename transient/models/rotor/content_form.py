@@ -11,6 +11,8 @@ journal's Newton tolerance (``BDF2_FILM_TOL``) every step, the shaft angle to ``
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 import numba
 
@@ -25,10 +27,10 @@ from transient.solvers.integrate.bdf2 import Bdf2Model
 #: Newton tolerance on the shaft angle [rad] (its row is linear: Newton meets it once the films converge)
 PHI_TOL = 1e-10
 
-#: ``method="bdf2"`` (plain second-order BDF): at least this many steps per shaft revolution (the step cap: the
-#: rotor's local error does not see the films' fronts, whose error the cap bounds; one journal on 151 x 21 at 0.3 C:
-#: 9.5e-5 C at 550, 1.15e-4 C at 500); the journal orbit's own default is a variable-order BDF with a travel bound
-#: (``transient.models.journal.orbit.BDF2_TRAVEL``), which the rotor system does not take yet.
+#: plain second-order BDF's step cap, steps per shaft revolution (the rotor's local error does not see the films'
+#: fronts, whose error the cap bounds; one journal on 151 x 21 at 0.3 C: 9.5e-5 C at 550, 1.15e-4 C at 500): the
+#: period map's (:mod:`~transient.models.rotor.periodic`). ``run(method="bdf2")`` at its defaults bounds the steps as
+#: the journal orbit's (:meth:`ContentSystem.journal_travel`, ``BDF2_TRAVEL``, ``BDF2_MIN_STEPS``).
 BDF2_STEPS_PER_REVOLUTION = 550
 
 
@@ -78,6 +80,19 @@ class ContentSystem:
         if dae.rough:  # rough bearings: their film blocks (rough_content.py)
             self.args, self.newton, self.kernel = content_args(self)
         self.error_components = np.arange(dae.Q0, dae.P0)
+
+    def journal_travel(self, dy) -> float:
+        """The largest travel of a journal in its own clearance for a change ``dy`` of the state: of its centre, or
+        of the worse end of a film that takes its node's tilts. The films' fronts move with the journals, so
+        ``run(method="bdf2")`` bounds each step's travel (``StepBounds.max_travel``) as the journal orbit's."""
+        dq = np.asarray(dy)[self.dae.Q0:self.dae.V0]
+        worst = 0.0
+        for b in self.dae.blocks:
+            dX, dY = b.position(dq)
+            dA, dB = b.tilt_groups(dq)
+            dA, dB = dA * b.half, dB * b.half
+            worst = max(worst, math.hypot(dX + dA, dY + dB), math.hypot(dX - dA, dY - dB))
+        return worst
 
     def set_speed(self, tau):
         """The shaft speed ratio and its rate at ``tau`` into the kernels' ``speed``."""

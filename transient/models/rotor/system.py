@@ -40,7 +40,8 @@ from transient.models.journal.kernels import film_force
 from transient.models.journal.tilt import sensitivity, si_coefficients
 from transient.models.damper.damper import SqueezeFilmDamper
 from transient.models.journal.time_domain import check_time_domain
-from transient.models.rotor.content_form import BDF2_STEPS_PER_REVOLUTION, ContentSystem
+from transient.models.journal.orbit import BDF2_MAX_ORDER, BDF2_MIN_STEPS, BDF2_TRAVEL, BDF2_TRAVEL_RTOL
+from transient.models.rotor.content_form import ContentSystem
 from transient.models.rotor.model import SystemDAE
 from transient.models.rotor.results import RotorEquilibrium, RotorRunResult, UnbalanceResponse
 from transient.models.rotor.rough_films import TRIBOLOGY, rough_block_force, rough_records, tribology_sample
@@ -60,7 +61,7 @@ RUN_KEYWORDS = (keyword_table("integration", Integration, ("method", "rtol", "at
                 | keyword_table("recording", Recording, ("outputs_per_revolution",))
                 | keyword_table("long_run", LongRun, ("checkpoint", "chunk_revolutions", "resume", "progress",
                                                       "time_budget")))
-#: ``method="bdf2"``: its step cap is ``BDF2_STEPS_PER_REVOLUTION`` per shaft revolution at the speed of the step, down
+#: ``method="bdf2"``: its step cap (least steps per revolution) is per shaft revolution at the speed of the step, down
 #: to this fraction of the reference speed (below it, per revolution at this fraction)
 MIN_CAP_SPEED = 0.1
 #: How :meth:`RotorBearingSystem.unbalance_response` linearised the bearings, by ``film_states``
@@ -543,10 +544,13 @@ class RotorBearingSystem:
             ``"ida"`` (SUNDIALS IDA, sparse SuperLU on the block-arrow pattern) or ``"bdf2"`` (variable-step BDF2 on
             the films' content form, a bordered band LU with one band block per film and the rotor as its border,
             :mod:`~transient.models.rotor.content_form`; rtol and atol act on the rotor's coordinates and
-            velocities, every film is solved to the journal's Newton tolerance each step, at least
-            ``BDF2_STEPS_PER_REVOLUTION`` steps per shaft revolution at the step's speed, down to ``MIN_CAP_SPEED`` of the
-            reference speed); ``rtol``, ``atol`` (atol on the
-            dimensionless states: p/p0, journal position in clearances).
+            velocities, every film is solved to the journal's Newton tolerance each step; its steps as the journal
+            orbit's: variable order up to ``max_order`` (default ``BDF2_MAX_ORDER`` = 5; 2: plain BDF2), each step at
+            most ``BDF2_TRAVEL`` = 1e-3 of every journal's travel in its own clearance at rtol 1e-6, as sqrt(rtol)
+            at others, and at least ``BDF2_MIN_STEPS`` = 50 steps per shaft revolution at the step's speed, down to
+            ``MIN_CAP_SPEED`` of the reference speed; an explicit ``steps_per_revolution`` is that least number
+            instead, without the travel bound); ``rtol``, ``atol`` (atol on the dimensionless states: p/p0, journal
+            position in clearances).
         recording : :class:`~transient.solvers.settings.Recording`: ``outputs_per_revolution``, outputs per
             revolution at the reference speed (default 100).
         long_run : :class:`~transient.solvers.settings.LongRun`: ``checkpoint``, the path of an ``.npz``
@@ -577,8 +581,7 @@ class RotorBearingSystem:
         ig, rc, lr = run_settings("RotorBearingSystem.run", legacy, RUN_KEYWORDS, integration=integration,
                                   recording=recording, long_run=long_run).values()
         check_method("RotorBearingSystem.run", ig.method, step_solve=True, among=RUN_METHODS)
-        check_unused("RotorBearingSystem.run", "integration", ig, ("steps_per_revolution", "formulation", "dt",
-                                                                   "linear_solver"))
+        check_unused("RotorBearingSystem.run", "integration", ig, ("formulation", "dt", "linear_solver"))
         check_unused("RotorBearingSystem.run", "recording", rc, ("record", "record_from_revolution"))
         method, rtol, atol, opr = ig.method, ig.rtol, ig.atol, rc.outputs_per_revolution
         run = ModelRun(revolutions, opr, lr, touch_gap)
@@ -635,11 +638,17 @@ class RotorBearingSystem:
             form = ContentSystem(dae)
             to_run, universal = form.content_state, form.universal_state
             problem_at = lambda y_, tau_: form.problem(y_, tau_, events, n_events)  # noqa: E731
-            # the step cap in shaft angle (the films' fronts move with the shaft): BDF2_STEPS_PER_REVOLUTION per revolution
-            # at any speed down to MIN_CAP_SPEED of the reference speed, not per revolution at the reference speed
+            # the step cap in shaft angle: per shaft revolution at any speed down to MIN_CAP_SPEED of the reference
+            # speed, not per revolution at the reference speed; at the defaults each journal's travel bounded too
+            # (the films' fronts move with the journals), as the journal orbit's steps
             cap_scale = lambda tau: 1.0 / max(speed(tau)[0], MIN_CAP_SPEED)  # noqa: E731
-            solver.update(steps=Steps(max_step=2 * np.pi / BDF2_STEPS_PER_REVOLUTION, first_step=2 * np.pi * 1e-4),
-                          options={"bdf2": form.model(), "max_step_scale": cap_scale})
+            options = {"bdf2": form.model(), "max_step_scale": cap_scale,
+                       "max_order": BDF2_MAX_ORDER if ig.max_order is None else ig.max_order}
+            spr = ig.steps_per_revolution
+            if spr is None:
+                spr = BDF2_MIN_STEPS
+                options["max_travel"] = (form.journal_travel, BDF2_TRAVEL * np.sqrt(rtol / BDF2_TRAVEL_RTOL))
+            solver.update(steps=Steps(max_step=2 * np.pi / spr, first_step=2 * np.pi * 1e-4), options=options)
         else:
             def problem_at(y_, tau_):
                 y_ = np.array(y_, dtype=float)
@@ -656,7 +665,8 @@ class RotorBearingSystem:
                     f"touch_gap = {run.touch_gap:g}) at t = {tau / w:.6g} s")
 
         key = dict(self.parameters(), speed=_speed_key(speed_fn, t0, t_end), reference_speed_rpm=ref, method=method,
-                   rtol=rtol, atol=atol, outputs_per_revolution=opr)
+                   rtol=rtol, atol=atol, outputs_per_revolution=opr, max_order=ig.max_order,
+                   steps_per_revolution=ig.steps_per_revolution)
         parts = RunParts(label="rotor run", omega=w, revolution=(tau_end - tau0) / revolutions, problem_at=problem_at,
                          solver=solver, series=("speed", "d", "f") + (TRIBOLOGY if dae.rough else ()),
                          sample=self._sampler(dae, speed),

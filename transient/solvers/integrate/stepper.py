@@ -36,7 +36,9 @@ class StepBounds(NamedTuple):
     at most ``max_step`` (0: free), or a pair ``(max_step, scale)``: at most ``max_step * scale(t)`` at the step's
     start (e.g. a cap in shaft angle on a run whose speed changes); ``fixed_step`` > 0: steps of exactly that size,
     no error test; ``max_travel = (components, distance)``: steps over which those components (e.g. a journal's
-    position) move at most ``distance`` (Euclidean) at their last step's speed."""
+    position) move at most ``distance`` (Euclidean) at their last step's speed; ``components`` may instead be a
+    function ``travel(dy) -> float``, the travel of a change ``dy`` of the state (e.g. the largest of several
+    journals' travels, each a combination of the states)."""
 
     first_step: float = 0.0
     max_step: object = 0.0
@@ -175,8 +177,10 @@ class BDF2(Stepper):
                  bounds: StepBounds = StepBounds(), test_first_step=True, max_order=2):
         first_step, max_step, fixed_step, max_travel = bounds
         self.solver = solver
-        self.travel = None if max_travel is None else (np.asarray(max_travel[0], dtype=np.int64),
-                                                       float(max_travel[1]))
+        self.travel = None
+        if max_travel is not None:
+            comps = max_travel[0]
+            self.travel = (comps if callable(comps) else np.asarray(comps, dtype=np.int64), float(max_travel[1]))
         self.max_order = int(max_order)
         if not 2 <= self.max_order <= MAX_ORDER:
             raise ValueError(f"max_order = {max_order!r} [-] is out of range; allowed: 2 to {MAX_ORDER}")
@@ -286,12 +290,15 @@ class BDF2(Stepper):
         return None
 
     def _travel_cap(self):
-        """The longest step over which the ``max_travel`` components (e.g. a journal's position) move at most the
-        given distance at their speed over the last step (no bound before the second point or at rest)."""
+        """The longest step over which the ``max_travel`` components (e.g. a journal's position; or the travel
+        function's measure) move at most the given distance at their speed over the last step (no bound before the
+        second point or at rest)."""
         if self.travel is None or len(self.ts) < 2:
             return math.inf
         idx, dist = self.travel
-        speed = float(np.linalg.norm(self.ys[-1][idx] - self.ys[-2][idx])) / (self.ts[-1] - self.ts[-2])
+        dy = self.ys[-1] - self.ys[-2]
+        travel = float(idx(dy)) if callable(idx) else float(np.linalg.norm(dy[idx]))
+        speed = travel / (self.ts[-1] - self.ts[-2])
         return dist / speed if speed > 0.0 else math.inf
 
     def _select_order(self, k, ratio, scale):
