@@ -12,8 +12,9 @@ and the conservation law, in ``tau = omega_ref t``::
     A_i (h_T,i D_i u_i' + theta_i phi_c,i H_i') + R_i(k_x, k_z, s c_x) = 0      (universal, IDA)
     A_i m_i' + R_i = 0,   theta_i = m_i / h_T(H_i)                              (content, BDF2)
 
-``s(tau) = Omega / omega_ref`` is the shaft speed ratio (piecewise linear in tau; 1 at constant speed): the Couette
-and shear flows scale with it, the pressure unit ``p0`` is the reference speed's. The rotor::
+``s(tau) = Omega / omega_ref`` is the shaft speed ratio (the orbit's speed law, :mod:`~transient.models.journal.speed_law`;
+1 at constant speed): the Couette and shear flows scale with it, the pressure unit ``p0`` is the reference speed's.
+The rotor::
 
     X'' = kappa (Fbar_x + Fa_x) + Wbar + ebar (s^2 cos phi + s' sin phi),   phi = int s dtau
     Y'' = kappa (Fbar_y + Fa_y) + ebar (s^2 sin phi - s' cos phi)
@@ -31,8 +32,9 @@ import numpy as np
 from numba import njit
 
 from transient.fv.reynolds import jacobian_kernel, residual_kernel
-from transient.models.journal.kernels import N_ROTOR, film_force, state_fields
+from transient.models.journal.kernels import N_ROTOR, film_force, shaft_accelerations, state_fields
 from transient.models.journal.content_newton import cell_regime
+from transient.models.journal.speed_law import CONSTANT, shaft_speed
 from transient.physics.cavitation import elrod_inverse
 from transient.physics.flow_factors import PRESSURE_FLOW_TABLE, SHEAR_FLOW_TABLE, gamma_bracket
 import transient.solvers.integrate.bdf2 as stepper
@@ -64,7 +66,7 @@ class RoughCells(NamedTuple):
     table: np.ndarray     # (2, m) p_a / p0 and d(p_a / p0)/d(h / sigma) at h / sigma = low + k step
     low: float
     step: float
-    knots: np.ndarray     # (3, K) speed law: tau_k, s_k, phase phi(tau_k)
+    knots: np.ndarray     # (3, K) the shaft's speed law (speed_law.speed_knots): tau_k, s_k, angle phi(tau_k)
     kz: np.ndarray        # per cell: k_z, and d/dH of k_x, k_z, c_x (at speed 1)
     dkx: np.ndarray
     dkz: np.ndarray
@@ -86,18 +88,9 @@ def _pressure_fit(gamma):
     return out
 
 
-def speed_knots(profile) -> np.ndarray:
-    """The kernels' speed law from ``profile`` = ((tau_k, s_k), ...) (tau ascending; constant outside): the knots
-    and the shaft angle ``phi(tau_k) = int_0^tau_k s dtau`` at each (trapezoids: exact, s is linear between)."""
-    p = np.array(profile, dtype=float).reshape(-1, 2)
-    tau, s = p[:, 0], p[:, 1]
-    phase = np.concatenate([[0.0], np.cumsum(0.5 * (s[1:] + s[:-1]) * np.diff(tau))]) - s[0] * tau[0]
-    return np.ascontiguousarray(np.vstack([tau, s, phase]))
-
-
-def rough_cells(roughness, clearance, p0, n, profile=((0.0, 1.0),)) -> RoughCells:
+def rough_cells(roughness, clearance, p0, n, knots=CONSTANT) -> RoughCells:
     """:class:`RoughCells` of a film of ``n`` cells with ``roughness`` (:class:`~.roughness.Roughness`), clearance
-    [m] and pressure unit ``p0`` [Pa], shaft speed law ``profile`` (:func:`speed_knots`)."""
+    [m] and pressure unit ``p0`` [Pa], shaft speed law ``knots`` (:mod:`~transient.models.journal.speed_law`)."""
     sig = roughness.sigma / clearance
     ps = np.zeros((2, 6))
     w = 2.0 * roughness.journal_variance_share - 1.0
@@ -113,7 +106,7 @@ def rough_cells(roughness, clearance, p0, n, profile=((0.0, 1.0),)) -> RoughCell
     table = np.vstack([np.asarray(c.load(h), float) / p0, np.asarray(c.load_derivative(h), float) * roughness.sigma / p0])
     z = lambda: np.zeros(n)  # noqa: E731
     return RoughCells(sig, roughness.fit_floor, _pressure_fit(roughness.gamma), _pressure_fit(1.0 / roughness.gamma),
-                      ps, np.ascontiguousarray(table), CONTACT_TABLE_LOW, CONTACT_TABLE_STEP, speed_knots(profile),
+                      ps, np.ascontiguousarray(table), CONTACT_TABLE_LOW, CONTACT_TABLE_STEP, knots,
                       z(), z(), z(), z(), z(), z(), z(), z(), z(), np.zeros((2, n)), z())
 
 
@@ -234,29 +227,11 @@ def peak_asperity_pressure(X, Y, geo, rough):
 
 
 @njit(cache=True)
-def shaft_speed(tau, knots):
-    """Speed ratio ``s``, its slope ``ds/dtau`` and the shaft angle ``phi`` at ``tau`` of the piecewise-linear law."""
-    t, s, ph = knots[0], knots[1], knots[2]
-    K = t.size
-    if tau <= t[0] or K == 1:
-        return s[0], 0.0, ph[0] + s[0] * (tau - t[0])
-    if tau >= t[K - 1]:
-        return s[K - 1], 0.0, ph[K - 1] + s[K - 1] * (tau - t[K - 1])
-    k = 0
-    while t[k + 1] <= tau:
-        k += 1
-    slope = (s[k + 1] - s[k]) / (t[k + 1] - t[k])
-    dt = tau - t[k]
-    return s[k] + slope * dt, slope, ph[k] + s[k] * dt + 0.5 * slope * dt * dt
-
-
-@njit(cache=True)
 def rough_accelerations(tau, fx, fy, rotor, knots):
     """``(X'', Y'')`` of the module docstring for the film + asperity force (fx, fy)."""
     kappa, wbar, ebar, sym = rotor
     s, ds, phi = shaft_speed(tau, knots)
-    cp, sp = math.cos(phi), math.sin(phi)
-    return kappa * fx + wbar + ebar * (s * s * cp + ds * sp), kappa * fy + ebar * (s * s * sp - ds * cp)
+    return shaft_accelerations(s, ds, phi, fx, fy, kappa, wbar, ebar)
 
 
 @njit(cache=True)
