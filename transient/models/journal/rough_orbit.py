@@ -34,11 +34,12 @@ from numba import njit
 from transient.fv.reynolds import jacobian_kernel, residual_kernel
 from transient.models.journal.kernels import N_ROTOR, film_force, shaft_accelerations, state_fields
 from transient.models.journal.content_newton import cell_regime
+from transient.models.journal.film import read_only
 from transient.models.journal.speed_law import CONSTANT, shaft_speed
 from transient.physics.cavitation import elrod_inverse
 from transient.physics.flow_factors import PRESSURE_FLOW_TABLE, SHEAR_FLOW_TABLE, gamma_bracket
 import transient.solvers.integrate.bdf2 as stepper
-from transient.solvers.integrate.bdf2 import newton_step
+from transient.solvers.integrate.bdf2 import BandNewton, newton_step
 from transient.solvers.integrate.cache_guard import drop_stale_cache
 from transient.solvers.read_only import as_read_only
 
@@ -600,3 +601,64 @@ def rough_newton_norm(z, dz, args):
             if v > size:
                 size = v
     return size, switched
+
+
+class _StepLedger(BandNewton):
+    """The BDF2 step solve of a rough orbit that, on every accepted step, evaluates the film's conservation law
+    ``F_i = A_i m_i' + R_i`` at the step's state and content rate (:func:`step_mass_balance`)."""
+
+    def __init__(self, model, pattern, n, rtol, atol, area, free):
+        super().__init__(model, pattern, n, rtol, atol)
+        self.area, self.free = area[free], free
+        self.rows = []
+        self.t_last = None
+
+    def accepted(self, t, y):
+        super().accepted(t, y)
+        F = np.empty(y.size)
+        rough_bdf2_residual(t, read_only(y), read_only(self.yp), F, self.model.args)
+        if self.t_last is not None:
+            h = t - self.t_last
+            m = self.free.size
+            cells = F[:m][self.free]
+            rate = self.area * self.yp[:m][self.free]
+            self.rows.append((t, h, h * abs(float(np.sum(cells))) / float(np.sum(self.area)),
+                              h * float(np.max(np.abs(cells) / self.area)), h * float(np.sum(np.abs(rate)))
+                              / float(np.sum(self.area))))
+        self.t_last = t
+
+
+def step_mass_balance(orbit, revolutions, y0=None, rtol=1e-6) -> dict:
+    """The rough film's mass balance on every BDF2 step of ``revolutions`` of ``orbit`` (a rough
+    :class:`~transient.models.journal.orbit.JournalOrbit`, from ``y0`` in the universal layout, default its initial
+    state; its default BDF2 settings at ``rtol``).
+
+    The step solves the conservation law of every free cell ``A_i m_i' + R_i = 0`` (module docstring: content
+    ``m = (h_T / C) theta`` with the flow factors in the face fluxes ``R``) with ``m'`` the BDF formula's content rate,
+    so ``h sum_i A_i m_i'`` is the step's content change (``sum A (m_n+1 - m_n)`` at first order) and ``h sum_i R_i``
+    the net flux through the film's ends and feeds times the step (the faces between cells cancel in the sum).
+    Returns per step: ``t`` [tau], ``h`` [tau], ``imbalance`` = ``h |sum_i F_i| / sum_i A_i`` (content change plus
+    net outflow, per unit of film area, in the content's unit: compare with the Newton's content tolerance
+    ``BDF2_FILM_TOL``), ``worst_cell`` = ``h max_i |F_i| / A_i`` and ``change`` = ``h sum_i |A_i m_i'| / sum_i A_i``
+    (how much content moved in the step)."""
+    from dataclasses import replace as _replace
+
+    from transient.models.journal.orbit import BDF2_MAX_ORDER, BDF2_MIN_STEPS, BDF2_TRAVEL, BDF2_TRAVEL_RTOL
+    from transient.solvers.integrate import Steps, solve
+
+    if orbit.rough is None:
+        raise ValueError("step_mass_balance with roughness = None; allowed: a JournalOrbit of a rough bearing")
+    f = orbit.film
+    y = orbit.content_state(orbit.initial_state() if y0 is None else np.asarray(y0, dtype=float))
+    pattern = orbit.newton_pattern()[0]
+    problem = orbit._problem(y, 0.0, 0.0, "content", pattern)
+    atol = orbit.absolute_tolerance(1e-9, "content")
+    ledger = _StepLedger(orbit.bdf2_model(), pattern, orbit.n, rtol, atol, f.area, f.op.free)
+    options = dict(max_order=BDF2_MAX_ORDER, max_travel=(np.arange(f.n, f.n + 2),
+                                                         BDF2_TRAVEL * math.sqrt(rtol / BDF2_TRAVEL_RTOL)))
+    sol = solve(_replace(problem, step_solve=ledger), np.array([0.0, 2 * np.pi * revolutions]), "bdf2", rtol, atol,
+                steps=Steps(max_step=2 * np.pi / BDF2_MIN_STEPS, first_step=2 * np.pi * 1e-4), options=options)
+    if not sol.success:
+        raise RuntimeError(f"step_mass_balance: the run failed: {sol.message}")
+    a = np.array(ledger.rows, dtype=float).reshape(-1, 5)
+    return dict(t=a[:, 0], h=a[:, 1], imbalance=a[:, 2], worst_cell=a[:, 3], change=a[:, 4])
