@@ -79,7 +79,7 @@ class ThermalRun:
         # the wall's share of each cell [C R^2 of oil]: c_w A_i / (sym sum A) / (rho c_p C R^2)
         self.wall_volume = (th.wall_heat_capacity * film.area / (s.sym * float(np.sum(film.area[free])))
                             / (th.properties.volumetric_heat * s.clearance * s.radius ** 2))
-        self.model = Bdf2Model(newton=driven_newton, args=(orbit.content_model().args, film.fluidity, knots),
+        self.model = Bdf2Model(newton=driven_newton, args=(orbit.content_args(), film.fluidity, knots),
                                error_components=np.arange(film.n, orbit.n), n_border=N_ROTOR)
         self.started = False
         self.stepped_at = None
