@@ -176,13 +176,13 @@ def test_the_deprecated_speed_keyword_is_the_same_law():
 def test_the_smooth_orbit_is_the_rough_orbits_smooth_limit_through_a_run_up():
     """The same run-up (0.5x -> 1x in a revolution) on the smooth film and on the rough film with sigma = 1 nm
     (h / sigma >= 1000: flow factors 1, no contact), IDA at the same tolerances: the journal paths agree to the
-    steppers' tolerance (1e-6 C at rtol 1e-8)."""
+    steppers' tolerance (rtol 1e-8; measured 1.1e-9 C, the same 649 steps)."""
     ig = Integration(method="ida", rtol=1e-8, atol=1e-10)
     a = JournalOrbit(smooth(), **ROTOR_KW, speed_profile=RUN_UP).run(0.5, integration=ig, recording=REC)
     b = quiet(JournalOrbit(rough(1e-9), **ROTOR_KW, speed_profile=RUN_UP).run, 0.5, integration=ig, recording=REC)
     assert a.success and b.success
     np.testing.assert_array_equal(a.shaft_speed, b.shaft_speed)
-    assert np.max(np.hypot(a.x - b.x, a.y - b.y)) < 1e-6 * a.clearance
+    assert np.max(np.hypot(a.x - b.x, a.y - b.y)) < 1e-8 * a.clearance
 
 
 @pytest.fixture(scope="module")
@@ -197,7 +197,7 @@ def test_ida_and_bdf2_agree_through_a_run_up(run_ups):
     o, r = run_ups
     a, b = r["ida"], r["bdf2"]
     assert a.success and b.success
-    assert np.max(np.hypot(a.x - b.x, a.y - b.y)) < 1e-5 * o.bearing.clearance  # rtol 1e-6 both
+    assert np.max(np.hypot(a.x - b.x, a.y - b.y)) < 1e-6 * o.bearing.clearance  # rtol 1e-6 both (measured 8.7e-8)
     np.testing.assert_allclose(a.shaft_speed[[0, 10, 20, -1]], [0.5 * SPEED, 0.75 * SPEED, SPEED, SPEED])
 
 

@@ -533,8 +533,8 @@ class JournalOrbit:
         temperatures at an interval's start, the temperatures take one implicit step at its end (default 1; the
         splitting error is first order in it); ``temperature`` [K]: the start's
         temperatures, a number or one per cell and feed (default: those of ``start``, else of the static
-        equilibrium); ``speed``: the shaft's speed ``speed(t)`` [rpm] as a function of time [s] (default the
-        orbit's ``speed_rpm``, which stays the film's pressure unit; ``revolutions`` counts revolutions at it).
+        equilibrium); ``speed``: deprecated, the shaft's speed ``speed(t)`` [rpm] as a function of time [s] for this run
+        (a ``DeprecationWarning``; the same law as ``JournalOrbit(..., speed_profile=speed)``, which every orbit takes).
         ``record`` also takes ``"max_temperature"`` [K], ``"power_loss"`` [W] (the film's dissipation),
         ``"heat_flow"`` [W] (carried away by the oil and into the walls), ``"stored_heat"`` [J] (in the oil and the
         walls above the supply temperature), ``"shaft_speed"`` [rpm] and the field ``"temperature"`` [K]; the

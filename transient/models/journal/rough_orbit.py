@@ -643,21 +643,21 @@ def step_mass_balance(orbit, revolutions, y0=None, rtol=1e-6) -> dict:
     (how much content moved in the step)."""
     from dataclasses import replace as _replace
 
-    from transient.models.journal.orbit import BDF2_MAX_ORDER, BDF2_MIN_STEPS, BDF2_TRAVEL, BDF2_TRAVEL_RTOL
     from transient.solvers.integrate import Steps, solve
+    from transient.solvers.settings import Integration
 
     if orbit.rough is None:
         raise ValueError("step_mass_balance with roughness = None; allowed: a JournalOrbit of a rough bearing")
     f = orbit.film
+    if orbit.speed_profile is not None:  # a function's knots over this run
+        orbit._set_knots(orbit.speed_profile.knots(f.omega, orbit.speed_rpm, revolutions * 60.0 / orbit.speed_rpm))
+    step = orbit._stepper(Integration(method="bdf2", rtol=rtol), "content", 0.0)  # the run's BDF2 settings
     y = orbit.content_state(orbit.initial_state() if y0 is None else np.asarray(y0, dtype=float))
-    pattern = orbit.newton_pattern()[0]
-    problem = orbit._problem(y, 0.0, 0.0, "content", pattern)
-    atol = orbit.absolute_tolerance(1e-9, "content")
-    ledger = _StepLedger(orbit.bdf2_model(), pattern, orbit.n, rtol, atol, f.area, f.op.free)
-    options = dict(max_order=BDF2_MAX_ORDER, max_travel=(np.arange(f.n, f.n + 2),
-                                                         BDF2_TRAVEL * math.sqrt(rtol / BDF2_TRAVEL_RTOL)))
-    sol = solve(_replace(problem, step_solve=ledger), np.array([0.0, 2 * np.pi * revolutions]), "bdf2", rtol, atol,
-                steps=Steps(max_step=2 * np.pi / BDF2_MIN_STEPS, first_step=2 * np.pi * 1e-4), options=options)
+    problem = step.problem_at(y, 0.0)
+    model = step.options.pop("bdf2")
+    ledger = _StepLedger(model, problem.jac_pattern, orbit.n, step.rtol, step.atol, f.area, f.op.free)
+    sol = solve(_replace(problem, step_solve=ledger), np.array([0.0, 2 * np.pi * revolutions]), "bdf2", step.rtol,
+                step.atol, steps=Steps(max_step=step.max_step, first_step=step.first_step), options=step.options)
     if not sol.success:
         raise RuntimeError(f"step_mass_balance: the run failed: {sol.message}")
     a = np.array(ledger.rows, dtype=float).reshape(-1, 5)
