@@ -23,6 +23,7 @@ import numpy as np
 from numba import njit
 
 from transient.checks import check_range
+from transient.units import rpm_to_rad_s
 
 #: The fastest shaft a profile may give [rpm] (``SPEED_RANGE_RPM[1]`` of the bearing).
 MAX_RPM = 1e6
@@ -106,15 +107,6 @@ class SpeedProfile:
 
     def __repr__(self) -> str:
         return f"SpeedProfile({self.table!r})" if self.table is not None else f"SpeedProfile({self.function!r})"
-
-
-def speed_profile(value) -> SpeedProfile | None:
-    """``JournalOrbit``'s ``speed_profile`` argument as a :class:`SpeedProfile` (None stays None)."""
-    return None if value is None else SpeedProfile(value)
-
-
-def rpm_to_rad_s(rpm):
-    return rpm * math.pi / 30.0
 
 
 def _checked_table(profile) -> tuple:
