@@ -283,3 +283,18 @@ def test_a_scene_gives_the_profile():
     with pytest.raises(ValueError, match="speed_profile times"):
         scene_from_dict(dict(kind="journal_orbit", overrides=dict(grid=[24, 4],
                                                                   speed_profile=[[0.0, 1.0], [0.0, 2.0]])))
+
+
+def test_a_checkpoint_is_keyed_on_the_law(tmp_path):
+    """A run with a law resumes from its checkpoint; another law is refused by name."""
+    from transient.solvers.settings import LongRun
+
+    ck = str(tmp_path / "orbit.npz")
+    o = JournalOrbit(smooth(), **ROTOR_KW, speed_profile=RUN_UP)
+    a = o.run(0.2, recording=REC, long_run=LongRun(checkpoint=ck, chunk_revolutions=0.1, progress=False))
+    b = o.run(0.2, recording=REC, long_run=LongRun(checkpoint=ck, chunk_revolutions=0.1, resume=True, progress=False))
+    np.testing.assert_array_equal(a.x, b.x)
+    other = JournalOrbit(smooth(), **ROTOR_KW, speed_profile=lambda t: 0.5 * SPEED + 0.5 * SPEED * min(t / PERIOD, 1))
+    with pytest.raises(ValueError, match="speed_profile"):
+        other.run(0.2, recording=REC, long_run=LongRun(checkpoint=ck, chunk_revolutions=0.1, resume=True,
+                                                       progress=False))

@@ -148,6 +148,7 @@ class JournalOrbit:
         self.ebar = self.unbalance / bearing.clearance
         self._ends = (f.tilt, half_length(bearing.grid))  # the journal's tilt groups in its bush, the half length
         self._equilibrium = None
+        self._equilibria = {}
         self._newton_pattern = None
         #: the kernels' speed law (speed_law.speed_knots): a table's own knots; a function's are set per run
         self.knots = CONSTANT if self.speed_profile is None else self.speed_profile.knots(f.omega, self.speed_rpm, 0.0)
@@ -219,10 +220,22 @@ class JournalOrbit:
                              f"{SPEED_RANGE_RPM[0]:g} rpm, run(y0=...), or a rough bearing (rest_state)")
         return self._content_start(speed_rpm)
 
+    def start_equilibrium(self):
+        """The static equilibrium a run starts from: :meth:`equilibrium`, or with a ``speed_profile`` the one at its
+        speed at t = 0 (cached)."""
+        n0 = self.speed_rpm if self.speed_profile is None else self.speed_profile.start_rpm()
+        return self.equilibrium() if n0 == self.speed_rpm else self._equilibrium_at(n0)
+
+    def _equilibrium_at(self, speed_rpm):
+        """The static equilibrium at ``speed_rpm`` (cached per speed)."""
+        if speed_rpm not in self._equilibria:
+            self._equilibria[speed_rpm] = self.bearing.equilibrium(self.load, speed_rpm) if self.load > 0 else \
+                self.bearing.steady_state(0.0, speed_rpm)
+        return self._equilibria[speed_rpm]
+
     def _content_start(self, speed_rpm) -> np.ndarray:
         """:meth:`equilibrium_state` at ``speed_rpm`` in ``SPEED_RANGE_RPM``."""
-        e = self.bearing.equilibrium(self.load, speed_rpm) if self.load > 0 else \
-            self.bearing.steady_state(0.0, speed_rpm)
+        e = self._equilibrium_at(speed_rpm)
         X, Y = e.position[0] / self.bearing.clearance, e.position[1] / self.bearing.clearance
         y0 = np.zeros(self.n)
         y0[:self.film.n] = self.film.universal(self.bearing.film(speed_rpm).content(e.u, X, Y), X, Y)
@@ -609,7 +622,8 @@ class JournalOrbit:
                       steps=Steps(dt=step.dt, max_step=step.max_step, first_step=step.first_step))
         key = dict(self.parameters(), **ig.key(), outputs_per_revolution=opr, record=sorted(rc.record),
                    record_from_revolution=rc.record_from_revolution, formulation=formulation,
-                   **({} if law is None else {"speed_profile": law.key(t0 + revolutions * 60.0 / self.speed_rpm)}))
+                   **({} if law is None else {"speed_profile": law.key(self.film.omega, self.speed_rpm,
+                                                                          t0 + revolutions * 60.0 / self.speed_rpm)}))
         series = ("x", "y", *rc.record, *(("contact_pressure",) if self.rough is not None else ()))
         parts = RunParts(label=f"orbit {self.speed_rpm:g} rpm", omega=self.film.omega, revolution=2 * np.pi,
                          problem_at=step.problem_at, solver=solver, series=series, sparse=FIELD_SERIES,

@@ -16,6 +16,7 @@ reaction of the mass centre's own acceleration ``e dOmega/dt (-sin, cos)``).
 
 from __future__ import annotations
 
+import hashlib
 import math
 from typing import Callable
 
@@ -87,11 +88,11 @@ class SpeedProfile:
         """The speed at t = 0 [rpm]."""
         return float(self.value(0.0))
 
-    def key(self, t_end) -> object:
-        """What keys a checkpoint: the table, or a function's values at its knots up to ``t_end`` [s]."""
+    def key(self, omega_ref, rpm_ref, t_end) -> object:
+        """What keys a checkpoint: the table, or a digest of a function's :meth:`knots` of the run."""
         if self.table is not None:
             return [list(p) for p in self.table]
-        return self.knots(1.0, 1.0, t_end)[1].tolist()
+        return hashlib.sha256(self.knots(omega_ref, rpm_ref, t_end).tobytes()).hexdigest()[:16]
 
     # ------------------------------------------------------------------------------------- the kernels' form
     def knots(self, omega_ref, rpm_ref, t_end) -> np.ndarray:

@@ -222,7 +222,8 @@ def thermal_long_run(long_run, interval, opr):
 
 def start_temperature(orbit, start, temperature) -> np.ndarray:
     """The cells' and feeds' temperatures [K] at a thermal run's start: ``temperature`` (a number or one per cell
-    and feed), else the final temperatures of a ``start`` result, else those of the orbit's static equilibrium."""
+    and feed), else the final temperatures of a ``start`` result, else those of the static equilibrium the orbit
+    starts from (:meth:`~transient.models.journal.orbit.JournalOrbit.start_equilibrium`)."""
     film = orbit.film
     size = film.n + int(film.scales.feed_edges.size)
     if temperature is not None:
@@ -236,7 +237,7 @@ def start_temperature(orbit, start, temperature) -> np.ndarray:
     final = getattr(start, "final_temperature", None)
     if final is not None:
         return np.asarray(final, dtype=float)
-    e = orbit.equilibrium()
+    e = orbit.start_equilibrium()
     return np.concatenate([np.asarray(e.temperature, dtype=float).ravel(), e.mixing_temperature])
 
 
