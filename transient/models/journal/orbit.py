@@ -304,6 +304,9 @@ class JournalOrbit:
         (the journal touches the bearing)."""
         self._isothermal_only("problem")
         check_choice("formulation", formulation, FORMULATIONS)
+        if self.speed_profile is not None and self.speed_profile.function is not None:
+            raise ValueError("problem with speed_profile = a function: its kernels take it on knots over a run's span; "
+                             "allowed: a table ((t, rpm), ...), or run(...)")
         y0 = self.initial_state() if y0 is None else np.asarray(y0, dtype=float)
         if y0.shape != (self.n,):
             raise ValueError(f"the initial state has shape {y0.shape}; this orbit has {self.n} states")
