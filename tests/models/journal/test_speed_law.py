@@ -105,9 +105,9 @@ def test_the_unbalance_force_follows_the_law():
         assert math.isclose(ay * unit, m * e * (W * W * math.sin(th) - a * math.cos(th)), rel_tol=1e-12)
 
 
-@pytest.mark.parametrize("bad, match", [(((0.0, 10.0), (0.0, 20.0)), "ascending"), (((0.0, -1.0),), "speed_profile speed"),
-                                        (((-1.0, 1.0),), "speed_profile time"), ((1.0, 2.0, 3.0), "speed_profile"),
-                                        ("fast", "speed_profile")])
+@pytest.mark.parametrize("bad, match", [(((0.0, 10.0), (0.0, 20.0)), "ascending"),
+                                        (((0.0, -1.0),), "speed_profile speed"), (((-1.0, 1.0),), "speed_profile time"),
+                                        ((1.0, 2.0, 3.0), "speed_profile"), ("fast", "speed_profile")])
 def test_a_bad_table_is_named(bad, match):
     with pytest.raises(ValueError, match=match):
         JournalOrbit(smooth(), **ROTOR_KW, speed_profile=bad)

@@ -591,8 +591,8 @@ class JournalOrbit:
                              "(the flow records are at the orbit's speed_rpm)")
         if law is not None and not thermal and self.rough is None and (
                 method not in SPEED_LAW_METHODS or (method == "ida" and formulation != "universal")):
-            raise ValueError(f"method = {method!r}, formulation = {formulation!r} with a speed_profile: the orbit with a "
-                             "speed law integrates with method \"ida\" (formulation \"universal\") or \"bdf2\" "
+            raise ValueError(f"method = {method!r}, formulation = {formulation!r} with a speed_profile: the orbit "
+                             "with a speed law integrates with method \"ida\" (formulation \"universal\") or \"bdf2\" "
                              "(formulation \"content\")")
         if method == "bdf2" and formulation != "content":
             raise ValueError('method "bdf2" integrates the content formulation (conservative across a cavity crossing); '
