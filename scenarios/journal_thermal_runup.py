@@ -41,13 +41,9 @@ def main(argv=None):
     out.mkdir(parents=True, exist_ok=True)
     t0, c0 = time.perf_counter(), time.process_time()
     bearing = JournalBearing(**BEARING, grid=grid, thermal=ThermalFilm(**OIL))
-    orbit = JournalOrbit(bearing, MASS, UNBALANCE, LOAD, START)
-
-    def speed(t):
-        return START + (END - START) * min(t / ramp, 1.0)
-
+    orbit = JournalOrbit(bearing, MASS, UNBALANCE, LOAD, START, speed_profile=((0.0, START), (ramp, END)))
     revolutions = (ramp + hold) * START / 60.0  # revolutions at the orbit's (start) speed
-    r = orbit.run(revolutions, speed=speed, thermal_interval=1.0,
+    r = orbit.run(revolutions, thermal_interval=1.0,
                   recording=Recording(outputs_per_revolution=10, record=("shaft_speed", "max_temperature",
                                                                          "power_loss", "heat_flow", "stored_heat")))
     if not r.success:

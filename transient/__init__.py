@@ -49,6 +49,7 @@ from transient.models.damper import SqueezeFilmDamper
 from transient.models.journal import CircumferentialGroove, Groove, JournalBearing, JournalOrbit, OilHole, stability_onset
 from transient.models.journal.roughness import Roughness
 from transient.models.journal.thermal_settings import BushConvection, IsothermalShaft, ThermalFilm
+from transient.models.journal.speed_law import SpeedProfile
 from transient.models.pad import ThrustPad
 from transient.models.point import PointContact
 from transient.models.roller import LineContact, RollerContact, TaperedRoller
@@ -65,7 +66,7 @@ from transient.study.stribeck import StribeckCurve, stribeck_curve
 from transient.surfaces.roughness import RoughSurface
 
 __all__ = [
-    "AsperityContact", "BoundaryLayers", "BushConvection", "IsothermalShaft", "ThermalFilm", "CircumferentialGroove", "DiscreteDensity", "Gecim", "Groove", "Integration",
+    "AsperityContact", "BoundaryLayers", "BushConvection", "IsothermalShaft", "ThermalFilm", "SpeedProfile", "CircumferentialGroove", "DiscreteDensity", "Gecim", "Groove", "Integration",
     "LayeredFilm", "LongRun", "Newtonian", "JournalBearing", "JournalOrbit", "LineContact", "OilHole", "PointContact",
     "Problem", "Recording", "Result", "RollerContact", "Rotor", "RotorBearingSystem", "TaperedRoller",
     "Roughness", "RoughSurface", "Settling", "Solution", "SqueezeFilmDamper", "Stats", "Steps", "StribeckCurve",

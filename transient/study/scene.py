@@ -8,6 +8,7 @@ outputs wanted::
     [overrides]
     speed_rpm = 6000.0
     grid = [151, 21]
+    # speed_profile = [[0.0, 3000.0], [0.1, 6000.0]]   # a run-up [s, rpm] (journal_orbit; speed_rpm the reference)
     [run]
     revolutions = 20
     rtol = 1e-5
@@ -227,7 +228,7 @@ def _journal_build(p):
     from transient import JournalOrbit
 
     b, rotor = _journal_split(p)
-    return JournalOrbit(b, speed_rpm=p["speed_rpm"], **rotor)
+    return JournalOrbit(b, speed_rpm=p["speed_rpm"], speed_profile=p.get("speed_profile"), **rotor)
 
 
 def _journal_orbit_point(p, run):
@@ -352,10 +353,13 @@ def _plots(element):
 _JOURNAL_UNITS = dict(diameter="m", length="m", clearance="m", viscosity="Pa s", bulk_modulus="Pa",
                       supply_pressure="Pa", rotor_mass="kg", unbalance="m", load="N", speed_rpm="rpm", grid="cells")
 _RHO_KIM = dict(**rho_kim.BEARING, **rho_kim.ROTOR, speed_rpm=rho_kim.REPORTED["speed_rpm"], grid=[151, 21])
+#: a journal orbit's scene may give the shaft's speed in time: ``speed_profile = [[t_0, n_0], [t_1, n_1], ...]``
+#: ([s, rpm], :class:`~transient.models.journal.speed_law.SpeedProfile`; ``speed_rpm`` the reference)
+_ORBIT_UNITS = dict(_JOURNAL_UNITS, speed_profile="s, rpm")
 
 KINDS = {
     "journal_orbit": Kind(
-        "journal_orbit", {"rho_kim": _RHO_KIM}, _JOURNAL_UNITS,
+        "journal_orbit", {"rho_kim": _RHO_KIM}, _ORBIT_UNITS,
         dict(revolutions=Option("rev", 20.0, 1e-3, 1e6), method=Option("", "ida", choices=("ida", "cvode", "bdf", "bdf2")),
              rtol=Option("-", 1e-5, 1e-12, 1e-2), outputs_per_revolution=Option("1/rev", 64, 1, 1e5, integer=True),
              settle_tol=Option("-", 0.01, 1e-9, 1.0)),

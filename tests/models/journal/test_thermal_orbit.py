@@ -118,10 +118,11 @@ def test_wall_heat_capacity_slows_the_warm_up():
 
 
 def test_a_speed_function_turns_the_shaft_faster():
-    """speed(t) [rpm]: the shaft's recorded speed follows it, and a faster shaft makes more heat."""
-    o = orbit(speed=1500.0)
+    """speed_profile = n(t) [rpm]: the shaft's recorded speed follows it, and a faster shaft makes more heat."""
     period = 60.0 / 1500.0
-    r = o.run(2, speed=lambda t: 1500.0 + 750.0 * t / period, thermal_interval=0.5,
+    o = JournalOrbit(JournalBearing(**GEOMETRY, viscosity=None, grid=GRID, thermal=OIL), MASS, 0.0, LOAD, 1500.0,
+                     speed_profile=lambda t: 1500.0 + 750.0 * t / period)
+    r = o.run(2, thermal_interval=0.5,
               recording=Recording(outputs_per_revolution=8, record=("shaft_speed", "power_loss")))
     assert r.success
     assert np.allclose(r.shaft_speed, 1500.0 + 750.0 * r.t / period, rtol=1e-9)

@@ -102,6 +102,15 @@ def rotor_accelerations(tau, fx, fy, kappa, wbar, ebar):
     return kappa * fx + wbar + ebar * np.cos(tau), kappa * fy + ebar * np.sin(tau)
 
 
+@njit(cache=True)
+def shaft_accelerations(s, ds, phi, fx, fy, kappa, wbar, ebar):
+    """:func:`rotor_accelerations` at a shaft speed that varies (:mod:`~transient.models.journal.speed_law`): speed
+    ratio ``s``, its rate ``ds = ds/dtau`` and the shaft angle ``phi``; the unbalance force
+    ``ebar (s^2 (cos, sin) + s' (sin, -cos))`` (at s = 1, s' = 0, phi = tau: :func:`rotor_accelerations` bit for bit)."""
+    cp, sp = np.cos(phi), np.sin(phi)
+    return kappa * fx + wbar + ebar * (s * s * cp + ds * sp), kappa * fy + ebar * (s * s * sp - ds * cp)
+
+
 # A Newtonian film's ``fv.bulk`` is None: the three helpers below are typed on it, so numba compiles the Gecim
 # flux (gecim_film, physics.layered) only into the kernels of a Gecim film.
 
@@ -211,13 +220,20 @@ def stencil_flux_jacobian(switch, geo, fields, extras, fv, data, speed_ratio):
 @njit(cache=True)
 def ode_rhs(tau, y, out, switch, rotor, geo, fields, fv):
     """ODE right-hand side ``y' = f(tau, y)`` of the film + rotor (module docstring)."""
+    ode_rhs_at(tau, y, out, switch, rotor, geo, fields, fv, 1.0, 0.0, tau)
+
+
+@njit(cache=True)
+def ode_rhs_at(tau, y, out, switch, rotor, geo, fields, fv, s, ds, phi):
+    """:func:`ode_rhs` at the shaft speed ratio ``s``, rate ``ds`` and angle ``phi`` (:func:`shaft_accelerations`;
+    the consistent start of the IDA problem of an orbit with a speed law)."""
     kappa, wbar, ebar, sym = rotor
     cosp, sinp, area = geo.cosp, geo.sinp, geo.area
     H, P, dP, C, D, dD, k, c, zero, R = fields
     free = fv.cells.free
     n = free.size
     X, Y, VX, VY = y[n], y[n + 1], y[n + 2], y[n + 3]
-    stencil_residual(y[:n], X, Y, switch, geo, fields, fv, R, 1.0)
+    stencil_residual(y[:n], X, Y, switch, geo, fields, fv, R, s)
     for i in range(n):
         if free[i]:
             out[i] = (-R[i] / area[i] - C[i] * (VX * cosp[i] + VY * sinp[i])) / (H[i] * D[i])
@@ -226,7 +242,7 @@ def ode_rhs(tau, y, out, switch, rotor, geo, fields, fv):
     fx, fy = film_force(P, cosp, sinp, area, sym)
     out[n] = VX
     out[n + 1] = VY
-    out[n + 2], out[n + 3] = rotor_accelerations(tau, fx, fy, kappa, wbar, ebar)
+    out[n + 2], out[n + 3] = shaft_accelerations(s, ds, phi, fx, fy, kappa, wbar, ebar)
 
 
 @njit(cache=True)
@@ -268,6 +284,13 @@ def ode_jacobian(tau, y, data, f, switch, rotor, geo, fields, extras, fv):
 @njit(cache=True)
 def dae_residual(tau, y, yp, out, switch, rotor, geo, fields, fv):
     """IDA residual ``F(tau, y, y')`` of the film + rotor (module docstring); groove cells: ``u' = 0``."""
+    dae_residual_at(tau, y, yp, out, switch, rotor, geo, fields, fv, 1.0, 0.0, tau)
+
+
+@njit(cache=True)
+def dae_residual_at(tau, y, yp, out, switch, rotor, geo, fields, fv, s, ds, phi):
+    """:func:`dae_residual` at the shaft speed ratio ``s``, rate ``ds`` and angle ``phi``: the Couette flux times
+    ``s``, the unbalance of :func:`shaft_accelerations`."""
     kappa, wbar, ebar, sym = rotor
     cosp, sinp, area = geo.cosp, geo.sinp, geo.area
     H, P, dP, C, D, dD, k, c, zero, R = fields
@@ -275,14 +298,14 @@ def dae_residual(tau, y, yp, out, switch, rotor, geo, fields, fv):
     n = free.size
     X, Y, VX, VY = y[n], y[n + 1], y[n + 2], y[n + 3]
     Xd, Yd = yp[n], yp[n + 1]
-    stencil_residual(y[:n], X, Y, switch, geo, fields, fv, R, 1.0)
+    stencil_residual(y[:n], X, Y, switch, geo, fields, fv, R, s)
     for i in range(n):
         if free[i]:
             out[i] = area[i] * (H[i] * D[i] * yp[i] + C[i] * (Xd * cosp[i] + Yd * sinp[i])) + R[i]
         else:
             out[i] = yp[i]
     fx, fy = film_force(P, cosp, sinp, area, sym)
-    ax, ay = rotor_accelerations(tau, fx, fy, kappa, wbar, ebar)
+    ax, ay = shaft_accelerations(s, ds, phi, fx, fy, kappa, wbar, ebar)
     out[n] = Xd - VX
     out[n + 1] = Yd - VY
     out[n + 2] = yp[n + 2] - ax
@@ -296,6 +319,12 @@ def dae_jacobian(tau, y, yp, cj, data, switch, rotor, geo, fields, extras, fv):
         dF_i/du_i += A_i (H_i D'_i u_i' + D_i H'_i + cj H_i D_i),   dF_i/dX += A_i cos (D_i u_i' + cj theta_i)
         dF_VX/du_j = -kappa sym P'(u_j) cos(phi_j) A_j,  dF_X/dX = cj,  dF_X/dVX = -1,  dF_VX/dVX = cj
     """
+    dae_jacobian_at(tau, y, yp, cj, data, switch, rotor, geo, fields, extras, fv, 1.0)
+
+
+@njit(cache=True)
+def dae_jacobian_at(tau, y, yp, cj, data, switch, rotor, geo, fields, extras, fv, s):
+    """:func:`dae_jacobian` of :func:`dae_residual_at` at the speed ratio ``s`` (the unbalance depends on no state)."""
     kappa, wbar, ebar, sym = rotor
     cosp, sinp, area = geo.cosp, geo.sinp, geo.area
     H, P, dP, C, D, dD, k, c, zero, R = fields
@@ -304,7 +333,7 @@ def dae_jacobian(tau, y, yp, cj, data, switch, rotor, geo, fields, extras, fv):
     n = free.size
     X, Y = y[n], y[n + 1]
     Xd, Yd = yp[n], yp[n + 1]
-    stencil_jacobian(y[:n], X, Y, switch, geo, fields, extras, fv, data, 1.0)
+    stencil_jacobian(y[:n], X, Y, switch, geo, fields, extras, fv, data, s)
     for i in range(n):
         if free[i]:
             a = area[i]

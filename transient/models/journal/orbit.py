@@ -26,6 +26,7 @@ from which ``run(..., resume=True)`` continues after a crash with nothing lost.
 from __future__ import annotations
 
 import math
+import warnings
 
 from dataclasses import dataclass, field
 from typing import Callable
@@ -37,9 +38,12 @@ from transient.compile_notice import announce
 from transient.models.journal.bearing import GRID_ADVICE, SPEED_RANGE_RPM, JournalBearing, check_speed
 from transient.models.journal.film import read_only
 from transient.models.journal.flows import film_flows
+from transient.models.journal.driven_film import driven_newton, driven_residual
 from transient.models.journal.kernels import (N_ROTOR, content_jacobian, content_ode_jacobian, content_residual,
-                                              content_rhs, dae_jacobian, dae_residual, ode_jacobian, ode_rhs)
+                                              content_rhs, dae_jacobian, dae_jacobian_at, dae_residual,
+                                              dae_residual_at, ode_jacobian, ode_rhs, ode_rhs_at)
 from transient.models.journal.results import OrbitResult
+from transient.models.journal.speed_law import CONSTANT, SpeedProfile, shaft_speed, step_cap_scale
 from transient.models.journal.scales import Rotor
 from transient.models.journal.tilt import half_length, moment
 from transient.models.journal.time_domain import check_time_domain
@@ -84,6 +88,10 @@ RECORDABLE = ("force", "moment", "pressure", "film_content", "min_film", "mass",
               "side_leakage", "friction_torque", "contact_load", "shaft_speed")
 #: The methods that integrate a rough bearing's orbit (:mod:`~transient.models.journal.rough_orbit`).
 ROUGH_METHODS = ("ida", "bdf2")
+#: The methods that integrate an orbit with a ``speed_profile`` (:mod:`~transient.models.journal.speed_law`).
+SPEED_LAW_METHODS = ("ida", "bdf2")
+#: The records of the film's flows: at the orbit's ``speed_rpm``, refused with a speed law.
+FLOW_RECORDS = ("outflow", "supply_flow", "side_leakage")
 FIELD_SERIES = ("pressure", "film_content")
 #: The loose keywords of :meth:`JournalOrbit.run` of earlier releases and the settings field each now is.
 RUN_KEYWORDS = (keyword_table("integration", Integration, ("method", "rtol", "atol", "steps_per_revolution",
@@ -101,10 +109,13 @@ class JournalOrbit:
     unbalance [m] : mass eccentricity e of the rotor (unbalance force m e Omega^2; paper: 0.01 C).
     load [N] : static load on the bearing, acting in +x (towards the bottom).
     speed_rpm [rpm] : shaft speed (with ``speed_profile``: the reference speed of the dimensionless time and the
-        pressure unit, usually the largest).
-    speed_profile : rough bearings only: the shaft speed as a function of time, ``((t_0 [s], n_0 [rpm]), (t_1,
-        n_1), ...)`` (t ascending, linear between, constant outside; e.g. a start-up from rest ``((0, 0), (2,
-        3000))``): :mod:`~transient.models.journal.rough_orbit`. Default: ``speed_rpm`` throughout.
+        pressure unit, usually the largest; ``run``'s revolutions are revolutions at it).
+    speed_profile : the shaft speed as a function of time (:class:`~transient.models.journal.speed_law.SpeedProfile`):
+        a table ``((t_0 [s], n_0 [rpm]), (t_1, n_1), ...)`` (t ascending, linear between, constant outside; e.g. a
+        start-up from rest ``((0, 0), (2, 3000))``), a function ``n(t)`` [rpm] of the time [s], or a
+        ``SpeedProfile``; smooth, rough and thermal bearings alike: the film's Couette flux follows the speed, the
+        unbalance force ``m e (Omega^2, dOmega/dt)`` the shaft angle (:mod:`~transient.models.journal.speed_law`);
+        methods ``"bdf2"`` and ``"ida"``. Default: ``speed_rpm`` throughout.
 
     A rough bearing (``JournalBearing(..., roughness=Roughness(...))``) integrates the average Reynolds equation
     with the asperity contact in the rotor's equations (:mod:`~transient.models.journal.rough_orbit`; methods
@@ -124,6 +135,10 @@ class JournalOrbit:
                                      why="(mass eccentricity, must be below the clearance)")
         self.load = check_range("load", load, "N", 0.0, np.inf, high_open=True)
         self.speed_rpm = check_speed(speed_rpm)
+        self.speed_profile = None if speed_profile is None else SpeedProfile(speed_profile)
+        if self.speed_profile is not None and bearing.shear_thinning:
+            raise ValueError("speed_profile with rheology = Gecim(...): its bulk flux is tabulated at one sliding "
+                             "speed; allowed: speed_profile=None (a constant speed)")
         check_orbit_grid_memory(bearing.n_cells)
         self.film = bearing.film(speed_rpm)
         f = self.film
@@ -133,38 +148,26 @@ class JournalOrbit:
         self.ebar = self.unbalance / bearing.clearance
         self._ends = (f.tilt, half_length(bearing.grid))  # the journal's tilt groups in its bush, the half length
         self._equilibrium = None
+        self._equilibria = {}
         self._newton_pattern = None
-        self.speed_profile = None if speed_profile is None else self._check_profile(speed_profile)
+        #: the kernels' speed law (speed_law.speed_knots): a table's own knots; a function's are set per run
+        self.knots = CONSTANT if self.speed_profile is None else self.speed_profile.knots(f.omega, self.speed_rpm, 0.0)
         self.rough = None
         if bearing.roughness is not None:
-            prof = ((0.0, 1.0),) if speed_profile is None else [(t * f.omega, n / self.speed_rpm)
-                                                                for t, n in self.speed_profile]
-            self.rough = rough_cells(bearing.roughness, bearing.clearance, f.p0, f.n, prof)
+            self.rough = rough_cells(bearing.roughness, bearing.clearance, f.p0, f.n, self.knots)
             f.rough_cells = self.rough
-        elif speed_profile is not None:
-            raise ValueError("speed_profile with roughness = None: the smooth orbit runs at constant speed (a "
-                             "start-up or coast-down reaches the bush, which only a rough bearing's contact carries); "
-                             "allowed: speed_profile=None, or a JournalBearing with roughness=Roughness(...)")
-
-    @staticmethod
-    def _check_profile(profile) -> tuple:
-        """``speed_profile`` as ((t [s], speed [rpm]), ...), checked."""
-        p = np.asarray(profile, dtype=float)
-        if p.ndim != 2 or p.shape[1] != 2 or p.shape[0] < 1:
-            raise ValueError(f"speed_profile of shape {p.shape}: allowed ((t_0 [s], n_0 [rpm]), ...), at least one pair")
-        for t, n in p:
-            check_range("speed_profile time", t, "s", 0.0, np.inf, high_open=True)
-            check_range("speed_profile speed", n, "rpm", 0.0, SPEED_RANGE_RPM[1])
-        if np.any(np.diff(p[:, 0]) <= 0):
-            raise ValueError(f"speed_profile times {p[:, 0].tolist()} [s] out of order: allowed strictly ascending")
-        return tuple((float(t), float(n)) for t, n in p)
 
     def shaft_speed_rpm(self, t) -> np.ndarray:
         """The shaft speed [rpm] at the times ``t`` [s] (``speed_profile``, else ``speed_rpm``)."""
         if self.speed_profile is None:
             return np.full(np.shape(t), self.speed_rpm)
-        p = np.array(self.speed_profile)
-        return np.interp(t, p[:, 0], p[:, 1])
+        return np.asarray(self.speed_profile.value(t))
+
+    def _set_knots(self, knots):
+        """The kernels' speed law (:attr:`knots`, and the rough film's)."""
+        self.knots = knots
+        if self.rough is not None:
+            self.rough = self.film.rough_cells = self.rough._replace(knots=knots)
 
     # ---------------------------------------------------------------------------------------------
     @property
@@ -194,12 +197,49 @@ class JournalOrbit:
         return self._equilibrium
 
     def initial_state(self) -> np.ndarray:
-        """Film and journal at the static equilibrium, journal at rest (the paper's start)."""
+        """Film and journal at the static equilibrium, journal at rest (the paper's start); with a
+        ``speed_profile``, the equilibrium at its speed at t = 0 (:meth:`equilibrium_state`)."""
+        if self.speed_profile is not None and self.speed_profile.start_rpm() != self.speed_rpm:
+            return self.equilibrium_state(self.speed_profile.start_rpm())
         e = self.equilibrium()
         y0 = np.zeros(self.n)
         y0[: self.film.n] = e.u
         y0[self.film.n] = e.position[0] / self.bearing.clearance
         y0[self.film.n + 1] = e.position[1] / self.bearing.clearance
+        return y0
+
+    def equilibrium_state(self, speed_rpm) -> np.ndarray:
+        """Film and journal at the static equilibrium at another shaft speed [rpm] (the start of a run-up or a
+        coast-down), its film content carried over into this orbit's units (the pressure unit of ``speed_rpm`` of the
+        orbit), the journal at rest. A rough bearing at rest (below ``SPEED_RANGE_RPM[0]``): :meth:`rest_state`."""
+        if self.rough is not None and speed_rpm < SPEED_RANGE_RPM[0]:
+            return self.rest_state()
+        if speed_rpm < SPEED_RANGE_RPM[0]:
+            raise ValueError(f"speed_profile starts at {speed_rpm:g} [rpm]: a smooth film carries no load at rest, "
+                             "there is no equilibrium to start from; allowed: a profile that starts above "
+                             f"{SPEED_RANGE_RPM[0]:g} rpm, run(y0=...), or a rough bearing (rest_state)")
+        return self._content_start(speed_rpm)
+
+    def start_equilibrium(self):
+        """The static equilibrium a run starts from: :meth:`equilibrium`, or with a ``speed_profile`` the one at its
+        speed at t = 0 (cached)."""
+        n0 = self.speed_rpm if self.speed_profile is None else self.speed_profile.start_rpm()
+        return self.equilibrium() if n0 == self.speed_rpm else self._equilibrium_at(n0)
+
+    def _equilibrium_at(self, speed_rpm):
+        """The static equilibrium at ``speed_rpm`` (cached per speed)."""
+        if speed_rpm not in self._equilibria:
+            self._equilibria[speed_rpm] = self.bearing.equilibrium(self.load, speed_rpm) if self.load > 0 else \
+                self.bearing.steady_state(0.0, speed_rpm)
+        return self._equilibria[speed_rpm]
+
+    def _content_start(self, speed_rpm) -> np.ndarray:
+        """:meth:`equilibrium_state` at ``speed_rpm`` in ``SPEED_RANGE_RPM``."""
+        e = self._equilibrium_at(speed_rpm)
+        X, Y = e.position[0] / self.bearing.clearance, e.position[1] / self.bearing.clearance
+        y0 = np.zeros(self.n)
+        y0[:self.film.n] = self.film.universal(self.bearing.film(speed_rpm).content(e.u, X, Y), X, Y)
+        y0[self.film.n:self.film.n + 2] = X, Y
         return y0
 
     def rest_state(self) -> np.ndarray:
@@ -209,13 +249,7 @@ class JournalOrbit:
         if self.rough is None:
             raise ValueError("rest_state with roughness = None: a smooth journal at rest sits on the bush, which only "
                              "a rough bearing's asperities carry; allowed: a JournalBearing with roughness=Roughness(...)")
-        low = SPEED_RANGE_RPM[0]
-        e = self.bearing.equilibrium(self.load, low)
-        X, Y = e.position[0] / self.bearing.clearance, e.position[1] / self.bearing.clearance
-        y0 = np.zeros(self.n)
-        y0[:self.film.n] = self.film.universal(self.bearing.film(low).content(e.u, X, Y), X, Y)
-        y0[self.film.n:self.film.n + 2] = X, Y
-        return y0
+        return self._content_start(SPEED_RANGE_RPM[0])
 
     def linear_start(self) -> np.ndarray:
         """State at t = 0 on the linearised unbalance response (position and velocity from K and C, the
@@ -270,6 +304,9 @@ class JournalOrbit:
         (the journal touches the bearing)."""
         self._isothermal_only("problem")
         check_choice("formulation", formulation, FORMULATIONS)
+        if self.speed_profile is not None and self.speed_profile.function is not None:
+            raise ValueError("problem with speed_profile = a function: its kernels take it on knots over a run's span; "
+                             "allowed: a table ((t, rpm), ...), or run(...)")
         y0 = self.initial_state() if y0 is None else np.asarray(y0, dtype=float)
         if y0.shape != (self.n,):
             raise ValueError(f"the initial state has shape {y0.shape}; this orbit has {self.n} states")
@@ -302,6 +339,33 @@ class JournalOrbit:
 
             def jac_residual(t, y, yp, cj, data):
                 rough_dae_jacobian(t, y, yp, cj, data, switch, rotor, geo, fields, extras, fv, rough)
+
+            jac_rhs = None
+        elif self.speed_profile is not None and formulation == "content":  # BDF2 only, its Newton's Jacobian
+            args = self.bdf2_model().args
+            scale = np.where(fv.cells.free, geo.area, 1.0)
+
+            def residual(t, y, yp, out):
+                driven_residual(t, y, yp, out, args)
+
+            def rhs(t, y, out):  # y' of the content state: the residual at y' = 0 is A m' + ... = 0 solved for y'
+                residual(t, y, np.zeros(y.size), out)
+                out[:n] /= -scale
+                out[:n][~fv.cells.free] = 0.0
+                out[n:] *= -1.0
+
+            jac_rhs = jac_residual = None
+        elif self.speed_profile is not None:
+            knots = self.knots
+
+            def rhs(t, y, out):
+                ode_rhs_at(t, y, out, switch, rotor, geo, fields, fv, *shaft_speed(t, knots))
+
+            def residual(t, y, yp, out):
+                dae_residual_at(t, y, yp, out, switch, rotor, geo, fields, fv, *shaft_speed(t, knots))
+
+            def jac_residual(t, y, yp, cj, data):
+                dae_jacobian_at(t, y, yp, cj, data, switch, rotor, geo, fields, extras, fv, shaft_speed(t, knots)[0])
 
             jac_rhs = None
         elif formulation == "content":
@@ -359,20 +423,29 @@ class JournalOrbit:
 
     def bdf2_model(self) -> Bdf2Model:
         """The compiled kernels of the content formulation for ``method="bdf2"``
-        (:class:`~transient.solvers.integrate.bdf2.Bdf2Model`, kernels in :mod:`~transient.models.journal.content_newton`):
-        error test on the rotor, the film solved by Newton to ``BDF2_FILM_TOL`` in pressure (p0) and content per
-        cell. Its Jacobian fills the problem's pattern: the operator's (:meth:`problem`) or, faster to factor, the
-        one without the prescribed cells' couplings (:meth:`newton_pattern`, what ``run(method="bdf2")`` uses)."""
+        (:class:`~transient.solvers.integrate.bdf2.Bdf2Model`, kernels in :mod:`~transient.models.journal.content_newton`;
+        with a ``speed_profile`` those of :mod:`~transient.models.journal.driven_film`, a rough bearing's of
+        :mod:`~transient.models.journal.rough_orbit`): error test on the rotor, the film solved by Newton to
+        ``BDF2_FILM_TOL`` in pressure (p0) and content per cell. Its Jacobian fills the problem's pattern: the
+        operator's (:meth:`problem`) or, faster to factor, the one without the prescribed cells' couplings
+        (:meth:`newton_pattern`, what ``run(method="bdf2")`` uses)."""
+        f = self.film
+        args = self.content_args()
+        if self.rough is not None:
+            newton, args = rough_bdf2_newton, args + (self.rough,)
+        elif self.speed_profile is not None:
+            newton, args = driven_newton, (args, np.ones(f.n), self.knots)
+        else:
+            newton = bdf2_newton
+        return Bdf2Model(newton=newton, args=args, error_components=np.arange(f.n, self.n), n_border=N_ROTOR)
+
+    def content_args(self) -> tuple:
+        """The arguments of the smooth content kernels (:mod:`~transient.models.journal.content_newton`)."""
         f = self.film
         pattern, gather = self.newton_pattern()
         work = f.work._replace(jac=np.zeros(f.op.nnz), gather=gather)
-        args = (f.switch, Rotor(self.kappa, self.wbar, self.ebar, f.sym), f.geo, f.fields, f.extras, f.fv, work,
+        return (f.switch, Rotor(self.kappa, self.wbar, self.ebar, f.sym), f.geo, f.fields, f.extras, f.fv, work,
                 (BDF2_FILM_TOL, BDF2_FILM_TOL), np.zeros(f.n, dtype=np.int8))
-        if self.rough is not None:
-            return Bdf2Model(newton=rough_bdf2_newton, args=args + (self.rough,),
-                             error_components=np.arange(f.n, self.n), n_border=N_ROTOR)
-        return Bdf2Model(newton=bdf2_newton, args=args,
-                         error_components=np.arange(f.n, self.n), n_border=N_ROTOR)
 
     def newton_pattern(self):
         """The content problem's Jacobian pattern without the entries that are zero by construction (a prescribed
@@ -476,8 +549,8 @@ class JournalOrbit:
         temperatures at an interval's start, the temperatures take one implicit step at its end (default 1; the
         splitting error is first order in it); ``temperature`` [K]: the start's
         temperatures, a number or one per cell and feed (default: those of ``start``, else of the static
-        equilibrium); ``speed``: the shaft's speed ``speed(t)`` [rpm] as a function of time [s] (default the
-        orbit's ``speed_rpm``, which stays the film's pressure unit; ``revolutions`` counts revolutions at it).
+        equilibrium); ``speed``: deprecated, the shaft's speed ``speed(t)`` [rpm] as a function of time [s] for this run
+        (a ``DeprecationWarning``; the same law as ``JournalOrbit(..., speed_profile=speed)``, which every orbit takes).
         ``record`` also takes ``"max_temperature"`` [K], ``"power_loss"`` [W] (the film's dissipation),
         ``"heat_flow"`` [W] (carried away by the oil and into the walls), ``"stored_heat"`` [J] (in the oil and the
         walls above the supply temperature), ``"shaft_speed"`` [rpm] and the field ``"temperature"`` [K]; the
@@ -489,6 +562,15 @@ class JournalOrbit:
         if not thermal and (speed is not None or temperature is not None):
             raise ValueError("speed, temperature given for an isothermal bearing; allowed: None (they are the thermal "
                              "orbit's: JournalBearing(thermal=ThermalFilm(...)))")
+        law = self.speed_profile
+        if speed is not None:
+            if not callable(speed) or law is not None:
+                raise ValueError(f"speed = {speed!r} with speed_profile = {law!r}; allowed: speed(t) -> rpm, callable, "
+                                 "and no speed_profile (better: JournalOrbit(..., speed_profile=speed(t)))")
+            warnings.warn("run(speed=...) is deprecated; give the law to the orbit: JournalOrbit(..., "
+                          "speed_profile=speed) (a function of t [s] or a table ((t, rpm), ...))", DeprecationWarning,
+                          stacklevel=2)
+            law = SpeedProfile(speed)
         if thermal and integration is None and "method" not in legacy:
             integration = Integration(method="bdf2")
         # the default method only where no integration setting is given (the deprecated keywords keep IDA's)
@@ -504,9 +586,14 @@ class JournalOrbit:
         if thermal and method != "bdf2":
             raise ValueError(f"method = {method!r} with a thermal bearing; allowed: 'bdf2' (the thermal orbit's kernels "
                              "are the content formulation's)")
-        if speed is not None and (not callable(speed) or set(rc.record) & {"outflow", "supply_flow", "side_leakage"}):
-            raise ValueError(f"speed = {speed!r}, record = {rc.record!r}; allowed: speed(t) -> rpm, callable, without "
-                             "the flow records (they are at the orbit's speed_rpm)")
+        if law is not None and set(rc.record) & set(FLOW_RECORDS):
+            raise ValueError(f"record = {rc.record!r} with a speed_profile; allowed: without {', '.join(FLOW_RECORDS)} "
+                             "(the flow records are at the orbit's speed_rpm)")
+        if law is not None and not thermal and self.rough is None and (
+                method not in SPEED_LAW_METHODS or (method == "ida" and formulation != "universal")):
+            raise ValueError(f"method = {method!r}, formulation = {formulation!r} with a speed_profile: the orbit "
+                             "with a speed law integrates with method \"ida\" (formulation \"universal\") or \"bdf2\" "
+                             "(formulation \"content\")")
         if method == "bdf2" and formulation != "content":
             raise ValueError('method "bdf2" integrates the content formulation (conservative across a cavity crossing); '
                              'formulation must be "content" (the default for "bdf2")')
@@ -528,6 +615,8 @@ class JournalOrbit:
         if y is None:
             y = self.initial_state() if y0 is None else state_array(y0)
         tau0 = t0 * self.film.omega
+        self._set_knots(CONSTANT if law is None else
+                        law.knots(self.film.omega, self.speed_rpm, t0 + revolutions * 60.0 / self.speed_rpm))
         run.check_state(y, self.n, "orbit", self._journal)
         step = self._stepper(ig, formulation, run.touch_gap)
         content = formulation == "content"
@@ -535,7 +624,9 @@ class JournalOrbit:
                       options=step.options,
                       steps=Steps(dt=step.dt, max_step=step.max_step, first_step=step.first_step))
         key = dict(self.parameters(), **ig.key(), outputs_per_revolution=opr, record=sorted(rc.record),
-                   record_from_revolution=rc.record_from_revolution, formulation=formulation)
+                   record_from_revolution=rc.record_from_revolution, formulation=formulation,
+                   **({} if law is None else {"speed_profile": law.key(self.film.omega, self.speed_rpm,
+                                                                          t0 + revolutions * 60.0 / self.speed_rpm)}))
         series = ("x", "y", *rc.record, *(("contact_pressure",) if self.rough is not None else ()))
         parts = RunParts(label=f"orbit {self.speed_rpm:g} rpm", omega=self.film.omega, revolution=2 * np.pi,
                          problem_at=step.problem_at, solver=solver, series=series, sparse=FIELD_SERIES,
@@ -549,7 +640,7 @@ class JournalOrbit:
                          to_run=self.content_state if content else None,
                          universal=self.universal_state if content else None, key=key)
         if thermal:
-            parts = thermal_parts(self, parts, run, rc.record, rc.record_from_revolution, speed, temperature, start,
+            parts = thermal_parts(self, parts, run, rc.record, rc.record_from_revolution, self.knots, temperature, start,
                                   tau0, 2 * np.pi / opr)
         r = run.go(parts, y, tau0, 2 * np.pi / opr)
         if method == "rk4":
@@ -590,13 +681,13 @@ class JournalOrbit:
                 f.residual(y[:n], y[n], y[n + 1])  # the pressure of this state
                 row["moment"] = moment(f, f.P)
             if "shaft_speed" in record:
-                row["shaft_speed"] = float(o.shaft_speed_rpm(tau / f.omega))
+                row["shaft_speed"] = shaft_speed(tau, o.knots)[0] * o.speed_rpm
             if "contact_pressure" in record:
                 row["contact_pressure"] = f.p0 * peak_asperity_pressure(y[n], y[n + 1], f.geo, o.rough)
             tribology = [k for k in ("friction_torque", "contact_load") if k in record]
             if tribology:
                 row.update({k: v for k, v in orbit_tribology(f, o.bearing, y[:n], y[n], y[n + 1],
-                                                             float(o.shaft_speed_rpm(tau / f.omega))).items()
+                                                             shaft_speed(tau, o.knots)[0] * o.speed_rpm).items()
                             if k in tribology})
             if "mass" in record or "outflow" in record:
                 M, q_ends, q_groove = f.mass_flows(y[:n], y[n], y[n + 1])
@@ -665,6 +756,8 @@ class JournalOrbit:
             if ig.steps_per_revolution is None:
                 options["max_travel"] = (np.arange(self.film.n, self.film.n + 2),
                                          BDF2_TRAVEL * math.sqrt(ig.rtol / BDF2_TRAVEL_RTOL))
+            if self.knots is not CONSTANT:  # a speed law: the cap in shaft angle
+                options["max_step_scale"] = step_cap_scale(self.knots)
             pattern = self.newton_pattern()[0]
             return _Step(lambda y_, t_: self._problem(y_, t_, touch_gap, formulation, pattern), rtol=ig.rtol,
                          atol=atol, max_step=two_pi / spr, first_step=two_pi * 1e-4, options=options)
@@ -681,6 +774,7 @@ class JournalOrbit:
         from transient.models.journal.periodic import periodic_response
 
         self._isothermal_only("periodic_response")
+        self._constant_speed_only("periodic_response")
         p = periodic_response(self, **kwargs)
         through = wall_crossing(p.t, self._reach_si(p.x, p.y), self.bearing.max_eccentricity_ratio)
         if through:  # a periodic orbit through the wall is no result, converged or not
@@ -693,7 +787,14 @@ class JournalOrbit:
         from transient.models.journal.periodic import response_curve
 
         self._isothermal_only("response_curve")
+        self._constant_speed_only("response_curve")
         return response_curve(self, speeds_rpm, **kwargs)
+
+    def _constant_speed_only(self, what):
+        """Refuse ``what`` (a periodic orbit at one speed) on an orbit with a ``speed_profile``."""
+        if self.speed_profile is not None:
+            raise ValueError(f"{what} with a speed_profile: a periodic orbit turns at one speed; allowed: "
+                             "speed_profile=None (at_speed(rpm) gives the orbit at another constant speed)")
 
     def _isothermal_only(self, what):
         """Refuse ``what`` (the isothermal film's kernels) on a thermal bearing, naming the thermal orbit's way."""

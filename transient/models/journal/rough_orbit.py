@@ -12,8 +12,9 @@ and the conservation law, in ``tau = omega_ref t``::
     A_i (h_T,i D_i u_i' + theta_i phi_c,i H_i') + R_i(k_x, k_z, s c_x) = 0      (universal, IDA)
     A_i m_i' + R_i = 0,   theta_i = m_i / h_T(H_i)                              (content, BDF2)
 
-``s(tau) = Omega / omega_ref`` is the shaft speed ratio (piecewise linear in tau; 1 at constant speed): the Couette
-and shear flows scale with it, the pressure unit ``p0`` is the reference speed's. The rotor::
+``s(tau) = Omega / omega_ref`` is the shaft speed ratio (the orbit's speed law, :mod:`~transient.models.journal.speed_law`;
+1 at constant speed): the Couette and shear flows scale with it, the pressure unit ``p0`` is the reference speed's.
+The rotor::
 
     X'' = kappa (Fbar_x + Fa_x) + Wbar + ebar (s^2 cos phi + s' sin phi),   phi = int s dtau
     Y'' = kappa (Fbar_y + Fa_y) + ebar (s^2 sin phi - s' cos phi)
@@ -31,12 +32,14 @@ import numpy as np
 from numba import njit
 
 from transient.fv.reynolds import jacobian_kernel, residual_kernel
-from transient.models.journal.kernels import N_ROTOR, film_force, state_fields
+from transient.models.journal.kernels import N_ROTOR, film_force, shaft_accelerations, state_fields
 from transient.models.journal.content_newton import cell_regime
+from transient.models.journal.film import read_only
+from transient.models.journal.speed_law import CONSTANT, shaft_speed
 from transient.physics.cavitation import elrod_inverse
 from transient.physics.flow_factors import PRESSURE_FLOW_TABLE, SHEAR_FLOW_TABLE, gamma_bracket
 import transient.solvers.integrate.bdf2 as stepper
-from transient.solvers.integrate.bdf2 import newton_step
+from transient.solvers.integrate.bdf2 import BandNewton, newton_step
 from transient.solvers.integrate.cache_guard import drop_stale_cache
 from transient.solvers.read_only import as_read_only
 
@@ -64,7 +67,7 @@ class RoughCells(NamedTuple):
     table: np.ndarray     # (2, m) p_a / p0 and d(p_a / p0)/d(h / sigma) at h / sigma = low + k step
     low: float
     step: float
-    knots: np.ndarray     # (3, K) speed law: tau_k, s_k, phase phi(tau_k)
+    knots: np.ndarray     # (3, K) the shaft's speed law (speed_law.speed_knots): tau_k, s_k, angle phi(tau_k)
     kz: np.ndarray        # per cell: k_z, and d/dH of k_x, k_z, c_x (at speed 1)
     dkx: np.ndarray
     dkz: np.ndarray
@@ -86,18 +89,9 @@ def _pressure_fit(gamma):
     return out
 
 
-def speed_knots(profile) -> np.ndarray:
-    """The kernels' speed law from ``profile`` = ((tau_k, s_k), ...) (tau ascending; constant outside): the knots
-    and the shaft angle ``phi(tau_k) = int_0^tau_k s dtau`` at each (trapezoids: exact, s is linear between)."""
-    p = np.array(profile, dtype=float).reshape(-1, 2)
-    tau, s = p[:, 0], p[:, 1]
-    phase = np.concatenate([[0.0], np.cumsum(0.5 * (s[1:] + s[:-1]) * np.diff(tau))]) - s[0] * tau[0]
-    return np.ascontiguousarray(np.vstack([tau, s, phase]))
-
-
-def rough_cells(roughness, clearance, p0, n, profile=((0.0, 1.0),)) -> RoughCells:
+def rough_cells(roughness, clearance, p0, n, knots=CONSTANT) -> RoughCells:
     """:class:`RoughCells` of a film of ``n`` cells with ``roughness`` (:class:`~.roughness.Roughness`), clearance
-    [m] and pressure unit ``p0`` [Pa], shaft speed law ``profile`` (:func:`speed_knots`)."""
+    [m] and pressure unit ``p0`` [Pa], shaft speed law ``knots`` (:mod:`~transient.models.journal.speed_law`)."""
     sig = roughness.sigma / clearance
     ps = np.zeros((2, 6))
     w = 2.0 * roughness.journal_variance_share - 1.0
@@ -113,7 +107,7 @@ def rough_cells(roughness, clearance, p0, n, profile=((0.0, 1.0),)) -> RoughCell
     table = np.vstack([np.asarray(c.load(h), float) / p0, np.asarray(c.load_derivative(h), float) * roughness.sigma / p0])
     z = lambda: np.zeros(n)  # noqa: E731
     return RoughCells(sig, roughness.fit_floor, _pressure_fit(roughness.gamma), _pressure_fit(1.0 / roughness.gamma),
-                      ps, np.ascontiguousarray(table), CONTACT_TABLE_LOW, CONTACT_TABLE_STEP, speed_knots(profile),
+                      ps, np.ascontiguousarray(table), CONTACT_TABLE_LOW, CONTACT_TABLE_STEP, knots,
                       z(), z(), z(), z(), z(), z(), z(), z(), z(), np.zeros((2, n)), z())
 
 
@@ -234,29 +228,11 @@ def peak_asperity_pressure(X, Y, geo, rough):
 
 
 @njit(cache=True)
-def shaft_speed(tau, knots):
-    """Speed ratio ``s``, its slope ``ds/dtau`` and the shaft angle ``phi`` at ``tau`` of the piecewise-linear law."""
-    t, s, ph = knots[0], knots[1], knots[2]
-    K = t.size
-    if tau <= t[0] or K == 1:
-        return s[0], 0.0, ph[0] + s[0] * (tau - t[0])
-    if tau >= t[K - 1]:
-        return s[K - 1], 0.0, ph[K - 1] + s[K - 1] * (tau - t[K - 1])
-    k = 0
-    while t[k + 1] <= tau:
-        k += 1
-    slope = (s[k + 1] - s[k]) / (t[k + 1] - t[k])
-    dt = tau - t[k]
-    return s[k] + slope * dt, slope, ph[k] + s[k] * dt + 0.5 * slope * dt * dt
-
-
-@njit(cache=True)
 def rough_accelerations(tau, fx, fy, rotor, knots):
     """``(X'', Y'')`` of the module docstring for the film + asperity force (fx, fy)."""
     kappa, wbar, ebar, sym = rotor
     s, ds, phi = shaft_speed(tau, knots)
-    cp, sp = math.cos(phi), math.sin(phi)
-    return kappa * fx + wbar + ebar * (s * s * cp + ds * sp), kappa * fy + ebar * (s * s * sp - ds * cp)
+    return shaft_accelerations(s, ds, phi, fx, fy, kappa, wbar, ebar)
 
 
 @njit(cache=True)
@@ -625,3 +601,64 @@ def rough_newton_norm(z, dz, args):
             if v > size:
                 size = v
     return size, switched
+
+
+class _StepLedger(BandNewton):
+    """The BDF2 step solve of a rough orbit that, on every accepted step, evaluates the film's conservation law
+    ``F_i = A_i m_i' + R_i`` at the step's state and content rate (:func:`step_mass_balance`)."""
+
+    def __init__(self, model, pattern, n, rtol, atol, area, free):
+        super().__init__(model, pattern, n, rtol, atol)
+        self.area, self.free = area[free], free
+        self.rows = []
+        self.t_last = None
+
+    def accepted(self, t, y):
+        super().accepted(t, y)
+        F = np.empty(y.size)
+        rough_bdf2_residual(t, read_only(y), read_only(self.yp), F, self.model.args)
+        if self.t_last is not None:
+            h = t - self.t_last
+            m = self.free.size
+            cells = F[:m][self.free]
+            rate = self.area * self.yp[:m][self.free]
+            self.rows.append((t, h, h * abs(float(np.sum(cells))) / float(np.sum(self.area)),
+                              h * float(np.max(np.abs(cells) / self.area)), h * float(np.sum(np.abs(rate)))
+                              / float(np.sum(self.area))))
+        self.t_last = t
+
+
+def step_mass_balance(orbit, revolutions, y0=None, rtol=1e-6) -> dict:
+    """The rough film's mass balance on every BDF2 step of ``revolutions`` of ``orbit`` (a rough
+    :class:`~transient.models.journal.orbit.JournalOrbit`, from ``y0`` in the universal layout, default its initial
+    state; its default BDF2 settings at ``rtol``).
+
+    The step solves the conservation law of every free cell ``A_i m_i' + R_i = 0`` (module docstring: content
+    ``m = (h_T / C) theta`` with the flow factors in the face fluxes ``R``) with ``m'`` the BDF formula's content rate,
+    so ``h sum_i A_i m_i'`` is the step's content change (``sum A (m_n+1 - m_n)`` at first order) and ``h sum_i R_i``
+    the net flux through the film's ends and feeds times the step (the faces between cells cancel in the sum).
+    Returns per step: ``t`` [tau], ``h`` [tau], ``imbalance`` = ``h |sum_i F_i| / sum_i A_i`` (content change plus
+    net outflow, per unit of film area, in the content's unit: compare with the Newton's content tolerance
+    ``BDF2_FILM_TOL``), ``worst_cell`` = ``h max_i |F_i| / A_i`` and ``change`` = ``h sum_i |A_i m_i'| / sum_i A_i``
+    (how much content moved in the step)."""
+    from dataclasses import replace as _replace
+
+    from transient.solvers.integrate import Steps, solve
+    from transient.solvers.settings import Integration
+
+    if orbit.rough is None:
+        raise ValueError("step_mass_balance with roughness = None; allowed: a JournalOrbit of a rough bearing")
+    f = orbit.film
+    if orbit.speed_profile is not None:  # a function's knots over this run
+        orbit._set_knots(orbit.speed_profile.knots(f.omega, orbit.speed_rpm, revolutions * 60.0 / orbit.speed_rpm))
+    step = orbit._stepper(Integration(method="bdf2", rtol=rtol), "content", 0.0)  # the run's BDF2 settings
+    y = orbit.content_state(orbit.initial_state() if y0 is None else np.asarray(y0, dtype=float))
+    problem = step.problem_at(y, 0.0)
+    model = step.options.pop("bdf2")
+    ledger = _StepLedger(model, problem.jac_pattern, orbit.n, step.rtol, step.atol, f.area, f.op.free)
+    sol = solve(_replace(problem, step_solve=ledger), np.array([0.0, 2 * np.pi * revolutions]), "bdf2", step.rtol,
+                step.atol, steps=Steps(max_step=step.max_step, first_step=step.first_step), options=step.options)
+    if not sol.success:
+        raise RuntimeError(f"step_mass_balance: the run failed: {sol.message}")
+    a = np.array(ledger.rows, dtype=float).reshape(-1, 5)
+    return dict(t=a[:, 0], h=a[:, 1], imbalance=a[:, 2], worst_cell=a[:, 3], change=a[:, 4])
