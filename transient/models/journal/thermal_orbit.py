@@ -47,9 +47,8 @@ from transient.fv.reynolds import jacobian_kernel
 from transient.models.journal.content_newton import (bdf2_from_state, bdf2_to_state, content_columns, fields_of,
                                                      film_newton_norm)
 from transient.models.journal.film import read_only
+from transient.models.journal.film_temperatures import FilmTemperatures
 from transient.models.journal.kernels import N_ROTOR, film_force, position_derivatives, state_fields, stencil_flux
-from transient.models.journal.thd import fluidity
-from transient.models.journal.thermal import EnergyEquation, EnergyRates
 from transient.solvers.integrate import Problem
 from transient.solvers.integrate.bdf2 import Bdf2Model, newton_step
 from transient.solvers.integrate.cache_guard import drop_stale_cache
@@ -178,8 +177,9 @@ def thermal_newton(args, t, cj, b, y, yp, F, dz, data, lu, y_pred, z, pick, err_
 drop_stale_cache(thermal_newton, stepper.__file__)  # numba keys the cache on this file only; newton_step is inlined
 
 
-class ThermalRun:
-    """The temperatures of one thermal orbit run and their multirate coupling to the film (module docstring).
+class ThermalRun(FilmTemperatures):
+    """The temperatures of one thermal orbit run and their multirate coupling to the film (module docstring; the
+    temperatures, their averaging and step: :class:`~transient.models.journal.film_temperatures.FilmTemperatures`).
 
     ``orbit``: the :class:`~transient.models.journal.orbit.JournalOrbit` (its film a
     :class:`~transient.models.journal.viscous_film.ViscousFilm`); ``speed(t)`` [rpm] or None (the orbit's speed);
@@ -187,26 +187,13 @@ class ThermalRun:
     film is set from them at the start state (:meth:`problem_at`)."""
 
     def __init__(self, orbit, speed, temperature):
+        super().__init__(orbit.film, orbit.bearing, temperature)
         self.orbit = orbit
-        film = self.film = orbit.film
-        th = self.thermal = orbit.bearing.thermal
-        self.energy = EnergyEquation(film, th)
-        temperature = np.asarray(temperature, dtype=float)
-        self.T, self.T_mix = temperature[:film.n].copy(), temperature[film.n:].copy()
+        film = self.film
         self.speed = speed
         self.drive = np.array([0.0, 1.0, 0.0, 0.0])
-        s = film.scales
-        free = film.op.free
-        self.area = film.area
-        # the wall's share of each cell [C R^2 of oil]: c_w A_i / (sym sum A) / (rho c_p C R^2)
-        self.wall_volume = (th.wall_heat_capacity * film.area / (s.sym * float(np.sum(film.area[free])))
-                            / (th.properties.volumetric_heat * s.clearance * s.radius ** 2))
         self.model = Bdf2Model(newton=thermal_newton, args=(orbit.bdf2_model().args, film.fluidity, self.drive),
                                error_components=np.arange(film.n, orbit.n), n_border=N_ROTOR)
-        self.started = False
-        self.stepped_at = None
-        self.ledger = []
-        self._reset()
 
     # the shaft ----------------------------------------------------------------------------------------------
     def speed_ratio(self, tau) -> float:
@@ -232,11 +219,6 @@ class ThermalRun:
         return 1.0 / max(shaft(tau, self.drive)[0], 0.1)
 
     # the film's rates, sampled ----------------------------------------------------------------------------
-    def _reset(self):
-        self.tau_start = self.tau_last = None
-        self.sums = None
-        self.last = None
-
     def rates(self, tau, u, X, Y):
         """The energy equation's rates and the oil's content per cell of the universal state at ``tau``."""
         film = self.film
@@ -244,57 +226,6 @@ class ThermalRun:
         thermal_fields(read_only(np.ascontiguousarray(u)), X, Y, s, film.fluidity, film.switch, film.geo,
                        film.fields, film.fv)
         return self.energy.rates(s), film.H * film.C
-
-    def observe(self, tau, r, m):
-        """Add the sample ``(r, m)`` at ``tau`` to the interval's trapezoid (a repeated time is not added)."""
-        if self.tau_last is not None and tau <= self.tau_last:
-            return
-        if self.tau_last is None:
-            self.tau_start, self.first = tau, (r, m)
-            self.sums = [np.zeros_like(a) for a in (*r, m)]
-        else:
-            h = 0.5 * (tau - self.tau_last)
-            for acc, a, b in zip(self.sums, (*self.last[0], self.last[1]), (*r, m), strict=True):
-                acc += h * (a + b)
-        self.tau_last, self.last = tau, (r, m)
-
-    def advance(self, tau):
-        """The temperatures' backward-Euler step over the interval that ends at ``tau`` (module docstring) and the
-        film's fluidity at them (the pressures of the last sample)."""
-        dtau = tau - self.tau_start
-        if dtau <= 0.0 or tau == self.stepped_at:
-            return
-        self.stepped_at = tau
-        mean = [a / dtau for a in self.sums]
-        r = EnergyRates(*mean[:4])
-        capacity = (mean[4] * self.area + self.wall_volume) / dtau
-        stored = self.stored_heat(self.first[1], self.T)
-        b = self.energy.solve_rates(r, capacity, self.T)
-        self.T, self.T_mix = b.temperature, b.mixing_temperature
-        seconds = dtau / self.film.omega
-        self.ledger.append((tau / self.film.omega, b.dissipation * seconds, (b.convected + b.conducted) * seconds,
-                            self.stored_heat(self.last[1], self.T) - stored))
-        self.set_fluidity()
-
-    def stored_heat(self, m, T) -> float:
-        """The heat [J] in the oil (content ``m`` per cell) and the walls above the supply temperature at the cells'
-        temperatures ``T``."""
-        s, free = self.film.scales, self.film.op.free
-        volume = m * self.area + self.wall_volume
-        return (self.energy.heat_unit / s.omega * s.sym
-                * float(np.sum((volume * (T - self.thermal.supply_temperature))[free])))
-
-    def heat_balance(self) -> dict:
-        """The energy balance of every thermal interval: its end ``t`` [s], the heat the film made in it
-        (``dissipation`` [J], its mean over the outputs), the heat the oil carried away and the walls took
-        (``heat_out`` [J], at the interval's new temperatures) and the change of the ``stored`` heat [J] (oil
-        content and temperatures at the interval's ends)."""
-        a = np.array(self.ledger, dtype=float).reshape(-1, 4)
-        return dict(t=a[:, 0], dissipation=a[:, 1], heat_out=a[:, 2], stored=a[:, 3])
-
-    def set_fluidity(self):
-        """The film's fluidity at the temperatures (and the pressures of the film's last evaluation)."""
-        self.film.fluidity[:] = fluidity(self.film, self.thermal, self.T, self.orbit.bearing.viscosity)
 
     # the run ------------------------------------------------------------------------------------------------
     def problem_at(self, y, tau, tau_end, events=None):
@@ -344,14 +275,6 @@ class ThermalRun:
         return dict(max_temperature=float(np.max(self.T[free])), power_loss=b.dissipation,
                     heat_flow=b.convected + b.conducted, stored_heat=self.stored_heat(m, self.T),
                     shaft_speed=shaft(tau, self.drive)[0] * self.orbit.speed_rpm)
-
-    def temperature_field(self) -> np.ndarray:
-        """The cells' temperatures [K] on the grid (feed cells at their feed's mixing temperature)."""
-        return self.orbit.bearing.grid.to_2d(self.T).astype(np.float32)
-
-    def final_temperature(self) -> np.ndarray:
-        """The cells' and feeds' temperatures [K] (``OrbitResult.final_temperature``: ``run(start=...)``)."""
-        return np.concatenate([self.T, self.T_mix])
 
 
 def thermal_long_run(long_run, interval, opr):
