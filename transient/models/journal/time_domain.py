@@ -31,8 +31,6 @@ NOT_IN_TIME_DOMAIN = {
                           ("JournalOrbit", "RotorBearingSystem")),
     "roughness": Refusal(None, "Roughness(...)", "the rotor system's films are smooth; a rough bearing serves the "
                          "single bearing's orbit, steady analyses and stribeck_curve", ("RotorBearingSystem",)),
-    "thermal": Refusal(None, "ThermalFilm(...)", "the rotor system's films are isothermal; a thermal bearing serves "
-                       "the single bearing's orbit and its steady and linear analyses", ("RotorBearingSystem",)),
 }
 
 

@@ -42,6 +42,7 @@ from transient.models.damper.damper import SqueezeFilmDamper
 from transient.models.journal.time_domain import check_time_domain
 from transient.models.rotor.content_form import BDF2_STEPS_PER_REVOLUTION, ContentSystem
 from transient.models.rotor.model import SystemDAE
+from transient.models.rotor import thermal_films
 from transient.models.rotor.results import RotorEquilibrium, RotorRunResult, UnbalanceResponse
 from transient.models.rotor.rotor import Rotor
 from transient.solvers.bandlu import BorderedBandLU
@@ -131,6 +132,7 @@ class RotorBearingSystem:
             g = np.array(check_vector("gravity", gravity, "m/s^2", 2, -1e4, 1e4, why="(a number along x or an "
                                       "(x, y) vector)"))
         self.gravity_vector = g
+        thermal_films.check_thermal_system(self)
         self._check_units()
 
     @property
@@ -226,6 +228,8 @@ class RotorBearingSystem:
             b._check_supplied()
         self._check_steady_memory()
         dae = self.dae(speed)
+        if thermal_films.thermal_nodes(self):  # each thermal bearing's THD equilibrium at its load
+            return thermal_films.thermal_equilibrium(self, dae, speed)
         y = self._steady(dae, 1.0)
         return self._equilibrium_result(dae, y, speed)
 
@@ -467,6 +471,7 @@ class RotorBearingSystem:
     def linearisation(self, speed_rpm, equilibrium=None) -> "Linearisation":
         """The system linearised at its static equilibrium with the film states included
         (:class:`Linearisation`)."""
+        thermal_films.refuse_thermal(self, "linearisation")
         speed = check_speed(speed_rpm)
         eq = self.equilibrium(speed) if equilibrium is None else equilibrium
         return Linearisation(self, self.dae(speed), eq)
@@ -526,7 +531,7 @@ class RotorBearingSystem:
     # ------------------------------------------------------------------------------------------
     def run(self, revolutions, speed_rpm, *, start=None, touch_gap=1e-3, reference_speed_rpm=None,
             integration: Integration | None = None, recording: Recording | None = None,
-            long_run: LongRun | None = None, **legacy) -> RotorRunResult:
+            long_run: LongRun | None = None, thermal_interval=1.0, temperature=None, **legacy) -> RotorRunResult:
         """Integrate the rotor on its films over ``revolutions`` shaft revolutions.
 
         Parameters
@@ -560,6 +565,12 @@ class RotorBearingSystem:
             still never a success.
         reference_speed_rpm : the speed of the films' pressure unit (default: the largest speed of the run;
             a continued run keeps its start's).
+        thermal_interval [rev], temperature [K] : thermal bearings (``JournalBearing(thermal=ThermalFilm(...))``,
+            :mod:`~transient.models.rotor.thermal_films`; ``method="bdf2"``, its default there): the films run on
+            the viscosities of their temperatures at the start of each thermal interval of ``thermal_interval``
+            revolutions (whole output intervals), the temperatures take one step on the interval's mean flows and
+            dissipation at its end. ``temperature``: every thermal film's cells and feeds at this temperature at the
+            start (default: a ``start`` result's final temperatures, else the thermal equilibrium's).
 
         The settings as loose keywords (``method="bdf2"``, ``outputs_per_revolution=32``, ``checkpoint=PATH``) are
         deprecated: they still work for one release, with a ``DeprecationWarning`` naming the new spelling (beside
@@ -567,6 +578,12 @@ class RotorBearingSystem:
         """
         check_method("RotorBearingSystem.run", requested_method(integration, legacy), step_solve=True,
                      among=RUN_METHODS)
+        thermal = bool(thermal_films.thermal_nodes(self))
+        if thermal:
+            integration = thermal_films.thermal_integration(integration, legacy)
+        elif temperature is not None:
+            raise ValueError(f"temperature = {temperature!r} [K] without thermal bearings; allowed: None (the start "
+                             "temperature of thermal films: JournalBearing(thermal=ThermalFilm(...)))")
         revolutions = check_positive("revolutions", revolutions, "rev")
         ig, rc, lr = run_settings("RotorBearingSystem.run", legacy, RUN_KEYWORDS, integration=integration,
                                   recording=recording, long_run=long_run).values()
@@ -575,6 +592,8 @@ class RotorBearingSystem:
                                                                    "linear_solver"))
         check_unused("RotorBearingSystem.run", "recording", rc, ("record", "record_from_revolution"))
         method, rtol, atol, opr = ig.method, ig.rtol, ig.atol, rc.outputs_per_revolution
+        if thermal:
+            lr = thermal_films.thermal_long_run(method, lr, thermal_interval, opr)
         run = ModelRun(revolutions, opr, lr, touch_gap)
         self._check_run_memory(run.n_outputs)
         t0, y = start_point(start, RotorRunResult)
@@ -600,11 +619,14 @@ class RotorBearingSystem:
 
         dae = self.dae(ref, speed)
         s0 = speed(t0 * w)[0]
+        states = {}
         if y is None:
             if s0 <= 0:
                 raise ValueError(f"speed_rpm(t = {t0:g} s) = {s0 * ref:g} [rpm]: a film carries no load at rest; "
                                  "allowed: > 0 (start a run-up from a low speed)")
-            y = self._steady(dae, s0)
+            y, states = thermal_films.thermal_start(self, dae, s0) if thermal else (self._steady(dae, s0), {})
+        elif thermal and temperature is None and getattr(start, "final_temperature", None) is None:
+            states = thermal_films.thermal_start(self, dae, s0)[1]
 
         def journals(y_):
             q = y_[dae.Q0:dae.V0]
@@ -625,7 +647,7 @@ class RotorBearingSystem:
         to_run = universal = None
         if method == "bdf2":
             announce("rotor_bdf2")  # a cold cache compiles the films' content kernels and the Newton once
-            form = ContentSystem(dae)
+            form = (thermal_films.ThermalContentSystem if thermal else ContentSystem)(dae)
             to_run, universal = form.content_state, form.universal_state
             problem_at = lambda y_, tau_: form.problem(y_, tau_, events, n_events)  # noqa: E731
             # the step cap in shaft angle (the films' fronts move with the shaft): BDF2_STEPS_PER_REVOLUTION per revolution
@@ -660,6 +682,10 @@ class RotorBearingSystem:
                          result=lambda rec, stats, touched, message, tau_end_: self._run_result(
                              rec, dae, method, stats, touched, message, tau_end_ / w, ref),
                          to_run=to_run, universal=universal, key=key)
+        if thermal:
+            films = thermal_films.ThermalBearings(form, speed, thermal_films.start_temperatures(
+                form, start, temperature, states))
+            parts = thermal_films.thermal_parts(parts, films, events, n_events, thermal_interval)
         return run.go(parts, y, tau0, (tau_end - tau0) / run.n_outputs)
 
     def _sampler(self, dae, speed) -> Callable:
@@ -727,6 +753,7 @@ class RotorBearingSystem:
         default the linearisation's least damped modes)."""
         from transient.models.rotor.periodic import periodic_response
 
+        thermal_films.refuse_thermal(self, "periodic_response")
         speed = check_speed(speed_rpm)
         args = self._shooting_args(rtol, tol, modes, outputs_per_revolution, max_iter, integrator, shooting)
         y0 = None
@@ -749,6 +776,7 @@ class RotorBearingSystem:
         parameters as :meth:`periodic_response`."""
         from transient.models.rotor.periodic import response_curve
 
+        thermal_films.refuse_thermal(self, "response_curve")
         speeds = np.array([check_speed(n) for n in check_items("speeds_rpm", speeds_rpm,
                                                                 "a non-empty sequence of speeds [rpm]")])
         if speeds.size == 0:
