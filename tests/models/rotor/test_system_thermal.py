@@ -53,11 +53,12 @@ def cold_start():
 
 def test_zero_temperature_coefficient_is_the_isothermal_rotor():
     """A viscosity law with equal viscosities at both points (fluidity exactly 1): the thermal rotor on two
-    bearings takes the isothermal rotor's steps (BDF2 in chunks of the thermal interval) and its orbits to 1e-12 C;
+    bearings (0.3 C of unbalance) takes the isothermal rotor's steps (BDF2 in chunks of the thermal interval) and its orbits to 1e-12 C;
     the temperatures are still solved."""
     mu = 0.02
-    iso = two_bearings(JournalBearing(**GEOMETRY, viscosity=mu, grid=GRID))
-    hot = two_bearings(bearing(replace(OIL, viscosity_at=((320.0, mu), (350.0, mu))), viscosity=mu))
+    iso = two_bearings(JournalBearing(**GEOMETRY, viscosity=mu, grid=GRID), unbalance=MASS * 0.3 * C)
+    hot = two_bearings(bearing(replace(OIL, viscosity_at=((320.0, mu), (350.0, mu))), viscosity=mu),
+                       unbalance=MASS * 0.3 * C)
     y0 = iso.equilibrium(SPEED).state
     rc = Recording(outputs_per_revolution=20)
     a = iso.run(1.5, SPEED, start=(0.0, y0), integration=Integration(method="bdf2"),

@@ -262,9 +262,9 @@ class RotorBearingSystem:
         full = full.reshape(full.shape[:-1] + (len(r.nodes), len(r.dofs)))
         return np.ascontiguousarray(full[..., :2])
 
-    def _start_guess(self, dae, s):
-        """The state of the films at their bearings' own equilibria under the shaft's static loads, the shaft
-        bent through those journal positions, at rest."""
+    def _start_guess(self, dae, s, equilibria=None):
+        """The state of the films at their bearings' own equilibria under the shaft's static loads (``equilibria``:
+        those already solved, ``{node: FilmState}``), the shaft bent through those journal positions, at rest."""
         r = self.rotor
         y = np.zeros(dae.n)
         ks = self._support_stiffness()
@@ -288,7 +288,7 @@ class RotorBearingSystem:
                 u = None
             else:
                 try:
-                    e = b.equilibrium(load, speed)
+                    e = equilibria[node] if equilibria and node in equilibria else b.equilibrium(load, speed)
                 except NoEquilibriumError as exc:
                     raise NoEquilibriumError(f"the bearing at node {node} cannot carry its static load {load:.6g} N at "
                                              f"speed_rpm = {speed:.6g} [rpm] ({exc}); allowed: a load the film "

@@ -127,7 +127,7 @@ def thermal_start(system, dae, s) -> tuple:
         ft = FilmTemperatures(blk.film, blk.bearing, equilibrium_temperature(e))
         ft.set_fluidity()
         states[blk.node] = e
-    return system._start_guess(dae, s), states
+    return system._start_guess(dae, s, states), states
 
 
 def equilibrium_temperature(e) -> np.ndarray:
