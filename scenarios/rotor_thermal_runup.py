@@ -67,7 +67,7 @@ def main(argv=None):
     steady = [system.equilibrium(n) for n in speeds]
     nodes = r.thermal_nodes
     balance = max(float(np.max(np.abs(h["stored"] - (h["dissipation"] - h["heat_out"])) / h["dissipation"]))
-                  for h in r.heat_balance.values())
+                  for h in r.heat_balance)
     e = np.column_stack([r.eccentricity_ratio(n) for n in nodes])
     rec = JsonRecord(out / "rotor_thermal_runup.json", dict(grid=grid, quick=a.quick, mass=MASS, inertia=INERTIA,
                                                            span=SPAN, centre=CENTRE, gravity=GRAVITY,

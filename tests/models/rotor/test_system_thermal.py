@@ -139,9 +139,9 @@ def test_checkpoint_resume_carries_the_temperatures(tmp_path, monkeypatch):
     for k in ("t", "displacement", "max_temperature", "power_loss", "stored_heat", "final_temperature",
               "final_state"):
         np.testing.assert_array_equal(getattr(resumed, k), getattr(full, k))
-    for node in (0, 1):
-        for k, v in full.heat_balance[node].items():
-            np.testing.assert_array_equal(resumed.heat_balance[node][k], v)
+    for k in (0, 1):  # per thermal bearing, in the order of thermal_nodes
+        for name, v in full.heat_balance[k].items():
+            np.testing.assert_array_equal(resumed.heat_balance[k][name], v)
     assert np.all(full.max_temperature[-1] > full.max_temperature[0])
 
 

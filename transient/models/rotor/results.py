@@ -41,7 +41,8 @@ class RotorRunResult(_Nodes, RunResult):
     (:mod:`~transient.models.rotor.thermal_films`; None without): at their nodes ``thermal_nodes`` the series
     ``max_temperature`` [K], ``power_loss`` [W], ``heat_flow`` [W] (carried away by the oil and taken by the
     walls), ``stored_heat`` [J] (n_t, n_thermal), ``final_temperature`` [K] (each thermal film's cells and feeds,
-    in turn; ``start=result`` continues from them) and ``heat_balance`` ``{node: per thermal interval}``
+    in turn; ``start=result`` continues from them) and ``heat_balance``, per thermal bearing in the order of
+    ``thermal_nodes``, its energy balance per thermal interval
     (:meth:`~transient.models.journal.film_temperatures.FilmTemperatures.heat_balance`)."""
 
     shapes = {"displacement": ("t", "nodes", 2), "speed_rpm": ("t",), "bearing_force": ("t", "bearing_nodes", 2),
@@ -65,7 +66,7 @@ class RotorRunResult(_Nodes, RunResult):
     heat_flow: np.ndarray | None = quantity("W", None)
     stored_heat: np.ndarray | None = quantity("J", None)
     final_temperature: np.ndarray | None = quantity("K", None)
-    heat_balance: dict | None = None
+    heat_balance: list | None = None
 
     def eccentricity_ratio(self, node) -> np.ndarray:
         """e/C of the journal at the bearing ``node``."""

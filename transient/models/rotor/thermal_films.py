@@ -112,22 +112,37 @@ class ThermalContentSystem(ContentSystem):
 
 def thermal_start(system, dae, s) -> tuple:
     """The rotor's thermal static equilibrium at speed ratio ``s`` of ``dae`` (module docstring): ``(state,
-    {node: FilmState})``, each thermal bearing's steady THD film; the thermal films' fluidity set from it."""
+    {node: FilmState})``, each thermal bearing's steady THD film; the thermal films' fluidity set from it. Every
+    bearing's steady film at its load (``RotorBearingSystem._start_guess``), the shaft then bent exactly through
+    the journals' positions: ``K q = f + sum_b T_b^T R_b``, ``T_b q = (X_b, Y_b) C_b`` with the reactions ``R_b``
+    (the shaft's statics on rigid supports at the journals)."""
     speed = s * dae.speed_ref_rpm
     loads = system.static_loads()
-    states = {}
+    states, journals = {}, {}
     for blk in dae.blocks:
-        if getattr(blk.bearing, "thermal", None) is None:
-            continue
         load = float(np.hypot(*loads[blk.node]))
-        if load <= 0.0:
-            raise NoEquilibriumError(f"the thermal bearing at node {blk.node} carries no static load; allowed: a "
-                                     "loaded thermal bearing (its THD equilibrium is at its load)")
+        thermal = getattr(blk.bearing, "thermal", None) is not None
+        if load <= 0.0 or blk.node in system.dampers:
+            if thermal:
+                raise NoEquilibriumError(f"the thermal bearing at node {blk.node} carries no static load; allowed: "
+                                         "a loaded thermal bearing (its THD equilibrium is at its load)")
+            continue
         e = blk.bearing.equilibrium(load, speed)
-        ft = FilmTemperatures(blk.film, blk.bearing, equilibrium_temperature(e))
-        ft.set_fluidity()
+        a = np.arctan2(loads[blk.node][1], loads[blk.node][0])
+        rotation = np.array([[np.cos(a), -np.sin(a)], [np.sin(a), np.cos(a)]])
+        journals[blk.node] = rotation @ np.asarray(e.position[:2], dtype=float)  # [m], the rotor's frame
+        if thermal:
+            FilmTemperatures(blk.film, blk.bearing, equilibrium_temperature(e)).set_fluidity()
         states[blk.node] = e
-    return system._start_guess(dae, s, states), states
+    y = system._start_guess(dae, s, states)
+    if len(journals) == len(dae.blocks):  # every journal placed: the shaft through them
+        r = system.rotor
+        T = np.vstack([r.translation(node) for node in journals])
+        n, m = r.n, T.shape[0]
+        A = np.block([[system.stiffness, -T.T], [T, np.zeros((m, m))]])
+        rhs = np.concatenate([system.gravity_vector @ r.gravity_load, np.concatenate(list(journals.values()))])
+        y[dae.Q0:dae.V0] = np.linalg.lstsq(A, rhs, rcond=None)[0][:n] / dae.L
+    return y, {node: e for node, e in states.items() if getattr(system.bearings[node], "thermal", None) is not None}
 
 
 def equilibrium_temperature(e) -> np.ndarray:
@@ -261,7 +276,7 @@ def thermal_parts(parts, thermal: ThermalBearings, events, n_events, interval):
         for k in THERMAL_SERIES:
             setattr(r, k, np.asarray(a[k], dtype=float).reshape(-1, len(thermal.nodes)))
         r.final_temperature = thermal.final_temperature()
-        r.heat_balance = {node: ft.heat_balance() for node, ft in zip(thermal.nodes, thermal.films, strict=True)}
+        r.heat_balance = [ft.heat_balance() for ft in thermal.films]
         return r
 
     start_T = hashlib.sha256(thermal.final_temperature().tobytes()).hexdigest()[:16]
