@@ -94,7 +94,9 @@ class ThermalContentSystem(ContentSystem):
         index = [k for k, b in enumerate(dae.blocks) if getattr(b.bearing, "thermal", None) is not None]
         self.thermal = np.array(index, dtype=np.int64)
         self.fluidity = tuple(dae.blocks[k].film.fluidity for k in index)
-        self.thermal_args = (self.args, self.fluidity, self.thermal)
+        which = np.full(len(dae.blocks), -1, dtype=np.int64)
+        which[self.thermal] = np.arange(self.thermal.size)
+        self.thermal_args = (self.args, self.fluidity, self.thermal, which)
 
     def model(self) -> Bdf2Model:
         def newton(args, t, *rest):

@@ -4,16 +4,17 @@ times its frozen fluidity ``f_i = mu_ref / mu(T_i)`` (:mod:`~transient.models.jo
 
     k_i = f_i (H_i^3 / 2 + darcy H_i),   dk_i/dX = f_i (3/2 H_i^2 + darcy) cos phi_i  (Y: sin phi_i)
 
-The film force depends on the pressures alone and the rotor rows on the force: the rotor system's residual and
-Jacobian are taken as they are (:func:`~transient.models.rotor.content_newton.rotor_residual`,
-:func:`~transient.models.rotor.content_newton.rotor_jacobian`) and each thermal film's rows written again on its
-fields with the fluidity -- its net outflow (:func:`~transient.models.journal.kernels.stencil_flux`) and its block
-Jacobian (that of :func:`~transient.models.rotor.kernels.block_jacobian` at the content form's ``u' = X' = Y' = 0``,
-scattered with its coupling and border again). A fluidity of ones gives the isothermal system's numbers bit for bit.
+The residual is :func:`~transient.models.rotor.content_newton.rotor_residual`'s, one pass over the films with each
+thermal film's conductances scaled before its net outflow (:func:`~transient.models.journal.kernels.stencil_flux`).
+The film force depends on the pressures alone and the rotor rows on the force: the Jacobian is
+:func:`~transient.models.rotor.content_newton.rotor_jacobian`'s with each thermal film's block written again on its
+fields with the fluidity (that of :func:`~transient.models.rotor.kernels.block_jacobian` at the content form's
+``u' = X' = Y' = 0``, scattered with its coupling and border again). A fluidity of ones gives the isothermal
+system's numbers bit for bit.
 
-``args = ((films, rotor), fluidity, thermal)``: the rotor system's kernel arguments, a tuple of fluidity arrays and
-the indices of the thermal films among ``films``. Untilted blocks only (the thermal rotor refuses
-``tilt_coupling``).
+``args = ((films, rotor), fluidity, thermal, which)``: the rotor system's kernel arguments, a tuple of fluidity
+arrays, the indices of the thermal films among ``films`` and, per film, its index in ``fluidity`` (-1: isothermal).
+Untilted blocks only (the thermal rotor refuses ``tilt_coupling``).
 """
 
 from __future__ import annotations
@@ -24,9 +25,9 @@ from numba import njit
 import transient.models.rotor.content_newton as rotor_content
 import transient.solvers.integrate.bdf2 as stepper
 from transient.fv.reynolds import jacobian_kernel
-from transient.models.journal.kernels import position_derivatives, state_fields, stencil_flux
-from transient.models.rotor.content_newton import (node_position, rotor_from_state, rotor_jacobian,
-                                                   rotor_norm, rotor_residual, rotor_to_state)
+from transient.models.journal.kernels import film_force, position_derivatives, state_fields, stencil_flux
+from transient.models.rotor.content_newton import (block_fields, block_gap, node_position, rotor_force,
+                                                   rotor_from_state, rotor_jacobian, rotor_norm, rotor_to_state)
 from transient.models.rotor.kernels import scatter_block
 from transient.solvers.integrate.bdf2 import newton_step
 from transient.solvers.integrate.cache_guard import drop_stale_cache
@@ -69,30 +70,51 @@ def thermal_block_jacobian(u, X, Y, s, cj, local, switch, geo, fields, extras, f
 
 @njit(cache=True)
 def thermal_rotor_residual(t, y, yp, out, args):
-    """:func:`~transient.models.rotor.content_newton.rotor_residual` with each thermal film's rows on its
-    conductances times its fluidity (module docstring)."""
-    base, fluidity, thermal = args
+    """:func:`~transient.models.rotor.content_newton.rotor_residual` with each thermal film's conductances times its
+    fluidity before its net outflow (module docstring): one pass over the films, the rotor rows as there."""
+    base, fluidity, thermal, which = args
     films, rot = base
-    rotor_residual(t, y, yp, out, base)
-    for j in range(thermal.size):
-        f = films[thermal[j]]
+    s = rot.speed[0]
+    Q0, V0, P0 = rot.Q0, rot.V0, rot.P0
+    nq = V0 - Q0
+    rotor_force(y, rot)
+    frc = rot.force
+    q = y[Q0:V0]
+    for b in range(len(films)):
+        f = films[b]
         switch, _, geo, fields, extras, fv, work, tol, regime = f.film
-        k, R = fields.k, fields.R
-        flu = fluidity[j]
-        for i in range(k.size):  # the fields of this state, the Couette coefficients already at the shaft's speed
-            k[i] *= flu[i]
-        stencil_flux(as_read_only(work.u), fields, fv, R, 1.0)
-        work.xy[0] = np.nan  # the conductances are scaled now: not the fields state_fields gives
+        X, Y = node_position(f, q)
+        block_fields(y, f, X, Y, block_gap(f, q))
+        R, k = fields.R, fields.k
+        j = which[b]
+        if j >= 0:
+            flu = fluidity[j]
+            for i in range(k.size):
+                k[i] *= flu[i]
+        sb = s * f.spin
+        stencil_flux(as_read_only(work.u), fields, fv, R, sb)
+        if sb != 1.0 or j >= 0:
+            work.xy[0] = np.nan  # the coefficients are scaled now: not the fields of this state
+        fx, fy = film_force(fields.P, geo.cosp, geo.sinp, geo.area, f.sym)
         free, area, o = fv.cells.free, geo.area, f.offset
         for i in range(f.n):
             out[o + i] = area[i] * yp[o + i] + R[i] if free[i] else yp[o + i]
+        for i in range(f.support.size):
+            frc[f.support[i]] += f.gx[i] * fx + f.gy[i] * fy
+    for r in range(nq):  # the rotor rows of rotor_residual
+        out[Q0 + r] = yp[Q0 + r] - y[V0 + r]
+        acc = -frc[r]
+        for c in range(nq):
+            acc += rot.M[r, c] * yp[V0 + c] + (rot.Cw[r, c] + s * rot.G[r, c]) * y[V0 + c] + rot.Kw[r, c] * y[Q0 + c]
+        out[V0 + r] = acc
+    out[P0] = yp[P0] - s
 
 
 @njit(cache=True)
 def thermal_rotor_jacobian(t, y, yp, cj, data, args):
     """:func:`~transient.models.rotor.content_newton.rotor_jacobian` with each thermal film's block on its
     conductances times its fluidity (:func:`thermal_block_jacobian`), scattered again."""
-    base, fluidity, thermal = args
+    base, fluidity, thermal, which = args
     films, rot = base
     rotor_jacobian(t, y, yp, cj, data, base)
     if thermal.size == 0:
