@@ -5,7 +5,7 @@
 Two bearings of the thermal guide (D 0.1 m, L 0.05 m, C 100 um, full-length groove; 0.01902 Pa s at 323 K,
 0.00772 Pa s at 353 K; supply 50 C, adiabatic, carry-over 0.8) with 50 J/K of bush and shaft metal next to each
 film, under a rigid 20 kg rotor (0.3 kg m^2) whose centre of mass sits 0.2 m from bearing 0 on a 0.5 m span
-(bearing 0 carries 2.4 kN, bearing 1 1.6 kN under 100 m/s^2, a test-rig load), 4 um of unbalance at bearing 0.
+(bearing 0 carries 1.2 kN, bearing 1 0.8 kN under 100 m/s^2, a test-rig load), 4 um of unbalance at bearing 0.
 The shaft runs up from 1500 to 3000 rpm in 1 s and holds 3000 rpm for 2 s (--quick: 0.5 s and 0.5 s); the rotor
 system on BDF2 with each bearing's temperatures as states of the run on thermal intervals of one (mean)
 revolution (:mod:`transient.models.rotor.thermal_films`). Beside it: the rotor's thermal equilibrium at each

@@ -564,7 +564,7 @@ class RotorBearingSystem:
             touch_gap); 0 turns the detection off, but a run whose journal reaches the wall (a negative film) is
             still never a success.
         reference_speed_rpm : the speed of the films' pressure unit (default: the largest speed of the run;
-            a continued run keeps its start's).
+            a continued run keeps its start's; thermal bearings without a start: the start speed).
         thermal_interval [rev], temperature [K] : thermal bearings (``JournalBearing(thermal=ThermalFilm(...))``,
             :mod:`~transient.models.rotor.thermal_films`; ``method="bdf2"``, its default there): the films run on
             the viscosities of their temperatures at the start of each thermal interval of ``thermal_interval``
@@ -603,6 +603,8 @@ class RotorBearingSystem:
                                  f"{start.reference_speed_rpm!r} (its film state is in that speed's pressure unit)")
             reference_speed_rpm = start.reference_speed_rpm
         speed_fn, t_end, n_max = _speed_schedule(speed_rpm, t0, revolutions)
+        if thermal and y is None and reference_speed_rpm is None:  # the thermal start's films: at the start speed
+            reference_speed_rpm = speed_fn(t0) or None
         ref = n_max if reference_speed_rpm is None else check_speed(reference_speed_rpm)
         if callable(speed_rpm) and any(b.shear_thinning for b in self.bearings.values()):
             raise ValueError("speed_rpm as a function of time with a Gecim (shear-thinning) bearing: its bulk flux is "
@@ -626,7 +628,7 @@ class RotorBearingSystem:
                                  "allowed: > 0 (start a run-up from a low speed)")
             y, states = thermal_films.thermal_start(self, dae, s0) if thermal else (self._steady(dae, s0), {})
         elif thermal and temperature is None and getattr(start, "final_temperature", None) is None:
-            states = thermal_films.thermal_start(self, dae, s0)[1]
+            states = thermal_films.thermal_states(self, thermal_films.bearing_equilibria(self, dae, s0 * ref)[0])
 
         def journals(y_):
             q = y_[dae.Q0:dae.V0]

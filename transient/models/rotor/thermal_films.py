@@ -112,13 +112,9 @@ class ThermalContentSystem(ContentSystem):
                                out, self.thermal_args)
 
 
-def thermal_start(system, dae, s) -> tuple:
-    """The rotor's thermal static equilibrium at speed ratio ``s`` of ``dae`` (module docstring): ``(state,
-    {node: FilmState})``, each thermal bearing's steady THD film; the thermal films' fluidity set from it. Every
-    bearing's steady film at its load (``RotorBearingSystem._start_guess``), the shaft then bent exactly through
-    the journals' positions: ``K q = f + sum_b T_b^T R_b``, ``T_b q = (X_b, Y_b) C_b`` with the reactions ``R_b``
-    (the shaft's statics on rigid supports at the journals)."""
-    speed = s * dae.speed_ref_rpm
+def bearing_equilibria(system, dae, speed) -> tuple:
+    """Every loaded bearing's steady film at ``speed`` [rpm] under its load on rigid supports (the thermal ones THD,
+    their films' fluidity set from it): ``({node: FilmState}, {node: journal position (x, y) [m]})``."""
     loads = system.static_loads()
     states, journals = {}, {}
     for blk in dae.blocks:
@@ -136,6 +132,25 @@ def thermal_start(system, dae, s) -> tuple:
         if thermal:
             FilmTemperatures(blk.film, blk.bearing, equilibrium_temperature(e)).set_fluidity()
         states[blk.node] = e
+    return states, journals
+
+
+def thermal_states(system, states) -> dict:
+    """The thermal bearings' among ``states``."""
+    return {node: e for node, e in states.items() if getattr(system.bearings[node], "thermal", None) is not None}
+
+
+def thermal_start(system, dae, s) -> tuple:
+    """The rotor's thermal static equilibrium at the reference speed of ``dae`` (speed ratio ``s`` = 1; module
+    docstring): ``(state, {node: FilmState})``, each thermal bearing's steady THD film; the thermal films' fluidity
+    set from it. Every bearing's steady film at its load (``RotorBearingSystem._start_guess``), the shaft then bent
+    exactly through the journals' positions: ``K q = f + sum_b T_b^T R_b``, ``T_b q = (X_b, Y_b) C_b`` with the
+    reactions ``R_b`` (the shaft's statics on rigid supports at the journals)."""
+    if s != 1.0:
+        raise ValueError(f"reference_speed_rpm = {dae.speed_ref_rpm:g} [rpm] with thermal bearings and no start; "
+                         f"allowed: None or the start speed {s * dae.speed_ref_rpm:g} rpm (the thermal start's films "
+                         "are at their own speed)")
+    states, journals = bearing_equilibria(system, dae, dae.speed_ref_rpm)
     y = system._start_guess(dae, s, states)
     if len(journals) == len(dae.blocks):  # every journal placed: the shaft through them
         r = system.rotor
@@ -144,7 +159,7 @@ def thermal_start(system, dae, s) -> tuple:
         A = np.block([[system.stiffness, -T.T], [T, np.zeros((m, m))]])
         rhs = np.concatenate([system.gravity_vector @ r.gravity_load, np.concatenate(list(journals.values()))])
         y[dae.Q0:dae.V0] = np.linalg.lstsq(A, rhs, rcond=None)[0][:n] / dae.L
-    return y, {node: e for node, e in states.items() if getattr(system.bearings[node], "thermal", None) is not None}
+    return y, thermal_states(system, states)
 
 
 def equilibrium_temperature(e) -> np.ndarray:
