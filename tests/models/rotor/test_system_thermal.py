@@ -121,7 +121,7 @@ def test_checkpoint_resume_carries_the_temperatures(tmp_path, monkeypatch):
     kw = dict(thermal_interval=0.25, recording=Recording(outputs_per_revolution=20),
               temperature=OIL.supply_temperature)
     lr = LongRun(progress=False)
-    full = two_bearings(bearing()).run(1, SPEED, long_run=lr, **kw)
+    full = two_bearings(bearing()).run(0.75, SPEED, long_run=lr, **kw)
     path = tmp_path / "thermal.npz"
     set_speed = ThermalContentSystem.set_speed
 
@@ -132,9 +132,10 @@ def test_checkpoint_resume_carries_the_temperatures(tmp_path, monkeypatch):
 
     monkeypatch.setattr(ThermalContentSystem, "set_speed", killed)
     with pytest.raises(Interrupted, match="run again with resume=True"):
-        two_bearings(bearing()).run(1, SPEED, long_run=replace(lr, checkpoint=str(path)), **kw)
+        two_bearings(bearing()).run(0.75, SPEED, long_run=replace(lr, checkpoint=str(path)), **kw)
     monkeypatch.undo()
-    resumed = two_bearings(bearing()).run(1, SPEED, long_run=replace(lr, checkpoint=str(path), resume=True), **kw)
+    resumed = two_bearings(bearing()).run(0.75, SPEED, long_run=replace(lr, checkpoint=str(path), resume=True),
+                                          **kw)
     assert resumed.success and resumed.stats.n_steps < 2 * full.stats.n_steps
     for k in ("t", "displacement", "max_temperature", "power_loss", "stored_heat", "final_temperature",
               "final_state"):
