@@ -9,7 +9,10 @@ target: the thermal solve at most 3x the isothermal one.
 And one orbit revolution (BDF2, from the static equilibrium, rotor 10 kg per bearing, 2 kN, unbalance 0.1 C) of the
 thermal bearing (its temperatures states of the run, :mod:`~transient.models.journal.thermal_orbit`, thermal
 intervals of 1 and 0.5 revolutions) beside the isothermal bearing's on the same stepper; target: at most 1.5x.
-``transient bench thermal [--quick]``.
+
+And one revolution of a rigid rotor (20 kg, two of these bearings 0.5 m apart, 2 kN each, unbalance 0.1 C at each)
+on the thermal bearings (:mod:`~transient.models.rotor.thermal_films`) beside the same rotor on the isothermal ones,
+BDF2 (``method="bdf2"``); target: at most 1.5x. ``transient bench thermal [--quick]``.
 """
 
 from __future__ import annotations
@@ -22,6 +25,8 @@ import numpy as np
 
 from transient.models.journal.bearing import JournalBearing
 from transient.models.journal.orbit import JournalOrbit
+from transient.models.rotor.rotor import Rotor
+from transient.models.rotor.system import RotorBearingSystem
 from transient.solvers.settings import Integration, Recording
 from transient.models.journal.thermal_settings import ThermalFilm
 
@@ -70,6 +75,36 @@ def orbit_revolution(quick=False) -> dict:
              eccentricity_ratio=float(np.hypot(r.x[-1], r.y[-1]) / hot.clearance)) for name, (sec, r) in best.items()])
 
 
+def rotor_revolution(quick=False) -> dict:
+    """CPU seconds of one BDF2 revolution of the rigid rotor on the two thermal and on the two isothermal bearings,
+    each from a tenth of a revolution after its (thermal) equilibrium, best of the rounds."""
+    grid, rounds = ((60, 10), 1) if quick else ((151, 21), 3)
+    hot, iso = bearings(grid)
+    rotor = Rotor.rigid(20.0, 0.3, 0.5)
+    unbalance = [(0, 10.0 * 1e-5, 0.0), (1, 10.0 * 1e-5, 0.0)]
+    systems = {name: RotorBearingSystem(rotor, {0: b, 1: b}, unbalance=unbalance, gravity=200.0)
+               for name, b in (("thermal", hot), ("isothermal", iso))}
+    bdf2, rec = Integration(method="bdf2"), Recording(outputs_per_revolution=20)
+    start = {"isothermal": systems["isothermal"].run(0.1, RPM, integration=bdf2, recording=rec),
+             "thermal": systems["thermal"].run(0.1, RPM, thermal_interval=0.1, recording=rec)}
+    runs = {"isothermal": lambda: systems["isothermal"].run(1, RPM, start=start["isothermal"], integration=bdf2,
+                                                            recording=rec),
+            "thermal": lambda: systems["thermal"].run(1, RPM, start=start["thermal"], thermal_interval=1.0,
+                                                      recording=rec),
+            "thermal, interval 0.5 rev": lambda: systems["thermal"].run(1, RPM, start=start["thermal"],
+                                                                        thermal_interval=0.5, recording=rec)}
+    best = {}
+    for _ in range(rounds):
+        for name, go in runs.items():
+            seconds, r = _cpu(go)
+            if name not in best or seconds < best[name][0]:
+                best[name] = (seconds, r)
+    iso_s = best["isothermal"][0]
+    return dict(grid=list(grid), rounds=rounds, cases=[
+        dict(run=name, seconds=sec, ratio=sec / iso_s, steps=int(r.stats.n_steps),
+             eccentricity_ratio=float(r.eccentricity_ratio(0)[-1])) for name, (sec, r) in best.items()])
+
+
 def run(quick=False) -> dict:
     grid, rounds = ((60, 10), 1) if quick else ((151, 21), 3)
     hot, iso = bearings(grid)
@@ -88,7 +123,8 @@ def run(quick=False) -> dict:
                           alternations=s.thermal_iterations, newton=s.newton_iterations,
                           max_temperature_C=s.max_temperature - 273.15, load_ratio=s.load / si.load,
                           power_ratio=s.power_loss / si.power_loss))
-    return dict(quick=quick, grid=list(grid), rounds=rounds, rpm=RPM, cases=cases, orbit=orbit_revolution(quick))
+    return dict(quick=quick, grid=list(grid), rounds=rounds, rpm=RPM, cases=cases, orbit=orbit_revolution(quick),
+                rotor=rotor_revolution(quick))
 
 
 def markdown(r) -> str:
@@ -103,7 +139,8 @@ def markdown(r) -> str:
         + (" -- quick smoke run" if r["quick"] else "") + ". Target: ratio at most 3.", "",
         "| e/C | THD [s] | isothermal [s] | ratio | alternations | Newton iterations | T_max [C] | load THD/iso "
         "| power THD/iso |",
-        "|---|---|---|---|---|---|---|---|---|", *rows, "", *orbit_markdown(r.get("orbit"))])
+        "|---|---|---|---|---|---|---|---|---|", *rows, "", *orbit_markdown(r.get("orbit")),
+        *rotor_markdown(r.get("rotor"))])
 
 
 def orbit_markdown(o) -> list:
@@ -125,3 +162,16 @@ def main(out, quick: bool = False) -> str:
     out.mkdir(parents=True, exist_ok=True)
     (out / "bench_thermal.json").write_text(json.dumps(r, indent=1))
     return markdown(r)
+
+
+def rotor_markdown(o) -> list:
+    """The rotor revolution's table (nothing without one)."""
+    if not o:
+        return []
+    g = o["grid"]
+    return ["### One rotor revolution on two bearings, thermal against isothermal (BDF2)", "",
+            f"Rigid rotor 20 kg on two bearings of {g[0]} x {g[1]} cells, {RPM:g} rpm, 2 kN each, unbalance 0.1 C at "
+            f"each; CPU seconds, best of {o['rounds']} interleaved rounds. Target: ratio at most 1.5.", "",
+            "| run | CPU [s] | ratio | steps | e/C at bearing 0 at the end |", "|---|---|---|---|---|",
+            *[f"| {c['run']} | {c['seconds']:.2f} | {c['ratio']:.2f} | {c['steps']} | {c['eccentricity_ratio']:.4f} |"
+              for c in o["cases"]], ""]

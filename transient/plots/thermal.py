@@ -91,3 +91,42 @@ def run_up(t, shaft_speed, max_temperature, power_loss, heat_flow, eccentricity_
         a.grid(alpha=0.3)
     suptitle(fig, title)
     return fig
+
+
+def rotor_run_up(t, shaft_speed, nodes, max_temperature, power_loss, eccentricity_ratio, steady: dict,
+                 ramp_end: float, title: str):
+    """A rotor's run-up on thermal bearings against time [s]: the shaft speed [rpm]; each bearing's (``nodes``,
+    the columns of the (n_t, n_bearings) series) hottest film temperature beside its steady THD film's in the
+    rotor's thermal equilibrium at the same speed (``steady``: ``speed_rpm``, and ``max_temperature`` [K],
+    ``power_loss`` [W], ``eccentricity_ratio`` as (n_speeds, n_bearings), interpolated in speed); the power loss
+    [W]; the eccentricity ratio. A grey line at ``ramp_end`` [s]."""
+    fig = Figure(figsize=(11.0, 7.0), layout="constrained")
+    ax = fig.subplots(2, 2, sharex=True)
+    shaft_speed = np.asarray(shaft_speed)
+
+    def at(key, k):
+        return np.interp(shaft_speed, steady["speed_rpm"], np.asarray(steady[key])[:, k])
+
+    ax[0, 0].plot(t, shaft_speed, color="k")
+    ax[0, 0].set_ylabel("shaft speed [rpm]")
+    for k, node in enumerate(nodes):
+        color = f"C{k}"
+        ax[0, 1].plot(t, np.asarray(max_temperature)[:, k] - KELVIN_AT_0C, color=color, label=f"bearing {node}")
+        ax[0, 1].plot(t, at("max_temperature", k) - KELVIN_AT_0C, "--", color=color,
+                      label=f"bearing {node}: steady THD at the same speed")
+        ax[1, 0].plot(t, np.asarray(power_loss)[:, k], color=color, label=f"bearing {node}")
+        ax[1, 0].plot(t, at("power_loss", k), "--", color=color, label=f"bearing {node}: steady THD")
+        ax[1, 1].plot(t, np.asarray(eccentricity_ratio)[:, k], lw=0.6, color=color, label=f"bearing {node}")
+        ax[1, 1].plot(t, at("eccentricity_ratio", k), "--", color=color, label=f"bearing {node}: steady THD")
+    ax[0, 1].set_ylabel("maximum film temperature [C]")
+    ax[1, 0].set_ylabel("power loss [W]")
+    ax[1, 1].set_ylabel("eccentricity ratio e/C [-]")
+    for a in (ax[0, 1], ax[1, 0], ax[1, 1]):
+        a.legend(fontsize=7)
+    for a in ax[1]:
+        a.set_xlabel("time [s]")
+    for a in ax.flat:
+        a.axvline(ramp_end, color="0.7", lw=0.8)
+        a.grid(alpha=0.3)
+    suptitle(fig, title)
+    return fig

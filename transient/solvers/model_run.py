@@ -87,11 +87,14 @@ class Recorder:
     ``omega``) and the ``series`` the model's ``sample(tau, y) -> {name: row}`` returns (``y`` in the results'
     layout, ``universal(y)`` of the run's); a ``sparse`` series (sampled only where the model chooses, e.g. fields
     from a revolution on) with its own times ``<name>_t`` [s], stored in float32. An output at or before the last
-    one (a chunk starts where the previous one ended) is not kept again."""
+    one (a chunk starts where the previous one ended) is not kept again. ``carry``: the model's own state beside the
+    integrator's (e.g. a thermal film's temperatures), an object whose ``arrays()`` (at a chunk's end) and
+    ``restore(arrays)`` a checkpoint keeps."""
 
-    def __init__(self, sample: Callable, omega: float, series, sparse=(), universal: Callable | None = None):
+    def __init__(self, sample: Callable, omega: float, series, sparse=(), universal: Callable | None = None,
+                 carry=None):
         self.sample, self.omega, self.sparse = sample, float(omega), tuple(sparse)
-        self.universal = universal
+        self.universal, self.carry = universal, carry
         self.t = []
         self.series = {k: [] for k in series}
         self.sparse_t = {k: [] for k in self.sparse if k in self.series}
@@ -121,6 +124,8 @@ class Recorder:
             out[k] = np.array(v, dtype=np.float32 if k in self.sparse else float)
         for k, v in self.sparse_t.items():
             out[k + "_t"] = np.array(v)
+        if self.carry is not None:
+            out.update({"carry." + k: np.asarray(v) for k, v in self.carry.arrays().items()})
         return out
 
     def restore(self, a: dict):
@@ -139,6 +144,8 @@ class Recorder:
             self.series[k] = list(a[k])
         for k in self.sparse_t:
             self.sparse_t[k] = list(a[k + "_t"])
+        if self.carry is not None:
+            self.carry.restore({k[6:]: v for k, v in a.items() if k.startswith("carry.")})
 
 
 @dataclass
@@ -156,7 +163,7 @@ class RunParts:
     model's result (its ``final_state`` is ``recorder.last_y``); ``to_run``/``universal``: the maps between the
     results' layout and the run's (``None``: the same). ``unit`` names ``revolution`` in the bar and messages (a
     model without a shaft: ``unit="s"``, ``revolution=1``); ``status()`` the bar's short status (``None``: each
-    journal's e/C)."""
+    journal's e/C); ``carry`` the model's own state a checkpoint keeps beside the integrator's (:class:`Recorder`)."""
 
     label: str
     omega: float
@@ -175,6 +182,7 @@ class RunParts:
     key: dict = field(default_factory=dict)
     unit: str = "rev"
     status: Callable | None = None
+    carry: object | None = None
 
 
 class ModelRun:
@@ -226,7 +234,7 @@ class ModelRun:
         """Run from ``y`` (results' layout) at ``tau0`` over the outputs every ``dt_out`` (in tau; or at the
         output times ``dt_out``, an array from ``tau0``); the model's result, ``success`` False after a terminal
         event, a failure or a journal through the wall."""
-        rec = Recorder(parts.sample, parts.omega, parts.series, parts.sparse, parts.universal)
+        rec = Recorder(parts.sample, parts.omega, parts.series, parts.sparse, parts.universal, parts.carry)
         rec.last_y = y
         lr = self.long_run
         if lr.stop is not None:

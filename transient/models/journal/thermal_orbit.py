@@ -43,10 +43,9 @@ import numpy as np
 from transient.checks import check_range
 from transient.models.journal.driven_film import driven_fields, driven_newton, driven_residual
 from transient.models.journal.film import read_only
+from transient.models.journal.film_temperatures import FilmTemperatures
 from transient.models.journal.kernels import N_ROTOR
 from transient.models.journal.speed_law import shaft_speed, speed_range, step_cap_scale
-from transient.models.journal.thd import fluidity
-from transient.models.journal.thermal import EnergyEquation, EnergyRates
 from transient.solvers.integrate import Problem
 from transient.solvers.integrate.bdf2 import Bdf2Model
 
@@ -56,8 +55,9 @@ THERMAL_RECORDABLE = ("max_temperature", "power_loss", "heat_flow", "stored_heat
 THERMAL_FIELDS = ("temperature",)
 
 
-class ThermalRun:
-    """The temperatures of one thermal orbit run and their multirate coupling to the film (module docstring).
+class ThermalRun(FilmTemperatures):
+    """The temperatures of one thermal orbit run and their multirate coupling to the film (module docstring; the
+    temperatures, their averaging and step: :class:`~transient.models.journal.film_temperatures.FilmTemperatures`).
 
     ``orbit``: the :class:`~transient.models.journal.orbit.JournalOrbit` (its film a
     :class:`~transient.models.journal.viscous_film.ViscousFilm`); ``knots``: the shaft's speed law
@@ -66,32 +66,14 @@ class ThermalRun:
     film is set from them at the start state (:meth:`problem_at`)."""
 
     def __init__(self, orbit, knots, temperature):
+        super().__init__(orbit.film, orbit.bearing, temperature)
         self.orbit = orbit
-        film = self.film = orbit.film
-        th = self.thermal = orbit.bearing.thermal
-        self.energy = EnergyEquation(film, th)
-        temperature = np.asarray(temperature, dtype=float)
-        self.T, self.T_mix = temperature[:film.n].copy(), temperature[film.n:].copy()
+        film = self.film
         self.knots = knots
-        s = film.scales
-        free = film.op.free
-        self.area = film.area
-        # the wall's share of each cell [C R^2 of oil]: c_w A_i / (sym sum A) / (rho c_p C R^2)
-        self.wall_volume = (th.wall_heat_capacity * film.area / (s.sym * float(np.sum(film.area[free])))
-                            / (th.properties.volumetric_heat * s.clearance * s.radius ** 2))
         self.model = Bdf2Model(newton=driven_newton, args=(orbit.content_args(), film.fluidity, knots),
                                error_components=np.arange(film.n, orbit.n), n_border=N_ROTOR)
-        self.started = False
-        self.stepped_at = None
-        self.ledger = []
-        self._reset()
 
     # the film's rates, sampled ----------------------------------------------------------------------------
-    def _reset(self):
-        self.tau_start = self.tau_last = None
-        self.sums = None
-        self.last = None
-
     def rates(self, tau, u, X, Y):
         """The energy equation's rates and the oil's content per cell of the universal state at ``tau``."""
         film = self.film
@@ -99,57 +81,6 @@ class ThermalRun:
         driven_fields(read_only(np.ascontiguousarray(u)), X, Y, s, film.fluidity, film.switch, film.geo,
                       film.fields, film.fv)
         return self.energy.rates(s), film.H * film.C
-
-    def observe(self, tau, r, m):
-        """Add the sample ``(r, m)`` at ``tau`` to the interval's trapezoid (a repeated time is not added)."""
-        if self.tau_last is not None and tau <= self.tau_last:
-            return
-        if self.tau_last is None:
-            self.tau_start, self.first = tau, (r, m)
-            self.sums = [np.zeros_like(a) for a in (*r, m)]
-        else:
-            h = 0.5 * (tau - self.tau_last)
-            for acc, a, b in zip(self.sums, (*self.last[0], self.last[1]), (*r, m), strict=True):
-                acc += h * (a + b)
-        self.tau_last, self.last = tau, (r, m)
-
-    def advance(self, tau):
-        """The temperatures' backward-Euler step over the interval that ends at ``tau`` (module docstring) and the
-        film's fluidity at them (the pressures of the last sample)."""
-        dtau = tau - self.tau_start
-        if dtau <= 0.0 or tau == self.stepped_at:
-            return
-        self.stepped_at = tau
-        mean = [a / dtau for a in self.sums]
-        r = EnergyRates(*mean[:4])
-        capacity = (mean[4] * self.area + self.wall_volume) / dtau
-        stored = self.stored_heat(self.first[1], self.T)
-        b = self.energy.solve_rates(r, capacity, self.T)
-        self.T, self.T_mix = b.temperature, b.mixing_temperature
-        seconds = dtau / self.film.omega
-        self.ledger.append((tau / self.film.omega, b.dissipation * seconds, (b.convected + b.conducted) * seconds,
-                            self.stored_heat(self.last[1], self.T) - stored))
-        self.set_fluidity()
-
-    def stored_heat(self, m, T) -> float:
-        """The heat [J] in the oil (content ``m`` per cell) and the walls above the supply temperature at the cells'
-        temperatures ``T``."""
-        s, free = self.film.scales, self.film.op.free
-        volume = m * self.area + self.wall_volume
-        return (self.energy.heat_unit / s.omega * s.sym
-                * float(np.sum((volume * (T - self.thermal.supply_temperature))[free])))
-
-    def heat_balance(self) -> dict:
-        """The energy balance of every thermal interval: its end ``t`` [s], the heat the film made in it
-        (``dissipation`` [J], its mean over the outputs), the heat the oil carried away and the walls took
-        (``heat_out`` [J], at the interval's new temperatures) and the change of the ``stored`` heat [J] (oil
-        content and temperatures at the interval's ends)."""
-        a = np.array(self.ledger, dtype=float).reshape(-1, 4)
-        return dict(t=a[:, 0], dissipation=a[:, 1], heat_out=a[:, 2], stored=a[:, 3])
-
-    def set_fluidity(self):
-        """The film's fluidity at the temperatures (and the pressures of the film's last evaluation)."""
-        self.film.fluidity[:] = fluidity(self.film, self.thermal, self.T, self.orbit.bearing.viscosity)
 
     # the run ------------------------------------------------------------------------------------------------
     def problem_at(self, y, tau, tau_end, events=None):
@@ -164,8 +95,7 @@ class ThermalRun:
             driven_fields(read_only(u), y[n], y[n + 1], shaft_speed(tau, self.knots)[0], film.fluidity, film.switch,
                           film.geo, film.fields, film.fv)
             self.set_fluidity()  # the start temperatures' viscosities at the start's pressures
-        self.started = True
-        self._reset()
+        self.next_interval()
         self.observe(tau, *self.rates(tau, u, y[n], y[n + 1]))
         args = self.model.args
         yp0 = np.zeros(y.size)
@@ -192,19 +122,7 @@ class ThermalRun:
         n = film.n
         r, m = self.rates(tau, y[:n], y[n], y[n + 1])
         self.observe(tau, r, m)
-        b = self.energy.balance(r, self.T, self.T_mix)
-        free = film.op.free
-        return dict(max_temperature=float(np.max(self.T[free])), power_loss=b.dissipation,
-                    heat_flow=b.convected + b.conducted, stored_heat=self.stored_heat(m, self.T),
-                    shaft_speed=shaft_speed(tau, self.knots)[0] * self.orbit.speed_rpm)
-
-    def temperature_field(self) -> np.ndarray:
-        """The cells' temperatures [K] on the grid (feed cells at their feed's mixing temperature)."""
-        return self.orbit.bearing.grid.to_2d(self.T).astype(np.float32)
-
-    def final_temperature(self) -> np.ndarray:
-        """The cells' and feeds' temperatures [K] (``OrbitResult.final_temperature``: ``run(start=...)``)."""
-        return np.concatenate([self.T, self.T_mix])
+        return dict(self.outputs(r, m), shaft_speed=shaft_speed(tau, self.knots)[0] * self.orbit.speed_rpm)
 
 
 def thermal_long_run(long_run, interval, opr):

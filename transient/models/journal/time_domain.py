@@ -29,8 +29,6 @@ NOT_IN_TIME_DOMAIN = {
     "cavitation": Refusal("elrod", "{value!r}", "the time-domain films are the mass-conserving Elrod film; the "
                           "Reynolds-condition film serves the steady and linear analyses",
                           ("JournalOrbit", "RotorBearingSystem")),
-    "thermal": Refusal(None, "ThermalFilm(...)", "the rotor system's films are isothermal; a thermal bearing serves "
-                       "the single bearing's orbit and its steady and linear analyses", ("RotorBearingSystem",)),
 }
 
 

@@ -42,13 +42,21 @@ class RotorRunResult(_Nodes, RunResult):
     force on the journal, ``friction_torque`` [N m] (film shear plus boundary friction on the asperity load),
     ``min_film`` [m], ``contact_pressure`` [Pa] the peak asperity pressure; ``contact_events``
     ``[(t [s], node, "begins" | "ends"), ...]`` where a bearing's ``h_min / sigma`` crosses 3 (a rough journal's
-    contact is a record: the run goes on through it); ``bearing_force`` is then film plus asperities."""
+    contact is a record: the run goes on through it); ``bearing_force`` is then film plus asperities. Thermal bearings
+    (:mod:`~transient.models.rotor.thermal_films`; None without): at their nodes ``thermal_nodes`` the series
+    ``max_temperature`` [K], ``power_loss`` [W], ``heat_flow`` [W] (carried away by the oil and taken by the
+    walls), ``stored_heat`` [J] (n_t, n_thermal), ``final_temperature`` [K] (each thermal film's cells and feeds,
+    in turn; ``start=result`` continues from them) and ``heat_balance``, per thermal bearing in the order of
+    ``thermal_nodes``, its energy balance per thermal interval
+    (:meth:`~transient.models.journal.film_temperatures.FilmTemperatures.heat_balance`)."""
 
     shapes = {"displacement": ("t", "nodes", 2), "speed_rpm": ("t",), "bearing_force": ("t", "bearing_nodes", 2),
               "clearance": ("bearing_nodes",), "contact_load": ("t", "bearing_nodes"),
               "friction_torque": ("t", "bearing_nodes"), "min_film": ("t", "bearing_nodes"),
-              "contact_pressure": ("t", "bearing_nodes")}
-    labels = {"bearing_nodes": "nodes"}
+              "contact_pressure": ("t", "bearing_nodes"), "max_temperature": ("t", "thermal_nodes"),
+              "power_loss": ("t", "thermal_nodes"), "heat_flow": ("t", "thermal_nodes"),
+              "stored_heat": ("t", "thermal_nodes"), "final_temperature": (None,)}
+    labels = {"bearing_nodes": "nodes", "thermal_nodes": "bearing_nodes"}
 
     displacement: np.ndarray = quantity("m", None)
     speed_rpm: np.ndarray = quantity("rpm", None)
@@ -64,6 +72,13 @@ class RotorRunResult(_Nodes, RunResult):
     min_film: np.ndarray | None = quantity("m", None)
     contact_pressure: np.ndarray | None = quantity("Pa", None)
     contact_events: list | None = None
+    thermal_nodes: list | None = None
+    max_temperature: np.ndarray | None = quantity("K", None)
+    power_loss: np.ndarray | None = quantity("W", None)
+    heat_flow: np.ndarray | None = quantity("W", None)
+    stored_heat: np.ndarray | None = quantity("J", None)
+    final_temperature: np.ndarray | None = quantity("K", None)
+    heat_balance: list | None = None
 
     def eccentricity_ratio(self, node) -> np.ndarray:
         """e/C of the journal at the bearing ``node``."""
@@ -84,12 +99,16 @@ class RotorEquilibrium(_Nodes, SteadyResult):
     load each bearing carries), ``eccentricity_ratio`` and ``attitude_angle_deg`` per bearing (from the bearing's
     load line to the line of centres, in the direction of rotation), ``state`` the system's dimensionless state;
     ``bearing_moment`` [N m] (n_bearings, 2) the film's moment on the journal about the bearing centre (about x,
-    about y) where the films take the shaft's tilts (``RotorBearingSystem(tilt_coupling=True)``), else None."""
+    about y) where the films take the shaft's tilts (``RotorBearingSystem(tilt_coupling=True)``), else None.
+    Thermal bearings at ``thermal_nodes`` (:func:`~transient.models.rotor.thermal_films.thermal_equilibrium`; None
+    without): their steady THD films' ``max_temperature`` [K], ``power_loss`` [W] and ``temperature`` [K] (each
+    film's cells and feeds, in turn)."""
 
     shapes = {"displacement": ("nodes", 2), "bearing_force": ("bearing_nodes", 2), "bearing_load": ("bearing_nodes",),
               "eccentricity_ratio": ("bearing_nodes",), "attitude_angle_deg": ("bearing_nodes",), "state": (None,),
-              "bearing_moment": ("bearing_nodes", 2)}
-    labels = {"bearing_nodes": "nodes"}
+              "bearing_moment": ("bearing_nodes", 2), "max_temperature": ("thermal_nodes",),
+              "power_loss": ("thermal_nodes",), "temperature": (None,)}
+    labels = {"bearing_nodes": "nodes", "thermal_nodes": "bearing_nodes"}
 
     displacement: np.ndarray = quantity("m", None)
     bearing_force: np.ndarray = quantity("N", None)
@@ -101,6 +120,10 @@ class RotorEquilibrium(_Nodes, SteadyResult):
     speed_rpm: float = quantity("rpm", 0.0)
     state: np.ndarray = quantity("-", None, repr=False)
     bearing_moment: np.ndarray | None = quantity("N m", None)
+    thermal_nodes: list | None = None
+    max_temperature: np.ndarray | None = quantity("K", None)
+    power_loss: np.ndarray | None = quantity("W", None)
+    temperature: np.ndarray | None = quantity("K", None)
 
 
 @result_type

@@ -43,6 +43,7 @@ from transient.models.journal.time_domain import check_time_domain
 from transient.models.journal.orbit import BDF2_MAX_ORDER, BDF2_MIN_STEPS, BDF2_TRAVEL, BDF2_TRAVEL_RTOL
 from transient.models.rotor.content_form import ContentSystem
 from transient.models.rotor.model import SystemDAE
+from transient.models.rotor import thermal_films
 from transient.models.rotor.results import RotorEquilibrium, RotorRunResult, UnbalanceResponse
 from transient.models.rotor.rough_films import TRIBOLOGY, rough_block_force, rough_records, tribology_sample
 from transient.models.rotor.rotor import Rotor
@@ -133,6 +134,7 @@ class RotorBearingSystem:
             g = np.array(check_vector("gravity", gravity, "m/s^2", 2, -1e4, 1e4, why="(a number along x or an "
                                       "(x, y) vector)"))
         self.gravity_vector = g
+        thermal_films.check_thermal_system(self)
         self._check_units()
 
     @property
@@ -231,6 +233,8 @@ class RotorBearingSystem:
             b._check_supplied()
         self._check_steady_memory()
         dae = self.dae(speed)
+        if thermal_films.thermal_nodes(self):  # each thermal bearing's THD equilibrium at its load
+            return thermal_films.thermal_equilibrium(self, dae, speed)
         y = self._steady(dae, 1.0)
         return self._equilibrium_result(dae, y, speed)
 
@@ -263,9 +267,9 @@ class RotorBearingSystem:
         full = full.reshape(full.shape[:-1] + (len(r.nodes), len(r.dofs)))
         return np.ascontiguousarray(full[..., :2])
 
-    def _start_guess(self, dae, s):
-        """The state of the films at their bearings' own equilibria under the shaft's static loads, the shaft
-        bent through those journal positions, at rest."""
+    def _start_guess(self, dae, s, equilibria=None):
+        """The state of the films at their bearings' own equilibria under the shaft's static loads (``equilibria``:
+        those already solved, ``{node: FilmState}``), the shaft bent through those journal positions, at rest."""
         r = self.rotor
         y = np.zeros(dae.n)
         ks = self._support_stiffness()
@@ -289,7 +293,7 @@ class RotorBearingSystem:
                 u = None
             else:
                 try:
-                    e = b.equilibrium(load, speed)
+                    e = equilibria[node] if equilibria and node in equilibria else b.equilibrium(load, speed)
                 except NoEquilibriumError as exc:
                     raise NoEquilibriumError(f"the bearing at node {node} cannot carry its static load {load:.6g} N at "
                                              f"speed_rpm = {speed:.6g} [rpm] ({exc}); allowed: a load the film "
@@ -472,6 +476,7 @@ class RotorBearingSystem:
     def linearisation(self, speed_rpm, equilibrium=None) -> "Linearisation":
         """The system linearised at its static equilibrium with the film states included
         (:class:`Linearisation`)."""
+        thermal_films.refuse_thermal(self, "linearisation")
         speed = check_speed(speed_rpm)
         eq = self.equilibrium(speed) if equilibrium is None else equilibrium
         return Linearisation(self, self.dae(speed), eq)
@@ -531,7 +536,7 @@ class RotorBearingSystem:
     # ------------------------------------------------------------------------------------------
     def run(self, revolutions, speed_rpm, *, start=None, touch_gap=1e-3, reference_speed_rpm=None,
             integration: Integration | None = None, recording: Recording | None = None,
-            long_run: LongRun | None = None, **legacy) -> RotorRunResult:
+            long_run: LongRun | None = None, thermal_interval=1.0, temperature=None, **legacy) -> RotorRunResult:
         """Integrate the rotor on its films over ``revolutions`` shaft revolutions.
 
         Parameters
@@ -569,7 +574,13 @@ class RotorBearingSystem:
             not watched, its contact is recorded (``contact_load``, ``friction_torque``, ``min_film``,
             ``contact_pressure``, ``contact_events``: :mod:`~transient.models.rotor.rough_films`).
         reference_speed_rpm : the speed of the films' pressure unit (default: the largest speed of the run;
-            a continued run keeps its start's).
+            a continued run keeps its start's; thermal bearings without a start: the start speed).
+        thermal_interval [rev], temperature [K] : thermal bearings (``JournalBearing(thermal=ThermalFilm(...))``,
+            :mod:`~transient.models.rotor.thermal_films`; ``method="bdf2"``, its default there): the films run on
+            the viscosities of their temperatures at the start of each thermal interval of ``thermal_interval``
+            revolutions (whole output intervals), the temperatures take one step on the interval's mean flows and
+            dissipation at its end. ``temperature``: every thermal film's cells and feeds at this temperature at the
+            start (default: a ``start`` result's final temperatures, else the thermal equilibrium's).
 
         The settings as loose keywords (``method="bdf2"``, ``outputs_per_revolution=32``, ``checkpoint=PATH``) are
         deprecated: they still work for one release, with a ``DeprecationWarning`` naming the new spelling (beside
@@ -577,6 +588,12 @@ class RotorBearingSystem:
         """
         check_method("RotorBearingSystem.run", requested_method(integration, legacy), step_solve=True,
                      among=RUN_METHODS)
+        thermal = bool(thermal_films.thermal_nodes(self))
+        if thermal:
+            integration = thermal_films.thermal_integration(integration, legacy)
+        elif temperature is not None:
+            raise ValueError(f"temperature = {temperature!r} [K] without thermal bearings; allowed: None (the start "
+                             "temperature of thermal films: JournalBearing(thermal=ThermalFilm(...)))")
         revolutions = check_positive("revolutions", revolutions, "rev")
         ig, rc, lr = run_settings("RotorBearingSystem.run", legacy, RUN_KEYWORDS, integration=integration,
                                   recording=recording, long_run=long_run).values()
@@ -584,6 +601,8 @@ class RotorBearingSystem:
         check_unused("RotorBearingSystem.run", "integration", ig, ("formulation", "dt", "linear_solver"))
         check_unused("RotorBearingSystem.run", "recording", rc, ("record", "record_from_revolution"))
         method, rtol, atol, opr = ig.method, ig.rtol, ig.atol, rc.outputs_per_revolution
+        if thermal:
+            lr = thermal_films.thermal_long_run(method, lr, thermal_interval, opr)
         run = ModelRun(revolutions, opr, lr, touch_gap)
         self._check_run_memory(run.n_outputs)
         t0, y = start_point(start, RotorRunResult)
@@ -593,6 +612,8 @@ class RotorBearingSystem:
                                  f"{start.reference_speed_rpm!r} (its film state is in that speed's pressure unit)")
             reference_speed_rpm = start.reference_speed_rpm
         speed_fn, t_end, n_max = _speed_schedule(speed_rpm, t0, revolutions)
+        if thermal and y is None and reference_speed_rpm is None:  # the thermal start's films: at the start speed
+            reference_speed_rpm = speed_fn(t0) or None
         ref = n_max if reference_speed_rpm is None else check_speed(reference_speed_rpm)
         if callable(speed_rpm) and any(b.shear_thinning for b in self.bearings.values()):
             raise ValueError("speed_rpm as a function of time with a Gecim (shear-thinning) bearing: its bulk flux is "
@@ -609,11 +630,14 @@ class RotorBearingSystem:
 
         dae = self.dae(ref, speed)
         s0 = speed(t0 * w)[0]
+        states = {}
         if y is None:
             if s0 <= 0:
                 raise ValueError(f"speed_rpm(t = {t0:g} s) = {s0 * ref:g} [rpm]: a film carries no load at rest; "
                                  "allowed: > 0 (start a run-up from a low speed)")
-            y = self._steady(dae, s0)
+            y, states = thermal_films.thermal_start(self, dae, s0) if thermal else (self._steady(dae, s0), {})
+        elif thermal and temperature is None and getattr(start, "final_temperature", None) is None:
+            states = thermal_films.thermal_states(self, thermal_films.bearing_equilibria(self, dae, s0 * ref)[0])
 
         def journals(y_):
             q = y_[dae.Q0:dae.V0]
@@ -635,7 +659,7 @@ class RotorBearingSystem:
         to_run = universal = None
         if method == "bdf2":
             announce("rotor_bdf2")  # a cold cache compiles the films' content kernels and the Newton once
-            form = ContentSystem(dae)
+            form = (thermal_films.ThermalContentSystem if thermal else ContentSystem)(dae)
             to_run, universal = form.content_state, form.universal_state
             problem_at = lambda y_, tau_: form.problem(y_, tau_, events, n_events)  # noqa: E731
             # the step cap in shaft angle: per shaft revolution at any speed down to MIN_CAP_SPEED of the reference
@@ -678,6 +702,10 @@ class RotorBearingSystem:
                          result=lambda rec, stats, touched, message, tau_end_: self._run_result(
                              rec, dae, method, stats, touched, message, tau_end_ / w, ref),
                          to_run=to_run, universal=universal, key=key)
+        if thermal:
+            films = thermal_films.ThermalBearings(form, speed, thermal_films.start_temperatures(
+                form, start, temperature, states))
+            parts = thermal_films.thermal_parts(parts, films, events, n_events, thermal_interval)
         return run.go(parts, y, tau0, (tau_end - tau0) / run.n_outputs)
 
     def _sampler(self, dae, speed) -> Callable:
@@ -750,6 +778,7 @@ class RotorBearingSystem:
         default the linearisation's least damped modes)."""
         from transient.models.rotor.periodic import periodic_response
 
+        thermal_films.refuse_thermal(self, "periodic_response")
         speed = check_speed(speed_rpm)
         args = self._shooting_args(rtol, tol, modes, outputs_per_revolution, max_iter, integrator, shooting)
         y0 = None
@@ -772,6 +801,7 @@ class RotorBearingSystem:
         parameters as :meth:`periodic_response`."""
         from transient.models.rotor.periodic import response_curve
 
+        thermal_films.refuse_thermal(self, "response_curve")
         speeds = np.array([check_speed(n) for n in check_items("speeds_rpm", speeds_rpm,
                                                                 "a non-empty sequence of speeds [rpm]")])
         if speeds.size == 0:
