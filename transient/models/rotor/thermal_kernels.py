@@ -27,7 +27,8 @@ import transient.solvers.integrate.bdf2 as stepper
 from transient.fv.reynolds import jacobian_kernel
 from transient.models.journal.kernels import film_force, position_derivatives, state_fields, stencil_flux
 from transient.models.rotor.content_newton import (block_fields, block_gap, node_position, rotor_force,
-                                                   rotor_from_state, rotor_jacobian, rotor_norm, rotor_to_state)
+                                                   rotor_from_state, rotor_jacobian, rotor_norm,
+                                                   rotor_rows_residual, rotor_to_state)
 from transient.models.rotor.kernels import scatter_block
 from transient.solvers.integrate.bdf2 import newton_step
 from transient.solvers.integrate.cache_guard import drop_stale_cache
@@ -71,15 +72,13 @@ def thermal_block_jacobian(u, X, Y, s, cj, local, switch, geo, fields, extras, f
 @njit(cache=True)
 def thermal_rotor_residual(t, y, yp, out, args):
     """:func:`~transient.models.rotor.content_newton.rotor_residual` with each thermal film's conductances times its
-    fluidity before its net outflow (module docstring): one pass over the films, the rotor rows as there."""
+    fluidity before its net outflow (module docstring): one pass over the films, the rotor rows its :func:`~transient.models.rotor.content_newton.rotor_rows_residual`."""
     base, fluidity, thermal, which = args
     films, rot = base
     s = rot.speed[0]
-    Q0, V0, P0 = rot.Q0, rot.V0, rot.P0
-    nq = V0 - Q0
     rotor_force(y, rot)
     frc = rot.force
-    q = y[Q0:V0]
+    q = y[rot.Q0:rot.V0]
     for b in range(len(films)):
         f = films[b]
         switch, _, geo, fields, extras, fv, work, tol, regime = f.film
@@ -101,13 +100,7 @@ def thermal_rotor_residual(t, y, yp, out, args):
             out[o + i] = area[i] * yp[o + i] + R[i] if free[i] else yp[o + i]
         for i in range(f.support.size):
             frc[f.support[i]] += f.gx[i] * fx + f.gy[i] * fy
-    for r in range(nq):  # the rotor rows of rotor_residual
-        out[Q0 + r] = yp[Q0 + r] - y[V0 + r]
-        acc = -frc[r]
-        for c in range(nq):
-            acc += rot.M[r, c] * yp[V0 + c] + (rot.Cw[r, c] + s * rot.G[r, c]) * y[V0 + c] + rot.Kw[r, c] * y[Q0 + c]
-        out[V0 + r] = acc
-    out[P0] = yp[P0] - s
+    rotor_rows_residual(y, yp, out, rot)
 
 
 @njit(cache=True)
