@@ -39,7 +39,7 @@ def test_the_converged_pi_film_meets_the_short_damper_form_less_its_finite_lengt
 @pytest.mark.slow
 def test_the_circular_orbits_upper_fold_is_the_coarse_grids():
     """On 24 x 4 cells the circular orbits fold at 6684 rpm; on 48 x 4 the upper branch runs on through 9000 rpm
-    without a fold (measured: e/c 0.865 at 7880 rpm, to 0.95 beyond 30000 rpm)."""
+    without a fold (measured: e/c 0.865 at 7880 rpm; on to 0.964 at 60000 rpm without one)."""
     def system(grid):
         d = SqueezeFilmDamper(**DAMPER, grid=grid)
         return RotorBearingSystem(Rotor(mass=MASS * np.eye(2), stiffness=np.zeros((2, 2))), {0: d},
@@ -50,3 +50,27 @@ def test_the_circular_orbits_upper_fold_is_the_coarse_grids():
     fine = system((48, 4)).circular_orbits((4000.0, 9000.0))
     assert fine.success and fine.folds_rpm.size == 0 and fine.speed_rpm[-1] > 9000.0
     assert np.all(np.diff(fine.eccentricity_ratio[:, 0]) > 0)
+
+
+@pytest.mark.slow
+def test_the_whole_systems_branch_turns_at_the_lower_fold():
+    """The whole system (16 x 2 cells, BDF2 period map) traced down from the lower branch at 6000 rpm by
+    pseudo-arclength continuation of the shooting: the path turns at the lower fold, within 2 % of the circular
+    orbits' on the same grid (4955.0 rpm), stable before it and a saddle (a real multiplier above 1) after it."""
+    from transient.models.rotor.circular_orbits import orbits_at_speed
+    from transient.models.rotor.periodic_branch import trace_branch
+
+    d = SqueezeFilmDamper(**DAMPER, grid=(16, 2))
+    s = RotorBearingSystem(Rotor(mass=MASS * np.eye(2), stiffness=np.zeros((2, 2))), {0: d},
+                           unbalance=[(0, 0.3 * MASS * C, 0.0)], gravity=0.0)
+    curve = s.circular_orbits((4000.0, 8000.0))
+    low = min(curve.folds_rpm)
+    z = orbits_at_speed(s, curve, 6000.0)[-1]
+    b = trace_branch(s, 6000.0, (3000.0, 9000.0), s.circular_orbit_state(6000.0, z), step=0.08, max_step=0.15,
+                     max_points=9, direction=-1)
+    assert b.folds_rpm.size == 1, b.message
+    assert abs(b.folds_rpm[0] / low - 1.0) < 0.02
+    i = b.fold_index[0]
+    assert np.all(b.max_multiplier[:i + 1] < 1.0)
+    after = b.multipliers[i + 2:, 0]
+    assert after.size and np.all(np.abs(after.imag) < 1e-6) and np.all(after.real > 1.0)
