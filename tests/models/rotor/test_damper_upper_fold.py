@@ -55,8 +55,10 @@ def test_the_circular_orbits_upper_fold_is_the_coarse_grids():
 @pytest.mark.slow
 def test_the_whole_systems_branch_turns_at_the_lower_fold():
     """The whole system (16 x 2 cells, BDF2 period map) traced down from the lower branch at 6000 rpm by
-    pseudo-arclength continuation of the shooting: the path turns at the lower fold, within 2 % of the circular
-    orbits' on the same grid (4955.0 rpm), stable before it and a saddle (a real multiplier above 1) after it."""
+    pseudo-arclength continuation of the shooting: the path turns at the lower fold, stable before it and a saddle
+    (a real multiplier above 1) after it, near the circular orbits' fold on the same grid. Measured: the fold at
+    5049.5 rpm against the circular orbits' 4955.0 (+1.9 %: the two films differ on 16 cells round), the dominant
+    multiplier 0.610 (e/c 0.605) before the turn and 1.182 (e/c 0.644) after it; 9 points, 105 periods."""
     from transient.models.rotor.circular_orbits import orbits_at_speed
     from transient.models.rotor.periodic_branch import trace_branch
 
@@ -69,7 +71,7 @@ def test_the_whole_systems_branch_turns_at_the_lower_fold():
     b = trace_branch(s, 6000.0, (3000.0, 9000.0), s.circular_orbit_state(6000.0, z), step=0.08, max_step=0.15,
                      max_points=9, direction=-1)
     assert b.folds_rpm.size == 1, b.message
-    assert abs(b.folds_rpm[0] / low - 1.0) < 0.02
+    assert abs(b.folds_rpm[0] / low - 1.0) < 0.03
     i = b.fold_index[0]
     assert np.all(b.max_multiplier[:i + 1] < 1.0)
     after = b.multipliers[i + 2:, 0]
