@@ -13,16 +13,20 @@ DIR/damper_upper_fold.json.
 
 from __future__ import annotations
 
+import importlib
 import sys
 import time
 from pathlib import Path
 
+import numpy as np
+
+from transient.models.rotor.circular_orbits import orbits_at_speed
+from transient.models.rotor.periodic_branch import trace_branch
+from transient.plots import damper as plots, save
+from transient.study.scenario import JsonRecord, log, parser
+
 sys.path.insert(0, str(Path(__file__).parent))
-import damper_jump as jump  # noqa: E402  (the rotor of the jump scenario)
-from transient.models.rotor.circular_orbits import orbits_at_speed  # noqa: E402
-from transient.models.rotor.periodic_branch import trace_branch  # noqa: E402
-from transient.plots import damper as plots, save  # noqa: E402
-from transient.study.scenario import JsonRecord, log, parser  # noqa: E402
+jump = importlib.import_module("damper_jump")  # the rotor of the jump scenario
 
 OUT = "damper_upper_fold"
 START_RPM = 6000.0

@@ -164,7 +164,7 @@ def _correct(maps, point, z_pred, s_pred, t_z, t_s, weight, tol):
     return None
 
 
-def continue_fixed_points(maps, z0, V, weight, direction, bounds, path: "PathSettings", orbit=None) -> tuple:
+def continue_fixed_points(maps, z0, V, weight, direction, bounds, path: PathSettings, orbit=None) -> tuple:
     """Pseudo-arclength continuation of the fixed points of ``maps.flow(z, s)`` in ``s`` from the fixed point
     ``z0`` at ``s = 1`` (module docstring), model-free: ``maps.norm(d)`` the convergence measure, ``V`` the start
     basis of the dominant subspace, ``weight`` per component of ``z`` in the arclength, ``direction`` +-1 the first
