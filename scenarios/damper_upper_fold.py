@@ -22,7 +22,8 @@ import numpy as np
 
 from transient.models.rotor.circular_orbits import orbits_at_speed
 from transient.models.rotor.periodic_branch import trace_branch
-from transient.plots import damper as plots, save
+from transient.plots import damper as plots
+from transient.plots import save
 from transient.study.scenario import JsonRecord, log, parser
 
 sys.path.insert(0, str(Path(__file__).parent))
