@@ -24,7 +24,7 @@ class FoldMap:
 
 
 def _trace():
-    path = PathSettings(step=0.05, max_step=0.2, max_points=60, tol=1e-10)
+    path = PathSettings(step=0.05, max_step=0.2, max_points=200, tol=1e-10)
     z0 = np.array([1.0, 10.0 / 99.0])
     V = np.array([[1.0], [0.0]])
     return continue_fixed_points(FoldMap(), z0, V, np.array([1.0, 0.0]), 1, (0.8, 3.0), path)

@@ -34,7 +34,7 @@ from transient.results import StatusResult, quantity, result_type
 #: relative speed step of the difference ``Phi_s``; step of the monodromy's differences [smallest clearance]
 SPEED_STEP, FD_STEP = 2e-3, 1e-3
 #: corrector iterations before the step is halved
-MAX_CORRECTOR = 8
+MAX_CORRECTOR = 10
 
 
 @result_type
@@ -97,11 +97,12 @@ class _Maps:
 
 class _Point:
     """A converged point: the reduced state ``z``, the speed ratio ``s``, the monodromy ``S`` on the basis ``V``
-    (and the next basis ``V_next`` with its monodromy ``S_next``), ``phi_s`` the map's speed derivative."""
+    (the chord of the next corrector), ``phi_s`` the map's speed derivative, and the next point's basis ``V_next``
+    (one step of subspace iteration, ``W = M V``)."""
 
-    def __init__(self, z, s, V, S, phi_s, multipliers, V_next, S_next):
+    def __init__(self, z, s, V, S, phi_s, multipliers, V_next):
         self.z, self.s, self.V, self.S, self.phi_s = z, s, V, S, phi_s
-        self.multipliers, self.V_next, self.S_next = multipliers, V_next, S_next
+        self.multipliers, self.V_next = multipliers, V_next
 
 
 def _derivatives(maps, z, s, fz, V) -> _Point:
@@ -117,9 +118,7 @@ def _derivatives(maps, z, s, fz, V) -> _Point:
     mu = mu[np.argsort(-np.abs(mu), kind="stable")]
     ds = SPEED_STEP * s
     phi_s = (maps.flow(z, s + ds) - fz) / ds
-    Vn, R = np.linalg.qr(W)
-    Sn = np.linalg.solve((Vn.T @ V).T, R.T).T  # V'^T M V' = R (V'^T V)^-1 (W = V' R)
-    return _Point(z, s, V, S, phi_s, mu, Vn, Sn)
+    return _Point(z, s, V, S, phi_s, mu, np.linalg.qr(W)[0])
 
 
 def _bordered(V, S, phi_s, weight, t_z, t_s, r, g):
@@ -157,7 +156,7 @@ def _correct(maps, point, z_pred, s_pred, t_z, t_s, weight, tol):
             return None
         r = fz - z
         g = float((weight * t_z) @ (z - z_pred) + t_s * (s - s_pred))
-        dz, ds = _bordered(point.V_next, point.S_next, point.phi_s, weight, t_z, t_s, r, g)
+        dz, ds = _bordered(point.V, point.S, point.phi_s, weight, t_z, t_s, r, g)
         if maps.norm(r) < tol and abs(ds) < tol:
             return z, s, fz, it
         z, s = z + dz, s + ds
