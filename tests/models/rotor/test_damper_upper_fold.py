@@ -58,7 +58,7 @@ def test_the_whole_systems_branch_turns_at_the_lower_fold():
     pseudo-arclength continuation of the shooting: the path turns at the lower fold, stable before it and a saddle
     (a real multiplier above 1) after it, near the circular orbits' fold on the same grid. Measured: the fold at
     5049.5 rpm against the circular orbits' 4955.0 (+1.9 %: the two films differ on 16 cells round), the dominant
-    multiplier 0.610 (e/c 0.605) before the turn and 1.182 (e/c 0.644) after it; 9 points, 105 periods."""
+    multiplier 0.610 (e/c 0.605) before the turn and 1.182 (e/c 0.644) after it; 9 points, 110 periods."""
     from transient.models.rotor.circular_orbits import orbits_at_speed
     from transient.models.rotor.periodic_branch import trace_branch
 
