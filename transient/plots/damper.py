@@ -78,3 +78,36 @@ def jump(curve, ramps: dict, floquet: list, title: str):
     axes[0].legend(fontsize=8, loc="upper left")
     suptitle(fig, title)
     return fig
+
+
+def upper_fold(curves: dict, speed_rpm, eccentricity_ratio, max_multiplier, title: str,
+               label="whole system (24x4), pseudo-arclength shooting"):
+    """The damper's folds on several grids: orbit radius against speed along each circular-orbit path (``curves``
+    label -> :class:`~transient.models.rotor.circular_orbits.CircularOrbitCurve`; one colour per grid, solid
+    forwards in speed, dashed where the path runs back, its folds marked) with the whole system's periodic orbits
+    (``speed_rpm``, ``eccentricity_ratio``; filled where the dominant Floquet multiplier ``max_multiplier`` is
+    inside the unit circle; ``label`` names them), and that multiplier against speed."""
+    fig, (ax, bx) = figure(1, 2, size=(13.0, 5.0))
+    colours = {}
+    for name, c in curves.items():
+        grid = name.split(" from ")[0]
+        colour = colours.setdefault(grid, f"C{len(colours)}")
+        n, y, back = c.speed_rpm, c.eccentricity_ratio[:, 0], c.backward
+        for mask, style in ((~back, "-"), (back, "--")):
+            ax.plot(n, np.where(mask | np.roll(mask, 1) | np.roll(mask, -1), y, np.nan), style, color=colour, lw=1.2,
+                    label=grid if mask is not back and name.endswith("4000 rpm") else None)
+        for f, e in zip(c.folds_rpm, c.fold_eccentricity):
+            ax.plot(f, e, "x", color=colour, ms=8)
+    stable = np.asarray(max_multiplier) < 1.0
+    ax.plot(speed_rpm, eccentricity_ratio, "o-", color="k", ms=5, lw=0.8, mfc="none",
+            label=label)
+    ax.plot(np.asarray(speed_rpm)[stable], np.asarray(eccentricity_ratio)[stable], "o", color="k", ms=5)
+    ax.set(xlabel="speed [rpm]", ylabel="orbit radius / clearance  e/c [-]")
+    ax.legend(fontsize=8, loc="lower right")
+    bx.plot(speed_rpm, max_multiplier, "o-", color="k", ms=5)
+    bx.axhline(1.0, color="r", lw=0.8, ls=":")
+    bx.set(xlabel="speed [rpm]", ylabel="whole system: dominant Floquet multiplier |mu| [-]")
+    for a in (ax, bx):
+        a.grid(True, lw=0.3)
+    suptitle(fig, title)
+    return fig
