@@ -385,8 +385,8 @@ class ThrustBallBearing:
             floor = 0.0 if track_.kind == "front" else 1e-9
         films = NumericalFilms(self, c, ff.speed, self.contact_grid) if self.contact == "numerical" else None
         film = formula_film(ff, c) if films is None else numerical_film(films)
-        pm = PassMap(track_, film, films, ff.m_c, a_p, h_ref, floor, (ridge_fraction, w_r / a_p), t_b / T, ig,
-                     periodic_tol, stop_at_periodic, x_out if record_profiles else None, lambda: _Meniscus(c))
+        pm = PassMap(track_, film, films, ff.m_c, (a_p, h_ref), floor, (ridge_fraction, w_r / a_p), t_b / T, ig,
+                     (periodic_tol, stop_at_periodic), x_out if record_profiles else None, lambda: _Meniscus(c))
         wall0 = time.perf_counter()
         t0, y0 = start_point(start, BallSequence)
         if y0 is None:

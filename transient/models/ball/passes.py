@@ -9,11 +9,11 @@ The state (:class:`PassState`) before pass ``n``:
   film, meniscus ``m``, regime, the oil on the half track, the outlet film of the previous pass;
 * the bookkeeping of the sequence: passes in a row within ``periodic_tol`` (``calm``), the pass where a periodic
   state was found, the meniscus root it was found from (:class:`~transient.models.ball.bearing._Meniscus` starts
-  its Newton there), the counts of the front mesh's redesigns and freezes;
+  its Newton there; 0: none), the counts of the front mesh's redesigns and freezes;
 * the scales the track is in (``a'`` [m], ``h_inf`` [m]: a start from a result under other scales is refused);
 * the track: a uniform grid's films, or the front mesh's contents with what rebuilds the mesh -- the precursor it
   was designed for (:meth:`~transient.models.ball.track.FrontTrack._mesh_for`), the front position it was
-  redesigned at (``NaN``: not redesigned) and the front ``s`` -- padded to the capacity of the finest mesh the
+  redesigned at (0: not redesigned) and the front ``s`` -- padded to the capacity of the finest mesh the
   precursor can ask for (:func:`front_capacity`).
 
 One step of the map (:meth:`PassMap.advance`): the ball pass (the outlet film on the band, the ridges), the
@@ -24,7 +24,6 @@ resumed from a checkpoint repeats the uninterrupted one bit for bit.
 
 from __future__ import annotations
 
-import math
 import time
 
 import numpy as np
@@ -67,17 +66,18 @@ class PassMap:
 
     ``film(h_in, n, meniscus) -> (h_c, h_min, m)`` [m, m, -] the film of pass ``n`` at the inlet film ``h_in``
     [m] (raises :class:`LayerTooThin` to end the sequence), ``films`` the numerical contact's cache holder or
-    ``None``; ``m_c`` the critical meniscus; the scales ``a_p`` [m] and ``h_ref`` [m]; ``floor`` [m] the least
+    ``None``; ``m_c`` the critical meniscus; ``scales`` = ``(a_p [m], h_ref [m])``; ``floor`` [m] the least
     outlet film; ``ridge`` = ``(fraction, width [a'])``; ``tb_hat`` the time between balls in levelling times;
-    ``integration`` the levelling's settings; ``periodic_tol``, ``stop_at_periodic``: the periodic state (module
-    docstring of :mod:`transient.models.ball.bearing`); ``x_out`` [a'] where profiles are sampled."""
+    ``integration`` the levelling's settings; ``periodic`` = ``(periodic_tol, stop_at_periodic)``: the periodic
+    state (module docstring of :mod:`transient.models.ball.bearing`); ``x_out`` [a'] where profiles are sampled
+    (``None``: none); ``meniscus()`` a new meniscus solver."""
 
-    def __init__(self, track, film, films, m_c, a_p, h_ref, floor, ridge, tb_hat, integration, periodic_tol,
-                 stop_at_periodic, x_out, meniscus):
+    def __init__(self, track, film, films, m_c, scales, floor, ridge, tb_hat, integration, periodic, x_out,
+                 meniscus):
         self.track, self.film, self.films, self.m_c = track, film, films, m_c
-        self.a_p, self.h_ref, self.floor = a_p, h_ref, floor
+        (self.a_p, self.h_ref), self.floor = scales, floor
         self.ridge, self.tb_hat, self.ig = ridge, tb_hat, integration
-        self.periodic_tol, self.stop_at_periodic, self.x_out = periodic_tol, stop_at_periodic, x_out
+        (self.periodic_tol, self.stop_at_periodic), self.x_out = periodic, x_out
         self.new_meniscus = meniscus
         self.front = track.kind == "front"
         self.capacity = front_capacity(track) if self.front else track.grid.n
@@ -92,7 +92,6 @@ class PassMap:
         """The state before the first pass: the started track and the row of pass 0."""
         head = np.zeros(len(HEADER))
         head[_I["n_periodic"]] = -1.0
-        head[_I["meniscus"]] = math.nan
         head[_I["a_p"]], head[_I["h_ref"]] = self.a_p, self.h_ref
         meniscus = self.new_meniscus()
         self._row(head, 0, meniscus)
@@ -115,7 +114,7 @@ class PassMap:
         return y
 
     def _encode(self, head, meniscus) -> np.ndarray:
-        head[_I["meniscus"]] = math.nan if meniscus.last is None else meniscus.last
+        head[_I["meniscus"]] = 0.0 if meniscus.last is None else meniscus.last
         tr = self.track
         if not self.front:
             return np.concatenate([head, tr.h])
@@ -123,7 +122,7 @@ class PassMap:
         if n > self.capacity:
             raise RuntimeError(f"the front mesh has {n} cells, more than the state holds ({self.capacity}): "
                                f"precursor {self.eps:.3g} h_inf")
-        design = math.nan if tr.mesh is self._base(self.eps) else tr.mesh.s0
+        design = 0.0 if tr.mesh.s0 == 1.0 else tr.mesh.s0   # a redesign is at a front below 1/3
         out = np.zeros(self.size)
         out[:len(HEADER)] = head
         out[len(HEADER):len(HEADER) + 4] = (self.eps, design, tr.s, n)
@@ -144,7 +143,7 @@ class PassMap:
         if not (eps > 0 and n == int(n) and 1 <= n <= self.capacity):
             raise ValueError(f"start: not a front track's state (precursor {eps!r}, {n!r} cells)")
         base = self._base(float(eps))
-        if math.isnan(design):
+        if design == 0.0:
             mesh = base
         else:
             key = (float(eps), float(design))
@@ -196,7 +195,7 @@ class PassMap:
         wall0 = time.perf_counter()
         head = self._decode(y)
         meniscus = self.new_meniscus()
-        meniscus.last = None if math.isnan(head[_I["meniscus"]]) else float(head[_I["meniscus"]])
+        meniscus.last = float(head[_I["meniscus"]]) or None
         if self.films is not None:
             self.films.cache.clear()
         counts = {"n_steps": 0, "n_rhs": 0, "n_jac": 0}
