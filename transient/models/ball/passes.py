@@ -25,6 +25,7 @@ resumed from a checkpoint repeats the uninterrupted one bit for bit.
 from __future__ import annotations
 
 import time
+from functools import lru_cache
 
 import numpy as np
 
@@ -48,16 +49,35 @@ SERIES = ("h_in", "h_c", "h_min", "m", "regime", "volume")
 def front_capacity(track) -> int:
     """The most cells a front mesh of ``track`` (:class:`~transient.models.ball.track.FrontTrack`) can have: the
     mesh for the thinnest precursor that still gives increasing faces (the cluster grows as the log of the
-    precursor), redesigned at front positions down to a twentieth of the band, with a margin of 16 cells."""
-    most, eps = 0, 0.1
-    while eps > 1e-300:
+    precursor: found by bisection in its logarithm), redesigned at front positions down to a twentieth of the
+    band, with a margin of 5 % and 16 cells."""
+    return _capacity(track.X, track.refine, tuple(sorted(track.mesh_options.items())))
+
+
+@lru_cache(maxsize=64)
+def _capacity(length, refine, options) -> int:
+    def mesh(log_eps):
         try:
-            base = FrontMesh(track.X, min(0.5 * eps, 0.05), refine=track.refine, **track.mesh_options)
-            most = max(most, base.n, *(base.redesign(s).n for s in (0.9, 0.6, 0.3, 0.1, 0.05)))
+            return FrontMesh(length, min(0.5 * 10.0 ** log_eps, 0.05), refine=refine, **dict(options))
         except ValueError:
-            break
-        eps *= 0.1
-    return most + 16
+            return None
+
+    ok, bad = -1.0, -300.0
+    finest = mesh(ok)
+    for _ in range(24):
+        mid = 0.5 * (ok + bad)
+        m = mesh(mid)
+        if m is None:
+            bad = mid
+        else:
+            ok, finest = mid, m
+    most = finest.n
+    for s0 in (0.9, 0.6, 0.3, 0.1, 0.05):
+        try:
+            most = max(most, finest.redesign(s0).n)
+        except ValueError:
+            pass
+    return int(1.05 * most) + 16
 
 
 class PassMap:
