@@ -27,9 +27,9 @@ def _same(a, b):
 @pytest.mark.parametrize("track", [TrackSettings(), TrackSettings(grid="uniform", n_cells=60, mobility_film=10e-6)],
                          ids=["front", "uniform"])
 def test_a_sequence_killed_after_k_passes_resumes_to_the_uninterrupted_final_state(tmp_path, monkeypatch, track):
-    """Ctrl-C during the levelling after pass 5 of 9; resumed from its checkpoint, the sequence ends on the same
+    """Ctrl-C during the levelling after pass 3 of 7; resumed from its checkpoint, the sequence ends on the same
     state, rows and step counts, bit for bit, as the same sequence run without interruption (compared here)."""
-    kw = dict(CASE, n_passes=9, track=track, **FAST)
+    kw = dict(CASE, n_passes=7, track=track, **FAST)
     whole = ThrustBallBearing().sequence(**kw, long_run=LongRun(checkpoint=tmp_path / "whole.npz"))
     target = FrontTrack if track.grid == "front" else UniformTrack
     relax = target.relax
@@ -37,17 +37,17 @@ def test_a_sequence_killed_after_k_passes_resumes_to_the_uninterrupted_final_sta
 
     def interrupted(self, *a, **k):
         calls.append(1)
-        if len(calls) == 6:
+        if len(calls) == 4:
             raise KeyboardInterrupt
         return relax(self, *a, **k)
 
     path = tmp_path / "killed.npz"
     monkeypatch.setattr(target, "relax", interrupted)
-    with pytest.raises(Interrupted, match="holds 5 passes"):
+    with pytest.raises(Interrupted, match="holds 3 passes"):
         ThrustBallBearing().sequence(**kw, long_run=LongRun(checkpoint=path))
     monkeypatch.setattr(target, "relax", relax)
     resumed = ThrustBallBearing().sequence(**kw, long_run=LongRun(checkpoint=path, resume=True))
-    assert resumed.success and resumed.n_run == 9
+    assert resumed.success and resumed.n_run == 7
     _same(resumed, whole)
 
 
@@ -112,3 +112,17 @@ def test_a_periodic_sequence_ends_as_a_success_with_its_pass():
 def test_long_run_chunks_are_refused_by_name():
     with pytest.raises(ValueError, match="chunk_revolutions"):
         ThrustBallBearing().sequence(**CASE, n_passes=2, long_run=LongRun(chunk_revolutions=2.0))
+
+
+def test_stop_ends_a_checkpointed_sequence_after_a_chunk(tmp_path):
+    """``LongRun(stop=)`` is asked after each chunk (a tenth of the passes with a checkpoint) with the result so
+    far."""
+    seen = []
+
+    def stop(result):
+        seen.append(result.n_run)
+        return "enough" if result.n_run >= 3 else None
+
+    s = ThrustBallBearing().sequence(**CASE, n_passes=11, **FAST,
+                                     long_run=LongRun(checkpoint=tmp_path / "s.npz", stop=stop))
+    assert seen == [2, 3] and s.n_run == 3 and s.message == "enough"
