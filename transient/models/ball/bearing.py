@@ -57,8 +57,8 @@ from transient.units import rpm_to_rad_s
 
 FLOODED, STARVED, PARCHED = REGIMES
 OWNER = "ThrustBallBearing.sequence"
-#: how the driver says a run ended as planned (the result's message is then empty)
-_NORMAL_END = ("reached the final time",)
+#: how the run driver says a run reached its last output (the sequence's message is then empty)
+_NORMAL_END = "reached the final time"
 #: the film of a pass: Hamrock-Dowson with the 0.29 starvation law, or the numerical starved point contact
 CONTACTS = ("formula", "numerical")
 #: The loose keywords of :meth:`ThrustBallBearing.sequence` of earlier releases and the settings field each now is.
@@ -408,18 +408,19 @@ class ThrustBallBearing:
                          journals=lambda y: [], eccentricities=lambda r: [],
                          touch_message=lambda tau, y: f"periodic steady state at pass {int(tau)}",
                          result=lambda rec, stats, touched, message, tau: self._sequence_result(
-                             pm, rec, stats, message, ff, c, t_b, x_out * a_p, wall0),
+                             pm, rec, stats, "" if touched is not None else message, ff, c, t_b, x_out * a_p, wall0),
                          key=key, status=lambda: "", advance=pm.advance, event_success=True)
         if n_passes == 1:   # the start's own pass: nothing to integrate
             rec = Recorder(pm.sample, 1.0, series)
             pm.advance(y0, np.array([t0]), rec.observe, None)
             rec.last_y = y0
-            return self._sequence_result(pm, rec, Stats(), "reached the final time", ff, c, t_b, x_out * a_p, wall0)
+            return self._sequence_result(pm, rec, Stats(), "", ff, c, t_b, x_out * a_p, wall0)
         run = ModelRun.at_times(n_passes - 1, lr)
         return run.go(parts, y0, t0, t0 + np.arange(n_passes, dtype=float))
 
     def _sequence_result(self, pm, rec, stats, message, ff, c, t_b, x, wall0) -> BallSequence:
-        """The result of a sequence from its recorder (:class:`~transient.solvers.model_run.RunParts`)."""
+        """The result of a sequence from its recorder (:class:`~transient.solvers.model_run.RunParts`); ``message``
+        the run's (empty for a sequence that reached its last pass or its periodic state)."""
         a = rec.arrays()
         y = rec.last_y
         n_run = len(a["t"])
@@ -440,8 +441,7 @@ class ThrustBallBearing:
                             n_periodic=int(PassMap.header(y, "n_periodic")), declining=declining, final_regime=final,
                             stats=st, x=x, profiles=np.array(a["profile"]) if "profile" in a else None,
                             volume=a["volume"], final_state=np.array(y), final_time=float(a["t"][-1]),
-                            success=ok, message=pm.stopped if pm.stopped else ("" if message in _NORMAL_END
-                                                                               or "periodic" in message else message))
+                            success=ok, message=pm.stopped or ("" if message == _NORMAL_END else message))
 
 
 def sequence_memory(n_passes: int, nodes: int, profiles: bool) -> dict:
