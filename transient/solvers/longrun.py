@@ -133,7 +133,9 @@ def run_long(problem_at: Callable, y0, t0: float, dt_out, n_outputs: int, record
 
     ``solver``: the keywords of :func:`~transient.solvers.integrate.solve` for every chunk (``method``,
     ``rtol``, ``atol``, ``steps``, ``linear_solver``, ``options``; ``method`` is required, ``rk4`` needs
-    ``steps=Steps(dt=...)``). ``long_run`` (:class:`~transient.solvers.settings.LongRun`): the checkpoint and
+    ``steps=Steps(dt=...)``); a model whose run is a map between its output times (the ball-pass sequence) hands
+    ``advance(y, times, observer, time_budget) -> Solution`` in it instead (``problem_at`` unused): the chunk from
+    ``y`` over ``times``, each output handed to ``observer(t, y)``, a terminal event in ``t_events``/``y_events``. ``long_run`` (:class:`~transient.solvers.settings.LongRun`): the checkpoint and
     ``resume``, the progress bar (``progress``), ``stop(recorder) -> str | None`` and ``time_budget`` [s of wall
     time] for the whole run (all chunks: past it the run ends with ``success=False`` and the outputs so far); its
     ``chunk_revolutions`` is the model's, which hands ``chunk_outputs`` (output intervals per chunk; default:
@@ -149,6 +151,8 @@ def run_long(problem_at: Callable, y0, t0: float, dt_out, n_outputs: int, record
         solver = dict(solver, steps=given["steps"])
     if "method" not in solver:
         raise ValueError(f"solver = {solver!r}: the method is required; allowed: solver=dict(method=..., ...)")
+    solver = dict(solver)
+    advance = solver.pop("advance", None)
     method = solver["method"]
     checkpoint, resume, progress = long_run.checkpoint, long_run.resume, long_run.progress
     stop, time_budget, status = long_run.stop, long_run.time_budget, display.status
@@ -186,8 +190,11 @@ def run_long(problem_at: Callable, y0, t0: float, dt_out, n_outputs: int, record
                 k_end = min(n_outputs, k + chunk_outputs)
                 tau = times[k:k_end + 1]
                 remaining = None if time_budget is None else max(deadline - time.perf_counter(), 1e-9)
-                res = solve(problem_at(y, tau[0]), tau, **solver, store=False, observer=_Last(recorder, out),
-                            time_budget=remaining)
+                if advance is None:
+                    res = solve(problem_at(y, tau[0]), tau, **solver, store=False, observer=_Last(recorder, out),
+                                time_budget=remaining)
+                else:
+                    res = advance(y, tau, _Last(recorder, out), remaining)
                 _accumulate(stats, res.stats)
                 if not res.success:
                     out.success = False

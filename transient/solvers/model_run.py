@@ -163,7 +163,10 @@ class RunParts:
     model's result (its ``final_state`` is ``recorder.last_y``); ``to_run``/``universal``: the maps between the
     results' layout and the run's (``None``: the same). ``unit`` names ``revolution`` in the bar and messages (a
     model without a shaft: ``unit="s"``, ``revolution=1``); ``status()`` the bar's short status (``None``: each
-    journal's e/C); ``carry`` the model's own state a checkpoint keeps beside the integrator's (:class:`Recorder`)."""
+    journal's e/C); ``carry`` the model's own state a checkpoint keeps beside the integrator's (:class:`Recorder`).
+    A model whose run is a map between output times hands ``advance`` (the ``advance`` of
+    :func:`~transient.solvers.longrun.run_long`'s ``solver``) and no problem; ``event_success``: its terminal event
+    ends the run as planned (the ball sequence's periodic state), not as a failure."""
 
     label: str
     omega: float
@@ -183,6 +186,8 @@ class RunParts:
     unit: str = "rev"
     status: Callable | None = None
     carry: object | None = None
+    advance: Callable | None = None
+    event_success: bool = False
 
 
 class ModelRun:
@@ -243,13 +248,14 @@ class ModelRun:
                    start_time=tau0 / parts.omega,
                    start_state=hashlib.sha256(np.ascontiguousarray(y).tobytes()).hexdigest()[:16])
         status = parts.status or (lambda: "e/C = " + ", ".join(f"{e:.4f}" for _, e, _ in parts.journals(rec.last_y)))
+        solver = parts.solver if parts.advance is None else dict(parts.solver, advance=parts.advance)
         out = run_long(parts.problem_at, y if parts.to_run is None else parts.to_run(y), tau0, dt_out,
-                       self.n_outputs, rec, solver=parts.solver, long_run=lr, chunk_outputs=self.chunk_outputs,
+                       self.n_outputs, rec, solver=solver, long_run=lr, chunk_outputs=self.chunk_outputs,
                        key=key, display=Display(parts.label, (parts.unit, parts.revolution), status))
         touched, message, success = None, out.message, out.success
         if out.event is not None:
             touched = out.event[0] / parts.omega
-            message, success = parts.touch_message(*out.event), False
+            message, success = parts.touch_message(*out.event), parts.event_success
         # the driver's last state, also when a finished checkpoint is resumed and nothing was left to run
         rec.last_y = np.array(out.y) if parts.universal is None else parts.universal(out.y)
         r = parts.result(rec, out.stats, touched, message, out.t)

@@ -35,7 +35,7 @@ from __future__ import annotations
 
 import math
 import time
-from dataclasses import astuple, dataclass, field, replace
+from dataclasses import asdict, astuple, dataclass, field, replace
 
 import numpy as np
 
@@ -43,16 +43,22 @@ from transient.physics import film_formulas as hd
 from transient.physics.hertz import (HertzContact, gap_rolling_axis, gap_rolling_axis_slope, hertz_contact,
                                      meniscus_position, reduced_modulus)
 from transient.models.ball.numerical_film import LayerTooThin, NumericalFilms
+from transient.models.ball.passes import REGIMES, SERIES, PassMap, formula_film, numerical_film
 from transient.models.ball.track import FrontTrack, UniformTrack
-from transient.checks import check_choice, check_int, check_memory, check_range
+from transient.checks import check_bool, check_choice, check_instance, check_int, check_range
 from transient.results import StatusResult, quantity, record_type, result_type
-from transient.solvers.integrate import check_method
+from transient.solvers.integrate import Stats, check_method
 from transient.models.ball.settings import TrackSettings
 from transient.solvers.legacy import flat_settings
-from transient.solvers.settings import Integration, Recording, keyword_table, requested_method, run_settings
+from transient.solvers.model_run import ModelRun, Recorder, RunParts, check_run_memory, start_point
+from transient.solvers.settings import (Integration, LongRun, Recording, check_unused, keyword_table,
+                                        requested_method, run_settings)
 from transient.units import rpm_to_rad_s
 
-FLOODED, STARVED, PARCHED = "fully flooded", "starved", "parched"
+FLOODED, STARVED, PARCHED = REGIMES
+OWNER = "ThrustBallBearing.sequence"
+#: how the run driver says a run reached its last output (the sequence's message is then empty)
+_NORMAL_END = "reached the final time"
 #: the film of a pass: Hamrock-Dowson with the 0.29 starvation law, or the numerical starved point contact
 CONTACTS = ("formula", "numerical")
 #: The loose keywords of :meth:`ThrustBallBearing.sequence` of earlier releases and the settings field each now is.
@@ -122,6 +128,11 @@ class BallSequence(StatusResult):
     x: np.ndarray | None = quantity("m", None)
     profiles: np.ndarray | None = quantity("m", None)
     volume: np.ndarray | None = quantity("m^2", None)
+    final_state: np.ndarray | None = None
+    final_time: float = quantity("-", 0.0)
+
+    #: the run's state is for continuing it (``sequence(start=result)``), not a study's number
+    record_skip = ("final_state",)
 
     @property
     def n_run(self) -> int:
@@ -262,10 +273,10 @@ class ThrustBallBearing:
                            m_star=hd.critical_meniscus_minimum(Hm, c.rx, c.b), speed=u)
 
     # the sequence ---------------------------------------------------------------------------------
-    def sequence(self, load: float, speed_rpm: float, ambient_film: float, n_passes: int = 200, *,
+    def sequence(self, load: float, speed_rpm: float, ambient_film: float, n_passes: int = 200, *, start=None,
                  track: TrackSettings | None = None, periodic_tol: float = 1e-4, stop_at_periodic: bool = True,
                  integration: Integration | None = None, recording: Recording | None = None,
-                 **legacy) -> BallSequence:
+                 long_run: LongRun | None = None, **legacy) -> BallSequence:
         """Inlet and central film ball after ball (module docstring).
 
         Parameters
@@ -299,8 +310,16 @@ class ThrustBallBearing:
             ``rk4``, ``linear_solver``); default ``Integration(method="cvode", atol=1e-10)``.
         recording : ``Recording(record=("profiles",))`` keeps the film profile across the track before every
             pass (``BallSequence.profiles``); default: none.
-        periodic_tol : relative change of ``h_inf`` over 3 passes that counts as periodic; stop_at_periodic: end
-            the sequence there.
+        periodic_tol : relative change of ``h_inf`` over 3 passes that counts as periodic, in [0, 1];
+            stop_at_periodic: end the sequence there.
+        start : a previous :class:`BallSequence` (same load, ambient film and track settings): the sequence goes
+            on from its last pass (the first pass of the new one), e.g. at another speed; ``None``: a uniform
+            ambient film before the first ball.
+        long_run : :class:`~transient.solvers.settings.LongRun`: ``checkpoint`` (an ``.npz`` rewritten after each
+            tenth of the passes; ``resume=True`` continues from it bit for bit), ``progress``,
+            ``stop(result_so_far)``, ``time_budget`` [s] (checked between passes). Ctrl-C says where the
+            checkpoint is. The run is the one run driver's (:mod:`transient.solvers.model_run`) over the passes,
+            its state the track and the row of the next pass (:mod:`transient.models.ball.passes`).
 
         The track and integration settings as loose keywords (``grid="uniform"``, ``rtol=1e-7``,
         ``record_profiles=True``) are deprecated: they still work for one release, with a ``DeprecationWarning``
@@ -311,20 +330,23 @@ class ThrustBallBearing:
         sequence before that pass: ``success=False``, ``final_regime`` parched, ``message`` naming the pass and
         the inlet film.
         """
-        check_method("ThrustBallBearing.sequence", requested_method(integration, legacy, "cvode"))
-        tr, ig, rc = run_settings("ThrustBallBearing.sequence", legacy, SEQUENCE_KEYWORDS, SEQUENCE_DEFAULTS,
+        check_method(OWNER, requested_method(integration, legacy, "cvode"))
+        tr, ig, rc = run_settings(OWNER, legacy, SEQUENCE_KEYWORDS, SEQUENCE_DEFAULTS,
                                   track=track, integration=integration, recording=recording).values()
-        check_method("ThrustBallBearing.sequence", ig.method)
+        lr = LongRun() if long_run is None else check_instance("long_run", long_run, LongRun, "None or LongRun(...)")
+        check_method(OWNER, ig.method)
+        check_unused(OWNER, "long_run", lr, ("chunk_revolutions",))
         rc.check_names(("profiles",))
         record_profiles = "profiles" in rc.record
         replenishment, grid, n_cells, refine, reservoir_distance, bc, ridge_fraction, ridge_width, precursor_film, \
             mobility_film, front_level, front_tau, edge_width = astuple(tr)
         n_passes = check_int("n_passes", n_passes, "-", 1, 1e9)
+        periodic_tol = check_range("periodic_tol", periodic_tol, "-", 0.0, 1.0)
+        stop_at_periodic = check_bool("stop_at_periodic", stop_at_periodic)
         nodes = 401 if grid == "front" else n_cells
-        check_memory(f"this sequence ({n_passes} passes on {nodes} nodes)",
-                     dict(series=8.0 * 8 * n_passes + 60.0 * n_passes,
-                          profiles=8.0 * nodes * n_passes * bool(record_profiles), track=200.0 * 8 * nodes),
-                     "lower n_passes or n_cells, or leave out recording=Recording(record=(\"profiles\",))")
+        check_run_memory(f"this sequence ({n_passes} passes on {nodes} nodes)", sequence_memory(n_passes, nodes,
+                         record_profiles), "use fewer cells (n_cells, refine)",
+                         "lower n_passes, or leave out recording=Recording(record=(\"profiles\",))")
         c = self.hertz(load)
         ff = self.flooded_film(load, speed_rpm)
         check_range("ambient_film", ambient_film, "m", ff.h_c, 1e-2, low_open=False, high_open=True,
@@ -346,103 +368,85 @@ class ThrustBallBearing:
         check_range("edge_width", ew, "m", 0.0, 0.5 * a_p, why="(the wall of the depression, at most a'/2)")
         h_ref = ambient_film
         T = 3.0 * self.viscosity * a_p ** 4 / (self.surface_tension * h_ref ** 3)  # levelling time [s]
-        tb_hat = t_b / T
         if replenishment == "thin_film" and grid == "front":
-            track = FrontTrack(X / a_p, bc, refine=refine, level=front_level, tau=front_tau,
-                               mobility_film=mobility_film / h_ref, edge=ew / a_p)
+            track_ = FrontTrack(X / a_p, bc, refine=refine, level=front_level, tau=front_tau,
+                                mobility_film=mobility_film / h_ref, edge=ew / a_p)
         else:
-            track = UniformTrack(n_cells, X / a_p, bc, replenishment=replenishment,
-                                 mobility_film=mobility_film / h_ref)
+            track_ = UniformTrack(n_cells, X / a_p, bc, replenishment=replenishment,
+                                  mobility_film=mobility_film / h_ref)
             if replenishment != "thin_film":
-                track.chiu_decay = UniformTrack.chiu_decay_factors(track.grid, a_p, h_ref, self.surface_tension,
-                                                                   self.viscosity, t_b, replenishment == "chiu_thin")
-        track.start(1.0)
-        x_out = np.linspace(0.0, X / a_p, 401) if track.kind == "front" else track.grid.x
-
-        n_max = int(n_passes)
-        h_in = np.empty(n_max)
-        h_cen = np.empty(n_max)
-        h_mn = np.empty(n_max)
-        h_outs = np.empty(n_max)
-        ms = np.empty(n_max)
-        vol = np.empty(n_max)
-        regime = []
-        profiles = [] if record_profiles else None
-        st = {"n_steps": 0, "n_rhs": 0, "n_jac": 0, "n_freeze": 0, "wall_time": 0.0, "integrate_time": 0.0}
-        wall0 = time.perf_counter()
-        periodic, n_per, calm = False, -1, 0
-        stopped = ""
-        h_out_prev = 0.0
-        n_run = n_max
+                track_.chiu_decay = UniformTrack.chiu_decay_factors(track_.grid, a_p, h_ref, self.surface_tension,
+                                                                    self.viscosity, t_b, replenishment == "chiu_thin")
+        track_.start(1.0)
+        x_out = np.linspace(0.0, X / a_p, 401) if track_.kind == "front" else track_.grid.x
         if precursor_film is not None:
             floor = precursor_film
         else:  # the front mesh needs no floor; the uniform grid's floor mobility can drain a cell below zero
-            floor = 0.0 if track.kind == "front" else 1e-9
-        meniscus = _Meniscus(c)
+            floor = 0.0 if track_.kind == "front" else 1e-9
         films = NumericalFilms(self, c, ff.speed, self.contact_grid) if self.contact == "numerical" else None
-        for n in range(n_max):
-            if record_profiles:
-                profiles.append(track.profile(x_out) * h_ref)
-            vol[n] = track.volume() * h_ref * a_p
-            hin = track.inlet() * h_ref
-            m = meniscus(hin)
-            if films is None:
-                hc = hd.starved_central_film(ff.H_c, m, ff.m_c) * c.rx
-                hm = hd.starved_minimum_film(ff.H_min, m, ff.m_star) * c.rx
-            else:
-                try:
-                    hc, hm = films(hin, n)
-                except LayerTooThin as e:
-                    n_run, stopped = n, f"stopped: {e}"
-                    break
-            h_in[n], h_cen[n], h_mn[n], ms[n] = hin, hc, hm, m
-            if m >= ff.m_c:
-                regime.append(FLOODED)
-            elif (hin - h_out_prev if n > 0 else hin) >= hc:
-                regime.append(STARVED)
-            else:
-                regime.append(PARCHED)
-            # periodic steady state
-            if n > 0 and abs(h_in[n] - h_in[n - 1]) <= periodic_tol * max(h_in[n], 1e-300):
-                calm += 1
-            else:
-                calm = 0
-            if calm >= 3 and not periodic:
-                periodic, n_per = True, n
-                if stop_at_periodic:
-                    n_run = n + 1
-                    break
-            # ball pass: the track keeps h_out, the displaced oil goes into side ridges
-            h_out = max(0.5 * hc, floor)
-            if not h_out > 0:
-                raise RuntimeError(f"pass {n}: the contact left no film (h_in = {hin:.3g} m); the precursor must be > 0")
-            h_outs[n] = h_out
-            h_out_prev = h_out
-            track.ball_pass(h_out / h_ref, ridge_fraction, w_r / a_p)
-            # replenishment until the next ball
-            if n == n_max - 1:
-                break
-            t0 = time.perf_counter()
+        film = formula_film(ff, c) if films is None else numerical_film(films)
+        pm = PassMap(track_, film, films, ff.m_c, (a_p, h_ref), floor, (ridge_fraction, w_r / a_p), t_b / T, ig,
+                     (periodic_tol, stop_at_periodic), x_out if record_profiles else None, lambda: _Meniscus(c))
+        wall0 = time.perf_counter()
+        t0, y0 = start_point(start, BallSequence)
+        if y0 is None:
             try:
-                track.relax(tb_hat, st, method=ig.method, rtol=ig.rtol, atol=ig.atol, linear_solver=ig.linear_solver,
-                            dt=ig.dt)
-            except RuntimeError as e:
-                raise RuntimeError(f"levelling after pass {n}: {e}") from None
-            st["integrate_time"] += time.perf_counter() - t0
-        st["wall_time"] = time.perf_counter() - wall0
-        sl = slice(0, n_run)
-        h_outs[n_run - 1] = max(0.5 * h_cen[n_run - 1], floor)
+                y0 = pm.first()
+            except LayerTooThin as e:
+                raise ValueError(f"ambient_film = {ambient_film!r} m: {e}") from None
+        else:
+            y0 = pm.restart(ModelRun.check_state(y0, y0.size, "sequence", lambda y: []))
+            if t0 != int(t0) or t0 < 0:
+                raise ValueError(f"start: a final time of {t0!r} passes; allowed: a whole number of passes >= 0")
+        key = dict(asdict(self), load=load, speed_rpm=speed_rpm, ambient_film=ambient_film, track=asdict(tr),
+                   **ig.key(), dt=ig.dt, linear_solver=ig.linear_solver, record=list(rc.record),
+                   periodic_tol=periodic_tol, stop_at_periodic=stop_at_periodic)
+        solver = dict(method=ig.method)
+        series = SERIES + (("profile",) if record_profiles else ())
+        parts = RunParts(label=f"ball sequence {load:g} N, {speed_rpm:g} rpm", omega=1.0, revolution=1.0,
+                         unit="passes", problem_at=None, solver=solver, series=series, sample=pm.sample,
+                         journals=lambda y: [], eccentricities=lambda r: [],
+                         touch_message=lambda tau, y: f"periodic steady state at pass {int(tau)}",
+                         result=lambda rec, stats, touched, message, tau: self._sequence_result(
+                             pm, rec, stats, "" if touched is not None else message, ff, c, t_b, x_out * a_p, wall0),
+                         key=key, status=lambda: "", advance=pm.advance, event_success=True)
+        if n_passes == 1:   # the start's own pass: nothing to integrate
+            rec = Recorder(pm.sample, 1.0, series)
+            pm.advance(y0, np.array([t0]), rec.observe, None)
+            rec.last_y = y0
+            return self._sequence_result(pm, rec, Stats(), "", ff, c, t_b, x_out * a_p, wall0)
+        run = ModelRun.at_times(n_passes - 1, lr)
+        return run.go(parts, y0, t0, t0 + np.arange(n_passes, dtype=float))
+
+    def _sequence_result(self, pm, rec, stats, message, ff, c, t_b, x, wall0) -> BallSequence:
+        """The result of a sequence from its recorder (:class:`~transient.solvers.model_run.RunParts`); ``message``
+        the run's (empty for a sequence that reached its last pass or its periodic state)."""
+        a = rec.arrays()
+        y = rec.last_y
+        n_run = len(a["t"])
+        h_in, h_cen, ms = a["h_in"], a["h_c"], a["m"]
+        regime = [REGIMES[int(r)] for r in a["regime"]]
+        h_out = np.maximum(0.5 * h_cen, pm.floor)
+        periodic = PassMap.header(y, "periodic") == 1.0
         declining = False
         if not periodic and n_run >= 6:
-            tail = h_in[n_run - 6:n_run]
-            declining = bool(np.all(np.diff(tail) < 0) and ms[n_run - 1] < ff.m_c)
-        if declining or stopped:
-            final = PARCHED
-        else:
-            final = regime[n_run - 1]
-        return BallSequence(h_inlet=h_in[sl].copy(), h_central=h_cen[sl].copy(), h_minimum=h_mn[sl].copy(),
-                            h_outlet=h_outs[sl].copy(), m=ms[sl].copy(), regime=regime[:n_run], m_c=ff.m_c,
-                            m_star=ff.m_star, flooded=ff, contact=c, t_between=t_b, periodic=periodic,
-                            n_periodic=n_per, declining=declining, final_regime=final, stats=st,
-                            x=x_out * a_p, profiles=np.array(profiles[:n_run]) if record_profiles else None,
-                            volume=vol[sl].copy(), success=not stopped, message=stopped)
+            declining = bool(np.all(np.diff(h_in[n_run - 6:]) < 0) and ms[-1] < ff.m_c)
+        final = PARCHED if declining or pm.stopped else regime[-1]
+        st = {"n_steps": stats.n_steps, "n_rhs": stats.n_rhs, "n_jac": stats.n_jac,
+              "n_freeze": int(PassMap.header(y, "n_freeze")), "n_remesh": int(PassMap.header(y, "n_remesh")),
+              "wall_time": time.perf_counter() - wall0, "integrate_time": pm.integrate_time}
+        ok = not pm.stopped
+        return BallSequence(h_inlet=h_in, h_central=h_cen, h_minimum=a["h_min"], h_outlet=h_out, m=ms, regime=regime,
+                            m_c=ff.m_c, m_star=ff.m_star, flooded=ff, contact=c, t_between=t_b, periodic=periodic,
+                            n_periodic=int(PassMap.header(y, "n_periodic")), declining=declining, final_regime=final,
+                            stats=st, x=x, profiles=np.array(a["profile"]) if "profile" in a else None,
+                            volume=a["volume"], final_state=np.array(y), final_time=float(a["t"][-1]),
+                            success=ok, message=pm.stopped or ("" if message == _NORMAL_END else message))
+
+
+def sequence_memory(n_passes: int, nodes: int, profiles: bool) -> dict:
+    """Bytes a :meth:`ThrustBallBearing.sequence` will need, by part: ``track`` (the levelling's ~200 arrays over
+    its nodes), ``recordings`` (per pass six numbers as Python floats in lists, 32 bytes each, then the result's
+    eight series; the profiles, ``nodes`` numbers per pass, twice: recorded and in the result)."""
+    return dict(track=200.0 * 8 * nodes,
+                recordings=n_passes * (6 * 32.0 + 8 * 8.0 + 2 * 8.0 * nodes * bool(profiles)))
