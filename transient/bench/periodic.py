@@ -112,8 +112,7 @@ def curve_part(bearing, cfg, log):
                                                             max_multiplier=onset.max_multiplier.tolist()))
     log(f"  onset of the periodic orbit: {out['onset_rpm']} rpm ({out['onset_cpu']:.1f} s)")
     if cfg["reference_rtol"]:
-        ref = response_curve(_orbit(bearing, sp[0]), sp, rtol=cfg["reference_rtol"], outputs_per_revolution=OPR,
-                             floquet_every=1)
+        ref = response_curve(_orbit(bearing, sp[0]), sp, rtol=cfg["reference_rtol"], outputs_per_revolution=OPR)
         out["reference_semi_major"] = [_semi_major(p, C) for p in ref.orbits]
         for r, a in zip(rows, out["reference_semi_major"]):
             r["reference_semi_major"] = a
