@@ -203,9 +203,9 @@ class _Flow:
 
     Only a period that can be the accepted one -- integrated at ``accept_rtol`` (the solve's final tolerance) or
     tighter -- is sampled at ``opr`` outputs; the others (loose early iterations, relaxing periods, the
-    directional derivatives of :meth:`derivative`) integrate to the period's end only (IDA takes fewer steps
-    without intermediate outputs). IDA starts each period with the step ``first_step`` [rad]
-    (``FIRST_STEP``: its own guess restarts at a 1e-4 of a period and spends steps growing it)."""
+    directional derivatives of :meth:`derivative`) integrate to the period's end only (the same steps for IDA;
+    the BDF map saves mapping the outputs back to the universal layout). IDA starts each period with the step
+    ``first_step`` [rad] (:data:`IDA_FIRST_STEP`)."""
 
     def __init__(self, orbit: Orbit, opr: int, atol_factor: float = 1e-3, integrator: str = "ida",
                  accept_rtol: float = 0.0, fd_step: float = 1e-3, first_step: float = 0.0):
