@@ -266,3 +266,26 @@ def test_the_converged_verdict_is_backed_by_a_measured_residual():
     run = o.run(1, y0=p.state, integration=Integration(rtol=1e-9, atol=1e-12),
                 recording=Recording(outputs_per_revolution=8))
     assert np.max(np.abs(run.final_state[n:] - p.state[n:])) < 2 * tol
+
+
+def test_the_period_maps_cost_levers_leave_the_orbit_unchanged(monkeypatch):
+    """IDA's first step in each period (``IDA_FIRST_STEP``) and the periods integrated to their end only (the
+    derivatives, the loose iterations) change the cost, not the result: the periodic orbit is IDA's own-first-step
+    orbit to the fixed-point tolerance (each within tol of the fixed point, the map's noise ~0.2 rtol), and a period
+    integrated without its intermediate outputs ends where the sampled one does."""
+    import transient.models.journal.periodic as periodic
+
+    o = _orbit(6000.0)
+    n = o.film.n
+    p = periodic_response(o, rtol=1e-7, tol=1e-7)
+    monkeypatch.setattr(periodic, "IDA_FIRST_STEP", 0.0)
+    q = periodic_response(o, rtol=1e-7, tol=1e-7)
+    assert p.converged and q.converged
+    assert np.max(np.abs(p.state[n:] - q.state[n:])) < 3e-7
+    assert abs(p.max_multiplier - q.max_multiplier) < 5e-3
+    F = periodic._Flow(o, 16, accept_rtol=1e-6, first_step=0.01)
+    z = F.reduce(p.state)
+    sampled = F(z, 0.0, 2 * np.pi, 1e-6)
+    end_only = F(z + 0.0, 0.0, 2 * np.pi, 1e-6, sample=False)
+    assert F.samples[z.tobytes()][1].size == 17 and len(F.samples) == 1
+    assert np.max(np.abs(sampled[-4:] - end_only[-4:])) < 1e-7

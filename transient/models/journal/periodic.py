@@ -59,6 +59,10 @@ INTEGRATORS = ("ida", "bdf2")
 #: below this dominant multiplier the derivatives' noise (~rtol / fd_step) swamps the whirl pair: a continuation
 #: then takes the whirl basis afresh at the next speed instead of following the noisy subspace
 REFINE_FLOOR = 0.05
+#: IDA's first step [rad of shaft angle] in each period of the map: its own guess restarts every period at ~1e-4 of
+#: it and spends steps and Jacobians growing the step back (41 x 6 grid, rtol 1e-5, the 27 Fig. 8 speeds: 17,845 steps
+#: and 2,524 Jacobians against 18,863 and 2,623, the same 135 periods; a small gain, docs/periodic.md section 6)
+IDA_FIRST_STEP = 0.01
 
 #: What shooting and continuation take: a :class:`~transient.models.journal.orbit.JournalOrbit` (not imported here:
 #: ``orbit.py`` offers these functions as its methods, so the import would close a circle).
@@ -195,28 +199,36 @@ class _Flow:
     """The once-per-revolution map of an orbit on the free film cells + rotor, keeping the journal centre at
     ``opr`` outputs of the last few periods integrated (the orbit of the accepted iterate). ``integrator``:
     ``"ida"`` (the universal film) or ``"bdf2"`` (the content film, mapped from and back to the universal
-    state: the map's unknowns are the same either way)."""
+    state: the map's unknowns are the same either way).
 
-    def __init__(self, orbit: Orbit, opr: int, atol_factor: float = 1e-3, integrator: str = "ida"):
+    Only a period that can be the accepted one -- integrated at ``accept_rtol`` (the solve's final tolerance) or
+    tighter -- is sampled at ``opr`` outputs; the others (loose early iterations, relaxing periods, the
+    directional derivatives of :meth:`derivative`) integrate to the period's end only (the same steps for IDA;
+    the BDF map saves mapping the outputs back to the universal layout). IDA starts each period with the step
+    ``first_step`` [rad] (:data:`IDA_FIRST_STEP`)."""
+
+    def __init__(self, orbit: Orbit, opr: int, atol_factor: float = 1e-3, integrator: str = "ida",
+                 accept_rtol: float = 0.0, fd_step: float = 1e-3, first_step: float = 0.0):
         f = orbit.film
         self.o, self.opr, self.atol_factor = orbit, int(opr), atol_factor
         self.integrator = check_choice("integrator", integrator, INTEGRATORS)
+        self.accept_rtol, self.fd_step, self.first_step = accept_rtol, fd_step, first_step
         self.keep = np.concatenate([np.flatnonzero(f.op.free), f.n + np.arange(N_ROTOR)])
         self.template = np.zeros(orbit.n)
         self.template[: f.n][~f.op.free] = f.u_supply
         self.samples = {}
-        self._bdf2 = None
+        self._bdf2 = {}
 
     def _solve(self, y, t_eval, rtol):
         """The run over ``t_eval`` from the universal state ``y``: (solution, states in the universal layout)."""
         o = self.o
         if self.integrator == "ida":
             s = solve(o.problem(y, t_eval[0], touch_gap=1e-3), t_eval, method="ida", rtol=rtol,
-                      atol=o.absolute_tolerance(self.atol_factor * rtol))
+                      atol=o.absolute_tolerance(self.atol_factor * rtol), steps=Steps(first_step=self.first_step))
             return s, s.y
-        if self._bdf2 is None:  # the step solve's model (its work arrays) once per map
-            self._bdf2 = o._stepper(Integration(method="bdf2", rtol=rtol), "content", 1e-3)
-        st = self._bdf2
+        if rtol not in self._bdf2:  # the step solve's model (its work arrays, its travel cap) once per tolerance
+            self._bdf2[rtol] = o._stepper(Integration(method="bdf2", rtol=rtol), "content", 1e-3)
+        st = self._bdf2[rtol]
         s = solve(st.problem_at(o.content_state(y), t_eval[0]), t_eval, method="bdf2", rtol=rtol,
                   atol=self.atol_factor * rtol, steps=Steps(max_step=st.max_step, first_step=st.first_step),
                   options=st.options)
@@ -230,19 +242,30 @@ class _Flow:
         y[self.keep] = z
         return y
 
-    def __call__(self, z, t0, T, rtol):
+    def __call__(self, z, t0, T, rtol, sample: bool = True):
         o, n = self.o, self.o.film.n
-        t_eval = t0 + T * np.linspace(0.0, 1.0, self.opr + 1)
+        sample = sample and rtol <= self.accept_rtol
+        t_eval = t0 + T * np.linspace(0.0, 1.0, self.opr + 1 if sample else 2)
         s, ys = self._solve(self.embed(z), t_eval, rtol)
         if not s.success or s.t.size < t_eval.size:
             return np.full(z.size, np.nan)
         key = z.tobytes()
-        if key not in self.samples or rtol <= self.samples[key][0]:  # keep the tightest run of a state
+        if sample and (key not in self.samples or rtol <= self.samples[key][0]):  # the tightest run of a state
             if len(self.samples) > 8:
                 self.samples.pop(next(iter(self.samples)))
             self.samples[key] = (rtol, s.t / o.film.omega, ys[:, n] * o.bearing.clearance,
                                  ys[:, n + 1] * o.bearing.clearance)
         return ys[-1][self.keep]
+
+    def derivative(self, z, fz, v, rtol):
+        """``M v`` by the one-sided difference ``(Phi(z + e v) - Phi(z)) / e``, ``norm(e v) = fd_step`` (the
+        shooting's default derivative: :class:`~transient.solvers.shooting.ShootingSettings`), the perturbed
+        period integrated to its end only."""
+        size = self.norm(v)
+        if not size > 1e-3 * float(np.max(np.abs(v))):  # v hardly moves the rotor: scale on the whole vector
+            size = float(np.max(np.abs(v)))
+        eps = self.fd_step / size
+        return (self(z + eps * v, 0.0, 2.0 * np.pi, rtol, sample=False) - fz) / eps
 
     @staticmethod
     def norm(d) -> float:
@@ -313,7 +336,8 @@ def periodic_response(orbit: Orbit, rtol: float = 1e-6, tol: float | None = None
     tol = rtol if tol is None else check_positive("tol", tol, "C")
     opr = int(check_range("outputs_per_revolution", outputs_per_revolution, "1/rev", 4, 1e5))
     wall0 = time.perf_counter()
-    F = _Flow(orbit, opr, integrator=integrator)
+    F = _Flow(orbit, opr, integrator=integrator, accept_rtol=rtol, fd_step=sh_settings.fd_step,
+              first_step=IDA_FIRST_STEP)
     y0 = orbit.linear_start() if start is None else np.array(getattr(start, "state", start), dtype=float)
     if y0.shape != (orbit.n,):
         raise ValueError(f"start has shape {y0.shape}; this orbit has {orbit.n} states")
@@ -321,10 +345,10 @@ def periodic_response(orbit: Orbit, rtol: float = 1e-6, tol: float | None = None
     settings = replace(sh_settings, tol=tol, rtol=rtol, rtol_max=max(rtol, 1e-4))
     if method == "shooting":
         V = whirl_basis(orbit, y0) if basis is None else np.asarray(basis, dtype=float)
-        sh = newton_picard(F, F.reduce(y0), two_pi, F.reduce(V), norm=_Flow.norm,
+        sh = newton_picard(F, F.reduce(y0), two_pi, F.reduce(V), norm=_Flow.norm, derivative=F.derivative,
                            settings=replace(settings, second_ritz=basis is None, refine_floor=REFINE_FLOOR))
     else:
-        sh = newton_krylov(F, F.reduce(y0), two_pi, norm=_Flow.norm, settings=settings)
+        sh = newton_krylov(F, F.reduce(y0), two_pi, norm=_Flow.norm, derivative=F.derivative, settings=settings)
     C = orbit.bearing.clearance
     state = F.embed(sh.state)
     periods, message, converged = sh.periods, sh.message, sh.success
