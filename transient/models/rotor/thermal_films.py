@@ -32,7 +32,7 @@ from transient.checks import check_range
 from transient.models.journal.bearing import NoEquilibriumError
 from transient.models.journal.film import read_only
 from transient.models.journal.film_temperatures import FilmTemperatures
-from transient.models.journal.thermal_orbit import thermal_fields
+from transient.models.journal.driven_film import driven_fields
 from transient.models.rotor.content_form import ContentSystem
 from transient.models.rotor.thermal_kernels import thermal_rotor_newton, thermal_rotor_residual
 from transient.solvers.integrate.bdf2 import Bdf2Model
@@ -202,8 +202,8 @@ class ThermalBearings:
             fl = blk.film
             X, Y = blk.position(q)
             s = self.speed(tau)[0] * blk.spin
-            thermal_fields(read_only(np.ascontiguousarray(y[blk.offset:blk.offset + blk.n])), X, Y, s, fl.fluidity,
-                           fl.switch, fl.geo, fl.fields, fl.fv)
+            driven_fields(read_only(np.ascontiguousarray(y[blk.offset:blk.offset + blk.n])), X, Y, s, fl.fluidity,
+                          fl.switch, fl.geo, fl.fields, fl.fv)
             fl.work.xy[0] = np.nan  # the kernels' fields are not these
             out.append(ft.rates_of_fields(s))
         return out
