@@ -212,17 +212,6 @@ def test_lift_off_speed_interpolates_the_crossing():
     assert math.isnan(lift_off_speed(s, [500.0, 500.0, 500.0], 1000.0))
 
 
-def test_rotor_system_refuses_a_rough_bearing():
-    """The rotor system's films are smooth: a rough bearing is refused at its door, not integrated as a smooth one
-    (the single-bearing orbit integrates it: tests/models/journal/test_rough_orbit.py)."""
-    from transient import Rotor, RotorBearingSystem
-
-    b = rough(1e-6)
-    rotor = Rotor.example()
-    with pytest.raises(ValueError, match="roughness"):
-        RotorBearingSystem(rotor, {n: b for n in rotor.bearing_nodes})
-
-
 @pytest.mark.slow  # 20 equilibria by continuation on 151 cells: 5 s of CPU
 def test_at_rest_the_asperities_sit_where_greenwood_tripp_puts_them():
     """At 1e-3 rpm (fed at 1 kPa: the film carries 2 N of 5 kN) the equilibrium, reached by continuation in speed
