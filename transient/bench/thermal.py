@@ -143,19 +143,6 @@ def markdown(r) -> str:
         *rotor_markdown(r.get("rotor"))])
 
 
-def orbit_markdown(o) -> list:
-    """The orbit revolution's table (nothing without one)."""
-    if not o:
-        return []
-    g = o["grid"]
-    return ["### One orbit revolution, thermal against isothermal (BDF2)", "",
-            f"{g[0]} x {g[1]} cells, {RPM:g} rpm, 2 kN, rotor 10 kg, unbalance 0.1 C, from the static equilibrium; "
-            f"CPU seconds, best of {o['rounds']} interleaved rounds. Target: ratio at most 1.5.", "",
-            "| run | CPU [s] | ratio | steps | e/C at the end |", "|---|---|---|---|---|",
-            *[f"| {c['run']} | {c['seconds']:.2f} | {c['ratio']:.2f} | {c['steps']} | {c['eccentricity_ratio']:.4f} |"
-              for c in o["cases"]], ""]
-
-
 def main(out, quick: bool = False) -> str:
     r = run(quick=quick)
     out = Path(out)
@@ -164,14 +151,30 @@ def main(out, quick: bool = False) -> str:
     return markdown(r)
 
 
+def orbit_markdown(o) -> list:
+    """The orbit revolution's table (nothing without one)."""
+    if not o:
+        return []
+    g = o["grid"]
+    return revolution_table(o, "One orbit revolution, thermal against isothermal (BDF2)",
+                            f"{g[0]} x {g[1]} cells, {RPM:g} rpm, 2 kN, rotor 10 kg, unbalance 0.1 C, from the static "
+                            "equilibrium", "e/C at the end")
+
+
 def rotor_markdown(o) -> list:
     """The rotor revolution's table (nothing without one)."""
     if not o:
         return []
     g = o["grid"]
-    return ["### One rotor revolution on two bearings, thermal against isothermal (BDF2)", "",
-            f"Rigid rotor 20 kg on two bearings of {g[0]} x {g[1]} cells, {RPM:g} rpm, 2 kN each, unbalance 0.1 C at "
-            f"each; CPU seconds, best of {o['rounds']} interleaved rounds. Target: ratio at most 1.5.", "",
-            "| run | CPU [s] | ratio | steps | e/C at bearing 0 at the end |", "|---|---|---|---|---|",
+    return revolution_table(o, "One rotor revolution on two bearings, thermal against isothermal (BDF2)",
+                            f"Rigid rotor 20 kg on two bearings of {g[0]} x {g[1]} cells, {RPM:g} rpm, 2 kN each, "
+                            "unbalance 0.1 C at each", "e/C at bearing 0 at the end")
+
+
+def revolution_table(o, title: str, setup: str, last: str) -> list:
+    """A revolution's cost table, thermal against isothermal: ``o["cases"]`` rows under ``title`` and ``setup``."""
+    return [f"### {title}", "",
+            f"{setup}; CPU seconds, best of {o['rounds']} interleaved rounds. Target: ratio at most 1.5.", "",
+            f"| run | CPU [s] | ratio | steps | {last} |", "|---|---|---|---|---|",
             *[f"| {c['run']} | {c['seconds']:.2f} | {c['ratio']:.2f} | {c['steps']} | {c['eccentricity_ratio']:.4f} |"
               for c in o["cases"]], ""]

@@ -84,13 +84,7 @@ def run_up(t, shaft_speed, max_temperature, power_loss, heat_flow, eccentricity_
     ax[1, 1].plot(t, at("eccentricity_ratio"), "--", label="steady THD at the same speed")
     ax[1, 1].set_ylabel("eccentricity ratio e/C [-]")
     ax[1, 1].legend()
-    for a in ax[1]:
-        a.set_xlabel("time [s]")
-    for a in ax.flat:
-        a.axvline(ramp_end, color="0.7", lw=0.8)
-        a.grid(alpha=0.3)
-    suptitle(fig, title)
-    return fig
+    return _run_up_frame(fig, ax, ramp_end, title)
 
 
 def rotor_run_up(t, shaft_speed, nodes, max_temperature, power_loss, eccentricity_ratio, steady: dict,
@@ -123,6 +117,11 @@ def rotor_run_up(t, shaft_speed, nodes, max_temperature, power_loss, eccentricit
     ax[1, 1].set_ylabel("eccentricity ratio e/C [-]")
     for a in (ax[0, 1], ax[1, 0], ax[1, 1]):
         a.legend(fontsize=7)
+    return _run_up_frame(fig, ax, ramp_end, title)
+
+
+def _run_up_frame(fig, ax, ramp_end: float, title: str):
+    """The run-up figures' frame: time on the lower axes, the ramp's end as a grey line, grids, the title."""
     for a in ax[1]:
         a.set_xlabel("time [s]")
     for a in ax.flat:
