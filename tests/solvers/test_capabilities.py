@@ -76,13 +76,16 @@ def test_every_model_refuses_an_impossible_method_at_its_door():
              "ThrustBallBearing.sequence", "bdf2", no_step_solve, why.format("ThrustBallBearing.sequence"))
     point = PointContact(0.01, grid=(25, 25), load=20.0, speed=1.0, viscosity=0.04, pressure_viscosity=2e-8,
                          modulus=2.2e11)
-    _refused(lambda: point.transient(1e-4, method="ida"), "PointContact.transient", "ida", ("bdf2",))
+    _refused(lambda: point.transient(1e-4, integration=Integration(method="ida")), "PointContact.transient", "ida",
+             ("bdf2",))
     line = LineContact(0.01, 3.1e4, 1.0, 0.022, 2500 / 220e9, 220e9, grid=101, domain=(-5.0, 2.5))
-    _refused(lambda: line.transient(1e-6, method="rk4"), "LineContact.transient", "rk4", ("ida", "bdf2"))
+    _refused(lambda: line.transient(1e-6, integration=Integration(method="rk4", dt=0.1)), "LineContact.transient",
+             "rk4", ("ida", "bdf2"))
     roller = RollerContact.from_dimensionless(U=1e-11, G=2500.0, W=2e-5 * 0.4 / 1.4, modulus=2.2e11,
                                               roller=TaperedRoller(0.01, 10.0, 0.02, 0.005, 0.002, 0.0),
                                               grid=(12, 8))
-    _refused(lambda: roller.transient(1e-6, method="rk4"), "RollerContact.transient", "rk4", ("ida", "bdf2"))
+    _refused(lambda: roller.transient(1e-6, integration=Integration(method="rk4", dt=0.1)),
+             "RollerContact.transient", "rk4", ("ida", "bdf2"))
     b = JournalBearing(**BEARING, grid=(12, 4))
     orbit = JournalOrbit(b, ROTOR["rotor_mass"], 0.0, ROTOR["load"], 3000.0)
     _refused(lambda: orbit.run(1.0, method="euler"), "JournalOrbit.run", "euler", METHODS)  # the old keyword too

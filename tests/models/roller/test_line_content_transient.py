@@ -1,6 +1,6 @@
-"""The line contact's transient on the film-content form (BDF2 on the stepper contract, ``method="bdf2"``): its
+"""The line contact's transient on the film-content form (BDF2 on the stepper contract, the default): its
 long-time limit is ``steady()`` (the exact complementarity), not the penalty form's ``steady(penalty=GAMMA)``;
-load changes against the penalty form's IDA transient and the steady film at the new load."""
+load changes against the penalty form's (deprecated) IDA transient and the steady film at the new load."""
 
 import math
 
@@ -9,9 +9,11 @@ import pytest
 
 from transient.models.roller import LineContact
 from transient.models.roller.transient import GAMMA
+from transient.solvers.settings import Integration
 
 R, E, W = 0.01, 220e9, 3.1e4
 DOMAIN = (-5.0, 2.5)
+BDF2 = Integration(method="bdf2", rtol=1e-5)
 #: the paper's short inlet is starved at this load (the film is that of this domain, on purpose)
 pytestmark = pytest.mark.filterwarnings("ignore::transient.models.roller.line_contact.StarvedInletWarning")
 
@@ -33,7 +35,7 @@ def steady(contact):
 
 
 def test_dry_start_tends_to_steady_not_to_the_penalty_film(contact, steady):
-    r = contact.transient(t_end=40 * contact.time_scale, start="dry", rtol=1e-5, n_out=11, method="bdf2")
+    r = contact.transient(t_end=40 * contact.time_scale, start="dry", n_out=11, integration=BDF2)
     assert r.success and r.n_steps > 10
     assert r.h_central[0] < 0.6 * steady.h_central  # starts from half the Dowson-Toyoda film
     # measured 3e-10: the steady solve's tolerance; the penalty film is 7e-6 (h_c) to 1.7e-5 (h_min) away
@@ -46,8 +48,10 @@ def test_dry_start_tends_to_steady_not_to_the_penalty_film(contact, steady):
 def test_load_pulse_follows_the_penalty_transient_and_returns_to_steady(contact, steady):
     w, ts = contact.load_per_length, contact.time_scale
     pulse = lambda t: w * (1 + 0.5 * np.sin(np.pi * min(t / (10 * ts), 1.0)) ** 2)
-    rb = contact.transient(t_end=40 * ts, start=steady, rtol=1e-5, n_out=41, load=pulse, method="bdf2")
-    ri = contact.transient(t_end=40 * ts, start=steady, rtol=1e-5, n_out=41, load=pulse)
+    rb = contact.transient(t_end=40 * ts, start=steady, n_out=41, load=pulse, integration=BDF2)
+    with pytest.warns(DeprecationWarning, match="penalty form"):
+        ri = contact.transient(t_end=40 * ts, start=steady, n_out=41, load=pulse,
+                               integration=Integration(method="ida", rtol=1e-5))
     assert rb.success and ri.success
     assert rb.load.max() == pytest.approx(1.5 * w, rel=1e-3)
     assert rb.h_central[0] == pytest.approx(steady.h_central, rel=1e-12)  # the start's content is consistent
@@ -59,8 +63,7 @@ def test_load_pulse_follows_the_penalty_transient_and_returns_to_steady(contact,
 
 @pytest.mark.slow
 def test_load_step_ends_on_the_steady_film_at_the_new_load(contact, steady):
-    r = contact.transient(t_end=30 * contact.time_scale, start=steady, rtol=1e-5, n_out=16, load=2 * W,
-                          method="bdf2")
+    r = contact.transient(t_end=30 * contact.time_scale, start=steady, n_out=16, load=2 * W, integration=BDF2)
     assert r.success and r.load[-1] == pytest.approx(2 * W)
     twice = paperlike(2 * W)
     assert np.allclose(twice.grid.x * twice.b, contact.grid.x * contact.b, rtol=1e-12, atol=1e-15)
@@ -72,7 +75,7 @@ def test_load_step_ends_on_the_steady_film_at_the_new_load(contact, steady):
 
 def test_an_unknown_method_and_a_matrix_free_grid_are_refused_before_any_work(contact):
     with pytest.raises(ValueError, match="method"):
-        contact.transient(t_end=contact.time_scale, method="rk4")
+        contact.transient(t_end=contact.time_scale, integration=Integration(method="rk4", dt=0.1))
     fine = paperlike(n=2049)
     with pytest.raises(ValueError, match="2049 uniform nodes"):
-        fine.transient(t_end=fine.time_scale, method="bdf2")
+        fine.transient(t_end=fine.time_scale)

@@ -1,4 +1,4 @@
-"""The tapered roller's transient on the film-content form (BDF2, ``method="bdf2"``) at the paper's loading on the
+"""The tapered roller's transient on the film-content form (BDF2, the default) at the paper's loading on the
 paper case's test grid (40 x 25 clustered): its long-time limit is the steady film-content film (``steady(method=
 "fbns")``, at this load also ``steady()``'s film), not the penalty form's."""
 
@@ -7,8 +7,10 @@ import pytest
 
 from transient.models.roller import RollerContact, TaperedRoller
 from transient.models.roller.transient import GAMMA
+from transient.solvers.settings import Integration
 
 E, RM = 220e9, 0.01
+BDF2 = Integration(method="bdf2", rtol=1e-5)
 CASE = dict(U=1e-11, G=2500.0, W=2e-5 * 0.4 / 1.4, modulus=E)  # the paper's loading on a shorter roller
 
 
@@ -27,7 +29,7 @@ def steady(contact):
 def test_from_the_penalty_film_the_transient_tends_to_the_content_film(contact, steady):
     penalty = contact.steady(penalty=GAMMA, tol=1e-10)
     assert abs(penalty.h_min / steady.h_min - 1.0) > 1e-6  # the limit tells the two forms apart
-    r = contact.transient(t_end=5 * contact.time_scale, start=penalty, rtol=1e-5, n_out=6, method="bdf2")
+    r = contact.transient(t_end=5 * contact.time_scale, start=penalty, n_out=6, integration=BDF2)
     assert r.success
     for key in ("h_central", "h_min"):
         assert getattr(r, key)[-1] == pytest.approx(getattr(steady, key), rel=1e-7)
@@ -36,7 +38,7 @@ def test_from_the_penalty_film_the_transient_tends_to_the_content_film(contact, 
 
 
 def test_a_steady_start_stays_on_the_steady_film(contact, steady):
-    r = contact.transient(t_end=5 * contact.time_scale, start=steady, rtol=1e-5, n_out=6, method="bdf2")
+    r = contact.transient(t_end=5 * contact.time_scale, start=steady, n_out=6, integration=BDF2)
     assert r.success
     assert r.h_central[0] == pytest.approx(steady.h_central, rel=1e-12)  # the start's content is its own
     for key in ("h_central", "h_min", "p_max"):
@@ -45,4 +47,4 @@ def test_a_steady_start_stays_on_the_steady_film(contact, steady):
 
 def test_an_unknown_method_is_refused_before_any_work(contact):
     with pytest.raises(ValueError, match="method"):
-        contact.transient(t_end=contact.time_scale, method="rk4")
+        contact.transient(t_end=contact.time_scale, integration=Integration(method="rk4", dt=0.1))

@@ -15,6 +15,7 @@ thickness [m] of the oil layer the contact meets (both surfaces together); ``Non
 
 from __future__ import annotations
 
+import hashlib
 import math
 import time
 import warnings
@@ -25,6 +26,7 @@ import numpy as np
 from transient.checks import check_choice, check_int, check_items, check_positive, check_range, check_vector
 from transient.models.ehl.dry import edge_positions, polonsky_keer
 from transient.models.ehl.errors import EHLConvergenceError
+from transient.models.ehl.film_run import contact_digest, run_film, transient_settings
 from transient.models.ehl.krylov import coarsening_factor, inject
 from transient.models.point.fbns import DENSE_MAX_UNKNOWNS, fbns
 from transient.models.point.ehl_problem import PointFilm
@@ -32,11 +34,11 @@ from transient.models.point.grid_verdict import FORMAL_ORDER, describe, error_es
 from transient.models.point.plausibility import default_grid_message, grid_message, implausible
 from transient.models.point.point_grid import MIN_NODES_PER_B, default_grid
 from transient.models.point.results import PointDry, PointSteady, PointTransient
-from transient.models.point.step_solve import ATOL_PER_RTOL, FilmStep, steady_by_time_steps
+from transient.models.point.step_solve import FilmStep, steady_by_time_steps
 from transient.physics import film_formulas as hd
 from transient.physics.hertz import hertz_contact
 from transient.physics.lubricant import DOWSON_HIGGINSON_PARK, Lubricant
-from transient.solvers.integrate import Problem, Steps, check_method, solve
+from transient.solvers.settings import Integration, LongRun
 
 #: the Couette flux of the Reynolds rows (:func:`~transient.models.point.kernels.face_flux`): first-order upwind,
 #: second-order linear upwind (the default), or second order with van Albada's limiter. Measured
@@ -387,22 +389,27 @@ class PointContact:
         """``b/u`` [s], the unit of the scaled time."""
         return self.hertz.b / self.speed
 
-    def transient(self, t_end: float, load=None, start="dry", rtol: float = 1e-4, max_steps: int = 5000,
-                  n_out: int = 201, time_budget: float | None = None, method: str = "bdf2") -> PointTransient:
-        """The film in time: BDF2 with FBNS Newton per step (:mod:`transient.models.point.step_solve`) through the
-        integrator facade (:func:`~transient.solvers.integrate.solve`, ``method="bdf2"``).
+    def transient(self, t_end: float, load=None, start="dry", *, n_out: int = 201, max_steps: int = 5000,
+                  integration: Integration | None = None, long_run: LongRun | None = None,
+                  **legacy) -> PointTransient:
+        """The film in time: BDF2 with FBNS Newton per step (:mod:`transient.models.point.step_solve`) on the one
+        run driver (:mod:`transient.models.ehl.film_run`).
 
         ``t_end`` [s]; ``load`` [N]: a number or a function of ``t`` [s] (default: the contact's load);
         ``start``: ``"dry"`` (the dry Hertz pressure with the film lifted to Hamrock-Dowson's central film,
         the content full, or for a starved inlet the layer where it does not fill the gap) or a
-        :class:`PointSteady` / :class:`PointTransient` of this contact's grid; ``rtol`` the relative local
-        error per step; ``n_out`` outputs equally spaced on [0, t_end]; ``time_budget`` [s] of wall clock (None:
-        none); ``method`` one of :data:`TRANSIENT_METHODS` (its film is a complementarity problem, solved by the
-        FBNS step solve it hands BDF2). Series at the outputs; the final fields and state (``start=`` of a next
-        run)."""
-        check_method("PointContact.transient", method, step_solve=True, among=TRANSIENT_METHODS)
+        :class:`PointSteady` / :class:`PointTransient` of this contact's grid (its final film; the time starts at
+        0 again); ``n_out`` outputs equally spaced on [0, t_end]; ``max_steps`` the most steps of the run.
+        ``integration`` (:class:`~transient.solvers.settings.Integration`): ``method`` one of
+        :data:`TRANSIENT_METHODS` (the film is a complementarity problem, solved by the FBNS step solve it hands
+        BDF2), ``rtol`` the relative local error per step (default 1e-4), ``atol`` on the scaled states (default
+        1e-2 rtol); ``long_run`` (:class:`~transient.solvers.settings.LongRun`): checkpoint and resume, progress
+        bar, ``stop``, ``time_budget`` [s of wall clock]. The loose keywords ``rtol=``, ``method=``,
+        ``time_budget=`` of earlier releases are deprecated. Series at the outputs; the final fields and state
+        (``start=`` of a next run)."""
+        ig, lr = transient_settings("PointContact.transient", TRANSIENT_METHODS, "bdf2", integration, long_run,
+                                    legacy)
         t_end = check_range("t_end", t_end, "s", 0.0, 1e6, low_open=True)
-        rtol = check_range("rtol", rtol, "-", 1e-8, 0.5)
         max_steps = check_int("max_steps", max_steps, "-", 1, 10 ** 7)
         n_out = check_int("n_out", n_out, "-", 2, 10 ** 7)
         if load is None:
@@ -425,26 +432,28 @@ class PointContact:
         ratio = lambda T: float(f_load(T * ts)) / self.load
         c, hs = self.hertz, self.film_scale
         jc, ic = 0, int(np.argmin(np.abs(film.x)))
-        rows = []
+        tau_end = t_end / ts
 
-        def observe(T, u):
+        def sample(T, u):
             P, _, h0 = film.split(u)
             H = film.film(P, h0)
-            rows.append((T * ts, H[jc, ic] * hs, H.min() * hs, P.max() * c.p_max, h0 * hs, ratio(T) * self.load))
+            return dict(h_central=H[jc, ic] * hs, h_min=H.min() * hs, p_max=P.max() * c.p_max, h0=h0 * hs,
+                        load=ratio(T) * self.load)
 
-        problem = Problem(y0=u0, step_solve=FilmStep(film, u0, ratio), name="point contact (FBNS)")
-        sol = solve(problem, np.linspace(0.0, t_end / ts, n_out), method="bdf2", rtol=rtol, atol=ATOL_PER_RTOL * rtol,
-                    steps=Steps(first_step=1e-3, max_steps=max_steps), store=False, observer=observe,
-                    time_budget=time_budget)
-        a = np.array(rows)
-        T, u = problem.step_solve.last
-        P, Th, h0 = film.split(u)
-        H = film.film(P, h0)
-        return PointTransient(t=a[:, 0], h_central=a[:, 1], h_min=a[:, 2], p_max=a[:, 3], h0=a[:, 4], load=a[:, 5],
-                              x=film.x * c.b, y=film.y_full * c.b, pressure=film.full(P) * c.p_max,
-                              film=film.full(H) * hs, theta=film.full(Th), wall_time=sol.stats.wall_time,
-                              stats=sol.stats, final_state=u, final_time=T * ts,
-                              success=bool(sol.success), message="completed" if sol.success else sol.message)
+        def result(a, u, stats, message):
+            P, Th, h0 = film.split(u)
+            H = film.film(P, h0)
+            return PointTransient(t=a["t"] * ts, h_central=a["h_central"], h_min=a["h_min"], p_max=a["p_max"],
+                                  h0=a["h0"], load=a["load"], x=film.x * c.b, y=film.y_full * c.b,
+                                  pressure=film.full(P) * c.p_max, film=film.full(H) * hs, theta=film.full(Th),
+                                  wall_time=stats.wall_time, stats=stats, final_state=np.array(u),
+                                  final_time=float(a["t"][-1]) * ts if len(a["t"]) else 0.0, success=True,
+                                  message=message or "completed")
+
+        load_key = hashlib.sha256(np.array([ratio(T) for T in np.linspace(0.0, tau_end, n_out)]).tobytes())
+        return run_film("point contact (FBNS)", lambda u, T: FilmStep(film, u, ratio, t0=T), u0, tau_end, n_out,
+                        sample, ("h_central", "h_min", "p_max", "h0", "load"), result, ig, lr, max_steps,
+                        dict(contact=contact_digest(self), grid=list(self.grid), load=load_key.hexdigest()[:16]))
 
     def _result(self, film: PointFilm, u, ok, norms, wall, info) -> PointSteady:
         P, T, h0 = film.split(u)

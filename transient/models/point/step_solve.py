@@ -17,28 +17,26 @@ from __future__ import annotations
 
 import numpy as np
 
+from transient.models.ehl.film_run import ATOL_PER_RTOL
 from transient.models.point.fbns import fbns, merit
 from transient.solvers.integrate.stepper import BDF2, StepBounds, StepSolve
-
-#: the relative tolerance's floor of the error test, as a fraction of rtol: |u| below 1e-2 counts as 1e-2
-ATOL_PER_RTOL = 1e-2
 
 
 class FilmStep(StepSolve):
     """FBNS Newton on one BDF2 step of the point film ``film`` (a
     :class:`~transient.models.point.ehl_problem.PointFilm`) under the load ``load_ratio(T)`` (``W(T)/W``), from
-    the state ``u0`` at the start, to the scaled residual ``tol``. Newton starts from the stepper's predictor
+    the state ``u0`` at the scaled time ``t0``, to the scaled residual ``tol``. Newton starts from the stepper's predictor
     where its content is non-negative, else (and after a failure from the predictor) from the last state;
     ``last``: the last accepted ``(T, state)``."""
 
     error_components = None  # the whole state: pressure, content and the rigid approach H0
     test_first_step = False  # the dry start is not on the film's constraints: the first step is the jump onto them
 
-    def __init__(self, film, u0, load_ratio, tol=1e-9, max_iter=30):
+    def __init__(self, film, u0, load_ratio, tol=1e-9, max_iter=30, t0=0.0):
         self.film, self.load_ratio, self.tol, self.max_iter = film, load_ratio, tol, max_iter
-        self.qs = [self._storage(0.0, u0)]
+        self.qs = [self._storage(t0, u0)]
         self.newton = 0
-        self.last = (0.0, np.asarray(u0, float))  # the last accepted (T, state)
+        self.last = (t0, np.asarray(u0, float))  # the last accepted (T, state)
 
     def _storage(self, T, u):
         return self.film.storage(self.film.equations(u, self.load_ratio(T)))

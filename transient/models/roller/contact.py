@@ -47,9 +47,11 @@ preconditioner kept across iterations (the paper grid) or a two-level preconditi
 
 from __future__ import annotations
 
+import hashlib
 import math
 import time
 from contextlib import nullcontext
+from dataclasses import fields
 from functools import cached_property, partial
 from types import SimpleNamespace
 
@@ -58,6 +60,7 @@ from scipy.interpolate import RegularGridInterpolator
 from threadpoolctl import threadpool_limits
 
 from transient.checks import check_int, check_memory, check_positive, check_range
+from transient.models.ehl.film_run import contact_digest, transient_settings
 from transient.models.roller.continuation import PathResult, follow
 from transient.models.roller.dry import DryContact, DrySolver, dry_contact
 from transient.models.roller.ehl_problem import EHLFilm, interpolate_state, solve_steady
@@ -70,8 +73,8 @@ from transient.models.roller.line_step import consistent_content, run_content_tr
 from transient.models.roller.transient import load_ratio, run_squeeze
 from transient.physics.line_formulas import dowson_toyoda_central
 from transient.physics.lubricant import DOWSON_HIGGINSON_PARK, Lubricant
-from transient.solvers.integrate import check_method
 from transient.solvers.newton import NewtonError
+from transient.solvers.settings import Integration, LongRun, check_unused
 
 PAPER_GRID = (94, 45)
 #: The methods :meth:`RollerContact.transient` offers: IDA on the penalty form, BDF2 on the film-content form.
@@ -775,33 +778,42 @@ class RollerContact:
         """Time unit of the scaled transient, the transit time ``c/u`` [s]."""
         return self.dry().half_width / self.speed
 
-    def transient(self, t_end: float, load=None, start="dry", rtol: float = 1e-4, n_out: int = 51,
-                  initial_film: float | None = None, ramp_time: float | None = None, method: str = "ida",
-                  max_steps: int = 5000, time_budget: float | None = None) -> RollerTransient:
+    def transient(self, t_end: float, load=None, start="dry", *, n_out: int = 51, initial_film: float | None = None,
+                  ramp_time: float | None = None, max_steps: int = 5000, integration: Integration | None = None,
+                  long_run: LongRun | None = None, **legacy) -> RollerTransient:
         """Transient EHL over ``[0, t_end]`` [s] on this contact's grid (dense elasticity: use a coarse clustered
-        grid, docs/ehl.md gives the cost): by IDA on the penalty form (:mod:`transient.models.roller.transient`,
-        ``method="ida"``) or by BDF2 on the film-content form (:mod:`transient.models.roller.line_step`,
-        ``method="bdf2"``).
+        grid, docs/ehl.md gives the cost): by IDA on the penalty form (:mod:`transient.models.roller.transient`, the
+        default) or by BDF2 on the film-content form (:mod:`transient.models.roller.line_step`) on the one run
+        driver (:mod:`transient.models.ehl.film_run`).
 
         ``load``: None (constant), a number [N] (a step from the starting load smoothed over
         ``ramp_time``, default one transit time c/u) or a function of t [s] -> N. ``start``: ``"dry"``
         -- the dry pressure with the film at the mid-plane centre lifted to ``initial_film`` [m] (default
         half the Dowson-Toyoda central film of the mid-plane) -- or a :class:`RollerSteady` of this
-        contact. ``method="ida"``: the exit condition in penalty form, whose long-time limit is
-        ``steady(penalty=GAMMA)`` (:data:`transient.models.roller.transient.GAMMA`). ``method="bdf2"``: the exact
+        contact. ``integration`` (:class:`~transient.solvers.settings.Integration`, ``rtol`` default 1e-4):
+        ``method="ida"`` (the default): the exit condition in penalty form, whose long-time limit is
+        ``steady(penalty=GAMMA)`` (:data:`transient.models.roller.transient.GAMMA`); ``method="bdf2"``: the exact
         complementarity (the film content, cavitation mass-conserving), whose long-time limit is
         ``steady(method="fbns")`` (at and below the paper case's load the same film as ``steady()``); the content
         starts full where the start has pressure and mass-conserving where it has none
         (:func:`~transient.models.roller.line_step.consistent_content`, or a film-content ``start``'s own);
-        ``max_steps`` and ``time_budget`` [s of wall clock] bound that run.
+        ``max_steps`` bounds that run. It is not the default: where the load changes, nodes switch one after
+        another at the cavitation boundary and its error test holds the steps small (a dry start would take ~1e5
+        steps, docs/validation.md). ``long_run`` (:class:`~transient.solvers.settings.LongRun`, ``method="bdf2"``
+        only): checkpoint and resume, progress bar, ``stop``, ``time_budget`` [s of wall clock]. The loose keywords
+        ``rtol=``, ``method=``, ``time_budget=`` of earlier releases are deprecated.
         """
-        check_method("RollerContact.transient", method, step_solve=True, among=TRANSIENT_METHODS)
+        ig, lr = transient_settings("RollerContact.transient", TRANSIENT_METHODS, "ida", integration, long_run,
+                                    legacy)
+        method = ig.method
         t_end = check_positive("t_end", t_end, "s")
         if self.grid_spec[0] == "uniform":
             raise ValueError("transient needs a clustered grid (dense elasticity for IDA's dense Jacobian)")
         n_out = int(check_range("n_out", n_out, "-", 2, 1e6))
         if method == "bdf2":
             max_steps = check_int("max_steps", max_steps, "-", 1, 10 ** 7)
+        else:
+            check_unused("RollerContact.transient", "long_run", lr, [f.name for f in fields(LongRun)])
         nodes = self.grid.nx * self.grid.ny
         n = nodes + 1
         need = dict(elasticity=8.0 * nodes * nodes, outputs=3 * 8.0 * n_out * n)
@@ -835,8 +847,8 @@ class RollerContact:
         t_ref = self.time_scale
         ratio = load_ratio(load, self.load, w_start, t_ref, ramp_time)
         if method == "bdf2":
-            return self._content_transient(film, y0, theta0, ratio, t_end, rtol, n_out, max_steps, time_budget)
-        sol, wall, rows = run_squeeze(film, s["lam"], ratio, y0, t_end, t_ref, rtol, n_out,
+            return self._content_transient(film, y0, theta0, ratio, t_end, n_out, max_steps, (ig, lr))
+        sol, wall, rows = run_squeeze(film, s["lam"], ratio, y0, t_end, t_ref, ig.rtol, n_out,
                                       lambda f, y: self.result(f, y, True, "", 0, [], 0.0))
         last = rows[-1]
         return RollerTransient(t=sol.t * t_ref, h_central=np.array([r.h_central for r in rows]),
@@ -846,36 +858,37 @@ class RollerContact:
                                message=sol.message, stats=sol.stats, n_steps=sol.stats.n_steps, n_jacobians=sol.stats.n_jac,
                                wall_time=wall, final_state=sol.y[-1].copy(), final_time=float(sol.t[-1] * t_ref))
 
-    def _content_transient(self, film, y0, theta0, ratio, t_end, rtol, n_out, max_steps, time_budget):
+    def _content_transient(self, film, y0, theta0, ratio, t_end, n_out, max_steps, settings):
         """``method="bdf2"`` of :meth:`transient`: :class:`~transient.models.roller.line_step.LineFilmStep` on the
         film-content form (:class:`~transient.models.roller.roller_fbns.RollerContentFilm`) from ``y0 = [p, h0]``
-        with the content ``theta0`` (None: :func:`~transient.models.roller.line_step.consistent_content`)."""
+        with the content ``theta0`` (None: :func:`~transient.models.roller.line_step.consistent_content`), on the
+        one run driver."""
         content = RollerContentFilm(film)
         n, t_ref = content.n, self.time_scale
         if theta0 is None:
             u0 = consistent_content(content, y0[:-1], y0[-1])
         else:
             u0 = np.concatenate([y0[:-1], theta0, [y0[-1]]])
-        rows, taus = [], []
+        state = lambda u: np.append(u[:n], u[-1])
 
-        def observe(tau, u):
-            taus.append(tau)
-            rows.append(self.result(film, np.append(u[:n], u[-1]), True, "", 0, [], 0.0))
+        def sample(tau, u):
+            r = self.result(film, state(u), True, "", 0, [], 0.0)
+            return dict(h_central=r.h_central, h_min=r.h_min, p_max=r.p_max, h0=u[-1] * self.scales["film"],
+                        load=ratio(tau) * self.load)
 
-        sol, step = run_content_transient(content, self.scales["lam"], u0, ratio, t_end / t_ref, rtol, n_out,
-                                          max_steps, time_budget, "roller contact (film content, FBNS)", observe)
-        tau, u = step.last
-        last = self.result(film, np.append(u[:n], u[-1]), True, "", 0, [], 0.0, content=u[n: 2 * n])
-        tau_out = np.array(taus)
-        return RollerTransient(t=tau_out * t_ref, h_central=np.array([r.h_central for r in rows]),
-                               h_min=np.array([r.h_min for r in rows]), p_max=np.array([r.p_max for r in rows]),
-                               h0=np.array([r.state[-1] for r in rows]) * self.scales["film"],
-                               load=np.array([ratio(t) for t in tau_out]) * self.load, x=last.x, y=last.y,
-                               pressure=last.pressure, film=last.film, success=bool(sol.success),
-                               message="completed" if sol.success else sol.message, stats=sol.stats,
-                               n_steps=sol.stats.n_steps, n_jacobians=step.factorisations,
-                               wall_time=sol.stats.wall_time, final_state=np.append(u[:n], u[-1]),
-                               final_time=float(tau * t_ref))
+        def result(a, u, stats, message):
+            last = self.result(film, state(u), True, "", 0, [], 0.0, content=u[n: 2 * n])
+            return RollerTransient(t=a["t"] * t_ref, h_central=a["h_central"], h_min=a["h_min"], p_max=a["p_max"],
+                                   h0=a["h0"], load=a["load"], x=last.x, y=last.y, pressure=last.pressure,
+                                   film=last.film, success=True, message=message or "completed", stats=stats,
+                                   n_steps=stats.n_steps, n_jacobians=stats.n_jac, wall_time=stats.wall_time,
+                                   final_state=state(u), final_time=float(a["t"][-1]) * t_ref if len(a["t"]) else 0.0)
+
+        loads = np.array([ratio(tau) for tau in np.linspace(0.0, t_end / t_ref, n_out)])
+        key = dict(contact=contact_digest(self), nodes=[int(film.grid.nx), int(film.grid.ny)],
+                   load=hashlib.sha256(loads.tobytes()).hexdigest()[:16])
+        return run_content_transient(content, self.scales["lam"], u0, ratio, t_end / t_ref, n_out, sample, result,
+                                     settings, max_steps, key, "roller contact (film content, FBNS)")
 
     def result(self, film: EHLFilm, u, ok, msg, iters, norms, wall, info=None, content=None) -> RollerSteady:
         s = self.scales

@@ -20,6 +20,7 @@ inside Newton (:mod:`transient.models.roller.kernels`).
 
 from __future__ import annotations
 
+import hashlib
 import math
 import time
 import warnings
@@ -28,6 +29,7 @@ import numpy as np
 
 from transient.checks import check_int, check_positive, check_range
 from transient.models.ehl.dry import edge_positions, polonsky_keer
+from transient.models.ehl.film_run import contact_digest, penalty_deprecated, transient_settings
 from transient.models.roller.continuation import PathResult, follow
 from transient.models.roller.ehl_problem import EHLFilm, interpolate_state, solve_steady
 from transient.models.roller.grid import TensorGrid
@@ -44,8 +46,8 @@ from transient.physics.elasticity import line_influence
 from transient.physics.line_formulas import (dowson_toyoda_central, hertz_line, line_groups, martin_min, moes_central,
                                              moes_groups)
 from transient.physics.lubricant import DOWSON_HIGGINSON_PARK, Lubricant
-from transient.solvers.integrate import check_method
 from transient.solvers.newton import NewtonError
+from transient.solvers.settings import Integration, LongRun
 
 SCHEMES = ("upwind2", "upwind1")
 #: The methods :meth:`LineContact.transient` offers: IDA on the penalty form, BDF2 on the film content (its step solve).
@@ -504,33 +506,39 @@ class LineContact:
         """Time unit of the scaled transient, the transit time ``b/u`` [s]."""
         return self.b / self.speed
 
-    def transient(self, t_end: float, load=None, start="dry", rtol: float = 1e-4, n_out: int = 101,
-                  initial_film: float | None = None, ramp_time: float | None = None, method: str = "ida",
-                  max_steps: int = 5000, time_budget: float | None = None) -> LineTransient:
-        """Transient film over ``[0, t_end]`` [s]: by IDA on the penalty form (:mod:`transient.models.roller.transient`,
-        ``method="ida"``) or by BDF2 on the film-content form (:mod:`transient.models.roller.line_step`,
-        ``method="bdf2"``).
+    def transient(self, t_end: float, load=None, start="dry", *, n_out: int = 101, initial_film: float | None = None,
+                  ramp_time: float | None = None, max_steps: int = 5000, integration: Integration | None = None,
+                  long_run: LongRun | None = None, **legacy) -> LineTransient:
+        """Transient film over ``[0, t_end]`` [s]: by BDF2 on the film-content form
+        (:mod:`transient.models.roller.line_step`) on the one run driver (:mod:`transient.models.ehl.film_run`).
 
         ``load``: None (constant, the contact's load), a number [N/m] (a step from the starting load,
         smoothed over ``ramp_time``, default one transit time b/u) or a function of t [s] -> N/m.
         ``start``: ``"dry"`` -- the dry (Hertz) pressure with the film lifted to ``initial_film`` [m] at
         x = 0 (default half the Dowson-Toyoda central film) -- or a :class:`LineSteady` on this grid.
-        ``method="ida"``: the exit condition in penalty form (:data:`transient.models.roller.transient.GAMMA`), whose
-        long-time limit is ``steady(penalty=GAMMA)``. ``method="bdf2"``: the exact complementarity (the film
-        content, cavitation mass-conserving), whose long-time limit is ``steady()``; the content starts full where
-        the start has pressure and mass-conserving where it has none
-        (:func:`~transient.models.roller.line_step.consistent_content`); ``max_steps`` and ``time_budget`` [s of
-        wall clock] bound that run (uniform grids up to 1025 nodes: the dense elastic film).
+        ``integration`` (:class:`~transient.solvers.settings.Integration`): ``method="bdf2"`` (the default) the
+        exact complementarity (the film content, cavitation mass-conserving), whose long-time limit is
+        ``steady()``; the content starts full where the start has pressure and mass-conserving where it has none
+        (:func:`~transient.models.roller.line_step.consistent_content`); ``max_steps`` bounds the run (uniform
+        grids up to 1025 nodes: the dense elastic film); ``rtol`` (default 1e-4). ``method="ida"``: the exit
+        condition in penalty form (:data:`transient.models.roller.transient.GAMMA`), whose long-time limit is
+        ``steady(penalty=GAMMA)`` -- deprecated, removed in the next release. ``long_run``
+        (:class:`~transient.solvers.settings.LongRun`): checkpoint and resume, progress bar, ``stop``,
+        ``time_budget`` [s of wall clock]. The loose keywords ``rtol=``, ``method=``, ``time_budget=`` of earlier
+        releases are deprecated.
         """
+        ig, lr = transient_settings("LineContact.transient", TRANSIENT_METHODS, "bdf2", integration, long_run,
+                                    legacy)
         t_end = check_positive("t_end", t_end, "s")
-        check_method("LineContact.transient", method, step_solve=True, among=TRANSIENT_METHODS)
-        if method == "bdf2":
+        n_out = check_int("n_out", n_out, "-", 2, 10 ** 6)
+        if ig.method == "bdf2":
             if matrix_free(self.grid) and self.elastic:
                 raise ValueError(f"method = 'bdf2': {self.grid.x.size} uniform nodes need the matrix-free film; the "
                                  "film-content transient takes the dense film (at most 1025 uniform nodes, or "
                                  "clustered)")
             max_steps = check_int("max_steps", max_steps, "-", 1, 10 ** 7)
-            n_out = check_int("n_out", n_out, "-", 2, 10 ** 6)
+        else:
+            penalty_deprecated("LineContact.transient", lr)
         film = self.film_problem()
         w_start = self.load_per_length
         if start == "dry":
@@ -547,11 +555,10 @@ class LineContact:
             w_start = float(np.trapezoid(start.pressure, start.x))
         else:
             raise ValueError(f"start = {start!r}: use 'dry' or a LineSteady of this contact")
-        if method == "bdf2":
-            return self._content_transient(film, y0, w_start, t_end, load, rtol, n_out, ramp_time, max_steps,
-                                           time_budget)
-        return self._transient(film, y0, self.lam, self.time_scale, self.load_per_length, w_start, t_end, load, rtol,
-                               n_out, ramp_time)
+        if ig.method == "bdf2":
+            return self._content_transient(film, y0, w_start, t_end, load, n_out, ramp_time, max_steps, (ig, lr))
+        return self._transient(film, y0, self.lam, self.time_scale, self.load_per_length, w_start, t_end, load,
+                               ig.rtol, n_out, ramp_time)
 
     def _transient(self, film, y0, kappa, t_ref, w_ref, w_start, t_end, load, rtol, n_out, ramp_time):
         ratio = load_ratio(load, w_ref, w_start, t_ref, ramp_time)
@@ -565,35 +572,35 @@ class LineContact:
                              message=sol.message, stats=sol.stats, n_steps=sol.stats.n_steps, n_jacobians=sol.stats.n_jac,
                              wall_time=wall, final_state=sol.y[-1].copy(), final_time=float(sol.t[-1] * t_ref))
 
-    def _content_transient(self, film, y0, w_start, t_end, load, rtol, n_out, ramp_time, max_steps,
-                           time_budget) -> LineTransient:
+    def _content_transient(self, film, y0, w_start, t_end, load, n_out, ramp_time, max_steps,
+                           settings) -> LineTransient:
         """``method="bdf2"`` of :meth:`transient`: :class:`~transient.models.roller.line_step.LineFilmStep` on the
-        integrator facade's BDF2 from ``y0 = [p, h0]`` (its content by
+        one run driver from ``y0 = [p, h0]`` (its content by
         :func:`~transient.models.roller.line_step.consistent_content`)."""
         content = LineContentFilm(film)
         n, t_ref, w_ref = content.n, self.time_scale, self.load_per_length
         ratio = load_ratio(load, w_ref, w_start, t_ref, ramp_time)
         u0 = consistent_content(content, y0[:-1], y0[-1])
-        rows, taus = [], []
+        state = lambda u: np.append(u[:n], u[-1])
 
-        def observe(tau, u):
-            taus.append(tau)
-            rows.append(self._result(film, np.append(u[:n], u[-1]), True, "", 0, [], 0.0))
+        def sample(tau, u):
+            r = self._result(film, state(u), True, "", 0, [], 0.0)
+            return dict(h_central=r.h_central, h_min=r.h_min, p_max=r.p_max, h0=u[-1] * self.film_scale,
+                        load=ratio(tau) * w_ref)
 
-        sol, step = run_content_transient(content, self.lam, u0, ratio, t_end / t_ref, rtol, n_out, max_steps,
-                                          time_budget, "line contact (film content, FBNS)", observe)
-        tau, u = step.last
-        last = self._result(film, np.append(u[:n], u[-1]), True, "", 0, [], 0.0)
-        tau_out = np.array(taus)
-        return LineTransient(t=tau_out * t_ref, h_central=np.array([r.h_central for r in rows]),
-                             h_min=np.array([r.h_min for r in rows]), p_max=np.array([r.p_max for r in rows]),
-                             h0=np.array([r.state[-1] for r in rows]) * self.film_scale,
-                             load=np.array([ratio(t) for t in tau_out]) * w_ref, x=last.x, pressure=last.pressure,
-                             film=last.film, success=bool(sol.success),
-                             message="completed" if sol.success else sol.message, stats=sol.stats,
-                             n_steps=sol.stats.n_steps, n_jacobians=step.factorisations,
-                             wall_time=sol.stats.wall_time, final_state=np.append(u[:n], u[-1]),
-                             final_time=float(tau * t_ref))
+        def result(a, u, stats, message):
+            last = self._result(film, state(u), True, "", 0, [], 0.0)
+            return LineTransient(t=a["t"] * t_ref, h_central=a["h_central"], h_min=a["h_min"], p_max=a["p_max"],
+                                 h0=a["h0"], load=a["load"], x=last.x, pressure=last.pressure, film=last.film,
+                                 success=True, message=message or "completed", stats=stats, n_steps=stats.n_steps,
+                                 n_jacobians=stats.n_jac, wall_time=stats.wall_time, final_state=state(u),
+                                 final_time=float(a["t"][-1]) * t_ref if len(a["t"]) else 0.0)
+
+        loads = np.array([ratio(tau) for tau in np.linspace(0.0, t_end / t_ref, n_out)])
+        key = dict(contact=contact_digest(self), nodes=int(self.grid.n),
+                   load=hashlib.sha256(loads.tobytes()).hexdigest()[:16])
+        return run_content_transient(content, self.lam, u0, ratio, t_end / t_ref, n_out, sample, result, settings,
+                                     max_steps, key, "line contact (film content, FBNS)")
 
     def _result(self, film, u, ok, msg, iterations, norms, wall) -> LineSteady:
         p, h0 = u[:-1], u[-1]

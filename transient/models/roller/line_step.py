@@ -28,13 +28,10 @@ from scipy.sparse import linalg as spla
 from threadpoolctl import threadpool_limits
 
 from transient.checks import check_choice
+from transient.models.ehl.film_run import TRANSIENT_SERIES, run_film
 from transient.models.roller.line_newton import content_newton, merit
-from transient.solvers.integrate import Problem, Steps
-from transient.solvers.integrate import solve as integrate
 from transient.solvers.integrate.stepper import StepSolve
 
-#: the error test's absolute tolerance as a fraction of rtol: a scaled pressure or content below 1e-2 counts as 1e-2
-ATOL_PER_RTOL = 1e-2
 #: simplified Newton (:class:`FrozenSchur`): the factors are reused while the BDF2 coefficient ``cj`` stays within
 #: this relative change of the one they were built with (IDA's rule, 25 %), the corrections shrink the residual by
 #: ``SIMPLIFIED_RATE`` at least and converge within ``SIMPLIFIED_ITERS``; else full Newton from the same start
@@ -141,7 +138,7 @@ class LineFilmStep(StepSolve):
     """FBNS Newton on one BDF2 step of the film ``content`` (a :class:`~transient.models.roller.line_fbns.LineContentFilm` or a
     :class:`~transient.models.roller.roller_fbns.RollerContentFilm`) with the storage
     coefficient ``kappa`` under the load ratio ``load_ratio(tau)`` (``W/W_ref``), from the state ``u0`` at
-    ``tau = 0``, to the scaled residual ``tol``. Newton starts from the stepper's predictor where its content
+    ``tau = t0``, to the scaled residual ``tol``. Newton starts from the stepper's predictor where its content
     is non-negative, else (and after a failure from the predictor) from the
     last state; ``last``: the last accepted ``(tau, state)``."""
 
@@ -149,7 +146,7 @@ class LineFilmStep(StepSolve):
     test_first_step = False  # a start off the complementarity (dry, or a full outlet): the first step is the jump onto it
 
     def __init__(self, content, kappa: float, u0, load_ratio, tol: float = 1e-10, max_iter: int = 30,
-                 reuse: str = "preconditioner"):
+                 reuse: str = "preconditioner", t0: float = 0.0):
         self.content, self.kappa, self.load_ratio = content, float(kappa), load_ratio
         self.tol, self.max_iter = tol, max_iter
         self.reuse = check_choice("reuse", reuse, REUSE)
@@ -159,7 +156,7 @@ class LineFilmStep(StepSolve):
         self.factorisations = 0
         self.simplified = 0
         self.frozen = None
-        self.last = (0.0, np.asarray(u0, float))
+        self.last = (t0, np.asarray(u0, float))
 
     def solve(self, t, cj, history, ts, ys, y_pred):
         n = self.content.n
@@ -222,18 +219,17 @@ class LineFilmStep(StepSolve):
         return self.newton + self.simplified, self.factorisations
 
 
-def run_content_transient(content, kappa: float, u0, ratio, tau_end: float, rtol: float, n_out: int,
-                          max_steps: int, time_budget, name: str, observe):
+def run_content_transient(content, kappa: float, u0, ratio, tau_end: float, n_out: int, sample, result, settings,
+                          max_steps: int, key: dict, label: str):
     """Integrate the film ``content`` from ``u0`` to the scaled time ``tau_end`` by BDF2 on :class:`LineFilmStep`
-    under the load ratio ``ratio(tau)``, calling ``observe(tau, u)`` at ``n_out`` equally spaced outputs; the
-    line contact's and the roller's ``transient(method="bdf2")``. Returns the integrator's solution and the step
-    solve (its ``last`` state, its ``factorisations``)."""
-    step = LineFilmStep(content, kappa, u0, ratio)
-    problem = Problem(y0=u0, step_solve=step, name=name)
+    under the load ratio ``ratio(tau)`` on the one run driver (:func:`~transient.models.ehl.film_run.run_film`:
+    ``n_out`` outputs ``sample(tau, u)`` of :data:`~transient.models.ehl.film_run.TRANSIENT_SERIES`,
+    ``result(arrays, last_state, stats, message)``,
+    ``settings`` the run's ``(Integration, LongRun)``); the line contact's and the roller's
+    ``transient(method="bdf2")``."""
+    ig, lr = settings
     # one BLAS thread: the step's dense solves are too small for threads to pay (measured on a 401-node
     # line: LAPACK's solve of one Schur matrix 4 ms CPU on one thread, 74 ms on two busy cores)
     with threadpool_limits(limits=1, user_api="blas"):
-        sol = integrate(problem, np.linspace(0.0, tau_end, n_out), method="bdf2", rtol=rtol,
-                        atol=ATOL_PER_RTOL * rtol, steps=Steps(first_step=1e-3, max_steps=max_steps), store=False,
-                        observer=observe, time_budget=time_budget)
-    return sol, step
+        return run_film(label, lambda u, tau: LineFilmStep(content, kappa, u, ratio, t0=tau), u0, tau_end, n_out,
+                        sample, TRANSIENT_SERIES, result, ig, lr, max_steps, dict(key, kappa=kappa))
