@@ -188,7 +188,9 @@ def test_first_temperatures_follow_their_viscosity():
     assert abs(heated.max() - hottest) < 0.3 * (hottest - OIL.supply_temperature)
     assert np.all(heated >= OIL.supply_temperature - 1e-9)
     # the same fixed point from the plain alternation (its 40 K step limit: docs/validation.md)
-    plain_alternation = lambda energy, r, T, low, high: energy.solve_rates(r).temperature  # noqa: E731
+    def plain_alternation(energy, r, T, low, high):
+        return energy.solve_rates(r).temperature
+
     with pytest.MonkeyPatch.context() as mp:
         mp.setattr(thd, "heated_temperatures", plain_alternation)
         mp.setattr(thd, "MAX_STEP_K", 40.0)

@@ -14,11 +14,10 @@ from __future__ import annotations
 import dataclasses
 
 import numpy as np
-
-from transient.models.journal.film import film_geometry
 import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
+from transient.models.journal.film import film_geometry
 from transient.models.journal.thermal import ENERGY_ORDERING, EnergyEquation
 from transient.physics.lubricant import TEMPERATURE_RANGE_K, VOGEL
 
@@ -83,7 +82,7 @@ def anderson(inputs, outputs, low, high):
 
 def viscosity_slope(law, temperature):
     """``d ln mu / dT`` [1/K] of a temperature law at ``temperature`` [K] (the Barus factor does not depend on T)."""
-    code, a, b, c = law.kernel_args()
+    code, _, b, c = law.kernel_args()
     if code == VOGEL:
         return -b / (temperature - c) ** 2
     return np.full(np.shape(temperature), -b)

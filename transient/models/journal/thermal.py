@@ -274,7 +274,7 @@ class EnergyEquation:
         x = spla.splu(A, permc_spec=ENERGY_ORDERING).solve(rhs)
         return self.balance(r, x[:self.film.n], x[self.film.n:])
 
-    def system(self, r: "EnergyRates", capacity=None, T_old=None):
+    def system(self, r: EnergyRates, capacity=None, T_old=None):
         """The equations of :meth:`solve_rates` as a CSC matrix and right side (cells' temperatures, then the
         feeds' mixing temperatures)."""
         film, th = self.film, self.thermal
