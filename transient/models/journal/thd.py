@@ -1,7 +1,9 @@
 """Steady thermohydrodynamic (THD) journal film: the Elrod film with a per-cell viscosity
 (:mod:`transient.models.journal.viscous_film`) and the energy equation (:mod:`transient.models.journal.thermal`),
 solved alternately (Picard): the film at the viscosities of the last temperatures, the temperatures from that film's
-flows and dissipation, until the temperatures change by less than ``ThermalFilm.tolerance`` [K]. The equilibrium
+flows and dissipation (each cell's dissipation following the viscosity of its new temperature:
+:func:`heated_temperatures`), until the plain energy solve's temperatures change by less than
+``ThermalFilm.tolerance`` [K]. The equilibrium
 interleaves the same alternation with the Newton step on the journal position (its force sensitivities at frozen
 temperatures), and stops when both the force balance and the temperatures have converged.
 
@@ -123,7 +125,8 @@ def heated_temperatures(energy, r, temperature, low, high):
 
 def steady(bearing, film, X, Y):
     """The steady THD film at (X, Y): ``(u, newton iterations, EnergyBalance, alternations)``. Each alternation
-    solves the film at the last temperatures' viscosities (chord Newton from the last film), then the temperatures;
+    solves the film at the last temperatures' viscosities (chord Newton from the last film), then the temperatures
+    (:func:`heated_temperatures`);
     the next temperatures by :func:`anderson` over the last ``ANDERSON_DEPTH`` alternations."""
     th = bearing.thermal
     energy = EnergyEquation(film, th)
