@@ -166,3 +166,35 @@ def test_pressure_viscosity_thickens_the_loaded_film():
     p = s.pressure  # above the cavitation pressure, 0 Pa here
     mu_T = OIL.viscosity(s.temperature)
     assert np.allclose(s.viscosity_field, mu_T * np.exp(2e-8 * np.maximum(p, 0.0)), rtol=1e-3)
+
+
+def test_first_temperatures_follow_their_viscosity():
+    """From the film at the supply viscosity (e/C 0.9, 40 x 6) the plain energy solve overshoots the THD film's
+    hottest temperature by far (the cold oil's dissipation); the solve whose dissipation follows each cell's new
+    viscosity lands near it, and the alternation built on it settles on the same film as the plain alternation."""
+    b = thermal_bearing()
+    X, Y = 0.9, 0.0
+    state = b.steady_state(0.9, SPEED)
+    f = b.film(SPEED)
+    T0 = thd._start(f, b.thermal, b.viscosity)
+    u, *_ = b.film_solve(f, X, Y)
+    E = EnergyEquation(f, b.thermal)
+    f.residual(u, X, Y)
+    rates = E.rates()
+    plain = E.solve_rates(rates).temperature
+    heated = thd.heated_temperatures(E, rates, T0, OIL.supply_temperature, 800.0)[:f.n]
+    hottest = state.max_temperature
+    assert plain.max() - hottest > 50.0
+    assert abs(heated.max() - hottest) < 0.3 * (hottest - OIL.supply_temperature)
+    assert np.all(heated >= OIL.supply_temperature - 1e-9)
+    # the same fixed point from the plain alternation (its 40 K step limit: docs/validation.md)
+    def plain_alternation(energy, r, T, low, high):
+        return energy.solve_rates(r).temperature
+
+    with pytest.MonkeyPatch.context() as mp:
+        mp.setattr(thd, "heated_temperatures", plain_alternation)
+        mp.setattr(thd, "MAX_STEP_K", 40.0)
+        old = b.steady_state(0.9, SPEED)
+    assert old.thermal_iterations > state.thermal_iterations
+    assert np.max(np.abs(old.temperature - state.temperature)) <= 10 * OIL.tolerance
+    assert old.load == pytest.approx(state.load, rel=1e-6)

@@ -106,12 +106,12 @@ def test_long_time_limit_is_the_thermal_equilibrium(cold_start):
 
 def test_energy_balance_per_revolution(cold_start):
     """Heat made = heat carried away and conducted + the change of the heat stored, per thermal interval (1 rev),
-    within 1 % of the heat made after the first interval."""
+    within 1e-3 of the heat made in every interval, the first of the cold start included (measured <= 8.5e-5)."""
     s, r = cold_start
     h = r.heat_balance[0]
     error = h["stored"] - (h["dissipation"] - h["heat_out"])
     assert h["dissipation"].size == 10
-    assert np.all(np.abs(error[1:]) <= 0.01 * h["dissipation"][1:])
+    assert np.all(np.abs(error) <= 1e-3 * h["dissipation"])
     assert h["stored"][0] > 0.3 * h["dissipation"][0]  # a transient: the film stores much of its heat at first
 
 

@@ -1,7 +1,9 @@
 """Steady thermohydrodynamic (THD) journal film: the Elrod film with a per-cell viscosity
 (:mod:`transient.models.journal.viscous_film`) and the energy equation (:mod:`transient.models.journal.thermal`),
 solved alternately (Picard): the film at the viscosities of the last temperatures, the temperatures from that film's
-flows and dissipation, until the temperatures change by less than ``ThermalFilm.tolerance`` [K]. The equilibrium
+flows and dissipation (each cell's dissipation following the viscosity of its new temperature:
+:func:`heated_temperatures`), until the plain energy solve's temperatures change by less than
+``ThermalFilm.tolerance`` [K]. The equilibrium
 interleaves the same alternation with the Newton step on the journal position (its force sensitivities at frozen
 temperatures), and stops when both the force balance and the temperatures have converged.
 
@@ -14,17 +16,25 @@ from __future__ import annotations
 import dataclasses
 
 import numpy as np
+import scipy.sparse as sp
+import scipy.sparse.linalg as spla
 
 from transient.models.journal.film import film_geometry
-from transient.models.journal.thermal import EnergyEquation
-from transient.physics.lubricant import TEMPERATURE_RANGE_K
+from transient.models.journal.thermal import ENERGY_ORDERING, EnergyEquation
+from transient.physics.lubricant import TEMPERATURE_RANGE_K, VOGEL
 
 #: Alternations :func:`anderson` combines (measured in docs/validation.md, "Thermal films").
 ANDERSON_DEPTH = 4
-#: Largest change of a cell's temperature from one alternation to the next [K]: the first temperatures, from the
-#: film at the supply viscosity, overshoot (157 K above the converged 380 K at e/C = 0.9), and a film solved at
-#: viscosities that far off takes the chord Newton out of its range (measured in docs/validation.md).
-MAX_STEP_K = 40.0
+#: Largest change of a cell's temperature from one alternation to the next [K], a guard on Anderson's extrapolation:
+#: a film solved at viscosities far off takes the chord Newton out of its range. (With the plain energy solve the
+#: first temperatures overshot by 157 K at e/C = 0.9 and a 40 K limit was needed; :func:`heated_temperatures` does
+#: not overshoot and a 40 K limit then costs two alternations there: docs/validation.md.)
+MAX_STEP_K = 100.0
+#: Newton iterations of :func:`heated_temperatures` at most (it stops at ``ThermalFilm.tolerance``).
+HEATED_NEWTON_ITERATIONS = 8
+#: ... or once its step is below this fraction of the largest change from the film's temperatures (an alternation
+#: far from the fixed point needs no more).
+HEATED_RELATIVE_TOLERANCE = 1e-2
 #: Weight of the journal position against the temperatures in the equilibrium's mixing [K per unit of C].
 POSITION_KELVIN = 100.0
 
@@ -72,9 +82,51 @@ def anderson(inputs, outputs, low, high):
     return np.clip(g - dG @ gamma, low, high)
 
 
+def viscosity_slope(law, temperature):
+    """``d ln mu / dT`` [1/K] of a temperature law at ``temperature`` [K] (the Barus factor does not depend on T)."""
+    code, _, b, c = law.kernel_args()
+    if code == VOGEL:
+        return -b / (temperature - c) ** 2
+    return np.full(np.shape(temperature), -b)
+
+
+def heated_temperatures(energy, r, temperature, low, high):
+    """The temperatures of the film's rates ``r`` (solved at the cells' ``temperature`` [K]) with each cell's
+    dissipation following the viscosity of its new temperature, ``Phi_i mu(T'_i) / mu(T_i)``: at a fixed film shape
+    the Couette shear goes like mu, and the film's pressures, so the Poiseuille dissipation, do too. Newton on the
+    energy equations with the dissipation's slope ``-Phi_i d ln mu / dT >= 0`` added to the free cells' diagonal
+    (still an M-matrix), from ``temperature``, to ``ThermalFilm.tolerance`` or ``HEATED_RELATIVE_TOLERANCE`` of the
+    change, every iterate clipped to [low, high].
+    Where ``T' = T`` the equations are the plain ones: the alternation's fixed point is the same THD film, but the
+    alternation's strongest feedback -- hotter oil, thinner oil, less heat -- is taken inside each temperature solve
+    (the first temperatures from the film at the supply viscosity no longer overshoot: docs/validation.md).
+    Returns the cells' and the feeds' temperatures."""
+    th, film = energy.thermal, energy.film
+    n, free = film.n, energy.free
+    law = th.law
+    mu = law.at(temperature)
+    scale = energy.power_unit / energy.heat_unit
+    x = np.concatenate([temperature, np.full(energy.n_feeds, th.supply_temperature)])
+    tol = th.tolerance
+    for _ in range(HEATED_NEWTON_ITERATIONS):
+        T = x[:n]
+        source = r.source * law.at(T) / mu
+        A, rhs = energy.system(r._replace(source=source))
+        slope = np.where(free, -scale * source * viscosity_slope(law, T), 0.0)
+        J = A + sp.diags(np.concatenate([slope, np.zeros(energy.n_feeds)]), format="csc")
+        dx = spla.splu(J, permc_spec=ENERGY_ORDERING).solve(rhs - A @ x)
+        x = np.clip(x + dx, low, high)
+        step = np.max(np.abs(dx[:n]))
+        tol = max(tol, HEATED_RELATIVE_TOLERANCE * float(np.max(np.abs(x[:n] - temperature))))
+        if step <= tol:
+            break
+    return x
+
+
 def steady(bearing, film, X, Y):
     """The steady THD film at (X, Y): ``(u, newton iterations, EnergyBalance, alternations)``. Each alternation
-    solves the film at the last temperatures' viscosities (chord Newton from the last film), then the temperatures;
+    solves the film at the last temperatures' viscosities (chord Newton from the last film), then the temperatures
+    (:func:`heated_temperatures`);
     the next temperatures by :func:`anderson` over the last ``ANDERSON_DEPTH`` alternations."""
     th = bearing.thermal
     energy = EnergyEquation(film, th)
@@ -83,11 +135,14 @@ def steady(bearing, film, X, Y):
     u, its, _ = bearing.film_solve(film, X, Y)
     inputs, outputs = [], []
     for k in range(th.max_iterations):
-        balance = energy.solve(u, X, Y)
+        film.residual(u, X, Y)  # the cell fields of the state
+        r = energy.rates()
+        balance = energy.solve_rates(r)
         change = float(np.max(np.abs(balance.temperature - T)))
         if change <= th.tolerance:
             return u, its, balance, k + 1
-        inputs, outputs = (inputs + [T])[-ANDERSON_DEPTH:], (outputs + [balance.temperature])[-ANDERSON_DEPTH:]
+        heated = heated_temperatures(energy, r, T, low, TEMPERATURE_RANGE_K[1])[:film.n]
+        inputs, outputs = (inputs + [T])[-ANDERSON_DEPTH:], (outputs + [heated])[-ANDERSON_DEPTH:]
         T = np.clip(anderson(inputs, outputs, low, TEMPERATURE_RANGE_K[1]), T - MAX_STEP_K, T + MAX_STEP_K)
         if not update_fluidity(film, th, T, bearing.viscosity):  # an isoviscous oil: the film is the same
             return u, its, energy.solve(u, X, Y), k + 1
@@ -116,7 +171,9 @@ def equilibrium(bearing, film, wbar, tol, max_iter, start):
     for it in range(max_iter + th.max_iterations):
         u = bearing.film_solve(film, q[0], q[1])[0] if u is None else film.solve(q[0], q[1], u0=u, chord=True)[0]
         F, dF_dq, dF_dv = film.force_sensitivity(u, q[0], q[1])
-        balance = energy.solve(u, q[0], q[1])
+        film.residual(u, q[0], q[1])  # the cell fields of the state
+        rates = energy.rates()
+        balance = energy.solve_rates(rates)
         change = float(np.max(np.abs(balance.temperature - T)))
         r = np.array([F[0] + wbar, F[1]])
         if np.max(np.abs(r)) <= tol * max(wbar, 1e-300) and change <= th.tolerance:
@@ -126,7 +183,8 @@ def equilibrium(bearing, film, wbar, tol, max_iter, start):
         while np.hypot(*(q + lam * dq)) >= reach:
             lam *= 0.5
         x = np.concatenate([q * POSITION_KELVIN, T])
-        g = np.concatenate([(q + lam * dq) * POSITION_KELVIN, balance.temperature])
+        heated = heated_temperatures(energy, rates, T, low[2], high[2])[:film.n]
+        g = np.concatenate([(q + lam * dq) * POSITION_KELVIN, heated])
         inputs, outputs = (inputs + [x])[-ANDERSON_DEPTH:], (outputs + [g])[-ANDERSON_DEPTH:]
         nxt = anderson(inputs, outputs, low, high)
         q_next = nxt[:2] / POSITION_KELVIN

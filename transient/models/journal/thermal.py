@@ -270,6 +270,13 @@ class EnergyEquation:
         free of divergence; the flux form would then make ``T div Q`` a spurious source), ``capacity T_old`` the
         right side -- every row sums to ``capacity + w`` > 0, a diagonally dominant M-matrix: no temperature leaves
         the range of the old, supply, wall and heated ones."""
+        A, rhs = self.system(r, capacity, T_old)
+        x = spla.splu(A, permc_spec=ENERGY_ORDERING).solve(rhs)
+        return self.balance(r, x[:self.film.n], x[self.film.n:])
+
+    def system(self, r: EnergyRates, capacity=None, T_old=None):
+        """The equations of :meth:`solve_rates` as a CSC matrix and right side (cells' temperatures, then the
+        feeds' mixing temperatures)."""
         film, th = self.film, self.thermal
         q_in, q_rec, carry = self.carry_over(r)
         _, T_wall = self.wall_coefficients()
@@ -290,9 +297,7 @@ class EnergyEquation:
             vals = np.concatenate([vals, (capacity - net_out)[cells]])
             rhs = rhs.copy()
             rhs[cells] += capacity[cells] * T_old[cells]
-        A = sp.csc_matrix((vals, (rows, cols)), shape=(N, N))
-        x = spla.splu(A, permc_spec=ENERGY_ORDERING).solve(rhs)
-        return self.balance(r, x[:film.n], x[film.n:])
+        return sp.csc_matrix((vals, (rows, cols)), shape=(N, N)), rhs.copy()
 
     def carry_over(self, r: "EnergyRates"):
         """Per feed: the inflow ``Q_in``, the recirculated flow ``Q_rec`` and the carry-over fraction of ``r``."""

@@ -15,13 +15,16 @@ orbit's steps. So the run goes in thermal intervals of ``thermal_interval`` revo
   the flows, the dissipation, the wall coefficients and the oil's content averaged over the interval (trapezoid);
 * at its end the temperatures take one backward-Euler step of the interval's length: the energy equation of
   :mod:`~transient.models.journal.thermal` on the mean flows and dissipation, with the cells' heat capacity ``rho c_p
-  (m A C R^2) + c_w A / A_film`` (oil content ``m = H theta``, the wall's share by area) on the diagonal::
+  (m_0 A C R^2) + c_w A / A_film`` (oil content ``m_0 = H theta`` at the interval's start, the wall's share by area)
+  on the diagonal, in the advective form::
 
-      (c_i / dt) (T_i^+ - T_i) + sum_faces rho c_p Q_f T_up(f)^+ + w_i (T_i^+ - T_w) = Phi_i
+      (c_i / dt) (T_i^+ - T_i) + sum_inflows rho c_p Q_f (T_i^+ - T_up(f)^+) + w_i (T_i^+ - T_w) = Phi_i
 
   -- an M-matrix like the steady one (the capacity only adds to its diagonal): the temperatures stay within the
   supply, wall and heated range (no overshoot), and summed over the cells the step is the interval's energy
-  balance exactly. The viscosities of the new temperatures (at the interval's last pressures) go into the film.
+  balance to the mass balance of the sampled flows (the capacity at the start content makes the advective form the
+  conservative one: :mod:`~transient.models.journal.film_temperatures`). The viscosities of the new temperatures
+  (at the interval's last pressures) go into the film.
 
 The splitting error is first order in the interval (the film lags the temperatures by one interval, the temperatures
 see the interval's mean flows): the long-time limit at constant speed is not affected (a fixed point of the
