@@ -10,7 +10,7 @@ import pytest
 from transient.models.point.grid_verdict import FORMAL_ORDER, error_estimate
 from transient.models.roller import RollerContact, TaperedRoller
 from transient.models.roller.line_fbns import schur_system
-from transient.models.roller.line_fft import SchurOperator
+from transient.models.roller.line_fft import FORCING_GAMMA, FORCING_MAX, RTOL, SchurOperator, forcing_term
 from transient.models.roller.line_newton import content_newton
 from transient.models.roller.results import InexactStepWarning
 from transient.models.roller.roller_fbns import RollerContentFilm, content_start
@@ -86,6 +86,29 @@ def test_line_preconditioned_newton_converges_with_few_factorisations():
     u, ok, st = content_newton(lines, content_start(c, lines), tol=1e-9)
     assert ok and st.krylov_misses == 0 and st.factorisations < st.iterations
     assert abs(lines.equations(u)["load"]) < 1e-9
+
+
+def test_forcing_terms_follow_the_newton_convergence_and_stop_at_the_tolerance():
+    """Eisenstat-Walker choice 2: the first step at the cap; a quadratic decrease asks for ``gamma`` times its square;
+    the safeguard keeps a term that fell from a large one; no term below half the Newton tolerance over ``|F|``."""
+    assert forcing_term([1.0], None, 1e-8) == FORCING_MAX
+    assert forcing_term([1.0, 0.01], FORCING_MAX, 1e-12) == pytest.approx(FORCING_GAMMA * 1e-4)
+    assert forcing_term([1e-3, 1e-6, 1e-9], 1e-3, 1e-12) == pytest.approx(0.5 * 1e-12 / 1e-9)
+    assert forcing_term([1.0, 1e-4, 1e-10], 1e-8, 1e-20) == RTOL
+    assert forcing_term([1.0, 0.99], 0.5, 1e-8) == FORCING_MAX
+
+
+def test_forcing_terms_give_the_same_film_with_fewer_gmres_iterations(monkeypatch):
+    c = short_roller((33, 41))
+    _, lines, _ = perturbed(c)
+    u0 = content_start(c, lines)
+    uf, okf, stf = content_newton(lines, u0, tol=1e-9)
+    monkeypatch.setattr(lines, "forcing", False)
+    ur, okr, str_ = content_newton(lines, u0, tol=1e-9)
+    assert okf and okr and stf.krylov_misses == str_.krylov_misses == 0
+    assert stf.krylov < str_.krylov
+    n = lines.n
+    assert np.max(np.abs(uf[:n] - ur[:n])) < 1e-7 * np.max(ur[:n])
 
 
 @pytest.mark.slow
