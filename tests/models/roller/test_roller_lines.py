@@ -236,3 +236,22 @@ def test_a_load_whose_default_grid_is_unverified_is_refused_by_name():
                                                speed=park.SPEED)
     with pytest.raises(ValueError, match=r"load = .* N .*allowed: .*grid=\('hybrid', nx, ny\)"):
         contact.grid_spec
+
+
+def test_the_paper_load_takes_none_of_the_matrix_free_steps(monkeypatch):
+    """At the paper's loading the default solve is the Reynolds-condition form on a clustered grid: the x-line
+    preconditioner, the matrix-free steps (their forcing terms) and the roller's local product are never reached,
+    so that film is the one those paths had before they changed."""
+    from transient.models.roller import line_fft, roller_fbns
+
+    def never(*args, **kwargs):
+        raise AssertionError("a matrix-free path was taken at the paper's load")
+
+    monkeypatch.setattr(line_fft.MatrixFreeStep, "solve", never)
+    monkeypatch.setattr(line_fft, "forcing_term", never)
+    monkeypatch.setattr(LineBlocks, "__init__", never)
+    monkeypatch.setattr(roller_fbns, "local_product", never)
+    c = RollerContact.from_dimensionless(**CASE, roller=TaperedRoller(RM, 10.0, 2 * RM, 0.5 * RM, 0.2 * RM, 0.002),
+                                         grid=("clustered", 40, 25))
+    s = c.steady()
+    assert s.success and s.solver_info["method"] == "reynolds"
