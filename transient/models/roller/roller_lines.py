@@ -6,12 +6,13 @@ pair of rows (:class:`~transient.physics.elasticity.RowConvolution`): the Schur 
 rows) is solved by GMRES with its FFT products, right-preconditioned by :class:`LineBlocks`: the Schur matrix
 kept on each x-line (every node of a row coupled with every node of the same row, the elastic coupling exact)
 plus the y stencil (each node with the same x node of the rows above and below), a banded matrix of half-width
-``nx`` factorised by LAPACK's banded LU (``dgbtrf``) and bordered by the ``h0`` column and the load row. It is
+``nx`` factorised by LAPACK's banded LU (``sgbtrf``, single precision: :data:`BAND_DTYPE`) and bordered by the ``h0`` column and the load row. It is
 Venner & Lubrecht's line relaxation along x (*Multilevel Methods in Lubrication*, Elsevier 2000, ch. 11) used
 as a preconditioner: the heavily loaded rows' Couette-elastic coupling along the flow is kept whole, which the
 coarse-grid correction of :mod:`transient.models.roller.roller_fft` misses (its coarse Schur matrix is
 ill-conditioned at service loads and one coarse correction multiplies the residual, docs/validation.md).
-The factors are kept across Newton iterations while GMRES stays within :data:`REFRESH_ITERS`.
+The factors are kept across Newton iterations while GMRES stays within :data:`REFRESH_ITERS`; the Newton steps
+take Eisenstat-Walker forcing terms (:data:`FORCING`).
 """
 
 from __future__ import annotations
@@ -89,7 +90,7 @@ class LineBlocks:
                   nx, g.x.size, ab)
         self.lu, self.piv, info = factor(ab, nx, nx, overwrite_ab=True)
         if info < 0:
-            raise ValueError(f"dgbtrf: illegal argument {-info}")
+            raise ValueError(f"{factor.typecode}gbtrf: illegal argument {-info}")
         # info > 0: an exactly singular band (no such step measured); its solves are not finite, so GMRES misses
         # its tolerance and the step is flagged (line_newton.content_newton)
         self.nx, self.n = nx, n
