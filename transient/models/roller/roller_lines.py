@@ -90,7 +90,7 @@ class LineBlocks:
                   nx, g.x.size, ab)
         self.lu, self.piv, info = factor(ab, nx, nx, overwrite_ab=True)
         if info < 0:
-            raise ValueError(f"{factor.typecode}gbtrf: illegal argument {-info}")
+            raise ValueError(f"LAPACK ?gbtrf: illegal argument {-info}")
         # info > 0: an exactly singular band (no such step measured); its solves are not finite, so GMRES misses
         # its tolerance and the step is flagged (line_newton.content_newton)
         self.nx, self.n = nx, n
