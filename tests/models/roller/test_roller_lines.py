@@ -10,7 +10,7 @@ import pytest
 from transient.models.point.grid_verdict import FORMAL_ORDER, error_estimate
 from transient.models.roller import RollerContact, TaperedRoller
 from transient.models.roller.line_fbns import schur_system
-from transient.models.roller.line_fft import SchurOperator
+from transient.models.roller.line_fft import FORCING_GAMMA, FORCING_MAX, RTOL, SchurOperator, forcing_term
 from transient.models.roller.line_newton import content_newton
 from transient.models.roller.results import InexactStepWarning
 from transient.models.roller.roller_fbns import RollerContentFilm, content_start
@@ -88,6 +88,29 @@ def test_line_preconditioned_newton_converges_with_few_factorisations():
     assert abs(lines.equations(u)["load"]) < 1e-9
 
 
+def test_forcing_terms_follow_the_newton_convergence_and_stop_at_the_tolerance():
+    """Eisenstat-Walker choice 2: the first step at the cap; a quadratic decrease asks for ``gamma`` times its square;
+    the safeguard keeps a term that fell from a large one; no term below half the Newton tolerance over ``|F|``."""
+    assert forcing_term([1.0], None, 1e-8) == FORCING_MAX
+    assert forcing_term([1.0, 0.01], FORCING_MAX, 1e-12) == pytest.approx(FORCING_GAMMA * 1e-4)
+    assert forcing_term([1e-3, 1e-6, 1e-9], 1e-3, 1e-12) == pytest.approx(0.5 * 1e-12 / 1e-9)
+    assert forcing_term([1.0, 1e-4, 1e-10], 1e-8, 1e-20) == RTOL
+    assert forcing_term([1.0, 0.99], 0.5, 1e-8) == FORCING_MAX
+
+
+def test_forcing_terms_give_the_same_film_with_fewer_gmres_iterations(monkeypatch):
+    c = short_roller((33, 41))
+    _, lines, _ = perturbed(c)
+    u0 = content_start(c, lines)
+    uf, okf, stf = content_newton(lines, u0, tol=1e-9)
+    monkeypatch.setattr(lines, "forcing", False)
+    ur, okr, str_ = content_newton(lines, u0, tol=1e-9)
+    assert okf and okr and stf.krylov_misses == str_.krylov_misses == 0
+    assert stf.krylov < str_.krylov
+    n = lines.n
+    assert np.max(np.abs(uf[:n] - ur[:n])) < 1e-7 * np.max(ur[:n])
+
+
 @pytest.mark.slow
 def test_line_preconditioned_newton_converges_to_the_dense_paths_film():
     c = short_roller((33, 41))
@@ -104,7 +127,7 @@ def test_line_preconditioned_newton_converges_to_the_dense_paths_film():
 def test_a_newton_step_short_of_its_gmres_tolerance_is_not_taken_silently(monkeypatch):
     c = short_roller((33, 41))
     _, lines, u0 = perturbed(c)
-    monkeypatch.setattr(LineBlocks, "solve", lambda self, b: 1e-3 * b)  # a useless preconditioner
+    monkeypatch.setattr(LineBlocks, "solve", lambda self, b: 0.0 * b)  # a preconditioner that gives no step
     with pytest.warns(InexactStepWarning, match="GMRES short of its tolerance"):
         _, _, st = content_newton(lines, u0, tol=1e-9, max_iter=1)
     assert st.krylov_misses == 1
@@ -213,3 +236,22 @@ def test_a_load_whose_default_grid_is_unverified_is_refused_by_name():
                                                speed=park.SPEED)
     with pytest.raises(ValueError, match=r"load = .* N .*allowed: .*grid=\('hybrid', nx, ny\)"):
         contact.grid_spec
+
+
+def test_the_paper_load_takes_none_of_the_matrix_free_steps(monkeypatch):
+    """At the paper's loading the default solve is the Reynolds-condition form on a clustered grid: the x-line
+    preconditioner, the matrix-free steps (their forcing terms) and the roller's local product are never reached,
+    so that film is the one those paths had before they changed."""
+    from transient.models.roller import line_fft, roller_fbns
+
+    def never(*args, **kwargs):
+        raise AssertionError("a matrix-free path was taken at the paper's load")
+
+    monkeypatch.setattr(line_fft.MatrixFreeStep, "solve", never)
+    monkeypatch.setattr(line_fft, "forcing_term", never)
+    monkeypatch.setattr(LineBlocks, "__init__", never)
+    monkeypatch.setattr(roller_fbns, "local_product", never)
+    c = RollerContact.from_dimensionless(**CASE, roller=TaperedRoller(RM, 10.0, 2 * RM, 0.5 * RM, 0.2 * RM, 0.002),
+                                         grid=("clustered", 40, 25))
+    s = c.steady()
+    assert s.success and s.solver_info["method"] == "reynolds"

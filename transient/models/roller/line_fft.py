@@ -48,6 +48,24 @@ NEAR = 0
 RTOL, RESTART = 1e-8, 40
 #: GMRES iterations above which the coarse factorisation is refreshed at the next Newton iteration
 REFRESH_ITERS = 30
+#: forcing terms of a film that asks for them (``forcing = True``): Eisenstat & Walker's choice 2 (*SIAM J. Sci.
+#: Comput.* 17, 1996), ``eta_k = gamma (|F_k| / |F_k-1|)^2`` safeguarded by ``gamma eta_k-1^2``, at most
+#: ``FORCING_MAX``, at least :data:`RTOL` and half the Newton tolerance over ``|F_k|`` (no oversolving)
+FORCING_GAMMA, FORCING_MAX = 0.9, 1e-2
+
+
+def forcing_term(norms, eta_prev: float | None, tol: float) -> float:
+    """GMRES's relative tolerance for the next Newton step (:data:`FORCING_GAMMA`): ``norms`` the Newton's scaled
+    residual norms so far, ``eta_prev`` the last step's term (None at the first step), ``tol`` the Newton's."""
+    if eta_prev is None or len(norms) < 2:
+        eta = FORCING_MAX
+    else:
+        eta = FORCING_GAMMA * (norms[-1] / norms[-2]) ** 2
+        guard = FORCING_GAMMA * eta_prev ** 2
+        if guard > 0.1:
+            eta = max(eta, guard)
+    eta = max(eta, 0.5 * tol / max(norms[-1], 1e-300))
+    return float(min(max(eta, RTOL), FORCING_MAX))
 
 
 def matrix_free(grid: TensorGrid) -> bool:
@@ -237,13 +255,16 @@ class MatrixFreeStep:
     :class:`TwoLevel`. A step whose GMRES misses its tolerance after a fresh preconditioner is counted in
     ``stats.krylov_misses``."""
 
-    def __init__(self, content):
+    def __init__(self, content, tol: float = 0.0):
         self.two_level = getattr(content, "two_level", None) or self._line_two_level
         self.refresh_iters = getattr(content, "refresh_iters", REFRESH_ITERS)
         self.factor = None if hasattr(content, "two_level") else coarsening_factor(content.nf)
         self.pre = None
         self.refresh = True
         self.coarse_kernel = None
+        #: the film's ``forcing`` (default False: every step to :data:`RTOL`): Eisenstat-Walker terms
+        #: (:func:`forcing_term`) toward the Newton tolerance ``tol``
+        self.forcing, self.tol, self.eta = bool(getattr(content, "forcing", False)), tol, None
 
     def _line_two_level(self, A, u):
         pre = TwoLevel(A, u, self.factor, coarse_kernel=self.coarse_kernel)
@@ -259,12 +280,15 @@ class MatrixFreeStep:
         else:
             self.pre.set_operator(A)
             fresh = False
-        z, its, ok = gmres_solve(A, r, self.pre, RTOL, restart=RESTART, max_iter=2 * RESTART)
+        rtol = RTOL
+        if self.forcing:
+            rtol = self.eta = forcing_term(stats.norms, self.eta, self.tol)
+        z, its, ok = gmres_solve(A, r, self.pre, rtol, restart=RESTART, max_iter=2 * RESTART)
         stats.krylov += its
         if not ok and not fresh:
             self.pre = self.two_level(A, u)
             stats.factorisations += 1
-            z, more, ok = gmres_solve(A, r, self.pre, RTOL, restart=RESTART, max_iter=4 * RESTART)
+            z, more, ok = gmres_solve(A, r, self.pre, rtol, restart=RESTART, max_iter=4 * RESTART)
             stats.krylov += more
         self.refresh = its > self.refresh_iters or not ok
         if not ok:  # an inexact step: counted, and the Newton warns (line_newton.content_newton)

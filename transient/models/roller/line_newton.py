@@ -130,7 +130,7 @@ def _content_newton(film, u0, tol, max_iter, step_max, pre):
             a_p, b_p, a_th, b_t = schur(film, u, e)
             r = schur_rhs(film, e, a_p, a_th)
             if step is None:
-                step = MatrixFreeStep(film)
+                step = MatrixFreeStep(film, tol)
             z = step.solve(film, u, e, b_p, b_t, r, stats)
         elif n < DIRECT_BELOW:
             S, r, (a_p, b_p, a_th, b_t) = schur_system(film, u, e)

@@ -28,6 +28,7 @@ from __future__ import annotations
 from types import SimpleNamespace
 
 import numpy as np
+from numba import njit
 
 from transient.checks import check_memory
 from transient.models.roller.ehl_problem import EHLFilm
@@ -62,6 +63,7 @@ class RollerContentFilm:
             raise ValueError(f"RollerContentFilm: matrix-free steps need a DC-FFT film, got elastic = {film.elastic!r}")
         if self.lines:
             self.refresh_iters = LineBlocks.refresh_iters
+            self.forcing = LineBlocks.forcing
         if film.elastic != "dense" and not self.matrix_free:
             check_memory(f"the dense influence matrix of this {film.grid.nx} x {film.grid.ny} grid",
                          dict(influence=8.0 * film.n_full * film.n, schur=12.0 * (film.n + 1) ** 2),
@@ -70,9 +72,6 @@ class RollerContentFilm:
         self.weight = film.area_w
         self.colp, self.colh = film.colp, film.colh
         self._hp = self.colh >= 0
-        self._hc = np.where(self._hp, self.colh, 0)
-        self._pp = self.colp >= 0
-        self._pc = np.where(self._pp, self.colp, 0)
 
     def split(self, u):
         """``(p, theta full (ny_full, nx_full), h0)``: theta = 1 on the boundary (a flooded inlet)."""
@@ -127,10 +126,7 @@ class RollerContentFilm:
 
     def jacobian_product(self, e, v_p, v_t) -> np.ndarray:
         """``J_p v_p + J_theta v_t``: the Reynolds rows' response to pressure and content changes."""
-        dh = self.base.deformation(v_p)
-        out = np.sum(np.where(self._hp, e["dh"] * dh[self._hc], 0.0), axis=1)
-        out += np.sum(np.where(self._pp, e["dp"] * v_p[self._pc] + e["dt"] * v_t[self._pc], 0.0), axis=1)
-        return out
+        return local_product(e["dh"], e["dp"], e["dt"], self.colh, self.colp, self.base.deformation(v_p), v_p, v_t)
 
     def residual(self, u) -> np.ndarray:
         """The whole residual ``[R, FB, load]`` (tests: finite differences)."""
@@ -152,6 +148,27 @@ class RollerContentFilm:
         J[n: 2 * n, n: 2 * n] = np.diag(g)
         J[-1, :n] = self.weight
         return J
+
+
+@njit(cache=True)
+def local_product(dh, dp, dt, colh, colp, h, v_p, v_t):
+    """Per row ``r``: ``sum_s dh[r, s] h[colh[r, s]] + dp[r, s] v_p[colp[r, s]] + dt[r, s] v_t[colp[r, s]]`` over the
+    slots present (column index >= 0): the Reynolds rows' response to a film change ``h`` (full nodes) and
+    pressure and content changes (interior nodes)."""
+    n, m = dh.shape
+    out = np.empty(n)
+    for r in range(n):
+        a = 0.0
+        for s in range(m):
+            if colh[r, s] >= 0:
+                a += dh[r, s] * h[colh[r, s]]
+        b = 0.0
+        for s in range(m):
+            q = colp[r, s]
+            if q >= 0:
+                b += dp[r, s] * v_p[q] + dt[r, s] * v_t[q]
+        out[r] = a + b
+    return out
 
 
 def carry_content(grid_from: TensorGrid, u, grid_to: TensorGrid, p_factor: float = 1.0) -> np.ndarray:
