@@ -51,7 +51,6 @@ import hashlib
 import math
 import time
 from contextlib import nullcontext
-from dataclasses import fields
 from functools import cached_property, partial
 from types import SimpleNamespace
 
@@ -60,7 +59,7 @@ from scipy.interpolate import RegularGridInterpolator
 from threadpoolctl import threadpool_limits
 
 from transient.checks import check_int, check_memory, check_positive, check_range
-from transient.models.ehl.film_run import contact_digest, transient_settings
+from transient.models.ehl.film_run import contact_digest, penalty_deprecated, transient_settings
 from transient.models.roller.continuation import PathResult, follow
 from transient.models.roller.dry import DryContact, DrySolver, dry_contact
 from transient.models.roller.ehl_problem import EHLFilm, interpolate_state, solve_steady
@@ -74,7 +73,7 @@ from transient.models.roller.transient import load_ratio, run_squeeze
 from transient.physics.line_formulas import dowson_toyoda_central
 from transient.physics.lubricant import DOWSON_HIGGINSON_PARK, Lubricant
 from transient.solvers.newton import NewtonError
-from transient.solvers.settings import Integration, LongRun, check_unused
+from transient.solvers.settings import Integration, LongRun
 
 PAPER_GRID = (94, 45)
 #: The methods :meth:`RollerContact.transient` offers: IDA on the penalty form, BDF2 on the film-content form.
@@ -782,28 +781,26 @@ class RollerContact:
                   ramp_time: float | None = None, max_steps: int = 5000, integration: Integration | None = None,
                   long_run: LongRun | None = None, **legacy) -> RollerTransient:
         """Transient EHL over ``[0, t_end]`` [s] on this contact's grid (dense elasticity: use a coarse clustered
-        grid, docs/ehl.md gives the cost): by IDA on the penalty form (:mod:`transient.models.roller.transient`, the
-        default) or by BDF2 on the film-content form (:mod:`transient.models.roller.line_step`) on the one run
-        driver (:mod:`transient.models.ehl.film_run`).
+        grid, docs/ehl.md gives the cost): by BDF2 on the film-content form (:mod:`transient.models.roller.line_step`)
+        on the one run driver (:mod:`transient.models.ehl.film_run`).
 
         ``load``: None (constant), a number [N] (a step from the starting load smoothed over
         ``ramp_time``, default one transit time c/u) or a function of t [s] -> N. ``start``: ``"dry"``
         -- the dry pressure with the film at the mid-plane centre lifted to ``initial_film`` [m] (default
         half the Dowson-Toyoda central film of the mid-plane) -- or a :class:`RollerSteady` of this
         contact. ``integration`` (:class:`~transient.solvers.settings.Integration`, ``rtol`` default 1e-4):
-        ``method="ida"`` (the default): the exit condition in penalty form, whose long-time limit is
-        ``steady(penalty=GAMMA)`` (:data:`transient.models.roller.transient.GAMMA`); ``method="bdf2"``: the exact
-        complementarity (the film content, cavitation mass-conserving), whose long-time limit is
-        ``steady(method="fbns")`` (at and below the paper case's load the same film as ``steady()``); the content
-        starts full where the start has pressure and mass-conserving where it has none
-        (:func:`~transient.models.roller.line_step.consistent_content`, or a film-content ``start``'s own);
-        ``max_steps`` bounds that run. It is not the default: where the load changes, nodes switch one after
-        another at the cavitation boundary and its error test holds the steps small (a dry start would take ~1e5
-        steps, docs/validation.md). ``long_run`` (:class:`~transient.solvers.settings.LongRun`, ``method="bdf2"``
-        only): checkpoint and resume, progress bar, ``stop``, ``time_budget`` [s of wall clock]. The loose keywords
-        ``rtol=``, ``method=``, ``time_budget=`` of earlier releases are deprecated.
+        ``method="bdf2"`` (the default): the exact complementarity (the film content, cavitation mass-conserving),
+        whose long-time limit is ``steady(method="fbns")`` (at and below the paper case's load the same film as
+        ``steady()``); the content starts full where the start has pressure and mass-conserving where it has none
+        (:func:`~transient.models.roller.line_step.consistent_content`, or a film-content ``start``'s own); the
+        nodes crossing the cavitation boundary in a step leave its error test (``LineFilmStep.switched``);
+        ``max_steps`` bounds the run. ``method="ida"``: the exit condition in penalty form, whose long-time limit
+        is ``steady(penalty=GAMMA)`` (:data:`transient.models.roller.transient.GAMMA`) -- deprecated, removed in
+        the next release. ``long_run`` (:class:`~transient.solvers.settings.LongRun`): checkpoint and resume,
+        progress bar, ``stop``, ``time_budget`` [s of wall clock]. The loose keywords ``rtol=``, ``method=``,
+        ``time_budget=`` of earlier releases are deprecated.
         """
-        ig, lr = transient_settings("RollerContact.transient", TRANSIENT_METHODS, "ida", integration, long_run,
+        ig, lr = transient_settings("RollerContact.transient", TRANSIENT_METHODS, "bdf2", integration, long_run,
                                     legacy)
         method = ig.method
         t_end = check_positive("t_end", t_end, "s")
@@ -813,7 +810,7 @@ class RollerContact:
         if method == "bdf2":
             max_steps = check_int("max_steps", max_steps, "-", 1, 10 ** 7)
         else:
-            check_unused("RollerContact.transient", "long_run", lr, [f.name for f in fields(LongRun)])
+            penalty_deprecated("RollerContact.transient", lr)
         nodes = self.grid.nx * self.grid.ny
         n = nodes + 1
         need = dict(elasticity=8.0 * nodes * nodes, outputs=3 * 8.0 * n_out * n)

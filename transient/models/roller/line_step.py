@@ -218,6 +218,19 @@ class LineFilmStep(StepSolve):
     def counts(self):
         return self.newton + self.simplified, self.factorisations
 
+    def switched(self, y_new, ys):
+        """The pressure and content of every node on the other side of the cavitation boundary (pressure
+        positive at one, zero at the other) at the step's end than at one of the predictor's points ``ys``: their
+        corner in time is the complementarity's, not a truncation error, so the stepper's error test leaves them
+        out."""
+        n = self.content.n
+        full = y_new[:n] > 0.0
+        out = np.zeros(y_new.size, dtype=bool)
+        for y in ys:
+            out[:n] |= full != (y[:n] > 0.0)
+        out[n:2 * n] = out[:n]
+        return out
+
 
 def run_content_transient(content, kappa: float, u0, ratio, tau_end: float, n_out: int, sample, result, settings,
                           max_steps: int, key: dict, label: str):
