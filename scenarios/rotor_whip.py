@@ -50,28 +50,23 @@ from pathlib import Path
 
 import numpy as np
 
-from transient import Integration, JournalBearing, LongRun, Recording, Rotor, RotorBearingSystem
+from transient import Integration, LongRun, Recording
 from transient.analysis.rotor import synchronous_amplitude, waterfall
-from transient.params import rho_kim
+from transient.bench.rotor_whip import whip_system
 from transient.plots import rotor as plots, save
 from transient.study.scenario import JsonRecord, fresh_advice, log, parser
 
 OUT = "rotor_whip"
-STRUCTURAL_DAMPING = 1e-5  # [s]: C = beta K damps the shaft's high bending modes (the stiff part of the system)
-UNBALANCE = 1e-4  # [kg m] at the disk
 OPR = 40  # outputs per revolution
 GRID = (76, 11)  # the whip study's grid (module docstring: its whirl against the paper's 151 x 21)
+MODES = 4  # the shaft's fixed-interface modes kept (module docstring: the whirl against the nodal rotor)
 RTOL = {"bdf2": 1e-4, "ida": 1e-5}  # the runs' tolerance by method (module docstring)
 
 
-def build(grid):
-    ex = Rotor.example()
-    rotor = Rotor(mass=ex.mass, stiffness=ex.stiffness, damping=STRUCTURAL_DAMPING * ex.stiffness,
-                  gyroscopic=ex.gyroscopic, nodes=ex.nodes, dofs=ex.dofs)
-    bearing = JournalBearing(**rho_kim.BEARING, grid=grid)
-    a, b = ex.bearing_nodes
-    disk = ex.disk_nodes[0]
-    return RotorBearingSystem(rotor, {a: bearing, b: bearing}, unbalance=[(disk, UNBALANCE, 0.0)]), a, disk
+def build(grid, modes=MODES):
+    """``(system, bearing node, disk node)`` (:func:`transient.bench.rotor_whip.whip_system`; ``modes`` None: the
+    nodal rotor)."""
+    return whip_system(grid, modes)
 
 
 def ramp(n0, n1, revolutions, t0=0.0):
@@ -98,14 +93,17 @@ def main(argv=None):
     ap.add_argument("--revolutions", type=float, help="revolutions of the run-up and of the coast-down (400; quick 30)")
     ap.add_argument("--method", choices=("bdf2", "ida"), default="bdf2",
                     help="integrator of the runs: BDF2 on the films' content form (default) or IDA")
+    ap.add_argument("--nodal", action="store_true",
+                    help=f"the nodal shaft (52 coordinates) instead of its {MODES} lowest fixed-interface modes")
     ap.add_argument("--fresh", action="store_true", help="ignore existing checkpoints")
     a = ap.parse_args(argv)
     grid = tuple(a.grid) if a.grid else ((32, 6) if a.quick else GRID)
     revs = a.revolutions or (30.0 if a.quick else 400.0)
     out = Path(a.out)
     out.mkdir(parents=True, exist_ok=True)
-    rec = JsonRecord(out / "rotor_whip.json", dict(grid=grid, revolutions=revs, quick=a.quick, method=a.method))
-    s, bnode, disk = build(grid)
+    rec = JsonRecord(out / "rotor_whip.json", dict(grid=grid, revolutions=revs, quick=a.quick, method=a.method,
+                                                  modes=None if a.nodal else MODES))
+    s, bnode, disk = build(grid, None if a.nodal else MODES)
     t0 = time.perf_counter()
     eq = s.equilibrium(3000.0)
     log(f"[rotor] grid {grid[0]} x {grid[1]}: bearing loads {eq.bearing_load.round(1)} N, e/C "
@@ -130,7 +128,7 @@ def main(argv=None):
 
     runs = {}
     for name, (n0, n1), start in (("run_up", (0.3 * th, 2.0 * th), None), ("coast_down", (2.0 * th, 0.3 * th), "run_up")):
-        ckpt = out / f"{name}_{a.method}_checkpoint.npz"
+        ckpt = out / f"{name}_{a.method}{'_nodal' if a.nodal else ''}_checkpoint.npz"
         if a.fresh and ckpt.exists():
             ckpt.unlink()
         log(f"[rotor] {name.replace('_', '-')} {n0:.0f} -> {n1:.0f} rpm over {revs:g} revolutions; checkpoint {ckpt}")
