@@ -52,15 +52,14 @@ import numpy as np
 
 from transient import Integration, LongRun, Recording
 from transient.analysis.rotor import synchronous_amplitude, waterfall
-from transient.bench.rotor_whip import whip_system
+from transient.bench.rotor_whip import MODES, whip_system  # MODES: the shaft's modes kept (module docstring)
 from transient.plots import rotor as plots, save
 from transient.study.scenario import JsonRecord, fresh_advice, log, parser
 
 OUT = "rotor_whip"
 OPR = 40  # outputs per revolution
 GRID = (76, 11)  # the whip study's grid (module docstring: its whirl against the paper's 151 x 21)
-MODES = 4  # the shaft's fixed-interface modes kept (module docstring: the whirl against the nodal rotor)
-RTOL = {"bdf2": 1e-4, "ida": 1e-5}  # the runs' tolerance by method (module docstring)
+RTOL = {"bdf2": 1e-3, "ida": 1e-5}  # the runs' tolerance by method (module docstring)
 
 
 def build(grid, modes=MODES):
