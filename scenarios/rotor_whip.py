@@ -33,7 +33,7 @@ shaft's modes"; ``transient bench rotor-whip``): in the nodal shaft the error te
 bending modes (252 Hz to 2.6 kHz on stiff supports, damping ratios 0.008-0.08), not the whirl. In the 4-mode shaft
 the bearing journals' velocities set the step: one whirl revolution on 51 x 11 (2x the threshold, disk swing 14.5
 C) takes 200 BDF2 steps at rtol 1e-3 against the nodal shaft's 512 (1,264 at rtol 1e-4), 1.8x less CPU at rtol 1e-3
-and 2.4x at 1e-4 (2.3x on 76 x 11 at 1e-3). Its error after one revolution against the nodal shaft at rtol 1e-6:
+and 2.4x at 1e-4 (2.3x on 76 x 11 at 1e-3; 1.6x two revolutions further into the whirl). Its error after one revolution against the nodal shaft at rtol 1e-6:
 2.8e-3 C at the disk (2e-4 of its swing), 6.4e-4 C at a bearing, the disk's largest swing -6e-4 relative (the
 reduction 3.7e-3 C, the time step at rtol 1e-3 against rtol 1e-6 9.6e-4 C).
 
