@@ -40,10 +40,10 @@ reduction 3.7e-3 C, the time step at rtol 1e-3 against rtol 1e-6 9.6e-4 C).
 Duration: the default (76 x 11, 400 revolutions each way) is checkpointed, so it can be stopped and resumed; it was
 not run to the end. About three quarters of its revolutions turn above the whirl threshold (the speed is linear in
 time from 0.3x to 2x it), where a whirl revolution of the 4-mode shaft at rtol 1e-3 on 76 x 11 costs 2.6-4.4 s of
-CPU on a machine loaded ~25 on 2 cores, growing with the whirl, 5-6 s in the settled whip (e/C 0.91; the nodal shaft
+CPU on a machine loaded ~25 on 2 cores, growing with the whirl, 3.5-5 s in the whip (e/C 0.91-0.94; the nodal shaft
 at rtol 1e-4 ~8 s on 51 x 11 early in the whirl). Measured as far as it went: the analyses and the run-up's first 280
 revolutions (to 1.7x the threshold, no whirl yet: the ramp outruns its growth) within 4 min of CPU, whip from
-revolution ~300, 310 revolutions after 6 min of CPU; the whole run is an estimated ~45 min of CPU there. ``--quick`` (32 x 6, 30 revolutions each way) with the nodal shaft
+revolution ~300, 330 revolutions after 7.2 min of CPU; the whole run is an estimated 30-40 min of CPU there. ``--quick`` (32 x 6, 30 revolutions each way) with the nodal shaft
 took about 2.5 min of CPU with plain BDF2 and about 3 min with ``--method ida``.
 """
 
