@@ -57,7 +57,7 @@ import numpy as np
 
 from transient import Integration, LongRun, Recording
 from transient.analysis.rotor import synchronous_amplitude, waterfall
-from transient.bench.rotor_whip import MODES, whip_system  # MODES: the shaft's modes kept (module docstring)
+from transient.bench.rotor_whip import MODES, whip_system
 from transient.plots import rotor as plots, save
 from transient.study.scenario import JsonRecord, fresh_advice, log, parser
 

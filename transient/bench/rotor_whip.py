@@ -95,9 +95,9 @@ def run(quick=False, log=print) -> dict:
     rows = {}
     for _ in range(2):
         for name, setting in SETTINGS.items():
-            for case, fn in (("rotor", lambda: rotor_run(timed, setting, settled_rotor)),
-                             ("journal", lambda: o.run(timed, integration=_integration(setting), recording=rec,
-                                                       long_run=lr, start=settled_orbit))):
+            for case, fn in (("rotor", lambda st=setting: rotor_run(timed, st, settled_rotor)),
+                             ("journal", lambda st=setting: o.run(timed, integration=_integration(st), recording=rec,
+                                                                  long_run=lr, start=settled_orbit))):
                 r, cpu = _timed(fn)
                 key = f"{case}|{name}"
                 if key in rows and rows[key]["cpu_per_rev"] <= cpu / timed:
@@ -127,8 +127,8 @@ def markdown(res) -> str:
          f"both on {g}; {res['timed']:g} revolution(s) timed from each settled state, CPU seconds of the process, the "
          f"lower of two alternating runs" + (" -- **quick smoke run, not the benchmark**" if res["quick"] else "") +
          f". Rotor error: distance after the timed revolutions from the run at rtol {res['tight'][0]:g}, in C.", "",
-         "| setting | rotor: steps / Jacobians per rev | rotor CPU s/rev | journal: steps / Jacobians per rev | "
-         "journal CPU s/rev | rotor / journal | rotor error at the disk / a bearing [C] |",
+         ("| setting | rotor: steps / Jacobians per rev | rotor CPU s/rev | journal: steps / Jacobians per rev | "
+          "journal CPU s/rev | rotor / journal | rotor error at the disk / a bearing [C] |"),
          "|---|---|---|---|---|---|---|"]
     for name in res["settings"]:
         r, j = res["rows"][f"rotor|{name}"], res["rows"][f"journal|{name}"]
