@@ -2,12 +2,14 @@
 speed to twice the whirl onset, and the coast-down back.
 
     transient run scenarios/rotor_whip.py [--quick] [--out DIR] [--grid 76 11] [--revolutions 400] [--method bdf2]
-                                          [--fresh]
+                                          [--nodal] [--fresh]
 
 The built-in flexible rotor (``Rotor.example()``: an 80 mm steel shaft of 1.2 m with a 400 mm disk at mid-span,
 Timoshenko elements; stiffness-proportional structural damping 1e-5 s) on two bearings of Rho & Kim ("Noise
 estimation of oil lubricated journal bearings": D = 80 mm, L/D = 0.3, C = 80 um) at its end nodes, an unbalance
-at the disk.
+at the disk (:func:`transient.bench.rotor_whip.whip_system`). The shaft runs in its 4 lowest fixed-interface modes
+(``Rotor.reduce``: the bearing nodes' x, y kept, the modes at 49 and 271 Hz in both planes; ``--nodal``: its 52
+nodal coordinates).
 
 1. Static equilibrium; the whirl threshold of the linearised system with the films' own states and of the
    quasi-static bearing coefficients (Lund); the Campbell diagram (bearings as K, C).
@@ -26,20 +28,23 @@ The grid: a whip study needs less than the paper's 151 x 21. The same bearing on
 threshold (``transient bench whip``, docs/bench/whip.md): the settled whirl's amplitude on 76 x 11 is 0.64 % above
 151 x 21's (0.9955 against 0.9891 C), its ratio the same (0.5000), at a quarter of the CPU per revolution.
 
-The tolerance: ``--method bdf2`` runs at rtol 1e-4 (its travel bound 0.01 C per step): in the whirl on 51 x 11 one
-revolution then lies within 2.9e-5 C of a run at rtol 1e-7 at the disk (8.5e-5 C at the bearings) for 0.63x the CPU
-of rtol 1e-5 (7.8e-6 C) (docs/validation.md, "The rotor system on the journal orbit's variable-order BDF").
+The shaft's modes and the tolerance (docs/validation.md, "The rotor's whirl revolution: where it goes, and the
+shaft's modes"; ``transient bench rotor-whip``): in the nodal shaft the error test follows the ringing of its high
+bending modes (252 Hz to 2.6 kHz on stiff supports, damping ratios 0.008-0.08), not the whirl. In the 4-mode shaft
+the bearing journals' velocities set the step: one whirl revolution on 51 x 11 (2x the threshold, disk swing 14.5
+C) takes 200 BDF2 steps at rtol 1e-3 against the nodal shaft's 512 (1,264 at rtol 1e-4), 1.8x less CPU at rtol 1e-3
+and 2.4x at 1e-4 (2.3x on 76 x 11 at 1e-3; 1.6x two revolutions further into the whirl). Its error after one revolution against the nodal shaft at rtol 1e-6:
+2.8e-3 C at the disk (2e-4 of its swing), 6.4e-4 C at a bearing, the disk's largest swing -6e-4 relative (the
+reduction 3.7e-3 C, the time step at rtol 1e-3 against rtol 1e-6 9.6e-4 C).
 
-Duration: ``--quick`` (32 x 6, 30 revolutions each way) takes at most about 2.5 min of CPU with plain BDF2
-(``Integration(method="bdf2", max_order=2, steps_per_revolution=550)``, rtol 1e-5: 570 steps per revolution in the
-run-up, where its step cap in shaft angle rules, 1,823 in the coast-down, which starts in whip; 1178 s wall on a
-machine loaded 12-15 on 2 cores) and about 3 min with ``--method ida`` (172-210 s: 3,550 IDA steps per revolution in
-whip against 250 in the run-up). The default (76 x 11, 400 revolutions each way) is checkpointed, so it can be
-stopped and resumed; it was not run to the end. About three quarters of its revolutions turn above the whirl
-threshold (the speed is linear in time from 0.3x to 2x it), where a revolution in the whirl costs ~8 s of CPU on
-51 x 11 at rtol 1e-4 (~2,800 Jacobians per revolution: the films' cells that cross the cavitation switch force
-refreshes; measured on a machine loaded ~20 on 2 cores): the whole run is ~1.4 h of CPU on 51 x 11 and ~2 h on
-76 x 11 there (perhaps 25-40 min on 76 x 11 on an idle machine), ~8 h on 151 x 21 (docs/validation.md).
+Duration: the default (76 x 11, 400 revolutions each way) is checkpointed, so it can be stopped and resumed; it was
+not run to the end. About three quarters of its revolutions turn above the whirl threshold (the speed is linear in
+time from 0.3x to 2x it), where a whirl revolution of the 4-mode shaft at rtol 1e-3 on 76 x 11 costs 2.6-4.4 s of
+CPU on a machine loaded ~25 on 2 cores, growing with the whirl, 3.5-5 s in the whip (e/C 0.91-0.94; the nodal shaft
+at rtol 1e-4 ~8 s on 51 x 11 early in the whirl). Measured as far as it went: the analyses and the run-up's first 280
+revolutions (to 1.7x the threshold, no whirl yet: the ramp outruns its growth) within 4 min of CPU, whip from
+revolution ~300, 330 revolutions after 7.2 min of CPU; the whole run is an estimated 30-40 min of CPU there. ``--quick`` (32 x 6, 30 revolutions each way) with the nodal shaft
+took about 2.5 min of CPU with plain BDF2 and about 3 min with ``--method ida``.
 """
 
 from __future__ import annotations
@@ -50,28 +55,22 @@ from pathlib import Path
 
 import numpy as np
 
-from transient import Integration, JournalBearing, LongRun, Recording, Rotor, RotorBearingSystem
+from transient import Integration, LongRun, Recording
 from transient.analysis.rotor import synchronous_amplitude, waterfall
-from transient.params import rho_kim
+from transient.bench.rotor_whip import MODES, whip_system
 from transient.plots import rotor as plots, save
 from transient.study.scenario import JsonRecord, fresh_advice, log, parser
 
 OUT = "rotor_whip"
-STRUCTURAL_DAMPING = 1e-5  # [s]: C = beta K damps the shaft's high bending modes (the stiff part of the system)
-UNBALANCE = 1e-4  # [kg m] at the disk
 OPR = 40  # outputs per revolution
 GRID = (76, 11)  # the whip study's grid (module docstring: its whirl against the paper's 151 x 21)
-RTOL = {"bdf2": 1e-4, "ida": 1e-5}  # the runs' tolerance by method (module docstring)
+RTOL = {"bdf2": 1e-3, "ida": 1e-5}  # the runs' tolerance by method (module docstring)
 
 
-def build(grid):
-    ex = Rotor.example()
-    rotor = Rotor(mass=ex.mass, stiffness=ex.stiffness, damping=STRUCTURAL_DAMPING * ex.stiffness,
-                  gyroscopic=ex.gyroscopic, nodes=ex.nodes, dofs=ex.dofs)
-    bearing = JournalBearing(**rho_kim.BEARING, grid=grid)
-    a, b = ex.bearing_nodes
-    disk = ex.disk_nodes[0]
-    return RotorBearingSystem(rotor, {a: bearing, b: bearing}, unbalance=[(disk, UNBALANCE, 0.0)]), a, disk
+def build(grid, modes=MODES):
+    """``(system, bearing node, disk node)`` (:func:`transient.bench.rotor_whip.whip_system`; ``modes`` None: the
+    nodal rotor)."""
+    return whip_system(grid, modes)
 
 
 def ramp(n0, n1, revolutions, t0=0.0):
@@ -98,14 +97,17 @@ def main(argv=None):
     ap.add_argument("--revolutions", type=float, help="revolutions of the run-up and of the coast-down (400; quick 30)")
     ap.add_argument("--method", choices=("bdf2", "ida"), default="bdf2",
                     help="integrator of the runs: BDF2 on the films' content form (default) or IDA")
+    ap.add_argument("--nodal", action="store_true",
+                    help=f"the nodal shaft (52 coordinates) instead of its {MODES} lowest fixed-interface modes")
     ap.add_argument("--fresh", action="store_true", help="ignore existing checkpoints")
     a = ap.parse_args(argv)
     grid = tuple(a.grid) if a.grid else ((32, 6) if a.quick else GRID)
     revs = a.revolutions or (30.0 if a.quick else 400.0)
     out = Path(a.out)
     out.mkdir(parents=True, exist_ok=True)
-    rec = JsonRecord(out / "rotor_whip.json", dict(grid=grid, revolutions=revs, quick=a.quick, method=a.method))
-    s, bnode, disk = build(grid)
+    rec = JsonRecord(out / "rotor_whip.json", dict(grid=grid, revolutions=revs, quick=a.quick, method=a.method,
+                                                  modes=None if a.nodal else MODES))
+    s, bnode, disk = build(grid, None if a.nodal else MODES)
     t0 = time.perf_counter()
     eq = s.equilibrium(3000.0)
     log(f"[rotor] grid {grid[0]} x {grid[1]}: bearing loads {eq.bearing_load.round(1)} N, e/C "
@@ -130,7 +132,7 @@ def main(argv=None):
 
     runs = {}
     for name, (n0, n1), start in (("run_up", (0.3 * th, 2.0 * th), None), ("coast_down", (2.0 * th, 0.3 * th), "run_up")):
-        ckpt = out / f"{name}_{a.method}_checkpoint.npz"
+        ckpt = out / f"{name}_{a.method}{'_nodal' if a.nodal else ''}_checkpoint.npz"
         if a.fresh and ckpt.exists():
             ckpt.unlink()
         log(f"[rotor] {name.replace('_', '-')} {n0:.0f} -> {n1:.0f} rpm over {revs:g} revolutions; checkpoint {ckpt}")

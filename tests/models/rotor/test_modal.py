@@ -90,3 +90,20 @@ def test_bad_input_names_the_parameter():
         reduce(M, K, None, G, KEEP, 49)
     with pytest.raises(ValueError, match="does not hold the rotor statically"):
         reduce(M, K, None, G, [0, 1], 2)  # one bearing node: the rotor can still tilt about it
+
+
+def test_rotor_reduce_is_the_craig_bampton_reduction_at_its_bearing_nodes():
+    from transient.models.rotor import Rotor
+
+    ex = Rotor.example()
+    r = ex.reduce(4)
+    ref = reduce(ex.mass, ex.stiffness, ex.damping, ex.gyroscopic, KEEP, 4)
+    assert r.reduced and r.n == 8 and r.bearing_nodes == ex.bearing_nodes and r.disk_nodes == ex.disk_nodes
+    assert np.array_equal(r.basis, ref.basis) and np.array_equal(r.stiffness, ref.stiffness)
+    assert np.array_equal(r.translation(12), np.eye(8)[2:4])  # the bearing node's x, y are coordinates 2, 3
+    assert np.allclose(r.gravity_load, ex.gravity_load @ ref.basis)
+    assert r.total_mass == pytest.approx(ex.total_mass, rel=1e-12)
+    with pytest.raises(ValueError, match="already reduced"):
+        r.reduce(2)
+    with pytest.raises(ValueError, match=r"modes = 49 \[-\] is out of range"):
+        ex.reduce(49)

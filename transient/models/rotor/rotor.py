@@ -205,16 +205,31 @@ class Rotor:
         full.bearing_nodes = tuple(bearing_nodes)
         if modes is None:
             return full
-        from transient.models.rotor.modal import reduce
-
         if not full.bearing_nodes:
             raise ValueError("bearing_nodes = () [-]; allowed: the nodes the bearings will sit at (a reduced rotor "
                              "keeps their x and y exactly), e.g. from ROSS's bearing elements")
-        modes = check_int("modes", modes, "-", 0, full.n)
-        keep = [full.dof(nd, d) for nd in full.bearing_nodes for d in ("x", "y")]
-        red = reduce(full.mass, full.stiffness, full.damping, full.gyroscopic, keep, modes)
+        return full.reduce(modes)
+
+    def reduce(self, modes, bearing_nodes=None) -> "Rotor":
+        """This nodal rotor reduced to its ``modes`` lowest fixed-interface modes plus the static correction at the
+        bearing nodes (:func:`~transient.models.rotor.modal.reduce`, Craig-Bampton): the x and y of
+        ``bearing_nodes`` (default ``self.bearing_nodes``) stay the first coordinates, exactly. A whirl or whip
+        study needs the modes near the whirl frequency, not the shaft's stiff high bending modes, whose light
+        structural damping would otherwise set the integrator's step."""
+        from transient.models.rotor.modal import reduce
+
+        if self.reduced:
+            raise ValueError("rotor: already reduced; allowed: a nodal rotor (Rotor(...) without basis)")
+        nodes = tuple(getattr(self, "bearing_nodes", ()) if bearing_nodes is None else bearing_nodes)
+        if not nodes:
+            raise ValueError("bearing_nodes = () [-]; allowed: the nodes the bearings will sit at (a reduced rotor "
+                             "keeps their x and y exactly)")
+        modes = check_int("modes", modes, "-", 0, self.n)
+        keep = [self.dof(nd, d) for nd in nodes for d in ("x", "y")]
+        red = reduce(self.mass, self.stiffness, self.damping, self.gyroscopic, keep, modes)
         B = np.asarray(red.basis)
-        r = cls(mass=red.mass, stiffness=red.stiffness, damping=red.damping, gyroscopic=red.gyroscopic,
-                nodes=full.nodes, dofs=full.dofs, basis=B, gravity_load=full.gravity_load @ B)
-        r.bearing_nodes = full.bearing_nodes
+        r = type(self)(mass=red.mass, stiffness=red.stiffness, damping=red.damping, gyroscopic=red.gyroscopic,
+                       nodes=self.nodes, dofs=self.dofs, basis=B, gravity_load=self.gravity_load @ B)
+        r.bearing_nodes = nodes
+        r.disk_nodes = tuple(getattr(self, "disk_nodes", ()))
         return r
