@@ -212,9 +212,13 @@ KERNELS = {False: (rough_rotor_to_state, rough_rotor_residual, rough_rotor_jacob
 def test_bdf_jacobian_matches_finite_differences(bearing, fd_jacobian, mixed):
     """dF/dz of the rough content residual with y' = cj y + b (a BDF step) in the Newton variables
     z = [u_1, u_2, q, v, phi] (m = h_T C(u)) against central differences; nothing outside the Newton pattern. Both
-    bearings rough, or (``mixed``) node 1 on the smooth bearing: the smooth block through the smooth kernels."""
-    s = flexible(bearing, JournalBearing(**BEARING, grid=(24, 4)) if mixed else None)
-    dae = s.dae(SPEED, lambda tau: (0.8 + 0.01 * tau, 0.01))
+    bearings rough, or (``mixed``) node 0 on a rougher bearing (sigma 2 um, in contact) and node 1 on a smooth one, at
+    300 rpm (the smooth film carries its 2 kN there): the smooth block through the smooth kernels."""
+    if mixed:
+        s, speed = flexible(rough(2e-6), JournalBearing(**BEARING, grid=(24, 4))), 300.0
+    else:
+        s, speed = flexible(bearing), SPEED
+    dae = s.dae(speed, lambda tau: (0.8 + 0.01 * tau, 0.01))
     form = ContentSystem(dae)
     to_state, residual, jacobian = KERNELS[mixed]
     assert form.kernel is residual
