@@ -289,7 +289,7 @@ def test_mix_of_rough_and_smooth_at_vanishing_roughness_is_the_smooth_rotor():
     over 0.3 revolution at 3000 rpm (the default method: BDF for both)."""
     smooth = JournalBearing(**BEARING, grid=(24, 4))
     fine = rough(1e-9, gamma=1.0, share=0.5)
-    unb = [(0, 0.08 * smooth.clearance, 0.0), (1, 0.05 * smooth.clearance, 90.0)]
+    unb = [(0, 8e-4, 0.0), (1, 5e-4, 90.0)]  # m e [kg m]: 0.1 C and 0.06 C of each bearing's 100 kg
     a = RotorBearingSystem(Rotor.rigid(200.0, 3.0, 0.5), {0: smooth, 1: smooth}, unbalance=unb, gravity=9.81)
     b = RotorBearingSystem(Rotor.rigid(200.0, 3.0, 0.5), {0: fine, 1: smooth}, unbalance=unb, gravity=9.81)
     ra, rb = a.run(0.3, 3000.0), quiet(b.run, 0.3, 3000.0)
