@@ -13,6 +13,11 @@ with IDA (sparse SuperLU on the system's block-arrow pattern) at the same tolera
 
 and a run-up of the flexible rotor from 3000 to 9000 rpm (total wall time). Memory: the states, the stored
 entries of the Jacobian and the model's own memory estimate.
+
+**The run's default method against IDA** (``RotorBearingSystem.run`` without integration settings chooses by the
+films, :data:`~transient.models.rotor.system.DEFAULT_METHOD`): each system case and the run-up with IDA at rtol
+1e-6, the default at rtol 1e-6 and 1e-7, interleaved in the same repetitions, each run's error the largest distance
+of a node from IDA at rtol 1e-9 over the outputs [C]; so the default is judged at equal error.
 """
 
 from __future__ import annotations
@@ -32,6 +37,8 @@ from transient.solvers.settings import Integration, LongRun, Recording
 TITLE = "Rotor on journal bearings: two transient films against one, per revolution, and a run-up"
 FULL = dict(grid=(151, 21), revolutions=2, runup_revolutions=40, rtol=1e-6, atol=1e-9)
 QUICK = dict(grid=(48, 8), revolutions=1, runup_revolutions=6, rtol=1e-6, atol=1e-9)
+#: the reference of the method comparison: IDA at these tolerances
+REFERENCE = Integration(method="ida", rtol=1e-9, atol=1e-12)
 SPEED = 6000.0
 G = ROTOR["load"] / ROTOR["rotor_mass"]
 
@@ -88,11 +95,45 @@ def run(quick=False) -> dict:
                                            recording=Recording(outputs_per_revolution=20),
                                            long_run=LongRun(progress=False), integration=ig))
     base = rows["orbit"]["cpu_per_rev"]
-    return dict(grid=list(cfg["grid"]), revolutions=revs, quick=quick, rows=rows,
+    methods = compare_methods(systems, starts, revs, cfg, runup)
+    return dict(grid=list(cfg["grid"]), revolutions=revs, quick=quick, rows=rows, methods=methods,
                 ratio_two_to_one=rows["two"]["cpu_per_rev"] / rows["one"]["cpu_per_rev"],
                 ratio_two_to_orbit=rows["two"]["cpu_per_rev"] / base,
                 runup=dict(revolutions=cfg["runup_revolutions"], seconds=t_up, wall=wall, cpu=cpu, ok=bool(r.success),
                            steps=r.stats.n_steps, final_speed_rpm=float(r.speed_rpm[-1])))
+
+
+def compare_methods(systems, starts, revs, cfg, runup) -> dict:
+    """The default method against IDA (module docstring): ``{case: {run: row}}``, each row its CPU per revolution
+    (the lower of two interleaved repetitions), steps, Jacobians, method and error [C] against :data:`REFERENCE`;
+    the run-up's over its whole length."""
+    quiet = LongRun(progress=False)
+    cases = {k: (lambda s=s, k=k, **kw: s.run(revs, SPEED, start=(0.0, starts[k]), long_run=quiet, **kw), revs)
+             for k, s in systems.items()}
+    rec = Recording(outputs_per_revolution=20)
+    cases["runup"] = (lambda **kw: systems["flex"].run(cfg["runup_revolutions"], runup, recording=rec,
+                                                       long_run=quiet, **kw), cfg["runup_revolutions"])
+    runs = {"IDA rtol 1e-6": dict(integration=Integration(method="ida", rtol=1e-6, atol=cfg["atol"])),
+            "default": {}}
+    out = {}
+    for k, (fn, n_rev) in cases.items():
+        ref = fn(integration=REFERENCE)
+        clearance = float(np.min(ref.clearance))
+        default = fn()  # the method the run chooses, for its rtol 1e-7 row
+        runs["default rtol 1e-7"] = dict(integration=Integration(method=default.method, rtol=1e-7,
+                                                                 atol=cfg["atol"]))
+        rows = {}
+        for _ in range(2):
+            for name, kw in runs.items():
+                r, wall, cpu = _timed(lambda: fn(**kw))
+                if name in rows and cpu >= rows[name]["cpu_per_rev"] * n_rev:
+                    continue
+                err = np.max(np.hypot(*np.moveaxis(r.displacement - ref.displacement, -1, 0))) / clearance \
+                    if r.displacement.shape == ref.displacement.shape else float("nan")
+                rows[name] = dict(method=r.method, cpu_per_rev=cpu / n_rev, steps_per_rev=r.stats.n_steps / n_rev,
+                                  jac_per_rev=r.stats.n_jac / n_rev, error=float(err), ok=bool(r.success))
+        out[k] = rows
+    return out
 
 
 LABELS = dict(orbit="JournalOrbit, 1 bearing", one="system: 1-node rotor, 1 bearing",
@@ -115,6 +156,16 @@ def markdown(res) -> str:
               f"same stepper (system against system; {res['ratio_two_to_orbit']:.2f}x the single-bearing JournalOrbit).",
               "", f"Run-up of the Jeffcott rotor from 3000 to 9000 rpm in {u['seconds']:.3g} s ({u['revolutions']} "
               f"revolutions): {u['cpu']:.3g} s CPU, {u['wall']:.3g} s wall, {u['steps']} steps{'' if u['ok'] else ' (FAILED)'}."]
+    if "methods" in res:
+        lines += ["", "The run's default method against IDA (error: the largest distance of a node from IDA at rtol "
+                  "1e-9 over the outputs; CPU per revolution, the lower of two interleaved repetitions):", "",
+                  "| case | run | method | CPU per rev [s] | steps per rev | Jacobians per rev | error [C] |",
+                  "|---|---|---|---|---|---|---|"]
+        for k, rows in res["methods"].items():
+            for name, row in rows.items():
+                lines.append(f"| {LABELS.get(k, 'Jeffcott run-up 3000 -> 9000 rpm')} | {name} | {row['method']} | "
+                             f"{row['cpu_per_rev']:.3g} | {row['steps_per_rev']:.0f} | {row['jac_per_rev']:.0f} | "
+                             f"{row['error']:.2e}{'' if row['ok'] else ' (FAILED)'} |")
     return "\n".join(lines)
 
 

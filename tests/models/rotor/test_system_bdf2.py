@@ -10,7 +10,7 @@ import pytest
 
 from transient import Integration, JournalBearing, JournalOrbit, LongRun, Recording
 from transient.models.rotor import Rotor, RotorBearingSystem
-from transient.models.rotor.content_form import BDF2_STEPS_PER_REVOLUTION, ContentSystem
+from transient.models.rotor.content_form import BDF2_STEPS_PER_REVOLUTION, ContentSystem, bdf2_refusal
 from transient.params.rho_kim import BEARING
 from transient.solvers.bandlu import BorderedBandLU
 from transient.solvers.longrun import Interrupted
@@ -164,6 +164,25 @@ def test_a_mix_of_film_kinds_is_refused():
                            gravity=G)
     with pytest.raises(ValueError, match='method "bdf2" takes bearings of one film kind'):
         ContentSystem(s.dae(6000.0))
+    assert bdf2_refusal(s.dae(6000.0)) is not None
+    r = s.run(0.02, 6000.0, recording=Recording(outputs_per_revolution=50))  # the default: IDA for this mix
+    assert r.success and r.method == "ida"
+
+
+def test_the_default_method_is_chosen_by_the_films(bearing):
+    """Without integration settings the run takes the BDF (its defaults: the same steps as an explicit
+    ``Integration(method="bdf2")``); an ``Integration`` without a method and the deprecated integration keywords keep
+    IDA; a mix of film kinds takes IDA (above)."""
+    s = one_node(bearing)
+    rec = Recording(outputs_per_revolution=50)
+    default = s.run(0.1, 6000.0, recording=rec)
+    explicit = s.run(0.1, 6000.0, recording=rec, integration=Integration(method="bdf2"))
+    assert default.success and default.method == "bdf2" and bdf2_refusal(s.dae(6000.0)) is None
+    assert default.stats.n_steps == explicit.stats.n_steps
+    np.testing.assert_array_equal(default.displacement, explicit.displacement)
+    assert s.run(0.1, 6000.0, recording=rec, integration=Integration()).method == "ida"
+    with pytest.warns(DeprecationWarning, match="rtol"):
+        assert s.run(0.1, 6000.0, recording=rec, rtol=1e-6).method == "ida"
 
 
 def test_step_cap_is_per_shaft_revolution(bearing, monkeypatch):

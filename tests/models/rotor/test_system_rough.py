@@ -12,7 +12,8 @@ from transient import Integration, JournalBearing, JournalOrbit, Recording, Roug
 from transient.models.journal.film import read_only
 from transient.models.rotor import Rotor, RotorBearingSystem
 from transient.models.rotor.content_form import BDF2_STEPS_PER_REVOLUTION, ContentSystem
-from transient.models.rotor.rough_content import rough_rotor_jacobian, rough_rotor_residual, rough_rotor_to_state
+from transient.models.rotor.rough_content import (mixed_rotor_jacobian, mixed_rotor_residual, mixed_rotor_to_state,
+                                                  rough_rotor_jacobian, rough_rotor_residual, rough_rotor_to_state)
 from transient.params.rho_kim import BEARING
 
 M, G, SPEED = 500.0, 10.0, 60.0  # a 500 kg rotor whose weight, 5 kN, the asperities carry a third of at 60 rpm
@@ -160,17 +161,17 @@ def test_long_time_limit_is_the_equilibrium_with_contact(bearing, method):
     np.testing.assert_allclose(r.contact_load[-1], load, rtol=1e-5)
 
 
-def flexible(bearing):
-    """Two nodes joined by a shaft spring, each on a rough bearing, gyroscopic coupling, unbalances (the smooth
-    system's Jacobian case, tests/models/rotor/test_system.py)."""
+def flexible(bearing, other=None):
+    """Two nodes joined by a shaft spring, each on a rough bearing (node 1 on ``other`` if given), gyroscopic
+    coupling, unbalances (the smooth system's Jacobian case, tests/models/rotor/test_system.py)."""
     k = 2e8
     Mf = np.diag([300.0, 300.0, 200.0, 200.0])
     Kf = k * np.array([[1, 0, -1, 0], [0, 1, 0, -1], [-1, 0, 1, 0], [0, -1, 0, 1.0]])
     Gf = np.zeros((4, 4))
     Gf[0, 1], Gf[1, 0] = 0.02, -0.02
     rotor = Rotor(mass=Mf, stiffness=Kf, damping=1e-5 * Kf, gyroscopic=Gf, nodes=[0, 1])
-    return RotorBearingSystem(rotor, {0: bearing, 1: bearing}, unbalance=[(0, 1e-4, 0.0), (1, 2e-4, 90.0)],
-                              gravity=G)
+    return RotorBearingSystem(rotor, {0: bearing, 1: bearing if other is None else other},
+                              unbalance=[(0, 1e-4, 0.0), (1, 2e-4, 90.0)], gravity=G)
 
 
 def test_ida_jacobian_matches_finite_differences(bearing, fd_jacobian):
@@ -202,12 +203,25 @@ def test_ida_jacobian_matches_finite_differences(bearing, fd_jacobian):
     assert abs(J[V0, Q0]) > 2 * abs(dae.Kw[0, 0])  # the asperity stiffness is there, above the shaft's
 
 
-def test_bdf_jacobian_matches_finite_differences(bearing, fd_jacobian):
+#: the content kernels (to_state, residual, jacobian) of a system on rough bearings only / on a mix with smooth ones
+KERNELS = {False: (rough_rotor_to_state, rough_rotor_residual, rough_rotor_jacobian),
+           True: (mixed_rotor_to_state, mixed_rotor_residual, mixed_rotor_jacobian)}
+
+
+@pytest.mark.parametrize("mixed", [False, True])
+def test_bdf_jacobian_matches_finite_differences(bearing, fd_jacobian, mixed):
     """dF/dz of the rough content residual with y' = cj y + b (a BDF step) in the Newton variables
-    z = [u_1, u_2, q, v, phi] (m = h_T C(u)) against central differences; nothing outside the Newton pattern."""
-    s = flexible(bearing)
-    dae = s.dae(SPEED, lambda tau: (0.8 + 0.01 * tau, 0.01))
+    z = [u_1, u_2, q, v, phi] (m = h_T C(u)) against central differences; nothing outside the Newton pattern. Both
+    bearings rough, or (``mixed``) node 0 on a rougher bearing (sigma 2 um, in contact) and node 1 on a smooth one, at
+    300 rpm (the smooth film carries its 2 kN there): the smooth block through the smooth kernels."""
+    if mixed:
+        s, speed = flexible(rough(2e-6), JournalBearing(**BEARING, grid=(24, 4))), 300.0
+    else:
+        s, speed = flexible(bearing), SPEED
+    dae = s.dae(speed, lambda tau: (0.8 + 0.01 * tau, 0.01))
     form = ContentSystem(dae)
+    to_state, residual, jacobian = KERNELS[mixed]
+    assert form.kernel is residual
     rng = np.random.default_rng(6)
     z = quiet(s._start_guess, dae, 0.8)
     z[dae.Q0:dae.P0] += 0.002 * rng.standard_normal(2 * dae.nq)
@@ -216,18 +230,18 @@ def test_bdf_jacobian_matches_finite_differences(bearing, fd_jacobian):
     form.set_speed(tau)
     args = form.args
     y = np.empty(dae.n)
-    rough_rotor_to_state(z, y, args)
+    to_state(z, y, args)
     b = -cj * y + 0.01 * rng.standard_normal(dae.n)
 
     def F(zz):
         yy, out = np.empty(dae.n), np.empty(dae.n)
-        rough_rotor_to_state(zz, yy, args)
-        rough_rotor_residual(tau, yy, cj * yy + b, out, args)
+        to_state(zz, yy, args)
+        residual(tau, yy, cj * yy + b, out, args)
         return out
 
     data = np.zeros(form.pattern.nnz)
-    rough_rotor_to_state(z, y, args)
-    rough_rotor_jacobian(tau, y, cj * y + b, cj, data, args)
+    to_state(z, y, args)
+    jacobian(tau, y, cj * y + b, cj, data, args)
     J = form.pattern.copy()
     J.data = data
     J = J.toarray()
@@ -246,11 +260,7 @@ def test_bdf_jacobian_matches_finite_differences(bearing, fd_jacobian):
     assert np.max(np.abs(Jfd[form.pattern.toarray() == 0])) < 1e-8 * np.max(np.abs(Jfd))
 
 
-def test_bdf_refuses_a_mix_of_rough_and_smooth(bearing):
-    s = RotorBearingSystem(Rotor.rigid(2 * M, 3.0, 0.5), {0: bearing, 1: JournalBearing(**BEARING, grid=(24, 4))},
-                           gravity=G)
-    with pytest.raises(ValueError, match="all rough or all smooth"):
-        ContentSystem(s.dae(SPEED))
+def test_rough_bearing_refuses_tilt_coupling(bearing):
     tilting = Rotor(mass=np.eye(4), stiffness=np.eye(4), nodes=[0], dofs=("x", "y", "tx", "ty"))
     with pytest.raises(ValueError, match=r"bearings\[0\] roughness = Roughness\(\.\.\.\) with tilt_coupling"):
         RotorBearingSystem(tilting, {0: bearing}, tilt_coupling=True)
@@ -261,13 +271,55 @@ def test_ida_takes_a_mix_of_rough_and_smooth(bearing):
     touch event on the smooth bearing only (a touch_gap that the smooth journal reaches stops the run there)."""
     smooth = JournalBearing(**BEARING, grid=(24, 4))
     s = RotorBearingSystem(Rotor.rigid(200.0, 3.0, 0.5), {0: bearing, 1: smooth}, gravity=9.81)
-    r = quiet(s.run, 0.05, 3000.0, recording=Recording(outputs_per_revolution=20))
-    assert r.success and r.contact_load.shape == (2, 2) and np.all(r.contact_load[:, 1] == 0.0)
+    r = quiet(s.run, 0.05, 3000.0, recording=Recording(outputs_per_revolution=20),
+              integration=Integration(method="ida"))
+    assert r.success and r.method == "ida"
+    assert r.contact_load.shape == (2, 2) and np.all(r.contact_load[:, 1] == 0.0)
     assert np.all(r.min_film > 0) and r.contact_events == []
     whirl = RotorBearingSystem(Rotor.rigid(200.0, 3.0, 0.5), {0: bearing, 1: smooth}, gravity=9.81,
                                unbalance=[(0, 60.0 * smooth.clearance, 0.0), (1, 60.0 * smooth.clearance, 0.0)])
-    touched = quiet(whirl.run, 3, 6000.0, touch_gap=0.4, recording=Recording(outputs_per_revolution=32))
+    touched = quiet(whirl.run, 3, 6000.0, touch_gap=0.4, recording=Recording(outputs_per_revolution=32),
+                    integration=Integration(method="ida"))
     assert touched.touched_at is not None and "node 1 touches" in touched.message
+
+
+def test_mix_of_rough_and_smooth_at_vanishing_roughness_is_the_smooth_rotor():
+    """A rigid rotor on a rough bearing of sigma = 1 nm (every coefficient the smooth one to rounding, no asperity
+    load) and a smooth one, BDF at its defaults (the mixed kernels): the rotor on two smooth bearings, within 1e-9 C
+    over 0.3 revolution at 3000 rpm (the default method: BDF for both)."""
+    smooth = JournalBearing(**BEARING, grid=(24, 4))
+    fine = rough(1e-9, gamma=1.0, share=0.5)
+    unb = [(0, 8e-4, 0.0), (1, 5e-4, 90.0)]  # m e [kg m]: 0.1 C and 0.06 C of each bearing's 100 kg
+    a = RotorBearingSystem(Rotor.rigid(200.0, 3.0, 0.5), {0: smooth, 1: smooth}, unbalance=unb, gravity=9.81)
+    b = RotorBearingSystem(Rotor.rigid(200.0, 3.0, 0.5), {0: fine, 1: smooth}, unbalance=unb, gravity=9.81)
+    ra, rb = a.run(0.3, 3000.0), quiet(b.run, 0.3, 3000.0)
+    assert ra.success and rb.success and ra.method == rb.method == "bdf2"
+    C = smooth.clearance
+    assert np.max(np.abs(ra.displacement - rb.displacement)) < 1e-9 * C
+    assert np.max(np.abs(ra.displacement[-1] - ra.displacement[0])) > 1e-3 * C  # the journals moved
+    assert np.max(rb.contact_load) == 0.0 and rb.contact_events == []
+
+
+def test_mix_of_rough_and_smooth_bdf_is_ida():
+    """A rigid rotor (1000 kg, 5 kN per bearing) on a rough bearing in contact (sigma 2 um) and a smooth one at
+    300 rpm: half a revolution released 0.01 C above the static equilibrium, BDF (the mixed kernels) against IDA at
+    rtol 1e-8: positions within 1e-6 C, the rough bearing's contact load within 1e-5, the smooth one's 0."""
+    bearing, smooth = rough(2e-6), JournalBearing(**BEARING, grid=(24, 4))
+    s = RotorBearingSystem(Rotor.rigid(2 * M, 3.0, 0.5), {0: bearing, 1: smooth},
+                           unbalance=[(0, M * 1e-6, 0.0), (1, M * 1e-6, 0.0)], gravity=G)
+    speed = 300.0
+    eq = quiet(s.equilibrium, speed)
+    dae = s.dae(speed)
+    y0 = np.array(eq.state)
+    y0[dae.Q0] -= 0.01 * bearing.clearance / dae.L
+    runs = {m: quiet(s.run, 0.5, speed, start=(0.0, y0), integration=Integration(method=m, rtol=1e-8, atol=1e-11))
+            for m in ("ida", "bdf2")}
+    ida, bdf = runs["ida"], runs["bdf2"]
+    assert ida.success and bdf.success and bdf.method == "bdf2"
+    C = bearing.clearance
+    assert np.max(np.abs(bdf.displacement - ida.displacement)) < 1e-6 * C
+    assert np.max(ida.contact_load[:, 0]) > 0.05 * M * G and np.all(bdf.contact_load[:, 1] == 0.0)
+    np.testing.assert_allclose(bdf.contact_load[:, 0], ida.contact_load[:, 0], rtol=1e-5)
 
 
 def test_records_save_and_load(bearing, tmp_path):

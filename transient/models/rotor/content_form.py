@@ -42,23 +42,12 @@ class ContentSystem:
 
     def __init__(self, dae):
         self.dae = dae
-        films = []
         free = np.concatenate([b.film.op.free for b in dae.blocks])
         self.pattern, gather = decoupled_pattern(dae.pattern, free)
-        for b in dae.blocks:
-            fl = b.film
-            film = (fl.switch, None, fl.geo, fl.fields, fl.extras, fl.fv, fl.work, (BDF2_FILM_TOL, BDF2_FILM_TOL),
-                    np.zeros(fl.n, dtype=np.int8))
-            films.append(FilmArgs(film=film, offset=int(b.offset), n=int(b.n), sym=float(fl.sym), spin=float(b.spin),
-                                  support=np.ascontiguousarray(b.support, dtype=np.int64), ax=b.ax, ay=b.ay,
-                                  gx=b.gx, gy=b.gy, maps=b.maps, local=b.local, up=np.zeros(fl.n),
-                                  ym=np.zeros(fl.n + 2), tilted=bool(b.tilted), aa=b.aa, ab=b.ab, ga=b.ga, gb=b.gb,
-                                  tilt=b.tilt))
-        kinds = {str(numba.typeof(f)) for f in films}
-        if len(kinds) > 1:
-            raise ValueError("bearings: method \"bdf2\" takes bearings of one film kind (all Newtonian or all with the "
-                             "Gecim bulk, with or without boundary layers alike; a squeeze-film damper's film is "
-                             "Newtonian without boundary layers); allowed: method=\"ida\" for a mix")
+        films = film_args(dae)
+        refusal = bdf2_refusal(dae, films)
+        if refusal:
+            raise ValueError(refusal)
         kin_q, kin_v, mom_q, mom_v, mom_phi, phi_phi = dae.rotor_pos
         v_rows, v_cols = np.nonzero(dae.v_mask)
         unb = dae.unbalance
@@ -155,6 +144,37 @@ class ContentSystem:
             b.set_gap(q)
             y[b.offset:b.offset + b.n] = b.film.universal(y[b.offset:b.offset + b.n], X, Y)
         return y
+
+
+def film_args(dae) -> list:
+    """One :class:`~transient.models.rotor.content_newton.FilmArgs` per film block of ``dae``."""
+    films = []
+    for b in dae.blocks:
+        fl = b.film
+        film = (fl.switch, None, fl.geo, fl.fields, fl.extras, fl.fv, fl.work, (BDF2_FILM_TOL, BDF2_FILM_TOL),
+                np.zeros(fl.n, dtype=np.int8))
+        films.append(FilmArgs(film=film, offset=int(b.offset), n=int(b.n), sym=float(fl.sym), spin=float(b.spin),
+                              support=np.ascontiguousarray(b.support, dtype=np.int64), ax=b.ax, ay=b.ay,
+                              gx=b.gx, gy=b.gy, maps=b.maps, local=b.local, up=np.zeros(fl.n),
+                              ym=np.zeros(fl.n + 2), tilted=bool(b.tilted), aa=b.aa, ab=b.ab, ga=b.ga, gb=b.gb,
+                              tilt=b.tilt))
+    return films
+
+
+def bdf2_refusal(dae, films=None) -> str | None:
+    """Why ``method="bdf2"`` cannot integrate ``dae`` (a one-line message naming ``method="ida"``), or None: its
+    kernels take the smooth and the rough film blocks each as a tuple of one numba type, so the films of each must be
+    of one kind (all Newtonian or all with the Gecim bulk, with or without boundary layers alike; a squeeze-film
+    damper's film is Newtonian without boundary layers). ``RotorBearingSystem.run`` chooses its default method by
+    it."""
+    films = film_args(dae) if films is None else films
+    for rough in (False, True):
+        kinds = {str(numba.typeof(f)) for f, b in zip(films, dae.blocks) if (b.rough is not None) == rough}
+        if len(kinds) > 1:
+            return ("bearings: method \"bdf2\" takes bearings of one film kind (all Newtonian or all with the Gecim "
+                    "bulk, with or without boundary layers alike; a squeeze-film damper's film is Newtonian without "
+                    "boundary layers); allowed: method=\"ida\" for a mix")
+    return None
 
 
 def _ints(a) -> np.ndarray:

@@ -5,7 +5,9 @@ the flow factors, the asperity force and its stiffness on the momentum rows).
 
 ``args = (films, roughs, rotor)``: the system's :class:`~transient.models.rotor.content_newton.FilmArgs`, per film
 ``(cells, contact, contact_pos)`` and the rotor rows (:class:`~transient.models.rotor.content_newton.RotorArgs`),
-built by :func:`content_args`.
+built by :func:`content_args`. A mix of rough and smooth bearings: ``args = (smooth films, rough films, roughs,
+rotor)``, the smooth blocks through :mod:`~transient.models.rotor.content_newton`'s kernels, the rough ones through
+this module's (:func:`mixed_rotor_newton`).
 """
 
 from __future__ import annotations
@@ -15,8 +17,9 @@ from numba import njit
 from transient.models.journal.content_newton import cell_regime
 from transient.models.journal.rough_orbit import (rough_content_universal, rough_flux, rough_force, rough_newton_norm,
                                                   rough_state_fields)
-from transient.models.rotor.content_newton import (node_position, rotor_force, rotor_rows_jacobian,
-                                                  rotor_rows_residual)
+from transient.models.rotor.content_newton import (node_position, rotor_force, rotor_from_state, rotor_jacobian,
+                                                  rotor_norm, rotor_residual, rotor_rows_jacobian,
+                                                  rotor_rows_residual, rotor_to_state)
 from transient.models.rotor.kernels import scatter_block
 from transient.models.rotor.rough_films import add_contact_stiffness, rough_block_jacobian
 import transient.solvers.integrate.bdf2 as stepper
@@ -69,8 +72,15 @@ def rough_rotor_residual(t, y, yp, out, args):
     """``F(t, y, y')`` of the content form (module docstring; the rotor rows of
     :mod:`~transient.models.rotor.content_newton`)."""
     films, roughs, rot = args
-    s = rot.speed[0]
     rotor_force(y, rot)
+    rough_blocks_residual(y, yp, out, films, roughs, rot)
+    rotor_rows_residual(y, yp, out, rot)
+
+
+@njit(cache=True)
+def rough_blocks_residual(y, yp, out, films, roughs, rot):
+    """The rough film blocks' rows of the residual; their forces added to ``rot.force``."""
+    s = rot.speed[0]
     frc = rot.force
     q = y[rot.Q0:rot.V0]
     for k in range(len(films)):
@@ -87,7 +97,6 @@ def rough_rotor_residual(t, y, yp, out, args):
             out[o + i] = area[i] * yp[o + i] + R[i] if free[i] else yp[o + i]
         for j in range(f.support.size):
             frc[f.support[j]] += f.gx[j] * fx + f.gy[j] * fy
-    rotor_rows_residual(y, yp, out, rot)
 
 
 @njit(cache=True)
@@ -97,6 +106,17 @@ def rough_rotor_jacobian(t, y, yp, cj, data, args):
     ``dF_i/dX = dR_i/dX|_u + cj A theta phi_c cos``) scattered with its coupling and border, the rotor rows, then
     each block's contact stiffness on its momentum rows. Keeps each film's cell regimes at this Jacobian."""
     films, roughs, rot = args
+    rough_blocks_jacobian(y, cj, films, roughs, rot)
+    rotor_rows_jacobian(y, cj, rot)
+    rough_contact_stiffness(films, roughs, rot)
+    for p in range(rot.gather.size):
+        data[p] = rot.full[rot.gather[p]]
+
+
+@njit(cache=True)
+def rough_blocks_jacobian(y, cj, films, roughs, rot):
+    """The rough film blocks' entries of the Jacobian in ``rot.full`` (:func:`rough_rotor_jacobian`); keeps each
+    film's cell regimes."""
     s = rot.speed[0]
     full = rot.full
     q = y[rot.Q0:rot.V0]
@@ -112,12 +132,14 @@ def rough_rotor_jacobian(t, y, yp, cj, data, args):
         scatter_block(f.local, full, f.maps, f.ax, f.ay, f.gx, f.gy)
         for i in range(f.n):
             regime[i] = cell_regime(u[i], switch.width)
-    rotor_rows_jacobian(y, cj, rot)
+
+
+@njit(cache=True)
+def rough_contact_stiffness(films, roughs, rot):
+    """Each rough block's asperity stiffness added to its momentum rows in ``rot.full`` (after the rotor rows)."""
     for k in range(len(films)):
         f = films[k]
-        add_contact_stiffness(full, roughs[k][2], roughs[k][1], f.ax, f.ay, f.gx, f.gy)
-    for p in range(rot.gather.size):
-        data[p] = full[rot.gather[p]]
+        add_contact_stiffness(rot.full, roughs[k][2], roughs[k][1], f.ax, f.ay, f.gx, f.gy)
 
 
 @njit(cache=True)
@@ -196,14 +218,83 @@ def rough_rotor_from_state(y, z, args):
         z[i] = y[i]
 
 
+# ------------------------------------------------------------------------------------------------------------------
+# A mix of rough and smooth bearings: args = (smooth films, rough films, roughs, rotor); each group through its own
+# block kernels (the smooth ones those of content_newton on (smooth films, rotor)), the rotor rows once more on the
+# forces of both.
+
+
+@njit(cache=True)
+def mixed_rotor_newton(args, t, cj, b, y, yp, F, dz, data, lu, y_pred, z, pick, err_idx, err_w, state, counts):
+    """:func:`~transient.solvers.integrate.bdf2.newton_step` on smooth and rough films + rotor."""
+    return newton_step(mixed_rotor_residual, mixed_rotor_jacobian, mixed_rotor_norm, mixed_rotor_to_state,
+                       mixed_rotor_from_state, args, t, cj, b, y, yp, F, dz, data, lu, y_pred, z, pick, err_idx,
+                       err_w, state, counts)
+
+
+drop_stale_cache(mixed_rotor_newton, stepper.__file__)
+
+
+@njit(cache=True)
+def mixed_rotor_residual(t, y, yp, out, args):
+    """``F(t, y, y')``: the smooth blocks and the rotor's forces by
+    :func:`~transient.models.rotor.content_newton.rotor_residual`, the rough blocks' rows and forces, the rotor
+    rows again on the forces of all."""
+    smooth, films, roughs, rot = args
+    rotor_residual(t, y, yp, out, (smooth, rot))
+    rough_blocks_residual(y, yp, out, films, roughs, rot)
+    rotor_rows_residual(y, yp, out, rot)
+
+
+@njit(cache=True)
+def mixed_rotor_jacobian(t, y, yp, cj, data, args):
+    """The Newton matrix: the smooth blocks and the rotor rows
+    (:func:`~transient.models.rotor.content_newton.rotor_jacobian`), the rough blocks and their contact stiffness."""
+    smooth, films, roughs, rot = args
+    rotor_jacobian(t, y, yp, cj, data, (smooth, rot))
+    rough_blocks_jacobian(y, cj, films, roughs, rot)
+    rough_contact_stiffness(films, roughs, rot)
+    for p in range(rot.gather.size):
+        data[p] = rot.full[rot.gather[p]]
+
+
+@njit(cache=True)
+def mixed_rotor_norm(z, dz, args):
+    """The larger of the smooth and the rough films' Newton norms (and switched cells)."""
+    smooth, films, roughs, rot = args
+    v, w = rotor_norm(z, dz, (smooth, rot))
+    vr, wr = rough_rotor_norm(z, dz, (films, roughs, rot))
+    return max(v, vr), max(w, wr)
+
+
+@njit(cache=True)
+def mixed_rotor_to_state(z, y, args):
+    """:func:`~transient.models.rotor.content_newton.rotor_to_state` and :func:`rough_rotor_to_state`, each on its
+    films."""
+    smooth, films, roughs, rot = args
+    rotor_to_state(z, y, (smooth, rot))
+    rough_rotor_to_state(z, y, (films, roughs, rot))
+
+
+@njit(cache=True)
+def mixed_rotor_from_state(y, z, args):
+    """The inverse of :func:`mixed_rotor_to_state`."""
+    smooth, films, roughs, rot = args
+    rotor_from_state(y, z, (smooth, rot))
+    rough_rotor_from_state(y, z, (films, roughs, rot))
+
+
 def content_args(form) -> tuple:
     """``(args, newton, residual)`` of the rough films for the
-    :class:`~transient.models.rotor.content_form.ContentSystem` ``form`` (every bearing rough): ``(films, roughs,
-    rotor)``, :func:`rough_rotor_newton` and :func:`rough_rotor_residual`."""
+    :class:`~transient.models.rotor.content_form.ContentSystem` ``form``: every bearing rough ``(films, roughs,
+    rotor)``, :func:`rough_rotor_newton` and :func:`rough_rotor_residual`; a mix of rough and smooth bearings
+    ``(smooth films, rough films, roughs, rotor)``, :func:`mixed_rotor_newton` and :func:`mixed_rotor_residual`."""
     blocks = form.dae.blocks
-    if any(b.rough is None for b in blocks):
-        raise ValueError("bearings: method \"bdf2\" takes bearings all rough or all smooth (one film kind); allowed: "
-                         "method=\"ida\" for a mix of rough and smooth bearings")
     films, rotor = form.args
-    roughs = tuple((b.rough, b.contact, b.contact_pos) for b in blocks)
-    return (films, roughs, rotor), rough_rotor_newton, rough_rotor_residual
+    rough = [k for k, b in enumerate(blocks) if b.rough is not None]
+    roughs = tuple((blocks[k].rough, blocks[k].contact, blocks[k].contact_pos) for k in rough)
+    if len(rough) == len(blocks):
+        return (films, roughs, rotor), rough_rotor_newton, rough_rotor_residual
+    smooth = tuple(f for k, f in enumerate(films) if k not in rough)
+    return ((smooth, tuple(films[k] for k in rough), roughs, rotor), mixed_rotor_newton,
+            mixed_rotor_residual)

@@ -39,9 +39,10 @@ from transient.models.journal.film import read_only
 from transient.models.journal.kernels import film_force
 from transient.models.journal.tilt import sensitivity, si_coefficients
 from transient.models.damper.damper import SqueezeFilmDamper
+from transient.models.journal.speed_law import SpeedProfile, shaft_speed
 from transient.models.journal.time_domain import check_time_domain
 from transient.models.journal.orbit import BDF2_MAX_ORDER, BDF2_MIN_STEPS, BDF2_TRAVEL, BDF2_TRAVEL_RTOL
-from transient.models.rotor.content_form import ContentSystem
+from transient.models.rotor.content_form import ContentSystem, bdf2_refusal
 from transient.models.rotor.model import SystemDAE
 from transient.models.rotor import thermal_films
 from transient.models.rotor.results import RotorEquilibrium, RotorRunResult, UnbalanceResponse
@@ -57,6 +58,10 @@ from transient.solvers.shooting import ShootingSettings
 from transient.units import rpm_to_rad_s
 
 RUN_METHODS = ("ida", "bdf2")
+#: :meth:`RotorBearingSystem.run`'s method when no integration setting is given, where the system's films allow it
+#: (:func:`~transient.models.rotor.content_form.bdf2_refusal`; else ``"ida"``): the variable-order BDF on the content
+#: films measured at least as fast as IDA at equal error on the two-bearing rotors and in whip (docs/validation.md)
+DEFAULT_METHOD = "bdf2"
 #: The loose keywords of :meth:`RotorBearingSystem.run` of earlier releases and the settings field each now is.
 RUN_KEYWORDS = (keyword_table("integration", Integration, ("method", "rtol", "atol"))
                 | keyword_table("recording", Recording, ("outputs_per_revolution",))
@@ -534,8 +539,8 @@ class RotorBearingSystem:
                          f"{vals[0]:.3g} ... {vals[-1]:.3g} 1/s); allowed: a range where the growth rate changes sign")
 
     # ------------------------------------------------------------------------------------------
-    def run(self, revolutions, speed_rpm, *, start=None, touch_gap=1e-3, reference_speed_rpm=None,
-            integration: Integration | None = None, recording: Recording | None = None,
+    def run(self, revolutions, speed_rpm=None, *, speed_profile=None, start=None, touch_gap=1e-3,
+            reference_speed_rpm=None, integration: Integration | None = None, recording: Recording | None = None,
             long_run: LongRun | None = None, thermal_interval=1.0, temperature=None, **legacy) -> RotorRunResult:
         """Integrate the rotor on its films over ``revolutions`` shaft revolutions.
 
@@ -544,8 +549,18 @@ class RotorBearingSystem:
         revolutions [rev] : the run's length in shaft revolutions (a speed function: the time in which the shaft
             turns that often).
         speed_rpm [rpm] : a number, or a function of the time t [s] (run-up, coast-down): it enters the films'
-            Couette flow and the unbalance force (angle = integral of the speed, plus the m e Omega' term).
-        integration : :class:`~transient.solvers.settings.Integration` (default ``Integration()``): ``method``
+            Couette flow and the unbalance force (angle = integral of the speed, plus the m e Omega' term); a
+            function's rate is its central difference.
+        speed_profile : instead of ``speed_rpm``, the shaft's speed law as the journal orbit's
+            (:class:`~transient.models.journal.speed_law.SpeedProfile`, or what it takes: a table ``((t [s],
+            n [rpm]), ...)``, linear between its knots, or a function ``n(t)``, taken as straight lines through its
+            values ``FUNCTION_KNOTS`` times per reference revolution): the speed and its rate exact on those lines
+            (:func:`~transient.models.journal.speed_law.shaft_speed`), the shaft angle their integral.
+        integration : :class:`~transient.solvers.settings.Integration`; when it is left out (and no deprecated
+            integration keyword is given) the method is chosen by what the films allow: ``"bdf2"`` at its defaults
+            (``DEFAULT_METHOD``), or ``"ida"`` for films ``bdf2`` does not take (a mix of film kinds,
+            :func:`~transient.models.rotor.content_form.bdf2_refusal`); the result's ``method`` says which. An
+            ``Integration`` given without a method is IDA's (its class default). ``method``
             ``"ida"`` (SUNDIALS IDA, sparse SuperLU on the block-arrow pattern) or ``"bdf2"`` (variable-step BDF2 on
             the films' content form, a bordered band LU with one band block per film and the rotor as its border,
             :mod:`~transient.models.rotor.content_form`; rtol and atol act on the rotor's coordinates and
@@ -595,8 +610,11 @@ class RotorBearingSystem:
             raise ValueError(f"temperature = {temperature!r} [K] without thermal bearings; allowed: None (the start "
                              "temperature of thermal films: JournalBearing(thermal=ThermalFilm(...)))")
         revolutions = check_positive("revolutions", revolutions, "rev")
-        ig, rc, lr = run_settings("RotorBearingSystem.run", legacy, RUN_KEYWORDS, integration=integration,
-                                  recording=recording, long_run=long_run).values()
+        # the default by capability only where no integration setting is given (the deprecated keywords keep IDA's)
+        chosen = integration is None and not any(RUN_KEYWORDS.get(k, ("",))[0] == "integration" for k in legacy)
+        ig, rc, lr = run_settings("RotorBearingSystem.run", legacy, RUN_KEYWORDS,
+                                  {"integration": {"method": DEFAULT_METHOD if chosen else "ida"}},
+                                  integration=integration, recording=recording, long_run=long_run).values()
         check_method("RotorBearingSystem.run", ig.method, step_solve=True, among=RUN_METHODS)
         check_unused("RotorBearingSystem.run", "integration", ig, ("formulation", "dt", "linear_solver"))
         check_unused("RotorBearingSystem.run", "recording", rc, ("record", "record_from_revolution"))
@@ -611,24 +629,34 @@ class RotorBearingSystem:
                 raise ValueError(f"reference_speed_rpm = {reference_speed_rpm!r} [rpm]; allowed: the start's "
                                  f"{start.reference_speed_rpm!r} (its film state is in that speed's pressure unit)")
             reference_speed_rpm = start.reference_speed_rpm
-        speed_fn, t_end, n_max = _speed_schedule(speed_rpm, t0, revolutions)
+        law = _speed_law(speed_rpm, speed_profile)
+        speed_fn, t_end, n_max = _speed_schedule(speed_rpm if law is None else law.value, t0, revolutions)
         if thermal and y is None and reference_speed_rpm is None:  # the thermal start's films: at the start speed
             reference_speed_rpm = speed_fn(t0) or None
         ref = n_max if reference_speed_rpm is None else check_speed(reference_speed_rpm)
-        if callable(speed_rpm) and any(b.shear_thinning for b in self.bearings.values()):
+        if (callable(speed_rpm) or law is not None) and any(b.shear_thinning for b in self.bearings.values()):
             raise ValueError("speed_rpm as a function of time with a Gecim (shear-thinning) bearing: its bulk flux is "
                              "tabulated at one sliding speed; allowed: a constant speed")
         w = rpm_to_rad_s(ref)
 
-        def speed(tau):
-            t = min(max(tau / w, t0), t_end)  # the speed function is taken only inside the run [t0, t_end] (an
-            n = speed_fn(t)                   # integrator may try a step past the end)
-            h = 1e-6 * max(t_end - t0, 1e-9)
-            lo, hi = max(t - h, t0), min(t + h, t_end)
-            dn = (speed_fn(hi) - speed_fn(lo)) / (hi - lo) if callable(speed_rpm) else 0.0
-            return n / ref, rpm_to_rad_s(dn) / w ** 2
+        if law is None:
+            def speed(tau):
+                t = min(max(tau / w, t0), t_end)  # the speed function is taken only inside the run [t0, t_end]
+                n = speed_fn(t)                   # (an integrator may try a step past the end)
+                h = 1e-6 * max(t_end - t0, 1e-9)
+                lo, hi = max(t - h, t0), min(t + h, t_end)
+                dn = (speed_fn(hi) - speed_fn(lo)) / (hi - lo) if callable(speed_rpm) else 0.0
+                return n / ref, rpm_to_rad_s(dn) / w ** 2
+        else:  # the law's straight lines in tau: the speed ratio and its rate exact on them
+            knots = law.knots(w, ref, t_end)
+
+            def speed(tau):
+                s_, ds, _ = shaft_speed(tau, knots)
+                return s_, ds
 
         dae = self.dae(ref, speed)
+        if chosen and bdf2_refusal(dae):  # films the BDF does not take: the default is IDA
+            method = "ida"
         s0 = speed(t0 * w)[0]
         states = {}
         if y is None:
@@ -945,6 +973,16 @@ def _diagonal_positions(pattern, rows) -> np.ndarray:
         s, e = pattern.indptr[r], pattern.indptr[r + 1]
         pos[k] = s + int(np.flatnonzero(pattern.indices[s:e] == r)[0])
     return pos
+
+
+def _speed_law(speed_rpm, speed_profile) -> SpeedProfile | None:
+    """The run's speed law: ``speed_profile`` as a :class:`SpeedProfile`, or None for a ``speed_rpm`` (exactly one
+    of the two given)."""
+    if (speed_rpm is None) == (speed_profile is None):
+        raise ValueError(f"speed_rpm = {short_repr(speed_rpm)}, speed_profile = {short_repr(speed_profile)}; allowed: "
+                         "one of them (a speed [rpm] or a function of t [s]; or a SpeedProfile, a table ((t [s], "
+                         "n [rpm]), ...) or a function n(t))")
+    return None if speed_profile is None else SpeedProfile(speed_profile)
 
 
 def _speed_schedule(speed_rpm, t0, revolutions):
