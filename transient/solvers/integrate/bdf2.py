@@ -157,7 +157,7 @@ def _chord(norm, args, lu, z, F, dz, scale, err_idx, err_w):
     return size, switched
 
 
-@inner_kernel
+@njit(cache=True)
 def _switch_pays(size, rate, switched, cost):
     """Whether a Jacobian refresh for ``switched`` components pays: always for more than ``SWITCH_ALWAYS`` of them,
     else when the chord iterations still needed at contraction ``rate`` from an update of ``size`` (tolerance
