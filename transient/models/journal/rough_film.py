@@ -12,6 +12,12 @@ contact factor ``phi_c = d h_T / d h``). The content theta transports the Couett
 cavitated cell, where the pressure is flat and the Poiseuille flux vanishes, the flux is ``theta c_x``: the
 striated film of Elrod carried at the mean gap. The force on the journal is the film's plus the asperities':
 ``F = sym sum (P_i + p_a,i / p0) (cos, sin) A_i``, and its sensitivities add the contact stiffness.
+
+Pressure-viscosity (``Roughness.pressure_viscosity`` alpha > 0; C. Barus, Am. J. Sci. 45 (1893) 87-96): the
+viscosity of a cell is ``mu0 exp(alpha p)`` at its film pressure p above cavitation, which divides the Poiseuille
+conductances (``k_x, k_z <- k_x, k_z exp(-alpha p0 P)``, their slope ``d k / du = -alpha p0 (dP/du) k`` in the
+Jacobian) and multiplies the Couette shear stress of the friction; the Couette and shear flows do not depend on the
+viscosity. alpha = 0 is the isoviscous film, the same arithmetic.
 """
 
 from __future__ import annotations
@@ -36,16 +42,27 @@ class RoughFilm(Film):
         self.dq = [np.zeros((ne, n)) for _ in range(3)]  # d k_x, d k_z, d c_x by (X, Y, VX, VY)
         self.no_dq = np.zeros((ne, n))
         self.no_du = np.zeros(n)
+        self.alpha_p0 = roughness.pressure_viscosity * self.p0  # Barus exponent per unit of P
+        self.viscosity_factor = np.ones(n)  # mu / mu0 of every cell at the state last evaluated
+        self.dk_du = np.zeros(n)  # d k_x / du and d k_z / du (pressure-viscosity)
+        self.dkz_du = np.zeros(n)
         self.coefficients = None
 
     def _fields(self, u, X, Y):
         """The smooth fields of ``u`` (P, theta, ...), then the average-flow coefficients in place of k and c."""
         state_fields(read_only(u), X, Y, self.switch, self.geo, self.fields, self.fv)
         rc = rough_coefficients(self.H, self.roughness, self.scales.clearance)
-        self.k[:] = rc.kx
-        self.k_axial[:] = rc.kz
         self.c[:] = rc.cx
         self.coefficients = rc
+        if self.alpha_p0 == 0.0:
+            self.k[:] = rc.kx
+            self.k_axial[:] = rc.kz
+            return rc
+        np.exp(self.alpha_p0 * self.P, out=self.viscosity_factor)
+        self.k[:] = rc.kx / self.viscosity_factor
+        self.k_axial[:] = rc.kz / self.viscosity_factor
+        np.multiply(-self.alpha_p0 * self.dP, self.k, out=self.dk_du)
+        np.multiply(-self.alpha_p0 * self.dP, self.k_axial, out=self.dkz_du)
         return rc
 
     def residual(self, u, X, Y, VX=0.0, VY=0.0, rate=0.0, C_ref=None, out=None):
@@ -69,11 +86,12 @@ class RoughFilm(Film):
         dkx, dkz, dcx = self.dq
         ne = dkx.shape[0]
         q = min(ne, 2)
+        mu = self.viscosity_factor
         for e, trig in enumerate((self.cosp, self.sinp)[:q]):
-            dkx[e] = rc.dkx * trig
-            dkz[e] = rc.dkz * trig
+            dkx[e] = rc.dkx * trig / mu
+            dkz[e] = rc.dkz * trig / mu
             dcx[e] = rc.dcx * trig
-        jacobian_kernel(self.P, self.dP, self.C, self.D, self.k, self.no_du, self.k_axial, self.no_du, self.c,
+        jacobian_kernel(self.P, self.dP, self.C, self.D, self.k, self.dk_du, self.k_axial, self.dkz_du, self.c,
                         self.zero, dkx[:q], dkz[:q], dcx[:q], self.no_dq[:q], True, fv.faces, fv.boundary, fv.cells,
                         fv.face_k, ex.pos_col, data)
         free, pos_c = fv.cells.free, fv.cells.pos_c
@@ -150,4 +168,5 @@ class RoughFilm(Film):
         Fc = self.contact_force(X, Y) * self.force_scale
         normal = self.sym * float(pa @ self.area) * self.scales.radius ** 2  # sum of |p_a dA| [N]
         return film_state(self, u, X, Y, F, self.P, self.C, iterations,
-                          contact=(pa, (float(Fc[0]), float(Fc[1])), normal, self.roughness.boundary_friction))
+                          contact=(pa, (float(Fc[0]), float(Fc[1])), normal, self.roughness.boundary_friction),
+                          viscosity_factor=None if self.alpha_p0 == 0.0 else self.viscosity_factor)
