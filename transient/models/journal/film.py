@@ -271,7 +271,7 @@ class Film(FilmBlock):
         return film_state(self, u, X, Y, F, self.P, self.C, iterations)
 
 
-def film_state(film, u, X, Y, F, P, content, iterations=0, contact=None, viscosity_factor=None):
+def film_state(film, u, X, Y, F, P, content, iterations=0, contact=None, viscosity_factor=None, gap=None):
     """The SI :class:`~transient.models.journal.results.FilmState` of a film (:class:`Film` or
     :class:`~transient.models.journal.reynolds_film.ReynoldsFilm`) at journal position (X, Y): its dimensionless
     force ``F``, pressure ``P`` (p0 units above p_c) and film content per cell. The attitude is measured from
@@ -279,7 +279,8 @@ def film_state(film, u, X, Y, F, P, content, iterations=0, contact=None, viscosi
     (:class:`~transient.models.journal.rough_film.RoughFilm`): (asperity pressure per cell [Pa], asperity force [N],
     its normal load ``sum p_a dA`` [N], boundary friction coefficient); the friction torque then adds
     ``mu_b R sum p_a dA`` to the film's ``R * friction_force``. ``viscosity_factor``: ``mu / mu0`` per cell of a
-    pressure-viscous film (:func:`wall_friction`)."""
+    pressure-viscous film (:func:`wall_friction`). ``gap``: the film thickness per cell [C] of a film whose bore
+    deforms, in place of the rigid journal's (its least cell value the minimum film)."""
     s, law, grid = film.scales, film.law, film.grid
     C, R = s.clearance, s.radius
     Fx, Fy = F[0] * film.force_scale, F[1] * film.force_scale
@@ -288,7 +289,7 @@ def film_state(film, u, X, Y, F, P, content, iterations=0, contact=None, viscosi
     att = np.degrees(np.angle(np.exp(1j * (np.arctan2(Y, X) - load_dir)))) if eps > 0 else 0.0
     pressure = grid.to_2d(s.cavitation_pressure + film.p0 * np.asarray(P)).copy()
     theta = grid.to_2d(np.asarray(content, dtype=float)).copy()
-    h, G, Gz = film_geometry(film, X, Y, P)
+    h, G, Gz = film_geometry(film, X, Y, P, gap)
     friction = wall_friction(film, h, G, Gz, theta, viscosity_factor)
     ly = None if law.layers is NO_LAYERS else law.layers
     rh = law.rheology
@@ -298,7 +299,8 @@ def film_state(film, u, X, Y, F, P, content, iterations=0, contact=None, viscosi
         contact_load=float(np.hypot(*Fc)), contact_normal_load=normal,
         friction_torque=R * (friction[0] + mu_b * normal),
         eccentricity_ratio=eps, attitude_angle_deg=float(att), position=(X * C, Y * C),
-        force=(Fx, Fy), load=float(np.hypot(Fx, Fy)), min_film=C * tilt_min_film(film, X, Y),
+        force=(Fx, Fy), load=float(np.hypot(Fx, Fy)),
+        min_film=C * (tilt_min_film(film, X, Y) if gap is None else float(np.min(gap))),
         moment=moment(film, P), tilt=film.tilt_rad,
         speed_rpm=film.speed_rpm, pressure=pressure, film_content=theta, angle_deg=np.degrees(grid.x.centres),
         z=grid.z.centres * R, u=np.array(u, dtype=float), newton_iterations=iterations, iterations=iterations,
@@ -308,14 +310,14 @@ def film_state(film, u, X, Y, F, P, content, iterations=0, contact=None, viscosi
         gecim=(rh.kappa, rh.viscosity_ratio) if film.shear_thinning else None, **flow_fields(film, u, X, Y))
 
 
-def film_geometry(film, X, Y, P):
+def film_geometry(film, X, Y, P, gap=None):
     """Film thickness ``h`` [m], circumferential pressure gradient ``dp/ds`` (``s = R phi`` along the rotation) and
     axial gradient ``dp/dz`` [Pa/m] per cell, as (n_axial, n_theta) arrays, from the dimensionless pressure ``P``:
     the cells' Green-Gauss gradients of the operator (:func:`~transient.fv.face_gradient.cell_gradient_values`:
     central differences on this uniform grid; the prescribed pressure at an end, the cell's own at the symmetry
-    plane)."""
+    plane). ``gap``: the cells' film thickness [C] if not the rigid journal's."""
     s, grid = film.scales, film.grid
-    h = s.clearance * grid.to_2d(film.gap0 + X * film.cosp + Y * film.sinp)
+    h = s.clearance * grid.to_2d(film.gap0 + X * film.cosp + Y * film.sinp if gap is None else gap)
     g = cell_gradient_values(film.op, np.asarray(P, dtype=float)) * (film.p0 / s.radius)
     return h, grid.to_2d(g[:, 0]), grid.to_2d(g[:, 1])
 
