@@ -47,6 +47,7 @@ from transient.models.journal.results import FilmState  # noqa: F401 (its home w
 SPEED_RANGE_RPM = (1e-3, 1e6)
 #: Largest e/C an equilibrium iterate of a rough bearing with a Winkler bore may take (the bore's give included).
 ELASTIC_REACH = 1.5
+ELASTIC_STEP = 0.05  # [C] the longest equilibrium step of a rough bearing with a Winkler bore
 #: A rough bearing's equilibrium by continuation in speed (:meth:`JournalBearing._continued_equilibrium`) starts at
 #: this multiple of the speed, and at least at ``CONTINUATION_START_RPM`` [rpm].
 CONTINUATION_SPEED_RATIO = 1000.0
@@ -528,6 +529,8 @@ class JournalBearing:
             if np.max(np.abs(r)) <= tol * max(wbar, 1e-300):
                 return f, u, q, it, (dF_dq, dF_dv)
             dq = -np.linalg.solve(dF_dq, r)
+            if self._reach == ELASTIC_REACH:  # a Winkler bore: steps of at most ELASTIC_STEP (its film is stiff)
+                dq *= min(1.0, ELASTIC_STEP / max(float(np.hypot(*dq)), 1e-300))
             lam = 1.0  # keep the journal inside the clearance
             while reach(q + lam * dq) >= self._reach * self.max_eccentricity_ratio:
                 lam *= 0.5
