@@ -19,13 +19,14 @@ conductances (``k_x, k_z <- k_x, k_z exp(-alpha p0 P)``, their slope ``d k / du 
 Jacobian) and multiplies the Couette shear stress of the friction; the Couette and shear flows do not depend on the
 viscosity. alpha = 0 is the isoviscous film, the same arithmetic.
 
-Winkler bore (``Roughness.bore_compliance`` K > 0; the local column model of an elastic lining, e.g. K. L. Johnson,
-Contact Mechanics (1985) sec. 4.3): the bore of a cell gives way by its film and asperity pressures, so the cell's
-gap is ``h = h_rigid + K (p + p_a(h))``, solved per cell (a scalar Newton: ``h - K p_a(h)`` rises and is concave, so
-the iterates from below the root climb monotonically to it; they start at ``h_rigid + K p``, held above -10 sigma). Every coefficient then moves with the
-pressure through ``dH/du = kappa (dP/du) / (1 - kappa p_a'(H) / p0)`` (``kappa = K p0 / C``) and with the journal
-position through ``dH/dX = cos / (1 - kappa p_a' / p0)``: the Poiseuille conductances in the kernel's cell slopes,
-the Couette coefficient by :func:`couette_slope_kernel`, the asperity force in :meth:`RoughFilm.force_sensitivity`.
+Winkler bore (``Roughness.bore_compliance`` K > 0; the elastic foundation model, K. L. Johnson, Contact Mechanics,
+1985): the bore of a cell gives way by its film and asperity pressures, so the cell's gap is
+``h = h_rigid + K (p + p_a(h))``, solved per cell (a scalar Newton: ``h - K p_a(h)`` rises and is concave, so the
+iterates from below the root climb monotonically to it; they start at ``h_rigid + K p``, held above -10 sigma). Every
+coefficient then moves with the pressure through ``dH/du = kappa (dP/du) / (1 - kappa p_a'(H) / p0)``
+(``kappa = K p0 / C``) and with the journal position through ``dH/dX = cos / (1 - kappa p_a' / p0)``: the Poiseuille
+conductances in the kernel's cell slopes, the Couette coefficient by :func:`couette_slope_kernel`, the asperity force
+in :meth:`RoughFilm.force_sensitivity`.
 K = 0 is the rigid bore, the same arithmetic. The pseudo-time term of the steady solve keeps its rigid slope.
 """
 
@@ -41,7 +42,6 @@ from transient.models.journal.kernels import N_ROTOR, film_force, state_fields
 from transient.models.journal.rough_orbit import rough_content_universal
 from transient.models.journal.roughness import Roughness, contact_pressure, rough_coefficients
 
-
 ELASTIC_NEWTON_ITERATIONS = 60  # the per-cell gap solve converges monotonically, in a few steps at these slopes
 ELASTIC_GAP_FLOOR = 10.0  # [sigma] the per-cell gap solve's iterates stay above -10 sigma (a root lies far above)
 
@@ -51,7 +51,7 @@ def couette_slope_kernel(C, cx, dcx_du, faces, cells, data):
     """Adds to the CSC ``data`` of dR/du the terms of the circumferential Couette flux ``G = c_f C_up`` (content
     upwind, ``c_f = (c_L + c_R) / 2``) from the cells' own slopes ``dcx_du``: ``dG/du_L = dc_L C_up / 2``, the same
     for R (the interior faces of :data:`~transient.fv.reynolds.FACE_TUPLES`; the ends carry no Couette flux)."""
-    fL, fR, fdir, fd, fs, fpos = faces
+    fL, fR, fdir, _, fs, fpos = faces
     free = cells[0]
     for f in range(fL.size):
         if fdir[f] != 0:
