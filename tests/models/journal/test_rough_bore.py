@@ -52,8 +52,8 @@ def elastic_film(alpha=0.0):
 
 @pytest.mark.parametrize("alpha", [0.0, 2e-8])
 def test_jacobian_matches_finite_differences(fd_jacobian, alpha):
-    """dG/du and dG/d(X, Y, VX, VY) of the film in the Winkler bore (with and without Barus), at a steady state with
-    asperity contact, perturbed."""
+    """dG/du (pseudo-time rate 0 and 3) and dG/d(X, Y, VX, VY) of the film in the Winkler bore (with and without
+    Barus), at a steady state with asperity contact, perturbed."""
     f = elastic_film(alpha)
     n = f.n
     X, Y, VX, VY = 0.93, 0.35, 0.0, 0.0
@@ -63,9 +63,12 @@ def test_jacobian_matches_finite_differences(fd_jacobian, alpha):
     give = f.H - (f.gap0 + X * f.cosp + Y * f.sinp)
     assert np.max(pa) > 0 and np.max(give) * f.scales.clearance > 3 * f.roughness.sigma
     u = u + 1e-3 * np.random.default_rng(3).standard_normal(n) * f.op.free
+    for rate in (0.0, 3.0):  # the pseudo-time storage: d(h_T theta)/du through the bore's give too
+        M = f.op.matrix(f.jacobian_data(u, X, Y, VX, VY, rate=rate)).toarray()
+        J_fd = fd_jacobian(lambda v, rate=rate: f.residual(v, X, Y, VX, VY, rate=rate).copy(), u, n,
+                           step=5e-4 * f.width)
+        assert np.max(np.abs(M[:n, :n] - J_fd)) < 1e-6 * np.max(np.abs(J_fd))
     M = f.op.matrix(f.jacobian_data(u, X, Y, VX, VY)).toarray()
-    J_fd = fd_jacobian(lambda v: f.residual(v, X, Y, VX, VY).copy(), u, n, step=5e-4 * f.width)
-    assert np.max(np.abs(M[:n, :n] - J_fd)) < 1e-6 * np.max(np.abs(J_fd))
     Jq = fd_jacobian(lambda q: f.residual(u, *q).copy(), np.array([X, Y, VX, VY]), n, step=1e-7)
     assert np.max(np.abs(M[:n, n:n + 4] - Jq)) < 1e-6 * np.max(np.abs(Jq))
 

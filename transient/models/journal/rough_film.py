@@ -27,7 +27,7 @@ coefficient then moves with the pressure through ``dH/du = kappa (dP/du) / (1 - 
 (``kappa = K p0 / C``) and with the journal position through ``dH/dX = cos / (1 - kappa p_a' / p0)``: the Poiseuille
 conductances in the kernel's cell slopes, the Couette coefficient by :func:`couette_slope_kernel`, the asperity force
 in :meth:`RoughFilm.force_sensitivity`.
-K = 0 is the rigid bore, the same arithmetic. The pseudo-time term of the steady solve keeps its rigid slope.
+K = 0 is the rigid bore, the same arithmetic.
 """
 
 from __future__ import annotations
@@ -168,6 +168,8 @@ class RoughFilm(Film):
         squeeze = VX * self.cosp + VY * self.sinp
         a = self.area
         data[pos_c[free]] += (a * self.D * (rc.phi_c * squeeze + rate * rc.mean_gap))[free]
+        if self.kappa != 0.0 and rate != 0.0:  # the storage's slope through the bore's give: d(h_T/C)/du = phi_c dH/du
+            data[pos_c[free]] += (a * rate * rc.phi_c * self.C * self.dH_du)[free]
         if ne > 0:
             col = ex.pos_col[:self.n][free]  # CSC positions of (cell, extra column) of the free cells
             dphi = self.C * rc.dphi_c * squeeze * a * hq  # the squeeze term's contact factor moves with H
