@@ -7,8 +7,10 @@ The big-end bearing (D 47.8 mm, L 17.2 mm, C 23.9 um) of a connecting rod on a s
 summits and Patir-Cheng flow factors as transcribed in MBDyn's test (transient.params.sander). At each load the
 Stribeck curves of the test bearing and of one support (half the load) from 4000 rpm down, the shaft torque their
 sum with both supports; beside it the measured torque and MBDyn's elastic model at 8 kN. The same with the summits'
-mean plane on the surfaces' (delta = 0) as the sensitivity to the contact's offset. --quick: 48 x 8 and 12 speeds;
-else 151 x 21 and 26 speeds (the measured ones among them). Writes DIR/sander_stribeck.png and .json.
+mean plane on the surfaces' (delta = 0) as the sensitivity to the contact's offset, with the oil's
+pressure-viscosity (Barus, 9.5e-9 1/Pa) in the films, and with Winkler bores of the housings' Lame compliance
+(transient.params.sander.bore_compliance). --quick: 48 x 8 and 12 speeds; else 151 x 21 and 26 speeds (the measured
+ones among them). Writes DIR/sander_stribeck.png, _delta0.png, _barus.png, _elastic.png and .json.
 """
 
 from __future__ import annotations
@@ -48,12 +50,17 @@ def main(argv=None):
     rec = JsonRecord(out / "sander_stribeck.json", dict(grid=grid, quick=a.quick))
     t0 = time.perf_counter()
     curves = {}
-    for label, surface in (("transcribed", None), ("delta0", sander.roughness(summit_height=0.0))):
+    elastic = (sander.roughness(bore_compliance=sander.bore_compliance(sander.TEST, sander.CONROD)),
+               sander.roughness(bore_compliance=sander.bore_compliance(sander.SUPPORT, sander.SUPPORT_HOUSING)))
+    variants = (("transcribed", (None, None)), ("delta0", (sander.roughness(summit_height=0.0), None)),
+                ("barus", (sander.roughness(pressure_viscosity=sander.PRESSURE_VISCOSITY), None)),
+                ("elastic", elastic))
+    for label, (surface, support_surface) in variants:
         for load in sander.LOADS:
             c0 = time.process_time()
             with warnings.catch_warnings():  # contact pressures above the isoviscous film's range at low speed
                 warnings.simplefilter("ignore", UserWarning)
-                curve = rig_curve(load, sp, grid, surface)
+                curve = rig_curve(load, sp, grid, surface, support_surface)
             cpu = time.process_time() - c0
             curves[label, load] = curve
             dev = deviations(curve)
@@ -69,9 +76,13 @@ def main(argv=None):
                 minimum_speed_rpm=curve.minimum_speed_rpm, measured_minimum_rpm=measured_minimum(load),
                 test_lift_off_rpm=curve.test.lift_off_speed_rpm, deviations=dev, cpu_s=cpu))
     h_min = {8000.0: ((3000, 150), (2e-6, 0.7e-6))}
-    for label, name in (("transcribed", "sander_stribeck.png"), ("delta0", "sander_stribeck_delta0.png")):
-        title = (f"Sander et al. 2016 rig: rigid isoviscous bearings, summit offset "
-                 f"{'0.6 um (transcribed)' if label == 'transcribed' else '0'}, grid {grid[0]} x {grid[1]}")
+    titles = {"transcribed": "rigid isoviscous bearings, summit offset 0.6 um (transcribed)",
+              "delta0": "rigid isoviscous bearings, summit offset 0",
+              "barus": "rigid bearings, Barus oil (9.5e-9 1/Pa), summit offset 0.6 um",
+              "elastic": "Winkler bores (Lame: 5.3e-13, 2.5e-13 m/Pa), isoviscous, summit offset 0.6 um"}
+    for label in titles:
+        name = "sander_stribeck.png" if label == "transcribed" else f"sander_stribeck_{label}.png"
+        title = f"Sander et al. 2016 rig: {titles[label]}, grid {grid[0]} x {grid[1]}"
         fig = plots.rig_torque([curves[label, w] for w in sander.LOADS], sander.MEASURED, sander.PEER, h_min, title)
         log(f"written: {save(fig, out / name)}")
     rec.put("wall_s", time.perf_counter() - t0)

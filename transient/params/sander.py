@@ -7,9 +7,12 @@ drive measures the shaft torque, the test bearing's friction plus the two suppor
 Oil at 100 C, 6.8 mPa s, isothermal. Surfaces: summit statistics for the Greenwood-Tripp contact
 (:class:`~transient.physics.asperity.SummitContact`), RMS heights and Peklenik numbers for the flow factors.
 
-What the rig has and these bearings do not: the pressure-viscosity of the oil (alpha = 9.5e-9 1/Pa), the elastic
-bore and supports, the journal's per-surface Peklenik numbers (4 and 12: one composite number, the variance-weighted
-9.9, held at the Patir-Cheng fits' 9).
+What the rig has and these bearings do not: the journal's per-surface Peklenik numbers (4 and 12: one composite
+number, the variance-weighted 9.9, held at the Patir-Cheng fits' 9) and the elastic bodies as finite-element models.
+Options of the surfaces (:func:`roughness`): the oil's pressure-viscosity (Barus, alpha = 9.5e-9 1/Pa) and a Winkler
+bore whose compliance is Lame's for a thick ring (:mod:`transient.physics.ring`) of the housings the test models: the
+aluminium connecting rod's big end (outer diameter 140 mm) and the steel supports (54 mm from the bore's centre to
+the nearest outer face: an outer diameter of 108 mm, an assumption of this model).
 """
 
 from __future__ import annotations
@@ -19,6 +22,7 @@ import math
 from transient.models.journal.bearing import JournalBearing
 from transient.models.journal.feeds import Groove, OilHole
 from transient.models.journal.roughness import Roughness
+from transient.physics import ring
 from transient.physics.asperity import SummitContact
 
 #: Test (big-end) bearing: D, L, relative clearance 1e-3 (the test's assumption).
@@ -26,6 +30,12 @@ TEST = dict(diameter=47.8e-3, length=17.2e-3, relative_clearance=1e-3)
 #: Support bearings: D, L, relative clearance 1e-3 (assumption); a 180-deg groove 5 mm wide on the unloaded side.
 SUPPORT = dict(diameter=54e-3, length=25e-3, relative_clearance=1e-3, groove_width=5e-3)
 OIL = dict(viscosity=6.8e-3, bulk_modulus=2.4e9, cavitation_pressure=100.0, supply_pressure=1e5)
+#: The oil's Barus pressure-viscosity coefficient [1/Pa].
+PRESSURE_VISCOSITY = 9.5e-9
+#: Housings as thick rings: outer diameter [m], Young's modulus [Pa], Poisson's ratio (the test's conrod: d2, E2, nu2;
+#: the supports: twice the test's l7, E3, nu3).
+CONROD = dict(outer_diameter=140e-3, youngs_modulus=70e9, poisson_ratio=0.3)
+SUPPORT_HOUSING = dict(outer_diameter=2 * 54e-3, youngs_modulus=210e9, poisson_ratio=0.3)
 #: Surfaces (journal 1, bush 2): summit standard deviations and mean heights, RMS heights, Peklenik numbers.
 SURFACES = dict(summit_sigma=(0.13e-6, 0.28e-6), summit_height=(0.21e-6, 0.39e-6), rq=(0.20e-6, 0.34e-6),
                 gamma=(4.0, 12.0))
@@ -41,10 +51,19 @@ PEER = {8000.0: ((150, 500, 3000), (2.339165422042972, 0.5112121251382301, 1.120
 GAMMA_MAX = 9.0  # the Patir-Cheng fits' largest Peklenik number
 
 
-def roughness(summit_height=None) -> Roughness:
+def bore_compliance(bearing: dict, housing: dict) -> float:
+    """Lame's bore compliance [m/Pa] (:func:`transient.physics.ring.bore_compliance`) of ``bearing`` (:data:`TEST`
+    or :data:`SUPPORT`) in ``housing`` (:data:`CONROD` or :data:`SUPPORT_HOUSING`)."""
+    return ring.bore_compliance(0.5 * bearing["diameter"], 0.5 * housing["outer_diameter"],
+                                housing["youngs_modulus"], housing["poisson_ratio"])
+
+
+def roughness(summit_height=None, pressure_viscosity=0.0, bore_compliance=0.0) -> Roughness:
     """The composite surface: summit sigma = sqrt(sum sigma_i^2), delta = sum delta_i (or ``summit_height`` [m]);
     beta and eta from K and eta beta sigma as the source defines them; the flow factors on the composite RMS height
-    sqrt(sum Rq_i^2), the journal's share of its variance, and the variance-weighted Peklenik number held at 9."""
+    sqrt(sum Rq_i^2), the journal's share of its variance, and the variance-weighted Peklenik number held at 9; the
+    oil's Barus coefficient ``pressure_viscosity`` [1/Pa] (0: isoviscous; the oil's: :data:`PRESSURE_VISCOSITY`); a
+    Winkler bore of ``bore_compliance`` [m/Pa] (0: rigid; the rig's: :func:`bore_compliance`)."""
     ss = math.hypot(*SURFACES["summit_sigma"])
     k, ebs = CONTACT["k_factor"], CONTACT["eta_beta_sigma"]
     beta = ss / (k / (16.0 * math.sqrt(2.0) * math.pi / 15.0 * ebs ** 2)) ** 2
@@ -57,7 +76,8 @@ def roughness(summit_height=None) -> Roughness:
                             sigma=math.sqrt(rq2_total), summit_sigma=ss, summit_height=sum(SURFACES["summit_height"]) if summit_height is None
                             else summit_height)
     return Roughness(contact, gamma=gamma, boundary_friction=CONTACT["boundary_friction"],
-                     journal_variance_share=rq1 ** 2 / rq2_total)
+                     journal_variance_share=rq1 ** 2 / rq2_total, pressure_viscosity=pressure_viscosity,
+                     bore_compliance=bore_compliance)
 
 
 def test_bearing(grid=(151, 21), surface: Roughness | None = None) -> JournalBearing:

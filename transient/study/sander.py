@@ -55,11 +55,13 @@ class RigCurve:
         return self.torque[idx]
 
 
-def rig_curve(load, speeds_rpm, grid=(151, 21), surface=None) -> RigCurve:
+def rig_curve(load, speeds_rpm, grid=(151, 21), surface=None, support_surface=None) -> RigCurve:
     """The rig's shaft torque under ``load`` [N] at ``speeds_rpm``: the test bearing under ``load`` and a support
-    bearing under ``load / 2``, each on ``grid`` with ``surface`` (default :func:`transient.params.sander.roughness`)."""
+    bearing under ``load / 2``, each on ``grid`` with ``surface`` (default :func:`transient.params.sander.roughness`),
+    the support with ``support_surface`` if given (a support's bore differs from the test bearing's)."""
     test = stribeck_curve(sander.test_bearing(grid, surface), load, speeds_rpm)
-    support = stribeck_curve(sander.support_bearing(grid, surface), 0.5 * load, speeds_rpm)
+    support = stribeck_curve(sander.support_bearing(grid, surface if support_surface is None else support_surface),
+                             0.5 * load, speeds_rpm)
     return RigCurve(load=float(load), test=test, support=support)
 
 

@@ -28,6 +28,9 @@ def test_parameters_are_the_transcribed_ones():
     assert sander.SUPPORT["diameter"] == rig["support_bearings"]["diameter_m"]
     assert sander.SUPPORT["length"] == rig["support_bearings"]["length_m"]
     assert sander.OIL["viscosity"] == DATA["oil"]["viscosity_pa_s"]
+    assert sander.PRESSURE_VISCOSITY == DATA["oil"]["pressure_viscosity_pa_inv"]
+    assert sander.roughness(pressure_viscosity=sander.PRESSURE_VISCOSITY).pressure_viscosity == 9.5e-9
+    assert sander.roughness().pressure_viscosity == 0.0
     assert sander.SURFACES["summit_sigma"] == tuple(rough["summit_sigma_m"].values())
     assert sander.SURFACES["summit_height"] == tuple(rough["summit_mean_height_m"].values())
     assert sander.SURFACES["rq"] == tuple(rough["rq_m"].values())
@@ -91,19 +94,70 @@ def test_rig_figure_names_units_and_adds_the_supports():
     assert figure_problems(fig) == []
 
 
-def rig(load, speeds, grid):
+def rig(load, speeds, grid, surface=None):
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", UserWarning)
-        return rig_curve(load, speeds, grid)
+        return rig_curve(load, speeds, grid, surface)
 
 
-def test_hydrodynamic_branch_on_a_coarse_grid():
+BARUS = sander.roughness(pressure_viscosity=sander.PRESSURE_VISCOSITY)
+
+
+@pytest.mark.parametrize("surface", [None, BARUS], ids=["isoviscous", "barus"])
+def test_hydrodynamic_branch_on_a_coarse_grid(surface):
     """48 x 8 cells, 8 kN: above lift-off the shaft torque (test bearing + two supports) is within 10 % of the
-    measured one at 1000 and 3000 rpm (computed +6 % and -2 %), and the supports carry more than half of it."""
-    curve = rig(8000.0, [1000.0, 3000.0], (48, 8))
+    measured one at 1000 and 3000 rpm (isoviscous +6 % and -2 %; with the oil's Barus coefficient +2 % and +1 %), and
+    the supports carry more than half of it."""
+    curve = rig(8000.0, [1000.0, 3000.0], (48, 8), surface)
     for n, (m, c, d) in deviations(curve).items():
         assert abs(d) < 0.10, (n, m, c)
     assert np.all(2 * curve.support.friction_torque > 0.5 * curve.torque)
+
+
+def test_pressure_viscosity_lowers_the_mixed_branch_on_a_coarse_grid():
+    """48 x 8 cells, 8 kN, 500 rpm: the film at exp(alpha p) viscosity (peak film pressure near 60 MPa, mu up to
+    1.8 mu0) carries more of the load, the test bearing's asperity load and the shaft torque fall (1.17 to 1.00 N m),
+    but stay more than 40 % above the measured 0.43 N m."""
+    iso, bar = rig(8000.0, [500.0], (48, 8)), rig(8000.0, [500.0], (48, 8), BARUS)
+    assert bar.test.contact_load[0] < 0.9 * iso.test.contact_load[0]
+    assert bar.torque[0] < 0.9 * iso.torque[0]
+    assert deviations(bar)[500.0][2] > 0.4
+
+
+ELASTIC = (sander.roughness(bore_compliance=sander.bore_compliance(sander.TEST, sander.CONROD)),
+           sander.roughness(bore_compliance=sander.bore_compliance(sander.SUPPORT, sander.SUPPORT_HOUSING)))
+
+
+def test_housing_compliances_are_lames():
+    """The Winkler bores' compliances from the transcribed housings: the aluminium big end (bore 47.8 mm, outer
+    140 mm, E 70 GPa) and the steel supports (bore 54 mm, outer 108 mm, E 210 GPa), Lame in plane stress."""
+    rig = DATA["rig"]
+    assert sander.CONROD["outer_diameter"] == rig["conrod_outer_diameter_m"]
+    assert sander.CONROD["youngs_modulus"] == rig["conrod_youngs_modulus_pa"]
+    assert sander.SUPPORT_HOUSING["outer_diameter"] == 2 * rig["support_centre_to_top_m"]
+    assert sander.SUPPORT_HOUSING["youngs_modulus"] == rig["support_youngs_modulus_pa"]
+    a, b = 23.9e-3, 70e-3
+    assert sander.bore_compliance(sander.TEST, sander.CONROD) == pytest.approx(
+        a / 70e9 * ((b * b + a * a) / (b * b - a * a) + 0.3), rel=1e-12)
+    assert ELASTIC[0].bore_compliance == pytest.approx(5.34e-13, rel=1e-3)
+    assert ELASTIC[1].bore_compliance == pytest.approx(2.53e-13, rel=1e-3)
+
+
+def test_elastic_rig_meets_the_goals_on_a_coarse_grid():
+    """48 x 8 cells, 8 kN, Winkler bores of Lame's compliance (isoviscous): the hydrodynamic branch within 10 % at
+    1000 and 3000 rpm (-4 %, -4 %), the mixed branch within 40 % at 150, 300 and 500 rpm (-10 %, +9 %, +13 %; the
+    rigid bores: +126 % to +238 %), the least torque within 20 % of the measured speed (630 against 550 rpm on these
+    six speeds) and the test bearing's thinnest film at 150 rpm within 10 % of the source's 0.7 um (0.73 um)."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", UserWarning)
+        curve = rig_curve(8000.0, [150.0, 300.0, 500.0, 700.0, 1000.0, 3000.0], (48, 8), *ELASTIC)
+    dev = deviations(curve)
+    for n in (1000.0, 3000.0):
+        assert abs(dev[n][2]) < 0.10, (n, dev[n])
+    for n in (150.0, 300.0, 500.0):
+        assert abs(dev[n][2]) < 0.40, (n, dev[n])
+    assert curve.minimum_speed_rpm == pytest.approx(measured_minimum(8000.0), rel=0.2)
+    assert curve.test.h_min[0] == pytest.approx(0.7e-6, rel=0.1)
 
 
 @pytest.mark.slow  # 4 Stribeck curves of 13 speeds on 151 x 21 cells: about 2 min of CPU
@@ -121,3 +175,22 @@ def test_sander_rig_on_the_fine_grid():
         for n in (150.0, 250.0, 300.0):
             assert dev[n][2] > 0.4, (load, n, dev[n])
         assert curve.minimum_speed_rpm > measured_minimum(load)
+
+
+@pytest.mark.slow  # 4 Stribeck curves of 11 speeds on 75 x 11 cells: about 2 min of CPU
+def test_elastic_rig_on_the_medium_grid():
+    """75 x 11 cells, Winkler bores of Lame's compliance (docs/validation.md): the least torque within 10 % of the
+    measured speed (333 against 340 rpm, 567 against 550 rpm); the mixed branch (150 to 500 rpm) within 40 % at both
+    loads (-24 % to +7 %); the hydrodynamic branch within 10 % at 8 kN (-5 %, -5 %); at 4 kN the goal is not met
+    (-15 %, -11 %), checked at 20 % so that a change is seen."""
+    speeds = [150.0, 200.0, 250.0, 300.0, 400.0, 500.0, 700.0, 1000.0, 1500.0, 2000.0, 3000.0]
+    for load, tol in ((8000.0, 0.10), (4000.0, 0.20)):
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", UserWarning)
+            curve = rig_curve(load, speeds, (75, 11), *ELASTIC)
+        dev = deviations(curve)
+        for n in (1000.0, 3000.0):
+            assert abs(dev[n][2]) < tol, (load, n, dev[n])
+        for n in (150.0, 250.0, 300.0, 400.0, 500.0):
+            assert abs(dev[n][2]) < 0.40, (load, n, dev[n])
+        assert curve.minimum_speed_rpm == pytest.approx(measured_minimum(load), rel=0.1)

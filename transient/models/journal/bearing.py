@@ -45,6 +45,9 @@ from transient.models.journal.results import FilmState  # noqa: F401 (its home w
 
 
 SPEED_RANGE_RPM = (1e-3, 1e6)
+#: Largest e/C an equilibrium iterate of a rough bearing with a Winkler bore may take (the bore's give included).
+ELASTIC_REACH = 1.5
+ELASTIC_STEP = 0.05  # [C] the longest equilibrium step of a rough bearing with a Winkler bore
 #: A rough bearing's equilibrium by continuation in speed (:meth:`JournalBearing._continued_equilibrium`) starts at
 #: this multiple of the speed, and at least at ``CONTINUATION_START_RPM`` [rpm].
 CONTINUATION_SPEED_RATIO = 1000.0
@@ -349,8 +352,11 @@ class JournalBearing:
     @property
     def _reach(self) -> float:
         """Largest fraction of ``max_eccentricity_ratio`` an equilibrium iterate may take: 0.995; a rough bearing's
-        asperities carry the load at smaller gaps, 0.9999 (a film of 1e-4 C)."""
-        return 0.995 if self.roughness is None else 0.9999
+        asperities carry the load at smaller gaps, 0.9999 (a film of 1e-4 C); a Winkler bore gives way, so the
+        journal may pass the rigid bore's circle: ``ELASTIC_REACH``."""
+        if self.roughness is None:
+            return 0.995
+        return ELASTIC_REACH if self.roughness.bore_compliance > 0.0 else 0.9999
 
     @property
     def max_eccentricity_ratio(self) -> float:
@@ -523,6 +529,8 @@ class JournalBearing:
             if np.max(np.abs(r)) <= tol * max(wbar, 1e-300):
                 return f, u, q, it, (dF_dq, dF_dv)
             dq = -np.linalg.solve(dF_dq, r)
+            if self._reach == ELASTIC_REACH:  # a Winkler bore: steps of at most ELASTIC_STEP (its film is stiff)
+                dq *= min(1.0, ELASTIC_STEP / max(float(np.hypot(*dq)), 1e-300))
             lam = 1.0  # keep the journal inside the clearance
             while reach(q + lam * dq) >= self._reach * self.max_eccentricity_ratio:
                 lam *= 0.5

@@ -271,14 +271,16 @@ class Film(FilmBlock):
         return film_state(self, u, X, Y, F, self.P, self.C, iterations)
 
 
-def film_state(film, u, X, Y, F, P, content, iterations=0, contact=None):
+def film_state(film, u, X, Y, F, P, content, iterations=0, contact=None, viscosity_factor=None, gap=None):
     """The SI :class:`~transient.models.journal.results.FilmState` of a film (:class:`Film` or
     :class:`~transient.models.journal.reynolds_film.ReynoldsFilm`) at journal position (X, Y): its dimensionless
     force ``F``, pressure ``P`` (p0 units above p_c) and film content per cell. The attitude is measured from
     the load line (the load balances -F) to the line of centres. ``contact`` of a rough film
     (:class:`~transient.models.journal.rough_film.RoughFilm`): (asperity pressure per cell [Pa], asperity force [N],
     its normal load ``sum p_a dA`` [N], boundary friction coefficient); the friction torque then adds
-    ``mu_b R sum p_a dA`` to the film's ``R * friction_force``."""
+    ``mu_b R sum p_a dA`` to the film's ``R * friction_force``. ``viscosity_factor``: ``mu / mu0`` per cell of a
+    pressure-viscous film (:func:`wall_friction`). ``gap``: the film thickness per cell [C] of a film whose bore
+    deforms, in place of the rigid journal's (its least cell value the minimum film)."""
     s, law, grid = film.scales, film.law, film.grid
     C, R = s.clearance, s.radius
     Fx, Fy = F[0] * film.force_scale, F[1] * film.force_scale
@@ -287,8 +289,8 @@ def film_state(film, u, X, Y, F, P, content, iterations=0, contact=None):
     att = np.degrees(np.angle(np.exp(1j * (np.arctan2(Y, X) - load_dir)))) if eps > 0 else 0.0
     pressure = grid.to_2d(s.cavitation_pressure + film.p0 * np.asarray(P)).copy()
     theta = grid.to_2d(np.asarray(content, dtype=float)).copy()
-    h, G, Gz = film_geometry(film, X, Y, P)
-    friction = wall_friction(film, h, G, Gz, theta)
+    h, G, Gz = film_geometry(film, X, Y, P, gap)
+    friction = wall_friction(film, h, G, Gz, theta, viscosity_factor)
     ly = None if law.layers is NO_LAYERS else law.layers
     rh = law.rheology
     pa, Fc, normal, mu_b = (None, (0.0, 0.0), 0.0, 0.0) if contact is None else contact
@@ -297,7 +299,8 @@ def film_state(film, u, X, Y, F, P, content, iterations=0, contact=None):
         contact_load=float(np.hypot(*Fc)), contact_normal_load=normal,
         friction_torque=R * (friction[0] + mu_b * normal),
         eccentricity_ratio=eps, attitude_angle_deg=float(att), position=(X * C, Y * C),
-        force=(Fx, Fy), load=float(np.hypot(Fx, Fy)), min_film=C * tilt_min_film(film, X, Y),
+        force=(Fx, Fy), load=float(np.hypot(Fx, Fy)),
+        min_film=C * (tilt_min_film(film, X, Y) if gap is None else float(np.min(gap))),
         moment=moment(film, P), tilt=film.tilt_rad,
         speed_rpm=film.speed_rpm, pressure=pressure, film_content=theta, angle_deg=np.degrees(grid.x.centres),
         z=grid.z.centres * R, u=np.array(u, dtype=float), newton_iterations=iterations, iterations=iterations,
@@ -307,19 +310,19 @@ def film_state(film, u, X, Y, F, P, content, iterations=0, contact=None):
         gecim=(rh.kappa, rh.viscosity_ratio) if film.shear_thinning else None, **flow_fields(film, u, X, Y))
 
 
-def film_geometry(film, X, Y, P):
+def film_geometry(film, X, Y, P, gap=None):
     """Film thickness ``h`` [m], circumferential pressure gradient ``dp/ds`` (``s = R phi`` along the rotation) and
     axial gradient ``dp/dz`` [Pa/m] per cell, as (n_axial, n_theta) arrays, from the dimensionless pressure ``P``:
     the cells' Green-Gauss gradients of the operator (:func:`~transient.fv.face_gradient.cell_gradient_values`:
     central differences on this uniform grid; the prescribed pressure at an end, the cell's own at the symmetry
-    plane)."""
+    plane). ``gap``: the cells' film thickness [C] if not the rigid journal's."""
     s, grid = film.scales, film.grid
-    h = s.clearance * grid.to_2d(film.gap0 + X * film.cosp + Y * film.sinp)
+    h = s.clearance * grid.to_2d(film.gap0 + X * film.cosp + Y * film.sinp if gap is None else gap)
     g = cell_gradient_values(film.op, np.asarray(P, dtype=float)) * (film.p0 / s.radius)
     return h, grid.to_2d(g[:, 0]), grid.to_2d(g[:, 1])
 
 
-def wall_friction(film, h, G, Gz, theta) -> tuple[float, float]:
+def wall_friction(film, h, G, Gz, theta, viscosity_factor=None) -> tuple[float, float]:
     """Friction forces [N] of the film on the journal (its drag, against the rotation) and on the bearing (along the
     rotation): ``-sum tau(0) min(theta, 1) dA`` and ``-sum tau(h) min(theta, 1) dA`` over the bearing, with the
     wall shear stresses ``tau(0)``, ``tau(h) = tau(0) + G h`` of the film's flow law (Jang's layered film;
@@ -328,7 +331,8 @@ def wall_friction(film, h, G, Gz, theta) -> tuple[float, float]:
     cell shears only its content fraction theta (Elrod's striated film). A Gecim bulk couples the directions: its
     circumferential wall stresses are those of the 2-D law at ``(G, Gz)``; the Newtonian law is linear and uses
     ``G`` alone. The two differ by ``sum G h theta dA``: the moment of the pressure force about the journal centre
-    over R (test)."""
+    over R (test). ``viscosity_factor`` (per cell, Newtonian bulk without layers): the cell's viscosity over the
+    law's, which scales the Couette stress ``-mu U / h`` (the Poiseuille stress ``h G / 2`` does not depend on it)."""
     sc, law = film.scales, film.law
     U = sc.omega * sc.radius
     if film.shear_thinning:
@@ -337,5 +341,8 @@ def wall_friction(film, h, G, Gz, theta) -> tuple[float, float]:
     else:
         s = law.stresses(h, G, U, 0.0)
         lower, upper = s.lower_wall, s.upper_wall
+        if viscosity_factor is not None:
+            extra = -(film.grid.to_2d(viscosity_factor) - 1.0) * law.viscosity * U / h
+            lower, upper = lower + extra, upper + extra
     weight = sc.sym * np.minimum(theta, 1.0) * film.grid.to_2d(film.area) * sc.radius ** 2
     return float(-np.sum(lower * weight)), float(-np.sum(upper * weight))

@@ -92,6 +92,12 @@ def _pressure_fit(gamma):
 def rough_cells(roughness, clearance, p0, n, knots=CONSTANT) -> RoughCells:
     """:class:`RoughCells` of a film of ``n`` cells with ``roughness`` (:class:`~.roughness.Roughness`), clearance
     [m] and pressure unit ``p0`` [Pa], shaft speed law ``knots`` (:mod:`~transient.models.journal.speed_law`)."""
+    if roughness.pressure_viscosity != 0.0:
+        raise ValueError(f"roughness.pressure_viscosity = {roughness.pressure_viscosity!r} [1/Pa] in a rough orbit; "
+                         "allowed: 0 (the orbit's film is isoviscous; the steady states take the Barus film)")
+    if roughness.bore_compliance != 0.0:
+        raise ValueError(f"roughness.bore_compliance = {roughness.bore_compliance!r} [m/Pa] in a rough orbit; "
+                         "allowed: 0 (the orbit's bore is rigid; the steady states take the Winkler bore)")
     sig = roughness.sigma / clearance
     ps = np.zeros((2, 6))
     w = 2.0 * roughness.journal_variance_share - 1.0

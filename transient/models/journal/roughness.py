@@ -50,12 +50,19 @@ class Roughness:
     boundary_friction [-] : boundary friction coefficient mu_b of the asperity contacts, in [0, 1].
     journal_variance_share [-] : the journal's share of the roughness variance, ``sigma_journal^2 / sigma^2``, in
         [0, 1] (0.5, default: both surfaces alike, and the shear flow factor cancels).
+    pressure_viscosity [1/Pa] : Barus coefficient alpha of the oil in the film, ``mu = mu0 exp(alpha p)`` with p the
+        film pressure above cavitation, in [0, 1e-7] (0, default: isoviscous). Steady states only (the Stribeck
+        curve, the equilibrium); the transient rough orbit refuses it.
+    bore_compliance [m/Pa] : radial compliance K of a Winkler bore, which each cell's film and asperity pressures
+        push out by ``K (p + p_a)``, in [0, 1e-11] (0, default: rigid). Steady states only, as ``pressure_viscosity``.
     """
 
     contact: AsperityContact
     gamma: float = 1.0
     boundary_friction: float = 0.1
     journal_variance_share: float = 0.5
+    pressure_viscosity: float = 0.0
+    bore_compliance: float = 0.0
 
     def __post_init__(self):
         check_instance("roughness.contact", self.contact, AsperityContact, "an AsperityContact")
@@ -65,6 +72,9 @@ class Roughness:
         set_("boundary_friction", check_range("roughness.boundary_friction", self.boundary_friction, "-", 0.0, 1.0))
         set_("journal_variance_share", check_range("roughness.journal_variance_share", self.journal_variance_share,
                                                    "-", 0.0, 1.0))
+        set_("pressure_viscosity", check_range("roughness.pressure_viscosity", self.pressure_viscosity, "1/Pa", 0.0,
+                                               1e-7, why="(Barus coefficients of oils: 1e-8 to 3e-8)"))
+        set_("bore_compliance", check_range("roughness.bore_compliance", self.bore_compliance, "m/Pa", 0.0, 1e-11))
 
     @property
     def sigma(self) -> float:
@@ -80,7 +90,9 @@ class Roughness:
     def parameters(self) -> dict:
         c = self.contact
         return dict(sigma=self.sigma, gamma=self.gamma, boundary_friction=self.boundary_friction,
-                    journal_variance_share=self.journal_variance_share, asperity_density=c.asperity_density,
+                    journal_variance_share=self.journal_variance_share,
+                    pressure_viscosity=self.pressure_viscosity, bore_compliance=self.bore_compliance,
+                    asperity_density=c.asperity_density,
                     asperity_radius=c.asperity_radius, e_prime=c.e_prime, hardness=c.hardness)
 
 
