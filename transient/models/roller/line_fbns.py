@@ -231,11 +231,18 @@ def schur_kernel(dp, dh, dt, K, b_p, b_t, weight, S):
 def schur_system(film, u, e):
     """``(S, r, (a_p, b_p, a_th, b_t))``: the Schur matrix and right-hand side of the Newton step at ``u``
     (Reynolds rows divided by their scales) and the node-wise back-substitution ``dp = a_p + b_p z``, ``dtheta = a_th + b_t z``."""
-    a_p, b_p, a_th, b_t = schur(film, u, e)
+    elimination = schur(film, u, e)
+    return scaled_schur(film, e, elimination) + (elimination,)
+
+
+def scaled_schur(film, e, elimination):
+    """``(S, r)``: the Schur matrix and right-hand side of the Newton step for the node-wise elimination
+    ``elimination`` (:func:`~transient.models.ehl.reduced.schur`), the Reynolds rows divided by their scales."""
+    a_p, b_p, a_th, b_t = elimination
     S = film.schur_matrix(e, b_p, b_t)
     # rows by their scales (the step is unchanged; the conditioning of S improves by many decades)
     S[:-1] /= e["scale"][:, None]
-    return S, schur_rhs(film, e, a_p, a_th), (a_p, b_p, a_th, b_t)
+    return S, schur_rhs(film, e, a_p, a_th)
 
 
 def schur_rhs(film, e, a_p, a_th):

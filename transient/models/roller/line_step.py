@@ -28,7 +28,8 @@ from scipy.sparse import linalg as spla
 from threadpoolctl import threadpool_limits
 
 from transient.checks import check_choice
-from transient.models.roller.line_newton import content_newton, merit
+from transient.models.ehl.newton import merit
+from transient.models.roller.line_newton import content_newton
 from transient.solvers.integrate import Problem, Steps
 from transient.solvers.integrate import solve as integrate
 from transient.solvers.integrate.stepper import StepSolve
