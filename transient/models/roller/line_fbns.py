@@ -31,7 +31,7 @@ from numba import njit
 from transient.models.ehl.reduced import schur
 from transient.models.roller.ehl_problem import EHLFilm
 from transient.models.roller.kernels import node_properties
-from transient.models.ehl.complementarity import fb_derivatives
+from transient.models.ehl.complementarity import fb_derivatives, fb_residual
 
 #: local Jacobian slots: centre, west, east, west-west, and their offsets in full nodes
 N_LOCAL = 4
@@ -137,10 +137,9 @@ class LineContentFilm:
         res, scale = np.empty(n), np.empty(n)
         dp, dh, dt = np.empty((n, N_LOCAL)), np.empty((n, N_LOCAL)), np.empty((n, N_LOCAL))
         content_residual(pf, tf, self.x, self.props, b.lam, b.order2, res, scale, dp, dh, dt)
-        p, t = u[:n], u[n: 2 * n]
-        bb = 1.0 - t
-        rad = np.sqrt(p * p + bb * bb)
-        return dict(H=H, res=res, scale=scale, dp=dp, dh=dh, dt=dt, fb=p + bb - rad, rad=rad,
+        p = u[:n]
+        fb, rad = fb_residual(p, u[n: 2 * n])
+        return dict(H=H, res=res, scale=scale, dp=dp, dh=dh, dt=dt, fb=fb, rad=rad,
                     load=self.weight @ p - load_ratio)
 
     def fb_derivatives(self, u, e):
