@@ -140,6 +140,16 @@ def test_ehl_films_share_the_engine_and_never_borrow_sideways():
     assert any(folder(a) == "point" and folder(b) == "ehl" for a, b in edges)
 
 
+def test_ehl_films_iterate_on_the_engines_one_newton():
+    """The point film's and the line/roller films' FBNS Newton is ``models/ehl/newton.py``'s: both facades import
+    it, and its Armijo line search (the test ``(1 - 1e-4 s)``) is written nowhere else in the models."""
+    edges, _ = _module_imports()
+    assert ("transient.models.point.fbns", "transient.models.ehl.newton") in edges
+    assert ("transient.models.roller.line_newton", "transient.models.ehl.newton") in edges
+    armijo = sorted(str(p.relative_to(PKG)) for p in (PKG / "models").rglob("*.py") if "1e-4 * s)" in p.read_text())
+    assert armijo == ["models/ehl/newton.py"]
+
+
 def test_the_circle_finder_finds_a_circle(tmp_path, monkeypatch):
     """The rule above can fail: two modules importing each other (one inside a function) are a circle."""
     pkg = tmp_path / "transient" / "models" / "toy"

@@ -15,6 +15,14 @@ from __future__ import annotations
 import numpy as np
 
 
+def fb_residual(p, theta):
+    """``(FB(p, 1 - theta), r)`` per node at pressures ``p`` and contents ``theta``, ``r = sqrt(p^2 + (1 -
+    theta)^2)`` (kept for :func:`fb_derivatives`)."""
+    b = 1.0 - theta
+    rad = np.sqrt(p * p + b * b)
+    return p + b - rad, rad
+
+
 def fb_derivatives(p, theta, rad):
     """``(dFB/dp, dFB/dtheta)`` per node at pressures ``p``, contents ``theta`` and ``rad = sqrt(p^2 + (1 -
     theta)^2)`` (the value the residual already holds); the full film's element ``(0, -1)`` at the kink."""

@@ -14,20 +14,30 @@ import scipy.sparse as sp
 from numba import njit
 
 
+class Elimination:
+    """The node-wise elimination of the Fischer-Burmeister rows ``alpha dP + gamma dtheta = -FB`` at their
+    derivatives ``alpha``, ``gamma``: the remaining unknown ``z`` per node is the pressure where ``|gamma| >=
+    |alpha|`` (``keep_p``), the content otherwise; ``dP = a_p + b_p z``, ``dtheta = a_theta + b_theta z`` (all
+    ``|b| <= 1``), with ``b_p``, ``b_t`` fixed here and the offsets from the rows' values (:meth:`offsets`)."""
+
+    def __init__(self, alpha, gamma):
+        self.keep_p = np.abs(gamma) >= np.abs(alpha)
+        self.sg = np.where(self.keep_p, gamma, 1.0)
+        self.sa = np.where(self.keep_p, 1.0, alpha)
+        self.b_p = np.where(self.keep_p, 1.0, -gamma / self.sa)
+        self.b_t = np.where(self.keep_p, -alpha / self.sg, 1.0)
+
+    def offsets(self, fb):
+        """``(a_p, a_theta)`` for the Fischer-Burmeister rows' values ``fb``."""
+        return np.where(self.keep_p, 0.0, -fb / self.sa), np.where(self.keep_p, -fb / self.sg, 0.0)
+
+
 def schur(film, u, e):
-    """Node-wise elimination of the Fischer-Burmeister rows: ``(a_p, b_p, a_theta, b_theta)`` with
-    ``dP = a_p + b_p z`` and ``dtheta = a_theta + b_theta z`` for the remaining unknown ``z`` per node (the
-    pressure where ``|dFB/dtheta| >= |dFB/dP|``, the content otherwise; all ``|b| <= 1``)."""
-    alpha, gamma = film.fb_derivatives(u, e)
-    fb = e["fb"]
-    keep_p = np.abs(gamma) >= np.abs(alpha)
-    sg = np.where(keep_p, gamma, 1.0)
-    sa = np.where(keep_p, 1.0, alpha)
-    b_p = np.where(keep_p, 1.0, -gamma / sa)
-    a_p = np.where(keep_p, 0.0, -fb / sa)
-    b_t = np.where(keep_p, -alpha / sg, 1.0)
-    a_th = np.where(keep_p, -fb / sg, 0.0)
-    return a_p, b_p, a_th, b_t
+    """Node-wise elimination of the Fischer-Burmeister rows (:class:`Elimination`) at ``u``:
+    ``(a_p, b_p, a_theta, b_theta)`` with ``dP = a_p + b_p z`` and ``dtheta = a_theta + b_theta z``."""
+    el = Elimination(*film.fb_derivatives(u, e))
+    a_p, a_th = el.offsets(e["fb"])
+    return a_p, el.b_p, a_th, el.b_t
 
 
 def dense_reduced(film, local, b_p, b_t) -> np.ndarray:

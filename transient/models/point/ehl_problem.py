@@ -30,7 +30,7 @@ import scipy.sparse as sp
 
 from transient.models.point.kernels import node_properties, reynolds
 from transient.physics.elasticity import SurfaceConvolution, surface_influence
-from transient.models.ehl.complementarity import fb_derivatives
+from transient.models.ehl.complementarity import fb_derivatives, fb_residual
 
 
 class MirroredConvolution:
@@ -158,10 +158,8 @@ class PointFilm:
         dp, dh, dt = np.empty((n, 6)), np.empty((n, 6)), np.empty((n, 6))
         reynolds(P, T, H, rho, drho, eps, deps, depsh, self.dx, self.dy, self.h_oil, self.scheme, res, scale,
                  dp, dh, dt)
-        p, t = u[:n], u[n: 2 * n]
-        b = 1.0 - t
-        rad = np.sqrt(p * p + b * b)
-        fb = p + b - rad
+        p = u[:n]
+        fb, rad = fb_residual(p, u[n: 2 * n])
         load = self.weight @ p / self.load - load_ratio
         return dict(P=P, T=T, H=H, rho=rho, drho=drho, res=res, scale=scale, dp=dp, dh=dh, dt=dt, fb=fb,
                     rad=rad, load=load)

@@ -6,8 +6,10 @@ Hansen, Kacan, Frohnapfel & Codrignani (*Tribol. Lett.* 70, 2022) with the elast
 load balance. Each FB row ``a dP + g dtheta = -FB`` is diagonal, so one unknown per node is eliminated
 (theta where ``|g| >= |a|``, the pressure otherwise): the reduced ``(N + 1)`` system is dense (elasticity)
 and solved by LU (Hansen et al. keep only five diagonals of the elastic block and iterate more; the exact
-block is affordable up to ~10^4 unknowns and converges quadratically). Globalisation: backtracking on the
-scaled residual norm with the film kept positive.
+block is affordable up to ~10^4 unknowns and converges quadratically). The iteration and its globalisation
+(backtracking on the scaled residual norm with the film kept positive) are the EHL engine's
+(:func:`~transient.models.ehl.newton.fbns_newton`); this module gives it the point film's rows
+(:class:`StepRows`), its reduced system (:class:`ReducedSolve`: dense LU or Newton-Krylov) and the nested start.
 """
 
 from __future__ import annotations
@@ -18,11 +20,8 @@ import numpy as np
 import scipy.linalg as sla
 
 from transient.models.ehl.krylov import KrylovSolver, coarsening_factor, inject, prolong_state
+from transient.models.ehl.newton import back_substitute, fbns_newton, warn_inexact
 from transient.models.ehl.reduced import dense_reduced, schur
-
-#: a Newton step near the solution (largest scaled residual below 1e-3) that keeps more than this fraction of the
-#: residual's norm tightens an inexact linear solver (:meth:`~transient.models.ehl.krylov.KrylovSolver.tighten`)
-STAGNATION = 0.5
 
 #: the largest nodal unknown count (half grid) solved by the dense LU; above it, Newton-Krylov
 DENSE_MAX_UNKNOWNS = 600
@@ -51,29 +50,71 @@ def linear_solver(film, method="auto"):
     return KrylovSolver(film) if method == "krylov" else DenseSolver(film)
 
 
+class StepRows:
+    """The rows :func:`~transient.models.ehl.newton.fbns_newton` iterates on: the point film's ``film`` under the
+    load ratio ``load_ratio``, steady or (``cj > 0``) one implicit time step ``R - cj (q - q_hat)`` with the row
+    scales of :func:`rows`."""
+
+    def __init__(self, film, load_ratio=1.0, cj=0.0, q_hat=None):
+        self.film, self.load_ratio, self.cj, self.q_hat = film, load_ratio, cj, q_hat
+        self.n = film.n
+
+    def equations(self, u):
+        e = self.film.equations(u, self.load_ratio)
+        if not self.cj:
+            return e
+        res, scale = rows(self.film, e, self.cj, self.q_hat)
+        return dict(e, res=res, scale=scale)
+
+    def fb_derivatives(self, u, e):
+        return self.film.fb_derivatives(u, e)
+
+
+class ReducedSolve:
+    """The engine's linear solver (:mod:`transient.models.ehl.newton`) on the point film: the reduced system's
+    right-hand side from the film's sparse local blocks, solved by ``inner`` (:class:`DenseSolver` or
+    :class:`~transient.models.ehl.krylov.KrylovSolver`), whose misses of its GMRES tolerance are counted."""
+
+    def __init__(self, film, inner, cj=0.0):
+        self.film, self.inner, self.cj = film, inner, cj
+        if hasattr(inner, "tighten"):
+            self.tighten = inner.tighten
+
+    def solve(self, rows, u, e, elimination, stats):
+        before = dict(self.inner.stats)
+        z = reduced_solve(self.film, u, e, e["res"], self.cj, self.inner, elimination)
+        after = self.inner.stats
+        stats.krylov += after.get("gmres", 0) - before.get("gmres", 0)
+        stats.krylov_misses += after.get("failures", 0) - before.get("failures", 0)
+        stats.factorisations += after.get("setups", after["newton"]) - before.get("setups", before["newton"])
+        return z
+
+
+def reduced_solve(film, u, e, res, cj, solver, elimination):
+    """The reduced unknowns ``z`` of the Newton step at ``u`` (``e = film.equations(u)``, ``res`` its Reynolds
+    rows, ``cj`` their storage coefficient; ``elimination`` from :func:`~transient.models.ehl.reduced.schur`)."""
+    n = film.n
+    local = film.local_newton(u, e, cj)
+    a_pd, d_h, a_t = local
+    a_p, b_p, a_th, b_t = elimination
+    r = np.empty(n + 1)
+    r[:n] = -res - a_pd @ a_p - a_t @ a_th
+    if np.any(a_p):
+        r[:n] -= d_h @ film.deformation(a_p)
+    r[n] = -e["load"] - film.weight / film.load @ a_p
+    return solver.solve(film, u, e, local, b_p, b_t, r, cj)
+
+
 def newton_step(film, u, e, res=None, cj=0.0, solver=None):
     """The full Newton step ``du`` at ``u`` (``e = film.equations(u)``), by the node-wise Schur reduction.
 
     ``res``, ``cj``: the Reynolds rows of a time step, ``R - cj (q - q_hat)``, and their storage coefficient
     (default: the steady rows ``e["res"]``, ``cj = 0``); ``solver``: the reduced system's solver
     (:func:`linear_solver`; default dense)."""
-    n = film.n
-    local = film.local_newton(u, e, cj)
-    a_pd, d_h, a_t = local
+    elimination = schur(film, u, e)
     res = e["res"] if res is None else res
-    a_p, b_p, a_th, b_t = schur(film, u, e)
-    r = np.empty(n + 1)
-    r[:n] = -res - a_pd @ a_p - a_t @ a_th
-    if np.any(a_p):
-        r[:n] -= d_h @ film.deformation(a_p)
-    r[n] = -e["load"] - film.weight / film.load @ a_p
     solver = DenseSolver(film) if solver is None else solver
-    z = solver.solve(film, u, e, local, b_p, b_t, r, cj)
-    du = np.empty(2 * n + 1)
-    du[:n] = a_p + b_p * z[:n]
-    du[n: 2 * n] = a_th + b_t * z[:n]
-    du[-1] = z[n]
-    return du
+    return back_substitute(elimination, reduced_solve(film, u, e, res, cj, solver, elimination))
 
 
 def rows(film, e, cj=0.0, q_hat=None):
@@ -117,48 +158,20 @@ def fbns(film, u0, tol=1e-8, max_iter=60, load_ratio=1.0, step_max=0.5, cj=0.0, 
     p_h) plus half its value in one step, then halved until the residual norm decreases below the largest of
     the last ``memory`` norms (1: monotone; more: the non-monotone rule of Grippo, Lampariello & Lucidi, 1986).
     ``solver``: ``"auto"``, ``"dense"``, ``"krylov"`` (:func:`linear_solver`) or a solver object; its ``stats``
-    count the Newton steps (and for Krylov the GMRES iterations and times). ``nested``: a steady solve on a
+    count the Newton steps (and for Krylov the GMRES iterations and times); steps taken with GMRES short of
+    its tolerance are warned (:class:`~transient.models.ehl.errors.InexactStepWarning`). ``nested``: a steady solve on a
     grid above the dense size that starts far from the solution (scaled residual above 1e-2) starts from
     the solution on every second node (:func:`nested_start`) when that converges."""
     u = np.array(u0, float)
-    e = film.equations(u, load_ratio)
-    f = merit(film, e, cj, q_hat)
-    norms = [float(np.max(np.abs(f)))]
-    merits = [float(np.sqrt(f @ f))]
-    n = film.n
     if isinstance(solver, str):
         solver = linear_solver(film, solver)
-    if (nested and not cj and norms[0] > 1e-2 and film.n > DENSE_MAX_UNKNOWNS and (film.nx - 1) % 2 == 0
-            and (film.m - 1) % 2 == 0):
+    step_rows = StepRows(film, load_ratio, cj, q_hat)
+    if (nested and not cj and film.n > DENSE_MAX_UNKNOWNS and (film.nx - 1) % 2 == 0 and (film.m - 1) % 2 == 0
+            and float(np.max(np.abs(merit(film, film.equations(u, load_ratio))))) > 1e-2):
         start = nested_start(film, u, tol, max_iter, load_ratio, step_max, memory, solver)
         if start is not None:
             u = start
-            e = film.equations(u, load_ratio)
-            f = merit(film, e, cj, q_hat)
-            norms = [float(np.max(np.abs(f)))]
-            merits = [float(np.sqrt(f @ f))]
-    for _ in range(max_iter):
-        if norms[-1] < tol:
-            return u, True, norms
-        du = newton_step(film, u, e, rows(film, e, cj, q_hat)[0], cj, solver)
-        big = np.max(np.abs(du[:n]) / (step_max + 0.5 * np.abs(u[:n])))
-        s = min(1.0, 1.0 / big) if big > 0 else 1.0
-        phi0 = max(v * v for v in merits[-memory:])
-        accepted = False
-        for _ in range(30):
-            ut = u + s * du
-            et = film.equations(ut, load_ratio)
-            if np.min(et["H"]) > 0.0:
-                ft = merit(film, et, cj, q_hat)
-                if np.all(np.isfinite(ft)) and float(ft @ ft) < (1.0 - 1e-4 * s) * phi0:
-                    accepted = True
-                    break
-            s *= 0.5
-        if not accepted:
-            return u, False, norms
-        u, e, f = ut, et, ft
-        norms.append(float(np.max(np.abs(f))))
-        merits.append(float(np.sqrt(f @ f)))
-        if merits[-1] > STAGNATION * merits[-2] and norms[-1] < 1e-3 and hasattr(solver, "tighten"):
-            solver.tighten()  # an inexact linear solve that no longer reduces the residual: solve it tighter
-    return u, norms[-1] < tol, norms
+    u, ok, stats = fbns_newton(step_rows, u, ReducedSolve(film, solver, cj), tol, max_iter, step_max, memory,
+                               armijo="trial")
+    warn_inexact(stats, ok)
+    return u, ok, stats.norms

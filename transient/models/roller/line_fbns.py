@@ -31,7 +31,7 @@ from numba import njit
 from transient.models.ehl.reduced import schur
 from transient.models.roller.ehl_problem import EHLFilm
 from transient.models.roller.kernels import node_properties
-from transient.models.ehl.complementarity import fb_derivatives
+from transient.models.ehl.complementarity import fb_derivatives, fb_residual
 
 #: local Jacobian slots: centre, west, east, west-west, and their offsets in full nodes
 N_LOCAL = 4
@@ -137,10 +137,9 @@ class LineContentFilm:
         res, scale = np.empty(n), np.empty(n)
         dp, dh, dt = np.empty((n, N_LOCAL)), np.empty((n, N_LOCAL)), np.empty((n, N_LOCAL))
         content_residual(pf, tf, self.x, self.props, b.lam, b.order2, res, scale, dp, dh, dt)
-        p, t = u[:n], u[n: 2 * n]
-        bb = 1.0 - t
-        rad = np.sqrt(p * p + bb * bb)
-        return dict(H=H, res=res, scale=scale, dp=dp, dh=dh, dt=dt, fb=p + bb - rad, rad=rad,
+        p = u[:n]
+        fb, rad = fb_residual(p, u[n: 2 * n])
+        return dict(H=H, res=res, scale=scale, dp=dp, dh=dh, dt=dt, fb=fb, rad=rad,
                     load=self.weight @ p - load_ratio)
 
     def fb_derivatives(self, u, e):
@@ -231,11 +230,18 @@ def schur_kernel(dp, dh, dt, K, b_p, b_t, weight, S):
 def schur_system(film, u, e):
     """``(S, r, (a_p, b_p, a_th, b_t))``: the Schur matrix and right-hand side of the Newton step at ``u``
     (Reynolds rows divided by their scales) and the node-wise back-substitution ``dp = a_p + b_p z``, ``dtheta = a_th + b_t z``."""
-    a_p, b_p, a_th, b_t = schur(film, u, e)
+    elimination = schur(film, u, e)
+    return scaled_schur(film, e, elimination) + (elimination,)
+
+
+def scaled_schur(film, e, elimination):
+    """``(S, r)``: the Schur matrix and right-hand side of the Newton step for the node-wise elimination
+    ``elimination`` (:func:`~transient.models.ehl.reduced.schur`), the Reynolds rows divided by their scales."""
+    a_p, b_p, a_th, b_t = elimination
     S = film.schur_matrix(e, b_p, b_t)
     # rows by their scales (the step is unchanged; the conditioning of S improves by many decades)
     S[:-1] /= e["scale"][:, None]
-    return S, schur_rhs(film, e, a_p, a_th), (a_p, b_p, a_th, b_t)
+    return S, schur_rhs(film, e, a_p, a_th)
 
 
 def schur_rhs(film, e, a_p, a_th):

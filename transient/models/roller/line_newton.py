@@ -14,24 +14,22 @@ DC-FFT film of fine uniform grids (``film.matrix_free``) ``S`` is never formed: 
 two-level preconditioner of :mod:`transient.models.roller.line_fft` take the step (``O(n log n)`` per
 product).
 
-Globalisation as :func:`transient.models.point.fbns.fbns`: the step is cut so that the film stays
-positive and no pressure moves by more than ``step_max`` plus half its value, then halved until the
-scaled residual norm decreases (Armijo).
+The iteration and its globalisation (the step cut so that the film stays positive and no pressure moves by
+more than ``step_max`` plus half its value, then halved until the scaled residual norm decreases: Armijo) are
+the EHL engine's :func:`~transient.models.ehl.newton.fbns_newton`, as for the point film; this module gives it
+the line's and the roller's linear solvers (:func:`linear_solver`).
 """
 
 from __future__ import annotations
 
 import warnings
-from dataclasses import dataclass, field
 
-import numpy as np
 import scipy.linalg as sla
 
-from transient.models.ehl.errors import InexactStepWarning
 from transient.models.ehl.krylov import gmres_solve
-from transient.models.ehl.reduced import schur
+from transient.models.ehl.newton import NewtonStats, fbns_newton, warn_inexact
 from transient.models.roller.krylov import DenseLU
-from transient.models.roller.line_fbns import schur_rhs, schur_system
+from transient.models.roller.line_fbns import schur_rhs, scaled_schur
 from transient.models.roller.line_fft import MatrixFreeStep
 
 #: GMRES iterations above which the preconditioner is refreshed at the next Newton iteration
@@ -42,20 +40,6 @@ DIRECT_BELOW = 400
 GMRES_RTOL = 1e-8
 #: GMRES restart length (a step allows two cycles)
 GMRES_RESTART = 40
-
-
-@dataclass
-class ContentNewtonStats:
-    """Counts of one solve: Newton iterations, LU factorisations, GMRES iterations (all steps), steps whose GMRES
-    missed its tolerance (taken inexactly)."""
-
-    iterations: int = 0
-    factorisations: int = 0
-    krylov: int = 0
-    krylov_misses: int = 0
-    norms: list = field(default_factory=list)
-    #: the GMRES preconditioner (LU factors of an earlier Schur matrix) at the end: a next solve may start with it
-    preconditioner: object = None
 
 
 def _gmres(S, r, pre):
@@ -93,10 +77,58 @@ def _krylov_step(S, r, pre, stats):
     return z, pre, its > REFACTOR_ITERS
 
 
-def merit(e, scale):
-    """The scaled residual: Reynolds rows by ``scale`` (the row scales of the iterate the step starts from,
-    so that the Newton step is a descent direction of the merit), Fischer-Burmeister rows, load balance."""
-    return np.concatenate([e["res"] / scale, e["fb"], [e["load"]]])
+class DirectSolve:
+    """The Schur system (rows by their scales) by LAPACK's LU at every Newton step."""
+
+    def solve(self, rows, u, e, elimination, stats):
+        S, r = scaled_schur(rows, e, elimination)
+        with warnings.catch_warnings():  # an ill-conditioned step is judged by the line search
+            warnings.simplefilter("ignore", sla.LinAlgWarning)
+            z = sla.solve(S, r, check_finite=False)
+        stats.factorisations += 1
+        return z
+
+
+class ReusedLU:
+    """The Schur system by GMRES right-preconditioned with the LU factors of an earlier Schur matrix
+    (``preconditioner``, or made at the first step), refactorised after a step that needed more than
+    :data:`REFACTOR_ITERS` iterations; the factors in ``stats.preconditioner`` for a next solve."""
+
+    def __init__(self, preconditioner=None):
+        self.pre = preconditioner
+        self.refresh = preconditioner is None
+
+    def solve(self, rows, u, e, elimination, stats):
+        S, r = scaled_schur(rows, e, elimination)
+        if self.refresh or self.pre is None:
+            self.pre = DenseLU(S)
+            stats.factorisations += 1
+        z, self.pre, self.refresh = _krylov_step(S, r, self.pre, stats)
+        stats.preconditioner = self.pre
+        return z
+
+
+class MatrixFree:
+    """The Schur system of a DC-FFT film (``film.matrix_free``) by :class:`~transient.models.roller.line_fft.MatrixFreeStep`
+    (made at the first step; ``tol`` the Newton's tolerance, toward which its forcing terms tighten GMRES)."""
+
+    def __init__(self, tol: float = 0.0):
+        self.step, self.tol = None, tol
+
+    def solve(self, rows, u, e, elimination, stats):
+        a_p, b_p, a_th, b_t = elimination
+        if self.step is None:
+            self.step = MatrixFreeStep(rows, self.tol)
+        return self.step.solve(rows, u, e, b_p, b_t, schur_rhs(rows, e, a_p, a_th), stats)
+
+
+def linear_solver(film, preconditioner=None, tol: float = 0.0):
+    """The Newton steps' solver of the content film ``film``: matrix-free on a DC-FFT film (``tol`` the Newton's
+    tolerance), by LAPACK below :data:`DIRECT_BELOW` unknowns, else GMRES with a reused LU (``preconditioner``:
+    factors to start with)."""
+    if film.matrix_free:
+        return MatrixFree(tol)
+    return DirectSolve() if film.n < DIRECT_BELOW else ReusedLU(preconditioner)
 
 
 def content_newton(film, u0, tol: float = 1e-10, max_iter: int = 60, step_max: float = 0.5, preconditioner=None):
@@ -104,69 +136,10 @@ def content_newton(film, u0, tol: float = 1e-10, max_iter: int = 60, step_max: f
     ``preconditioner``: the factors a former solve left (``stats.preconditioner``) for GMRES's first step
     (the dense path above :data:`DIRECT_BELOW` unknowns), e.g. across the steps of a transient.
 
-    Returns ``(u, converged, stats)`` (:class:`ContentNewtonStats`; ``stats.norms`` the infinity norm of
-    the scaled residual per iteration). Steps whose GMRES missed its tolerance (matrix-free films) are never
-    taken silently: :class:`~transient.models.roller.results.InexactStepWarning` names their number."""
-    u, ok, stats = _content_newton(film, u0, tol, max_iter, step_max, preconditioner)
-    if stats.krylov_misses:
-        warnings.warn(InexactStepWarning(
-            f"{stats.krylov_misses} of {stats.iterations} Newton steps were taken with GMRES short of its tolerance "
-            f"(the solve {'converged' if ok else 'did not converge'})"), stacklevel=2)
+    Returns ``(u, converged, stats)`` (:class:`~transient.models.ehl.newton.NewtonStats`; ``stats.norms`` the
+    infinity norm of the scaled residual per iteration). Steps whose GMRES missed its tolerance (matrix-free
+    films) are never taken silently: :class:`~transient.models.ehl.errors.InexactStepWarning` names their number."""
+    u, ok, stats = fbns_newton(film, u0, linear_solver(film, preconditioner, tol), tol, max_iter, step_max,
+                               stats=NewtonStats(preconditioner=preconditioner))
+    warn_inexact(stats, ok)
     return u, ok, stats
-
-
-def _content_newton(film, u0, tol, max_iter, step_max, pre):
-    n = film.n
-    u = np.array(u0, float)
-    e = film.equations(u)
-    f = merit(e, e["scale"])
-    stats = ContentNewtonStats(norms=[float(np.max(np.abs(f)))], preconditioner=pre)
-    m2 = float(f @ f)
-    refresh, step = pre is None, None
-    for _ in range(max_iter):
-        if stats.norms[-1] < tol:
-            return u, True, stats
-        if film.matrix_free:
-            a_p, b_p, a_th, b_t = schur(film, u, e)
-            r = schur_rhs(film, e, a_p, a_th)
-            if step is None:
-                step = MatrixFreeStep(film, tol)
-            z = step.solve(film, u, e, b_p, b_t, r, stats)
-        elif n < DIRECT_BELOW:
-            S, r, (a_p, b_p, a_th, b_t) = schur_system(film, u, e)
-            with warnings.catch_warnings():  # an ill-conditioned step is judged by the line search
-                warnings.simplefilter("ignore", sla.LinAlgWarning)
-                z = sla.solve(S, r, check_finite=False)
-            stats.factorisations += 1
-        else:
-            S, r, (a_p, b_p, a_th, b_t) = schur_system(film, u, e)
-            if refresh or pre is None:
-                pre = DenseLU(S)
-                stats.factorisations += 1
-            z, pre, refresh = _krylov_step(S, r, pre, stats)
-            stats.preconditioner = pre
-        du = np.empty(2 * n + 1)
-        du[:n] = a_p + b_p * z[:n]
-        du[n: 2 * n] = a_th + b_t * z[:n]
-        du[-1] = z[n]
-        big = np.max(np.abs(du[:n]) / (step_max + 0.5 * np.abs(u[:n])))
-        s = min(1.0, 1.0 / big) if big > 0 else 1.0
-        accepted = False
-        for _ in range(30):
-            ut = u + s * du
-            with np.errstate(over="ignore", invalid="ignore"):
-                et = film.equations(ut)
-                if np.min(et["H"]) > 0.0:
-                    ft = merit(et, e["scale"])
-                    if np.all(np.isfinite(ft)) and float(ft @ ft) < (1.0 - 1e-4 * s) * m2:
-                        accepted = True
-                        break
-            s *= 0.5
-        stats.iterations += 1
-        if not accepted:
-            return u, False, stats
-        u, e = ut, et
-        f = merit(e, e["scale"])
-        m2 = float(f @ f)
-        stats.norms.append(float(np.max(np.abs(f))))
-    return u, stats.norms[-1] < tol, stats

@@ -29,7 +29,9 @@ from threadpoolctl import threadpool_limits
 
 from transient.checks import check_choice
 from transient.models.ehl.film_run import TRANSIENT_SERIES, run_film
-from transient.models.roller.line_newton import content_newton, merit
+from transient.models.ehl.newton import back_substitute, merit
+from transient.models.ehl.reduced import Elimination
+from transient.models.roller.line_newton import content_newton
 from transient.solvers.integrate.stepper import StepSolve
 
 #: simplified Newton (:class:`FrozenSchur`): the factors are reused while the BDF2 coefficient ``cj`` stays within
@@ -104,18 +106,13 @@ def consistent_content(content, p, h0) -> np.ndarray:
 
 class FrozenSchur:
     """Simplified Newton's matrix for the step rows ``rows`` at ``u`` (residual pieces ``e``): the node-wise
-    elimination of the Fischer-Burmeister rows (:func:`~transient.models.ehl.reduced.schur`) and the Schur
+    elimination of the Fischer-Burmeister rows (:class:`~transient.models.ehl.reduced.Elimination`) and the Schur
     matrix of that iterate, LU-factorised once (LAPACK) and kept across iterations and steps
     (:meth:`LineFilmStep.solve`); ``cj``: the BDF2 coefficient it was built with."""
 
     def __init__(self, rows, u, e, cj: float):
-        alpha, gamma = rows.fb_derivatives(u, e)
-        self.keep_p = np.abs(gamma) >= np.abs(alpha)
-        self.sa = np.where(self.keep_p, 1.0, alpha)
-        self.sg = np.where(self.keep_p, gamma, 1.0)
-        self.b_p = np.where(self.keep_p, 1.0, -gamma / self.sa)
-        self.b_t = np.where(self.keep_p, -alpha / self.sg, 1.0)
-        S = rows.schur_matrix(e, self.b_p, self.b_t)
+        self.elimination = Elimination(*rows.fb_derivatives(u, e))
+        S = rows.schur_matrix(e, self.elimination.b_p, self.elimination.b_t)
         S[:-1] /= e["scale"][:, None]
         self.lu = sla.lu_factor(S, check_finite=False)
         self.local = {k: e[k] for k in ("dp", "dh", "dt", "scale")}
@@ -124,14 +121,12 @@ class FrozenSchur:
     def step(self, rows, e) -> np.ndarray:
         """The simplified Newton correction ``du`` for the residual pieces ``e`` of the current iterate."""
         n = rows.n
-        fb = e["fb"]
-        a_p = np.where(self.keep_p, 0.0, -fb / self.sa)
-        a_th = np.where(self.keep_p, -fb / self.sg, 0.0)
+        a_p, a_th = self.elimination.offsets(e["fb"])
         r = np.empty(n + 1)
         r[:-1] = (-e["res"] - rows.jacobian_product(self.local, a_p, a_th)) / self.local["scale"]
         r[-1] = -e["load"] - rows.weight @ a_p
         z = sla.lu_solve(self.lu, r, check_finite=False)
-        return np.concatenate([a_p + self.b_p * z[:n], a_th + self.b_t * z[:n], z[n:]])
+        return back_substitute((a_p, self.elimination.b_p, a_th, self.elimination.b_t), z)
 
 
 class LineFilmStep(StepSolve):

@@ -38,7 +38,7 @@ from transient.models.roller.line_newton import content_newton
 from transient.models.roller.roller_fft import RollerTwoLevel
 from transient.models.roller.roller_lines import LineBlocks
 from transient.solvers.newton import NewtonError
-from transient.models.ehl.complementarity import fb_derivatives
+from transient.models.ehl.complementarity import fb_derivatives, fb_residual
 
 
 class RollerContentFilm:
@@ -90,10 +90,9 @@ class RollerContentFilm:
         p, t, h0 = self.split(u)
         H = b.film(p, h0)
         b.reynolds(p, H, jac=True, content=t)
-        bb = 1.0 - u[self.n: 2 * self.n]
-        rad = np.sqrt(p * p + bb * bb)
+        fb, rad = fb_residual(p, u[self.n: 2 * self.n])
         return dict(H=H, res=b.F.copy(), scale=b.scale.copy(), dp=b.Sp.copy(), dh=b.Sh.copy(), dt=b.St.copy(),
-                    fb=p + bb - rad, rad=rad, load=self.weight @ p - load_ratio)
+                    fb=fb, rad=rad, load=self.weight @ p - load_ratio)
 
     def fb_derivatives(self, u, e):
         """``(dFB/dp, dFB/dtheta)`` per node (:func:`~transient.models.ehl.complementarity.fb_derivatives`)."""
