@@ -19,6 +19,13 @@ import time
 from pathlib import Path
 
 
+def timed(fn):
+    """``(fn(), wall [s], CPU [s] of this process)``: on a shared machine the CPU time is the fair measure."""
+    t0, c0 = time.perf_counter(), time.process_time()
+    r = fn()
+    return r, time.perf_counter() - t0, time.process_time() - c0
+
+
 def best_of(fn, repeats):
     """``(shortest wall time [s] of `repeats` calls of fn(), the last call's result)``."""
     best, out = float("inf"), None

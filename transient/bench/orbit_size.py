@@ -25,11 +25,11 @@ from __future__ import annotations
 
 import json
 import math
-import time
 from pathlib import Path
 
 import numpy as np
 
+from transient.bench import timed
 from transient.models.journal.bearing import JournalBearing
 from transient.models.journal.orbit import JournalOrbit
 from transient.params.rho_kim import BEARING, ROTOR
@@ -57,12 +57,6 @@ def atol_for(rtol):
 def _orbit(grid, unbalance_C, speed_rpm):
     b = JournalBearing(**BEARING, grid=tuple(grid))
     return JournalOrbit(b, ROTOR["rotor_mass"], unbalance_C * CLEARANCE, ROTOR["load"], speed_rpm)
-
-
-def _timed(fn):
-    w0, c0 = time.perf_counter(), time.process_time()
-    r = fn()
-    return r, time.perf_counter() - w0, time.process_time() - c0
 
 
 def _row(case, label, r, wall, cpu, ref, revs):
@@ -94,7 +88,7 @@ def _side_by_side(case, o, rtols, bdf2, revs, ref, start=None, opr=20, log=print
     for k, (rt, cap) in enumerate(pairs):
         order = (("ida", rt), ("bdf2", cap)) if k % 2 == 0 else (("bdf2", cap), ("ida", rt))
         for form, setting in order:
-            r, w, c = _timed(lambda: _run(o, form, setting, revs, opr, start))
+            r, w, c = timed(lambda: _run(o, form, setting, revs, opr, start))
             rows.append(_row(case, _label(form, setting), r, w, c, ref, revs)
                         | dict(form="universal" if form == "ida" else "bdf2", setting=setting))
             log(f"  {rows[-1]['label']}: {rows[-1]['steps_per_rev']:.0f} steps/rev, {rows[-1]['jac_per_rev']:.0f} "
@@ -131,7 +125,7 @@ def _long(o, revs, opr, bdf2, rtol, start=None):
     out = {}
     for form in ("bdf2", "ida", "ida", "bdf2"):
         setting = bdf2 if form == "bdf2" else rtol
-        r, w, c = _timed(lambda: _run(o, form, setting, revs, opr, start))
+        r, w, c = timed(lambda: _run(o, form, setting, revs, opr, start))
         prev = out.get(form)
         if prev is None or w < prev["wall"]:
             out[form] = dict(revolutions=revs, wall=w, cpu=c, steps_per_rev=r.stats.n_steps / revs,
@@ -151,13 +145,13 @@ def run(quick=False, log=print) -> dict:
     o = _orbit(grid, 0.3, 6000.0)
     _warm(o)
     log(f"[orbit_size] large: 0.3 C, 6000 rpm, {grid[0]} x {grid[1]}; reference IDA rtol {REF_RTOL:g} ...")
-    ref, w, _ = _timed(lambda: _reference(o, 1, opr))
+    ref, w, _ = timed(lambda: _reference(o, 1, opr))
     out["large_reference"] = dict(wall=w, steps=ref.stats.n_steps, excursion_C=float(np.max(np.hypot(
         ref.x - ref.x[0], ref.y - ref.y[0])) / CLEARANCE))
     rows += _side_by_side("large", o, rtols, bdf2, 1.0, ref, opr=opr, log=log)
     n_rk4 = cfg["rk4_steps"]
     o.run(0.01, integration=Integration(method="rk4", steps_per_revolution=n_rk4), long_run=LongRun(progress=False))
-    r, w, c = _timed(lambda: o.run(1, integration=Integration(method="rk4", steps_per_revolution=n_rk4),
+    r, w, c = timed(lambda: o.run(1, integration=Integration(method="rk4", steps_per_revolution=n_rk4),
                                    recording=Recording(outputs_per_revolution=opr), long_run=LongRun(progress=False)))
     rows.append(_row("large", f"RK4 {n_rk4} steps/rev (paper)", r, w, c, ref, 1.0) | dict(form="rk4"))
     log(f"  RK4 {n_rk4}: {w:.1f} s, error {rows[-1]['error']:.2e} C")
@@ -178,7 +172,7 @@ def run(quick=False, log=print) -> dict:
     log(f"[orbit_size] whip: 1.5 x threshold ({th:.0f} rpm) = {ow.speed_rpm:.0f} rpm; {cfg['spin_up']} revolutions "
         f"from {cfg['whip_offset']} C off the equilibrium (BDF2) ...")
     y0 = ow.perturbed_start(cfg["whip_offset"])
-    sp, w, _ = _timed(lambda: ow.run(cfg["spin_up"], integration=Integration(method="bdf2", rtol=BDF2_RTOL),
+    sp, w, _ = timed(lambda: ow.run(cfg["spin_up"], integration=Integration(method="bdf2", rtol=BDF2_RTOL),
                                      recording=Recording(outputs_per_revolution=opr), long_run=LongRun(progress=False),
                                      y0=y0))
     eps = sp.eccentricity_ratio
@@ -252,7 +246,7 @@ def work_precision(quick=False, log=print, cases=None) -> dict:
         cands = ([("ida", r) for r in cfg["ida"]] + [("bdf", r) for r in cfg["bdf"]]
                  + [("bdf_capped", c) for c in cfg["bdf_capped"]] + [("bdf2", c) for c in cfg["bdf2_plain"]])
         for kind, setting in _interleave(cands):
-            r, w, c = _timed(lambda: _wp_run(o, (kind, setting), cfg["opr"])(revs))
+            r, w, c = timed(lambda: _wp_run(o, (kind, setting), cfg["opr"])(revs))
             row = _row(case, _wp_label(kind, setting), r, w, c, ref, revs) | dict(form=kind, setting=setting)
             out["rows"].append(row)
             log(f"  {case} {row['label']}: {row['steps_per_rev']:.0f} steps, {row['cpu_per_rev']:.2f} s CPU, "

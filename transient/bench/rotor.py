@@ -23,11 +23,11 @@ of a node from IDA at rtol 1e-9 over the outputs [C]; so the default is judged a
 from __future__ import annotations
 
 import json
-import time
 from pathlib import Path
 
 import numpy as np
 
+from transient.bench import timed
 from transient.models.journal.bearing import JournalBearing
 from transient.models.journal.orbit import JournalOrbit
 from transient.models.rotor import Rotor, RotorBearingSystem
@@ -57,13 +57,6 @@ def cases(grid):
     return orbit, dict(one=one, two=two, flex=flex)
 
 
-def _timed(fn):
-    """``(result, wall [s], CPU [s] of this process)``: on a shared machine the CPU time is the fair measure."""
-    t0, c0 = time.perf_counter(), time.process_time()
-    r = fn()
-    return r, time.perf_counter() - t0, time.process_time() - c0
-
-
 def run(quick=False) -> dict:
     cfg = QUICK if quick else FULL
     revs, ig = cfg["revolutions"], Integration(rtol=cfg["rtol"], atol=cfg["atol"])
@@ -77,7 +70,7 @@ def run(quick=False) -> dict:
     rows = {}
     for _ in range(2):
         for k, fn in runners.items():
-            r, wall, cpu = _timed(fn)
+            r, wall, cpu = timed(fn)
             best = rows.get(k)
             if best is None or cpu < best["cpu_per_rev"] * revs:
                 rows[k] = dict(wall_per_rev=wall / revs, cpu_per_rev=cpu / revs, steps_per_rev=r.stats.n_steps / revs,
@@ -91,7 +84,7 @@ def run(quick=False) -> dict:
     flex = systems["flex"]
     runup = lambda t: 3000.0 + 6000.0 * t / t_up  # noqa: E731
     t_up = cfg["runup_revolutions"] * 60.0 / 6000.0  # 3000 -> 9000 rpm: mean 6000 rpm
-    r, wall, cpu = _timed(lambda: flex.run(cfg["runup_revolutions"], runup,
+    r, wall, cpu = timed(lambda: flex.run(cfg["runup_revolutions"], runup,
                                            recording=Recording(outputs_per_revolution=20),
                                            long_run=LongRun(progress=False), integration=ig))
     base = rows["orbit"]["cpu_per_rev"]
@@ -125,7 +118,7 @@ def compare_methods(systems, starts, revs, cfg, runup) -> dict:
         rows = {}
         for _ in range(2):
             for name, kw in runs.items():
-                r, wall, cpu = _timed(lambda: fn(**kw))
+                r, wall, cpu = timed(lambda: fn(**kw))
                 if name in rows and cpu >= rows[name]["cpu_per_rev"] * n_rev:
                     continue
                 err = np.max(np.hypot(*np.moveaxis(r.displacement - ref.displacement, -1, 0))) / clearance \

@@ -15,11 +15,11 @@ the run at ``TIGHT``, in clearances.
 from __future__ import annotations
 
 import json
-import time
 from pathlib import Path
 
 import numpy as np
 
+from transient.bench import timed as cpu_timed
 from transient.bench.whip import _orbit, whirl
 from transient.models.journal.bearing import JournalBearing
 from transient.models.rotor import Rotor, RotorBearingSystem
@@ -65,12 +65,6 @@ def _distance(a, b, node) -> float:
     return float(np.hypot(xa[-1] - xb[-1], ya[-1] - yb[-1]))
 
 
-def _timed(fn):
-    c0 = time.process_time()
-    r = fn()
-    return r, time.process_time() - c0
-
-
 def run(quick=False, log=print) -> dict:
     cfg = QUICK if quick else FULL
     grid, timed = cfg["grid"], cfg["timed"]
@@ -98,7 +92,7 @@ def run(quick=False, log=print) -> dict:
             for case, fn in (("rotor", lambda st=setting: rotor_run(timed, st, settled_rotor)),
                              ("journal", lambda st=setting: o.run(timed, integration=_integration(st), recording=rec,
                                                                   long_run=lr, start=settled_orbit))):
-                r, cpu = _timed(fn)
+                r, _, cpu = cpu_timed(fn)
                 key = f"{case}|{name}"
                 if key in rows and rows[key]["cpu_per_rev"] <= cpu / timed:
                     continue

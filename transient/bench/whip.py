@@ -15,11 +15,11 @@ grid's.
 from __future__ import annotations
 
 import json
-import time
 from pathlib import Path
 
 import numpy as np
 
+from transient.bench import timed
 from transient.models.journal.bearing import JournalBearing
 from transient.models.journal.orbit import JournalOrbit
 from transient.params.rho_kim import BEARING, ROTOR
@@ -56,12 +56,6 @@ def whirl(r, window):
     return 0.5 * float(x.max() - x.min()), float(r.eccentricity_ratio[-n:].max()), ratio
 
 
-def _timed(fn):
-    c0 = time.process_time()
-    r = fn()
-    return r, time.process_time() - c0
-
-
 def run(quick=False, log=print) -> dict:
     cfg = QUICK if quick else FULL
     grids = cfg["grids"]
@@ -70,13 +64,13 @@ def run(quick=False, log=print) -> dict:
     for grid in grids:
         o = _orbit(grid, speed)
         _run(o, 0.05, STUDY)  # warm-up (a cold numba cache compiles here), not timed
-        settled, cpu = _timed(lambda: _run(o, cfg["settle"], STUDY, y0=o.perturbed_start(0.4)))
+        settled, _, cpu = timed(lambda: _run(o, cfg["settle"], STUDY, y0=o.perturbed_start(0.4)))
         amp, e_max, ratio = whirl(settled, cfg["window"])
         row = dict(grid=list(grid), cells=grid[0] * grid[1], settle_cpu=cpu, amplitude=amp, e_max=e_max,
                    whirl_ratio=ratio, message=settled.message)
         for _ in range(2):
             for name, setting in (("study", STUDY), ("orbit_size", ORBIT_SIZE)):
-                r, c = _timed(lambda: _run(o, cfg["timed"], setting, start=settled))
+                r, _, c = timed(lambda: _run(o, cfg["timed"], setting, start=settled))
                 prev = row.get(name)
                 if prev is None or c < prev["cpu"]:
                     row[name] = dict(setting=list(setting), cpu=c, cpu_per_rev=c / cfg["timed"],
