@@ -71,6 +71,13 @@ def penalty_deprecated(owner: str, long_run: LongRun) -> None:
     check_unused(owner, "long_run", long_run, [f.name for f in fields(LongRun)])
 
 
+def load_digest(ratio, tau_end: float, n_out: int) -> str:
+    """A short digest of the load ratio ``ratio(tau)`` at a run's ``n_out`` output times on [0, ``tau_end``] (the
+    load history, to key a checkpoint: a function has no other fingerprint)."""
+    loads = np.array([ratio(tau) for tau in np.linspace(0.0, tau_end, n_out)])
+    return hashlib.sha256(loads.tobytes()).hexdigest()[:16]
+
+
 def contact_digest(contact) -> str:
     """A short digest of every number, string and array a contact holds (its parameters, to key a checkpoint)."""
     items = ({f.name: getattr(contact, f.name) for f in fields(contact)} if is_dataclass(contact)

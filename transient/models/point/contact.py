@@ -15,7 +15,6 @@ thickness [m] of the oil layer the contact meets (both surfaces together); ``Non
 
 from __future__ import annotations
 
-import hashlib
 import math
 import time
 import warnings
@@ -26,7 +25,7 @@ import numpy as np
 from transient.checks import check_choice, check_int, check_items, check_positive, check_range, check_vector
 from transient.models.ehl.dry import edge_positions, polonsky_keer
 from transient.models.ehl.errors import EHLConvergenceError
-from transient.models.ehl.film_run import contact_digest, run_film, transient_settings
+from transient.models.ehl.film_run import contact_digest, load_digest, run_film, transient_settings
 from transient.models.ehl.krylov import coarsening_factor, inject
 from transient.models.point.fbns import DENSE_MAX_UNKNOWNS, fbns
 from transient.models.point.ehl_problem import PointFilm
@@ -450,10 +449,10 @@ class PointContact:
                                   final_time=float(a["t"][-1]) * ts if len(a["t"]) else 0.0, success=True,
                                   message=message or "completed")
 
-        load_key = hashlib.sha256(np.array([ratio(T) for T in np.linspace(0.0, tau_end, n_out)]).tobytes())
         return run_film("point contact (FBNS)", lambda u, T: FilmStep(film, u, ratio, t0=T), u0, tau_end, n_out,
                         sample, ("h_central", "h_min", "p_max", "h0", "load"), result, ig, lr, max_steps,
-                        dict(contact=contact_digest(self), grid=list(self.grid), load=load_key.hexdigest()[:16]))
+                        dict(contact=contact_digest(self), grid=list(self.grid),
+                             load=load_digest(ratio, tau_end, n_out)))
 
     def _result(self, film: PointFilm, u, ok, norms, wall, info) -> PointSteady:
         P, T, h0 = film.split(u)

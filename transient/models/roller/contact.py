@@ -47,7 +47,6 @@ preconditioner kept across iterations (the paper grid) or a two-level preconditi
 
 from __future__ import annotations
 
-import hashlib
 import math
 import time
 from contextlib import nullcontext
@@ -59,7 +58,7 @@ from scipy.interpolate import RegularGridInterpolator
 from threadpoolctl import threadpool_limits
 
 from transient.checks import check_int, check_memory, check_positive, check_range
-from transient.models.ehl.film_run import contact_digest, penalty_deprecated, transient_settings
+from transient.models.ehl.film_run import contact_digest, load_digest, penalty_deprecated, transient_settings
 from transient.models.roller.continuation import PathResult, follow
 from transient.models.roller.dry import DryContact, DrySolver, dry_contact
 from transient.models.roller.ehl_problem import EHLFilm, interpolate_state, solve_steady
@@ -881,9 +880,8 @@ class RollerContact:
                                    n_steps=stats.n_steps, n_jacobians=stats.n_jac, wall_time=stats.wall_time,
                                    final_state=state(u), final_time=float(a["t"][-1]) * t_ref if len(a["t"]) else 0.0)
 
-        loads = np.array([ratio(tau) for tau in np.linspace(0.0, t_end / t_ref, n_out)])
         key = dict(contact=contact_digest(self), nodes=[int(film.grid.nx), int(film.grid.ny)],
-                   load=hashlib.sha256(loads.tobytes()).hexdigest()[:16])
+                   load=load_digest(ratio, t_end / t_ref, n_out))
         return run_content_transient(content, self.scales["lam"], u0, ratio, t_end / t_ref, n_out, sample, result,
                                      settings, max_steps, key, "roller contact (film content, FBNS)")
 

@@ -20,7 +20,6 @@ inside Newton (:mod:`transient.models.roller.kernels`).
 
 from __future__ import annotations
 
-import hashlib
 import math
 import time
 import warnings
@@ -29,7 +28,7 @@ import numpy as np
 
 from transient.checks import check_int, check_positive, check_range
 from transient.models.ehl.dry import edge_positions, polonsky_keer
-from transient.models.ehl.film_run import contact_digest, penalty_deprecated, transient_settings
+from transient.models.ehl.film_run import contact_digest, load_digest, penalty_deprecated, transient_settings
 from transient.models.roller.continuation import PathResult, follow
 from transient.models.roller.ehl_problem import EHLFilm, interpolate_state, solve_steady
 from transient.models.roller.grid import TensorGrid
@@ -596,9 +595,8 @@ class LineContact:
                                  n_jacobians=stats.n_jac, wall_time=stats.wall_time, final_state=state(u),
                                  final_time=float(a["t"][-1]) * t_ref if len(a["t"]) else 0.0)
 
-        loads = np.array([ratio(tau) for tau in np.linspace(0.0, t_end / t_ref, n_out)])
         key = dict(contact=contact_digest(self), nodes=int(self.grid.n),
-                   load=hashlib.sha256(loads.tobytes()).hexdigest()[:16])
+                   load=load_digest(ratio, t_end / t_ref, n_out))
         return run_content_transient(content, self.lam, u0, ratio, t_end / t_ref, n_out, sample, result, settings,
                                      max_steps, key, "line contact (film content, FBNS)")
 
