@@ -48,6 +48,18 @@ def _cpu(fn):
     return time.process_time() - t, out
 
 
+def _fastest(runs, rounds) -> dict:
+    """``{name: (CPU seconds, result)}``: the fastest of ``rounds`` rounds of the ``runs`` (name -> callable), the
+    cases alternating within each round."""
+    best = {}
+    for _ in range(rounds):
+        for name, go in runs.items():
+            seconds, r = _cpu(go)
+            if name not in best or seconds < best[name][0]:
+                best[name] = (seconds, r)
+    return best
+
+
 def orbit_revolution(quick=False) -> dict:
     """CPU seconds of one BDF2 orbit revolution of the thermal and the isothermal bearing, best of the rounds."""
     grid, rounds = ((60, 10), 1) if quick else ((151, 21), 3)
@@ -63,12 +75,7 @@ def orbit_revolution(quick=False) -> dict:
         orbits["thermal" if name.startswith("thermal") else "isothermal"].run(
             0.1, **({} if name.startswith("thermal") else dict(integration=bdf2)),
             recording=Recording(outputs_per_revolution=20))
-    best = {}
-    for _ in range(rounds):
-        for name, go in runs.items():
-            seconds, r = _cpu(go)
-            if name not in best or seconds < best[name][0]:
-                best[name] = (seconds, r)
+    best = _fastest(runs, rounds)
     iso_s = best["isothermal"][0]
     return dict(grid=list(grid), rounds=rounds, cases=[
         dict(run=name, seconds=sec, ratio=sec / iso_s, steps=int(r.stats.n_steps),
@@ -93,12 +100,7 @@ def rotor_revolution(quick=False) -> dict:
                                                       recording=rec),
             "thermal, interval 0.5 rev": lambda: systems["thermal"].run(1, RPM, start=start["thermal"],
                                                                         thermal_interval=0.5, recording=rec)}
-    best = {}
-    for _ in range(rounds):
-        for name, go in runs.items():
-            seconds, r = _cpu(go)
-            if name not in best or seconds < best[name][0]:
-                best[name] = (seconds, r)
+    best = _fastest(runs, rounds)
     iso_s = best["isothermal"][0]
     return dict(grid=list(grid), rounds=rounds, cases=[
         dict(run=name, seconds=sec, ratio=sec / iso_s, steps=int(r.stats.n_steps),
