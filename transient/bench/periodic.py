@@ -164,12 +164,16 @@ def oracle_settle(bearing, speed, rtol, reference, target, max_revolutions):
         y = r.final_state
         if len(errors) >= ORACLE_CONFIRM and max(errors[-ORACLE_CONFIRM:]) <= target:
             break
-    outside = np.flatnonzero(np.array(errors) > target)
-    within = bool(errors[-1] <= target)
-    revolutions = int(outside[-1] + 2) if outside.size else 1
-    revolutions = min(revolutions, len(errors))
-    return dict(revolutions=revolutions, within=within, run_revolutions=len(errors),
+    revolutions = oracle_revolutions(errors, target)
+    return dict(revolutions=revolutions, within=bool(errors[-1] <= target), run_revolutions=len(errors),
                 cpu=start_cpu + cpu / len(errors) * revolutions, errors=errors)
+
+
+def oracle_revolutions(errors, target) -> int:
+    """Revolutions a settle must run to stop within ``target`` for good: the first revolution (1-based) from which
+    every later one's error is within it; all of them when the last one is not."""
+    outside = np.flatnonzero(np.asarray(errors) > target)
+    return min(int(outside[-1]) + 2, len(errors)) if outside.size else 1
 
 
 def single_part(bearing, speed, tol, log, revolutions):
