@@ -18,8 +18,8 @@ project's 2 shared cores the ratios of CPU times (``time.process_time``) are the
      (:func:`~transient.models.journal.periodic.stability_onset`).
    Accuracy: the semi-major axis of each against a reference continuation at rtol 1e-7. **At equal accuracy**
    (:func:`oracle_settle`): the settle from each linearised start stopped by an oracle at the first revolution from
-   which its semi-major axis stays within the least accurate continuation's worst error of the reference -- the
-   cheapest brute force of that accuracy.
+   which its semi-major axis stays within the worst error of the least accurate method (the settle loop's or a
+   continuation's) -- the cheapest brute force that accurate at every speed.
 2. **One periodic orbit at 6000 rpm to 1e-8 C** (rtol 1e-9): Newton-Picard from the linearised start against a
    60-revolution settle from the same start (IDA continuing across revolutions), with the revolution from which
    the settle stays within 1e-8 C of the shooting solution (the cheapest settle possible, an oracle stop).
@@ -47,9 +47,9 @@ from transient.solvers.settings import Integration, LongRun, Recording
 
 TITLE = "journal periodic orbits: shooting and continuation vs brute-force settling"
 FULL = dict(grid=(151, 21), speeds=tuple(range(1000, 7501, 250)), rtol=1e-5, reference_rtol=1e-7, settle_fraction=1e-2,
-            settle_max=40, single_revolutions=60, arnoldi=False, equal_accuracy_max=300)
+            settle_max=40, single_revolutions=60, arnoldi=False, equal_accuracy_max=150)
 QUICK = dict(grid=(41, 6), speeds=tuple(range(1000, 7501, 250)), rtol=1e-5, reference_rtol=1e-7, settle_fraction=1e-2,
-             settle_max=40, single_revolutions=60, arnoldi=False, equal_accuracy_max=300)
+             settle_max=40, single_revolutions=60, arnoldi=False, equal_accuracy_max=150)
 #: the oracle-stopped settle of the equal-accuracy comparison: revolutions per chunk, and the revolutions in a row
 #: within the target that end the run
 ORACLE_CHUNK, ORACLE_CONFIRM = 10, 10
@@ -127,7 +127,10 @@ def curve_part(bearing, cfg, log):
         for v in out["variants"].values():
             v["max_error"] = float(max(abs(x / a - 1) for x, a in zip(v["semi_major"], out["reference_semi_major"])))
         out["settle_max_error"] = float(max(r["settle_error"] for r in rows))
-        target = max(v["max_error"] for v in out["variants"].values())
+        # every method of the table at least this accurate at every speed: the settle loop's and each continuation's
+        # worst error (at rtol 1e-5 a settle's semi-major axis wanders by ~1e-4 of the reference from revolution to
+        # revolution on 41 x 6, so a tighter target would measure that wander, not the settling)
+        target = max([out["settle_max_error"]] + [v["max_error"] for v in out["variants"].values()])
         t0, eq = time.process_time(), []
         for r, a in zip(rows, out["reference_semi_major"]):
             eq.append(oracle_settle(bearing, r["speed_rpm"], rtol, a, target, cfg["equal_accuracy_max"]))
@@ -258,7 +261,7 @@ def markdown(r) -> str:
                      + ", ".join(f"{label} **{eq['cpu'] / v['cpu']:.1f}x**" for label, v in cv["variants"].items())
                      + " |")
         lines += ["", "Equal accuracy: the settle from each linearised start stopped at the first revolution from which "
-                  "every later semi-major axis stays within the least accurate continuation's worst error (the "
+                  "every later semi-major axis stays within the worst error of the least accurate method above (the "
                   "cheapest settle any stopping rule could give; its CPU the start's plus those revolutions at the "
                   "run's mean per revolution). Revolutions per speed: "
                   + ", ".join(str(w["oracle_revolutions"]) for w in rows) + "."]
