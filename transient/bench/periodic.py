@@ -13,8 +13,8 @@ project's 2 shared cores the ratios of CPU times (``time.process_time``) are the
      amplitude errors of both against the reference below are stated instead (the settle's are the larger);
    * continuation (:func:`~transient.models.journal.periodic.response_curve`): periodic orbits by Newton-Picard,
      each predicted from the previous speeds, the monodromy measured (two directional derivatives) at every speed,
-     the period map integrated by IDA and by BDF2 (``integrator``); then the IDA curve continued past 7500 rpm in 250 rpm steps until
-     the orbit is unstable, and the onset located by secant steps
+     the period map integrated by IDA and by BDF2 (``integrator``); then (``onset``) the IDA curve continued past the last
+     speed in 250 rpm steps until the orbit is unstable, and the onset located by secant steps
      (:func:`~transient.models.journal.periodic.stability_onset`).
    Accuracy: the semi-major axis of each against a reference continuation at rtol 1e-7. **At equal accuracy**
    (:func:`oracle_settle`): the settle from each linearised start stopped by an oracle at the first revolution from
@@ -47,9 +47,9 @@ from transient.solvers.settings import Integration, LongRun, Recording
 
 TITLE = "journal periodic orbits: shooting and continuation vs brute-force settling"
 FULL = dict(grid=(151, 21), speeds=tuple(range(1000, 7501, 250)), rtol=1e-5, reference_rtol=1e-7, settle_fraction=1e-2,
-            settle_max=40, single_revolutions=60, arnoldi=False, equal_accuracy_max=150)
+            settle_max=40, single_revolutions=60, arnoldi=False, equal_accuracy_max=150, onset=True)
 QUICK = dict(grid=(41, 6), speeds=tuple(range(1000, 7501, 250)), rtol=1e-5, reference_rtol=1e-7, settle_fraction=1e-2,
-             settle_max=40, single_revolutions=60, arnoldi=False, equal_accuracy_max=150)
+             settle_max=40, single_revolutions=60, arnoldi=False, equal_accuracy_max=150, onset=True)
 #: the oracle-stopped settle of the equal-accuracy comparison: revolutions per chunk, and the revolutions in a row
 #: within the target that end the run
 ORACLE_CHUNK, ORACLE_CONFIRM = 10, 10
@@ -104,7 +104,7 @@ def curve_part(bearing, cfg, log):
     # past the curve: on until unstable, then the onset
     history, s, t0 = list(main.orbits), float(sp[-1]), time.process_time()
     beyond = []
-    while all(p.stable for p in history) and s < 12000:
+    while cfg.get("onset", True) and all(p.stable for p in history) and s < 12000:
         s += 250.0
         p = response_curve(_orbit(bearing, s), [s], rtol=rtol, previous=history).orbits[0]
         beyond.append(dict(speed_rpm=s, max_multiplier=p.max_multiplier, periods=p.revolutions_integrated))
