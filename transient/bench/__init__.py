@@ -14,6 +14,7 @@ docs`` updates the committed tables).
 from __future__ import annotations
 
 import importlib
+import json
 import pkgutil
 import time
 from pathlib import Path
@@ -34,6 +35,18 @@ def best_of(fn, repeats):
         out = fn()
         best = min(best, time.perf_counter() - t)
     return best, out
+
+
+def table(columns, rows) -> list[str]:
+    """A markdown table's lines: the header of ``columns`` (cell texts), its rule, then ``rows`` (table lines)."""
+    return ["| " + " | ".join(columns) + " |", "|" + "---|" * len(columns), *rows]
+
+
+def save_raw(out, name: str, res: dict) -> None:
+    """Write bench ``name``'s raw numbers ``res`` to ``out/bench_NAME.json`` (numpy numbers as floats)."""
+    out = Path(out)
+    out.mkdir(parents=True, exist_ok=True)
+    (out / f"bench_{name}.json").write_text(json.dumps(res, indent=1, default=float))
 
 
 def names() -> list[str]:

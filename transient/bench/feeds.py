@@ -10,13 +10,11 @@ orbit (IDA, rtol 1e-6) and the flows a :class:`~transient.models.journal.results
 
 from __future__ import annotations
 
-import json
 import time
-from pathlib import Path
 
 import numpy as np
 
-from transient.bench import best_of
+from transient.bench import best_of, save_raw, table
 from transient.models.journal.bearing import JournalBearing
 from transient.models.journal.feeds import CircumferentialGroove, Groove, OilHole
 from transient.models.journal.flows import flow_fields
@@ -79,13 +77,11 @@ def markdown(r) -> str:
     return "\n".join([f"## {TITLE}", "", f"Grid {r['grid'][0]} x {r['grid'][1]} (half), 6000 rpm, "
                       f"{r['revolutions']:g} revolution(s) of the orbit" + (" -- quick smoke run" if r["quick"] else "")
                       + "; in brackets: the ratio to the former single groove.", "",
-                      "| feeds | ODE rhs [us] | ODE Jacobian [us] | orbit [s] | flows of a FilmState [us] |",
-                      "|---|---|---|---|---|", *rows, ""])
+                      *table(("feeds", "ODE rhs [us]", "ODE Jacobian [us]", "orbit [s]",
+                              "flows of a FilmState [us]"), rows), ""])
 
 
 def main(out, quick: bool = False) -> str:
     r = run(quick=quick)
-    out = Path(out)
-    out.mkdir(parents=True, exist_ok=True)
-    (out / "bench_feeds.json").write_text(json.dumps(r, indent=1))
+    save_raw(out, "feeds", r)
     return markdown(r)

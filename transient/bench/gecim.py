@@ -15,12 +15,10 @@ The target is a ratio within 3 for the steady solve and the orbit; the table say
 
 from __future__ import annotations
 
-import json
-from pathlib import Path
 
 import numpy as np
 
-from transient.bench import best_of
+from transient.bench import best_of, save_raw
 from transient.models.journal.bearing import JournalBearing
 from transient.models.journal.orbit import JournalOrbit
 from transient.params import rho_kim
@@ -139,7 +137,7 @@ def markdown(res) -> str:
     return "\n".join(lines)
 
 
-def main(out: Path, quick: bool = False) -> str:
+def main(out, quick: bool = False) -> str:
     res = run(quick)
-    (Path(out) / "bench_gecim.json").write_text(json.dumps(res, indent=1, default=float))
+    save_raw(out, "gecim", res)
     return markdown(res)

@@ -23,13 +23,12 @@ log-log.
 
 from __future__ import annotations
 
-import json
 import math
 from pathlib import Path
 
 import numpy as np
 
-from transient.bench import timed
+from transient.bench import save_raw, timed
 from transient.models.journal.bearing import JournalBearing
 from transient.models.journal.orbit import JournalOrbit
 from transient.params.rho_kim import BEARING, ROTOR
@@ -379,8 +378,7 @@ def plot(res, path):
 
 
 def main(out, quick=False) -> str:
-    out = Path(out)
     res = run(quick=quick)
-    (out / "bench_orbit_size.json").write_text(json.dumps(res, indent=1, default=float))
-    plot(res, out / "bench_orbit_size.png")
+    save_raw(out, "orbit_size", res)
+    plot(res, Path(out) / "bench_orbit_size.png")
     return f"## {TITLE}\n\n{markdown(res)}\n\n![work-precision](bench_orbit_size.png)\n"

@@ -22,12 +22,10 @@ of a node from IDA at rtol 1e-9 over the outputs [C]; so the default is judged a
 
 from __future__ import annotations
 
-import json
-from pathlib import Path
 
 import numpy as np
 
-from transient.bench import timed
+from transient.bench import save_raw, table, timed
 from transient.models.journal.bearing import JournalBearing
 from transient.models.journal.orbit import JournalOrbit
 from transient.models.rotor import Rotor, RotorBearingSystem
@@ -138,12 +136,11 @@ def markdown(res) -> str:
     lines = [f"Grid {g} per bearing, 6000 rpm, IDA rtol 1e-6, {res['revolutions']} revolution(s) from the static "
              f"equilibrium, best (CPU time) of two alternating runs{' (quick smoke run)' if res['quick'] else ''}. "
              "CPU time of the process: on the shared machine the wall time also counts the waits for a core.", "",
-             "| case | states | Jacobian entries | memory estimate [MB] | CPU per rev [s] | wall per rev [s] | "
-             "steps per rev | Jacobians per rev |", "|---|---|---|---|---|---|---|---|"]
-    for k, row in res["rows"].items():
-        lines.append(f"| {LABELS[k]} | {row['states']} | {row['jacobian_entries']} | {row['memory_mb']:.1f} | "
+             *table(("case", "states", "Jacobian entries", "memory estimate [MB]", "CPU per rev [s]",
+                     "wall per rev [s]", "steps per rev", "Jacobians per rev"),
+                    [f"| {LABELS[k]} | {row['states']} | {row['jacobian_entries']} | {row['memory_mb']:.1f} | "
                      f"{row['cpu_per_rev']:.3g} | {row['wall_per_rev']:.3g} | {row['steps_per_rev']:.0f} | "
-                     f"{row['jac_per_rev']:.0f} |")
+                     f"{row['jac_per_rev']:.0f} |" for k, row in res["rows"].items()])]
     u = res["runup"]
     lines += ["", f"Two bearings cost **{res['ratio_two_to_one']:.2f}x** one bearing per revolution (CPU) with the "
               f"same stepper (system against system; {res['ratio_two_to_orbit']:.2f}x the single-bearing JournalOrbit).",
@@ -152,19 +149,16 @@ def markdown(res) -> str:
     if "methods" in res:
         lines += ["", "The run's default method against IDA (error: the largest distance of a node from IDA at rtol "
                   "1e-9 over the outputs; CPU per revolution, the lower of two interleaved repetitions):", "",
-                  "| case | run | method | CPU per rev [s] | steps per rev | Jacobians per rev | error [C] |",
-                  "|---|---|---|---|---|---|---|"]
-        for k, rows in res["methods"].items():
-            for name, row in rows.items():
-                lines.append(f"| {LABELS.get(k, 'Jeffcott run-up 3000 -> 9000 rpm')} | {name} | {row['method']} | "
-                             f"{row['cpu_per_rev']:.3g} | {row['steps_per_rev']:.0f} | {row['jac_per_rev']:.0f} | "
-                             f"{row['error']:.2e}{'' if row['ok'] else ' (FAILED)'} |")
+                  *table(("case", "run", "method", "CPU per rev [s]", "steps per rev", "Jacobians per rev",
+                          "error [C]"),
+                         [f"| {LABELS.get(k, 'Jeffcott run-up 3000 -> 9000 rpm')} | {name} | {row['method']} | "
+                          f"{row['cpu_per_rev']:.3g} | {row['steps_per_rev']:.0f} | {row['jac_per_rev']:.0f} | "
+                          f"{row['error']:.2e}{'' if row['ok'] else ' (FAILED)'} |"
+                          for k, rows in res["methods"].items() for name, row in rows.items()])]
     return "\n".join(lines)
 
 
 def main(out, quick=False) -> str:
-    out = Path(out)
     res = run(quick=quick)
-    out.mkdir(parents=True, exist_ok=True)
-    (out / "bench_rotor.json").write_text(json.dumps(res, indent=1, default=float))
+    save_raw(out, "rotor", res)
     return f"## {TITLE}\n\n{markdown(res)}\n"

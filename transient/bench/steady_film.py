@@ -13,12 +13,11 @@ residual falls twofold per iteration); each followed by the SI film state. Newto
 
 from __future__ import annotations
 
-import json
 import time
-from pathlib import Path
 
 import numpy as np
 
+from transient.bench import save_raw, table
 from transient.models.journal.bearing import JournalBearing
 from transient.models.journal.feeds import Groove
 
@@ -94,14 +93,11 @@ def markdown(r) -> str:
         "film state" + (" -- quick smoke run" if r["quick"] else "") + ". Iterations and factorisations summed "
         "over the levels; levels: grid: Newton iterations / LU factorisations, coarsest first. Load difference "
         "relative to the solve from rest; mass balance (supply - side leakage) / side leakage.", "",
-        "| grid | method | iterations | factorisations | time [s] | speed-up | load [N] | load diff | mass balance "
-        "| levels |",
-        "|---|---|---|---|---|---|---|---|---|---|", *rows, ""])
+        *table(("grid", "method", "iterations", "factorisations", "time [s]", "speed-up", "load [N]", "load diff",
+                "mass balance", "levels"), rows), ""])
 
 
 def main(out, quick: bool = False) -> str:
     r = run(quick=quick)
-    out = Path(out)
-    out.mkdir(parents=True, exist_ok=True)
-    (out / "bench_steady_film.json").write_text(json.dumps(r, indent=1))
+    save_raw(out, "steady_film", r)
     return markdown(r)

@@ -17,12 +17,11 @@ BDF2 (``method="bdf2"``); target: at most 1.5x. ``transient bench thermal [--qui
 
 from __future__ import annotations
 
-import json
 import time
-from pathlib import Path
 
 import numpy as np
 
+from transient.bench import save_raw, table
 from transient.models.journal.bearing import JournalBearing
 from transient.models.journal.orbit import JournalOrbit
 from transient.models.rotor.rotor import Rotor
@@ -139,17 +138,14 @@ def markdown(r) -> str:
         f"Bearing of the validation record (\"Thermal journal film\"), {g[0]} x {g[1]} cells, {r['rpm']:g} rpm, "
         f"adiabatic; CPU seconds, best of {r['rounds']} interleaved rounds"
         + (" -- quick smoke run" if r["quick"] else "") + ". Target: ratio at most 3.", "",
-        "| e/C | THD [s] | isothermal [s] | ratio | alternations | Newton iterations | T_max [C] | load THD/iso "
-        "| power THD/iso |",
-        "|---|---|---|---|---|---|---|---|---|", *rows, "", *orbit_markdown(r.get("orbit")),
+        *table(("e/C", "THD [s]", "isothermal [s]", "ratio", "alternations", "Newton iterations", "T_max [C]",
+                "load THD/iso", "power THD/iso"), rows), "", *orbit_markdown(r.get("orbit")),
         *rotor_markdown(r.get("rotor"))])
 
 
 def main(out, quick: bool = False) -> str:
     r = run(quick=quick)
-    out = Path(out)
-    out.mkdir(parents=True, exist_ok=True)
-    (out / "bench_thermal.json").write_text(json.dumps(r, indent=1))
+    save_raw(out, "thermal", r)
     return markdown(r)
 
 
@@ -177,6 +173,6 @@ def revolution_table(o, title: str, setup: str, last: str) -> list:
     """A revolution's cost table, thermal against isothermal: ``o["cases"]`` rows under ``title`` and ``setup``."""
     return [f"### {title}", "",
             f"{setup}; CPU seconds, best of {o['rounds']} interleaved rounds. Target: ratio at most 1.5.", "",
-            f"| run | CPU [s] | ratio | steps | {last} |", "|---|---|---|---|---|",
-            *[f"| {c['run']} | {c['seconds']:.2f} | {c['ratio']:.2f} | {c['steps']} | {c['eccentricity_ratio']:.4f} |"
-              for c in o["cases"]], ""]
+            *table(("run", "CPU [s]", "ratio", "steps", last),
+                   [f"| {c['run']} | {c['seconds']:.2f} | {c['ratio']:.2f} | {c['steps']} | "
+                    f"{c['eccentricity_ratio']:.4f} |" for c in o["cases"]]), ""]

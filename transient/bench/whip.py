@@ -14,12 +14,10 @@ grid's.
 
 from __future__ import annotations
 
-import json
-from pathlib import Path
 
 import numpy as np
 
-from transient.bench import timed
+from transient.bench import save_raw, timed
 from transient.models.journal.bearing import JournalBearing
 from transient.models.journal.orbit import JournalOrbit
 from transient.params.rho_kim import BEARING, ROTOR
@@ -126,7 +124,6 @@ def markdown(res) -> str:
 
 
 def main(out, quick=False) -> str:
-    out = Path(out)
     res = run(quick=quick)
-    (out / "bench_whip.json").write_text(json.dumps(res, indent=1, default=float))
+    save_raw(out, "whip", res)
     return f"## {TITLE}\n\n{markdown(res)}\n"

@@ -5,19 +5,15 @@ import numpy as np
 import pytest
 from scipy.integrate import solve_bvp
 
-from transient import JournalBearing, Roughness, steel_asperity_contact
+from rough_bearing import check_force_sensitivity, rough_bearing
+from transient import Roughness, steel_asperity_contact
 from transient.models.journal.rough_orbit import rough_cells
-from transient.params import rho_kim
 from transient.physics.ring import bore_compliance
-
-BEARING = dict(rho_kim.BEARING)
 
 
 def rough(sigma, K, grid, alpha=0.0, **kw):
     """The Rho & Kim bearing with steel asperities of composite roughness ``sigma`` in a bore of compliance ``K``."""
-    r = Roughness(steel_asperity_contact(sigma), boundary_friction=0.12, journal_variance_share=0.8,
-                  bore_compliance=K, pressure_viscosity=alpha)
-    return JournalBearing(**{**BEARING, **kw}, grid=grid, roughness=r)
+    return rough_bearing(sigma, grid, kw, bore_compliance=K, pressure_viscosity=alpha)
 
 
 @pytest.mark.parametrize("K", [-1e-13, 1e-10, float("inf")])
@@ -87,20 +83,12 @@ def test_gap_is_the_rigid_gap_plus_the_bores_give():
     assert s.min_film == pytest.approx(np.min(s.film_thickness), rel=1e-12)
 
 
-def test_force_sensitivity_matches_finite_differences():
+def test_force_sensitivity_matches_finite_differences(fd_jacobian):
     """dF/d(X, Y) of film + asperities in the Winkler bore (the equilibrium's Newton matrix) against central
     differences of the force of steady films at neighbouring positions."""
     f = rough(2e-6, 1e-12, (24, 4)).film(200.0)
     q = np.array([-1.0, 0.05])  # past the rigid bore's circle: the bore's give carries the journal
-    u = f.solve(*q)[0]
-    F, dF, _ = f.force_sensitivity(u, *q)
-    assert np.hypot(*f.contact_force(*q)) > 0.05 * np.hypot(*F)
-    d = 1e-6
-    for j in range(2):
-        e = np.eye(2)[j] * d
-        Fp = f.force(f.solve(*(q + e))[0], *(q + e))
-        Fm = f.force(f.solve(*(q - e))[0], *(q - e))
-        np.testing.assert_allclose(dF[:, j], (Fp - Fm) / (2 * d), rtol=2e-5, atol=2e-5 * np.abs(dF).max())
+    check_force_sensitivity(f, q, fd_jacobian)
 
 
 def test_ring_compliance_is_lames():

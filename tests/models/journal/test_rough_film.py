@@ -9,6 +9,7 @@ import pytest
 from scipy.integrate import quad
 from scipy.optimize import brentq
 
+from rough_bearing import check_force_sensitivity, rough_bearing
 from transient import JournalBearing, Roughness, steel_asperity_contact, stribeck_curve
 from transient.models.journal.film import Film
 from transient.models.journal.rough_film import RoughFilm
@@ -23,8 +24,7 @@ GRID = (36, 6)
 
 def rough(sigma, grid=GRID, **kw):
     """The Rho & Kim bearing with steel asperities of composite roughness ``sigma``; ``kw`` to the bearing."""
-    r = Roughness(steel_asperity_contact(sigma), boundary_friction=0.12, journal_variance_share=0.8)
-    return JournalBearing(**BEARING, grid=grid, roughness=r, **kw)
+    return rough_bearing(sigma, grid, kw)
 
 
 @pytest.mark.parametrize("gamma", [1 / 9, 0.5, 1.0, 2.0, 9.0])
@@ -105,20 +105,11 @@ def test_jacobian_matches_finite_differences(fd_jacobian):
     assert np.max(np.abs(M[:n, n:n + 4] - Jq)) < 1e-6 * np.max(np.abs(Jq))
 
 
-def test_force_sensitivity_with_contact_matches_finite_differences():
+def test_force_sensitivity_with_contact_matches_finite_differences(fd_jacobian):
     """dF/d(X, Y) of film + asperities (the equilibrium's Newton matrix) against central differences of the
     force of steady films solved at neighbouring positions, in contact (h_min = 1.6 sigma)."""
     f = rough(2e-6, grid=(24, 4)).film(200.0)
-    q = np.array([-0.96, 0.0])
-    u = f.solve(*q)[0]
-    F, dF, _ = f.force_sensitivity(u, *q)
-    assert np.hypot(*f.contact_force(*q)) > 0.05 * np.hypot(*F)
-    d = 1e-6
-    for j in range(2):
-        e = np.eye(2)[j] * d
-        Fp = f.force(f.solve(*(q + e))[0], *(q + e))
-        Fm = f.force(f.solve(*(q - e))[0], *(q - e))
-        np.testing.assert_allclose(dF[:, j], (Fp - Fm) / (2 * d), rtol=2e-5, atol=2e-5 * np.abs(dF).max())
+    check_force_sensitivity(f, np.array([-0.96, 0.0]), fd_jacobian)
 
 
 def test_contact_force_is_the_greenwood_tripp_integral_of_the_gap():

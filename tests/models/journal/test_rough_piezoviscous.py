@@ -6,17 +6,13 @@ import math
 import numpy as np
 import pytest
 
-from transient import JournalBearing, Roughness, steel_asperity_contact
-from transient.params import rho_kim
-
-BEARING = dict(rho_kim.BEARING)
+from rough_bearing import rough_bearing
+from transient import Roughness, steel_asperity_contact
 
 
 def rough(sigma, alpha, grid, **kw):
     """The Rho & Kim bearing with steel asperities of composite roughness ``sigma`` and Barus coefficient ``alpha``."""
-    r = Roughness(steel_asperity_contact(sigma), boundary_friction=0.12, journal_variance_share=0.8,
-                  pressure_viscosity=alpha)
-    return JournalBearing(**{**BEARING, **kw}, grid=grid, roughness=r)
+    return rough_bearing(sigma, grid, kw, pressure_viscosity=alpha)
 
 
 @pytest.mark.parametrize("alpha", [-1e-9, 2e-7, float("nan")])

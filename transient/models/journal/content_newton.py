@@ -55,17 +55,32 @@ def decoupled_pattern(pattern, free):
 
 
 @njit(cache=True)
+def pattern_target(data, work):
+    """Where a content Jacobian in the problem's pattern is written: ``data`` in the operator's pattern, else (``data``
+    of the decoupled pattern of :func:`decoupled_pattern`) the operator pattern's ``work.jac``, gathered into
+    ``data`` after (:func:`gather_pattern`)."""
+    if data.size == work.gather.size and data.size != work.jac.size:
+        return work.jac
+    return data
+
+
+@njit(cache=True)
+def gather_pattern(data, work):
+    """``data`` of the decoupled pattern from the operator pattern's ``work.jac`` by ``work.gather`` (nothing in the
+    operator's pattern: :func:`pattern_target` wrote ``data`` itself)."""
+    full, gather = work.jac, work.gather
+    if data.size == gather.size and data.size != full.size:
+        for k in range(gather.size):
+            data[k] = full[gather[k]]
+
+
+@njit(cache=True)
 def newton_jacobian(t, y, yp, cj, data, args):
     """:func:`bdf2_jacobian` in the pattern of the problem: the operator's (``data`` of its size) or the decoupled
     one of :func:`decoupled_pattern` (gathered from the operator's, ``work.jac``, by ``work.gather``)."""
     work = args[6]
-    full, gather = work.jac, work.gather
-    if data.size == gather.size and data.size != full.size:  # the decoupled pattern
-        bdf2_jacobian(t, y, yp, cj, full, args)
-        for k in range(gather.size):
-            data[k] = full[gather[k]]
-    else:
-        bdf2_jacobian(t, y, yp, cj, data, args)
+    bdf2_jacobian(t, y, yp, cj, pattern_target(data, work), args)
+    gather_pattern(data, work)
 
 
 @njit(cache=True)
@@ -158,10 +173,19 @@ def bdf2_to_state(z, y, args):
     free, u_fixed = fv.cells.free, fv.cells.u_fixed
     n = free.size
     state_fields(as_read_only(z[:n]), z[n], z[n + 1], switch, geo, fields, fv)
-    H, C, u = fields.H, fields.C, work.u
+    store_content(z, y, fields.H, fields.C, free, u_fixed, work)
+
+
+@njit(cache=True)
+def store_content(z, y, gap, C, free, u_fixed, work):
+    """:func:`bdf2_to_state`'s state from the cell fields of ``z``: the content ``y_i = gap_i C_i`` (``gap``: H, or a
+    rough film's mean gap) and ``work.u_i = z_i`` on the free cells, ``y_i = z_i`` and the prescribed u elsewhere;
+    the rotor's entries; the position in ``work.xy``."""
+    n = free.size
+    u = work.u
     for i in range(n):
         if free[i]:
-            y[i] = H[i] * C[i]
+            y[i] = gap[i] * C[i]
             u[i] = z[i]
         else:
             y[i] = z[i]
@@ -180,6 +204,14 @@ def bdf2_from_state(y, z, args):
     free, u_fixed = fv.cells.free, fv.cells.u_fixed
     n = free.size
     content_universal(as_read_only(y), switch, geo, free, u_fixed, work.theta, z[:n])
+    keep_prescribed(y, z, free)
+
+
+@njit(cache=True)
+def keep_prescribed(y, z, free):
+    """:func:`bdf2_from_state`'s entries of ``z`` that are ``y``'s: the prescribed (groove) cells' contents and the
+    rotor's."""
+    n = free.size
     for i in range(n):
         if not free[i]:
             z[i] = y[i]
@@ -200,10 +232,15 @@ def film_newton_norm(z, dz, args):
     residual evaluation; and the number of cells whose regime (:func:`cell_regime`) differs from the one at the
     last Jacobian. Limits the update first: a cell outside the switch whose update would carry it across stops at
     u = 0 (the next iteration, on a fresh Jacobian, goes on from there)."""
-    switch, rotor, geo, fields, extras, fv, work, (p_tol, m_tol), regime = args
-    free = fv.cells.free
-    H, dP, D = fields.H, fields.dP, fields.D
-    width = switch.width
+    switch, rotor, geo, fields, extras, fv, work, tol, regime = args
+    return content_newton_norm(z, dz, fields.H, switch.width, fv.cells.free, fields.dP, fields.D, tol, regime)
+
+
+@njit(cache=True)
+def content_newton_norm(z, dz, gap, width, free, dP, D, tol, regime):
+    """:func:`film_newton_norm` of a film whose content is ``gap C(u)`` (``gap``: H, or a rough film's mean gap),
+    switch width ``width``, cells ``free``, fields ``dP`` and ``D``, tolerances ``tol = (p_tol, m_tol)``."""
+    p_tol, m_tol = tol
     size = 0.0
     switched = 0
     for i in range(free.size):
@@ -214,7 +251,7 @@ def film_newton_norm(z, dz, args):
             if (z[i] > width and new < 0.0) or (z[i] < -width and new > 0.0):
                 dz[i] = z[i]  # a cell jumping across the switch stops at its centre (Newton cycles over the kink)
             a = abs(dz[i])
-            v = max(a * dP[i] / p_tol, a * H[i] * D[i] / m_tol)
+            v = max(a * dP[i] / p_tol, a * gap[i] * D[i] / m_tol)
             if v > size:
                 size = v
     return size, switched

@@ -15,12 +15,12 @@ from __future__ import annotations
 from numba import njit
 
 import transient.solvers.integrate.bdf2 as stepper
-from transient.fv.reynolds import jacobian_kernel
 from transient.models.journal.content_newton import (bdf2_from_state, bdf2_to_state, content_columns, fields_of,
-                                                     film_newton_norm)
-from transient.models.journal.kernels import (film_force, position_derivatives, shaft_accelerations, state_fields,
+                                                     film_newton_norm, gather_pattern, pattern_target)
+from transient.models.journal.kernels import (content_rows_at, film_force, shaft_accelerations, state_fields,
                                               stencil_flux)
 from transient.models.journal.speed_law import shaft_speed
+from transient.models.journal.viscous_film import fluidity_flux_jacobian
 from transient.solvers.integrate.bdf2 import newton_step
 from transient.solvers.integrate.cache_guard import drop_stale_cache
 from transient.solvers.read_only import as_read_only
@@ -58,15 +58,8 @@ def driven_residual(t, y, yp, out, args):
     scale_fields(fields, flu, s, switch)
     stencil_flux(as_read_only(work.u), fields, fv, fields.R, 1.0)
     fx, fy = film_force(fields.P, geo.cosp, geo.sinp, geo.area, sym)
-    free, area, R = fv.cells.free, geo.area, fields.R
-    n = free.size
-    for i in range(n):
-        out[i] = area[i] * yp[i] + R[i] if free[i] else yp[i]
     ax, ay = shaft_accelerations(s, ds, phi, fx, fy, kappa, wbar, ebar)
-    out[n] = yp[n] - y[n + 2]
-    out[n + 1] = yp[n + 1] - y[n + 3]
-    out[n + 2] = yp[n + 2] - ax
-    out[n + 3] = yp[n + 3] - ay
+    content_rows_at(y, yp, out, geo.area, fields.R, fv.cells.free, ax, ay)
 
 
 @njit(cache=True)
@@ -75,21 +68,10 @@ def driven_jacobian(t, y, yp, cj, data, args):
     :func:`scale_fields` and their position derivatives times the fluidity (Poiseuille) and ``s`` (Couette)."""
     base, flu, knots = args
     switch, rotor, geo, fields, extras, fv, work, tol, regime = base
-    cosp, sinp = geo.cosp, geo.sinp
-    H, P, dP, C, D, dD, k, c, zero, R = fields
-    dk_dq, dc_dq, no_dq, pos_row, pos_col, indices, scale = extras
-    faces, boundary, cells, face_k, bulk = fv
-    n = cells.free.size
     fields_of(y, base)
     s = shaft_speed(t, knots)[0]
     scale_fields(fields, flu, s, switch)
-    position_derivatives(H, cosp, sinp, switch.layer_gap, switch.darcy, dk_dq, dc_dq)
-    for i in range(n):
-        for e in range(2):
-            dk_dq[e, i] *= flu[i]
-            dc_dq[e, i] *= s
-    jacobian_kernel(P, dP, C, D, k, zero, k, zero, c, zero, dk_dq[:2], dk_dq[:2], dc_dq[:2], no_dq[:2], True,
-                    faces, boundary, cells, face_k, pos_col, data)
+    fluidity_flux_jacobian(flu, s, switch, geo, fields, extras, fv, data)
     content_columns(cj, rotor, geo, fields, extras, fv, work.u, switch.width, regime, data)
 
 
@@ -97,13 +79,8 @@ def driven_jacobian(t, y, yp, cj, data, args):
 def driven_newton_jacobian(t, y, yp, cj, data, args):
     """:func:`driven_jacobian` in the problem's pattern (the operator's, or the decoupled one gathered from it)."""
     work = args[0][6]
-    full, gather = work.jac, work.gather
-    if data.size == gather.size and data.size != full.size:
-        driven_jacobian(t, y, yp, cj, full, args)
-        for k in range(gather.size):
-            data[k] = full[gather[k]]
-    else:
-        driven_jacobian(t, y, yp, cj, data, args)
+    driven_jacobian(t, y, yp, cj, pattern_target(data, work), args)
+    gather_pattern(data, work)
 
 
 @njit(cache=True)

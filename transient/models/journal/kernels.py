@@ -376,13 +376,20 @@ def film_residual(u, X, Y, VX, VY, rate, C_ref, out, switch, geo, fields, fv):
 def film_jacobian(u, X, Y, VX, VY, rate, data, switch, geo, fields, extras, fv):
     """CSC data of ``dG/du`` for :func:`film_residual`, and -- if the operator has 4 extra unknowns --
     ``dG/dX, dG/dY`` (rate = 0 only) and ``dG/dVX, dG/dVY = A theta (cos, sin)`` in the extra columns."""
-    cosp, sinp, area = geo.cosp, geo.sinp, geo.area
-    H, P, dP, C, D, dD, k, c, zero, R = fields
-    dk_dq, dc_dq, no_dq, pos_row, pos_col, indices, scale = extras
-    free, u_fixed, pos_c = fv.cells
     stencil_jacobian(u, X, Y, switch, geo, fields, extras, fv, data, 1.0)
-    ne = dk_dq.shape[0]
-    for i in range(u.size):
+    film_columns(VX, VY, rate, geo, fields, extras, fv, data)
+
+
+@njit(cache=True)
+def film_columns(VX, VY, rate, geo, fields, extras, fv, data):
+    """:func:`film_jacobian`'s entries on top of the flux columns: the storage ``A_i (D_i H'_i + rate H_i D_i)`` on
+    the free cells' diagonal and, with 4 extra unknowns, ``dG/dVX, dG/dVY = A theta (cos, sin)``."""
+    cosp, sinp, area = geo.cosp, geo.sinp, geo.area
+    H, C, D = fields.H, fields.C, fields.D
+    pos_col = extras.pos_col
+    free, pos_c = fv.cells.free, fv.cells.pos_c
+    ne = extras.dk_dq.shape[0]
+    for i in range(free.size):
         if free[i]:
             data[pos_c[i]] += area[i] * (D[i] * (VX * cosp[i] + VY * sinp[i]) + rate * H[i] * D[i])
             if ne > 0:
@@ -450,10 +457,17 @@ def content_residual(tau, y, yp, out, switch, rotor, geo, fields, fv, work):
 def content_rows(tau, y, yp, out, rotor, area, R, free, fx, fy):
     """The rows of :func:`content_residual` from the film's net outflow ``R`` and force ``(fx, fy)``."""
     kappa, wbar, ebar, sym = rotor
+    ax, ay = rotor_accelerations(tau, fx, fy, kappa, wbar, ebar)
+    content_rows_at(y, yp, out, area, R, free, ax, ay)
+
+
+@njit(cache=True)
+def content_rows_at(y, yp, out, area, R, free, ax, ay):
+    """The content residual's rows ``A_i m_i' + R_i`` (free cells; ``m_i'`` on groove cells) and the rotor's,
+    ``X' - VX``, ``Y' - VY``, ``VX' - ax``, ``VY' - ay``, at the journal's accelerations ``(ax, ay)``."""
     n = free.size
     for i in range(n):
         out[i] = area[i] * yp[i] + R[i] if free[i] else yp[i]
-    ax, ay = rotor_accelerations(tau, fx, fy, kappa, wbar, ebar)
     out[n] = yp[n] - y[n + 2]
     out[n + 1] = yp[n + 1] - y[n + 3]
     out[n + 2] = yp[n + 2] - ax

@@ -32,8 +32,9 @@ import numpy as np
 from numba import njit
 
 from transient.fv.reynolds import jacobian_kernel, residual_kernel
-from transient.models.journal.kernels import N_ROTOR, film_force, shaft_accelerations, state_fields
-from transient.models.journal.content_newton import cell_regime
+from transient.models.journal.kernels import N_ROTOR, content_rows_at, film_force, shaft_accelerations, state_fields
+from transient.models.journal.content_newton import (cell_regime, content_newton_norm, gather_pattern, keep_prescribed,
+                                                     pattern_target, store_content)
 from transient.models.journal.film import read_only
 from transient.models.journal.speed_law import CONSTANT, shaft_speed
 from transient.physics.cavitation import elrod_inverse
@@ -489,20 +490,11 @@ def rough_fields_of(y, args):
 def rough_bdf2_residual(t, y, yp, out, args):
     """``F = A m' + R(u(m))`` and the rotor rows (module docstring) at the content state ``y``."""
     switch, rotor, geo, fields, extras, fv, work, tol, regime, rough = args
-    free = fv.cells.free
-    area = geo.area
-    n = free.size
     rough_fields_of(y, args)
-    R = fields.R
-    rough_flux(shaft_speed(t, rough.knots)[0], as_read_only(work.u), fields, fv, rough, R)
-    for i in range(n):
-        out[i] = area[i] * yp[i] + R[i] if free[i] else yp[i]
+    rough_flux(shaft_speed(t, rough.knots)[0], as_read_only(work.u), fields, fv, rough, fields.R)
     fx, fy = rough_force(fields.P, geo, rough, rotor.sym)
     ax, ay = rough_accelerations(t, fx, fy, rotor, rough.knots)
-    out[n] = yp[n] - y[n + 2]
-    out[n + 1] = yp[n + 1] - y[n + 3]
-    out[n + 2] = yp[n + 2] - ax
-    out[n + 3] = yp[n + 3] - ay
+    content_rows_at(y, yp, out, geo.area, fields.R, fv.cells.free, ax, ay)
 
 
 @njit(cache=True)
@@ -542,13 +534,8 @@ def rough_newton_jacobian(t, y, yp, cj, data, args):
     """:func:`rough_bdf2_jacobian` in the problem's pattern (the operator's, or the decoupled one gathered from it:
     :func:`~transient.models.journal.content_newton.newton_jacobian`)."""
     work = args[6]
-    full, gather = work.jac, work.gather
-    if data.size == gather.size and data.size != full.size:
-        rough_bdf2_jacobian(t, y, yp, cj, full, args)
-        for k in range(gather.size):
-            data[k] = full[gather[k]]
-    else:
-        rough_bdf2_jacobian(t, y, yp, cj, data, args)
+    rough_bdf2_jacobian(t, y, yp, cj, pattern_target(data, work), args)
+    gather_pattern(data, work)
 
 
 @njit(cache=True)
@@ -558,18 +545,7 @@ def rough_to_state(z, y, args):
     free, u_fixed = fv.cells.free, fv.cells.u_fixed
     n = free.size
     rough_state_fields(as_read_only(z[:n]), z[n], z[n + 1], switch, geo, fields, fv, rough)
-    C, u = fields.C, work.u
-    for i in range(n):
-        if free[i]:
-            y[i] = rough.mean_gap[i] * C[i]
-            u[i] = z[i]
-        else:
-            y[i] = z[i]
-            u[i] = u_fixed[i]
-    for i in range(n, y.size):
-        y[i] = z[i]
-    work.xy[0] = z[n]
-    work.xy[1] = z[n + 1]
+    store_content(z, y, rough.mean_gap, fields.C, free, u_fixed, work)
 
 
 @njit(cache=True)
@@ -579,34 +555,14 @@ def rough_from_state(y, z, args):
     free, u_fixed = fv.cells.free, fv.cells.u_fixed
     n = free.size
     rough_content_universal(as_read_only(y), switch, geo, free, u_fixed, rough.sig, work.theta, z[:n])
-    for i in range(n):
-        if not free[i]:
-            z[i] = y[i]
-    for i in range(n, y.size):
-        z[i] = y[i]
+    keep_prescribed(y, z, free)
 
 
 @njit(cache=True)
 def rough_newton_norm(z, dz, args):
     """:func:`~transient.models.journal.content_newton.film_newton_norm` with the content ``h_T C(u)``."""
-    switch, rotor, geo, fields, extras, fv, work, (p_tol, m_tol), regime, rough = args
-    free = fv.cells.free
-    dP, D = fields.dP, fields.D
-    width = switch.width
-    size = 0.0
-    switched = 0
-    for i in range(free.size):
-        if free[i]:
-            if cell_regime(z[i], width) != regime[i]:
-                switched += 1
-            new = z[i] - dz[i]
-            if (z[i] > width and new < 0.0) or (z[i] < -width and new > 0.0):
-                dz[i] = z[i]
-            a = abs(dz[i])
-            v = max(a * dP[i] / p_tol, a * rough.mean_gap[i] * D[i] / m_tol)
-            if v > size:
-                size = v
-    return size, switched
+    switch, rotor, geo, fields, extras, fv, work, tol, regime, rough = args
+    return content_newton_norm(z, dz, rough.mean_gap, switch.width, fv.cells.free, fields.dP, fields.D, tol, regime)
 
 
 class _StepLedger(BandNewton):

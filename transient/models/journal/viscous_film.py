@@ -19,7 +19,7 @@ from numba import njit
 
 from transient.fv.reynolds import jacobian_kernel
 from transient.models.journal.film import Film, read_only
-from transient.models.journal.kernels import N_ROTOR, position_derivatives, state_fields, stencil_flux
+from transient.models.journal.kernels import N_ROTOR, film_columns, position_derivatives, state_fields, stencil_flux
 
 
 @njit(cache=True)
@@ -41,28 +41,36 @@ def viscous_film_residual(u, X, Y, VX, VY, rate, C_ref, out, switch, geo, fields
 def viscous_film_jacobian(u, X, Y, VX, VY, rate, data, switch, geo, fields, extras, fv, fluidity):
     """:func:`~transient.models.journal.kernels.film_jacobian` with the Poiseuille conductances and their position
     derivatives times ``fluidity`` (frozen: no derivative of the viscosity)."""
-    cosp, sinp, area = geo.cosp, geo.sinp, geo.area
     H, P, dP, C, D, dD, k, c, zero, R = fields
     dk_dq, dc_dq, no_dq, pos_row, pos_col, indices, scale = extras
     faces, boundary, cells, face_k, bulk = fv
-    free, u_fixed, pos_c = cells
     state_fields(u, X, Y, switch, geo, fields, fv)
-    ne = dk_dq.shape[0]
-    if ne > 0:
-        position_derivatives(H, cosp, sinp, switch.layer_gap, switch.darcy, dk_dq, dc_dq)
     for i in range(u.size):
         k[i] *= fluidity[i]
-        for e in range(ne):
+    if dk_dq.shape[0] > 0:
+        fluidity_flux_jacobian(fluidity, 1.0, switch, geo, fields, extras, fv, data)
+    else:
+        jacobian_kernel(P, dP, C, D, k, zero, k, zero, c, zero, dk_dq, dk_dq, dc_dq, no_dq, True, faces, boundary,
+                        cells, face_k, pos_col, data)
+    film_columns(VX, VY, rate, geo, fields, extras, fv, data)
+
+
+@njit(cache=True)
+def fluidity_flux_jacobian(fluidity, s, switch, geo, fields, extras, fv, data):
+    """The film's flux columns (:func:`~transient.fv.reynolds.jacobian_kernel`: ``dR/du``, ``dR/d(X, Y)``) on the
+    conductances in ``fields`` (already scaled: ``k`` by ``fluidity``, ``c`` by the speed ratio ``s``) with their
+    position derivatives (:func:`~transient.models.journal.kernels.position_derivatives`) scaled likewise; the thermal
+    film's, the driven content film's (:mod:`~transient.models.journal.driven_film`) and the thermal rotor's."""
+    H, P, dP, C, D, dD, k, c, zero, R = fields
+    dk_dq, dc_dq, no_dq, pos_row, pos_col, indices, scale = extras
+    faces, boundary, cells, face_k, bulk = fv
+    position_derivatives(H, geo.cosp, geo.sinp, switch.layer_gap, switch.darcy, dk_dq, dc_dq)
+    for i in range(H.size):
+        for e in range(2):
             dk_dq[e, i] *= fluidity[i]
-    q = min(ne, 2)
-    jacobian_kernel(P, dP, C, D, k, zero, k, zero, c, zero, dk_dq[:q], dk_dq[:q], dc_dq[:q], no_dq[:q], True,
+            dc_dq[e, i] *= s
+    jacobian_kernel(P, dP, C, D, k, zero, k, zero, c, zero, dk_dq[:2], dk_dq[:2], dc_dq[:2], no_dq[:2], True,
                     faces, boundary, cells, face_k, pos_col, data)
-    for i in range(u.size):
-        if free[i]:
-            data[pos_c[i]] += area[i] * (D[i] * (VX * cosp[i] + VY * sinp[i]) + rate * H[i] * D[i])
-            if ne > 0:
-                data[pos_col[i, 2]] = area[i] * C[i] * cosp[i]
-                data[pos_col[i, 3]] = area[i] * C[i] * sinp[i]
 
 
 class ViscousFilm(Film):

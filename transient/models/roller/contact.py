@@ -69,6 +69,7 @@ from transient.models.roller.results import EHLConvergenceError, RollerSteady, R
 from transient.models.roller.roller_fbns import RollerContentFilm, carry_content, content_start, solve_content
 from transient.models.roller.line_step import consistent_content, run_content_transient
 from transient.models.roller.transient import load_ratio, run_squeeze
+from transient.models.roller.transient_results import content_outputs, squeeze_result
 from transient.physics.line_formulas import dowson_toyoda_central
 from transient.physics.lubricant import DOWSON_HIGGINSON_PARK, Lubricant
 from transient.solvers.newton import NewtonError
@@ -846,13 +847,7 @@ class RollerContact:
             return self._content_transient(film, y0, theta0, ratio, t_end, n_out, max_steps, (ig, lr))
         sol, wall, rows = run_squeeze(film, s["lam"], ratio, y0, t_end, t_ref, ig.rtol, n_out,
                                       lambda f, y: self.result(f, y, True, "", 0, [], 0.0))
-        last = rows[-1]
-        return RollerTransient(t=sol.t * t_ref, h_central=np.array([r.h_central for r in rows]),
-                               h_min=np.array([r.h_min for r in rows]), p_max=np.array([r.p_max for r in rows]),
-                               h0=sol.y[:, -1] * s["film"], load=np.array([ratio(t) for t in sol.t]) * self.load,
-                               x=last.x, y=last.y, pressure=last.pressure, film=last.film, success=sol.success,
-                               message=sol.message, stats=sol.stats, n_steps=sol.stats.n_steps, n_jacobians=sol.stats.n_jac,
-                               wall_time=wall, final_state=sol.y[-1].copy(), final_time=float(sol.t[-1] * t_ref))
+        return squeeze_result(RollerTransient, sol, wall, rows, ratio, t_ref, self.load, s["film"])
 
     def _content_transient(self, film, y0, theta0, ratio, t_end, n_out, max_steps, settings):
         """``method="bdf2"`` of :meth:`transient`: :class:`~transient.models.roller.line_step.LineFilmStep` on the
@@ -865,21 +860,9 @@ class RollerContact:
             u0 = consistent_content(content, y0[:-1], y0[-1])
         else:
             u0 = np.concatenate([y0[:-1], theta0, [y0[-1]]])
-        state = lambda u: np.append(u[:n], u[-1])
-
-        def sample(tau, u):
-            r = self.result(film, state(u), True, "", 0, [], 0.0)
-            return dict(h_central=r.h_central, h_min=r.h_min, p_max=r.p_max, h0=u[-1] * self.scales["film"],
-                        load=ratio(tau) * self.load)
-
-        def result(a, u, stats, message):
-            last = self.result(film, state(u), True, "", 0, [], 0.0, content=u[n: 2 * n])
-            return RollerTransient(t=a["t"] * t_ref, h_central=a["h_central"], h_min=a["h_min"], p_max=a["p_max"],
-                                   h0=a["h0"], load=a["load"], x=last.x, y=last.y, pressure=last.pressure,
-                                   film=last.film, success=True, message=message or "completed", stats=stats,
-                                   n_steps=stats.n_steps, n_jacobians=stats.n_jac, wall_time=stats.wall_time,
-                                   final_state=state(u), final_time=float(a["t"][-1]) * t_ref if len(a["t"]) else 0.0)
-
+        sample, result = content_outputs(
+            RollerTransient, lambda y, theta: self.result(film, y, True, "", 0, [], 0.0, content=theta), n, ratio,
+            t_ref, self.load, self.scales["film"])
         key = dict(contact=contact_digest(self), nodes=[int(film.grid.nx), int(film.grid.ny)],
                    load=load_digest(ratio, t_end / t_ref, n_out))
         return run_content_transient(content, self.scales["lam"], u0, ratio, t_end / t_ref, n_out, sample, result,

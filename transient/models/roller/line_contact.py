@@ -41,6 +41,7 @@ from transient.models.roller.line_sequence import inlet_spacing, solve_sequence
 from transient.models.roller.line_step import consistent_content, run_content_transient
 from transient.models.roller.results import EHLConvergenceError, LineDry, LineSteady, LineTransient
 from transient.models.roller.transient import load_ratio, run_squeeze
+from transient.models.roller.transient_results import content_outputs, squeeze_result
 from transient.physics.elasticity import line_influence
 from transient.physics.line_formulas import (dowson_toyoda_central, hertz_line, line_groups, martin_min, moes_central,
                                              moes_groups)
@@ -563,13 +564,7 @@ class LineContact:
         ratio = load_ratio(load, w_ref, w_start, t_ref, ramp_time)
         sol, wall, rows = run_squeeze(film, kappa, ratio, y0, t_end, t_ref, rtol, n_out,
                                       lambda f, y: self._result(f, y, True, "", 0, [], 0.0))
-        last = rows[-1]
-        return LineTransient(t=sol.t * t_ref, h_central=np.array([r.h_central for r in rows]),
-                             h_min=np.array([r.h_min for r in rows]), p_max=np.array([r.p_max for r in rows]),
-                             h0=sol.y[:, -1] * self.film_scale, load=np.array([ratio(t) for t in sol.t]) * w_ref,
-                             x=last.x, pressure=last.pressure, film=last.film, success=sol.success,
-                             message=sol.message, stats=sol.stats, n_steps=sol.stats.n_steps, n_jacobians=sol.stats.n_jac,
-                             wall_time=wall, final_state=sol.y[-1].copy(), final_time=float(sol.t[-1] * t_ref))
+        return squeeze_result(LineTransient, sol, wall, rows, ratio, t_ref, w_ref, self.film_scale)
 
     def _content_transient(self, film, y0, w_start, t_end, load, n_out, ramp_time, max_steps,
                            settings) -> LineTransient:
@@ -580,21 +575,8 @@ class LineContact:
         n, t_ref, w_ref = content.n, self.time_scale, self.load_per_length
         ratio = load_ratio(load, w_ref, w_start, t_ref, ramp_time)
         u0 = consistent_content(content, y0[:-1], y0[-1])
-        state = lambda u: np.append(u[:n], u[-1])
-
-        def sample(tau, u):
-            r = self._result(film, state(u), True, "", 0, [], 0.0)
-            return dict(h_central=r.h_central, h_min=r.h_min, p_max=r.p_max, h0=u[-1] * self.film_scale,
-                        load=ratio(tau) * w_ref)
-
-        def result(a, u, stats, message):
-            last = self._result(film, state(u), True, "", 0, [], 0.0)
-            return LineTransient(t=a["t"] * t_ref, h_central=a["h_central"], h_min=a["h_min"], p_max=a["p_max"],
-                                 h0=a["h0"], load=a["load"], x=last.x, pressure=last.pressure, film=last.film,
-                                 success=True, message=message or "completed", stats=stats, n_steps=stats.n_steps,
-                                 n_jacobians=stats.n_jac, wall_time=stats.wall_time, final_state=state(u),
-                                 final_time=float(a["t"][-1]) * t_ref if len(a["t"]) else 0.0)
-
+        sample, result = content_outputs(LineTransient, lambda y, _: self._result(film, y, True, "", 0, [], 0.0), n,
+                                         ratio, t_ref, w_ref, self.film_scale)
         key = dict(contact=contact_digest(self), nodes=int(self.grid.n),
                    load=load_digest(ratio, t_end / t_ref, n_out))
         return run_content_transient(content, self.lam, u0, ratio, t_end / t_ref, n_out, sample, result, settings,
