@@ -16,7 +16,8 @@ from numba import njit
 
 import transient.solvers.integrate.bdf2 as stepper
 from transient.fv.reynolds import jacobian_kernel
-from transient.models.journal.content_newton import (bdf2_from_state, bdf2_to_state, content_columns, fields_of,
+from transient.models.journal.content_newton import (_bdf2_from_state as bdf2_from_state,
+                                                     _bdf2_to_state as bdf2_to_state, content_columns, fields_of,
                                                      film_newton_norm)
 from transient.models.journal.kernels import (film_force, position_derivatives, shaft_accelerations, state_fields,
                                               stencil_flux)

@@ -45,9 +45,14 @@ import numpy as np
 from numba import njit
 
 from transient.solvers.bandlu import BorderedBandLU, band_factor, band_solve
+from transient.solvers.inner_kernel import inner_kernel
 from transient.solvers.integrate.guard import SIGINT
 from transient.solvers.integrate.outputs import Events, step_events
 from transient.solvers.integrate.stepper import BDF2, StepBounds, StepSolve, drive, quadratic
+
+# the band LU as the Newton calls it (inlined into a model's caller): without the entry points Python calls
+_band_factor = inner_kernel(band_factor)
+_band_solve = inner_kernel(band_solve)
 
 NEWTON_FACTOR = 0.1  # Newton tolerance on the error components, as a fraction of rtol |y| + atol
 MAX_ITER = 25
@@ -114,7 +119,7 @@ def _refactor(jacobian, to_state, args, t, cj, b, z, y, yp, data, lu, state, cou
     jacobian(t, y, yp, cj, data, args)
     counts[J_EVALS] += 1
     state[REFRESH] = 0.0
-    if band_factor(data, lu) != 0:
+    if _band_factor(data, lu) != 0:
         state[CJ_J] = 0.0
         return False
     state[CJ_J] = cj
@@ -141,7 +146,7 @@ def _update(residual, norm, to_state, args, lu, t, cj, b, z, y, yp, F, dz, scale
 def _chord(norm, args, lu, z, F, dz, scale, err_idx, err_w):
     """The update ``dz = scale M^-1 F`` on the current factorisation for the residual ``F`` at ``z``, its size and
     switched components (:func:`_update`)."""
-    band_solve(lu, F, dz)
+    _band_solve(lu, F, dz)
     for i in range(dz.size):
         dz[i] *= scale
     size, switched = norm(z, dz, args)
