@@ -155,6 +155,13 @@ def fields_of(y, args):
         work.xy[1] = y[n + 1]
 
 
+def forget_fields(args):
+    """Make the next :func:`fields_of` on ``args`` invert its state (``u = C^-1(m / H)``) rather than take the
+    fields the last Newton or a Python caller left in its ``work``: a start's slope is then a function of the start
+    state alone, the same bits in a run resumed from a checkpoint as in the uninterrupted one."""
+    args[6].xy[0] = np.nan
+
+
 @inner_kernel
 def _bdf2_to_state(z, y, args):
     """The content state ``y = [m, X, Y, VX, VY]`` of the Newton variables ``z = [u, X, Y, VX, VY]``: ``m = H C(u)``

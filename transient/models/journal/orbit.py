@@ -49,7 +49,7 @@ from transient.models.journal.tilt import half_length, moment
 from transient.models.journal.time_domain import check_time_domain
 from transient.models.journal.rk4 import FilmStageSolver
 from transient.models.journal.thermal_orbit import THERMAL_FIELDS, THERMAL_RECORDABLE, thermal_long_run, thermal_parts
-from transient.models.journal.content_newton import bdf2_newton, bdf2_residual, decoupled_pattern
+from transient.models.journal.content_newton import bdf2_newton, bdf2_residual, decoupled_pattern, forget_fields
 from transient.models.journal.rough_orbit import (CONTACT_LAMBDA, orbit_tribology, peak_asperity_pressure, rough_bdf2_newton, rough_cells,
                                                   rough_content_rhs, rough_dae_jacobian, rough_dae_residual,
                                                   rough_ode_rhs)
@@ -350,7 +350,8 @@ class JournalOrbit:
             def residual(t, y, yp, out):
                 kernel(t, y, yp, out, args)
 
-            rhs = _content_slope(residual, np.where(fv.cells.free, geo.area, 1.0), fv.cells.free, n)
+            rhs = _content_slope(residual, np.where(fv.cells.free, geo.area, 1.0), fv.cells.free, n,
+                                 args[0] if self.speed_profile is not None else args)
 
             jac_rhs = jac_residual = None
         elif self.speed_profile is not None:
@@ -937,10 +938,12 @@ def _prefetching(film, callback, formulation):
     return wrapped
 
 
-def _content_slope(residual, scale, free, n):
+def _content_slope(residual, scale, free, n, args):
     """``rhs(t, y, out)``: ``y'`` of a content state from its ``residual`` at ``y' = 0`` (``A m' + R = 0`` solved for
-    ``m'`` on the ``free`` cells with ``scale = A``, zero on the others; the rotor rows ``y' - f(y)``)."""
+    ``m'`` on the ``free`` cells with ``scale = A``, zero on the others; the rotor rows ``y' - f(y)``), on the fields
+    of ``y`` itself, not those the content kernels' ``args`` hold (:func:`~.content_newton.forget_fields`)."""
     def rhs(t, y, out):
+        forget_fields(args)
         residual(t, np.array(y), np.zeros(y.size), out)  # writable, as the Newton calls it: one compiled signature
         out[:n] /= -scale
         out[:n][~free] = 0.0
