@@ -66,12 +66,11 @@ def _newton_jacobian(t, y, yp, cj, data, args):
     one of :func:`decoupled_pattern` (gathered from the operator's, ``work.jac``, by ``work.gather``)."""
     work = args[6]
     full, gather = work.jac, work.gather
-    if data.size == gather.size and data.size != full.size:  # the decoupled pattern
-        _bdf2_jacobian(t, y, yp, cj, full, args)
+    decoupled = data.size == gather.size and data.size != full.size
+    _bdf2_jacobian(t, y, yp, cj, full if decoupled else data, args)  # one call site: a smaller kernel to compile
+    if decoupled:
         for k in range(gather.size):
             data[k] = full[gather[k]]
-    else:
-        _bdf2_jacobian(t, y, yp, cj, data, args)
 
 
 @njit(cache=True)
