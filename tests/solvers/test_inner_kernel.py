@@ -39,3 +39,23 @@ def test_the_newton_kernels_python_calls_have_entry_points():
         assert not isinstance(getattr(cn, name), type(_weighted_sum)), name
     for name in ("band_factor", "band_solve"):
         assert not isinstance(getattr(bandlu, name), type(_weighted_sum)), name
+
+
+@inner_kernel
+def _checked_sum(x):
+    if x.size == 0:
+        raise ValueError("no values")
+    return _weighted_sum(x, 1.0)
+
+
+@njit
+def _checked_caller(x):
+    return _checked_sum(x)
+
+
+def test_an_inner_kernel_calls_another_and_its_error_reaches_python():
+    """Inner kernels' code reaches the JIT only through their callers (LinkOnlyLibrary): a chain of them runs and
+    an exception raised inside one comes out of the caller."""
+    assert _checked_caller(np.arange(3.0)) == 3.0
+    with pytest.raises(ValueError, match="no values"):
+        _checked_caller(np.empty(0))
