@@ -31,6 +31,8 @@ from numba import njit, types
 from numba.extending import get_cython_function_address, intrinsic
 from scipy.sparse.csgraph import reverse_cuthill_mckee
 
+from transient.solvers.inner_kernel import inner_kernel
+
 _BAND, _BORDER_COL, _BORDER_ROW, _CORNER = range(4)
 
 
@@ -88,7 +90,7 @@ class BandLU(NamedTuple):
     x2: np.ndarray
 
 
-@njit(cache=True)
+@inner_kernel
 def _small_lu(S, piv):
     """In-place LU with partial pivoting of the small dense ``S`` (row-major); False if singular."""
     m = S.shape[0]
@@ -110,7 +112,7 @@ def _small_lu(S, piv):
     return True
 
 
-@njit(cache=True)
+@inner_kernel
 def _small_solve(S, piv, b):
     m = S.shape[0]
     for k in range(m):
@@ -126,7 +128,7 @@ def _small_solve(S, piv, b):
         b[i] /= S[i, i]
 
 
-@njit(cache=True)
+@inner_kernel
 def _gbtrs(lu, b, nrhs_slot):
     """b <- A^-1 b for the factored band (b C-ordered (nrhs, n); nrhs in ints[nrhs_slot])."""
     ints = lu.ints
@@ -136,7 +138,7 @@ def _gbtrs(lu, b, nrhs_slot):
     return ints[5]
 
 
-@njit(cache=True)
+@inner_kernel
 def _copy2(src, dst):
     """``dst[:, :] = src`` for two arrays of the same shape."""
     for i in range(src.shape[0]):

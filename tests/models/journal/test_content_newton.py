@@ -196,3 +196,21 @@ def test_newton_pattern_drops_only_zeros(film):
     assert np.array_equal(J * kept, J)
     bands = BorderedBandLU(o.film.op.pattern, 4).kl, BorderedBandLU(pattern, 4).kl  # 11, 5 (Gecim's 9 points: 19, 9)
     assert bands[1] <= 0.5 * bands[0], bands
+
+
+def test_start_slope_is_that_of_the_state_whatever_fields_the_film_holds():
+    """The BDF2 start's slope y' (the residual at y' = 0 solved for y') is a function of the start state alone: the
+    same bits after the Newton left that state's own fields (an uninterrupted run at a chunk boundary) as after the
+    fields of another state (a run resumed from a checkpoint), so a resumed run is the uninterrupted one."""
+    o = orbit()
+    n, args = o.film.n, o.bdf2_model().args
+    pattern = o.newton_pattern()[0]
+    z, _ = moving_state(o)
+    y, y_other = np.empty_like(z), np.empty_like(z)
+    bdf2_to_state(z, y, args)  # the film holds y's fields as the Newton left them (u = z)
+    held = o._problem(y, TAU, 0.0, "content", pattern).yp0
+    z2 = z.copy()
+    z2[n] += 0.01
+    bdf2_to_state(z2, y_other, args)  # the fields of another state
+    other = o._problem(y, TAU, 0.0, "content", pattern).yp0
+    assert np.array_equal(held, other)

@@ -5,6 +5,11 @@ conservation law ``F = A m' + R(u(m))`` and the rotor equations; the Newton vari
 the universal variable of the free cells, smooth across the cavitation switch where ``u(m)`` has a corner (Newton on m
 cycles over it). The argument tuple ``args`` = (switch, rotor, geo, fields, extras, fv, work, (p_tol, m_tol),
 regime) is built by :meth:`~transient.models.journal.orbit.JournalOrbit.bdf2_model`.
+
+Only :func:`bdf2_newton` and :func:`bdf2_residual` (also the start's slope) are called from Python in a run; the
+Newton's other kernels are :func:`~transient.solvers.inner_kernel.inner_kernel` s (no entry points for Python: a
+first run compiles about half as much for each), ``newton_jacobian``, ``bdf2_jacobian``, ``bdf2_to_state`` and
+``bdf2_from_state`` the same functions as Python calls them.
 """
 
 from __future__ import annotations
@@ -18,14 +23,15 @@ from transient.models.journal.kernels import (N_ROTOR, content_rows, content_uni
 import transient.solvers.integrate.bdf2 as stepper
 from transient.solvers.integrate.bdf2 import newton_step
 from transient.solvers.integrate.cache_guard import drop_stale_cache
+from transient.solvers.inner_kernel import entry_point, inner_kernel
 from transient.solvers.read_only import as_read_only
 
 
 @njit(cache=True)  # newton_step is inlined (its kernels are this module's globals): cached on disk like a kernel
 def bdf2_newton(args, t, cj, b, y, yp, F, dz, data, lu, y_pred, z, pick, err_idx, err_w, state, counts):
     """:func:`~transient.solvers.integrate.bdf2.newton_step` on the content film + rotor, iterating on ``[u, X, Y, VX, VY]``."""
-    return newton_step(bdf2_residual, newton_jacobian, film_newton_norm, bdf2_to_state, bdf2_from_state, args, t,
-                       cj, b, y, yp, F, dz, data, lu, y_pred, z, pick, err_idx, err_w, state, counts)
+    return newton_step(bdf2_residual, _newton_jacobian, film_newton_norm, _bdf2_to_state, _bdf2_from_state, args,
+                       t, cj, b, y, yp, F, dz, data, lu, y_pred, z, pick, err_idx, err_w, state, counts)
 
 
 drop_stale_cache(bdf2_newton, stepper.__file__)  # numba keys the cache on this file only; newton_step is inlined
@@ -74,12 +80,12 @@ def gather_pattern(data, work):
             data[k] = full[gather[k]]
 
 
-@njit(cache=True)
-def newton_jacobian(t, y, yp, cj, data, args):
+@inner_kernel
+def _newton_jacobian(t, y, yp, cj, data, args):
     """:func:`bdf2_jacobian` in the pattern of the problem: the operator's (``data`` of its size) or the decoupled
     one of :func:`decoupled_pattern` (gathered from the operator's, ``work.jac``, by ``work.gather``)."""
     work = args[6]
-    bdf2_jacobian(t, y, yp, cj, pattern_target(data, work), args)
+    _bdf2_jacobian(t, y, yp, cj, pattern_target(data, work), args)  # one call site: a smaller kernel to compile
     gather_pattern(data, work)
 
 
@@ -94,8 +100,8 @@ def bdf2_residual(t, y, yp, out, args):
     content_rows(t, y, yp, out, rotor, geo.area, fields.R, fv.cells.free, fx, fy)
 
 
-@njit(cache=True)
-def bdf2_jacobian(t, y, yp, cj, data, args):
+@inner_kernel
+def _bdf2_jacobian(t, y, yp, cj, data, args):
     """CSC data of ``(dF/dy + cj dF/dy') dy/dz`` for the content residual ``F = A m' + R(u) = 0`` with ``m' = cj m +
     b`` in the Newton variables ``z = [u, X, Y, VX, VY]`` (:func:`bdf2_to_state`: ``m_j = H_j C(u_j)``), at the cell
     fields of :func:`fields_of`. The film's outflow is a function of u and the position, so its columns are those
@@ -112,7 +118,7 @@ def bdf2_jacobian(t, y, yp, cj, data, args):
     content_columns(cj, rotor, geo, fields, extras, fv, work.u, switch.width, regime, data)
 
 
-@njit(cache=True)
+@inner_kernel
 def content_columns(cj, rotor, geo, fields, extras, fv, u, width, regime, data):
     """The content form's own Jacobian entries on top of the film's flux columns (:func:`bdf2_jacobian`, and the
     thermal orbit's): the storage ``cj A_i (H_i D_i, C_i cos, C_i sin)`` of the free cells (``cj`` on groove cells),
@@ -140,7 +146,7 @@ def content_columns(cj, rotor, geo, fields, extras, fv, u, width, regime, data):
             data[pos_row[r, n + e]] = cj if r == e else (-1.0 if e == r + 2 else 0.0)
 
 
-@njit(cache=True)
+@inner_kernel
 def fields_of(y, args):
     """The cell fields of the content state ``y`` in ``fields`` and its universal variable in ``work.u``: those
     :func:`bdf2_to_state` left if they are ``y``'s (the same journal position, ``work.xy``, and every free cell's
@@ -164,8 +170,15 @@ def fields_of(y, args):
         work.xy[1] = y[n + 1]
 
 
-@njit(cache=True)
-def bdf2_to_state(z, y, args):
+def forget_fields(args):
+    """Make the next :func:`fields_of` on ``args`` invert its state (``u = C^-1(m / H)``) rather than take the
+    fields the last Newton or a Python caller left in its ``work``: a start's slope is then a function of the start
+    state alone, the same bits in a run resumed from a checkpoint as in the uninterrupted one."""
+    args[6].xy[0] = np.nan
+
+
+@inner_kernel
+def _bdf2_to_state(z, y, args):
     """The content state ``y = [m, X, Y, VX, VY]`` of the Newton variables ``z = [u, X, Y, VX, VY]``: ``m = H C(u)``
     on the free cells (groove cells: ``z`` holds m). Leaves the cell fields of ``u`` in ``fields``, ``u`` in
     ``work.u`` and the position in ``work.xy`` for the residual and the Jacobian at ``y`` (:func:`fields_of`)."""
@@ -196,8 +209,8 @@ def store_content(z, y, gap, C, free, u_fixed, work):
     work.xy[1] = z[n + 1]
 
 
-@njit(cache=True)
-def bdf2_from_state(y, z, args):
+@inner_kernel
+def _bdf2_from_state(y, z, args):
     """The inverse of :func:`bdf2_to_state` (:func:`~transient.models.journal.kernels.content_universal`, into ``z``:
     the fields and ``work.u`` stay those of the last :func:`bdf2_to_state`)."""
     switch, rotor, geo, fields, extras, fv, work, tol, regime = args
@@ -219,13 +232,13 @@ def keep_prescribed(y, z, free):
         z[i] = y[i]
 
 
-@njit(cache=True)
+@inner_kernel
 def cell_regime(u, width):
     """1 full film, -1 cavitated, 0 inside the switch (|u| <= its pressure width)."""
     return 1 if u > width else (-1 if u < -width else 0)
 
 
-@njit(cache=True)
+@inner_kernel
 def film_newton_norm(z, dz, args):
     """A Newton update ``du`` of the film in units of its tolerances ``(p_tol, m_tol)``: the largest over the free
     cells of ``|P'(u) du| / p_tol`` (pressure) and ``|H D du| / m_tol`` (content), at the fields of the last
@@ -256,3 +269,9 @@ def content_newton_norm(z, dz, gap, width, free, dP, D, tol, regime):
                 size = v
     return size, switched
 
+
+# the Newton's kernels as Python calls them (tests, diagnostics): the same functions, cached with entry points
+newton_jacobian = entry_point(_newton_jacobian)
+bdf2_jacobian = entry_point(_bdf2_jacobian)
+bdf2_to_state = entry_point(_bdf2_to_state)
+bdf2_from_state = entry_point(_bdf2_from_state)

@@ -15,7 +15,8 @@ from __future__ import annotations
 from numba import njit
 
 import transient.solvers.integrate.bdf2 as stepper
-from transient.models.journal.content_newton import (bdf2_from_state, bdf2_to_state, content_columns, fields_of,
+from transient.models.journal.content_newton import (_bdf2_from_state as bdf2_from_state,
+                                                     _bdf2_to_state as bdf2_to_state, content_columns, fields_of,
                                                      film_newton_norm, gather_pattern, pattern_target)
 from transient.models.journal.kernels import (content_rows_at, film_force, shaft_accelerations, state_fields,
                                               stencil_flux)

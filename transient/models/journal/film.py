@@ -207,7 +207,7 @@ class Film(FilmBlock):
         """The universal variable ``u`` of the content state ``m`` (groove cells: their prescribed u)."""
         y = np.concatenate([np.asarray(m, dtype=float), [X, Y]])
         u = np.empty(self.n)
-        content_universal(y, self.switch, self.geo, self.op.free, self.op.u_fixed, np.empty(self.n), u)
+        content_universal(read_only(y), self.switch, self.geo, self.op.free, self.op.u_fixed, np.empty(self.n), u)
         return u
 
     def force(self, u, X, Y):

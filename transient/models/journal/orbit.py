@@ -49,7 +49,7 @@ from transient.models.journal.tilt import half_length, moment
 from transient.models.journal.time_domain import check_time_domain
 from transient.models.journal.rk4 import FilmStageSolver
 from transient.models.journal.thermal_orbit import THERMAL_FIELDS, THERMAL_RECORDABLE, thermal_long_run, thermal_parts
-from transient.models.journal.content_newton import bdf2_newton, decoupled_pattern
+from transient.models.journal.content_newton import bdf2_newton, bdf2_residual, decoupled_pattern, forget_fields
 from transient.models.journal.rough_orbit import (CONTACT_LAMBDA, orbit_tribology, peak_asperity_pressure, rough_bdf2_newton, rough_cells,
                                                   rough_content_rhs, rough_dae_jacobian, rough_dae_residual,
                                                   rough_ode_rhs)
@@ -341,18 +341,17 @@ class JournalOrbit:
                 rough_dae_jacobian(t, y, yp, cj, data, switch, rotor, geo, fields, extras, fv, rough)
 
             jac_rhs = None
-        elif self.speed_profile is not None and formulation == "content":  # BDF2 only, its Newton's Jacobian
-            args = self.bdf2_model().args
-            scale = np.where(fv.cells.free, geo.area, 1.0)
+        elif pattern is not None or (self.speed_profile is not None and formulation == "content"):
+            # BDF2 on the content film: its Newton's Jacobian; y' from the Newton's own residual, so a first run
+            # compiles no ODE kernel
+            args, kernel = ((self.bdf2_model().args, driven_residual) if self.speed_profile is not None
+                            else (self.content_args(), bdf2_residual))
 
             def residual(t, y, yp, out):
-                driven_residual(t, y, yp, out, args)
+                kernel(t, y, yp, out, args)
 
-            def rhs(t, y, out):  # y' of the content state: the residual at y' = 0 is A m' + ... = 0 solved for y'
-                residual(t, y, np.zeros(y.size), out)
-                out[:n] /= -scale
-                out[:n][~fv.cells.free] = 0.0
-                out[n:] *= -1.0
+            rhs = _content_slope(residual, np.where(fv.cells.free, geo.area, 1.0), fv.cells.free, n,
+                                 args[0] if self.speed_profile is not None else args)
 
             jac_rhs = jac_residual = None
         elif self.speed_profile is not None:
@@ -937,3 +936,17 @@ def _prefetching(film, callback, formulation):
             film.prefetch(y[:n], y[n], y[n + 1])
             callback(t, y, *args)
     return wrapped
+
+
+def _content_slope(residual, scale, free, n, args):
+    """``rhs(t, y, out)``: ``y'`` of a content state from its ``residual`` at ``y' = 0`` (``A m' + R = 0`` solved for
+    ``m'`` on the ``free`` cells with ``scale = A``, zero on the others; the rotor rows ``y' - f(y)``), on the fields
+    of ``y`` itself, not those the content kernels' ``args`` hold (:func:`~.content_newton.forget_fields`)."""
+    def rhs(t, y, out):
+        forget_fields(args)
+        residual(t, np.array(y), np.zeros(y.size), out)  # writable, as the Newton calls it: one compiled signature
+        out[:n] /= -scale
+        out[:n][~free] = 0.0
+        out[n:] *= -1.0
+
+    return rhs

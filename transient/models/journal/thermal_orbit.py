@@ -44,6 +44,7 @@ from dataclasses import replace
 import numpy as np
 
 from transient.checks import check_range
+from transient.models.journal.content_newton import forget_fields
 from transient.models.journal.driven_film import driven_fields, driven_newton, driven_residual
 from transient.models.journal.film import read_only
 from transient.models.journal.film_temperatures import FilmTemperatures
@@ -103,6 +104,7 @@ class ThermalRun(FilmTemperatures):
         args = self.model.args
         yp0 = np.zeros(y.size)
         F = np.empty(y.size)
+        forget_fields(args[0])  # the slope of y itself (not of the fields the last interval's Newton left)
         driven_residual(tau, read_only(np.ascontiguousarray(y)), read_only(yp0), F, args)
         scale = np.ones(y.size)
         scale[:n] = np.where(film.op.free, film.area, 1.0)

@@ -45,9 +45,14 @@ import numpy as np
 from numba import njit
 
 from transient.solvers.bandlu import BorderedBandLU, band_factor, band_solve
+from transient.solvers.inner_kernel import inner_kernel
 from transient.solvers.integrate.guard import SIGINT
 from transient.solvers.integrate.outputs import Events, step_events
 from transient.solvers.integrate.stepper import BDF2, StepBounds, StepSolve, drive, quadratic
+
+# the band LU as the Newton calls it (inlined into a model's caller): without the entry points Python calls
+_band_factor = inner_kernel(band_factor)
+_band_solve = inner_kernel(band_solve)
 
 NEWTON_FACTOR = 0.1  # Newton tolerance on the error components, as a fraction of rtol |y| + atol
 MAX_ITER = 25
@@ -114,7 +119,7 @@ def _refactor(jacobian, to_state, args, t, cj, b, z, y, yp, data, lu, state, cou
     jacobian(t, y, yp, cj, data, args)
     counts[J_EVALS] += 1
     state[REFRESH] = 0.0
-    if band_factor(data, lu) != 0:
+    if _band_factor(data, lu) != 0:
         state[CJ_J] = 0.0
         return False
     state[CJ_J] = cj
@@ -122,26 +127,10 @@ def _refactor(jacobian, to_state, args, t, cj, b, z, y, yp, data, lu, state, cou
 
 
 @njit(inline="always")  # inlined into the model's cached caller (Bdf2Model.newton), where its kernels are globals
-def _update(residual, norm, to_state, args, lu, t, cj, b, z, y, yp, F, dz, scale, err_idx, err_w, counts):
-    """Residual at ``z`` and the chord update ``dz``; returns (its size in tolerance units, switched components),
-    size = inf if the residual is not finite."""
-    n = y.size
-    to_state(z, y, args)
-    for i in range(n):
-        yp[i] = cj * y[i] + b[i]
-    residual(t, y, yp, F, args)
-    counts[RESIDUALS] += 1
-    for i in range(n):
-        if not np.isfinite(F[i]):
-            return np.inf, 0
-    return _chord(norm, args, lu, z, F, dz, scale, err_idx, err_w)
-
-
-@njit(inline="always")  # inlined into the model's cached caller (Bdf2Model.newton), where its kernels are globals
 def _chord(norm, args, lu, z, F, dz, scale, err_idx, err_w):
-    """The update ``dz = scale M^-1 F`` on the current factorisation for the residual ``F`` at ``z``, its size and
-    switched components (:func:`_update`)."""
-    band_solve(lu, F, dz)
+    """The update ``dz = scale M^-1 F`` on the current factorisation for the residual ``F`` at ``z``, its size in
+    tolerance units and switched components (:func:`newton_step`)."""
+    _band_solve(lu, F, dz)
     for i in range(dz.size):
         dz[i] *= scale
     size, switched = norm(z, dz, args)
@@ -192,40 +181,61 @@ def newton_step(residual, jacobian, norm, to_state, from_state, args, t, cj, b, 
             z[i] = z_y[i]
     counts[SOLVES] += 1
     fresh = 0  # the iteration whose update came from a fresh Jacobian (its rate is not the chord's)
-    if state[CJ_J] == 0.0 or state[REFRESH] != 0.0:
+    factor = state[CJ_J] == 0.0 or state[REFRESH] != 0.0  # a Jacobian at z is due before the next update
+    if factor:
         counts[J_START] += 1
-        if not _refactor(jacobian, to_state, args, t, cj, b, z, y, yp, data, lu, state, counts):
-            return 2
     else:
         fresh = -1
+    again = False  # the update is that of the residual F at z on a fresh factorisation (not re-evaluated)
     z_base = z.copy()
     d_base = np.zeros(n)
     refreshed = 0
     prev = np.inf
     lam = 1.0
     rate = 0.0
-    for it in range(MAX_ITER):
-        size, switched = _update(residual, norm, to_state, args, lu, t, cj, b, z, y, yp, F, dz,
-                                 2.0 / (1.0 + cj / state[CJ_J]), err_idx, err_w, counts)
-        state[ITERS] = it + 1
-        counts[ITERATIONS] += 1
-        if it > 0 and size > prev and lam > 1.0 / 16.0:  # damp the last update
-            counts[DAMPED] += 1
-            lam *= 0.5
-            for i in range(n):
-                z[i] = z_base[i] - lam * d_base[i]
-            continue
-        slow = it > 0 and size > RATE_REFRESH * prev
-        if (1.0 < size < np.inf and refreshed < MAX_REFRESH
-                and (slow or (switched > 0 and _switch_pays(size, size / prev if it > 0 else state[RATE], switched,
-                                                            state[REFRESH_COST])))):
-            refreshed += 1
-            fresh = it
-            counts[J_SWITCH if switched > 0 else J_RATE] += 1
-            counts[SWITCHED] += switched
+    it = 0
+    while it < MAX_ITER:  # one call site per kernel: a smaller caller to compile
+        if factor:
+            factor = False
             if not _refactor(jacobian, to_state, args, t, cj, b, z, y, yp, data, lu, state, counts):
                 return 2
-            size, switched = _chord(norm, args, lu, z, F, dz, 1.0, err_idx, err_w)  # F is the residual at z
+        scale = 1.0
+        finite = True
+        if not again:
+            scale = 2.0 / (1.0 + cj / state[CJ_J])
+            to_state(z, y, args)
+            for i in range(n):
+                yp[i] = cj * y[i] + b[i]
+            residual(t, y, yp, F, args)
+            counts[RESIDUALS] += 1
+            for i in range(n):
+                if not np.isfinite(F[i]):
+                    finite = False
+                    break
+        size, switched = np.inf, 0
+        if finite:
+            size, switched = _chord(norm, args, lu, z, F, dz, scale, err_idx, err_w)
+        if not again:
+            state[ITERS] = it + 1
+            counts[ITERATIONS] += 1
+            if it > 0 and size > prev and lam > 1.0 / 16.0:  # damp the last update
+                counts[DAMPED] += 1
+                lam *= 0.5
+                for i in range(n):
+                    z[i] = z_base[i] - lam * d_base[i]
+                it += 1
+                continue
+            slow = it > 0 and size > RATE_REFRESH * prev
+            if (1.0 < size < np.inf and refreshed < MAX_REFRESH
+                    and (slow or (switched > 0 and _switch_pays(size, size / prev if it > 0 else state[RATE],
+                                                                switched, state[REFRESH_COST])))):
+                refreshed += 1
+                fresh = it
+                counts[J_SWITCH if switched > 0 else J_RATE] += 1
+                counts[SWITCHED] += switched
+                factor = again = True  # F is the residual at z: solved again on the new factorisation
+                continue
+        again = False
         if not np.isfinite(size):
             state[REFRESH] = 1.0
             return 1
@@ -250,6 +260,7 @@ def newton_step(residual, jacobian, norm, to_state, from_state, args, t, cj, b, 
             return 0
         prev = size
         lam = 1.0
+        it += 1
     state[REFRESH] = 1.0
     return 1
 
