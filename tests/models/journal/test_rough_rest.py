@@ -74,3 +74,53 @@ def test_smooth_bearing_at_rest_is_refused():
     b = JournalBearing(**rho_kim.BEARING, grid=(24, 4))
     with pytest.raises(ValueError, match="speed_rpm"):
         b.equilibrium(1000.0, 0.0)
+
+
+def rho_kim_rough():
+    r = Roughness(steel_asperity_contact(1e-6), gamma=3.0, boundary_friction=0.12, journal_variance_share=0.8)
+    return JournalBearing(**rho_kim.BEARING, grid=(24, 4), roughness=r)
+
+
+RUN_UP = ((0.0, 0.0), (0.5, 600.0))  # [s, rpm] from rest to 600 rpm in 0.5 s
+RECORD = ("shaft_speed", "friction_torque", "min_film", "contact_load")
+
+
+@pytest.mark.slow  # about 10 s of CPU on an idle machine (30 s on a busy one)
+def test_orbit_run_up_from_rest():
+    """A 500 kg rotor under 5 kN on the rough Rho & Kim bearing, its speed law from 0 rpm and no start given: the
+    run starts at the static contact equilibrium (the asperities carry the load, the torque is the boundary
+    friction), passes through contact and lifts off (contact begins at rest and ends), with no NaN."""
+    b = rho_kim_rough()
+    o = JournalOrbit(b, 500.0, 0.0, 5000.0, 600.0, speed_profile=RUN_UP)
+    rest = quiet(b.equilibrium, 5000.0, 0.0)
+    r = quiet(o.run, 6.5, integration=Integration(method="bdf2"),  # 0.65 s: revolutions at the reference speed
+              recording=Recording(outputs_per_revolution=10, record=RECORD))
+    assert r.success and np.all(np.isfinite(r.x)) and np.all(np.isfinite(r.friction_torque))
+    assert r.shaft_speed[0] == 0.0 and r.shaft_speed[-1] == pytest.approx(600.0)
+    assert r.contact_load[0] == pytest.approx(rest.contact_load, rel=1e-9)
+    assert r.friction_torque[0] == pytest.approx(rest.friction_torque, rel=1e-9)
+    assert [w for _, w in r.contact_events] == ["begins", "ends"] and r.contact_events[0][0] == 0.0
+    assert r.contact_load[-1] < 1e-3 * 5000.0 and r.friction_torque[-1] < 0.05 * r.friction_torque[0]
+
+
+@pytest.mark.slow  # about 8 s of CPU on an idle machine (25 s on a busy one)
+def test_rotor_run_up_from_rest():
+    """The same rotor as a one-node rotor system (IDA): the run from 0 rpm starts at the static contact
+    equilibrium, the bearing's at rest, and lifts off; a rotor on a smooth bearing at 0 rpm is refused."""
+    b = rho_kim_rough()
+    rotor = Rotor(mass=500.0 * np.eye(2), stiffness=np.zeros((2, 2)), nodes=[0])
+    s = RotorBearingSystem(rotor, {0: b}, unbalance=[(0, 0.0, 0.0)], gravity=10.0)
+    rest = quiet(b.equilibrium, 5000.0, 0.0)
+    r = quiet(s.run, 4.0, speed_profile=RUN_UP, integration=Integration(method="ida"),
+              recording=Recording(outputs_per_revolution=10))
+    assert r.success
+    x, y = r.position(0)
+    assert np.hypot(x[0] - rest.position[0], y[0] - rest.position[1]) < 1e-9 * b.clearance
+    load = np.ravel(r.contact_load)
+    assert load[0] == pytest.approx(rest.contact_load, rel=1e-9) and load[-1] < 1e-3 * 5000.0
+    assert [w for _, _, w in r.contact_events] == ["begins", "ends"]
+    assert np.all(np.isfinite(x)) and np.all(np.isfinite(np.ravel(r.friction_torque)))
+    smooth = RotorBearingSystem(rotor, {0: JournalBearing(**rho_kim.BEARING, grid=(24, 4))},
+                                unbalance=[(0, 0.0, 0.0)], gravity=10.0)
+    with pytest.raises(ValueError, match="rest"):
+        smooth.run(1.0, speed_profile=RUN_UP)
