@@ -160,6 +160,25 @@ def test_elastic_rig_meets_the_goals_on_a_coarse_grid():
     assert curve.test.h_min[0] == pytest.approx(0.7e-6, rel=0.1)
 
 
+BARUS_ELASTIC = tuple(sander.roughness(pressure_viscosity=sander.PRESSURE_VISCOSITY,
+                                       bore_compliance=e.bore_compliance) for e in ELASTIC)
+
+
+@pytest.mark.slow  # 2 x 2 Stribeck curves of 2 speeds on 48 x 8 cells in Winkler bores: about 10 s of CPU
+def test_pressure_viscosity_and_elastic_bore_together_on_a_coarse_grid():
+    """48 x 8 cells, 8 kN, the hydrodynamic branch with Barus oil in Winkler bores: both options in one film (the
+    Jacobian of each is checked in test_rough_bore.py); within 10 % of the measured torque (-2 %, -3 %), and above
+    the isoviscous bores' (the viscosity rises with the film pressure: +2 % at 3000 rpm, +1 % at 1000)."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", UserWarning)
+        both = rig_curve(8000.0, [1000.0, 3000.0], (48, 8), *BARUS_ELASTIC)
+        bore = rig_curve(8000.0, [1000.0, 3000.0], (48, 8), *ELASTIC)
+    dev = deviations(both)
+    for n in (1000.0, 3000.0):
+        assert abs(dev[n][2]) < 0.10, (n, dev[n])
+    assert np.all(both.torque > bore.torque)
+
+
 @pytest.mark.slow  # 4 Stribeck curves of 13 speeds on 151 x 21 cells: about 2 min of CPU
 def test_sander_rig_on_the_fine_grid():
     """151 x 21 cells, summits as transcribed (docs/validation.md): the hydrodynamic branch (1000 and 3000 rpm)
