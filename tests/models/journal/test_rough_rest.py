@@ -43,6 +43,8 @@ def test_rest_equilibrium_is_the_greenwood_tripp_balance():
     assert abs(s.attitude_angle_deg) < 1e-6
     assert greenwood_tripp_load(b, s.eccentricity_ratio) == pytest.approx(LOAD, rel=1e-3)
     assert s.friction_torque == pytest.approx(0.02 * b.radius * s.contact_normal_load, rel=1e-12)
+    assert s.friction_coefficient == pytest.approx(s.friction_torque / (b.radius * LOAD), rel=1e-12)
+    assert s.power_loss == 0.0
     assert s.contact_normal_load >= LOAD
 
 

@@ -23,6 +23,7 @@ from transient.models.journal.film import wall_friction
 
 TOL = 1e-10  # force residual relative to the load
 MAX_NEWTON = 40
+EXACT = 1e-14  # a film residual this small (relative to |u|) is the rounding of a solution
 
 
 def rest_film(bearing, unit_rpm):
@@ -33,10 +34,15 @@ def rest_film(bearing, unit_rpm):
 
 
 def _film_at(film, X, Y, u):
-    """The film's steady state at rest at (X, Y) from ``u`` (default: full at the highest feed pressure)."""
+    """The film's steady state at rest at (X, Y) from ``u`` (default: full at the highest feed pressure); ``u`` as it
+    is if it solves the film equations already (feeds and ends at one pressure: the uniform film, exactly)."""
     if u is None:
         sc = film.scales
         u = np.full(film.n, max(sc.u_ambient, float(np.max(sc.u_supply, initial=0.0))))
+        u[~film.op.free] = sc.u_supply
+    r = film.residual(u, X, Y)
+    if float(np.max(np.abs(r[film.op.free]), initial=0.0)) <= EXACT * max(1.0, float(np.max(np.abs(u)))):
+        return u, 0
     return film.solve(X, Y, u0=u)
 
 
@@ -87,7 +93,8 @@ def rest_state(film, u, X, Y, iterations=0):
     drag, bush = wall_friction(_Still(film), s.film_thickness, s.pressure_gradient, s.axial_pressure_gradient,
                                s.film_content, None if film.alpha_p0 == 0.0 else film.viscosity_factor)
     R = film.scales.radius
-    return dataclasses.replace(s, speed_rpm=0.0, sliding_speed=0.0, friction_force=drag, bearing_friction_force=bush,
+    return dataclasses.replace(s, speed_rpm=0.0, sliding_speed=0.0, rest_radius=R, friction_force=drag,
+                               bearing_friction_force=bush,
                                friction_torque=R * (drag + film.roughness.boundary_friction * s.contact_normal_load))
 
 
