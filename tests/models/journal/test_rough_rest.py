@@ -8,7 +8,14 @@ import numpy as np
 import pytest
 from scipy.integrate import quad
 
-from transient import Integration, JournalBearing, JournalOrbit, Recording, Roughness, steel_asperity_contact
+from transient import (
+    Integration,
+    JournalBearing,
+    JournalOrbit,
+    Recording,
+    Roughness,
+    steel_asperity_contact,
+)
 from transient.models.rotor import Rotor, RotorBearingSystem
 from transient.params import rho_kim, sander
 
@@ -26,7 +33,7 @@ def greenwood_tripp_load(bearing, eps):
     ``L R int p_a(C (1 - eps cos t)) cos t dt`` over the circumference, by adaptive quadrature of the exact
     Greenwood-Tripp pressure (``AsperityContact.load``), not the film's table."""
     c, C = bearing.roughness.contact, bearing.clearance
-    f = lambda t: float(c.load(C * (1.0 - eps * np.cos(t)))) * np.cos(t)  # noqa: E731
+    f = lambda t: float(c.load(C * (1.0 - eps * np.cos(t)))) * np.cos(t)
     return bearing.length * bearing.radius * quad(f, -np.pi, np.pi, points=[0.0], limit=400, epsrel=1e-12)[0]
 
 
