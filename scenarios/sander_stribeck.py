@@ -8,9 +8,10 @@ summits and Patir-Cheng flow factors as transcribed in MBDyn's test (transient.p
 Stribeck curves of the test bearing and of one support (half the load) from 4000 rpm down, the shaft torque their
 sum with both supports; beside it the measured torque and MBDyn's elastic model at 8 kN. The same with the summits'
 mean plane on the surfaces' (delta = 0) as the sensitivity to the contact's offset, with the oil's
-pressure-viscosity (Barus, 9.5e-9 1/Pa) in the films, and with Winkler bores of the housings' Lame compliance
-(transient.params.sander.bore_compliance). --quick: 48 x 8 and 12 speeds; else 151 x 21 and 26 speeds (the measured
-ones among them). Writes DIR/sander_stribeck.png, _delta0.png, _barus.png, _elastic.png and .json.
+pressure-viscosity (Barus, 9.5e-9 1/Pa) in the films, with Winkler bores of the housings' Lame compliance
+(transient.params.sander.bore_compliance), and with both. --quick: 48 x 8 and 12 speeds; else 151 x 21 and 26
+speeds (the measured ones among them). Writes DIR/sander_stribeck.png, _delta0.png, _barus.png, _elastic.png,
+_barus_elastic.png and .json.
 """
 
 from __future__ import annotations
@@ -54,7 +55,9 @@ def main(argv=None):
                sander.roughness(bore_compliance=sander.bore_compliance(sander.SUPPORT, sander.SUPPORT_HOUSING)))
     variants = (("transcribed", (None, None)), ("delta0", (sander.roughness(summit_height=0.0), None)),
                 ("barus", (sander.roughness(pressure_viscosity=sander.PRESSURE_VISCOSITY), None)),
-                ("elastic", elastic))
+                ("elastic", elastic),
+                ("barus_elastic", tuple(sander.roughness(pressure_viscosity=sander.PRESSURE_VISCOSITY,
+                                                         bore_compliance=e.bore_compliance) for e in elastic)))
     for label, (surface, support_surface) in variants:
         for load in sander.LOADS:
             c0 = time.process_time()
@@ -79,7 +82,8 @@ def main(argv=None):
     titles = {"transcribed": "rigid isoviscous bearings, summit offset 0.6 um (transcribed)",
               "delta0": "rigid isoviscous bearings, summit offset 0",
               "barus": "rigid bearings, Barus oil (9.5e-9 1/Pa), summit offset 0.6 um",
-              "elastic": "Winkler bores (Lame: 5.3e-13, 2.5e-13 m/Pa), isoviscous, summit offset 0.6 um"}
+              "elastic": "Winkler bores (Lame: 5.3e-13, 2.5e-13 m/Pa), isoviscous, summit offset 0.6 um",
+              "barus_elastic": "Winkler bores (Lame), Barus oil (9.5e-9 1/Pa), summit offset 0.6 um"}
     for label in titles:
         name = "sander_stribeck.png" if label == "transcribed" else f"sander_stribeck_{label}.png"
         title = f"Sander et al. 2016 rig: {titles[label]}, grid {grid[0]} x {grid[1]}"

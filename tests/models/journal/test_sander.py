@@ -160,6 +160,25 @@ def test_elastic_rig_meets_the_goals_on_a_coarse_grid():
     assert curve.test.h_min[0] == pytest.approx(0.7e-6, rel=0.1)
 
 
+BARUS_ELASTIC = tuple(sander.roughness(pressure_viscosity=sander.PRESSURE_VISCOSITY,
+                                       bore_compliance=e.bore_compliance) for e in ELASTIC)
+
+
+@pytest.mark.slow  # 2 x 2 Stribeck curves of 2 speeds on 48 x 8 cells in Winkler bores: about 10 s of CPU
+def test_pressure_viscosity_and_elastic_bore_together_on_a_coarse_grid():
+    """48 x 8 cells, 8 kN, the hydrodynamic branch with Barus oil in Winkler bores: both options in one film (the
+    Jacobian of each is checked in test_rough_bore.py); within 10 % of the measured torque (-2 %, -3 %), and above
+    the isoviscous bores' (the viscosity rises with the film pressure: +2 % at 3000 rpm, +1 % at 1000)."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", UserWarning)
+        both = rig_curve(8000.0, [1000.0, 3000.0], (48, 8), *BARUS_ELASTIC)
+        bore = rig_curve(8000.0, [1000.0, 3000.0], (48, 8), *ELASTIC)
+    dev = deviations(both)
+    for n in (1000.0, 3000.0):
+        assert abs(dev[n][2]) < 0.10, (n, dev[n])
+    assert np.all(both.torque > bore.torque)
+
+
 @pytest.mark.slow  # 4 Stribeck curves of 13 speeds on 151 x 21 cells: about 2 min of CPU
 def test_sander_rig_on_the_fine_grid():
     """151 x 21 cells, summits as transcribed (docs/validation.md): the hydrodynamic branch (1000 and 3000 rpm)
@@ -188,6 +207,25 @@ def test_elastic_rig_on_the_medium_grid():
         with warnings.catch_warnings():
             warnings.simplefilter("ignore", UserWarning)
             curve = rig_curve(load, speeds, (75, 11), *ELASTIC)
+        dev = deviations(curve)
+        for n in (1000.0, 3000.0):
+            assert abs(dev[n][2]) < tol, (load, n, dev[n])
+        for n in (150.0, 250.0, 300.0, 400.0, 500.0):
+            assert abs(dev[n][2]) < 0.40, (load, n, dev[n])
+        assert curve.minimum_speed_rpm == pytest.approx(measured_minimum(load), rel=0.1)
+
+
+@pytest.mark.slow  # 4 Stribeck curves of 11 speeds on 151 x 21 cells in Winkler bores: about 8 min of CPU
+def test_elastic_rig_on_the_fine_grid():
+    """151 x 21 cells, Winkler bores of Lame's compliance (docs/validation.md, "The Sander rig's hydrodynamic
+    branch"): the least torque within 10 % of the measured speed (315 against 340 rpm, 535 against 550 rpm); the
+    mixed branch (150 to 500 rpm) within 40 % (-28 % to +3 %); the hydrodynamic branch within 10 % at 8 kN (-5 %,
+    -5 %); at 4 kN the goal is not met (-10 %, -15 %), checked at 20 % so that a change is seen."""
+    speeds = [150.0, 200.0, 250.0, 300.0, 400.0, 500.0, 700.0, 1000.0, 1500.0, 2000.0, 3000.0]
+    for load, tol in ((8000.0, 0.10), (4000.0, 0.20)):
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", UserWarning)
+            curve = rig_curve(load, speeds, (151, 21), *ELASTIC)
         dev = deviations(curve)
         for n in (1000.0, 3000.0):
             assert abs(dev[n][2]) < tol, (load, n, dev[n])

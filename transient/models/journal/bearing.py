@@ -30,7 +30,7 @@ from transient.models.journal.roughness import Roughness
 from transient.models.journal.scales import film_scales
 from transient.models.journal.tilt import (check_open, check_tilt, edge_eccentricities, half_length, sensitivity,
                                            si_coefficients, tilt_groups)
-from transient.models.journal import thd
+from transient.models.journal import rest, thd
 from transient.models.journal.thermal_settings import ThermalFilm
 from transient.models.journal.viscous_film import ViscousFilm
 from transient.units import rpm_to_rad_s as omega  # the journal's name for it (public: models.journal.omega)
@@ -47,6 +47,7 @@ from transient.models.journal.results import FilmState  # noqa: F401 (its home w
 SPEED_RANGE_RPM = (1e-3, 1e6)
 #: Largest e/C an equilibrium iterate of a rough bearing with a Winkler bore may take (the bore's give included).
 ELASTIC_REACH = 1.5
+REST_UNIT_RPM = 1.0  # [rpm] the pressure unit of a rough film at rest (its journal does not turn)
 ELASTIC_STEP = 0.05  # [C] the longest equilibrium step of a rough bearing with a Winkler bore
 #: A rough bearing's equilibrium by continuation in speed (:meth:`JournalBearing._continued_equilibrium`) starts at
 #: this multiple of the speed, and at least at ``CONTINUATION_START_RPM`` [rpm].
@@ -473,7 +474,15 @@ class JournalBearing:
     def equilibrium(self, load, speed_rpm, tol=1e-10, max_iter=40, tilt=(0.0, 0.0)) -> FilmState:
         """Static equilibrium under ``load`` [N] (in +x): 2-D Newton on the journal position with the
         exact derivative of the discrete film force (implicit differentiation of the film equations). ``tilt``
-        [rad]: the journal held at this tilt (the force balances the load; the moment is what it is)."""
+        [rad]: the journal held at this tilt (the force balances the load; the moment is what it is). A rough
+        bearing at ``speed_rpm = 0``: the static contact equilibrium at rest (:mod:`~transient.models.journal.rest`:
+        the asperities and the feeds' pressure field carry the load)."""
+        if self.roughness is not None and speed_rpm == 0:
+            W = check_positive("load", load, "N")
+            self._check_tilt(tilt, 0.0, 0.0)
+            self._check_supplied()
+            f, u, q, it = rest.rest_equilibrium(self, W, REST_UNIT_RPM)
+            return rest.rest_state(f, u, q[0], q[1], it)
         b = self.tilted(check_tilt("tilt", tilt))
         f, u, q, it, _ = b._equilibrium(load, speed_rpm, tol, max_iter, tilt=tilt)
         if self.thermal is not None:

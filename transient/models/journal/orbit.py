@@ -36,6 +36,7 @@ import numpy as np
 from transient.checks import ATOL_FLOOR, ATOL_WHY, check_choice, check_memory, check_positive, check_range
 from transient.compile_notice import announce
 from transient.models.journal.bearing import GRID_ADVICE, SPEED_RANGE_RPM, JournalBearing, check_speed
+from transient.models.journal.rest import rest_equilibrium
 from transient.models.journal.film import read_only
 from transient.models.journal.flows import film_flows
 from transient.models.journal.driven_film import driven_newton, driven_residual
@@ -243,13 +244,17 @@ class JournalOrbit:
         return y0
 
     def rest_state(self) -> np.ndarray:
-        """Film and journal at rest under ``load`` (a rough bearing's start-up from rest): the steady equilibrium at
-        the lowest speed (``SPEED_RANGE_RPM[0]``, where the asperities carry the load and the film is at the feed
-        pressures), its film content carried over into this orbit's units, the journal at rest."""
+        """Film and journal at rest under ``load`` (a rough bearing's start-up from rest): the static contact
+        equilibrium at 0 rpm (:mod:`~transient.models.journal.rest`: the asperities carry the load, the film is at
+        the feed pressures), in this orbit's pressure unit, the journal still."""
         if self.rough is None:
             raise ValueError("rest_state with roughness = None: a smooth journal at rest sits on the bush, which only "
                              "a rough bearing's asperities carry; allowed: a JournalBearing with roughness=Roughness(...)")
-        return self._content_start(SPEED_RANGE_RPM[0])
+        _, u, q, _ = rest_equilibrium(self.bearing, self.load, self.speed_rpm)
+        y0 = np.zeros(self.n)
+        y0[:self.film.n] = u
+        y0[self.film.n:self.film.n + 2] = q
+        return y0
 
     def linear_start(self) -> np.ndarray:
         """State at t = 0 on the linearised unbalance response (position and velocity from K and C, the

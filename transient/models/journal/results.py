@@ -36,7 +36,9 @@ class FilmState(SteadyResult):
     Rough bearings (``JournalBearing(roughness=...)``): ``force`` is the film's and the asperities' force together
     (what carries the load), ``contact_force`` [N] the asperities' part and ``contact_load`` [N] its magnitude,
     ``contact_normal_load`` [N] the sum of the asperity pressure over the surface (what the boundary friction
-    acts on), ``contact_pressure`` [Pa] the nominal asperity pressure per cell (Greenwood-Tripp).
+    acts on), ``contact_pressure`` [Pa] the nominal asperity pressure per cell (Greenwood-Tripp). At rest
+    (``equilibrium(load, 0)``, :mod:`~transient.models.journal.rest`): ``speed_rpm`` 0, ``friction_torque`` the
+    torque that starts the shaft, ``rest_radius`` [m] the journal's radius.
 
     Flows (:mod:`transient.models.journal.flows`), whole bearing: ``supply_flow`` [m^3/s] the net flow each feed
     delivers, ``feed_inflow`` [m^3/s] the flow each feed sends into the film, ``side_leakage`` [m^3/s] the outflow
@@ -88,6 +90,8 @@ class FilmState(SteadyResult):
     contact_force: tuple[float, float] = quantity("N", (0.0, 0.0))
     contact_load: float = quantity("N", 0.0)
     contact_normal_load: float = quantity("N", 0.0)
+    #: the journal's radius [m] where the speed cannot give it (a rough bearing at rest), else NaN
+    rest_radius: float = quantity("m", float("nan"))
     contact_pressure: np.ndarray | None = quantity("Pa", None, repr=False)
     moment: tuple[float, float] = quantity("N m", (0.0, 0.0))
     tilt: tuple[float, float] = quantity("rad", (0.0, 0.0))
@@ -122,8 +126,9 @@ class FilmState(SteadyResult):
 
     @property
     def friction_coefficient(self) -> float:
-        """``friction_torque / (R load)`` [-] (R from ``sliding_speed`` and the speed)."""
-        radius = self.sliding_speed / (self.speed_rpm * np.pi / 30.0)
+        """``friction_torque / (R load)`` [-] (R from ``sliding_speed`` and the speed; at rest ``rest_radius``)."""
+        w = self.speed_rpm * np.pi / 30.0
+        radius = self.sliding_speed / w if w != 0.0 else self.rest_radius
         return self.friction_torque / (radius * self.load)
 
     def _law(self):

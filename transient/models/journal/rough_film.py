@@ -89,6 +89,8 @@ class RoughFilm(Film):
         self.dH_dq = np.ones(n)  # d H / d(X, Y) over (cos, sin): 1 / (1 - kappa p_a'(H) / p0)
         self.dcx_du = np.zeros(n)
         self.coefficients = None
+        #: the Couette flux's share of the film speed's (1; 0: the journal at rest, :mod:`~.rest`)
+        self.couette = 1.0
 
     def _fields(self, u, X, Y):
         """The smooth fields of ``u`` (P, theta, ...), then the average-flow coefficients in place of k and c."""
@@ -96,6 +98,8 @@ class RoughFilm(Film):
         if self.kappa != 0.0:
             self._elastic_gap()
         rc = rough_coefficients(self.H, self.roughness, self.scales.clearance)
+        if self.couette != 1.0:  # the journal at rest: no Couette flux, nor its slopes
+            rc = rc._replace(cx=rc.cx * self.couette, dcx=rc.dcx * self.couette)
         self.c[:] = rc.cx
         self.coefficients = rc
         if self.alpha_p0 == 0.0 and self.kappa == 0.0:

@@ -35,6 +35,7 @@ from transient.checks import (check_bool, check_choice, check_instance, check_in
 from transient.models.journal.bearing import (FILM_BYTES_PER_CELL, GRID_ADVICE, SPEED_RANGE_RPM, JournalBearing,
                                               NoEquilibriumError, bearing_memory, check_speed)
 from transient.compile_notice import announce
+from transient.models.journal.rest import rest_equilibrium
 from transient.models.journal.film import read_only
 from transient.models.journal.kernels import film_force
 from transient.models.journal.tilt import sensitivity, si_coefficients
@@ -295,7 +296,11 @@ class RotorBearingSystem:
                 continue
             if load < 1e-12 * max(1.0, np.abs(rhs).max()):
                 X = Y = 0.0
-                u = None
+                u, _ = blk.film.solve(X, Y)
+            elif s == 0.0 and b.roughness is not None:  # at rest: the bearing's static contact equilibrium
+                _, u, (X0, Y0), _ = rest_equilibrium(b, load, dae.speed_ref_rpm)  # in the films' pressure unit
+                a = np.arctan2(W[1], W[0])
+                X, Y = X0 * np.cos(a) - Y0 * np.sin(a), X0 * np.sin(a) + Y0 * np.cos(a)
             else:
                 try:
                     e = equilibria[node] if equilibria and node in equilibria else b.equilibrium(load, speed)
@@ -308,7 +313,7 @@ class RotorBearingSystem:
                 X0, Y0 = e.position[0] / b.clearance, e.position[1] / b.clearance
                 X, Y = X0 * np.cos(a) - Y0 * np.sin(a), X0 * np.sin(a) + Y0 * np.cos(a)
                 u = e.u
-            u, _ = blk.film.solve(X, Y, u0=u if s == 1.0 else None)  # e.u is in p0 units of its own speed
+                u, _ = blk.film.solve(X, Y, u0=u if s == 1.0 else None)  # e.u is in p0 units of its own speed
             y[blk.offset:blk.offset + blk.n] = u
             T = r.translation(node)
             rhs = rhs + ks * T.T @ (np.array([X, Y]) * b.clearance)
@@ -660,9 +665,10 @@ class RotorBearingSystem:
         s0 = speed(t0 * w)[0]
         states = {}
         if y is None:
-            if s0 <= 0:
-                raise ValueError(f"speed_rpm(t = {t0:g} s) = {s0 * ref:g} [rpm]: a film carries no load at rest; "
-                                 "allowed: > 0 (start a run-up from a low speed)")
+            if s0 <= 0 and not all(b.roughness is not None for b in self.bearings.values()):
+                raise ValueError(f"speed_rpm(t = {t0:g} s) = {s0 * ref:g} [rpm]: a smooth film carries no load at "
+                                 "rest; allowed: > 0 (start a run-up from a low speed), or rough bearings throughout "
+                                 "(the static contact equilibrium at rest)")
             y, states = thermal_films.thermal_start(self, dae, s0) if thermal else (self._steady(dae, s0), {})
         elif thermal and temperature is None and getattr(start, "final_temperature", None) is None:
             states = thermal_films.thermal_states(self, thermal_films.bearing_equilibria(self, dae, s0 * ref)[0])
