@@ -20,9 +20,10 @@ from __future__ import annotations
 
 import numpy as np
 
-from transient.models.roller.grid import TensorGrid
+from transient.models.ehl.complementarity import SYMMETRIC_KINK, fb_gradient, fb_value
 from transient.models.ehl.rows import ALL_SLOTS, N_SLOTS, rows_kernel
-from transient.models.roller.kernels import assemble_dense, fischer_burmeister, penalty
+from transient.models.roller.grid import TensorGrid
+from transient.models.roller.kernels import assemble_dense, penalty
 from transient.physics.elasticity import RowConvolution, SurfaceConvolution, line_influence, surface_influence
 from transient.physics.lubricant import Lubricant
 from transient.solvers.newton import NewtonSettings, newton
@@ -209,9 +210,11 @@ class EHLFilm:
 
     def complementarity(self, p, b, out) -> None:
         """``out = phi(p, b)`` and its derivatives into ``fb_a``, ``fb_b``: Fischer-Burmeister, or the
-        penalty form when ``self.penalty`` is set (:mod:`transient.models.roller.kernels`)."""
+        penalty form when ``self.penalty`` is set (:mod:`transient.models.roller.kernels`); the Fischer-Burmeister
+        gradient's element at the kink is the symmetric one (:mod:`transient.models.ehl.complementarity`)."""
         if self.penalty is None:
-            fischer_burmeister(p, b, out, self.fb_a, self.fb_b)
+            out[:], rad = fb_value(p, b)
+            self.fb_a[:], self.fb_b[:] = fb_gradient(p, b, rad, SYMMETRIC_KINK)
         else:
             penalty(p, b, out, self.fb_a, self.fb_b, self.penalty)
 

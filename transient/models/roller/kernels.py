@@ -3,8 +3,9 @@
 
 Reynolds exit condition (P = dP/dn = 0 at the free boundary) as the complementarity problem
 ``p >= 0, -F >= 0, p F = 0``, written as the Fischer-Burmeister equation
-``phi(p, -F) = p - F - sqrt(p^2 + F^2) = 0`` and solved by a semismooth Newton, or (the transient) in
-penalty form ``-F + gamma min(p, 0) = 0`` (smoothed), whose error is O(1/gamma).
+``phi(p, -F) = p - F - sqrt(p^2 + F^2) = 0`` (:mod:`transient.models.ehl.complementarity`) and solved by a
+semismooth Newton, or (the transient) in penalty form ``-F + gamma min(p, 0) = 0`` (smoothed, :func:`penalty`),
+whose error is O(1/gamma).
 """
 
 from __future__ import annotations
@@ -15,20 +16,6 @@ from numba import njit
 
 from transient.models.ehl.reduced import reynolds_row
 from transient.models.ehl.rows import N_SLOTS  # noqa: F401  (the slot count, re-exported for the roller's modules)
-
-
-@njit(cache=True, error_model="numpy")
-def fischer_burmeister(a, b, phi, da, db):
-    """``phi = a + b - sqrt(a^2 + b^2)`` and a generalised gradient (``da``, ``db``) per entry."""
-    for k in range(a.size):
-        r = math.sqrt(a[k] * a[k] + b[k] * b[k])
-        phi[k] = a[k] + b[k] - r
-        if r > 0.0:
-            da[k] = 1.0 - a[k] / r
-            db[k] = 1.0 - b[k] / r
-        else:
-            da[k] = 1.0 - 1.0 / math.sqrt(2.0)
-            db[k] = da[k]
 
 
 @njit(cache=True, error_model="numpy")

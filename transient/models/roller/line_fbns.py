@@ -19,8 +19,10 @@ problems could differ only in the node where the film ruptures (on every chart p
 otherwise). This form's Fischer-Burmeister pair is linear in the unknowns, so Newton's steps stay
 meaningful from the Hertz pressure at any load.
 
-:class:`LineContentFilm` gives the residual pieces as :class:`transient.models.point.ehl_problem.PointFilm`
-(``equations``, ``fb_derivatives``) and the Schur matrix of its Newton step (``schur_matrix``).
+The rows are the one rows kernel's (:func:`~transient.models.ehl.rows.rows_kernel`, on one row: the
+Reynolds-condition film's, with the content). :class:`LineContentFilm` gives the residual pieces as
+:class:`transient.models.point.ehl_problem.PointFilm` (``equations``, ``fb_derivatives``) and the Schur matrix of
+its Newton step (``schur_matrix``, :func:`~transient.models.ehl.reduced.schur_rows`).
 """
 
 from __future__ import annotations
@@ -79,7 +81,7 @@ class LineContentFilm:
         dp, dh, dt = np.empty((n, N_LOCAL)), np.empty((n, N_LOCAL)), np.empty((n, N_LOCAL))
         nf = self.nf
         rows_kernel(pf.reshape(1, nf), H.reshape(1, nf), tf.reshape(1, nf), self.x, b.y_nodes, b.rs, b.lam, False,
-                    b.scheme_code, v, al, ln0, d, c1, c2, b.p_scale, True, res, scale, dp, dh, dt, self.props,
+                    b.scheme_code, v, al, ln0, d, c1, c2, b.p_scale, True, res, dp, dh, dt, scale, self.props,
                     LINE_SLOTS)
         p = u[:n]
         fb, rad = fb_residual(p, u[n: 2 * n])
