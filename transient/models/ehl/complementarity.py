@@ -51,3 +51,15 @@ def fb_derivatives(p, theta, rad):
     theta)^2)`` (the value the residual already holds); the full film's element ``(0, -1)`` at the kink."""
     d_p, d_b = fb_gradient(p, 1.0 - theta, rad, FULL_FILM_KINK)
     return d_p, -d_b
+
+
+class CavitationRows:
+    """The Fischer-Burmeister rows' gradient of a film-content film (the point's, the line's and the roller's), for
+    :func:`~transient.models.ehl.newton.fbns_newton`: unknowns ``u = [p (n), theta (n), h0]``, ``e["rad"]`` from
+    :func:`fb_residual` in the film's ``equations``."""
+
+    n: int
+
+    def fb_derivatives(self, u, e):
+        """``(dFB/dp, dFB/dtheta)`` per node (:func:`fb_derivatives`)."""
+        return fb_derivatives(u[: self.n], u[self.n: 2 * self.n], e["rad"])

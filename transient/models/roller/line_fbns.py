@@ -30,7 +30,7 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from transient.models.ehl.complementarity import fb_derivatives, fb_residual
+from transient.models.ehl.complementarity import CavitationRows, fb_residual
 from transient.models.ehl.reduced import schur, schur_rows
 from transient.models.ehl.rows import LINE_SLOTS, rows_kernel
 from transient.models.roller.ehl_problem import EHLFilm
@@ -41,7 +41,7 @@ N_LOCAL = 4
 OFFSETS = np.array([0, -1, 1, -2])
 
 
-class LineContentFilm:
+class LineContentFilm(CavitationRows):
     """The film-content form (module docstring) of an :class:`EHLFilm` line problem; unknowns
     ``u = [p (n), theta (n), h0]``."""
 
@@ -87,10 +87,6 @@ class LineContentFilm:
         fb, rad = fb_residual(p, u[n: 2 * n])
         return dict(H=H, res=res, scale=scale, dp=dp, dh=dh, dt=dt, fb=fb, rad=rad,
                     load=self.weight @ p - load_ratio)
-
-    def fb_derivatives(self, u, e):
-        """``(dFB/dp, dFB/dtheta)`` per node (:func:`~transient.models.ehl.complementarity.fb_derivatives`)."""
-        return fb_derivatives(u[: self.n], u[self.n: 2 * self.n], e["rad"])
 
     def schur_matrix(self, e, b_p, b_t) -> np.ndarray:
         """Dense ``S = [[J_p diag(b_p) + J_theta diag(b_t), dR/dh0], [load row diag(b_p), 0]]``: the Newton

@@ -31,7 +31,7 @@ import numpy as np
 from numba import njit
 
 from transient.checks import check_memory
-from transient.models.ehl.complementarity import fb_derivatives, fb_residual
+from transient.models.ehl.complementarity import CavitationRows, fb_residual
 from transient.models.ehl.reduced import schur_rows
 from transient.models.roller.ehl_problem import EHLFilm
 from transient.models.roller.grid import TensorGrid
@@ -41,7 +41,7 @@ from transient.models.roller.roller_lines import LineBlocks
 from transient.solvers.newton import NewtonError
 
 
-class RollerContentFilm:
+class RollerContentFilm(CavitationRows):
     """The film-content form (module docstring) of a 2-D :class:`EHLFilm`; unknowns ``u = [p (n), theta (n),
     h0]``, interior nodes x fastest. The Schur matrix needs the dense influence matrix: a uniform grid's
     DC-FFT film gets it built (``K``, ``n_full x n`` doubles)."""
@@ -93,10 +93,6 @@ class RollerContentFilm:
         fb, rad = fb_residual(p, u[self.n: 2 * self.n])
         return dict(H=H, res=b.F.copy(), scale=b.scale.copy(), dp=b.Sp.copy(), dh=b.Sh.copy(), dt=b.St.copy(),
                     fb=fb, rad=rad, load=self.weight @ p - load_ratio)
-
-    def fb_derivatives(self, u, e):
-        """``(dFB/dp, dFB/dtheta)`` per node (:func:`~transient.models.ehl.complementarity.fb_derivatives`)."""
-        return fb_derivatives(u[: self.n], u[self.n: 2 * self.n], e["rad"])
 
     def schur_matrix(self, e, b_p, b_t) -> np.ndarray:
         """Dense ``(n + 1)`` Schur matrix of the Newton step after ``dp = b_p z``, ``dtheta = b_t z``
