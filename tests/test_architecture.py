@@ -150,6 +150,20 @@ def test_ehl_films_iterate_on_the_engines_one_newton():
     assert armijo == ["models/ehl/newton.py"]
 
 
+def test_line_and_roller_films_take_their_rows_and_schur_matrix_from_the_engine():
+    """The line's and the roller's films (Reynolds-condition and film-content forms) compute their rows with
+    ``models/ehl/rows.py``'s one kernel and build their Schur matrix with ``models/ehl/reduced.py``'s; the rows'
+    Poiseuille face conductance is written in that kernel only among the line's and the roller's modules."""
+    edges, _ = _module_imports()
+    for module in ("roller.ehl_problem", "roller.line_fbns"):
+        assert (f"transient.models.{module}", "transient.models.ehl.rows") in edges, module
+    for module in ("roller.line_fbns", "roller.roller_fbns"):
+        assert (f"transient.models.{module}", "transient.models.ehl.reduced") in edges, module
+    face = sorted(str(p.relative_to(PKG)) for p in (PKG / "models").rglob("*.py")
+                  if p.parent.name in ("ehl", "roller") and "0.5 * (eps[" in p.read_text())
+    assert face == ["models/ehl/rows.py"]
+
+
 def test_the_circle_finder_finds_a_circle(tmp_path, monkeypatch):
     """The rule above can fail: two modules importing each other (one inside a function) are a circle."""
     pkg = tmp_path / "transient" / "models" / "toy"

@@ -16,7 +16,7 @@ import sys
 FAMILIES = {
     "journal": ("transient.models.journal.kernels", "dae_residual", 10),
     "ball": ("transient.models.ball.front", "front_kernel", 5),
-    "roller": ("transient.models.roller.kernels", "reynolds_kernel", 5),
+    "roller": ("transient.models.ehl.rows", "rows_kernel", 5),
     "layered": ("transient.physics.layered", "gecim_face_2d", 25),
     "bdf2": ("transient.models.journal.content_newton", "bdf2_newton", 30),
     "rotor_bdf2": ("transient.models.rotor.content_newton", "rotor_newton", 30),

@@ -1,7 +1,7 @@
 """The slope limiter of the EHL films' second-order upwind Couette flux (line, roller and point contacts): van
 Albada's ``s(a, b) = a b (a + b)/(a^2 + b^2)`` where ``a b > 0``, else 0 (van Albada, van Leer & Roberts, *Astron.
 Astrophys.* 108, 1982); second order where the mass flux is smooth, first order at its extrema (the flux law in
-:mod:`transient.models.roller.kernels`)."""
+:mod:`transient.models.ehl.rows`)."""
 
 from numba import njit
 

@@ -1,10 +1,15 @@
-"""The Schur-reduced FBNS Newton system of the point film (and of the line film, :mod:`~transient.models.roller.line_newton`): the node-wise elimination of the
-Fischer-Burmeister rows and the dense reduced matrix (Woloszynski, Podsiadlo & Stachowiak, *Tribol. Lett.*
-58, 2015). Each FB row ``a dP + g dtheta = -FB`` is diagonal, so one unknown per node is eliminated; what is
-left is ``(N + 1)`` square (one unknown per node and ``dH0``), dense through the elasticity::
+"""The Schur-reduced FBNS Newton system of the EHL films: the node-wise elimination of the Fischer-Burmeister
+rows and the dense reduced matrix (Woloszynski, Podsiadlo & Stachowiak, *Tribol. Lett.* 58, 2015). Each FB row
+``a dP + g dtheta = -FB`` is diagonal, so one unknown per node is eliminated; what is left is ``(N + 1)`` square
+(one unknown per node and ``dH0``), dense through the elasticity::
 
     A = [ D_H K diag(b_P) + A_P diag(b_P) + A_theta diag(b_theta)    D_H 1 ]
         [ w^T diag(b_P)                                                0   ]
+
+Two builders of ``A``: :func:`dense_reduced` from sparse local blocks (the point film's half grid, whose mirror
+images the CSR sums) and :func:`schur_rows` from the local slots of :mod:`transient.models.ehl.rows` (the line
+and the roller). They differ in the rounding of the local pressure block: the point's adds ``(D_H K) b_P`` and
+``A_P b_P``, the slots' ``(D_H K + A_P) b_P``.
 """
 
 from __future__ import annotations
@@ -81,3 +86,49 @@ def reduced_kernel(ap_ptr, ap_idx, ap_val, dh_ptr, dh_idx, dh_val, at_ptr, at_id
     for q in range(n):
         A[n, q] = w[q] * b_p[q]
     A[n, n] = 0.0
+
+
+@njit(cache=True, error_model="numpy")
+def reynolds_row(Sp, Sh, colp, colh, K, elastic, r, row):
+    """Row ``r`` of the Reynolds rows' Newton matrix in the pressures, ``Sp + Sh K`` (``K`` not read for a rigid
+    body, ``elastic=False``), into ``row[:n]`` (zeroed first); returns its ``h0`` entry, the sum of ``Sh``."""
+    n = Sp.shape[0]
+    for q in range(n):
+        row[q] = 0.0
+    s_h0 = 0.0
+    for s in range(Sp.shape[1]):
+        ch = colh[r, s]
+        if ch >= 0:
+            v = Sh[r, s]
+            s_h0 += v
+            if elastic and v != 0.0:
+                krow = K[ch]
+                for q in range(n):
+                    row[q] += v * krow[q]
+        cp = colp[r, s]
+        if cp >= 0:
+            row[cp] += Sp[r, s]
+    return s_h0
+
+
+@njit(cache=True, error_model="numpy")
+def schur_rows(Sp, Sh, St, colp, colh, K, elastic, b_p, b_t, area_w, S):
+    """Dense Schur matrix of the film-content Newton step (the line's and the roller's content films):
+    ``S = [[(Sp + Sh K) diag(b_p) + St diag(b_t), Sh 1], [area_w diag(b_p), 0]]``, the Reynolds rows' Newton
+    matrix after the node-wise substitution ``dp = b_p z``, ``dtheta = b_t z``. ``K`` (n_full, n): film change
+    per unit interior pressure (not read for a rigid body, ``elastic=False``); ``colp`` / ``colh`` map the slots
+    to interior / full node indices (-1: none)."""
+    n = Sp.shape[0]
+    for r in range(n):
+        row = S[r]
+        s_h0 = reynolds_row(Sp, Sh, colp, colh, K, elastic, r, row)
+        for q in range(n):
+            row[q] *= b_p[q]
+        for s in range(Sp.shape[1]):
+            cp = colp[r, s]
+            if cp >= 0:
+                row[cp] += St[r, s] * b_t[cp]
+        row[n] = s_h0
+    for q in range(n):
+        S[n, q] = area_w[q] * b_p[q]
+    S[n, n] = 0.0

@@ -30,7 +30,7 @@ import scipy.sparse as sp
 
 from transient.models.point.kernels import node_properties, reynolds
 from transient.physics.elasticity import SurfaceConvolution, surface_influence
-from transient.models.ehl.complementarity import fb_derivatives, fb_residual
+from transient.models.ehl.complementarity import CavitationRows, fb_residual
 
 
 class MirroredConvolution:
@@ -59,7 +59,7 @@ class MirroredConvolution:
         return out[self.m - 1: self.conv.ny, : self.conv.nx]
 
 
-class PointFilm:
+class PointFilm(CavitationRows):
     """The discrete film on the half grid (module docstring).
 
     ``x`` (nx nodes) and ``y`` (n nodes, symmetric, odd count) in units of b; ``ratio`` = Rx/Ry;
@@ -191,10 +191,6 @@ class PointFilm:
         d_h = sp.csr_matrix((e["dh"].ravel(), (rows, self.col_h.ravel())), shape=(n, nn))
         a_t = sp.csr_matrix((e["dt"].ravel()[keep], (rows[keep], cp[keep])), shape=(n, n))
         return a_p, d_h, a_t
-
-    def fb_derivatives(self, u, e):
-        """``(dFB/dp, dFB/dtheta)`` per node (:func:`~transient.models.ehl.complementarity.fb_derivatives`)."""
-        return fb_derivatives(u[: self.n], u[self.n: 2 * self.n], e["rad"])
 
     def storage(self, e):
         """The film content ``q = rho theta H`` at the unknowns (the transient's stored mass)."""

@@ -14,7 +14,7 @@ separates, so mass is conserved exactly): first order ``F_{i+1/2} = q_i``; secon
 ``F_{i+1/2} = q_i + (q_i - q_{i-1})/2``; or that slope limited by van Albada's limiter (van Albada, van Leer &
 Roberts, *Astron. Astrophys.* 108, 1982), ``F = q_i + dx/2 s(a, b)``, ``b`` the upwind and ``a`` the downwind
 slope, ``s = a b (a + b)/(a^2 + b^2)`` where ``a b > 0``, else 0 (the roller's option,
-:mod:`transient.models.roller.kernels`). The inlet face carries ``min(H_oil, H_W)`` (the oil layer carried in;
+:mod:`transient.models.ehl.rows`). The inlet face carries ``min(H_oil, H_W)`` (the oil layer carried in;
 ``H_oil = inf`` for a flooded inlet), the face between the first two interior columns is first order, the
 outlet face linear.
 
@@ -66,7 +66,7 @@ def face_flux(scheme, qm, qc, qp, dx):
     """Couette flux ``F`` at the face downstream of the node with content ``qc`` (upstream ``qm``, downstream
     ``qp``) and ``(dF/dqm, dF/dqc, dF/dqp)``: ``scheme`` 0 first order ``F = qc``; 1 linear upwind
     ``F = qc + (qc - qm)/2``; 2 the slope limited by van Albada's limiter (module docstring; the roller's
-    :func:`~transient.models.roller.kernels.van_albada`)."""
+    :func:`~transient.models.ehl.limiter.van_albada`)."""
     if scheme == 0:
         return qc, 0.0, 1.0, 0.0
     if scheme == 1:

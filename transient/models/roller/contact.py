@@ -103,7 +103,7 @@ LOBE_FRACTION = 0.1
 #: y nodes of the default hybrid grid: the 89 of the clustered 94 x 89 law and ``LOBE_FRACTION`` of the nodes on
 #: each end's side lobe (``88 / (1 - 2 LOBE_FRACTION)`` intervals)
 HYBRID_NY = 111
-#: Couette flux of the Reynolds equation (:mod:`transient.models.roller.kernels`)
+#: Couette flux of the Reynolds equation (:mod:`transient.models.ehl.rows`)
 SCHEMES = ("auto", "upwind2", "upwind1", "limited")
 #: steady forms: the mass-conserving film content (FBNS) and the Reynolds condition
 METHODS = ("auto", "fbns", "reynolds")

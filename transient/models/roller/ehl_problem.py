@@ -20,8 +20,10 @@ from __future__ import annotations
 
 import numpy as np
 
+from transient.models.ehl.complementarity import SYMMETRIC_KINK, fb_gradient, fb_value
+from transient.models.ehl.rows import ALL_SLOTS, N_SLOTS, rows_kernel
 from transient.models.roller.grid import TensorGrid
-from transient.models.roller.kernels import N_SLOTS, assemble_dense, fischer_burmeister, penalty, reynolds_kernel
+from transient.models.roller.kernels import assemble_dense, penalty
 from transient.physics.elasticity import RowConvolution, SurfaceConvolution, line_influence, surface_influence
 from transient.physics.lubricant import Lubricant
 from transient.solvers.newton import NewtonSettings, newton
@@ -59,7 +61,7 @@ class EHLFilm:
     (influence matrix), ``"fft"`` (uniform grids: 2-D DC-FFT), ``"xfft"`` (grids uniform in x: FFT along x, dense
     along y, :class:`~transient.physics.elasticity.RowConvolution`) or ``"rigid"``; ``elastic_factor``: ``k_el``;
     ``order2``: second-order upwind Couette flux (else first order); ``limiter``: second order with van
-    Albada's limiter (:mod:`transient.models.roller.kernels`).
+    Albada's limiter (:mod:`transient.models.ehl.rows`).
     """
 
     def __init__(self, grid: TensorGrid, rigid, rs, lam: float, w_bar: float, lubricant: Lubricant, p_scale: float,
@@ -174,9 +176,9 @@ class EHLFilm:
         ``shape_full``; None: a full film, the Reynolds-condition form)."""
         v, al, ln0, d, c1, c2 = self.rheo_args
         t = self._t_ones if content is None else np.asarray(content, float).reshape(self.grid.shape_full)
-        reynolds_kernel(self.full_pressure(p), h.reshape(self.grid.shape_full), t, self.grid.x, self.y_nodes,
-                        self.rs, self.lam, self.grid.two_d, self.scheme_code, v, al, ln0, d, c1, c2, self.p_scale,
-                        jac, self.F, self.Sp, self.Sh, self.St, self.scale, self.props)
+        rows_kernel(self.full_pressure(p), h.reshape(self.grid.shape_full), t, self.grid.x, self.y_nodes, self.rs,
+                    self.lam, self.grid.two_d, self.scheme_code, v, al, ln0, d, c1, c2, self.p_scale, jac, self.F,
+                    self.Sp, self.Sh, self.St, self.scale, self.props, ALL_SLOTS)
         return self.F
 
     def set_row_scale(self, u) -> None:
@@ -208,9 +210,11 @@ class EHLFilm:
 
     def complementarity(self, p, b, out) -> None:
         """``out = phi(p, b)`` and its derivatives into ``fb_a``, ``fb_b``: Fischer-Burmeister, or the
-        penalty form when ``self.penalty`` is set (:mod:`transient.models.roller.kernels`)."""
+        penalty form when ``self.penalty`` is set (:mod:`transient.models.roller.kernels`); the Fischer-Burmeister
+        gradient's element at the kink is the symmetric one (:mod:`transient.models.ehl.complementarity`)."""
         if self.penalty is None:
-            fischer_burmeister(p, b, out, self.fb_a, self.fb_b)
+            out[:], rad = fb_value(p, b)
+            self.fb_a[:], self.fb_b[:] = fb_gradient(p, b, rad, SYMMETRIC_KINK)
         else:
             penalty(p, b, out, self.fb_a, self.fb_b, self.penalty)
 

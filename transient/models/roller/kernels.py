@@ -1,219 +1,21 @@
-"""numba kernels of the EHL film (Park): finite-volume Reynolds residual, its local Jacobian,
-Fischer-Burmeister complementarity, dense Jacobian and Schur matrix assembly.
-
-Scaled variables (see :mod:`transient.models.roller.ehl_problem`): lengths ``x, y`` in units of the contact
-half-width, pressure ``p`` in units of ``p_h``, film ``h`` in units of ``b^2/R``. Per interior node
-``I`` with control volume ``A = dx dy`` the residual is the net inflow per unit area::
-
-    F_I = { dy [e_{I+1/2} (p_{I+1} - p_I)/(x_{I+1} - x_I) - e_{I-1/2} (p_I - p_{I-1})/(x_I - x_{I-1})]
-          + dx [same along y]
-          - lam Rs(y) dy (q_{I+1/2} - q_{I-1/2}) } / A  [ - kappa d(rho h)_I/dt  in the transient ]
-
-    e = rho h^3 / eta (face value: arithmetic mean of the two nodes),  q = m at the face, upwind
-    (U > 0): q_{I+1/2} = m_I + (x_{I+1} - x_I)/(2 (x_I - x_{I-1})) (m_I - m_{I-1}),  m = rho theta h
-    (theta the film content: 1 in the Reynolds-condition form, an unknown in the mass-conserving one)
-    (second-order linear upwind extrapolation, ``scheme = 1``; ``scheme = 0``: first-order q = m_I;
-    ``scheme = 2``: the extrapolation's slope limited by van Albada's limiter (van Albada, van Leer &
-    Roberts, *Astron. Astrophys.* 108, 1982), ``q_{I+1/2} = m_I + (x_{I+1} - x_I)/2 s(a, b)`` with
-    ``b = (m_I - m_{I-1})/(x_I - x_{I-1})`` the upwind and ``a = (m_{I+1} - m_I)/(x_{I+1} - x_I)`` the
-    downwind slope, ``s = a b (a + b)/(a^2 + b^2)`` where ``a b > 0``, else 0: second order where ``m``
-    is smooth, first order at its extrema -- the outlet constriction, where the unlimited extrapolation
-    leaves a coarse grid without a discrete solution of positive film under heavy load).
-
-which is eq. (1) of the paper, ``div(rho H^3/eta grad P) = 12 U d(rho H)/dX``, in these units
-(``lam = 12 eta0 u_m R^2 / (b^3 p_h)``). Boundary nodes carry ``p = 0``.
-
-The local Jacobian is returned per row in six slots -- centre, I-1, I+1, J-1, J+1, I-2 -- as
-``Sp`` (derivative with respect to the node pressures at fixed film) and ``Sh`` (with respect to the
-node films). The full Jacobian is ``Sp + Sh dh/dp`` with ``dh/dp`` the elastic influence matrix.
+"""numba kernels of the Reynolds-condition form of the line contact's and the tapered roller's EHL film (the rows:
+:mod:`transient.models.ehl.rows`): the exit condition as a complementarity and the dense Newton matrix.
 
 Reynolds exit condition (P = dP/dn = 0 at the free boundary) as the complementarity problem
 ``p >= 0, -F >= 0, p F = 0``, written as the Fischer-Burmeister equation
-``phi(p, -F) = p - F - sqrt(p^2 + F^2) = 0`` and solved by a semismooth Newton, or (the transient) in
-penalty form ``-F + gamma min(p, 0) = 0`` (smoothed), whose error is O(1/gamma).
+``phi(p, -F) = p - F - sqrt(p^2 + F^2) = 0`` (:mod:`transient.models.ehl.complementarity`) and solved by a
+semismooth Newton, or (the transient) in penalty form ``-F + gamma min(p, 0) = 0`` (smoothed, :func:`penalty`),
+whose error is O(1/gamma).
 """
 
 from __future__ import annotations
 
 import math
 
-import numpy as np
 from numba import njit
 
-from transient.models.ehl.limiter import van_albada
-
-from transient.physics.lubricant import density_point, viscosity_point
-
-#: slots of the local Jacobian
-C, W, E, S, N, WW = 0, 1, 2, 3, 4, 5
-N_SLOTS = 6
-
-
-@njit(cache=True, error_model="numpy")
-def node_properties(p_full, h_full, vcode, alpha, ln_eta0, dcode, c1, c2, p_scale, out):
-    """Per full node: rho, drho/dp, eps = rho h^3/eta, deps/dp, deps/dh, m = rho h, dm/dp (scaled p).
-
-    ``out`` has shape (7, n_full). Where ``eta`` overflowed (Roelands with ``Z > 1`` passes ``exp(709)`` near
-    2.5 GPa at the Moes chart's largest ``alpha``) ``eps`` underflows to 0 and ``deps/dp`` would be
-    ``inf/inf``: a non-finite ``eps``, ``deps/dp`` or ``deps/dh`` takes its limit 0 there."""
-    pf, hf = p_full.ravel(), h_full.ravel()
-    for k in range(pf.size):
-        pp = pf[k] * p_scale
-        eta, deta = viscosity_point(vcode, pp, alpha, ln_eta0)
-        rho, drho = density_point(dcode, pp, c1, c2)
-        deta *= p_scale
-        drho *= p_scale
-        h = hf[k]
-        h3 = h * h * h
-        out[0, k] = rho
-        out[1, k] = drho
-        eps = rho * h3 / eta
-        deps_p = h3 * (drho * eta - rho * deta) / (eta * eta)
-        deps_h = 3.0 * rho * h * h / eta
-        out[2, k] = eps if math.isfinite(eps) else 0.0
-        out[3, k] = deps_p if math.isfinite(deps_p) else 0.0
-        out[4, k] = deps_h if math.isfinite(deps_h) else 0.0
-        out[5, k] = rho * h
-        out[6, k] = drho * h
-
-
-
-
-@njit(cache=True, error_model="numpy")
-def reynolds_kernel(p_full, h_full, t_full, x, y, rs, lam, two_d, scheme, vcode, alpha, ln_eta0, dcode, c1, c2,
-                    p_scale, jac, F, Sp, Sh, St, scale, props):
-    """Residual ``F`` (interior nodes, flat), the row scales ``scale`` (Poiseuille diagonal plus the Couette
-    coefficient ``lam Rs rho h/dx``, per unit area) and, if ``jac``, the local Jacobian ``Sp``, ``Sh``,
-    ``St`` (n, 6: with respect to the pressure, film and film content of the slot's node). ``t_full``: the
-    film content theta at every full node (ones: the Reynolds-condition form, the Couette flux carries
-    ``m = rho h``; else ``m = rho theta h``, the mass-conserving form of
-    :mod:`transient.models.roller.roller_fbns`)."""
-    nyf, nxf = p_full.shape
-    node_properties(p_full, h_full, vcode, alpha, ln_eta0, dcode, c1, c2, p_scale, props)
-    rho, eps, deps_p, deps_h, rh, dm_p = props[0], props[2], props[3], props[4], props[5], props[6]
-    tf = t_full.ravel()
-    m = rh * tf
-    pf = p_full.ravel()
-    nx = nxf - 2
-    j0, j1 = (1, nyf - 1) if two_d else (0, 1)
-    dE = np.zeros(N_SLOTS)
-    dM = np.zeros(N_SLOTS)
-    dP = np.zeros(N_SLOTS)
-    nb = np.zeros(N_SLOTS, np.int64)
-    for J in range(j0, j1):
-        if two_d:
-            dy = 0.5 * (y[J + 1] - y[J - 1])
-        else:
-            dy = 1.0
-        coef = lam * rs[J] * dy
-        for I in range(1, nxf - 1):
-            r = (J - j0) * nx + (I - 1)
-            c = J * nxf + I
-            w = c - 1
-            e = c + 1
-            dxR = x[I + 1] - x[I]
-            dxL = x[I] - x[I - 1]
-            dx = 0.5 * (dxR + dxL)
-            A = dx * dy
-            eR = 0.5 * (eps[c] + eps[e])
-            eL = 0.5 * (eps[w] + eps[c])
-            gR = (pf[e] - pf[c]) / dxR
-            gL = (pf[c] - pf[w]) / dxL
-            fx = dy * (eR * gR - eL * gL)
-            order2 = scheme == 1
-            fR = 0.5 * dxR / dxL if order2 else 0.0
-            fL = 0.0
-            qL = m[w]
-            if scheme == 2:
-                sR, sRa, sRb = van_albada((m[e] - m[c]) / dxR, (m[c] - m[w]) / dxL)
-                qR = m[c] + 0.5 * dxR * sR
-                sL, sLa, sLb, dxLL = 0.0, 0.0, 0.0, 1.0
-                if I >= 2:
-                    dxLL = x[I - 1] - x[I - 2]
-                    sL, sLa, sLb = van_albada((m[c] - m[w]) / dxL, (m[w] - m[c - 2]) / dxLL)
-                    qL = m[w] + 0.5 * dxL * sL
-            else:
-                if I >= 2:
-                    if order2:
-                        fL = 0.5 * dxL / (x[I - 1] - x[I - 2])
-                    qL = m[w] + fL * (m[w] - m[c - 2])
-                qR = m[c] + fR * (m[c] - m[w])
-            fc = -coef * (qR - qL)
-            fy = 0.0
-            if two_d:
-                s_ = c - nxf
-                n_ = c + nxf
-                dyN = y[J + 1] - y[J]
-                dyS = y[J] - y[J - 1]
-                eN = 0.5 * (eps[c] + eps[n_])
-                eS = 0.5 * (eps[s_] + eps[c])
-                gN = (pf[n_] - pf[c]) / dyN
-                gS = (pf[c] - pf[s_]) / dyS
-                fy = dx * (eN * gN - eS * gS)
-            F[r] = (fx + fy + fc) / A
-            scale[r] = (dy * (eR / dxR + eL / dxL) + coef * rh[c]) / A
-            if two_d:
-                scale[r] += dx * (eN / dyN + eS / dyS) / A
-            if not jac:
-                continue
-            for s in range(N_SLOTS):
-                dE[s] = 0.0
-                dM[s] = 0.0
-                dP[s] = 0.0
-                nb[s] = -1
-            nb[C], nb[W], nb[E] = c, w, e
-            dE[E] += 0.5 * dy * gR
-            dE[C] += 0.5 * dy * (gR - gL)
-            dE[W] -= 0.5 * dy * gL
-            dP[E] += dy * eR / dxR
-            dP[C] -= dy * (eR / dxR + eL / dxL)
-            dP[W] += dy * eL / dxL
-            if scheme == 2:
-                # q_R(m_W, m_C, m_E) and q_L(m_WW, m_W, m_C) through the limited slopes
-                dM[E] -= coef * 0.5 * sRa
-                dM[C] -= coef * (1.0 - 0.5 * sRa + 0.5 * dxR / dxL * sRb - 0.5 * sLa)
-                dM[W] -= coef * (-0.5 * dxR / dxL * sRb - 1.0 + 0.5 * sLa - 0.5 * dxL / dxLL * sLb)
-                if I >= 2:
-                    nb[WW] = c - 2
-                    dM[WW] -= coef * 0.5 * dxL / dxLL * sLb
-            else:
-                dM[C] -= coef * (1.0 + fR)
-                dM[W] += coef * (1.0 + fR + fL)
-                if I >= 2:
-                    nb[WW] = c - 2
-                    dM[WW] -= coef * fL
-            if two_d:
-                nb[S], nb[N] = c - nxf, c + nxf
-                dE[N] += 0.5 * dx * gN
-                dE[C] += 0.5 * dx * (gN - gS)
-                dE[S] -= 0.5 * dx * gS
-                dP[N] += dx * eN / dyN
-                dP[C] -= dx * (eN / dyN + eS / dyS)
-                dP[S] += dx * eS / dyS
-            for s in range(N_SLOTS):
-                k = nb[s]
-                if k < 0:
-                    Sp[r, s] = 0.0
-                    Sh[r, s] = 0.0
-                    St[r, s] = 0.0
-                    continue
-                Sh[r, s] = (dE[s] * deps_h[k] + dM[s] * rho[k] * tf[k]) / A
-                Sp[r, s] = (dP[s] + dE[s] * deps_p[k] + dM[s] * dm_p[k] * tf[k]) / A
-                St[r, s] = dM[s] * rh[k] / A
-
-
-@njit(cache=True, error_model="numpy")
-def fischer_burmeister(a, b, phi, da, db):
-    """``phi = a + b - sqrt(a^2 + b^2)`` and a generalised gradient (``da``, ``db``) per entry."""
-    for k in range(a.size):
-        r = math.sqrt(a[k] * a[k] + b[k] * b[k])
-        phi[k] = a[k] + b[k] - r
-        if r > 0.0:
-            da[k] = 1.0 - a[k] / r
-            db[k] = 1.0 - b[k] / r
-        else:
-            da[k] = 1.0 - 1.0 / math.sqrt(2.0)
-            db[k] = da[k]
+from transient.models.ehl.reduced import reynolds_row
+from transient.models.ehl.rows import N_SLOTS  # noqa: F401  (the slot count, re-exported for the roller's modules)
 
 
 @njit(cache=True, error_model="numpy")
@@ -228,29 +30,6 @@ def penalty(a, b, phi, da, db, gamma):
         phi[k] = b[k] + 0.5 * gamma * (a[k] - r)
         da[k] = 0.5 * gamma * (1.0 - a[k] / r)
         db[k] = 1.0
-
-
-@njit(cache=True, error_model="numpy")
-def reynolds_row(Sp, Sh, colp, colh, K, elastic, r, row):
-    """Row ``r`` of the Reynolds rows' Newton matrix in the pressures, ``Sp + Sh K`` (``K`` not read for a rigid
-    body, ``elastic=False``), into ``row[:n]`` (zeroed first); returns its ``h0`` entry, the sum of ``Sh``."""
-    n = Sp.shape[0]
-    for q in range(n):
-        row[q] = 0.0
-    s_h0 = 0.0
-    for s in range(N_SLOTS):
-        ch = colh[r, s]
-        if ch >= 0:
-            v = Sh[r, s]
-            s_h0 += v
-            if elastic and v != 0.0:
-                krow = K[ch]
-                for q in range(n):
-                    row[q] += v * krow[q]
-        cp = colp[r, s]
-        if cp >= 0:
-            row[cp] += Sp[r, s]
-    return s_h0
 
 
 @njit(cache=True, error_model="numpy")
@@ -270,25 +49,3 @@ def assemble_dense(Sp, Sh, colp, colh, K, elastic, fb_a, fb_b, area_w, J):
     for q in range(n):
         J[n, q] = area_w[q]
     J[n, n] = 0.0
-
-
-@njit(cache=True, error_model="numpy")
-def assemble_schur(Sp, Sh, St, colp, colh, K, b_p, b_t, area_w, S):
-    """Dense Schur matrix of the film-content Newton step (:mod:`transient.models.roller.roller_fbns`):
-    ``S = [[(Sp + Sh K) diag(b_p) + St diag(b_t), Sh 1], [area_w diag(b_p), 0]]``, the Reynolds rows' Newton
-    matrix after the node-wise substitution ``dp = b_p z``, ``dtheta = b_t z``. ``K`` (n_full, n): film change
-    per unit interior pressure; ``colp`` / ``colh`` map the slots to interior / full node indices (-1: none)."""
-    n = Sp.shape[0]
-    for r in range(n):
-        row = S[r]
-        s_h0 = reynolds_row(Sp, Sh, colp, colh, K, True, r, row)
-        for q in range(n):
-            row[q] *= b_p[q]
-        for s in range(N_SLOTS):
-            cp = colp[r, s]
-            if cp >= 0:
-                row[cp] += St[r, s] * b_t[cp]
-        row[n] = s_h0
-    for q in range(n):
-        S[n, q] = area_w[q] * b_p[q]
-    S[n, n] = 0.0

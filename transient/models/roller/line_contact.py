@@ -14,7 +14,7 @@ Domain ``X in [domain[0], domain[1]]`` and grid by default from the contact's re
 (:mod:`transient.models.roller.line_grid`: the paper's -5 ... 2.5 where the contact is elastic, longer where the
 rigid inlet wedge ``sqrt(2 R h_c)`` is; clustered nodes from M = 10, else uniform at the resolving spacing);
 finite volumes with second-order upwind wedge flux, the complementarity form of the exit condition solved
-inside Newton (:mod:`transient.models.roller.kernels`).
+inside Newton (:mod:`transient.models.ehl.rows`, :mod:`transient.models.roller.kernels`).
 ``elastic=False`` gives the rigid cylinder (Martin's limit).
 """
 

@@ -19,8 +19,10 @@ problems could differ only in the node where the film ruptures (on every chart p
 otherwise). This form's Fischer-Burmeister pair is linear in the unknowns, so Newton's steps stay
 meaningful from the Hertz pressure at any load.
 
-:class:`LineContentFilm` gives the residual pieces as :class:`transient.models.point.ehl_problem.PointFilm`
-(``equations``, ``fb_derivatives``) and the Schur matrix of its Newton step (``schur_matrix``).
+The rows are the one rows kernel's (:func:`~transient.models.ehl.rows.rows_kernel`, on one row: the
+Reynolds-condition film's, with the content). :class:`LineContentFilm` gives the residual pieces as
+:class:`transient.models.point.ehl_problem.PointFilm` (``equations``, ``fb_derivatives``) and the Schur matrix of
+its Newton step (``schur_matrix``, :func:`~transient.models.ehl.reduced.schur_rows`).
 """
 
 from __future__ import annotations
@@ -28,79 +30,18 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from transient.models.ehl.reduced import schur
+from transient.models.ehl.complementarity import CavitationRows, fb_residual
+from transient.models.ehl.reduced import schur, schur_rows
+from transient.models.ehl.rows import LINE_SLOTS, rows_kernel
 from transient.models.roller.ehl_problem import EHLFilm
-from transient.models.roller.kernels import node_properties
-from transient.models.ehl.complementarity import fb_derivatives, fb_residual
 
-#: local Jacobian slots: centre, west, east, west-west, and their offsets in full nodes
+#: local Jacobian slots (:data:`~transient.models.ehl.rows.LINE_SLOTS`): centre, west, east, west-west, and their
+#: offsets in full nodes
 N_LOCAL = 4
 OFFSETS = np.array([0, -1, 1, -2])
 
 
-@njit(cache=True, error_model="numpy")
-def content_residual(p_full, t_full, x, props, lam, order2, res, scale, dp, dh, dt):
-    """Reynolds rows ``res`` (module docstring), their scales (Poiseuille diagonal plus ``lam rho h / dx``)
-    and the local derivatives ``dp``, ``dh``, ``dt`` (n, 4: slots centre, west, east, west-west) with
-    respect to the full-node pressure, film and content; ``props`` from :func:`node_properties`
-    (film-free quantities: rho, drho, eps, deps/dp, deps/dh, rho h, drho/dp h)."""
-    nf = x.size
-    rho, eps, deps_p, deps_h, rh, drh = props[0], props[2], props[3], props[4], props[5], props[6]
-    dE = np.zeros(N_LOCAL)
-    dM = np.zeros(N_LOCAL)
-    dP = np.zeros(N_LOCAL)
-    nb = np.zeros(N_LOCAL, np.int64)
-    for I in range(1, nf - 1):
-        r = I - 1
-        dxR = x[I + 1] - x[I]
-        dxL = x[I] - x[I - 1]
-        A = 0.5 * (dxR + dxL)
-        eR = 0.5 * (eps[I] + eps[I + 1])
-        eL = 0.5 * (eps[I - 1] + eps[I])
-        gR = (p_full[I + 1] - p_full[I]) / dxR
-        gL = (p_full[I] - p_full[I - 1]) / dxL
-        mC = rh[I] * t_full[I]
-        mW = rh[I - 1] * t_full[I - 1]
-        fR = 0.5 * dxR / dxL if order2 else 0.0
-        fL = 0.0
-        qL = mW
-        if I >= 2:
-            if order2:
-                fL = 0.5 * dxL / (x[I - 1] - x[I - 2])
-            qL = mW + fL * (mW - rh[I - 2] * t_full[I - 2])
-        qR = mC + fR * (mC - mW)
-        res[r] = (eR * gR - eL * gL - lam * (qR - qL)) / A
-        scale[r] = (eR / dxR + eL / dxL + lam * rh[I]) / A
-        for s in range(N_LOCAL):
-            dE[s] = 0.0
-            dM[s] = 0.0
-            dP[s] = 0.0
-            nb[s] = -1
-        nb[0], nb[1], nb[2] = I, I - 1, I + 1
-        dE[2] = 0.5 * gR
-        dE[0] = 0.5 * (gR - gL)
-        dE[1] = -0.5 * gL
-        dP[2] = eR / dxR
-        dP[0] = -(eR / dxR + eL / dxL)
-        dP[1] = eL / dxL
-        dM[0] = -lam * (1.0 + fR)
-        dM[1] = lam * (1.0 + fR + fL)
-        if I >= 2:
-            nb[3] = I - 2
-            dM[3] = -lam * fL
-        for s in range(N_LOCAL):
-            k = nb[s]
-            if k < 0:
-                dp[r, s] = 0.0
-                dh[r, s] = 0.0
-                dt[r, s] = 0.0
-                continue
-            dp[r, s] = (dP[s] + dE[s] * deps_p[k] + dM[s] * drh[k] * t_full[k]) / A
-            dh[r, s] = (dE[s] * deps_h[k] + dM[s] * rho[k] * t_full[k]) / A
-            dt[r, s] = dM[s] * rh[k] / A
-
-
-class LineContentFilm:
+class LineContentFilm(CavitationRows):
     """The film-content form (module docstring) of an :class:`EHLFilm` line problem; unknowns
     ``u = [p (n), theta (n), h0]``."""
 
@@ -116,6 +57,9 @@ class LineContentFilm:
         self.matrix_free = film.elastic == "line-fft"
         self.weight = film.area_w
         self.props = np.empty((7, self.nf))
+        #: interior (``colp``) and full (``colh``) node of each stored slot of each row (-1: none)
+        stored = LINE_SLOTS >= 0
+        self.colp, self.colh = film.colp[:, stored], film.colh[:, stored]
 
     def expand(self, u):
         """``(p_full, theta_full, h0)``; the boundary nodes carry ``p = 0``, ``theta = 1``."""
@@ -132,19 +76,17 @@ class LineContentFilm:
         pf, tf, h0 = self.expand(u)
         H = b.film(u[: self.n], h0)
         v, al, ln0, d, c1, c2 = b.rheo_args
-        node_properties(pf, H, v, al, ln0, d, c1, c2, b.p_scale, self.props)
         n = self.n
         res, scale = np.empty(n), np.empty(n)
         dp, dh, dt = np.empty((n, N_LOCAL)), np.empty((n, N_LOCAL)), np.empty((n, N_LOCAL))
-        content_residual(pf, tf, self.x, self.props, b.lam, b.order2, res, scale, dp, dh, dt)
+        nf = self.nf
+        rows_kernel(pf.reshape(1, nf), H.reshape(1, nf), tf.reshape(1, nf), self.x, b.y_nodes, b.rs, b.lam, False,
+                    b.scheme_code, v, al, ln0, d, c1, c2, b.p_scale, True, res, dp, dh, dt, scale, self.props,
+                    LINE_SLOTS)
         p = u[:n]
         fb, rad = fb_residual(p, u[n: 2 * n])
         return dict(H=H, res=res, scale=scale, dp=dp, dh=dh, dt=dt, fb=fb, rad=rad,
                     load=self.weight @ p - load_ratio)
-
-    def fb_derivatives(self, u, e):
-        """``(dFB/dp, dFB/dtheta)`` per node (:func:`~transient.models.ehl.complementarity.fb_derivatives`)."""
-        return fb_derivatives(u[: self.n], u[self.n: 2 * self.n], e["rad"])
 
     def schur_matrix(self, e, b_p, b_t) -> np.ndarray:
         """Dense ``S = [[J_p diag(b_p) + J_theta diag(b_t), dR/dh0], [load row diag(b_p), 0]]``: the Newton
@@ -153,8 +95,9 @@ class LineContentFilm:
         if self.matrix_free:
             raise ValueError(f"{self.nf} nodes, DC-FFT elasticity: the Schur matrix is matrix-free (line_fft.SchurOperator)")
         S = np.empty((self.n + 1, self.n + 1))
-        K = self.K if self.K is not None else np.zeros((self.nf, self.n))
-        schur_kernel(e["dp"], e["dh"], e["dt"], K, b_p, b_t, self.weight, S)
+        elastic = self.K is not None
+        schur_rows(e["dp"], e["dh"], e["dt"], self.colp, self.colh, self.K if elastic else np.zeros((1, 1)), elastic,
+                   b_p, b_t, self.weight, S)
         return S
 
     def storage_terms(self):
@@ -164,8 +107,7 @@ class LineContentFilm:
 
     def local_columns(self) -> np.ndarray:
         """The interior node of each local slot of each row (n, 4; -1: none), as ``equations``' ``dt``."""
-        col = np.arange(self.n)[:, None] + OFFSETS[None, :]
-        return np.where((col >= 0) & (col < self.n), col, -1)
+        return self.colp
 
     def jacobian_product(self, e, v_p, v_t) -> np.ndarray:
         """``J_p v_p + J_theta v_t`` (the Reynolds rows' response to pressure and content changes)."""
@@ -190,41 +132,6 @@ def local_product(d, v_full, out):
             if 0 <= c < v_full.size:
                 acc += d[r, s] * v_full[c]
         out[r] += acc
-
-
-@njit(cache=True)
-def schur_kernel(dp, dh, dt, K, b_p, b_t, weight, S):
-    """Fill ``S`` (:meth:`LineContentFilm.schur_matrix`); ``K`` (full nodes, interior nodes) the film's
-    influence matrix, ``dp``, ``dh``, ``dt`` the local slots of :func:`content_residual`."""
-    n = dp.shape[0]
-    nf = K.shape[0]
-    for r in range(n):
-        row = S[r]
-        for q in range(n + 1):
-            row[q] = 0.0
-        h0 = 0.0
-        for s in range(N_LOCAL):
-            c = r + 1 + OFFSETS[s]
-            if c < 0 or c >= nf:
-                continue
-            v = dh[r, s]
-            if v != 0.0:
-                h0 += v
-                kr = K[c]
-                for q in range(n):
-                    row[q] += v * kr[q]
-            if 1 <= c <= n:
-                row[c - 1] += dp[r, s]
-        for q in range(n):
-            row[q] *= b_p[q]
-        for s in range(N_LOCAL):
-            c = r + 1 + OFFSETS[s]
-            if 1 <= c <= n:
-                row[c - 1] += dt[r, s] * b_t[c - 1]
-        row[n] = h0
-    for q in range(n):
-        S[n, q] = weight[q] * b_p[q]
-    S[n, n] = 0.0
 
 
 def schur_system(film, u, e):

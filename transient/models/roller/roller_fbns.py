@@ -4,7 +4,7 @@ iteration.
 Park's finite line contact (:mod:`transient.models.roller.contact`) in the fractional-film form of
 Jakobsson-Floberg-Olsson / Elrod as solved by FBNS (Woloszynski, Podsiadlo & Stachowiak, *Tribol. Lett.* 58,
 2015; Hansen, Kacan, Frohnapfel & Codrignani, *Tribol. Lett.* 70, 2022, with the elastic film). Scaled units
-and finite volumes of :mod:`transient.models.roller.kernels` on the full (not mirrored: the tilted roller is
+and finite volumes of :mod:`transient.models.ehl.rows` on the full (not mirrored: the tilted roller is
 not symmetric) non-uniform tensor grid; per interior node::
 
     R = { Poiseuille fluxes along x and y - lam Rs(y) dy (q_{I+1/2} - q_{I-1/2}) } / A = 0,   m = rho theta h
@@ -31,17 +31,17 @@ import numpy as np
 from numba import njit
 
 from transient.checks import check_memory
+from transient.models.ehl.complementarity import CavitationRows, fb_residual
+from transient.models.ehl.reduced import schur_rows
 from transient.models.roller.ehl_problem import EHLFilm
 from transient.models.roller.grid import TensorGrid
-from transient.models.roller.kernels import assemble_schur
 from transient.models.roller.line_newton import content_newton
 from transient.models.roller.roller_fft import RollerTwoLevel
 from transient.models.roller.roller_lines import LineBlocks
 from transient.solvers.newton import NewtonError
-from transient.models.ehl.complementarity import fb_derivatives, fb_residual
 
 
-class RollerContentFilm:
+class RollerContentFilm(CavitationRows):
     """The film-content form (module docstring) of a 2-D :class:`EHLFilm`; unknowns ``u = [p (n), theta (n),
     h0]``, interior nodes x fastest. The Schur matrix needs the dense influence matrix: a uniform grid's
     DC-FFT film gets it built (``K``, ``n_full x n`` doubles)."""
@@ -94,15 +94,11 @@ class RollerContentFilm:
         return dict(H=H, res=b.F.copy(), scale=b.scale.copy(), dp=b.Sp.copy(), dh=b.Sh.copy(), dt=b.St.copy(),
                     fb=fb, rad=rad, load=self.weight @ p - load_ratio)
 
-    def fb_derivatives(self, u, e):
-        """``(dFB/dp, dFB/dtheta)`` per node (:func:`~transient.models.ehl.complementarity.fb_derivatives`)."""
-        return fb_derivatives(u[: self.n], u[self.n: 2 * self.n], e["rad"])
-
     def schur_matrix(self, e, b_p, b_t) -> np.ndarray:
         """Dense ``(n + 1)`` Schur matrix of the Newton step after ``dp = b_p z``, ``dtheta = b_t z``
-        (:func:`~transient.models.roller.kernels.assemble_schur`)."""
+        (:func:`~transient.models.ehl.reduced.schur_rows`)."""
         S = np.empty((self.n + 1, self.n + 1))
-        assemble_schur(e["dp"], e["dh"], e["dt"], self.colp, self.colh, self.K, b_p, b_t, self.weight, S)
+        schur_rows(e["dp"], e["dh"], e["dt"], self.colp, self.colh, self.K, True, b_p, b_t, self.weight, S)
         return S
 
     def two_level(self, A, u):
