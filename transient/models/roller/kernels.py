@@ -15,7 +15,6 @@ import math
 from numba import njit
 
 from transient.models.ehl.reduced import reynolds_row
-from transient.models.ehl.rows import N_SLOTS  # noqa: F401  (the slot count, re-exported for the roller's modules)
 
 
 @njit(cache=True, error_model="numpy")

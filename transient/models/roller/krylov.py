@@ -25,7 +25,7 @@ import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 from numba import njit
 
-from transient.models.roller.kernels import N_SLOTS
+from transient.models.ehl.rows import N_SLOTS
 
 
 @njit(cache=True)
