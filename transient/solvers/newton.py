@@ -196,7 +196,9 @@ def newton(residual: Callable, jacobian: Callable, x0, *, settings: NewtonSettin
             if not np.isfinite(r2_new) or (shift == 0.0 and r2_new > r2):
                 dtau = max(dtau * 0.1, 1e-3)
                 continue
-            dtau = min(dtau * max(np.sqrt(r2 / max(r2_new, _TINY)), 0.5) * 2.0, 1e15)
+            # SER growth of the pseudo-time step; a zero residual ends the pseudo-transient phase at once (its growth
+            # factor 0/0 would hold dtau and skip the convergence test forever)
+            dtau = 1e15 if r2_new == 0.0 else min(dtau * max(np.sqrt(r2 / max(r2_new, _TINY)), 0.5) * 2.0, 1e15)
         if chord and not fresh and r2_new > 0.25 * r2:  # contracting slower than 2x in ||F||: refresh
             keep.lu = None
         fresh = False
