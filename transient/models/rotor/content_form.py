@@ -63,7 +63,7 @@ class ContentSystem:
             k_vals=np.ascontiguousarray(dae.Kw[dae.q_mask], dtype=float), mom_v=_ints(mom_v), v_rows=_ints(v_rows),
             v_cols=_ints(v_cols), mom_phi=_ints(mom_phi), phi_rows=_ints(dae.phi_rows), phi_phi=_ints(phi_phi),
             full=np.zeros(dae.pattern.nnz), gather=gather, speed=np.array([1.0, 0.0]), force=np.zeros(nq),
-            phi_tol=PHI_TOL)
+            phi_tol=PHI_TOL, block_cj=np.full(len(films), np.nan), per_film=True)
         self.args = (tuple(films), self.rotor)
         self.newton, self.kernel = rotor_newton, rotor_residual
         if dae.rough:  # rough bearings: their film blocks (rough_content.py)
