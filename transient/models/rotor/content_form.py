@@ -83,6 +83,20 @@ class ContentSystem:
             worst = max(worst, math.hypot(dX + dA, dY + dB), math.hypot(dX - dA, dY - dB))
         return worst
 
+    def error_pairs(self) -> np.ndarray:
+        """The rows ``(i, j)`` of the state whose components are a journal's x and y (a bearing node's own
+        coordinates: its block's position ``X = a q_i``, ``Y = a q_j``), for its coordinates and its velocities: the BDF's
+        error test weighs each pair by its length (``options["error_pairs"]``), so a journal on an orbit is held to
+        rtol of its distance from the centre and its speed, not to atol where x or y passes through zero."""
+        dae, rows = self.dae, []
+        for b in self.dae.blocks:
+            ix, iy = np.flatnonzero(b.ax), np.flatnonzero(b.ay)
+            if (b.support.size == 2 and ix.size == 1 and iy.size == 1 and ix[0] != iy[0]
+                    and b.ax[ix[0]] == b.ay[iy[0]]):
+                i, j = int(b.support[ix[0]]), int(b.support[iy[0]])
+                rows += [(dae.Q0 + i, dae.Q0 + j), (dae.V0 + i, dae.V0 + j)]
+        return np.array(sorted(set(rows)), dtype=np.int64).reshape(-1, 2)
+
     def set_speed(self, tau):
         """The shaft speed ratio and its rate at ``tau`` into the kernels' ``speed``."""
         self.rotor.speed[:] = self.dae.speed(tau)
