@@ -39,11 +39,13 @@ reduction 3.7e-3 C, the time step at rtol 1e-3 against rtol 1e-6 9.6e-4 C).
 
 Duration: the default (76 x 11, 400 revolutions each way) is checkpointed, so it can be stopped and resumed; it was
 not run to the end. About three quarters of its revolutions turn above the whirl threshold (the speed is linear in
-time from 0.3x to 2x it), where a whirl revolution of the 4-mode shaft at rtol 1e-3 on 76 x 11 costs 2.6-4.4 s of
-CPU on a machine loaded ~25 on 2 cores, growing with the whirl, 3.5-5 s in the whip (e/C 0.91-0.94; the nodal shaft
-at rtol 1e-4 ~8 s on 51 x 11 early in the whirl). Measured as far as it went: the analyses and the run-up's first 280
-revolutions (to 1.7x the threshold, no whirl yet: the ramp outruns its growth) within 4 min of CPU, whip from
-revolution ~300, 330 revolutions after 7.2 min of CPU; the whole run is an estimated 30-40 min of CPU there. ``--quick`` (32 x 6, 30 revolutions each way) with the nodal shaft
+time from 0.3x to 2x it). The BDF's error test weighs each journal's x and y together by their length (a whirling
+journal's x and y pass through zero, where each alone would be held to atol): a whip revolution of the 4-mode shaft
+at rtol 1e-3 on 76 x 11 (e/C 0.93-0.95, the disk swinging 29 C) costs 2.0-2.3 s of CPU on a machine loaded 13-18 on
+2 cores (4.4 s with x and y weighed each by itself). Measured with the latter as far as it went: the analyses and
+the run-up's first 280 revolutions (to 1.7x the threshold, no whirl yet: the ramp outruns its growth) within 4 min
+of CPU, whip from revolution ~300, 330 revolutions after 7.2 min of CPU; the whole run is an estimated ~20-25 min of
+CPU now (~410 whirl revolutions at 2-2.5 s, the rest and the analyses ~5 min), not measured end to end. ``--quick`` (32 x 6, 30 revolutions each way) with the nodal shaft
 took about 2.5 min of CPU with plain BDF2 and about 3 min with ``--method ida``.
 """
 

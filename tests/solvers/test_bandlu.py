@@ -76,3 +76,44 @@ def test_border_partly_outside_the_block():
     assert lu.factor(M.data) == 0
     rhs = rng.standard_normal(n + nb)
     assert np.allclose(lu.solve(rhs), spla.spsolve(M, rhs), rtol=1e-10, atol=1e-12)
+
+
+def _two_blocks(rng):
+    """An arrow of two independent pivoting bands (and a few unconnected cells) on a border that reaches each block
+    through its own columns and rows (a rotor on two films)."""
+    def band(n):
+        A = sp.diags([rng.standard_normal(n - abs(k)) for k in (-3, -1, 0, 1, 3)], [-3, -1, 0, 1, 3]).tolil()
+        A[0, n - 1] = A[n - 1, 0] = 1.0
+        A.setdiag(1e-14 * rng.standard_normal(n))
+        return A
+    n1, n2, nb = 150, 120, 5
+    A = sp.block_diag([band(n1), sp.identity(3), band(n2), sp.identity(2)]).tocsc()
+    n = A.shape[0]
+    B, C = np.zeros((n, nb)), np.zeros((nb, n))
+    B[:n1, 0], B[n1 + 3:n1 + 3 + n2, 1] = rng.standard_normal(n1), rng.standard_normal(n2)
+    C[2, :n1], C[3, n1 + 3:n1 + 3 + n2] = rng.standard_normal(n1), rng.standard_normal(n2)
+    M = sp.bmat([[A, B], [C, rng.standard_normal((nb, nb)) + 5 * np.eye(nb)]]).tocsc()
+    M.sort_indices()
+    return M, nb, (n1 + 3, n1 + 3 + n2)
+
+
+def test_a_refactorisation_refactors_only_the_blocks_that_changed():
+    """Two independent band blocks are two segments; entries changed in one of them refactor that one only (the
+    other's band LU and its part of Z kept), a change of the corner none: each time SuperLU's solution."""
+    rng = np.random.default_rng(2)
+    M, nb, (a, b) = _two_blocks(rng)
+    lu = BorderedBandLU(M, nb)
+    assert lu.segments.size == 3  # the unconnected cells joined to their neighbours
+    rhs = rng.standard_normal(M.shape[0])
+    assert lu.factor(M.data) == 0 and lu.arrays.dirty.all()
+    rows = M.indices
+    cols = np.repeat(np.arange(M.shape[0]), np.diff(M.indptr))
+    second = (rows >= a) & (rows < b) | (cols >= a) & (cols < b)  # its band and its border entries
+    corner = (rows >= M.shape[0] - nb) & (cols >= M.shape[0] - nb)
+    for changed, dirty in ((second, 1), (corner, 0)):
+        M.data[changed] *= 1.3
+        assert lu.factor(M.data) == 0
+        assert lu.arrays.dirty.sum() == dirty
+        x = lu.solve(rhs)
+        assert np.max(np.abs(M @ x - rhs)) <= 1e-10 * np.max(np.abs(rhs)) * np.max(np.abs(x))
+        assert np.allclose(x, spla.spsolve(M, rhs), rtol=1e-8, atol=1e-10)

@@ -7,7 +7,7 @@ film states; its disk thrown sideways from the static equilibrium (``THROW`` cle
 and settled over ``settle`` revolutions. The journal is ``transient bench whip``'s (Rho & Kim's 100 kg rotor at 1.5x
 its Lund threshold) settled over ``settle`` revolutions from 0.4 C off its equilibrium. Both at the same grid; then
 ``timed`` revolutions from each settled state at each setting of ``SETTINGS`` (BDF2's rtol, least steps per
-revolution, the travel bound on or off), CPU seconds of the process, the cases alternating, the lower of two. The
+revolution, the travel bound on or off, atol), CPU seconds of the process, the cases alternating, the lower of two. The
 rotor's error per setting: the largest distance of the disk and of a bearing node after the timed revolutions from
 the run at ``TIGHT``, in clearances.
 """
@@ -32,9 +32,11 @@ UNBALANCE = 1e-4  # [kg m] at the disk
 THROW = 5.0  # [C per radian of the shaft]: the disk's sideways velocity at the start
 OPR = 40
 MODES = 4  # the shaft's fixed-interface modes kept (Rotor.reduce): the scenario's rotor
-#: name -> (rtol, least steps per revolution or None: the default travel bound and 50 per revolution)
-SETTINGS = {"rtol 1e-3 (the scenario's)": (1e-3, None), "rtol 1e-4": (1e-4, None)}
-TIGHT = (1e-6, None)
+#: name -> (rtol, least steps per revolution or None: the default travel bound and 50 per revolution, atol on the
+#: rotor's states [C, C per radian])
+SETTINGS = {"rtol 1e-3, atol 1e-4 (the scenario's)": (1e-3, None, 1e-4), "rtol 1e-3": (1e-3, None, 1e-9),
+            "rtol 1e-4": (1e-4, None, 1e-9)}
+TIGHT = (1e-6, None, 1e-9)
 FULL = dict(grid=(51, 11), settle=10, timed=1)
 QUICK = dict(grid=(24, 4), settle=2, timed=0.5)
 
@@ -55,8 +57,8 @@ def whip_system(grid, modes=None):
 
 
 def _integration(setting):
-    rtol, spr = setting
-    return Integration(method="bdf2", rtol=rtol, steps_per_revolution=spr)
+    rtol, spr, atol = setting
+    return Integration(method="bdf2", rtol=rtol, steps_per_revolution=spr, atol=atol)
 
 
 def _distance(a, b, node) -> float:
@@ -82,7 +84,7 @@ def run(quick=False, log=print) -> dict:
     settled_rotor = rotor_run(cfg["settle"], SETTINGS["rtol 1e-4"], (0.0, y0))
     o = _orbit(grid, 1.5 * JournalBearing(**rho_kim.BEARING, grid=(151, 21)).stability_threshold(
         rho_kim.ROTOR["rotor_mass"], rho_kim.ROTOR["load"]))
-    settled_orbit = o.run(cfg["settle"], integration=_integration(SETTINGS["rtol 1e-3 (the scenario's)"]),
+    settled_orbit = o.run(cfg["settle"], integration=_integration(SETTINGS["rtol 1e-3"]),
                           recording=rec, long_run=lr, y0=o.perturbed_start(0.4))
     L = s.length_scale
     tight = rotor_run(timed, TIGHT, settled_rotor)

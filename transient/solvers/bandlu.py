@@ -16,6 +16,12 @@ the addresses scipy exports in ``scipy.linalg.cython_lapack`` (an intrinsic that
 passed as an integer, so the kernels stay cacheable). The CSC data of the whole matrix (fixed pattern order)
 is scattered into the band, border and corner arrays by a map built once (:class:`BorderedBandLU`).
 
+The block's independent diagonal blocks (the films of a rotor on several bearings: RCM orders each connected
+component of the block's graph contiguously) are factored and solved one by one (``segments``): a factorisation
+refactors only the segments whose entries (band, border column and border row) changed since the last one, keeps
+the others' band LU and their part of ``Z``, and forms ``S`` again. A rotor whose Newton refreshes the Jacobian of
+one film (cells of that film crossed the cavitation switch) so pays for that film's band alone.
+
 The kernels :func:`band_factor` and :func:`band_solve` take the :class:`BandLU` tuple, so a compiled Newton
 iteration factors and solves without returning to Python.
 """
@@ -29,11 +35,14 @@ import scipy.sparse as sp
 from llvmlite import ir
 from numba import njit, types
 from numba.extending import get_cython_function_address, intrinsic
-from scipy.sparse.csgraph import reverse_cuthill_mckee
+from scipy.sparse.csgraph import connected_components, reverse_cuthill_mckee
 
 from transient.solvers.inner_kernel import inner_kernel
 
 _BAND, _BORDER_COL, _BORDER_ROW, _CORNER = range(4)
+#: the least size of a segment (independent diagonal blocks of the band, in RCM order): smaller connected components
+#: (a film's prescribed groove cells, each a component of its own) join their neighbours
+MIN_SEGMENT = 64
 
 
 _VOIDP = ir.IntType(8).as_pointer()
@@ -68,7 +77,10 @@ class BandLU(NamedTuple):
     columns / rows with entries in the block; ``kind``/``target``: where each CSC data entry goes (band: flat index
     into ``ab``; border column ``cols[e]``: flat index ``e * n + i'`` into ``B``; border row ``rows[e]``: ``e * n +
     j'`` into ``C``; corner: ``e * nb + f`` into ``D``). ``ab`` (n, ldab), ``B`` and ``Z`` (len(cols), n) are stored
-    C-ordered, i.e. as LAPACK's column-major (ldab, n) band and (n, len(cols)) right-hand sides."""
+    C-ordered, i.e. as LAPACK's column-major (ldab, n) band and (n, len(cols)) right-hand sides. ``segments``: the
+    band rows where each independent diagonal block starts, and n; ``segment`` the segment of each CSC data entry
+    (-1: the corner); ``held`` the data of the last factorisation (NaN: none); ``dirty`` per segment;
+    ``seg_ints`` = (rows of a segment, info), int32 scratch for LAPACK."""
 
     ints: np.ndarray
     trans: np.ndarray
@@ -88,6 +100,11 @@ class BandLU(NamedTuple):
     spiv: np.ndarray
     x1: np.ndarray
     x2: np.ndarray
+    segments: np.ndarray
+    segment: np.ndarray
+    held: np.ndarray
+    dirty: np.ndarray
+    seg_ints: np.ndarray
 
 
 @inner_kernel
@@ -129,13 +146,28 @@ def _small_solve(S, piv, b):
 
 
 @inner_kernel
-def _gbtrs(lu, b, nrhs_slot):
-    """b <- A^-1 b for the factored band (b C-ordered (nrhs, n); nrhs in ints[nrhs_slot])."""
-    ints = lu.ints
-    _call11(lu.address[1], lu.trans.ctypes.data, ints[0:].ctypes.data, ints[2:].ctypes.data, ints[3:].ctypes.data,
-            ints[nrhs_slot:].ctypes.data, lu.ab.ctypes.data, ints[4:].ctypes.data, lu.ipiv.ctypes.data,
-            b.ctypes.data, ints[8:].ctypes.data, ints[5:].ctypes.data)
-    return ints[5]
+def _gbtrs(lu, b, nrhs_slot, s):
+    """b <- A_s^-1 b on segment ``s`` of the factored band (b C-ordered (nrhs, n), its rows of the segment; nrhs in
+    ints[nrhs_slot])."""
+    ints, si = lu.ints, lu.seg_ints
+    a = lu.segments[s]
+    si[0] = lu.segments[s + 1] - a
+    _call11(lu.address[1], lu.trans.ctypes.data, si[0:].ctypes.data, ints[2:].ctypes.data, ints[3:].ctypes.data,
+            ints[nrhs_slot:].ctypes.data, lu.ab.ctypes.data + 8 * a * lu.ab.shape[1], ints[4:].ctypes.data,
+            lu.ipiv.ctypes.data + 4 * a, b.ctypes.data + 8 * a, ints[8:].ctypes.data, si[1:].ctypes.data)
+    return si[1]
+
+
+@inner_kernel
+def _gbtrf(lu, s):
+    """Band LU of segment ``s`` (its rows of ``ab``, pivots in its rows of ``ipiv``); LAPACK's info."""
+    ints, si = lu.ints, lu.seg_ints
+    a = lu.segments[s]
+    si[0] = lu.segments[s + 1] - a
+    _call8(lu.address[0], si[0:].ctypes.data, si[0:].ctypes.data, ints[2:].ctypes.data, ints[3:].ctypes.data,
+           lu.ab.ctypes.data + 8 * a * lu.ab.shape[1], ints[4:].ctypes.data, lu.ipiv.ctypes.data + 4 * a,
+           si[1:].ctypes.data)
+    return si[1]
 
 
 @inner_kernel
@@ -149,46 +181,62 @@ def _copy2(src, dst):
 @njit(cache=True)
 def band_factor(data, lu):
     """Factor the matrix with CSC ``data`` (pattern order): band LU of A, Z = A^-1 B, LU of S = D - C Z (on the
-    border rows and columns that reach the block). Returns 0, or LAPACK's info > 0 (a zero pivot in A), or -1 (S
-    singular)."""
+    border rows and columns that reach the block); of A and Z only the segments whose entries differ from the last
+    factorisation's (module docstring). Returns 0, or LAPACK's info > 0 (a zero pivot in A), or -1 (S singular)."""
     ab, B, C, D = lu.ab, lu.B, lu.C, lu.D
+    kind, target, segment, held, dirty, segs = lu.kind, lu.target, lu.segment, lu.held, lu.dirty, lu.segments
+    m = dirty.size
+    for s in range(m):
+        dirty[s] = False
+    for p in range(data.size):
+        if segment[p] >= 0 and not data[p] == held[p]:  # NaN in held (no factorisation): dirty
+            dirty[segment[p]] = True
+    ldab = ab.shape[1]
     flat = ab.reshape(-1)
-    flat[:] = 0.0
-    kind, target = lu.kind, lu.target
     Bf = B.reshape(-1)
     Cf = C.reshape(-1)
     Df = D.reshape(-1)
+    n = lu.perm.size
+    for s in range(m):
+        if dirty[s]:
+            for i in range(segs[s] * ldab, segs[s + 1] * ldab):
+                flat[i] = 0.0
     for p in range(data.size):
         k = kind[p]
-        if k == 0:
-            flat[target[p]] = data[p]
-        elif k == 1:
-            Bf[target[p]] = data[p]
-        elif k == 2:
-            Cf[target[p]] = data[p]
-        else:
+        if k == 3:
             Df[target[p]] = data[p]
-    ints = lu.ints
-    _call8(lu.address[0], ints[0:].ctypes.data, ints[1:].ctypes.data, ints[2:].ctypes.data, ints[3:].ctypes.data,
-           ab.ctypes.data, ints[4:].ctypes.data, lu.ipiv.ctypes.data, ints[5:].ctypes.data)
-    if ints[5] != 0:
-        return ints[5]
+        elif dirty[segment[p]]:
+            held[p] = data[p]
+            if k == 0:
+                flat[target[p]] = data[p]
+            elif k == 1:
+                Bf[target[p]] = data[p]
+            else:
+                Cf[target[p]] = data[p]
     Z, S = lu.Z, lu.S
+    cols, rows = lu.cols, lu.rows
+    for s in range(m):
+        if dirty[s]:
+            info = _gbtrf(lu, s)
+            if info != 0:
+                for p in range(held.size):
+                    held[p] = np.nan
+                return info + segs[s] if info > 0 else info
+            for b in range(cols.size):
+                for i in range(segs[s], segs[s + 1]):
+                    Z[b, i] = B[b, i]
+            if cols.size > 0:
+                _gbtrs(lu, Z, 7, s)
     nb = D.shape[0]
     if nb == 0:
         return 0
     _copy2(D, S)  # element loops: an array assignment compiles numba's shape-mismatch error path (~8 s cold)
-    cols, rows = lu.cols, lu.rows
-    if cols.size > 0:
-        _copy2(B, Z)
-        _gbtrs(lu, Z, 7)
-    n = Z.shape[1]
     for a in range(rows.size):
         for b in range(cols.size):
-            s = S[rows[a], cols[b]]
+            v = S[rows[a], cols[b]]
             for i in range(n):
-                s -= C[a, i] * Z[b, i]
-            S[rows[a], cols[b]] = s
+                v -= C[a, i] * Z[b, i]
+            S[rows[a], cols[b]] = v
     return 0 if _small_lu(S, lu.spiv) else -1
 
 
@@ -202,7 +250,8 @@ def band_solve(lu, rhs, out):
         x1[k] = rhs[perm[k]]
     for e in range(nb):
         x2[e] = rhs[n + e]
-    _gbtrs(lu, x1, 6)
+    for s in range(lu.dirty.size):
+        _gbtrs(lu, x1, 6, s)
     if nb > 0:
         rows, cols = lu.rows, lu.cols
         for a in range(rows.size):
@@ -219,6 +268,27 @@ def band_solve(lu, rhs, out):
         out[perm[k]] = x1[k]
     for e in range(nb):
         out[n + e] = x2[e]
+
+
+def _segments(block, perm) -> np.ndarray:
+    """The band rows where the independent diagonal blocks of ``block`` in the order ``perm`` start, and its size:
+    the connected components of its graph, each contiguous in RCM's order, those smaller than ``MIN_SEGMENT`` joined
+    to their neighbours (one segment if a component is not contiguous)."""
+    n = perm.size
+    if n == 0:
+        return np.array([0, 0], dtype=np.int64)
+    _, label = connected_components(block, directed=True, connection="weak")
+    lab = label[perm]
+    starts = np.flatnonzero(np.diff(lab)) + 1
+    if np.unique(lab).size != starts.size + 1:  # a component in pieces: no independent blocks to keep apart
+        return np.array([0, n], dtype=np.int64)
+    bounds = [0]
+    for b in list(starts) + [n]:
+        if b - bounds[-1] >= MIN_SEGMENT:
+            bounds.append(int(b))
+    if bounds[-1] != n:  # a short tail joins the last segment
+        bounds[-1] = n
+    return np.array(bounds if len(bounds) > 1 else [0, n], dtype=np.int64)
 
 
 class BorderedBandLU:
@@ -258,6 +328,11 @@ class BorderedBandLU:
         kind[br], target[br] = _BORDER_ROW, np.searchsorted(b_rows, rows[br] - n) * n + inv[cols[br]]
         co = (rows >= n) & (cols >= n)
         kind[co], target[co] = _CORNER, (rows[co] - n) * n_border + (cols[co] - n)
+        segments = _segments(block, perm)
+        band_row = np.where(kind == _BORDER_COL, inv[np.minimum(rows, n - 1)], 0)
+        band_row = np.where((kind == _BAND) | (kind == _BORDER_ROW), inv[np.minimum(cols, n - 1)], band_row)
+        segment = np.searchsorted(segments, band_row, side="right") - 1
+        segment[kind == _CORNER] = -1
         self.n, self.n_border, self.kl, self.ku, self.perm = n, n_border, kl, ku, perm
         address = np.array([get_cython_function_address("scipy.linalg.cython_lapack", name)
                             for name in ("dgbtrf", "dgbtrs")], dtype=np.int64)
@@ -268,7 +343,10 @@ class BorderedBandLU:
             ab=np.zeros((n, ldab)), ipiv=np.zeros(n, dtype=np.int32),
             B=np.zeros((b_cols.size, n)), C=np.zeros((b_rows.size, n)), D=np.zeros((n_border, n_border)),
             Z=np.zeros((b_cols.size, n)), S=np.zeros((n_border, n_border)),
-            spiv=np.zeros(n_border, dtype=np.int64), x1=np.zeros(n), x2=np.zeros(n_border))
+            spiv=np.zeros(n_border, dtype=np.int64), x1=np.zeros(n), x2=np.zeros(n_border), segments=segments,
+            segment=segment.astype(np.int64), held=np.full(rows.size, np.nan),
+            dirty=np.zeros(segments.size - 1, dtype=np.bool_), seg_ints=np.zeros(2, dtype=np.int32))
+        self.segments = segments
 
     def factor(self, data) -> int:
         """Factor the matrix with these CSC data; 0 on success (:func:`band_factor`)."""

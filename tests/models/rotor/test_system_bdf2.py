@@ -11,6 +11,7 @@ import pytest
 from transient import Integration, JournalBearing, JournalOrbit, LongRun, Recording
 from transient.models.rotor import Rotor, RotorBearingSystem
 from transient.models.rotor.content_form import BDF2_STEPS_PER_REVOLUTION, ContentSystem, bdf2_refusal
+from transient.models.rotor.content_newton import rotor_jacobian, rotor_to_state
 from transient.params.rho_kim import BEARING
 from transient.solvers.bandlu import BorderedBandLU
 from transient.solvers.longrun import Interrupted
@@ -225,3 +226,45 @@ def test_journal_travel_is_the_largest_bearing_node_travel_in_its_clearance(bear
         assert form.journal_travel(dy) == pytest.approx(expected, rel=1e-12)
         dy[dae.Q0:dae.V0] = 0.0
         assert form.journal_travel(dy) == 0.0
+
+
+def test_a_jacobian_refreshes_only_the_film_whose_cells_switched(bearing):
+    """At the same cj, cells of one film moved across the cavitation switch since the last Jacobian: that film's
+    block is evaluated again (equal to a full evaluation at the new state), the other film's entries are kept; a new
+    cj or no switch at all refreshes every film, as ``per_film=False`` always does."""
+    s = flexible_system(JournalBearing(**BEARING, grid=(16, 4)))
+    dae = s.dae(6000.0)
+    form = ContentSystem(dae)
+    z = s._start_guess(dae, 1.0)
+    form.set_speed(0.0)
+    args, cj = form.args, 37.0
+    y, yp = np.empty(dae.n), np.zeros(dae.n)
+
+    def jacobian(zz, cj_, a=args):
+        rotor_to_state(zz, y, a)
+        data = np.zeros(form.pattern.nnz)
+        rotor_jacobian(0.0, y, yp, cj_, data, a)
+        return data
+
+    first, second = dae.blocks
+    rows = form.pattern.indices
+    cols = np.repeat(np.arange(dae.n), np.diff(form.pattern.indptr))
+    of_second = ((rows >= second.offset) & (rows < second.offset + second.n)
+                 | (cols >= second.offset) & (cols < second.offset + second.n))
+    of_first = ((rows >= first.offset) & (rows < first.offset + first.n)
+                | (cols >= first.offset) & (cols < first.offset + first.n))
+    before = jacobian(z, cj)
+    moved = z.copy()
+    cells = first.offset + np.flatnonzero(first.film.op.free)[:3]
+    moved[cells] = -np.sign(z[cells]) * 0.5 - (z[cells] == 0)  # across the switch
+    moved[second.offset:second.offset + second.n] *= 1.0 + 1e-7  # the second film changed, no cell switched
+    after = jacobian(moved, cj)
+    full = ContentSystem(dae)
+    fresh = jacobian(moved, cj, full.args)
+    assert np.array_equal(after[of_second], before[of_second])
+    assert np.array_equal(after[of_first], fresh[of_first]) and not np.array_equal(after[of_first], before[of_first])
+    assert np.array_equal(jacobian(moved, 1.5 * cj), jacobian(moved, 1.5 * cj, ContentSystem(dae).args))
+    every = ContentSystem(dae)
+    every_args = (every.args[0], every.rotor._replace(per_film=False))
+    jacobian(z, cj, every_args)
+    assert np.array_equal(jacobian(moved, cj, every_args), fresh)

@@ -756,7 +756,9 @@ class JournalOrbit:
         if ig.method == "bdf2":
             announce("bdf2")  # a cold cache compiles the content kernels and the Newton once (~30 s)
             spr = BDF2_MIN_STEPS if ig.steps_per_revolution is None else ig.steps_per_revolution
-            options = {"bdf2": self.bdf2_model(), "max_order": BDF2_MAX_ORDER if ig.max_order is None else ig.max_order}
+            n = self.film.n  # the journal's x, y and its velocity weighed each as a plane vector in the error test
+            options = {"bdf2": self.bdf2_model(), "max_order": BDF2_MAX_ORDER if ig.max_order is None else ig.max_order,
+                       "error_pairs": [[n, n + 1], [n + 2, n + 3]]}
             if ig.steps_per_revolution is None:
                 options["max_travel"] = (np.arange(self.film.n, self.film.n + 2),
                                          BDF2_TRAVEL * math.sqrt(ig.rtol / BDF2_TRAVEL_RTOL))

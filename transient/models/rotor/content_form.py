@@ -63,7 +63,7 @@ class ContentSystem:
             k_vals=np.ascontiguousarray(dae.Kw[dae.q_mask], dtype=float), mom_v=_ints(mom_v), v_rows=_ints(v_rows),
             v_cols=_ints(v_cols), mom_phi=_ints(mom_phi), phi_rows=_ints(dae.phi_rows), phi_phi=_ints(phi_phi),
             full=np.zeros(dae.pattern.nnz), gather=gather, speed=np.array([1.0, 0.0]), force=np.zeros(nq),
-            phi_tol=PHI_TOL)
+            phi_tol=PHI_TOL, block_cj=np.full(len(films), np.nan), per_film=True)
         self.args = (tuple(films), self.rotor)
         self.newton, self.kernel = rotor_newton, rotor_residual
         if dae.rough:  # rough bearings: their film blocks (rough_content.py)
@@ -82,6 +82,20 @@ class ContentSystem:
             dA, dB = dA * b.half, dB * b.half
             worst = max(worst, math.hypot(dX + dA, dY + dB), math.hypot(dX - dA, dY - dB))
         return worst
+
+    def error_pairs(self) -> np.ndarray:
+        """The rows ``(i, j)`` of the state whose components are a journal's x and y (a bearing node's own
+        coordinates: its block's position ``X = a q_i``, ``Y = a q_j``), for its coordinates and its velocities: the BDF's
+        error test weighs each pair by its length (``options["error_pairs"]``), so a journal on an orbit is held to
+        rtol of its distance from the centre and its speed, not to atol where x or y passes through zero."""
+        dae, rows = self.dae, []
+        for b in self.dae.blocks:
+            ix, iy = np.flatnonzero(b.ax), np.flatnonzero(b.ay)
+            if (b.support.size == 2 and ix.size == 1 and iy.size == 1 and ix[0] != iy[0]
+                    and b.ax[ix[0]] == b.ay[iy[0]]):
+                i, j = int(b.support[ix[0]]), int(b.support[iy[0]])
+                rows += [(dae.Q0 + i, dae.Q0 + j), (dae.V0 + i, dae.V0 + j)]
+        return np.array(sorted(set(rows)), dtype=np.int64).reshape(-1, 2)
 
     def set_speed(self, tau):
         """The shaft speed ratio and its rate at ``tau`` into the kernels' ``speed``."""

@@ -89,7 +89,8 @@ class RotorArgs(NamedTuple):
     of the kinematic, momentum (``mom_q`` with values ``k_vals``, ``mom_v`` at ``(v_rows, v_cols)``), angle-column
     (rows ``phi_rows``) and angle-row entries; ``full`` (the Jacobian in that pattern) and ``gather`` (the
     Newton pattern's entries in it); ``speed`` = (s, s') of the step; ``force`` scratch; ``phi_tol`` the angle's
-    Newton tolerance [rad]."""
+    Newton tolerance [rad]; ``block_cj``: the cj of each film's block in ``full`` (NaN: none yet); ``per_film``: a
+    Jacobian refreshes only the films that need it (:func:`rotor_jacobian`), else every film."""
 
     Q0: int
     V0: int
@@ -117,6 +118,8 @@ class RotorArgs(NamedTuple):
     speed: np.ndarray
     force: np.ndarray
     phi_tol: float
+    block_cj: np.ndarray
+    per_film: bool
 
 
 @njit(cache=True)
@@ -284,21 +287,49 @@ def rotor_residual(t, y, yp, out, args):
 
 
 @njit(cache=True)
+def block_switched(f):
+    """Whether a cell of film block ``f`` is in another regime (:func:`cell_regime`) than at its last Jacobian (its
+    ``u`` in ``work.u``)."""
+    switch, _, geo, fields, extras, fv, work, tol, regime = f.film
+    free, u = fv.cells.free, work.u
+    for i in range(f.n):
+        if free[i] and cell_regime(u[i], switch.width) != regime[i]:
+            return True
+    return False
+
+
+@njit(cache=True)
 def rotor_jacobian(t, y, yp, cj, data, args):
     """CSC data of ``(dF/dy + cj dF/dy') dy/dz`` in the Newton pattern (``rot.gather`` of the system pattern):
     each film's block (:func:`~transient.models.rotor.kernels.block_jacobian` at ``u' = X' = Y' = 0``, module
     docstring) scattered with its coupling and border (:func:`~transient.models.rotor.kernels.scatter_block`),
     the rotor rows ``dF_q/dq = cj``, ``dF_q/dv = -1``, ``dF_v/dq = K / omega^2``, ``dF_v/dv = C / omega + s G +
-    cj M``, ``dF_v/dphi = -df/dphi``, ``dF_phi/dphi = cj``. Keeps each film's cell regimes at this Jacobian."""
+    cj M``, ``dF_v/dphi = -df/dphi``, ``dF_phi/dphi = cj``. Keeps each film's cell regimes at this Jacobian.
+
+    With ``rot.per_film`` only the films that need it are evaluated again: a new cj, or cells that changed regime
+    since the film's last Jacobian (the chord of the others still holds: a film's switches degrade its own block);
+    every film when none does (a refresh for a slow contraction). The others keep their entries in ``rot.full``,
+    so the bordered band LU refactors only the refreshed films' bands
+    (:func:`~transient.solvers.bandlu.band_factor`)."""
     films, rot = args
     s = rot.speed[0]
     full = rot.full
     q = y[rot.Q0:rot.V0]
+    held = rot.block_cj
+    fresh = np.zeros(len(films), dtype=np.bool_)
+    some = False
     for k in range(len(films)):
+        f = films[k]
+        X, Y = node_position(f, q)
+        block_fields(y, f, X, Y, block_gap(f, q))
+        fresh[k] = not rot.per_film or held[k] != cj or block_switched(f)
+        some = some or fresh[k]
+    for k in range(len(films)):
+        if some and not fresh[k]:
+            continue
         f = films[k]
         switch, _, geo, fields, extras, fv, work, tol, regime = f.film
         X, Y = node_position(f, q)
-        block_fields(y, f, X, Y, block_gap(f, q))
         u = work.u
         sb = s * f.spin
         if f.tilted:
@@ -313,6 +344,7 @@ def rotor_jacobian(t, y, yp, cj, data, args):
             work.xy[0] = np.nan
         for i in range(f.n):
             regime[i] = cell_regime(u[i], switch.width)
+        held[k] = cj
     rotor_rows_jacobian(y, cj, rot)
     for p in range(rot.gather.size):
         data[p] = full[rot.gather[p]]

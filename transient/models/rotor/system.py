@@ -700,7 +700,7 @@ class RotorBearingSystem:
             # speed, not per revolution at the reference speed; at the defaults each journal's travel bounded too
             # (the films' fronts move with the journals), as the journal orbit's steps
             cap_scale = lambda tau: 1.0 / max(speed(tau)[0], MIN_CAP_SPEED)  # noqa: E731
-            options = {"bdf2": form.model(), "max_step_scale": cap_scale,
+            options = {"bdf2": form.model(), "max_step_scale": cap_scale, "error_pairs": form.error_pairs(),
                        "max_order": BDF2_MAX_ORDER if ig.max_order is None else ig.max_order}
             spr = ig.steps_per_revolution
             if spr is None:

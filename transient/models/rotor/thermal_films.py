@@ -91,6 +91,8 @@ class ThermalContentSystem(ContentSystem):
 
     def __init__(self, dae):
         super().__init__(dae)
+        self.rotor = self.rotor._replace(per_film=False)  # its Jacobian writes every thermal block again anyway
+        self.args = (self.args[0], self.rotor)
         index = [k for k, b in enumerate(dae.blocks) if getattr(b.bearing, "thermal", None) is not None]
         self.thermal = np.array(index, dtype=np.int64)
         self.fluidity = tuple(dae.blocks[k].film.fluidity for k in index)

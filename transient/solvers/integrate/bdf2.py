@@ -33,7 +33,10 @@ The model hands the kernels as a :class:`Bdf2Model` in ``solve(..., options={"bd
 ``options["fixed_step"] = h`` takes steps of exactly h with no error test (convergence studies);
 ``options["max_step_scale"]``, a function of t, scales ``max_step`` at each step's start (a cap in shaft angle);
 ``options["max_order"]`` (2 to 5, default 2) the highest order of the stepper's variable-order BDF;
-``options["max_travel"] = (components, distance)`` bounds each step by the travel of those components (a journal's).
+``options["max_travel"] = (components, distance)`` bounds each step by the travel of those components (a journal's);
+``options["error_pairs"]``, rows ``(i, j)`` of error components weighed by the length of their plane vector
+(:func:`~transient.solvers.integrate.stepper.magnitude`: a journal's x and y), in the error test and the Newton
+tolerance.
 """
 
 from __future__ import annotations
@@ -48,7 +51,7 @@ from transient.solvers.bandlu import BorderedBandLU, band_factor, band_solve
 from transient.solvers.inner_kernel import inner_kernel
 from transient.solvers.integrate.guard import SIGINT
 from transient.solvers.integrate.outputs import Events, step_events
-from transient.solvers.integrate.stepper import BDF2, StepBounds, StepSolve, drive, quadratic
+from transient.solvers.integrate.stepper import BDF2, StepBounds, StepSolve, drive, magnitude, quadratic
 
 # the band LU as the Newton calls it (inlined into a model's caller): without the entry points Python calls
 _band_factor = inner_kernel(band_factor)
@@ -287,13 +290,14 @@ class BandNewton(StepSolve):
         self.zs = [None]  # the Newton variables at the accepted points, aligned with the stepper's
         self.newton_counts = np.zeros(N_COUNTS, dtype=np.int64)
         self.may_retry = False
+        self.pairs = None  # error_pairs: the Newton tolerance's weights as the error test's
 
     def solve(self, t, cj, history, ts, ys, y_pred):
         state, z = self.state, self.z
         if state[CJ_J] != 0.0 and abs(cj / state[CJ_J] - 1.0) > CJ_REFRESH:
             state[REFRESH] = 1.0
         idx = self.error_components
-        err_w = 1.0 / (NEWTON_FACTOR * (self.rtol * np.abs(y_pred[idx]) + self.atol))
+        err_w = 1.0 / (NEWTON_FACTOR * (self.rtol * magnitude(y_pred, self.pairs)[idx] + self.atol))
         if len(ts) >= 3 and self.zs[0] is not None:
             z[:] = quadratic(ts[-3:], self.zs, t)
             state[Z_GIVEN] = 1.0
@@ -343,13 +347,17 @@ def solve(problem, t_eval, out, guard, s):
     on the model's step solve (:func:`step_solve`), run by :func:`~transient.solvers.integrate.stepper.drive`
     (events located on the step's quadratic); returns ``(success, message)``."""
     solver = step_solve(problem, s)
+    pairs = s.options.get("error_pairs")
+    if isinstance(solver, BandNewton):
+        solver.pairs = None if pairs is None else np.asarray(pairs, dtype=np.int64).reshape(-1, 2)
     out.events = Events(problem, guard, poison=False) if problem.n_events else None
     bounds = StepBounds(first_step=s.first_step, fixed_step=float(s.options.get("fixed_step", 0.0)),
                         max_step=((s.max_step, s.options["max_step_scale"]) if "max_step_scale" in s.options
                                   else s.max_step), max_travel=s.options.get("max_travel"))
     stepper = BDF2(solver, problem.y0, t_eval[0], t_eval[-1], rtol=s.rtol, atol=s.atol,
                    error_components=solver.error_components, yp0=problem.yp0, bounds=bounds,
-                   test_first_step=solver.test_first_step, max_order=int(s.options.get("max_order", 2)))
+                   test_first_step=solver.test_first_step, max_order=int(s.options.get("max_order", 2)),
+                   error_pairs=pairs)
     result = drive(stepper, out, guard, SIGINT.check, s.max_steps, step_events)
     tally = s.options.get("newton_counts")
     if tally is not None and isinstance(solver, BandNewton):  # the Newton's cost by operation, summed over solves

@@ -10,7 +10,10 @@ solve is backward Euler) of a stored quantity ``q`` (the state itself, or what t
 
 Its local error ``h^3 y''' (1 + w)^2 / (6 w (1 + 2 w))`` is estimated from the distance between the converged
 step and the quadratic predictor through the last three points (Hermite with y'(t_0) after the first step), on
-the declared ``error_components`` only, in the weighted RMS norm of ``rtol |y| + atol``, leaving out the
+the declared ``error_components`` only, in the weighted RMS norm of ``rtol |y| + atol`` (``error_pairs``: the
+components of a plane vector, e.g. a journal's x and y, weighed by the vector's length, not each by its own: the
+test then does not depend on the axes, and a component passing through zero on an orbit is not held to atol),
+leaving out the
 components the step solve reports as switched over the predictor's points (``StepSolve.switched``: a node that
 crossed a complementarity's kink, e.g. the cavitation boundary of an EHL film, has a corner in time there that is
 no truncation error; held in the test, one such node cuts every step across it). The step follows a PI
@@ -120,6 +123,17 @@ def quadratic(ts, ys, t, slope=None):
     return ys[0] + slope * (t - ts[0])
 
 
+def magnitude(y, pairs=None) -> np.ndarray:
+    """``|y|`` per component, the components of each row ``(i, j)`` of ``pairs`` both ``hypot(y_i, y_j)`` (the length
+    of the plane vector they make: the error weight of :class:`BDF2`'s ``error_pairs``)."""
+    out = np.abs(y)
+    if pairs is not None and pairs.size:
+        length = np.hypot(y[pairs[:, 0]], y[pairs[:, 1]])
+        out[pairs[:, 0]] = length
+        out[pairs[:, 1]] = length
+    return out
+
+
 def extrapolate(ts, ys, t):
     """The polynomial through the points ``(ts[k], ys[k])`` (Lagrange, degree ``len(ts) - 1``) at ``t``."""
     out = 0.0
@@ -183,7 +197,7 @@ class BDF2(Stepper):
     whose first step measures the jump of its algebraic part onto the constraint, not a truncation error)."""
 
     def __init__(self, solver: StepSolve, y0, t0, t_end, *, rtol, atol, error_components=None, yp0=None,
-                 bounds: StepBounds = StepBounds(), test_first_step=True, max_order=2):
+                 bounds: StepBounds = StepBounds(), test_first_step=True, max_order=2, error_pairs=None):
         first_step, max_step, fixed_step, max_travel = bounds
         self.solver = solver
         self.travel = None
@@ -201,6 +215,7 @@ class BDF2(Stepper):
                         else np.ascontiguousarray(error_components, dtype=np.int64))
         self.rtol = rtol
         self.atol = np.broadcast_to(np.asarray(atol, dtype=float), (n,))
+        self.pairs = None if error_pairs is None else np.asarray(error_pairs, dtype=np.int64).reshape(-1, 2)
         self.t = self.t_old = self.t_start = float(t0)
         self.t_end = float(t_end)
         self.y = y0.copy()
@@ -269,7 +284,7 @@ class BDF2(Stepper):
                 est = d * (h * h * (1.0 + w) ** 2 / (w * (1.0 + 2.0 * w)) / ((h + h1) * (h + h1 + h2)))
             else:
                 est = d / (cj * (t_new - ts[-k - 1]))
-            scale = self.rtol * np.abs(y_new[idx]) + self.atol[idx]
+            scale = self.rtol * magnitude(y_new, self.pairs)[idx] + self.atol[idx]
             err = math.sqrt(float(np.mean((est / scale) ** 2))) if idx.size else 0.0
             if not math.isfinite(err):
                 self.n_nonlinear_failures += 1
