@@ -56,8 +56,8 @@ def orbit_start(orbit):
 
 
 METHODS = {"ida": (Integration(method="ida", rtol=1e-7, atol=1e-10),) * 2,
-           "bdf2": (Integration(method="bdf2", rtol=1e-7, atol=1e-10),  # the orbit on the rotor's stepper
-                    Integration(method="bdf2", rtol=1e-7, atol=1e-10, max_order=2,
+           "bdf2": (Integration(method="bdf2", rtol=1e-8, atol=1e-10),  # the orbit on the rotor's stepper
+                    Integration(method="bdf2", rtol=1e-8, atol=1e-10, max_order=2,
                                 steps_per_revolution=BDF2_STEPS_PER_REVOLUTION))}
 
 
