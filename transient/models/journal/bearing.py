@@ -31,6 +31,7 @@ from transient.models.journal.scales import film_scales
 from transient.models.journal.tilt import (check_open, check_tilt, edge_eccentricities, half_length, sensitivity,
                                            si_coefficients, tilt_groups)
 from transient.models.journal import rest, thd
+from transient.models.journal.errors import NoEquilibriumError
 from transient.models.journal.thermal_settings import ThermalFilm
 from transient.models.journal.viscous_film import ViscousFilm
 from transient.units import rpm_to_rad_s as omega  # the journal's name for it (public: models.journal.omega)
@@ -91,10 +92,6 @@ def check_bearing_memory(grid_shape) -> float:
 def check_speed(speed_rpm) -> float:
     """A shaft speed [rpm] in ``SPEED_RANGE_RPM``."""
     return check_range("speed_rpm", speed_rpm, "rpm", *SPEED_RANGE_RPM)
-
-
-class NoEquilibriumError(RuntimeError, ValueError):
-    """The film cannot carry the load at this speed inside the clearance (names ``load`` and ``speed_rpm``)."""
 
 
 VALIDITY_PRESSURE = 100e6  # [Pa]: exp(alpha p) = 7.4 for a mineral oil's alpha = 2e-8 1/Pa

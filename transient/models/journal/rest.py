@@ -19,6 +19,7 @@ import dataclasses
 import numpy as np
 from scipy.optimize import brentq
 
+from transient.models.journal.errors import NoEquilibriumError
 from transient.models.journal.film import wall_friction
 
 TOL = 1e-10  # force residual relative to the load
@@ -49,10 +50,8 @@ def _film_at(film, X, Y, u):
 def rest_equilibrium(bearing, load, unit_rpm):
     """``(film, u, (X, Y), iterations)``: the journal of the rough ``bearing`` at rest under ``load`` [N] (in +x)
     where the film at rest and the asperities carry it (module docstring); ``u`` in the pressure unit of
-    ``unit_rpm``. Raises :class:`~transient.models.journal.bearing.NoEquilibriumError` if the asperities cannot
+    ``unit_rpm``. Raises :class:`~transient.models.journal.errors.NoEquilibriumError` if the asperities cannot
     carry it inside the bearing's reach."""
-    from transient.models.journal.bearing import NoEquilibriumError
-
     film = rest_film(bearing, unit_rpm)
     wbar = load / film.force_scale
     u, _ = _film_at(film, 0.0, 0.0, None)
